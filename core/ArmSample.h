@@ -1,0 +1,31 @@
+// One row of sensor data, as it flows from a recording or a device into the estimators.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// One IMU sample in the sensor's own axes.
+struct ImuReading {
+  Eigen::Vector3d gyr = Eigen::Vector3d::Zero();  ///< angular velocity (rad/s)
+  Eigen::Vector3d acc = Eigen::Vector3d::Zero();  ///< specific force (m/s^2), ~ +9.81 up at rest
+};
+
+/// Everything measured at one instant. Sensors run at different rates: absent ones are empty.
+struct ArmSample {
+  double t = 0.0;                         ///< time (s)
+  std::optional<ImuReading> upperArm;     ///< upper-arm IMU
+  std::optional<ImuReading> forearm;      ///< forearm IMU
+  std::optional<Eigen::Vector3d> elbow;   ///< optical elbow position, shoulder frame (m)
+  std::optional<Eigen::Vector3d> wrist;   ///< optical wrist position, shoulder frame (m)
+  std::optional<Eigen::Vector2d> camWrist;  ///< wrist marker pixel (u, v)
+  std::optional<Eigen::Vector2d> camElbow;  ///< elbow marker pixel (u, v)
+  std::optional<JointVector> trueAngles;    ///< known true joint angles (rad), simulations
+
+  bool hasImu() const { return upperArm.has_value() || forearm.has_value(); }
+};
+
+}  // namespace armtrack

@@ -1,0 +1,484 @@
+#include "core/estimation/ArmFilter.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+#include <unsupported/Eigen/AutoDiff>
+
+#include "core/estimation/Initializer.h"
+
+namespace armtrack {
+
+MeasurementModel parseMethod(const std::string& name) {
+  std::string s;
+  for (char c : name) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (s == "a") return MeasurementModel::AccelGyro;
+  if (s == "b") return MeasurementModel::AugmentedBodyAccel;
+  if (s == "c") return MeasurementModel::InclinometerGyro;
+  if (s == "inclinometer") return MeasurementModel::Inclinometer;
+  throw std::invalid_argument("unknown method \"" + name +
+                              "\": expected A, B, C or inclinometer");
+}
+
+std::string methodName(MeasurementModel m) {
+  switch (m) {
+    case MeasurementModel::AccelGyro: return "A";
+    case MeasurementModel::AugmentedBodyAccel: return "B";
+    case MeasurementModel::InclinometerGyro: return "C";
+    case MeasurementModel::Inclinometer: return "inclinometer";
+  }
+  return "?";
+}
+
+JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
+  // Spatial axes of the three shoulder joints (z0, z1, z2 in frame 0).
+  const Eigen::Matrix4d h1 = dhTransform<double>(th(0), 0.0, std::numbers::pi / 2, 0.0);
+  const Eigen::Matrix4d h2 =
+      h1 * dhTransform<double>(th(1) + std::numbers::pi / 2, 0.0, std::numbers::pi / 2, 0.0);
+  Eigen::Matrix3d j;
+  j.col(0) = Eigen::Vector3d::UnitZ();
+  j.col(1) = h1.block<3, 1>(0, 2);
+  j.col(2) = h2.block<3, 1>(0, 2);
+  // Damped least squares stays finite at the shoulder's gimbal lock.
+  const Eigen::Vector3d rate =
+      j.transpose() * (j * j.transpose() + 1e-4 * Eigen::Matrix3d::Identity()).ldlt().solve(up);
+  JointVector d = JointVector::Zero();
+  d.head<3>() = rate;
+  const double n = d.norm();
+  return n > 0 ? JointVector(d / n) : d;
+}
+
+namespace {
+
+constexpr int kBase = 15;
+constexpr int kMaxRows = 18;
+using Vec15 = Eigen::Matrix<double, kBase, 1>;
+using AD = Eigen::AutoDiffScalar<Vec15>;
+
+// Measurement blocks in the order of eq. 16 (gyros and accelerometers per IMU, then optics).
+enum Block { kUaGyr = 0, kUaAcc, kFaGyr, kFaAcc, kElbow, kWrist, kNumBlocks };
+
+struct BlockList {
+  std::array<int, kNumBlocks> block{};
+  int count = 0;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> z;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> variance;  // diagonal of R
+  int rows() const { return 3 * count; }
+  void add(int b, const Eigen::Vector3d& value, double var) {
+    block[count++] = b;
+    const auto n = z.size();
+    z.conservativeResize(n + 3);
+    variance.conservativeResize(n + 3);
+    z.segment<3>(n) = value;
+    variance.segment<3>(n).setConstant(var);
+  }
+};
+
+bool finite3(const Eigen::Vector3d& v) { return v.allFinite(); }
+
+// Predicted readings of all six blocks for the 15-state base, templated for AutoDiff.
+template <typename T>
+void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
+                 Eigen::Matrix<T, kMaxRows, 1>& out) {
+  const Eigen::Matrix<T, 5, 1> thdd = x.template segment<5>(0);
+  const Eigen::Matrix<T, 5, 1> thd = x.template segment<5>(5);
+  const Eigen::Matrix<T, 5, 1> th = x.template segment<5>(10);
+  const ArmKinematics<T> k = armKinematics<T>(p.geometry, th, thd, thdd, p.gUp);
+  const bool bodyAccel = p.model == MeasurementModel::AccelGyro;
+  out.template segment<3>(0) = k.upperImu.omega;
+  out.template segment<3>(3) = bodyAccel ? Eigen::Matrix<T, 3, 1>(k.upperImu.up + k.upperImu.accel)
+                                         : k.upperImu.up;
+  out.template segment<3>(6) = k.forearmImu.omega;
+  out.template segment<3>(9) = bodyAccel
+                                   ? Eigen::Matrix<T, 3, 1>(k.forearmImu.up + k.forearmImu.accel)
+                                   : k.forearmImu.up;
+  out.template segment<3>(12) = k.elbow;
+  out.template segment<3>(15) = k.wrist;
+}
+
+void predictBaseWithJacobian(const EstimatorParams& p, const Vec15& x,
+                             Eigen::Matrix<double, kMaxRows, 1>& h,
+                             Eigen::Matrix<double, kMaxRows, kBase>& jac) {
+  Eigen::Matrix<AD, kBase, 1> xa;
+  for (int i = 0; i < kBase; ++i) xa(i) = AD(x(i), kBase, i);
+  Eigen::Matrix<AD, kMaxRows, 1> out;
+  predictBase<AD>(p, xa, out);
+  for (int i = 0; i < kMaxRows; ++i) {
+    h(i) = out(i).value();
+    jac.row(i) = out(i).derivatives().transpose();
+  }
+}
+
+template <int N>
+class ArmFilter final : public JointEstimator {
+ public:
+  using Vec = Eigen::Matrix<double, N, 1>;
+  using Mat = Eigen::Matrix<double, N, N>;
+  using MeasVec = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1>;
+  using MeasMat = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, kMaxRows, kMaxRows>;
+  using Jac = Eigen::Matrix<double, Eigen::Dynamic, N, 0, kMaxRows, N>;
+  using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
+  static constexpr bool kAugmented = N > kBase;
+
+  explicit ArmFilter(const EstimatorParams& p) : m_p(p) { reset(); }
+
+  void reset() override {
+    m_x.setZero();
+    m_P.setIdentity();
+    m_initialised = false;
+    m_t = m_t0 = 0.0;
+    m_lastSeenT = -std::numeric_limits<double>::infinity();
+    m_lastOpticalT = -std::numeric_limits<double>::infinity();
+    m_pendingOptical.reset();
+    m_counters = {};
+  }
+
+  bool initialised() const override { return m_initialised; }
+  const EstimatorCounters& counters() const override { return m_counters; }
+  Eigen::MatrixXd covariance() const override { return m_P; }
+
+  bool headingFromStartPoseOnly() const override {
+    constexpr double kHeadingMemory = 5.0;  // s an optical fix is taken to hold the heading
+    return !(m_t - m_lastOpticalT <= kHeadingMemory);
+  }
+
+  JointEstimate estimate() const override {
+    JointEstimate e;
+    e.t = m_t;
+    e.thdd = m_x.template segment<5>(0);
+    e.thd = m_x.template segment<5>(5);
+    e.th = m_x.template segment<5>(10);
+    e.thStd = m_P.diagonal().template segment<5>(10).cwiseMax(0.0).cwiseSqrt();
+    return e;
+  }
+
+  UpdateResult update(const ArmSample& s) override {
+    ++m_counters.samples;
+    if (!std::isfinite(s.t) || s.t < m_lastSeenT) {
+      ++m_counters.rejectedTime;
+      return UpdateResult::Rejected;
+    }
+    m_lastSeenT = s.t;
+
+    ArmSample clean = sanitise(s);
+    const bool hasImu = clean.upperArm || clean.forearm;
+    const bool hasOptical = clean.elbow || clean.wrist;
+    if (!hasImu && !hasOptical) return UpdateResult::Rejected;
+
+    if (m_initialised && s.t - m_t > m_p.maxGap) {
+      ++m_counters.restarts;
+      m_initialised = false;
+    }
+    if (!m_initialised) {
+      if (!hasImu) {
+        m_pendingOptical = clean;
+        return UpdateResult::Waiting;
+      }
+      initialise(clean);
+      return UpdateResult::Initialised;
+    }
+
+    predict(s.t - m_t);
+    m_t = s.t;
+    BlockList blocks = gather(clean);
+    if (blocks.count == 0) return UpdateResult::Rejected;
+    if (hasOptical) {
+      m_lastOpticalT = s.t;
+      m_counters.opticalUpdates += static_cast<std::uint64_t>(clean.elbow.has_value()) +
+                                   static_cast<std::uint64_t>(clean.wrist.has_value());
+    }
+    const Vec xBefore = m_x;
+    const Mat pBefore = m_P;
+    const bool ok = m_p.filter == FilterKind::Ekf ? ekfUpdate(blocks) : ukfUpdate(blocks);
+    if (!ok || !m_x.allFinite() || !m_P.allFinite()) {
+      m_x = xBefore;
+      m_P = pBefore;
+      ++m_counters.skippedUpdates;
+      return UpdateResult::Rejected;
+    }
+    finishUpdate();
+    return UpdateResult::Accepted;
+  }
+
+ private:
+  // Drops (and counts) every sensor block that carries NaN or inf.
+  ArmSample sanitise(const ArmSample& s) {
+    ArmSample c;
+    c.t = s.t;
+    auto imuOk = [&](const std::optional<ImuReading>& r) {
+      if (!r) return false;
+      if (finite3(r->gyr) && finite3(r->acc)) return true;
+      ++m_counters.rejectedNonFinite;
+      return false;
+    };
+    auto posOk = [&](const std::optional<Eigen::Vector3d>& p) {
+      if (!p || !m_p.useOptical) return false;
+      if (finite3(*p)) return true;
+      ++m_counters.rejectedNonFinite;
+      return false;
+    };
+    if (imuOk(s.upperArm)) c.upperArm = s.upperArm;
+    if (imuOk(s.forearm)) c.forearm = s.forearm;
+    if (posOk(s.elbow)) c.elbow = s.elbow;
+    if (posOk(s.wrist)) c.wrist = s.wrist;
+    return c;
+  }
+
+  BlockList gather(const ArmSample& s) const {
+    BlockList b;
+    const bool gyro = m_p.model != MeasurementModel::Inclinometer;
+    if (s.upperArm) {
+      if (gyro) b.add(kUaGyr, s.upperArm->gyr, m_p.gyroVariance);
+      b.add(kUaAcc, s.upperArm->acc, m_p.accelVariance);
+    }
+    if (s.forearm) {
+      if (gyro) b.add(kFaGyr, s.forearm->gyr, m_p.gyroVariance);
+      b.add(kFaAcc, s.forearm->acc, m_p.accelVariance);
+    }
+    if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance);
+    if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance);
+    return b;
+  }
+
+  void initialise(const ArmSample& s) {
+    ArmSample first = s;
+    constexpr double kOpticalWindow = 0.1;  // s an earlier optical sample may lag the first IMU
+    if (m_pendingOptical && s.t - m_pendingOptical->t <= kOpticalWindow) {
+      if (!first.elbow) first.elbow = m_pendingOptical->elbow;
+      if (!first.wrist) first.wrist = m_pendingOptical->wrist;
+    }
+    m_pendingOptical.reset();
+    const InitialPose pose = initialPose(m_p, first);
+    m_x.setZero();
+    m_x.template segment<5>(5) = pose.thd;
+    m_x.template segment<5>(10) = pose.th;
+    m_P.setZero();
+    for (int j = 0; j < kNumJoints; ++j) {
+      m_P(j, j) = m_p.initialAccelStd * m_p.initialAccelStd;
+      m_P(5 + j, 5 + j) = m_p.initialRateStd * m_p.initialRateStd;
+      m_P(10 + j, 10 + j) = m_p.initialAngleStd * m_p.initialAngleStd;
+    }
+    const JointVector h = headingDirection(pose.th, m_p.gUp.normalized());
+    m_P.template block<5, 5>(10, 10) +=
+        m_p.initialHeadingStd * m_p.initialHeadingStd * h * h.transpose();
+    if constexpr (kAugmented) {
+      for (int i = kBase; i < N; ++i) m_P(i, i) = m_p.bodyAccelVariance;
+    }
+    m_t = m_t0 = s.t;
+    if (first.elbow || first.wrist) m_lastOpticalT = s.t;
+    m_initialised = true;
+    freezeInactive();
+  }
+
+  // x <- F x, P <- F P F^T + Q for step dt (eqs. 3-4 with the time step taken from the data).
+  void predict(double dt) {
+    if (dt <= 0.0) return;
+    const double phi = std::isfinite(m_p.jointAccelCorrelationTime)
+                           ? std::exp(-dt / m_p.jointAccelCorrelationTime)
+                           : 1.0;
+    const double phiB = kAugmented ? std::exp(-dt / m_p.bodyAccelCorrelationTime) : 0.0;
+    auto applyF = [&](auto& m) {  // rows of m: [a; v; th; b] -> F * m
+      const auto a = m.template middleRows<5>(0).eval();
+      const auto v = m.template middleRows<5>(5).eval();
+      m.template middleRows<5>(10) += dt * v + 0.5 * dt * dt * a;
+      m.template middleRows<5>(5) += dt * a;
+      m.template middleRows<5>(0) *= phi;
+      if constexpr (kAugmented) m.template bottomRows<N - kBase>() *= phiB;
+    };
+    applyF(m_x);
+    applyF(m_P);
+    Mat pt = m_P.transpose();
+    applyF(pt);
+    m_P = pt.transpose();
+
+    const double qa = m_p.jointAccelVariance * dt / m_p.referenceStep;
+    for (int j = 0; j < kNumJoints; ++j)
+      if (m_p.activeJoints[j]) m_P(j, j) += qa;
+    const JointVector h = headingDirection(m_x.template segment<5>(10), m_p.gUp.normalized());
+    m_P.template block<5, 5>(10, 10) += m_p.headingVarianceRate * dt * h * h.transpose();
+    if constexpr (kAugmented) {
+      const double qb = m_p.bodyAccelVariance * (1.0 - phiB * phiB);
+      for (int i = kBase; i < N; ++i) m_P(i, i) += qb;
+    }
+  }
+
+  // Predicted measurement (and Jacobian) for the present blocks at state x.
+  void measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const {
+    Eigen::Matrix<double, kMaxRows, 1> all;
+    Eigen::Matrix<double, kMaxRows, kBase> allJac;
+    const Vec15 base = x.template head<kBase>();
+    if (jac)
+      predictBaseWithJacobian(m_p, base, all, allJac);
+    else
+      predictBase<double>(m_p, base, all);
+    h.resize(b.rows());
+    if (jac) {
+      jac->resize(b.rows(), N);
+      jac->setZero();
+    }
+    for (int i = 0; i < b.count; ++i) {
+      const int blk = b.block[i];
+      h.template segment<3>(3 * i) = all.template segment<3>(3 * blk);
+      if (jac) jac->template block<3, kBase>(3 * i, 0) = allJac.template middleRows<3>(3 * blk);
+      if constexpr (kAugmented) {
+        // Method B: the accelerometer also reads the augmented body-acceleration state.
+        if (blk == kUaAcc || blk == kFaAcc) {
+          const int off = kBase + (blk == kUaAcc ? 0 : 3);
+          h.template segment<3>(3 * i) += x.template segment<3>(off);
+          if (jac) jac->template block<3, 3>(3 * i, off).setIdentity();
+        }
+      }
+    }
+  }
+
+  bool ekfUpdate(const BlockList& b) {
+    const int iterations = m_t - m_t0 < m_p.startupSeconds ? std::max(1, m_p.startupIterations) : 1;
+    const Vec x0 = m_x;
+    Vec xi = m_x;
+    MeasVec h;
+    Jac jac;
+    Gain k;
+    for (int it = 0; it < iterations; ++it) {
+      measure(xi, b, h, &jac);
+      MeasMat s = jac * m_P * jac.transpose();
+      s.diagonal() += b.variance;
+      const Eigen::LLT<MeasMat> llt(s);
+      if (llt.info() != Eigen::Success) return false;
+      k = llt.solve(jac * m_P).transpose();  // P H^T S^-1 (S, P symmetric)
+      // Gauss-Newton step of the iterated EKF; one iteration is the plain EKF.
+      const MeasVec innov = b.z - h - jac * (x0 - xi);
+      const Vec next = x0 + k * innov;
+      const double change = (next - xi).norm();
+      xi = next;
+      if (change < 1e-9) break;
+    }
+    m_x = xi;
+    // Joseph form keeps P symmetric positive semi-definite.
+    Mat ikh = Mat::Identity() - k * jac;
+    m_P = ikh * m_P * ikh.transpose() + k * b.variance.asDiagonal() * k.transpose();
+    return true;
+  }
+
+  bool ukfUpdate(const BlockList& b) {
+    // Scaled unscented transform, alpha = 1, beta = 2, kappa = 0: positive weights 1/(2N).
+    constexpr int kPoints = 2 * N + 1;
+    Eigen::LLT<Mat> llt(static_cast<double>(N) * m_P);
+    if (llt.info() != Eigen::Success) {
+      repairCovariance();
+      llt.compute(static_cast<double>(N) * m_P);
+      if (llt.info() != Eigen::Success) return false;
+    }
+    const Mat l = llt.matrixL();
+    const int m = b.rows();
+    Eigen::Matrix<double, Eigen::Dynamic, kPoints, 0, kMaxRows, kPoints> z(m, kPoints);
+    MeasVec h;
+    measure(m_x, b, h, nullptr);
+    z.col(0) = h;
+    for (int i = 0; i < N; ++i) {
+      measure(m_x + l.col(i), b, h, nullptr);
+      z.col(1 + i) = h;
+      measure(m_x - l.col(i), b, h, nullptr);
+      z.col(1 + N + i) = h;
+    }
+    const double w = 1.0 / (2.0 * N);
+    const double w0c = 2.0;
+    const MeasVec zMean = z.rightCols(2 * N).rowwise().sum() * w;
+    MeasMat pzz = w0c * (z.col(0) - zMean) * (z.col(0) - zMean).transpose();
+    Gain pxz = Gain::Zero(N, m);
+    for (int i = 0; i < N; ++i) {
+      const MeasVec dp = z.col(1 + i) - zMean;
+      const MeasVec dm = z.col(1 + N + i) - zMean;
+      pzz += w * (dp * dp.transpose() + dm * dm.transpose());
+      pxz += w * l.col(i) * (dp - dm).transpose();
+    }
+    pzz.diagonal() += b.variance;
+    const Eigen::LLT<MeasMat> sl(pzz);
+    if (sl.info() != Eigen::Success) return false;
+    const Gain k = sl.solve(pxz.transpose()).transpose();
+    m_x += k * (b.z - zMean);
+    m_P -= k * pzz * k.transpose();
+    return true;
+  }
+
+  void finishUpdate() {
+    for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
+    m_P = 0.5 * (m_P + m_P.transpose()).eval();
+    freezeInactive();
+    // A negative or vanishing variance means round-off has eaten positive definiteness.
+    if ((m_P.diagonal().array() <= 0.0).any()) repairCovariance();
+  }
+
+  void repairCovariance() {
+    ++m_counters.covarianceRepairs;
+    Eigen::SelfAdjointEigenSolver<Mat> es(0.5 * (m_P + m_P.transpose()));
+    Vec ev = es.eigenvalues().cwiseMax(1e-12);
+    m_P = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
+  }
+
+  // Inactive joints are held at their fixed value with a tiny variance (keeps P positive definite).
+  void freezeInactive() {
+    for (int j = 0; j < kNumJoints; ++j) {
+      if (m_p.activeJoints[j]) continue;
+      for (int d = 0; d < 3; ++d) {
+        const int i = 5 * d + j;
+        m_P.row(i).setZero();
+        m_P.col(i).setZero();
+        m_P(i, i) = 1e-12;
+        m_x(i) = d == 2 ? m_p.fixedAngles(j) : 0.0;
+      }
+    }
+  }
+
+  EstimatorParams m_p;
+  Vec m_x;
+  Mat m_P;
+  bool m_initialised = false;
+  double m_t = 0.0;   // time of the state (s)
+  double m_t0 = 0.0;  // time of the last (re)initialisation (s)
+  double m_lastSeenT = 0.0;
+  double m_lastOpticalT = 0.0;
+  std::optional<ArmSample> m_pendingOptical;
+  EstimatorCounters m_counters;
+};
+
+}  // namespace
+
+std::unique_ptr<JointEstimator> makeEstimator(const EstimatorParams& params) {
+  if (params.model == MeasurementModel::AugmentedBodyAccel)
+    return std::make_unique<ArmFilter<kBase + 6>>(params);
+  return std::make_unique<ArmFilter<kBase>>(params);
+}
+
+BatchResult estimateSamples(const std::vector<ArmSample>& samples, const EstimatorParams& params) {
+  BatchResult out;
+  auto filter = makeEstimator(params);
+  out.estimates.reserve(samples.size());
+  for (const ArmSample& s : samples) {
+    const UpdateResult r = filter->update(s);
+    if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && s.hasImu())
+      out.estimates.push_back(filter->estimate());
+  }
+  out.counters = filter->counters();
+  return out;
+}
+
+Eigen::Matrix<double, 18, 1> predictAll(const EstimatorParams& params,
+                                        const Eigen::Matrix<double, 15, 1>& x) {
+  Eigen::Matrix<double, kMaxRows, 1> out;
+  predictBase<double>(params, x, out);
+  return out;
+}
+
+Eigen::Matrix<double, 18, 15> predictAllJacobian(const EstimatorParams& params,
+                                                 const Eigen::Matrix<double, 15, 1>& x) {
+  Eigen::Matrix<double, kMaxRows, 1> h;
+  Eigen::Matrix<double, kMaxRows, kBase> jac;
+  predictBaseWithJacobian(params, x, h, jac);
+  return jac;
+}
+
+}  // namespace armtrack

@@ -1,0 +1,148 @@
+// Joint-angle estimators of Alizadegan & Behzadipour (2016): an EKF and a UKF over the state
+// [th'' th' th] (eq. 1) with the GM-1 joint-acceleration process model (eqs. 3-4) and a choice of
+// IMU measurement models (Methods A, B, C and the inclinometer-only model), optionally fused with
+// optical elbow and wrist positions (eq. 16). See docs/estimator.md.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "core/ArmSample.h"
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+inline constexpr double kDeg = std::numbers::pi / 180.0;  ///< one degree in rad
+
+enum class FilterKind { Ekf, Ukf };
+
+/// What the accelerometers are assumed to measure (the gyroscope is used except where noted).
+enum class MeasurementModel {
+  Inclinometer,      ///< accelerometer = gravity only; no gyroscope (zero-order, Fig. 5)
+  InclinometerGyro,  ///< accelerometer = gravity only, plus gyroscope (Method C)
+  AccelGyro,         ///< accelerometer = gravity + body acceleration (eq. 17-18), gyro (Method A)
+  AugmentedBodyAccel,  ///< gravity + body acceleration as GM-1 states, plus gyro (Method B)
+};
+
+/// Parses "A", "B", "C", "inclinometer" (case-insensitive); throws std::invalid_argument.
+MeasurementModel parseMethod(const std::string& name);
+std::string methodName(MeasurementModel m);
+
+/// Filter parameters. Defaults are the paper's Table 5 and Table 7 in SI units.
+struct EstimatorParams {
+  FilterKind filter = FilterKind::Ekf;
+  MeasurementModel model = MeasurementModel::AccelGyro;
+  ArmGeometry geometry;                        ///< the arm and IMU mounting the filter assumes
+  Eigen::Vector3d gUp{-9.81, 0.0, 0.0};        ///< g * up in the shoulder frame (m/s^2)
+
+  /// Joint-acceleration process noise variance per reference step, (rad/s^2)^2. Table 5:
+  /// 1 (deg/s^2)^2 at the paper's 1 ms step. For another dt the variance scales with dt / 1 ms.
+  double jointAccelVariance = 1.0 * kDeg * kDeg;
+  double referenceStep = 1e-3;  ///< s, the step jointAccelVariance refers to
+  /// GM-1 correlation time of the joint accelerations (s). Infinity gives eq. 3's identity block.
+  double jointAccelCorrelationTime = std::numeric_limits<double>::infinity();
+  /// Random-walk variance rate along the unobservable heading direction (rad^2/s): keeps the
+  /// filter willing to accept optical heading corrections (docs/estimator.md, "Heading").
+  double headingVarianceRate = (1.0 * kDeg) * (1.0 * kDeg);
+
+  double gyroVariance = 0.1 * kDeg * kDeg;  ///< (rad/s)^2, Table 5: 0.1 (deg/s)^2
+  double accelVariance = 1e-2;              ///< (m/s^2)^2, Table 5
+  double positionVariance = 1e-4;           ///< m^2, Table 5 (Kinect)
+
+  /// Method B: stationary variance (m/s^2)^2 and correlation time (s) of the body-acceleration
+  /// GM-1 states (Sabatini 2006).
+  double bodyAccelVariance = 4.0;
+  double bodyAccelCorrelationTime = 0.05;
+
+  bool useOptical = true;  ///< fuse elbow/wrist positions when a sample carries them
+  /// Joints the filter estimates; inactive joints stay at fixedAngles (the paper's one-segment
+  /// studies estimate th0 only).
+  std::array<bool, kNumJoints> activeJoints{true, true, true, true, true};
+  JointVector fixedAngles = JointVector::Zero();  ///< rad
+
+  /// Start-up: initial standard deviations after the gravity/optical initialisation.
+  double initialAngleStd = 20.0 * kDeg;   ///< rad
+  double initialRateStd = 0.5;            ///< rad/s
+  double initialAccelStd = 10.0;          ///< rad/s^2
+  double initialHeadingStd = 30.0 * kDeg;  ///< rad, extra along the heading direction
+  /// During the first startupSeconds the EKF iterates its update (Gauss-Newton) up to this many
+  /// times, so a start while the arm moves fast cannot throw it off.
+  int startupIterations = 4;
+  double startupSeconds = 1.0;
+  /// A gap between samples longer than this (s) restarts the filter from the next sample.
+  double maxGap = 0.5;
+};
+
+/// Output of the filter at one instant.
+struct JointEstimate {
+  double t = 0.0;                            ///< s
+  JointVector th = JointVector::Zero();      ///< rad, wrapped to (-pi, pi]
+  JointVector thd = JointVector::Zero();     ///< rad/s
+  JointVector thdd = JointVector::Zero();    ///< rad/s^2
+  JointVector thStd = JointVector::Zero();   ///< 1-sigma of th (rad)
+};
+
+/// Counters of everything the filter refused or repaired; never reset except by reset().
+struct EstimatorCounters {
+  std::uint64_t samples = 0;            ///< samples offered
+  std::uint64_t rejectedNonFinite = 0;  ///< sensor blocks dropped for NaN/inf
+  std::uint64_t rejectedTime = 0;       ///< samples dropped: time not finite or going backwards
+  std::uint64_t skippedUpdates = 0;     ///< updates skipped: innovation covariance not invertible
+  std::uint64_t covarianceRepairs = 0;  ///< covariance re-symmetrised / jittered to stay PD
+  std::uint64_t restarts = 0;           ///< restarts after a gap longer than maxGap
+  std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused
+};
+
+enum class UpdateResult {
+  Accepted,      ///< the sample was fused
+  Initialised,   ///< the filter (re)started from this sample
+  Waiting,       ///< not yet initialised (no IMU sample seen)
+  Rejected,      ///< nothing usable in the sample (see counters)
+};
+
+/// The estimator. Not thread-safe: one thread feeds it.
+class JointEstimator {
+ public:
+  virtual ~JointEstimator() = default;
+  /// Feeds one sample (timestamps non-decreasing). Blocks with NaN/inf are dropped and counted.
+  virtual UpdateResult update(const ArmSample& sample) = 0;
+  virtual bool initialised() const = 0;
+  virtual JointEstimate estimate() const = 0;
+  virtual const EstimatorCounters& counters() const = 0;
+  /// True while no optical position has been fused for headingMemory seconds: the arm's heading
+  /// about the vertical then rests on the start-pose assumption alone.
+  virtual bool headingFromStartPoseOnly() const = 0;
+  virtual void reset() = 0;
+  /// Full state covariance (for tests and diagnostics).
+  virtual Eigen::MatrixXd covariance() const = 0;
+};
+
+std::unique_ptr<JointEstimator> makeEstimator(const EstimatorParams& params);
+
+/// Runs a whole recording offline; one estimate per sample that carries IMU data (after
+/// initialisation). The batch entry point the CLI and the tests use.
+struct BatchResult {
+  std::vector<JointEstimate> estimates;
+  EstimatorCounters counters;
+};
+BatchResult estimateSamples(const std::vector<ArmSample>& samples, const EstimatorParams& params);
+
+/// The heading direction in joint space at th: the joint-rate direction that turns the whole arm
+/// about the vertical through the shoulder (unit norm, elbow entries zero).
+JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);
+
+/// Measurement function and its Jacobian, exposed for the tests: the stacked predicted readings
+/// [ua gyro, ua acc, fa gyro, fa acc, elbow, wrist] (18) for a 15-state x = [thdd thd th] under
+/// `model`, and d(prediction)/dx by automatic differentiation.
+Eigen::Matrix<double, 18, 1> predictAll(const EstimatorParams& params,
+                                        const Eigen::Matrix<double, 15, 1>& x);
+Eigen::Matrix<double, 18, 15> predictAllJacobian(const EstimatorParams& params,
+                                                 const Eigen::Matrix<double, 15, 1>& x);
+
+}  // namespace armtrack

@@ -1,0 +1,68 @@
+// The open recording format (docs/recording-format.md): a CSV of samples plus a JSON sidecar.
+#pragma once
+
+#include <Eigen/Core>
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/ArmSample.h"
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// Pinhole camera with OpenCV's distortion model; R, t map shoulder-frame points to the camera.
+struct CameraParams {
+  double fx = 0, fy = 0, cx = 0, cy = 0;  ///< pixels
+  std::array<double, 5> dist{};           ///< k1, k2, p1, p2, k3
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();  ///< m
+};
+
+/// The sidecar's contents.
+struct RecordingMeta {
+  ArmGeometry geometry;
+  Eigen::Vector3d up{-1.0, 0.0, 0.0};  ///< unit vector pointing up, shoulder-frame axes
+  double g = 9.81;                     ///< m/s^2
+  std::optional<CameraParams> camera;
+
+  Eigen::Vector3d gUp() const { return g * up; }
+};
+
+struct Recording {
+  RecordingMeta meta;
+  std::vector<ArmSample> samples;
+  std::vector<std::string> warnings;  ///< e.g. a missing sidecar (defaults used)
+};
+
+/// A malformed recording. what() reads "<file>:<line>:<column>: <message>" (line and column are
+/// 1-based; 0 where they do not apply).
+class RecordingError : public std::runtime_error {
+ public:
+  RecordingError(std::string file, int line, int column, const std::string& message);
+  const std::string& file() const { return m_file; }
+  int line() const { return m_line; }
+  int column() const { return m_column; }
+  const std::string& message() const { return m_message; }
+
+ private:
+  std::string m_file;
+  int m_line;
+  int m_column;
+  std::string m_message;
+};
+
+/// Reads a CSV recording and its sidecar (<name>.json beside it). Throws RecordingError.
+Recording readRecording(const std::filesystem::path& csvPath);
+/// Writes the CSV and its sidecar. Only the sensors present in some sample get columns.
+/// Throws RecordingError when the file cannot be written (e.g. a full disk).
+void writeRecording(const std::filesystem::path& csvPath, const Recording& recording);
+
+/// The sidecar path for a CSV path: same name, extension .json.
+std::filesystem::path sidecarPath(const std::filesystem::path& csvPath);
+RecordingMeta readSidecar(const std::filesystem::path& jsonPath);  // throws RecordingError
+void writeSidecar(const std::filesystem::path& jsonPath, const RecordingMeta& meta);
+
+}  // namespace armtrack

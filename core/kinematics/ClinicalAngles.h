@@ -1,0 +1,36 @@
+// Named clinical angles (degrees) from the DH joint vector, with the sign conventions and zero
+// pose of docs/arm-model.md. The UI and the reports use only these.
+#pragma once
+
+#include <array>
+#include <string_view>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// Degrees, positive in the named direction; 0 everywhere = arm hanging at the side, elbow
+/// straight, thumb forward.
+struct ClinicalAngles {
+  double shoulderFlexion = 0;           ///< + flexion (forward), - extension
+  double shoulderAbduction = 0;         ///< + abduction (sideways away from the body)
+  double shoulderInternalRotation = 0;  ///< + internal, - external rotation
+  double elbowFlexion = 0;              ///< + flexion, 0 = straight
+  double forearmPronation = 0;          ///< + pronation, - supination, 0 = thumb forward
+};
+
+struct ClinicalAngleInfo {
+  std::string_view key;       ///< stable identifier (CSV columns, settings)
+  std::string_view name;      ///< English display name
+  std::string_view positive;  ///< what a positive value means
+  double normalMin, normalMax;  ///< typical active range of motion (deg)
+};
+
+ClinicalAngles toClinical(const JointVector& th);
+JointVector fromClinical(const ClinicalAngles& c);
+/// Same order as the fields of ClinicalAngles.
+const std::array<ClinicalAngleInfo, 5>& clinicalAngleInfo();
+/// The five values in the order of clinicalAngleInfo().
+std::array<double, 5> asArray(const ClinicalAngles& c);
+
+}  // namespace armtrack

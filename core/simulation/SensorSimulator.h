@@ -1,0 +1,63 @@
+// Simulates the two IMUs and the Kinect from a trajectory and the arm model.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+
+#include "core/io/Recording.h"
+#include "core/simulation/Trajectory.h"
+
+namespace armtrack {
+
+/// The paper's Table 5 noise, as standard deviations in SI units.
+struct Table5 {
+  static double gyroStd();   ///< sqrt(0.1) deg/s in rad/s
+  static double accelStd();  ///< 0.1 m/s^2
+  static double posStd();    ///< 0.01 m
+};
+
+struct ImuSimParams {
+  bool enabled = true;
+  double rateHz = 1000.0;
+  double gyroNoiseStd = 0.0;                           ///< white noise, rad/s
+  double accelNoiseStd = 0.0;                          ///< white noise, m/s^2
+  Eigen::Vector3d gyroBias = Eigen::Vector3d::Zero();  ///< constant, rad/s
+  /// Rotation of the physical sensor's axes relative to the model's IMU frame: the sensor reads
+  /// misalignment^T * (model reading). Identity = perfectly mounted.
+  Eigen::Matrix3d misalignment = Eigen::Matrix3d::Identity();
+};
+
+struct OpticalSimParams {
+  bool enabled = true;
+  double rateHz = 30.0;
+  double noiseStd = 0.01;  ///< per axis, m
+};
+
+struct SimulationParams {
+  double duration = 10.0;  ///< s
+  ArmGeometry geometry;    ///< the true arm (may differ from what a filter assumes)
+  Eigen::Vector3d up{-1.0, 0.0, 0.0};
+  double g = 9.81;
+  ImuSimParams upperArm;
+  ImuSimParams forearm;
+  OpticalSimParams kinect;
+  std::uint64_t seed = 1;
+  bool includeTruth = true;  ///< fill ArmSample::trueAngles on IMU rows
+};
+
+/// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise.
+SimulationParams defaultSimulation();
+
+/// Returns a recording: one row per IMU sample (both IMUs share the IMU clock when their rates
+/// are equal), Kinect rows at their own times, merged in time order. Deterministic given seed.
+/// Sample times are k / rate while t <= duration; rows at the same instant are merged. Each
+/// sensor has its own noise stream, so enabling one sensor does not change another's noise.
+/// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading. Throws
+/// std::invalid_argument on bad parameters (rate <= 0, negative std or duration, up not a unit
+/// vector, misalignment not a rotation).
+Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params);
+
+/// Rotation about a random axis by angleRad, drawn from seed: a misalignment perturbation.
+Eigen::Matrix3d randomMisalignment(double angleRad, std::uint64_t seed);
+
+}  // namespace armtrack

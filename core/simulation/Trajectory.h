@@ -1,0 +1,94 @@
+// Seeded, deterministic joint-angle trajectories with exact first and second derivatives.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// Joint angles (rad), rates (rad/s) and accelerations (rad/s^2) at one instant.
+struct JointMotion {
+  JointVector th = JointVector::Zero();
+  JointVector thd = JointVector::Zero();
+  JointVector thdd = JointVector::Zero();
+};
+
+class Trajectory {
+ public:
+  virtual ~Trajectory() = default;
+  /// Motion at time t (s). Deterministic: the same t always gives the same result.
+  virtual JointMotion at(double t) const = 0;
+};
+
+/// th_j(t) = offset_j + amplitude_j * sin(2 pi frequency_j t + phase_j), per joint.
+class SinusoidTrajectory final : public Trajectory {
+ public:
+  JointVector offset = JointVector::Zero();     ///< rad
+  JointVector amplitude = JointVector::Zero();  ///< rad
+  JointVector frequency = JointVector::Zero();  ///< Hz
+  JointVector phase = JointVector::Zero();      ///< rad
+  JointMotion at(double t) const override;
+};
+
+/// Smooth multi-joint motion: every joint moves as a sum of a few sinusoids whose amplitudes,
+/// frequencies (0.1-maxFrequency Hz) and phases are drawn from a seeded generator, around a
+/// mid-range posture, staying inside anatomical ranges (docs/arm-model.md).
+/// Centre [40 30 0 -60 0] deg; per joint 2-3 components whose amplitudes sum to
+/// [40 25 35 45 50] deg * amplitudeScale, capped at [80 50 60 60 80] deg (so th1 stays within
+/// [-20, 80] deg and th4 within [-120, 0] deg). Throws std::invalid_argument if
+/// maxFrequencyHz < 0.1 or amplitudeScale < 0.
+class MultiJointTrajectory final : public Trajectory {
+ public:
+  explicit MultiJointTrajectory(std::uint64_t seed, double maxFrequencyHz = 0.8,
+                                double amplitudeScale = 1.0);
+  JointMotion at(double t) const override;
+
+ private:
+  struct Component {
+    int joint;
+    double amplitude, frequency, phase;  // rad, Hz, rad
+  };
+  JointVector m_centre;
+  std::vector<Component> m_components;
+};
+
+/// The shoulder-wheel task of the paper's section 4: the hand grips a handle at radius r on a
+/// wheel in the sagittal plane, centre w forward of and h below the shoulder, turning at a
+/// constant rate; th1 = th2 = th5 = 0 and (th0, th4) follow from planar inverse kinematics with
+/// the hand s beyond the wrist. Lengths in m. The handle is at (x0, y0) = (h, w) +
+/// r (cos phi, sin phi), phi = 2 pi t / period; the IK takes the branch th4 <= 0. Throws
+/// std::invalid_argument unless every handle position is strictly reachable and the circle does
+/// not enclose the shoulder.
+class ShoulderWheelTrajectory final : public Trajectory {
+ public:
+  ShoulderWheelTrajectory(const ArmGeometry& geometry, double periodSeconds = 4.0, double w = 0.25,
+                          double h = 0.05, double r = 0.15, double s = 0.04);
+  JointMotion at(double t) const override;
+  /// Joint angles only (the inverse kinematics), for wheel angle phi (rad).
+  JointVector anglesAt(double phi) const;
+
+ private:
+  ArmGeometry m_geometry;
+  double m_period, m_w, m_h, m_r, m_s;
+};
+
+struct TrajectoryOptions {
+  std::uint64_t seed = 1;
+  JointVector amplitude = JointVector::Constant(0.5);  ///< sinusoid: rad
+  JointVector frequency = JointVector::Constant(0.5);  ///< sinusoid: Hz
+  JointVector offset = JointVector::Zero();            ///< sinusoid: rad
+  double maxFrequencyHz = 0.8;                         ///< multi-joint
+  double amplitudeScale = 1.0;                         ///< multi-joint
+  double wheelPeriod = 4.0;                            ///< shoulder wheel: s per turn
+  ArmGeometry geometry;                                ///< shoulder wheel
+};
+
+/// Names: "sinusoid", "multi-joint", "shoulder-wheel". Throws std::invalid_argument otherwise.
+std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts);
+std::vector<std::string> trajectoryNames();
+
+}  // namespace armtrack
