@@ -57,60 +57,115 @@ Eigen::Matrix<T, 4, 4> dhTransform(const T& gamma, double lambda, double beta, d
   return h;
 }
 
-/// Kinematic state of one DH frame, propagated by the recursion of eqs. 11-15.
+/// Motion of one DH frame, propagated by the recursion of eqs. 12-15. All vectors are in the
+/// frame's own coordinates.
 template <typename T>
 struct FrameState {
   using Vec3 = Eigen::Matrix<T, 3, 1>;
-  using Mat3 = Eigen::Matrix<T, 3, 3>;
-  Mat3 rotation = Mat3::Identity();  ///< frame axes expressed in frame 0 (0_R_i)
-  Vec3 position = Vec3::Zero();      ///< origin in frame 0 (m)
-  Vec3 omega = Vec3::Zero();         ///< angular velocity, frame i coordinates (rad/s)
-  Vec3 omegaDot = Vec3::Zero();      ///< angular acceleration, frame i coordinates (rad/s^2)
-  Vec3 accel = Vec3::Zero();         ///< origin's acceleration, frame i coordinates (m/s^2)
-  Vec3 up = Vec3::Zero();            ///< g * up (the gravity reaction), frame i coordinates
+  Vec3 omega = Vec3::Zero();     ///< angular velocity (rad/s)
+  Vec3 omegaDot = Vec3::Zero();  ///< angular acceleration (rad/s^2)
+  Vec3 accel = Vec3::Zero();     ///< acceleration of the frame's origin (m/s^2)
+  Vec3 up = Vec3::Zero();        ///< g * up, the gravity reaction (m/s^2)
 };
 
-/// Advances the recursion by one DH row. gamma, gammaDot, gammaDDot are the row's rotation about
-/// z(i-1) and its time derivatives. The paper's eq. 14 assumes delta = 0 (all of Tables 1-4); the
-/// extra terms here keep it exact for delta != 0, where the origin moves within frame i-1.
-template <typename T>
-FrameState<T> propagate(const FrameState<T>& prev, const T& gamma, const T& gammaDot,
+namespace detail {
+inline constexpr double kHalfPi = std::numbers::pi / 2;
+
+/// (i-1)_R_i^T v = Rx(-beta) Rz(-gamma) v, with gamma given by its cosine and sine. The rotation
+/// is applied as two plane rotations: with automatic differentiation this costs far less than a
+/// matrix product, and beta = 0 or +-pi/2 (every row of Tables 1-4) is exact.
+template <typename T, typename C>
+Eigen::Matrix<T, 3, 1> toChild(const Eigen::Matrix<T, 3, 1>& v, const C& c, const C& s,
+                               double beta) {
+  const T x = c * v(0) + s * v(1);
+  const T y = c * v(1) - s * v(0);
+  if (beta == 0.0) return {x, y, v(2)};
+  if (beta == kHalfPi) return {x, v(2), -y};
+  if (beta == -kHalfPi) return {x, -v(2), y};
+  const double cb = std::cos(beta), sb = std::sin(beta);
+  return {x, cb * y + sb * v(2), cb * v(2) - sb * y};
+}
+
+/// (i-1)_R_i v = Rz(gamma) Rx(beta) v.
+template <typename T, typename C>
+Eigen::Matrix<T, 3, 1> toParent(const Eigen::Matrix<T, 3, 1>& v, const C& c, const C& s,
+                                double beta) {
+  T y = v(1), z = v(2);
+  if (beta == kHalfPi) {
+    y = -v(2);
+    z = v(1);
+  } else if (beta == -kHalfPi) {
+    y = v(2);
+    z = -v(1);
+  } else if (beta != 0.0) {
+    const double cb = std::cos(beta), sb = std::sin(beta);
+    y = cb * v(1) - sb * v(2);
+    z = sb * v(1) + cb * v(2);
+  }
+  return {c * v(0) - s * y, s * v(0) + c * y, z};
+}
+}  // namespace detail
+
+/// Advances the recursion by one DH row H = Rz(gamma) Tz(lambda) Rx(beta) Tx(delta); c, s are
+/// cos and sin of gamma, gammaDot and gammaDDot its rates (zero for a constant row).
+/// Eqs. 12-15 in frame i-1 coordinates, then expressed in frame i:
+///   w  = w' + gammaDot k,   w. = w.' + w' x gammaDot k + gammaDDot k,
+///   a  = a' + w.' x lambda k + w' x (w' x lambda k)  [+ w. x d + w x (w x d) when delta != 0,
+///        where d = delta Rz(gamma) x is the part of the offset that turns with frame i].
+/// The paper's eq. 15 prints R g; coordinates change by the transpose, R^T g, as for the rest.
+template <typename T, typename C>
+FrameState<T> propagate(const FrameState<T>& prev, const C& c, const C& s, const T& gammaDot,
                         const T& gammaDDot, double lambda, double beta, double delta) {
   using Vec3 = Eigen::Matrix<T, 3, 1>;
-  using Mat3 = Eigen::Matrix<T, 3, 3>;
-  const Eigen::Matrix<T, 4, 4> h = dhTransform<T>(gamma, lambda, beta, delta);
-  const Mat3 r = h.template topLeftCorner<3, 3>();  // (i-1)_R_i
-  const Vec3 k(T(0), T(0), T(1));
-  const Vec3 lam(T(0), T(0), T(lambda));             // part fixed in frame i-1
-  const Vec3 d = h.template topRightCorner<3, 1>() - lam;  // part that turns with frame i
-
-  // Angular velocity and acceleration of frame i, in frame i-1 coordinates (eqs. 12, 13).
-  const Vec3 w = prev.omega + gammaDot * k;
-  const Vec3 wd = prev.omegaDot + prev.omega.cross(gammaDot * k) + gammaDDot * k;
-  // Acceleration of origin i (eq. 14, plus the delta terms).
-  Vec3 a = prev.accel + prev.omegaDot.cross(lam) + prev.omega.cross(prev.omega.cross(lam));
-  if (delta != 0.0) a += wd.cross(d) + w.cross(w.cross(d));
-
+  const Vec3& w0 = prev.omega;
+  const Vec3& wd0 = prev.omegaDot;
+  const Vec3 w(w0(0), w0(1), w0(2) + gammaDot);
+  const Vec3 wd(wd0(0) + w0(1) * gammaDot, wd0(1) - w0(0) * gammaDot, wd0(2) + gammaDDot);
+  Vec3 a = prev.accel;
+  if (lambda != 0.0) {
+    a(0) += lambda * (wd0(1) + w0(0) * w0(2));
+    a(1) += lambda * (w0(1) * w0(2) - wd0(0));
+    a(2) -= lambda * (w0(0) * w0(0) + w0(1) * w0(1));
+  }
+  if (delta != 0.0) {
+    const Vec3 d(delta * c, delta * s, T(0));
+    a += wd.cross(d) + w.cross(w.cross(d));
+  }
   FrameState<T> next;
-  const Mat3 rt = r.transpose();
-  next.rotation = prev.rotation * r;
-  next.position = prev.position + prev.rotation * h.template topRightCorner<3, 1>();  // eq. 11
-  next.omega = rt * w;
-  next.omegaDot = rt * wd;
-  next.accel = rt * a;
-  next.up = rt * prev.up;  // eq. 15: coordinates change by the transpose
+  next.omega = detail::toChild(w, c, s, beta);
+  next.omegaDot = detail::toChild(wd, c, s, beta);
+  next.accel = detail::toChild(a, c, s, beta);
+  next.up = detail::toChild(prev.up, c, s, beta);
   return next;
+}
+
+/// A row whose rotation is a joint angle: gamma = angle + offset.
+template <typename T>
+FrameState<T> propagateJoint(const FrameState<T>& prev, const T& angle, double offset,
+                             const T& rate, const T& accel, double lambda, double beta,
+                             double delta = 0.0) {
+  using std::cos;
+  using std::sin;
+  const T gamma = offset == 0.0 ? angle : T(angle + offset);
+  return propagate<T, T>(prev, cos(gamma), sin(gamma), rate, accel, lambda, beta, delta);
+}
+
+/// A row with a constant rotation gamma (strap angles, fixed offsets).
+template <typename T>
+FrameState<T> propagateFixed(const FrameState<T>& prev, double gamma, double lambda, double beta,
+                             double delta = 0.0) {
+  const T zero(0);
+  return propagate<T, double>(prev, std::cos(gamma), std::sin(gamma), zero, zero, lambda, beta,
+                              delta);
 }
 
 /// What the arm model predicts at one instant, for every sensor.
 template <typename T>
 struct ArmKinematics {
-  FrameState<T> upperImu;  ///< upper-arm IMU frame (Table 1, frame 6)
-  FrameState<T> forearmImu;  ///< forearm IMU frame (Table 3, frame 9)
+  FrameState<T> upperImu;        ///< upper-arm IMU frame (Table 1, frame 6)
+  FrameState<T> forearmImu;      ///< forearm IMU frame (Table 3, frame 9)
   Eigen::Matrix<T, 3, 1> elbow;  ///< elbow position in frame 0 (Table 2, frame 5), m
   Eigen::Matrix<T, 3, 1> wrist;  ///< wrist position in frame 0 (Table 4, frame 7), m
-  Eigen::Matrix<T, 3, 3> upperArmRotation;  ///< frame 3 (upper arm, z along the arm) in frame 0
-  Eigen::Matrix<T, 3, 3> forearmRotation;   ///< frame 6 (forearm, z along the forearm) in frame 0
 };
 
 /// Runs the recursion for the whole arm. th, thd, thdd: joint angles (rad), rates (rad/s),
@@ -120,38 +175,54 @@ template <typename T>
 ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5, 1>& th,
                                const Eigen::Matrix<T, 5, 1>& thd,
                                const Eigen::Matrix<T, 5, 1>& thdd, const Eigen::Vector3d& gUp) {
-  constexpr double kHalfPi = std::numbers::pi / 2;
-  const T zero(0);
-  const T c90(kHalfPi);
+  using std::cos;
+  using std::sin;
+  using Vec3 = Eigen::Matrix<T, 3, 1>;
+  constexpr double kHalfPi = detail::kHalfPi;
   FrameState<T> f0;
   f0.up = gUp.cast<T>();
-  // Shoulder, rows 1-3 (shared by Tables 1-4).
-  const FrameState<T> f1 = propagate<T>(f0, th(0), thd(0), thdd(0), 0.0, kHalfPi, 0.0);
-  const FrameState<T> f2 = propagate<T>(f1, th(1) + c90, thd(1), thdd(1), 0.0, kHalfPi, 0.0);
-  const FrameState<T> f3 = propagate<T>(f2, th(2), thd(2), thdd(2), 0.0, 0.0, 0.0);
+  // Shoulder, rows 1-3 (shared by Tables 1-4). Rows 1 and 2 rotate by th0 and th1 + pi/2.
+  const T c1 = cos(th(0)), s1 = sin(th(0));
+  const T c2 = -sin(th(1)), s2 = cos(th(1));  // cos and sin of th1 + pi/2
+  const T c3 = cos(th(2)), s3 = sin(th(2));
+  const FrameState<T> f1 = propagate<T, T>(f0, c1, s1, thd(0), thdd(0), 0.0, kHalfPi, 0.0);
+  const FrameState<T> f2 = propagate<T, T>(f1, c2, s2, thd(1), thdd(1), 0.0, kHalfPi, 0.0);
+  const FrameState<T> f3 = propagate<T, T>(f2, c3, s3, thd(2), thdd(2), 0.0, 0.0, 0.0);
 
   ArmKinematics<T> out;
-  out.upperArmRotation = f3.rotation;
   // Upper-arm IMU, Table 1 rows 4-6.
   {
-    const FrameState<T> u4 = propagate<T>(f3, zero, zero, zero, geo.lu3, 0.0, 0.0);
-    const FrameState<T> u5 = propagate<T>(u4, T(geo.thu4), zero, zero, 0.0, kHalfPi, 0.0);
-    out.upperImu = propagate<T>(u5, zero, zero, zero, geo.lu5, 0.0, 0.0);
+    const FrameState<T> u4 = propagateFixed<T>(f3, 0.0, geo.lu3, 0.0);
+    const FrameState<T> u5 = propagateFixed<T>(u4, geo.thu4, 0.0, kHalfPi);
+    out.upperImu = propagateFixed<T>(u5, 0.0, geo.lu5, 0.0);
   }
-  // Elbow, Table 2 rows 4-5.
-  const FrameState<T> e4 = propagate<T>(f3, c90, zero, zero, geo.l3, -kHalfPi, 0.0);
-  const FrameState<T> e5 = propagate<T>(e4, th(3), thd(3), thdd(3), 0.0, kHalfPi, 0.0);
-  out.elbow = e5.position;
-  // Forearm, Table 3 row 6 (pronation/supination) shared with Table 4.
-  const FrameState<T> e6 = propagate<T>(e5, th(4), thd(4), thdd(4), 0.0, 0.0, 0.0);
-  out.forearmRotation = e6.rotation;
+  // Elbow, Table 2 rows 4-5; forearm, Table 3 rows 6-9.
+  const T c5 = cos(th(3)), s5 = sin(th(3));
+  const T c6 = cos(th(4)), s6 = sin(th(4));
   {
-    const FrameState<T> f7 = propagate<T>(e6, zero, zero, zero, geo.lf6, 0.0, 0.0);
-    const FrameState<T> f8 = propagate<T>(f7, T(geo.thf7 + kHalfPi), zero, zero, 0.0, kHalfPi, 0.0);
-    out.forearmImu = propagate<T>(f8, zero, zero, zero, geo.lf8, 0.0, 0.0);
+    const FrameState<T> e4 = propagateFixed<T>(f3, kHalfPi, geo.l3, -kHalfPi);
+    const FrameState<T> e5 = propagate<T, T>(e4, c5, s5, thd(3), thdd(3), 0.0, kHalfPi, 0.0);
+    const FrameState<T> e6 = propagate<T, T>(e5, c6, s6, thd(4), thdd(4), 0.0, 0.0, 0.0);
+    const FrameState<T> f7 = propagateFixed<T>(e6, 0.0, geo.lf6, 0.0);
+    const FrameState<T> f8 = propagateFixed<T>(f7, geo.thf7 + kHalfPi, 0.0, kHalfPi);
+    out.forearmImu = propagateFixed<T>(f8, 0.0, geo.lf8, 0.0);
   }
-  // Wrist, Table 4 row 7: only the position is needed.
-  out.wrist = e6.position + e6.rotation.col(2) * T(geo.l6);
+  // Positions (eq. 11): the elbow is l3 along z3, the wrist l6 further along z6 (Table 4 row 7).
+  // Vectors are carried back to frame 0 row by row, the innermost row first.
+  const double c4 = 0.0, s4 = 1.0;  // row 4: gamma = pi/2
+  Vec3 v(T(0), T(0), T(geo.l6));                     // wrist offset in frame 6
+  v = detail::toParent(v, c6, s6, 0.0);              // row 6 (no translation)
+  v = detail::toParent(v, c5, s5, kHalfPi);          // row 5
+  v = detail::toParent(v, c4, s4, -kHalfPi);         // row 4 rotation ...
+  v(2) += T(geo.l3);                                 // ... and its translation l3 along z3
+  // v is now wrist - shoulder in frame 3; rotate both it and the elbow (l3 z3) to frame 0.
+  Vec3 e(T(0), T(0), T(geo.l3));
+  v = detail::toParent(v, c3, s3, 0.0);
+  e = detail::toParent(e, c3, s3, 0.0);
+  v = detail::toParent(v, c2, s2, kHalfPi);
+  e = detail::toParent(e, c2, s2, kHalfPi);
+  out.wrist = detail::toParent(v, c1, s1, kHalfPi);
+  out.elbow = detail::toParent(e, c1, s1, kHalfPi);
   return out;
 }
 
