@@ -2,6 +2,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -63,6 +64,8 @@ void writeRecording(const std::filesystem::path& csvPath, const Recording& recor
 /// The sidecar path for a CSV path: same name, extension .json.
 std::filesystem::path sidecarPath(const std::filesystem::path& csvPath);
 RecordingMeta readSidecar(const std::filesystem::path& jsonPath);  // throws RecordingError
+/// Writes the sidecar as pretty-printed JSON, via a temporary file renamed into place.
+/// Throws RecordingError when it cannot be written.
 void writeSidecar(const std::filesystem::path& jsonPath, const RecordingMeta& meta);
 
 }  // namespace armtrack

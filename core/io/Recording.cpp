@@ -1,0 +1,723 @@
+// Reader and writer for the open recording format; the format itself is specified in
+// docs/recording-format.md.
+#include "core/io/Recording.h"
+
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <random>
+#include <string_view>
+#include <system_error>
+
+namespace armtrack {
+
+namespace fs = std::filesystem;
+
+RecordingError::RecordingError(std::string file, int line, int column, const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                         message),
+      m_file(std::move(file)),
+      m_line(line),
+      m_column(column),
+      m_message(message) {}
+
+fs::path sidecarPath(const fs::path& csvPath) {
+  fs::path p = csvPath;
+  p.replace_extension(".json");
+  return p;
+}
+
+namespace {
+
+constexpr std::string_view kFormatName = "armtrack-recording";
+constexpr int kFormatVersion = 1;
+
+// ---------------------------------------------------------------------------------------------
+// Column groups. Every group is all-or-nothing on a row; slot 0 of a row is the time.
+
+enum Group { kUaGyr, kUaAcc, kFaGyr, kFaAcc, kElbow, kWrist, kCamWrist, kCamElbow, kTruth };
+constexpr int kNumGroups = 9;
+
+struct GroupDef {
+  std::string_view label;  // for messages
+  int size;
+  std::array<std::string_view, 5> columns;
+  int firstSlot;
+};
+
+// The fixed write order; also the slot layout of a parsed row.
+constexpr std::array<GroupDef, kNumGroups> kGroups{{
+    {"upper-arm gyroscope", 3, {"ua_gx", "ua_gy", "ua_gz"}, 1},
+    {"upper-arm accelerometer", 3, {"ua_ax", "ua_ay", "ua_az"}, 4},
+    {"forearm gyroscope", 3, {"fa_gx", "fa_gy", "fa_gz"}, 7},
+    {"forearm accelerometer", 3, {"fa_ax", "fa_ay", "fa_az"}, 10},
+    {"elbow position", 3, {"elbow_x", "elbow_y", "elbow_z"}, 13},
+    {"wrist position", 3, {"wrist_x", "wrist_y", "wrist_z"}, 16},
+    {"wrist marker pixel", 2, {"cam_wrist_u", "cam_wrist_v"}, 19},
+    {"elbow marker pixel", 2, {"cam_elbow_u", "cam_elbow_v"}, 21},
+    {"true joint angles", 5, {"true_th0", "true_th1", "true_th2", "true_th4", "true_th5"}, 23},
+}};
+constexpr int kNumSlots = 28;
+
+std::string osReason(int err) {
+  return err != 0 ? std::generic_category().message(err) : std::string("unknown I/O error");
+}
+
+std::string inQuotes(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+std::string formatDouble(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+/// Reads a whole file into memory; errors report line 0, column 0.
+std::string readWholeFile(const fs::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (fs::is_directory(path, ec))
+    throw RecordingError(name, 0, 0, "cannot open file: is a directory");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RecordingError(name, 0, 0, "cannot open file: " + osReason(errno));
+  const auto size = fs::file_size(path, ec);
+  std::string data;
+  std::size_t chunk = ec ? std::size_t{1} << 20 : static_cast<std::size_t>(size) + 1;
+  for (;;) {
+    const std::size_t old = data.size();
+    data.resize(old + chunk);
+    in.read(data.data() + old, static_cast<std::streamsize>(chunk));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    data.resize(old + got);
+    if (got < chunk) break;
+    chunk = std::size_t{1} << 20;
+  }
+  if (in.bad()) throw RecordingError(name, 0, 0, "cannot read file: " + osReason(errno));
+  return data;
+}
+
+// ---------------------------------------------------------------------------------------------
+// CSV reading
+
+/// Yields the lines that carry data (not blank, not comments) with their physical line numbers.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : m_p(text.data()), m_end(text.data() + text.size()) {
+    if (text.starts_with("\xEF\xBB\xBF")) m_p += 3;  // UTF-8 byte order mark
+  }
+
+  bool next(std::string_view& line, int& number) {
+    while (m_p < m_end) {
+      const char* nl = static_cast<const char*>(std::memchr(m_p, '\n', m_end - m_p));
+      const char* e = nl ? nl : m_end;
+      std::string_view s(m_p, e - m_p);
+      m_p = nl ? nl + 1 : m_end;
+      ++m_line;
+      if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+      if (!s.empty() && s.front() == '#') continue;
+      if (s.find_first_not_of(" \t") == std::string_view::npos) continue;
+      line = s;
+      number = m_line;
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  const char* m_p;
+  const char* m_end;
+  int m_line = 0;
+};
+
+/// Splits a line at commas into out (cleared first).
+void splitFields(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  const char* p = line.data();
+  const char* e = p + line.size();
+  for (;;) {
+    const char* c = static_cast<const char*>(std::memchr(p, ',', e - p));
+    out.emplace_back(p, (c ? c : e) - p);
+    if (!c) break;
+    p = c + 1;
+  }
+}
+
+class CsvParser {
+ public:
+  CsvParser(std::string file, std::string_view text) : m_file(std::move(file)), m_cursor(text) {}
+
+  std::vector<ArmSample> parse(std::size_t expectedRows) {
+    parseHeader();
+    std::vector<ArmSample> samples;
+    samples.reserve(expectedRows);
+    std::string_view line;
+    int lineNo = 0;
+    double prevT = 0.0;
+    bool first = true;
+    std::vector<std::string_view> fields;
+    fields.reserve(m_slotOfColumn.size() + 1);
+    std::array<double, kNumSlots> v{};
+    std::array<bool, kNumSlots> filled{};
+    std::array<bool, kNumGroups> present{};
+
+    while (m_cursor.next(line, lineNo)) {
+      splitFields(line, fields);
+      const int n = static_cast<int>(fields.size());
+      const int expected = static_cast<int>(m_slotOfColumn.size());
+      if (n != expected) {
+        fail(lineNo, std::min(n, expected) + 1,
+             "row has " + std::to_string(n) + " fields, header has " + std::to_string(expected));
+      }
+      filled.fill(false);
+      for (int c = 0; c < n; ++c) {
+        const int slot = m_slotOfColumn[c];
+        if (slot < 0) continue;
+        const std::string_view cell = trim(fields[c]);
+        if (cell.empty()) continue;
+        v[slot] = parseNumber(cell, lineNo, c);
+        filled[slot] = true;
+      }
+
+      if (!filled[0]) fail(lineNo, m_columnOfSlot[0] + 1, "empty cell in required column \"t\"");
+      const double t = v[0];
+      if (!first && t < prevT) {
+        fail(lineNo, m_columnOfSlot[0] + 1,
+             "time goes backwards: " + formatDouble(t) + " after " + formatDouble(prevT) +
+                 " (\"t\" must not decrease)");
+      }
+      first = false;
+      prevT = t;
+
+      for (int g = 0; g < kNumGroups; ++g) present[g] = groupPresent(g, filled, lineNo);
+      checkImu(kUaGyr, kUaAcc, present, lineNo);
+      checkImu(kFaGyr, kFaAcc, present, lineNo);
+
+      ArmSample& s = samples.emplace_back();
+      s.t = t;
+      auto vec3 = [&](Group g) {
+        const int k = kGroups[g].firstSlot;
+        return Eigen::Vector3d(v[k], v[k + 1], v[k + 2]);
+      };
+      auto vec2 = [&](Group g) {
+        const int k = kGroups[g].firstSlot;
+        return Eigen::Vector2d(v[k], v[k + 1]);
+      };
+      if (present[kUaGyr]) s.upperArm = ImuReading{vec3(kUaGyr), vec3(kUaAcc)};
+      if (present[kFaGyr]) s.forearm = ImuReading{vec3(kFaGyr), vec3(kFaAcc)};
+      if (present[kElbow]) s.elbow = vec3(kElbow);
+      if (present[kWrist]) s.wrist = vec3(kWrist);
+      if (present[kCamWrist]) s.camWrist = vec2(kCamWrist);
+      if (present[kCamElbow]) s.camElbow = vec2(kCamElbow);
+      if (present[kTruth]) {
+        const int k = kGroups[kTruth].firstSlot;
+        JointVector th;
+        th << v[k], v[k + 1], v[k + 2], v[k + 3], v[k + 4];
+        s.trueAngles = th;
+      }
+    }
+    return samples;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, int column, const std::string& message) const {
+    throw RecordingError(m_file, line, column, message);
+  }
+
+  void parseHeader() {
+    std::string_view line;
+    if (!m_cursor.next(line, m_headerLine)) {
+      fail(0, 0, "missing header (the file has no lines other than comments and blank lines)");
+    }
+    std::vector<std::string_view> names;
+    splitFields(line, names);
+    m_columnOfSlot.fill(-1);
+    m_slotOfColumn.assign(names.size(), -1);
+    for (int c = 0; c < static_cast<int>(names.size()); ++c) {
+      const std::string_view name = trim(names[c]);
+      const int slot = slotOf(name);
+      if (slot < 0) continue;  // unknown columns are ignored
+      if (m_columnOfSlot[slot] >= 0)
+        fail(m_headerLine, c + 1, "duplicate column " + inQuotes(name));
+      m_columnOfSlot[slot] = c;
+      m_slotOfColumn[c] = slot;
+    }
+    if (m_columnOfSlot[0] < 0) fail(m_headerLine, 0, "no \"t\" column in header");
+    for (int g = 0; g < kNumGroups; ++g) {
+      const GroupDef& def = kGroups[g];
+      int have = -1, missing = -1;
+      for (int k = def.size - 1; k >= 0; --k) {
+        (m_columnOfSlot[def.firstSlot + k] >= 0 ? have : missing) = k;  // the first of each
+      }
+      if (have >= 0 && missing >= 0) {
+        fail(m_headerLine, m_columnOfSlot[def.firstSlot + have] + 1,
+             "column " + inQuotes(def.columns[have]) + " without " +
+                 inQuotes(def.columns[missing]) + ": the " + std::string(def.label) +
+                 " needs all of " + listColumns(def));
+      }
+    }
+  }
+
+  static int slotOf(std::string_view name) {
+    if (name == "t") return 0;
+    for (const GroupDef& def : kGroups) {
+      for (int k = 0; k < def.size; ++k) {
+        if (def.columns[k] == name) return def.firstSlot + k;
+      }
+    }
+    return -1;
+  }
+
+  static std::string listColumns(const GroupDef& def) {
+    std::string s;
+    for (int k = 0; k < def.size; ++k) s += (k ? ", " : "") + std::string(def.columns[k]);
+    return s;
+  }
+
+  std::string_view slotName(int slot) const {
+    if (slot == 0) return "t";
+    for (const GroupDef& def : kGroups) {
+      if (slot < def.firstSlot + def.size) return def.columns[slot - def.firstSlot];
+    }
+    return "?";
+  }
+
+  double parseNumber(std::string_view cell, int line, int column) const {
+    const char* b = cell.data();
+    const char* e = b + cell.size();
+    if (*b == '+' && e - b > 1 && b[1] != '-' && b[1] != '+') ++b;  // from_chars rejects '+'
+    double x;
+    const auto r = std::from_chars(b, e, x);
+    if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
+    const std::string where =
+        inQuotes(cell) + " in column " + inQuotes(slotName(m_slotOfColumn[column]));
+    if (r.ptr != e || r.ec == std::errc::invalid_argument) {
+      fail(line, column + 1,
+           "bad number " + where + " (expected a decimal number such as -1.25e-3)");
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+      fail(line, column + 1, "number out of range " + where);
+    }
+    fail(line, column + 1, "not a finite number " + where + " (NaN and infinity are not allowed)");
+  }
+
+  bool groupPresent(int g, const std::array<bool, kNumSlots>& filled, int line) const {
+    const GroupDef& def = kGroups[g];
+    if (m_columnOfSlot[def.firstSlot] < 0) return false;  // not in the header
+    int count = 0;
+    for (int k = 0; k < def.size; ++k) count += filled[def.firstSlot + k];
+    if (count == 0) return false;
+    if (count == def.size) return true;
+    int empty = 0, set = 0;
+    for (int k = def.size - 1; k >= 0; --k) (filled[def.firstSlot + k] ? set : empty) = k;
+    fail(line, m_columnOfSlot[def.firstSlot + empty] + 1,
+         "empty cell in column " + inQuotes(def.columns[empty]) + " while " +
+             inQuotes(def.columns[set]) + " is set: the " + std::string(def.label) +
+             " needs all of " + listColumns(def) + " or none");
+  }
+
+  void checkImu(Group gyr, Group acc, const std::array<bool, kNumGroups>& present, int line) const {
+    if (present[gyr] == present[acc]) return;
+    const Group have = present[gyr] ? gyr : acc;
+    const Group missing = present[gyr] ? acc : gyr;
+    const int col = m_columnOfSlot[kGroups[missing].firstSlot] >= 0
+                        ? m_columnOfSlot[kGroups[missing].firstSlot]
+                        : m_columnOfSlot[kGroups[have].firstSlot];
+    fail(line, col + 1,
+         std::string(kGroups[have].label) + " values but no " +
+             std::string(kGroups[missing].label) + " values (" + listColumns(kGroups[missing]) +
+             "); an IMU reading needs both");
+  }
+
+  std::string m_file;
+  LineCursor m_cursor;
+  int m_headerLine = 0;
+  std::vector<int> m_slotOfColumn;              // header column -> slot, -1 if ignored
+  std::array<int, kNumSlots> m_columnOfSlot{};  // slot -> 0-based header column, -1 if absent
+};
+
+// ---------------------------------------------------------------------------------------------
+// Sidecar reading
+
+using Json = nlohmann::json;
+
+[[noreturn]] void metaFail(const std::string& file, const std::string& message) {
+  throw RecordingError(file, 0, 0, message);
+}
+
+double jsonNumber(const std::string& file, const Json& j, const std::string& key) {
+  if (!j.is_number() || !std::isfinite(j.get<double>())) {
+    metaFail(file, inQuotes(key) + " must be a finite number, got " + j.dump());
+  }
+  return j.get<double>();
+}
+
+template <std::size_t N>
+std::array<double, N> jsonNumbers(const std::string& file, const Json& j, const std::string& key) {
+  if (!j.is_array() || j.size() != N) {
+    metaFail(file, inQuotes(key) + " must be an array of " + std::to_string(N) + " numbers, got " +
+                       j.dump());
+  }
+  std::array<double, N> out;
+  for (std::size_t i = 0; i < N; ++i) {
+    out[i] = jsonNumber(file, j[i], key + "[" + std::to_string(i) + "]");
+  }
+  return out;
+}
+
+/// Line and column (1-based) of the byte at 1-based position byte.
+std::pair<int, int> textPosition(std::string_view text, std::size_t byte) {
+  const std::size_t end = std::min(byte == 0 ? 0 : byte - 1, text.size());
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < end; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing: into a temporary file beside the target, renamed over it only once complete.
+
+class TempFile {
+ public:
+  explicit TempFile(const fs::path& target) : m_target(target) {
+    std::random_device rd;
+    const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
+    char hex[17];
+    const auto r = std::to_chars(hex, hex + 16, tag, 16);
+    m_tmp = target;
+    m_tmp.replace_filename("." + target.filename().string() + ".tmp-" + std::string(hex, r.ptr));
+    errno = 0;
+    m_out.open(m_tmp, std::ios::binary | std::ios::trunc);
+    if (!m_out) {
+      fail("cannot create temporary file " + inQuotes(m_tmp.string()) + ": " + osReason(errno));
+    }
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+
+  ~TempFile() {
+    if (m_out.is_open()) m_out.close();
+    if (!m_published) {
+      std::error_code ec;
+      fs::remove(m_tmp, ec);
+    }
+  }
+
+  void write(std::string_view data) {
+    errno = 0;
+    m_out.write(data.data(), static_cast<std::streamsize>(data.size()));
+    if (!m_out) fail("write failed: " + osReason(errno));
+  }
+
+  /// Flushes and closes; throws if any byte did not reach the OS.
+  void close() {
+    errno = 0;
+    m_out.flush();
+    if (!m_out) fail("write failed: " + osReason(errno));
+    m_out.close();
+    if (!m_out) fail("closing the file failed: " + osReason(errno));
+  }
+
+  /// Renames the finished temporary file to the target, replacing any old file.
+  void publish() {
+    std::error_code ec;
+    fs::rename(m_tmp, m_target, ec);
+    if (ec) fail("cannot rename " + inQuotes(m_tmp.string()) + " into place: " + ec.message());
+    m_published = true;
+  }
+
+  [[noreturn]] void fail(const std::string& message) const {
+    throw RecordingError(m_target.string(), 0, 0, message);
+  }
+
+ private:
+  fs::path m_target;
+  fs::path m_tmp;
+  std::ofstream m_out;
+  bool m_published = false;
+};
+
+std::string sidecarText(const RecordingMeta& meta) {
+  using OJson = nlohmann::ordered_json;
+  const ArmGeometry& g = meta.geometry;
+  OJson j;
+  j["format"] = kFormatName;
+  j["version"] = kFormatVersion;
+  j["geometry"] = {{"l3", g.l3},   {"l6", g.l6},   {"lu3", g.lu3},   {"thu4", g.thu4},
+                   {"lu5", g.lu5}, {"lf6", g.lf6}, {"thf7", g.thf7}, {"lf8", g.lf8}};
+  j["up"] = {meta.up.x(), meta.up.y(), meta.up.z()};
+  j["g"] = meta.g;
+  if (meta.camera) {
+    const CameraParams& c = *meta.camera;
+    OJson r = OJson::array();
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 3; ++k) r.push_back(c.R(i, k));
+    }
+    j["camera"] = {{"fx", c.fx},
+                   {"fy", c.fy},
+                   {"cx", c.cx},
+                   {"cy", c.cy},
+                   {"dist", c.dist},
+                   {"R", r},
+                   {"t", {c.t.x(), c.t.y(), c.t.z()}}};
+  }
+  return j.dump(2) + "\n";
+}
+
+void checkMetaWritable(const std::string& file, const RecordingMeta& meta) {
+  const ArmGeometry& g = meta.geometry;
+  bool ok = std::isfinite(g.l3) && std::isfinite(g.l6) && std::isfinite(g.lu3) &&
+            std::isfinite(g.thu4) && std::isfinite(g.lu5) && std::isfinite(g.lf6) &&
+            std::isfinite(g.thf7) && std::isfinite(g.lf8) && meta.up.allFinite() &&
+            std::isfinite(meta.g);
+  if (meta.camera) {
+    const CameraParams& c = *meta.camera;
+    ok = ok && std::isfinite(c.fx) && std::isfinite(c.fy) && std::isfinite(c.cx) &&
+         std::isfinite(c.cy) && c.R.allFinite() && c.t.allFinite() &&
+         std::all_of(c.dist.begin(), c.dist.end(), [](double d) { return std::isfinite(d); });
+  }
+  if (!ok) throw RecordingError(file, 0, 0, "cannot write non-finite values in the sidecar");
+}
+
+/// Appends ",<shortest round-trip form>".
+inline void appendNumber(std::string& out, double v) {
+  char buf[32];
+  buf[0] = ',';
+  const auto r = std::to_chars(buf + 1, buf + sizeof buf, v);
+  out.append(buf, r.ptr);
+}
+
+std::string csvHeader(const std::array<bool, kNumGroups>& present) {
+  std::string h = "t";
+  for (int g = 0; g < kNumGroups; ++g) {
+    if (!present[g]) continue;
+    for (int k = 0; k < kGroups[g].size; ++k) h += "," + std::string(kGroups[g].columns[k]);
+  }
+  return h;
+}
+
+/// Writes the CSV into an open temporary file.
+void writeCsv(TempFile& out, const std::string& file, const Recording& rec) {
+  std::array<bool, kNumGroups> present{};
+  for (const ArmSample& s : rec.samples) {
+    present[kUaGyr] |= s.upperArm.has_value();
+    present[kFaGyr] |= s.forearm.has_value();
+    present[kElbow] |= s.elbow.has_value();
+    present[kWrist] |= s.wrist.has_value();
+    present[kCamWrist] |= s.camWrist.has_value();
+    present[kCamElbow] |= s.camElbow.has_value();
+    present[kTruth] |= s.trueAngles.has_value();
+  }
+  present[kUaAcc] = present[kUaGyr];
+  present[kFaAcc] = present[kFaGyr];
+
+  constexpr std::size_t kFlushAt = std::size_t{1} << 20;
+  std::string buf;
+  buf.reserve(kFlushAt + 4096);
+  buf += "# ArmTrack recording, format version 1\n";
+  buf += csvHeader(present);
+  buf += '\n';
+
+  constexpr int kFirstRowLine = 3;  // comment, header
+  std::array<double, kNumSlots> v{};
+  double prevT = 0.0;
+  for (std::size_t i = 0; i < rec.samples.size(); ++i) {
+    const ArmSample& s = rec.samples[i];
+    const int line = kFirstRowLine + static_cast<int>(i);
+    if (!std::isfinite(s.t)) {
+      throw RecordingError(file, line, 1, "cannot write non-finite time " + formatDouble(s.t));
+    }
+    if (i > 0 && s.t < prevT) {
+      throw RecordingError(
+          file, line, 1,
+          "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT));
+    }
+    prevT = s.t;
+
+    std::array<bool, kNumGroups> has{};
+    auto put = [&](Group g, const auto& x) {
+      has[g] = true;
+      for (int k = 0; k < kGroups[g].size; ++k) v[kGroups[g].firstSlot + k] = x[k];
+    };
+    if (s.upperArm) {
+      put(kUaGyr, s.upperArm->gyr);
+      put(kUaAcc, s.upperArm->acc);
+    }
+    if (s.forearm) {
+      put(kFaGyr, s.forearm->gyr);
+      put(kFaAcc, s.forearm->acc);
+    }
+    if (s.elbow) put(kElbow, *s.elbow);
+    if (s.wrist) put(kWrist, *s.wrist);
+    if (s.camWrist) put(kCamWrist, *s.camWrist);
+    if (s.camElbow) put(kCamElbow, *s.camElbow);
+    if (s.trueAngles) put(kTruth, *s.trueAngles);
+
+    char tbuf[32];
+    const auto tr = std::to_chars(tbuf, tbuf + sizeof tbuf, s.t);
+    buf.append(tbuf, tr.ptr);
+    int column = 1;
+    for (int g = 0; g < kNumGroups; ++g) {
+      if (!present[g]) continue;
+      const GroupDef& def = kGroups[g];
+      if (!has[g]) {
+        buf.append(static_cast<std::size_t>(def.size), ',');
+        column += def.size;
+        continue;
+      }
+      for (int k = 0; k < def.size; ++k) {
+        const double x = v[def.firstSlot + k];
+        ++column;
+        if (!std::isfinite(x)) {
+          throw RecordingError(file, line, column,
+                               "cannot write non-finite value " + formatDouble(x) + " in column " +
+                                   inQuotes(def.columns[k]));
+        }
+        appendNumber(buf, x);
+      }
+    }
+    buf += '\n';
+    if (buf.size() >= kFlushAt) {
+      out.write(buf);
+      buf.clear();
+    }
+  }
+  out.write(buf);
+}
+
+}  // namespace
+
+Recording readRecording(const fs::path& csvPath) {
+  Recording rec;
+  const fs::path jsonPath = sidecarPath(csvPath);
+  std::error_code ec;
+  if (fs::status(jsonPath, ec).type() != fs::file_type::not_found) {
+    rec.meta = readSidecar(jsonPath);  // also reports a sidecar that exists but cannot be read
+  } else {
+    rec.warnings.push_back("no sidecar " + inQuotes(jsonPath.string()) +
+                           " found; using the default geometry, up and g");
+  }
+  const std::string text = readWholeFile(csvPath);
+  const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  rec.samples = CsvParser(csvPath.string(), text).parse(lines + 1);
+  return rec;
+}
+
+RecordingMeta readSidecar(const fs::path& jsonPath) {
+  const std::string file = jsonPath.string();
+  const std::string text = readWholeFile(jsonPath);
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    const auto [line, column] = textPosition(text, e.byte);
+    std::string what = e.what();
+    if (const auto p = what.find("] "); p != std::string::npos) what.erase(0, p + 2);
+    throw RecordingError(file, line, column,
+                         "bad JSON at byte " + std::to_string(e.byte) + ": " + what);
+  }
+  if (!j.is_object()) metaFail(file, "the sidecar must be a JSON object");
+
+  if (!j.contains("format")) metaFail(file, "missing \"format\": expected \"armtrack-recording\"");
+  if (!j["format"].is_string() || j["format"].get<std::string>() != kFormatName) {
+    metaFail(file, "\"format\" is " + j["format"].dump() + ", expected \"armtrack-recording\"");
+  }
+  if (!j.contains("version")) metaFail(file, "missing \"version\": expected 1");
+  if (!j["version"].is_number() || j["version"].get<double>() != kFormatVersion) {
+    metaFail(file, "unsupported \"version\" " + j["version"].dump() + ": this reader knows 1");
+  }
+
+  RecordingMeta meta;
+  if (j.contains("geometry")) {
+    const Json& g = j["geometry"];
+    if (!g.is_object()) metaFail(file, "\"geometry\" must be an object");
+    ArmGeometry& geo = meta.geometry;
+    const std::pair<const char*, double*> keys[] = {
+        {"l3", &geo.l3},   {"l6", &geo.l6},   {"lu3", &geo.lu3},   {"thu4", &geo.thu4},
+        {"lu5", &geo.lu5}, {"lf6", &geo.lf6}, {"thf7", &geo.thf7}, {"lf8", &geo.lf8}};
+    for (const auto& [key, dst] : keys) {
+      if (g.contains(key)) *dst = jsonNumber(file, g[key], std::string("geometry.") + key);
+    }
+  }
+  if (j.contains("up")) {
+    const auto u = jsonNumbers<3>(file, j["up"], "up");
+    const Eigen::Vector3d up(u[0], u[1], u[2]);
+    const double norm = up.norm();
+    if (!(norm >= 0.5 && norm <= 1.5)) {
+      metaFail(file,
+               "\"up\" must be a unit vector (pointing up in the shoulder frame), its norm is " +
+                   formatDouble(norm));
+    }
+    meta.up = up / norm;
+  }
+  if (j.contains("g")) {
+    meta.g = jsonNumber(file, j["g"], "g");
+    if (meta.g <= 0) metaFail(file, "\"g\" must be positive (m/s^2), got " + formatDouble(meta.g));
+  }
+  if (j.contains("camera")) {
+    const Json& c = j["camera"];
+    if (!c.is_object()) metaFail(file, "\"camera\" must be an object");
+    CameraParams cam;
+    const std::pair<const char*, double*> keys[] = {
+        {"fx", &cam.fx}, {"fy", &cam.fy}, {"cx", &cam.cx}, {"cy", &cam.cy}};
+    for (const auto& [key, dst] : keys) {
+      if (!c.contains(key)) metaFail(file, std::string("missing \"camera.") + key + "\"");
+      *dst = jsonNumber(file, c[key], std::string("camera.") + key);
+    }
+    if (c.contains("dist")) cam.dist = jsonNumbers<5>(file, c["dist"], "camera.dist");
+    if (c.contains("R")) {
+      const auto r = jsonNumbers<9>(file, c["R"], "camera.R");
+      for (int i = 0; i < 3; ++i) {
+        for (int k = 0; k < 3; ++k) cam.R(i, k) = r[3 * i + k];
+      }
+    }
+    if (c.contains("t")) {
+      const auto t = jsonNumbers<3>(file, c["t"], "camera.t");
+      cam.t = Eigen::Vector3d(t[0], t[1], t[2]);
+    }
+    meta.camera = cam;
+  }
+  // "side" and unknown keys are accepted and ignored.
+  return meta;
+}
+
+void writeSidecar(const fs::path& jsonPath, const RecordingMeta& meta) {
+  checkMetaWritable(jsonPath.string(), meta);
+  TempFile out(jsonPath);
+  out.write(sidecarText(meta));
+  out.close();
+  out.publish();
+}
+
+void writeRecording(const fs::path& csvPath, const Recording& recording) {
+  const fs::path jsonPath = sidecarPath(csvPath);
+  checkMetaWritable(jsonPath.string(), recording.meta);
+  TempFile csv(csvPath);
+  writeCsv(csv, csvPath.string(), recording);
+  csv.close();
+  TempFile json(jsonPath);
+  json.write(sidecarText(recording.meta));
+  json.close();
+  json.publish();
+  csv.publish();
+}
+
+}  // namespace armtrack
