@@ -1,0 +1,191 @@
+#include "core/simulation/SensorSimulator.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+namespace armtrack {
+namespace {
+
+// Independent noise streams per sensor, so that e.g. switching the Kinect on or off leaves the
+// IMU noise unchanged. Each is an mt19937_64 seeded from (seed, stream id).
+enum class NoiseStream : std::uint32_t { kUpperArm = 1, kForearm = 2, kKinect = 3 };
+
+class Noise {
+ public:
+  Noise(std::uint64_t seed, NoiseStream stream) {
+    std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
+                      static_cast<std::uint32_t>(stream)};
+    m_rng.seed(seq);
+  }
+  /// Three independent N(0, std^2) draws (always drawn, so the sequence does not depend on std).
+  Eigen::Vector3d vec3(double std) {
+    const double x = m_normal(m_rng), y = m_normal(m_rng), z = m_normal(m_rng);
+    return std * Eigen::Vector3d(x, y, z);
+  }
+
+ private:
+  std::mt19937_64 m_rng;
+  std::normal_distribution<double> m_normal{0.0, 1.0};
+};
+
+/// Sample times k / rate for k = 0 .. count-1, with t <= duration.
+struct Clock {
+  bool active = false;
+  double rate = 0.0;  // Hz
+  std::size_t count = 0;
+  std::size_t next = 0;
+  double nextTime() const {
+    return next < count ? static_cast<double>(next) / rate
+                        : std::numeric_limits<double>::infinity();
+  }
+};
+
+Clock makeClock(bool enabled, double rateHz, double duration) {
+  Clock c;
+  if (!enabled) return c;
+  c.active = true;
+  c.rate = rateHz;
+  // The tiny slack keeps a sample that lands on the duration despite rounding of duration*rate.
+  c.count = static_cast<std::size_t>(std::floor(duration * rateHz + 1e-9)) + 1;
+  return c;
+}
+
+void checkNonNegative(double v, const char* what) {
+  if (!(v >= 0.0) || !std::isfinite(v))
+    throw std::invalid_argument(std::string("simulateRecording: ") + what + " must be >= 0");
+}
+
+void checkImu(const ImuSimParams& p, const char* name) {
+  if (!p.enabled) return;
+  if (!(p.rateHz > 0.0) || !std::isfinite(p.rateHz))
+    throw std::invalid_argument(std::string("simulateRecording: ") + name + " rate must be > 0");
+  checkNonNegative(p.gyroNoiseStd, "gyro noise std");
+  checkNonNegative(p.accelNoiseStd, "accel noise std");
+  if (!p.gyroBias.allFinite())
+    throw std::invalid_argument("simulateRecording: gyro bias must be finite");
+  const Eigen::Matrix3d m = p.misalignment;
+  if (!m.allFinite() || !(m.transpose() * m).isIdentity(1e-9) || m.determinant() < 0.0)
+    throw std::invalid_argument(std::string("simulateRecording: ") + name +
+                                " misalignment must be a rotation matrix");
+}
+
+ImuReading simulateImu(const ImuPrediction& ideal, const ImuSimParams& p, Noise& noise) {
+  ImuReading r;
+  r.gyr = p.misalignment.transpose() * ideal.gyr + p.gyroBias + noise.vec3(p.gyroNoiseStd);
+  r.acc = p.misalignment.transpose() * ideal.acc + noise.vec3(p.accelNoiseStd);
+  return r;
+}
+
+}  // namespace
+
+double Table5::gyroStd() {
+  return std::sqrt(0.1) * std::numbers::pi / 180.0;
+}
+double Table5::accelStd() {
+  return std::sqrt(0.01);
+}
+double Table5::posStd() {
+  return std::sqrt(1e-4);
+}
+
+SimulationParams defaultSimulation() {
+  SimulationParams p;
+  p.duration = 10.0;
+  for (ImuSimParams* imu : {&p.upperArm, &p.forearm}) {
+    imu->enabled = true;
+    imu->rateHz = 1000.0;
+    imu->gyroNoiseStd = Table5::gyroStd();
+    imu->accelNoiseStd = Table5::accelStd();
+  }
+  p.kinect.enabled = true;
+  p.kinect.rateHz = 30.0;
+  p.kinect.noiseStd = Table5::posStd();
+  return p;
+}
+
+Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params) {
+  checkNonNegative(params.duration, "duration");
+  checkImu(params.upperArm, "upper-arm IMU");
+  checkImu(params.forearm, "forearm IMU");
+  if (params.kinect.enabled) {
+    if (!(params.kinect.rateHz > 0.0) || !std::isfinite(params.kinect.rateHz))
+      throw std::invalid_argument("simulateRecording: Kinect rate must be > 0");
+    checkNonNegative(params.kinect.noiseStd, "Kinect noise std");
+  }
+  if (!std::isfinite(params.g) || std::abs(params.up.norm() - 1.0) > 1e-6)
+    throw std::invalid_argument("simulateRecording: up must be a unit vector and g finite");
+
+  Recording rec;
+  rec.meta.geometry = params.geometry;
+  rec.meta.up = params.up;
+  rec.meta.g = params.g;
+
+  const ImuSimParams& up = params.upperArm;
+  const ImuSimParams& fa = params.forearm;
+  // Both IMUs on one clock when they share a rate, else each on its own.
+  const bool shared = up.enabled && fa.enabled && up.rateHz == fa.rateHz;
+  Clock upperClock = makeClock(up.enabled, up.rateHz, params.duration);
+  Clock forearmClock = makeClock(fa.enabled && !shared, fa.rateHz, params.duration);
+  Clock kinectClock = makeClock(params.kinect.enabled, params.kinect.rateHz, params.duration);
+  rec.samples.reserve(upperClock.count + forearmClock.count + kinectClock.count);
+
+  Noise upperNoise(params.seed, NoiseStream::kUpperArm);
+  Noise forearmNoise(params.seed, NoiseStream::kForearm);
+  Noise kinectNoise(params.seed, NoiseStream::kKinect);
+  const Eigen::Vector3d gUp = params.g * params.up;
+
+  // Merge the clocks: each row is the earliest pending time; every clock due at exactly that time
+  // contributes to the same row.
+  for (;;) {
+    const double t =
+        std::min({upperClock.nextTime(), forearmClock.nextTime(), kinectClock.nextTime()});
+    if (!std::isfinite(t)) break;
+    const bool upperDue = upperClock.nextTime() == t;
+    const bool forearmDue = shared ? upperDue : forearmClock.nextTime() == t;
+    const bool kinectDue = kinectClock.nextTime() == t;
+
+    const JointMotion m = trajectory.at(t);
+    const ArmPrediction ideal = predictSensors(params.geometry, m.th, m.thd, m.thdd, gUp);
+    ArmSample& s = rec.samples.emplace_back();
+    s.t = t;
+    if (upperDue) {
+      s.upperArm = simulateImu(ideal.upper, up, upperNoise);
+      ++upperClock.next;
+    }
+    if (forearmDue) {
+      s.forearm = simulateImu(ideal.forearm, fa, forearmNoise);
+      if (!shared) ++forearmClock.next;
+    }
+    if (kinectDue) {
+      s.elbow = ideal.elbow + kinectNoise.vec3(params.kinect.noiseStd);
+      s.wrist = ideal.wrist + kinectNoise.vec3(params.kinect.noiseStd);
+      ++kinectClock.next;
+    }
+    if (params.includeTruth && (upperDue || forearmDue)) {
+      JointVector truth;
+      for (int j = 0; j < kNumJoints; ++j) truth(j) = wrapAngle(m.th(j));
+      s.trueAngles = truth;
+    }
+  }
+  return rec;
+}
+
+Eigen::Matrix3d randomMisalignment(double angleRad, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  // An isotropic Gaussian vector has a uniformly distributed direction.
+  Eigen::Vector3d axis;
+  do {
+    const double x = normal(rng), y = normal(rng), z = normal(rng);
+    axis = Eigen::Vector3d(x, y, z);
+  } while (axis.norm() < 1e-6);
+  return Eigen::AngleAxisd(angleRad, axis.normalized()).toRotationMatrix();
+}
+
+}  // namespace armtrack

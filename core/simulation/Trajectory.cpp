@@ -1,0 +1,176 @@
+#include "core/simulation/Trajectory.h"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+namespace armtrack {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+// Multi-joint motion: centre posture, the summed amplitude at amplitudeScale = 1, and a hard cap
+// on the summed amplitude that keeps the motion anatomical for any scale (all rad). The caps keep
+// th1 within [-20, 80] deg (away from the +-90 deg gimbal singularity) and th4 within [-120, 0].
+constexpr std::array<double, kNumJoints> kCentre{40 * kDeg, 30 * kDeg, 0.0, -60 * kDeg, 0.0};
+constexpr std::array<double, kNumJoints> kAmplitude{40 * kDeg, 25 * kDeg, 35 * kDeg, 45 * kDeg,
+                                                    50 * kDeg};
+constexpr std::array<double, kNumJoints> kAmplitudeCap{80 * kDeg, 50 * kDeg, 60 * kDeg, 60 * kDeg,
+                                                       80 * kDeg};
+constexpr double kMinFrequencyHz = 0.1;
+
+// Unit vector at angle a in the (x0, y0) plane and its derivative with respect to a.
+Eigen::Vector2d dir(double a) {
+  return {std::cos(a), std::sin(a)};
+}
+Eigen::Vector2d dirPrime(double a) {
+  return {-std::sin(a), std::cos(a)};
+}
+
+}  // namespace
+
+JointMotion SinusoidTrajectory::at(double t) const {
+  JointMotion m;
+  for (int j = 0; j < kNumJoints; ++j) {
+    const double w = kTwoPi * frequency(j);
+    const double s = std::sin(w * t + phase(j)), c = std::cos(w * t + phase(j));
+    m.th(j) = offset(j) + amplitude(j) * s;
+    m.thd(j) = amplitude(j) * w * c;
+    m.thdd(j) = -amplitude(j) * w * w * s;
+  }
+  return m;
+}
+
+MultiJointTrajectory::MultiJointTrajectory(std::uint64_t seed, double maxFrequencyHz,
+                                           double amplitudeScale) {
+  if (!(maxFrequencyHz >= kMinFrequencyHz) || !std::isfinite(maxFrequencyHz))
+    throw std::invalid_argument("MultiJointTrajectory: maxFrequencyHz must be >= 0.1 Hz");
+  if (!(amplitudeScale >= 0.0) || !std::isfinite(amplitudeScale))
+    throw std::invalid_argument("MultiJointTrajectory: amplitudeScale must be >= 0");
+
+  for (int j = 0; j < kNumJoints; ++j) m_centre(j) = kCentre[j];
+
+  // Draw order is fixed: per joint, the component count, then per component weight, frequency
+  // and phase. The first component is the dominant one.
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> count(2, 3);
+  std::uniform_real_distribution<double> minorWeight(0.2, 0.6);
+  std::uniform_real_distribution<double> freq(kMinFrequencyHz, maxFrequencyHz);
+  std::uniform_real_distribution<double> phase(0.0, kTwoPi);
+  for (int j = 0; j < kNumJoints; ++j) {
+    const int n = count(rng);
+    const std::size_t first = m_components.size();
+    double weightSum = 0.0;
+    for (int i = 0; i < n; ++i) {
+      const double weight = i == 0 ? 1.0 : minorWeight(rng);
+      weightSum += weight;
+      const double f = freq(rng);
+      m_components.push_back({j, weight, f, phase(rng)});
+    }
+    // Amplitudes sum to the joint's total, so |th - centre| never exceeds it.
+    const double total = std::min(kAmplitude[j] * amplitudeScale, kAmplitudeCap[j]);
+    for (std::size_t i = first; i < m_components.size(); ++i)
+      m_components[i].amplitude *= total / weightSum;
+  }
+}
+
+JointMotion MultiJointTrajectory::at(double t) const {
+  JointMotion m;
+  m.th = m_centre;
+  for (const Component& c : m_components) {
+    const double w = kTwoPi * c.frequency;
+    const double s = std::sin(w * t + c.phase), co = std::cos(w * t + c.phase);
+    m.th(c.joint) += c.amplitude * s;
+    m.thd(c.joint) += c.amplitude * w * co;
+    m.thdd(c.joint) -= c.amplitude * w * w * s;
+  }
+  return m;
+}
+
+ShoulderWheelTrajectory::ShoulderWheelTrajectory(const ArmGeometry& geometry, double periodSeconds,
+                                                 double w, double h, double r, double s)
+    : m_geometry(geometry), m_period(periodSeconds), m_w(w), m_h(h), m_r(r), m_s(s) {
+  if (!(periodSeconds > 0.0) || !std::isfinite(periodSeconds))
+    throw std::invalid_argument("ShoulderWheelTrajectory: period must be > 0 s");
+  if (!(r >= 0.0)) throw std::invalid_argument("ShoulderWheelTrajectory: radius must be >= 0");
+  // Every handle position must be strictly inside the reachable annulus (no straight or fully
+  // folded arm, where the IK is singular), and the circle must not enclose the shoulder.
+  const double l1 = geometry.l3, l2 = geometry.l6 + s;
+  const double c = std::hypot(h, w);
+  if (!(c - r > std::abs(l1 - l2)) || !(c + r < l1 + l2) || !(l1 > 0.0) || !(l2 > 0.0))
+    throw std::invalid_argument("ShoulderWheelTrajectory: wheel handle not reachable everywhere");
+}
+
+JointVector ShoulderWheelTrajectory::anglesAt(double phi) const {
+  const double l1 = m_geometry.l3, l2 = m_geometry.l6 + m_s;
+  const Eigen::Vector2d centre(m_h, m_w);
+  const Eigen::Vector2d p = centre + m_r * dir(phi);
+  // Elbow flexion q = -th4 >= 0 from the law of cosines.
+  const double cq = (p.squaredNorm() - l1 * l1 - l2 * l2) / (2.0 * l1 * l2);
+  const double q = std::acos(std::clamp(cq, -1.0, 1.0));
+  // Direction of p measured from the centre's direction: continuous because the circle does not
+  // enclose the shoulder.
+  const double centreAngle = std::atan2(centre.y(), centre.x());
+  const double pAngle =
+      centreAngle + std::atan2(centre.x() * p.y() - centre.y() * p.x(), centre.dot(p));
+  JointVector th = JointVector::Zero();
+  th(0) = pAngle - std::atan2(l2 * std::sin(q), l1 + l2 * std::cos(q));
+  th(3) = -q;
+  return th;
+}
+
+JointMotion ShoulderWheelTrajectory::at(double t) const {
+  const double omega = kTwoPi / m_period;  // wheel rate, rad/s
+  const double phi = omega * t;
+  const double l1 = m_geometry.l3, l2 = m_geometry.l6 + m_s;
+  JointMotion m;
+  m.th = anglesAt(phi);
+  // Planar chain p = l1 e(a) + l2 e(a + q), a = th0, q = -th4. Differentiate twice:
+  //   p'  = J [a' q']^T,  J = [l1 e'(a) + l2 e'(a+q), l2 e'(a+q)]
+  //   p'' = J [a'' q'']^T - l1 e(a) a'^2 - l2 e(a+q) (a' + q')^2
+  const double a = m.th(0), q = -m.th(3);
+  Eigen::Matrix2d jac;
+  jac.col(1) = l2 * dirPrime(a + q);
+  jac.col(0) = l1 * dirPrime(a) + jac.col(1);
+  const Eigen::Vector2d pd = m_r * omega * dirPrime(phi);
+  const Eigen::Vector2d pdd = -m_r * omega * omega * dir(phi);
+  const Eigen::Vector2d rate = jac.partialPivLu().solve(pd);
+  const Eigen::Vector2d rhs =
+      pdd + l1 * dir(a) * rate(0) * rate(0) + l2 * dir(a + q) * std::pow(rate(0) + rate(1), 2);
+  const Eigen::Vector2d acc = jac.partialPivLu().solve(rhs);
+  m.thd(0) = rate(0);
+  m.thd(3) = -rate(1);
+  m.thdd(0) = acc(0);
+  m.thdd(3) = -acc(1);
+  return m;
+}
+
+std::vector<std::string> trajectoryNames() {
+  return {"sinusoid", "multi-joint", "shoulder-wheel"};
+}
+
+std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
+  if (name == "sinusoid") {
+    auto traj = std::make_unique<SinusoidTrajectory>();
+    traj->offset = opts.offset;
+    traj->amplitude = opts.amplitude;
+    traj->frequency = opts.frequency;
+    return traj;
+  }
+  if (name == "multi-joint")
+    return std::make_unique<MultiJointTrajectory>(opts.seed, opts.maxFrequencyHz,
+                                                  opts.amplitudeScale);
+  if (name == "shoulder-wheel")
+    return std::make_unique<ShoulderWheelTrajectory>(opts.geometry, opts.wheelPeriod);
+  std::string valid;
+  for (const std::string& n : trajectoryNames()) valid += (valid.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown trajectory '" + name + "'; valid names: " + valid);
+}
+
+}  // namespace armtrack
