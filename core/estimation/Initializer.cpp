@@ -27,11 +27,9 @@ struct PoseResidual {
   int inputs() const { return static_cast<int>(active.size()); }
   int values() const { return nValues; }
 
+  // th: all five joints (inactive ones at their fixed value).
   template <typename T>
-  void residual(const Eigen::Matrix<T, Eigen::Dynamic, 1>& x,
-                Eigen::Matrix<T, Eigen::Dynamic, 1>& r) const {
-    Eigen::Matrix<T, 5, 1> th = params->fixedAngles.cast<T>();
-    for (std::size_t i = 0; i < active.size(); ++i) th(active[i]) = x(static_cast<Eigen::Index>(i));
+  void residual(const Eigen::Matrix<T, 5, 1>& th, Eigen::Matrix<T, Eigen::Dynamic, 1>& r) const {
     const Eigen::Matrix<T, 5, 1> zero = Eigen::Matrix<T, 5, 1>::Constant(T(0));
     const Eigen::Vector3d up = params->gUp.normalized();
     const ArmKinematics<T> k = armKinematics<T>(params->geometry, th, zero, zero, up);
@@ -49,26 +47,28 @@ struct PoseResidual {
     for (int j : active) r(row++) = (th(j) - T(prior(j))) * T(kPriorWeight);
   }
 
+  JointVector expand(const Eigen::VectorXd& x) const {
+    JointVector th = params->fixedAngles;
+    for (std::size_t i = 0; i < active.size(); ++i) th(active[i]) = x(static_cast<Eigen::Index>(i));
+    return th;
+  }
+
   int operator()(const Eigen::VectorXd& x, Eigen::VectorXd& r) const {
-    residual<double>(x, r);
+    residual<double>(expand(x), r);
     return 0;
   }
 
+  // Fixed-size derivatives over all five joints; the active ones become the Jacobian's columns.
   int df(const Eigen::VectorXd& x, Eigen::MatrixXd& jac) const {
-    using AD = Eigen::AutoDiffScalar<Eigen::VectorXd>;
-    const int n = inputs();
-    Eigen::Matrix<AD, Eigen::Dynamic, 1> xa(n);
-    for (int i = 0; i < n; ++i) xa(i) = AD(x(i), n, i);
+    using AD = Eigen::AutoDiffScalar<JointVector>;
+    const JointVector th = expand(x);
+    Eigen::Matrix<AD, 5, 1> tha;
+    for (int j = 0; j < kNumJoints; ++j) tha(j) = AD(th(j), kNumJoints, j);
     Eigen::Matrix<AD, Eigen::Dynamic, 1> r;
-    residual<AD>(xa, r);
-    jac.resize(nValues, n);
-    for (int i = 0; i < nValues; ++i) {
-      // A residual that does not depend on x carries an empty derivative vector.
-      if (r(i).derivatives().size() == n)
-        jac.row(i) = r(i).derivatives().transpose();
-      else
-        jac.row(i).setZero();
-    }
+    residual<AD>(tha, r);
+    jac.resize(nValues, inputs());
+    for (int i = 0; i < nValues; ++i)
+      for (int c = 0; c < inputs(); ++c) jac(i, c) = r(i).derivatives()(active[c]);
     return 0;
   }
 };
