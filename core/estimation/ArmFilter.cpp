@@ -231,13 +231,15 @@ class ArmFilter final : public JointEstimator {
   BlockList gather(const ArmSample& s) const {
     BlockList b;
     const bool gyro = m_p.model != MeasurementModel::Inclinometer;
+    const double accelVar =
+        m_p.accelVariance * (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0);
     if (s.upperArm) {
       if (gyro) b.add(kUaGyr, s.upperArm->gyr, m_p.gyroVariance);
-      b.add(kUaAcc, s.upperArm->acc, m_p.accelVariance);
+      b.add(kUaAcc, s.upperArm->acc, accelVar);
     }
     if (s.forearm) {
       if (gyro) b.add(kFaGyr, s.forearm->gyr, m_p.gyroVariance);
-      b.add(kFaAcc, s.forearm->acc, m_p.accelVariance);
+      b.add(kFaAcc, s.forearm->acc, accelVar);
     }
     if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance);
     if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance);
@@ -295,7 +297,8 @@ class ArmFilter final : public JointEstimator {
     applyF(pt);
     m_P = pt.transpose();
 
-    const double qa = m_p.jointAccelVariance * dt / m_p.referenceStep;
+    const double gain = m_t - m_t0 < m_p.startupSeconds ? m_p.startupProcessNoiseGain : 1.0;
+    const double qa = gain * m_p.jointAccelVariance * dt / m_p.referenceStep;
     for (int j = 0; j < kNumJoints; ++j)
       if (m_p.activeJoints[j]) m_P(j, j) += qa;
     const JointVector h = headingDirection(m_x.template segment<5>(10), m_p.gUp.normalized());

@@ -57,8 +57,8 @@ struct EstimatorParams {
 
   /// Method B: stationary variance (m/s^2)^2 and correlation time (s) of the body-acceleration
   /// GM-1 states (Sabatini 2006).
-  double bodyAccelVariance = 4.0;
-  double bodyAccelCorrelationTime = 0.05;
+  double bodyAccelVariance = 1.0;
+  double bodyAccelCorrelationTime = 0.1;
 
   bool useOptical = true;  ///< fuse elbow/wrist positions when a sample carries them
   /// Joints the filter estimates; inactive joints stay at fixedAngles (the paper's one-segment
@@ -67,7 +67,7 @@ struct EstimatorParams {
   JointVector fixedAngles = JointVector::Zero();  ///< rad
 
   /// Start-up: initial standard deviations after the gravity/optical initialisation.
-  double initialAngleStd = 20.0 * kDeg;   ///< rad
+  double initialAngleStd = 45.0 * kDeg;   ///< rad
   double initialRateStd = 0.5;            ///< rad/s
   double initialAccelStd = 10.0;          ///< rad/s^2
   double initialHeadingStd = 30.0 * kDeg;  ///< rad, extra along the heading direction
@@ -75,6 +75,14 @@ struct EstimatorParams {
   /// times, so a start while the arm moves fast cannot throw it off.
   int startupIterations = 4;
   double startupSeconds = 1.0;
+  /// During start-up the joint-acceleration process noise is this many times larger, so the
+  /// filter forgets a poor first guess (taken while the arm moved) within the start-up second.
+  double startupProcessNoiseGain = 1e4;
+  /// Gyroscope first: for the first gyroFirstSeconds the accelerometer variance is this many
+  /// times larger, so the gyroscopes settle the rates before gravity and body acceleration are
+  /// split (a first guess taken while the arm moved is otherwise locked in).
+  double gyroFirstSeconds = 0.1;
+  double gyroFirstAccelGain = 1e4;
   /// A gap between samples longer than this (s) restarts the filter from the next sample.
   double maxGap = 0.5;
 };
