@@ -1,0 +1,111 @@
+#include "app/cli/Args.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+
+namespace armtrack::cli {
+
+namespace {
+
+std::string inQuotes(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+std::string shortest(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+}  // namespace
+
+std::optional<double> parseDouble(std::string_view text) {
+  if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
+  double v = 0.0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (text.empty() || r.ec != std::errc() || r.ptr != text.data() + text.size() ||
+      !std::isfinite(v)) {
+    return std::nullopt;
+  }
+  return v;
+}
+
+Args::Args(std::string command, const std::vector<std::string>& args,
+           const std::vector<OptionSpec>& specs)
+    : m_command(std::move(command)) {
+  if (std::any_of(args.begin(), args.end(),
+                  [](const std::string& a) { return a == "--help" || a == "-h"; })) {
+    m_help = true;
+    return;
+  }
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() < 2 || a[0] != '-') {
+      m_positionals.push_back(a);
+      continue;
+    }
+    if (a[1] != '-') fail("unknown option '" + a + "'");
+    const std::size_t eq = a.find('=');
+    const std::string name = a.substr(0, eq);
+    const auto spec = std::find_if(specs.begin(), specs.end(),
+                                   [&](const OptionSpec& s) { return s.name == name; });
+    if (spec == specs.end()) fail("unknown option '" + name + "'");
+    if (!spec->takesValue) {
+      if (eq != std::string::npos) fail(name + ": takes no value");
+      m_values[name] = "";
+      continue;
+    }
+    if (eq != std::string::npos) {
+      m_values[name] = a.substr(eq + 1);
+    } else if (i + 1 < args.size() && !args[i + 1].starts_with("--")) {
+      m_values[name] = args[++i];
+    } else {
+      fail(name + ": missing value");
+    }
+  }
+}
+
+std::optional<std::string> Args::value(std::string_view name) const {
+  const auto it = m_values.find(name);
+  if (it == m_values.end()) return std::nullopt;
+  return it->second;
+}
+
+std::optional<double> Args::number(std::string_view name) const {
+  const auto text = value(name);
+  if (!text) return std::nullopt;
+  const auto v = parseDouble(*text);
+  if (!v) fail(std::string(name) + ": expected a number, got " + inQuotes(*text));
+  return v;
+}
+
+double Args::number(std::string_view name, double fallback) const {
+  return number(name).value_or(fallback);
+}
+
+std::uint64_t Args::integer(std::string_view name, std::uint64_t fallback) const {
+  const auto text = value(name);
+  if (!text) return fallback;
+  std::uint64_t v = 0;
+  const char* end = text->data() + text->size();
+  const auto r = std::from_chars(text->data(), end, v);
+  if (text->empty() || r.ec != std::errc() || r.ptr != end) {
+    fail(std::string(name) + ": expected a non-negative integer, got " + inQuotes(*text));
+  }
+  return v;
+}
+
+double Args::positive(std::string_view name, double fallback) const {
+  const double v = number(name, fallback);
+  if (!(v > 0.0)) fail(std::string(name) + ": must be > 0, got " + shortest(v));
+  return v;
+}
+
+double Args::nonNegative(std::string_view name, double fallback) const {
+  const double v = number(name, fallback);
+  if (!(v >= 0.0)) fail(std::string(name) + ": must be >= 0, got " + shortest(v));
+  return v;
+}
+
+}  // namespace armtrack::cli

@@ -1,0 +1,365 @@
+// Command dispatch and the simulate / estimate / study commands of armtrack-cli.
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <memory>
+#include <new>
+#include <optional>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+
+#include "app/cli/Args.h"
+#include "app/cli/Cli.h"
+#include "app/cli/Estimate.h"
+#include "core/io/Recording.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
+#include "core/studies/Studies.h"
+
+#ifndef ARMTRACK_VERSION
+#define ARMTRACK_VERSION "0.0.0"
+#endif
+
+namespace armtrack::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kMainHelp =
+    R"(armtrack-cli: shoulder and elbow joint angles from two IMUs and a Kinect.
+
+Usage:
+  armtrack-cli <command> [options]
+  armtrack-cli <command> --help
+  armtrack-cli --help | --version
+
+Commands:
+  simulate   write a simulated recording with the true joint angles
+  estimate   estimate joint angles from a recording (EKF or UKF)
+  study      reproduce the paper's simulation studies (Table 6, Fig. 5)
+
+Exit status: 0 success, 1 runtime or input error, 2 usage error.
+See docs/cli.md for details.
+)";
+
+constexpr std::string_view kSimulateHelp =
+    R"(Usage: armtrack-cli simulate --trajectory NAME --out REC.csv [options]
+
+Simulates both IMUs and the Kinect along a joint trajectory and writes a recording (REC.csv plus
+the sidecar REC.json) that includes the true joint angles.
+
+Options:
+  --trajectory NAME    sinusoid, multi-joint or shoulder-wheel (required)
+  --out FILE           the recording to write (required)
+  --duration S         length in s (default 10)
+  --seed N             seed for the trajectory, noise and misalignment (default 1)
+  --imu-rate HZ        rate of both IMUs (default 1000)
+  --kinect-rate HZ     Kinect rate (default 30)
+  --kinect-noise M     Kinect position noise std per axis, m (default 0.01)
+  --no-kinect          no optical rows
+  --gyro-noise RAD_S   gyroscope noise std, rad/s (default Table 5: sqrt(0.1) deg/s)
+  --accel-noise M_S2   accelerometer noise std, m/s^2 (default Table 5: 0.1)
+  --gyro-bias RAD_S    constant gyroscope bias on every axis of both IMUs (default 0)
+  --misalignment DEG   IMU mounting error: rotation by DEG about a random axis per IMU (default 0)
+  --amplitude DEG      sinusoid: amplitude of every joint (default 28.6, i.e. 0.5 rad)
+  --frequency HZ       sinusoid: frequency of every joint (default 0.5)
+  --wheel-period S     shoulder-wheel: seconds per turn (default 4)
+)";
+
+constexpr std::string_view kEstimateHelp = R"(Usage: armtrack-cli estimate REC.csv [options]
+
+Runs the joint-angle filter over a recording, with the geometry and gravity of its sidecar.
+Writes the angles (rad) as CSV "t,th0,th1,th2,th4,th5", one row per IMU sample. When the
+recording holds true angles, prints RMSE and peak error per joint (deg).
+
+Options:
+  --filter ekf|ukf         filter (default ekf)
+  --method A|B|C|inclinometer
+                           IMU measurement model (default A)
+  --no-kinect              ignore the optical elbow/wrist positions
+  --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
+  --out FILE               write the angles here (default: statistics only)
+)";
+
+constexpr std::string_view kStudyHelp = R"(Usage: armtrack-cli study table6|fig5 [options]
+
+Reproduces a simulation study of the paper and prints its table.
+  table6   body-acceleration compensation: Methods A, B, C
+  fig5     error against motion frequency per measurement model, EKF and UKF
+
+Options:
+  --runs N          Monte Carlo runs per setting (default 10)
+  --filter ekf|ukf  filter for table6 (default ekf; fig5 always runs both)
+  --duration S      seconds per run, the first second is start-up (default 10)
+)";
+
+std::string inQuotes(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+std::string shortest(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+FilterKind parseFilter(const Args& a) {
+  const auto v = a.value("--filter");
+  if (!v || *v == "ekf" || *v == "EKF") return FilterKind::Ekf;
+  if (*v == "ukf" || *v == "UKF") return FilterKind::Ukf;
+  a.fail("--filter: expected ekf or ukf, got " + inQuotes(*v));
+}
+
+std::string requiredPath(const Args& a, std::string_view name) {
+  const auto v = a.value(name);
+  if (!v) a.fail(std::string(name) + " is required");
+  if (v->empty()) a.fail(std::string(name) + ": missing value");
+  return *v;
+}
+
+void noPositionals(const Args& a) {
+  if (!a.positionals().empty()) a.fail("unexpected argument " + inQuotes(a.positionals()[0]));
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("simulate", args,
+               {{"--trajectory", true},
+                {"--out", true},
+                {"--duration", true},
+                {"--seed", true},
+                {"--imu-rate", true},
+                {"--kinect-rate", true},
+                {"--kinect-noise", true},
+                {"--no-kinect", false},
+                {"--gyro-noise", true},
+                {"--accel-noise", true},
+                {"--gyro-bias", true},
+                {"--misalignment", true},
+                {"--amplitude", true},
+                {"--frequency", true},
+                {"--wheel-period", true}});
+  if (a.help()) {
+    out << kSimulateHelp;
+    return 0;
+  }
+  noPositionals(a);
+  const std::string name = requiredPath(a, "--trajectory");
+  const fs::path outPath = requiredPath(a, "--out");
+
+  SimulationParams sim = defaultSimulation();
+  sim.duration = a.positive("--duration", 10.0);
+  sim.seed = a.integer("--seed", 1);
+  const double imuRate = a.positive("--imu-rate", 1000.0);
+  const double gyroNoise = a.nonNegative("--gyro-noise", Table5::gyroStd());
+  const double accelNoise = a.nonNegative("--accel-noise", Table5::accelStd());
+  const double gyroBias = a.number("--gyro-bias", 0.0);
+  const double misalignDeg = a.number("--misalignment", 0.0);
+  for (ImuSimParams* imu : {&sim.upperArm, &sim.forearm}) {
+    imu->rateHz = imuRate;
+    imu->gyroNoiseStd = gyroNoise;
+    imu->accelNoiseStd = accelNoise;
+    imu->gyroBias = Eigen::Vector3d::Constant(gyroBias);
+  }
+  if (misalignDeg != 0.0) {
+    // Separate seeds per IMU so the two axes differ.
+    sim.upperArm.misalignment = randomMisalignment(misalignDeg * kDeg, 2 * sim.seed + 1);
+    sim.forearm.misalignment = randomMisalignment(misalignDeg * kDeg, 2 * sim.seed + 2);
+  }
+  sim.kinect.enabled = !a.flag("--no-kinect");
+  sim.kinect.rateHz = a.positive("--kinect-rate", 30.0);
+  sim.kinect.noiseStd = a.nonNegative("--kinect-noise", Table5::posStd());
+
+  TrajectoryOptions traj;
+  traj.seed = sim.seed;
+  traj.geometry = sim.geometry;
+  if (const auto amp = a.number("--amplitude")) traj.amplitude.setConstant(*amp * kDeg);
+  traj.frequency.setConstant(a.nonNegative("--frequency", traj.frequency(0)));
+  traj.wheelPeriod = a.positive("--wheel-period", traj.wheelPeriod);
+  const auto ignoredFor = [&](std::string_view option, std::string_view trajectory) {
+    if (a.flag(option) && name != trajectory) {
+      err << "warning: " << option << " only applies to the " << trajectory
+          << " trajectory; ignored\n";
+    }
+  };
+  ignoredFor("--amplitude", "sinusoid");
+  ignoredFor("--frequency", "sinusoid");
+  ignoredFor("--wheel-period", "shoulder-wheel");
+
+  std::unique_ptr<Trajectory> trajectory;
+  try {
+    trajectory = makeTrajectory(name, traj);
+  } catch (const std::invalid_argument& e) {
+    a.fail(std::string("--trajectory: ") + e.what());
+  }
+  const Recording rec = simulateRecording(*trajectory, sim);
+  writeRecording(outPath, rec);
+  err << "simulate: wrote " << rec.samples.size() << " rows (" << shortest(sim.duration) << " s of "
+      << name << ") to " << outPath.string() << " and " << sidecarPath(outPath).string() << "\n";
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+bool samePath(const fs::path& a, const fs::path& b) {
+  std::error_code ec1, ec2;
+  const fs::path ca = fs::weakly_canonical(a, ec1);
+  const fs::path cb = fs::weakly_canonical(b, ec2);
+  return !ec1 && !ec2 && ca == cb;
+}
+
+int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("estimate", args,
+               {{"--filter", true},
+                {"--method", true},
+                {"--no-kinect", false},
+                {"--joint-accel-std", true},
+                {"--out", true}});
+  if (a.help()) {
+    out << kEstimateHelp;
+    return 0;
+  }
+  if (a.positionals().empty()) a.fail("missing the recording to read (estimate REC.csv)");
+  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
+  const fs::path input = a.positionals()[0];
+
+  EstimateOptions opt;
+  opt.filter = parseFilter(a);
+  if (const auto m = a.value("--method")) {
+    try {
+      opt.model = parseMethod(*m);
+    } catch (const std::invalid_argument& e) {
+      a.fail(std::string("--method: ") + e.what());
+    }
+  }
+  opt.useOptical = !a.flag("--no-kinect");
+  if (a.flag("--joint-accel-std")) opt.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
+  std::optional<fs::path> outPath;
+  if (a.flag("--out")) {
+    outPath = requiredPath(a, "--out");
+    if (samePath(*outPath, input) || samePath(*outPath, sidecarPath(input)))
+      a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the recording");
+  }
+
+  std::error_code ec;
+  if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
+  const Recording rec = readRecording(input);
+  for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
+  std::size_t imuRows = 0;
+  for (const ArmSample& s : rec.samples) imuRows += s.hasImu();
+  if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
+
+  const EstimatorParams params = makeParams(rec.meta, opt);
+  std::optional<AngleCsvWriter> writer;
+  if (outPath) writer.emplace(*outPath);
+  const auto start = std::chrono::steady_clock::now();
+  const EstimateStats st = estimateRecording(rec, params, writer ? &*writer : nullptr,
+                                             [&](int p) { err << "progress: " << p << "%\n"; });
+  if (writer) writer->commit();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  char timing[32];
+  std::snprintf(timing, sizeof timing, "%.2f", seconds);
+  err << "estimate: " << st.estimates << " estimates from " << st.rows << " rows ("
+      << shortest(st.tFirst) << " to " << shortest(st.tLast) << " s), "
+      << (opt.filter == FilterKind::Ekf ? "EKF" : "UKF") << ", method " << methodName(opt.model)
+      << (st.opticalUsed ? ", optical fused" : ", no optical data") << ", " << timing << " s";
+  if (outPath) err << "; wrote " << outPath->string();
+  err << "\n";
+  const EstimatorCounters& c = st.counters;
+  if (c.rejectedNonFinite || c.rejectedTime || c.restarts || c.skippedUpdates) {
+    err << "filter: rejected non-finite " << c.rejectedNonFinite << ", rejected time "
+        << c.rejectedTime << ", restarts " << c.restarts << ", skipped updates " << c.skippedUpdates
+        << "\n";
+  }
+  if (st.truthCount == 0 && st.opticalUsed)
+    err << "estimate: no true angles in the recording, so no error statistics\n";
+  out << formatReport(st);
+  return 0;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+int study(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("study", args, {{"--runs", true}, {"--filter", true}, {"--duration", true}});
+  if (a.help()) {
+    out << kStudyHelp;
+    return 0;
+  }
+  if (a.positionals().empty()) a.fail("missing the study to run: table6 or fig5");
+  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
+  const std::string& which = a.positionals()[0];
+  if (which != "table6" && which != "fig5")
+    a.fail("unknown study " + inQuotes(which) + ": expected table6 or fig5");
+
+  StudySetup setup;
+  const std::uint64_t runs = a.integer("--runs", 10);
+  if (runs < 1 || runs > 100000) a.fail("--runs: must be between 1 and 100000");
+  setup.runs = static_cast<int>(runs);
+  setup.filter = parseFilter(a);
+  setup.duration = a.number("--duration", 10.0);
+  if (!(setup.duration > 1.0))
+    a.fail("--duration: must be > 1 (the first second is start-up), got " +
+           shortest(setup.duration));
+
+  if (which == "fig5" && a.flag("--filter"))
+    err << "warning: --filter is ignored by fig5, which runs both EKF and UKF\n";
+  int lastTenth = 0;
+  const StudyProgress progress = [&](int done, int total) {
+    if (total <= 0) return;
+    const int tenth = static_cast<int>(10LL * done / total);
+    if (tenth == lastTenth) return;
+    lastTenth = tenth;
+    err << "progress: " << 10 * tenth << "% (" << done << "/" << total << " runs)\n";
+  };
+  if (which == "table6") {
+    out << formatTable6(runTable6(setup, progress), setup);
+  } else {
+    out << formatFig5(runFig5(setup, progress), setup);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  constexpr std::string_view kError = "armtrack-cli: error: ";
+  try {
+    if (args.empty()) throw UsageError("", "missing command");
+    const std::string& cmd = args[0];
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+      out << kMainHelp;
+      return 0;
+    }
+    if (cmd == "--version") {
+      out << "armtrack-cli " << ARMTRACK_VERSION << "\n";
+      return 0;
+    }
+    if (cmd == "simulate") return simulate(rest, out, err);
+    if (cmd == "estimate") return estimate(rest, out, err);
+    if (cmd == "study") return study(rest, out, err);
+    if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
+    throw UsageError("", "unknown command '" + cmd + "'");
+  } catch (const UsageError& e) {
+    err << kError << e.what() << "\n"
+        << "run 'armtrack-cli " << (e.command().empty() ? "" : e.command() + " ") << "--help'\n";
+    return 2;
+  } catch (const std::bad_alloc&) {
+    err << kError << "out of memory\n";
+  } catch (const std::exception& e) {
+    err << kError << e.what() << "\n";  // RecordingError's text names file:line:column
+  } catch (...) {
+    err << kError << "unexpected failure\n";
+  }
+  return 1;
+}
+
+}  // namespace armtrack::cli

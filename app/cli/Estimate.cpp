@@ -1,0 +1,213 @@
+#include "app/cli/Estimate.h"
+
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <stdexcept>
+#include <system_error>
+
+#include "core/metrics/Accuracy.h"
+
+namespace armtrack::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kStartupSeconds = 1.0;  // left out of the statistics after each (re)start
+constexpr double kWindowSeconds = 10.0;  // drift comparison windows
+constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
+constexpr const char* kJointLabels[kNumJoints] = {
+    "th0 shoulder flexion/extension", "th1 shoulder abduction/adduction",
+    "th2 shoulder internal/external rotation", "th4 elbow flexion/extension",
+    "th5 forearm pronation/supination"};
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& options) {
+  EstimatorParams p;
+  p.filter = options.filter;
+  p.model = options.model;
+  p.geometry = meta.geometry;
+  p.gUp = meta.gUp();
+  p.useOptical = options.useOptical;
+  if (options.jointAccelStdDeg) {
+    const double s = *options.jointAccelStdDeg * kDeg;
+    p.jointAccelVariance = s * s;
+  }
+  return p;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+AngleCsvWriter::AngleCsvWriter(fs::path target) : m_target(std::move(target)) {
+  std::random_device rd;
+  const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
+  char hex[17];
+  const auto r = std::to_chars(hex, hex + 16, tag, 16);
+  m_tmp = m_target;
+  m_tmp.replace_filename("." + m_target.filename().string() + ".tmp-" + std::string(hex, r.ptr));
+  errno = 0;
+  m_file = std::fopen(m_tmp.c_str(), "wb");
+  if (!m_file) fail("cannot create temporary file \"" + m_tmp.string() + "\"", errno);
+  m_buf.reserve(kFlushBytes + 256);
+  m_buf = "t,th0,th1,th2,th4,th5\n";
+}
+
+AngleCsvWriter::~AngleCsvWriter() {
+  if (m_file) std::fclose(m_file);
+  if (!m_committed) {
+    std::error_code ec;
+    fs::remove(m_tmp, ec);
+  }
+}
+
+void AngleCsvWriter::add(double t, const JointVector& th) {
+  char row[256];
+  char* p = std::to_chars(row, row + 32, t).ptr;
+  for (int j = 0; j < kNumJoints; ++j) {
+    *p++ = ',';
+    p = std::to_chars(p, p + 32, th(j)).ptr;
+  }
+  *p++ = '\n';
+  m_buf.append(row, p);
+  if (m_buf.size() >= kFlushBytes) flush();
+}
+
+void AngleCsvWriter::flush() {
+  if (m_buf.empty()) return;
+  errno = 0;
+  if (std::fwrite(m_buf.data(), 1, m_buf.size(), m_file) != m_buf.size())
+    fail("write failed", errno);
+  m_buf.clear();
+}
+
+void AngleCsvWriter::commit() {
+  flush();
+  errno = 0;
+  if (std::fflush(m_file) != 0) fail("write failed", errno);
+  std::FILE* f = m_file;
+  m_file = nullptr;
+  errno = 0;
+  if (std::fclose(f) != 0) fail("closing the file failed", errno);
+  std::error_code ec;
+  fs::rename(m_tmp, m_target, ec);
+  if (ec) fail("cannot rename \"" + m_tmp.string() + "\" into place: " + ec.message(), 0);
+  m_committed = true;
+}
+
+void AngleCsvWriter::fail(const std::string& message, int err) const {
+  std::string what = m_target.string() + ": " + message;
+  if (err != 0) what += ": " + std::generic_category().message(err);
+  throw std::runtime_error(what);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
+                                AngleCsvWriter* writer, const EstimateProgress& progress) {
+  const std::vector<ArmSample>& samples = recording.samples;
+  const std::size_t n = samples.size();
+  EstimateStats st;
+  st.rows = n;
+
+  double tLastImu = std::numeric_limits<double>::quiet_NaN();
+  for (auto it = samples.rbegin(); it != samples.rend(); ++it) {
+    if (it->hasImu()) {
+      tLastImu = it->t;
+      break;
+    }
+  }
+
+  const auto filter = makeEstimator(params);
+  ErrorAccumulator all, first, last;
+  bool started = false;
+  double tStart = 0.0;  // time of the latest (re)start
+  const bool reporting = progress && n > kProgressRows;
+  int nextPercent = 10;
+  std::size_t nextRow = reporting ? n / 10 : std::numeric_limits<std::size_t>::max();
+
+  for (std::size_t i = 0; i < n; ++i) {
+    const ArmSample& s = samples[i];
+    const UpdateResult r = filter->update(s);
+    if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && s.hasImu()) {
+      const JointEstimate e = filter->estimate();
+      if (r == UpdateResult::Initialised) tStart = e.t;
+      if (!started) {
+        started = true;
+        st.tFirst = e.t;
+        st.firstWindow.from = st.tFirst + kStartupSeconds;
+        st.firstWindow.to = st.firstWindow.from + kWindowSeconds;
+        st.lastWindow.to = tLastImu;
+        st.lastWindow.from = tLastImu - kWindowSeconds;
+      }
+      st.tLast = e.t;
+      ++st.estimates;
+      if (writer) writer->add(e.t, e.th);
+      if (s.trueAngles && e.t >= tStart + kStartupSeconds) {
+        all.add(e.th, *s.trueAngles);
+        if (e.t >= st.firstWindow.from && e.t <= st.firstWindow.to) first.add(e.th, *s.trueAngles);
+        if (e.t >= st.lastWindow.from && e.t <= st.lastWindow.to) last.add(e.th, *s.trueAngles);
+      }
+    }
+    if (i + 1 >= nextRow) {
+      progress(nextPercent);
+      nextPercent += 10;
+      nextRow = nextPercent <= 100 ? n * static_cast<std::size_t>(nextPercent) / 100
+                                   : std::numeric_limits<std::size_t>::max();
+    }
+  }
+
+  st.counters = filter->counters();
+  st.opticalUsed = st.counters.opticalUpdates > 0;
+  st.truthCount = all.count();
+  st.rmseDeg = all.rmse() / kDeg;
+  st.peakDeg = all.peak() / kDeg;
+  st.firstWindow.count = first.count();
+  st.firstWindow.rmseDeg = first.rmse() / kDeg;
+  st.lastWindow.count = last.count();
+  st.lastWindow.rmseDeg = last.rmse() / kDeg;
+  return st;
+}
+
+std::string formatReport(const EstimateStats& st) {
+  std::string s;
+  if (st.truthCount > 0) {
+    s += "Error against the true angles (" + std::to_string(st.truthCount) +
+         " samples; the first second after start-up is left out):\n\n";
+    s += "| joint | RMSE (deg) | peak (deg) |\n|---|---:|---:|\n";
+    for (int j = 0; j < kNumJoints; ++j) {
+      s += "| " + std::string(kJointLabels[j]) + " | " + fixed(st.rmseDeg(j), 3) + " | " +
+           fixed(st.peakDeg(j), 3) + " |\n";
+    }
+  }
+  if (!st.opticalUsed) {
+    if (!s.empty()) s += "\n";
+    s += "No optical data: the arm's heading about the vertical is not observable from IMUs "
+         "alone; shoulder angles rest on the start-pose assumption and drift with it.\n";
+    if (st.truthCount > 0) {
+      s += "\nRMSE (deg) early vs late, to show the drift:\n\n";
+      s += "| window | th0 | th1 | th2 | th4 | th5 |\n|---|---:|---:|---:|---:|---:|\n";
+      for (const auto& [name, w] :
+           {std::pair{"first 10 s", &st.firstWindow}, std::pair{"last 10 s", &st.lastWindow}}) {
+        s += "| " + std::string(name) + " (" + fixed(w->from, 1) + "-" + fixed(w->to, 1) + " s) |";
+        for (int j = 0; j < kNumJoints; ++j) {
+          s += " " + (w->count > 0 ? fixed(w->rmseDeg(j), 3) : std::string("-")) + " |";
+        }
+        s += "\n";
+      }
+    }
+  }
+  return s;
+}
+
+}  // namespace armtrack::cli

@@ -1,0 +1,90 @@
+// The "estimate" command's engine: runs a joint-angle filter over a recording, streams the
+// angles to a CSV and collects error statistics against the recording's true angles.
+#pragma once
+
+#include <cstddef>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "core/estimation/ArmFilter.h"
+#include "core/io/Recording.h"
+
+namespace armtrack::cli {
+
+/// Command-line choices on top of the recording's sidecar.
+struct EstimateOptions {
+  FilterKind filter = FilterKind::Ekf;
+  MeasurementModel model = MeasurementModel::AccelGyro;
+  bool useOptical = true;
+  std::optional<double> jointAccelStdDeg;  ///< deg/s^2; empty keeps the library default
+};
+
+/// Filter parameters: geometry and gravity from the sidecar, the rest from options.
+EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& options);
+
+/// Per-joint RMSE of the estimates whose time lies in [from, to].
+struct WindowError {
+  double from = 0.0, to = 0.0;  ///< s
+  std::size_t count = 0;
+  JointVector rmseDeg = JointVector::Zero();
+};
+
+struct EstimateStats {
+  std::size_t rows = 0;       ///< samples offered to the filter
+  std::size_t estimates = 0;  ///< output rows: accepted samples that carry IMU data
+  double tFirst = 0.0;        ///< time of the first estimate (s)
+  double tLast = 0.0;         ///< time of the last estimate (s)
+  EstimatorCounters counters;
+  bool opticalUsed = false;  ///< some optical position was fused
+
+  /// Errors against the recording's true angles, leaving out the first second after each
+  /// (re)start of the filter. truthCount is 0 when the recording has no truth.
+  std::size_t truthCount = 0;
+  JointVector rmseDeg = JointVector::Zero();
+  JointVector peakDeg = JointVector::Zero();
+  WindowError firstWindow;  ///< the first 10 s after start-up
+  WindowError lastWindow;   ///< the last 10 s
+};
+
+/// Writes "t,th0,th1,th2,th4,th5" rows into a temporary file beside the target and renames it
+/// into place on commit(); without commit() the temporary file is removed. Errors throw
+/// std::runtime_error naming the file.
+class AngleCsvWriter {
+ public:
+  explicit AngleCsvWriter(std::filesystem::path target);
+  AngleCsvWriter(const AngleCsvWriter&) = delete;
+  AngleCsvWriter& operator=(const AngleCsvWriter&) = delete;
+  ~AngleCsvWriter();
+
+  void add(double t, const JointVector& th);
+  void commit();
+
+ private:
+  void flush();
+  [[noreturn]] void fail(const std::string& message, int err) const;
+
+  std::filesystem::path m_target;
+  std::filesystem::path m_tmp;
+  std::FILE* m_file = nullptr;
+  std::string m_buf;
+  bool m_committed = false;
+};
+
+/// Called with 10, 20, ..., 100 (percent of rows done) for recordings of more than
+/// kProgressRows rows.
+using EstimateProgress = std::function<void(int percent)>;
+inline constexpr std::size_t kProgressRows = 100000;
+
+/// Runs the filter sample by sample. Each accepted sample that carries IMU data yields one output
+/// row (written to writer when given) and, when it carries true angles, one error sample.
+EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
+                                AngleCsvWriter* writer, const EstimateProgress& progress = {});
+
+/// Markdown report of the errors (empty when there is no truth) and, when no optical data was
+/// fused, the heading note and the first-vs-last 10 s comparison.
+std::string formatReport(const EstimateStats& stats);
+
+}  // namespace armtrack::cli

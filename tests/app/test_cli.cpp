@@ -1,0 +1,198 @@
+// armtrack-cli driven in-process through runCli: simulate/estimate round trips, the no-optical
+// note, and the exit codes and messages of bad input.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/cli/Cli.h"
+#include "app/cli/Estimate.h"
+#include "core/io/Recording.h"
+
+namespace fs = std::filesystem;
+using armtrack::cli::runCli;
+
+namespace {
+
+struct CliResult {
+  int code;
+  std::string out, err;
+};
+
+CliResult cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = runCli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::vector<std::string> readLines(const fs::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+/// A scratch directory per test, with a 6 s and a 3 s multi-joint recording made on demand.
+class CliTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    m_dir = fs::temp_directory_path() /
+            ("armtrack_cli_" + std::to_string(::getpid()) + "_" + info->name());
+    fs::remove_all(m_dir);
+    fs::create_directories(m_dir);
+  }
+  void TearDown() override { fs::remove_all(m_dir); }
+
+  fs::path path(const std::string& name) const { return m_dir / name; }
+
+  fs::path simulated(double duration) {
+    const fs::path p = path("rec" + std::to_string(static_cast<int>(duration)) + ".csv");
+    if (!fs::exists(p)) {
+      const CliResult r = cli({"simulate", "--trajectory", "multi-joint", "--duration",
+                               std::to_string(duration), "--seed", "3", "--out", p.string()});
+      EXPECT_EQ(r.code, 0) << r.err;
+    }
+    return p;
+  }
+
+  fs::path m_dir;
+};
+
+TEST_F(CliTest, SimulateThenEstimateRoundTrip) {
+  const fs::path rec = simulated(6.0);
+  EXPECT_TRUE(fs::exists(armtrack::sidecarPath(rec)));
+  const fs::path angles = path("angles.csv");
+  const CliResult r = cli({"estimate", rec.string(), "--filter", "ekf", "--joint-accel-std", "10",
+                           "--out", angles.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+
+  const armtrack::Recording recording = armtrack::readRecording(rec);
+  std::size_t imuRows = 0;
+  for (const auto& s : recording.samples) imuRows += s.hasImu();
+  const auto lines = readLines(angles);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "t,th0,th1,th2,th4,th5");
+  EXPECT_EQ(lines.size() - 1, imuRows);
+  EXPECT_EQ(lines[1].substr(0, 2), "0,");
+
+  // The printed table: one row per joint, RMSE in the third-to-last column.
+  int tableRows = 0;
+  std::istringstream table(r.out);
+  for (std::string line; std::getline(table, line);) {
+    if (!line.starts_with("| th")) continue;
+    ++tableRows;
+    const auto c2 = line.rfind('|', line.rfind('|') - 1);
+    const auto c1 = line.rfind('|', c2 - 1);
+    EXPECT_LE(std::stod(line.substr(c1 + 1, c2 - c1 - 1)), 1.0) << line;
+  }
+  EXPECT_EQ(tableRows, 5) << r.out;
+  EXPECT_EQ(r.out.find("No optical data"), std::string::npos);
+
+  // The same run through the library entry point.
+  armtrack::cli::EstimateOptions opt;
+  opt.jointAccelStdDeg = 10.0;
+  const auto stats = armtrack::cli::estimateRecording(
+      recording, armtrack::cli::makeParams(recording.meta, opt), nullptr);
+  EXPECT_EQ(stats.estimates, imuRows);
+  EXPECT_TRUE(stats.opticalUsed);
+  EXPECT_GT(stats.truthCount, imuRows / 2);
+  for (int j = 0; j < armtrack::kNumJoints; ++j) EXPECT_LE(stats.rmseDeg(j), 1.0) << "joint " << j;
+}
+
+TEST_F(CliTest, NoKinectPrintsHeadingNote) {
+  const CliResult r = cli({"estimate", simulated(3.0).string(), "--no-kinect"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("No optical data: the arm's heading about the vertical is not observable "
+                       "from IMUs alone"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("first 10 s"), std::string::npos);
+  EXPECT_NE(r.out.find("last 10 s"), std::string::npos);
+}
+
+TEST_F(CliTest, MethodBAndUkfAccepted) {
+  const fs::path rec = simulated(3.0);
+  const CliResult b = cli({"estimate", rec.string(), "--method", "B"});
+  EXPECT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(b.err.find("method B"), std::string::npos) << b.err;
+  const CliResult u =
+      cli({"estimate", rec.string(), "--filter", "ukf", "--out", path("u.csv").string()});
+  EXPECT_EQ(u.code, 0) << u.err;
+  EXPECT_NE(u.err.find("UKF"), std::string::npos) << u.err;
+  EXPECT_TRUE(fs::exists(path("u.csv")));
+}
+
+TEST_F(CliTest, UsageErrorsExitWithTwo) {
+  struct Case {
+    std::vector<std::string> args;
+    std::string message;
+  };
+  const std::vector<Case> cases = {
+      {{"frobnicate"}, "unknown command 'frobnicate'"},
+      {{}, "missing command"},
+      {{"estimate", "x.csv", "--bogus"}, "unknown option '--bogus'"},
+      {{"estimate", "x.csv", "--out"}, "--out: missing value"},
+      {{"simulate", "--trajectory", "sinusoid", "--duration", "abc", "--out", "x.csv"},
+       "--duration: expected a number, got \"abc\""},
+      {{"simulate", "--trajectory", "circle", "--out", "x.csv"},
+       "--trajectory: unknown trajectory 'circle'"},
+      {{"estimate", "x.csv", "--filter", "pf"}, "--filter: expected ekf or ukf"},
+      {{"estimate", "x.csv", "--method", "D"}, "--method: unknown method \"D\""},
+      {{"study", "table7"}, "unknown study"},
+      {{"study", "fig5", "--runs", "-1"}, "--runs: expected a non-negative integer"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = cli(c.args);
+    EXPECT_EQ(r.code, 2) << c.message;
+    EXPECT_NE(r.err.find("armtrack-cli: error: " + c.message), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--help'"), std::string::npos) << r.err;
+  }
+  EXPECT_NE(cli({"estimate", "--bogus"}).err.find("run 'armtrack-cli estimate --help'"),
+            std::string::npos);
+}
+
+TEST_F(CliTest, HelpAndVersion) {
+  const CliResult v = cli({"--version"});
+  EXPECT_EQ(v.code, 0);
+  EXPECT_EQ(v.out, "armtrack-cli 0.1.0\n");
+  for (const std::string cmd : {"simulate", "estimate", "study"}) {
+    const CliResult h = cli({cmd, "--help"});
+    EXPECT_EQ(h.code, 0);
+    EXPECT_NE(h.out.find("Usage: armtrack-cli " + cmd), std::string::npos);
+  }
+  EXPECT_EQ(cli({"--help"}).code, 0);
+}
+
+TEST_F(CliTest, MissingFileExitsWithOne) {
+  const std::string missing = path("nope.csv").string();
+  const CliResult r = cli({"estimate", missing});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(missing), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("--help"), std::string::npos);
+}
+
+TEST_F(CliTest, MalformedRecordingNamesLineAndColumn) {
+  const fs::path bad = path("bad.csv");
+  std::ofstream(bad) << "t,ua_gx,ua_gy,ua_gz,ua_ax,ua_ay,ua_az\n"
+                     << "0,0,0,0,9.81,0,0\n"
+                     << "0.001,0,0.1.2,0,9.81,0,0\n";
+  const CliResult r = cli({"estimate", bad.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(bad.string() + ":3:3: bad number"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, UnwritableOutputExitsWithOne) {
+  const CliResult r =
+      cli({"estimate", simulated(3.0).string(), "--out", path("missing-dir/angles.csv").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("missing-dir/angles.csv"), std::string::npos) << r.err;
+  const CliResult s = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out",
+                           path("missing-dir/rec.csv").string()});
+  EXPECT_EQ(s.code, 1) << s.err;
+}
+
+}  // namespace
