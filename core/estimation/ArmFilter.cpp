@@ -34,8 +34,11 @@ std::string methodName(MeasurementModel m) {
   return "?";
 }
 
-JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
-  // Spatial axes of the three shoulder joints (z0, z1, z2 in frame 0).
+namespace {
+// Joint rates that turn the whole arm about `up` at 1 rad/s: J_s h = up, where J_s's columns are
+// the three shoulder axes in frame 0 (z0, z1, z2). The damping only guards the gimbal lock; it is
+// small enough that h stays the exact rotation elsewhere.
+JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
   const Eigen::Matrix4d h1 = dhTransform<double>(th(0), 0.0, std::numbers::pi / 2, 0.0);
   const Eigen::Matrix4d h2 =
       h1 * dhTransform<double>(th(1) + std::numbers::pi / 2, 0.0, std::numbers::pi / 2, 0.0);
@@ -43,13 +46,46 @@ JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
   j.col(0) = Eigen::Vector3d::UnitZ();
   j.col(1) = h1.block<3, 1>(0, 2);
   j.col(2) = h2.block<3, 1>(0, 2);
-  // Damped least squares stays finite at the shoulder's gimbal lock.
   const Eigen::Vector3d rate =
-      j.transpose() * (j * j.transpose() + 1e-4 * Eigen::Matrix3d::Identity()).ldlt().solve(up);
+      j.transpose() * (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).ldlt().solve(up);
   JointVector d = JointVector::Zero();
   d.head<3>() = rate;
+  return d;
+}
+}  // namespace
+
+JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
+  const JointVector d = headingGenerator(th, up);
   const double n = d.norm();
   return n > 0 ? JointVector(d / n) : d;
+}
+
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up) {
+  // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
+  // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
+  const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
+  const JointVector h = headingGenerator(th, up);
+  auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
+    const double n = dir.norm();
+    first.setZero();
+    second.setZero();
+    if (n < 1e-12) return;
+    const double e = 1e-4 / n;  // step of 1e-4 rad along dir
+    const JointVector hp = headingGenerator(th + e * dir, up);
+    const JointVector hm = headingGenerator(th - e * dir, up);
+    first = (hp - hm) / (2 * e);
+    second = (hp - 2 * h + hm) / (e * e);
+  };
+  JointVector dhThd, d2hThd, dhThdd, unused;
+  along(thd, dhThd, d2hThd);
+  along(thdd, dhThdd, unused);
+  Eigen::Matrix<double, 15, 1> v;
+  v.segment<5>(0) = dhThdd + d2hThd;
+  v.segment<5>(5) = dhThd;
+  v.segment<5>(10) = h;
+  const double n = h.norm();
+  return n > 0 ? Eigen::Matrix<double, 15, 1>(v / n) : v;
 }
 
 namespace {
@@ -124,7 +160,7 @@ class ArmFilter final : public JointEstimator {
   using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
   static constexpr bool kAugmented = N > kBase;
 
-  explicit ArmFilter(const EstimatorParams& p) : m_p(p) { reset(); }
+  explicit ArmFilter(const EstimatorParams& p) : m_p(p), m_up(p.gUp.normalized()) { reset(); }
 
   void reset() override {
     m_x.setZero();
@@ -152,7 +188,11 @@ class ArmFilter final : public JointEstimator {
     e.thdd = m_x.template segment<5>(0);
     e.thd = m_x.template segment<5>(5);
     e.th = m_x.template segment<5>(10);
-    e.thStd = m_P.diagonal().template segment<5>(10).cwiseMax(0.0).cwiseSqrt();
+    const Vec u = headingAngles(m_x);
+    const JointVector hu = u.template segment<5>(10);
+    e.thStd = (m_P.diagonal().template segment<5>(10) + headingShortfall(u) * hu.cwiseAbs2())
+                  .cwiseMax(0.0)
+                  .cwiseSqrt();
     return e;
   }
 
@@ -193,13 +233,19 @@ class ArmFilter final : public JointEstimator {
     }
     const Vec xBefore = m_x;
     const Mat pBefore = m_P;
-    const bool ok = m_p.filter == FilterKind::Ekf ? ekfUpdate(blocks) : ukfUpdate(blocks);
+    const bool imuOnly = !hasOptical;
+    if (hasOptical) beforeOpticalUpdate();
+    // Both filters start with the iterated EKF update: a UKF's sigma points spread over the
+    // start-up uncertainty (tens of degrees) wrap around and lose the arm.
+    const bool startup = m_t - m_t0 < m_p.startupSeconds;
+    const bool ok = m_p.filter == FilterKind::Ekf || startup ? ekfUpdate(blocks) : ukfUpdate(blocks);
     if (!ok || !m_x.allFinite() || !m_P.allFinite()) {
       m_x = xBefore;
       m_P = pBefore;
       ++m_counters.skippedUpdates;
       return UpdateResult::Rejected;
     }
+    afterUpdate(!imuOnly);
     finishUpdate();
     return UpdateResult::Accepted;
   }
@@ -259,19 +305,25 @@ class ArmFilter final : public JointEstimator {
     m_x.template segment<5>(5) = pose.thd;
     m_x.template segment<5>(10) = pose.th;
     m_P.setZero();
+    const bool optical = first.elbow || first.wrist;
+    const double angleStd = optical ? m_p.initialAngleStdOptical : m_p.initialAngleStd;
     for (int j = 0; j < kNumJoints; ++j) {
       m_P(j, j) = m_p.initialAccelStd * m_p.initialAccelStd;
       m_P(5 + j, 5 + j) = m_p.initialRateStd * m_p.initialRateStd;
-      m_P(10 + j, 10 + j) = m_p.initialAngleStd * m_p.initialAngleStd;
+      m_P(10 + j, 10 + j) = angleStd * angleStd;
     }
-    const JointVector h = headingDirection(pose.th, m_p.gUp.normalized());
-    m_P.template block<5, 5>(10, 10) +=
-        m_p.initialHeadingStd * m_p.initialHeadingStd * h * h.transpose();
+    // A start pose without optical data has its heading from the prior alone: say so in P.
+    if (!optical) {
+      const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
+      m_P.template topLeftCorner<kBase, kBase>() +=
+          m_p.initialHeadingStd * m_p.initialHeadingStd * v * v.transpose();
+    }
     if constexpr (kAugmented) {
       for (int i = kBase; i < N; ++i) m_P(i, i) = m_p.bodyAccelVariance;
     }
     m_t = m_t0 = s.t;
-    if (first.elbow || first.wrist) m_lastOpticalT = s.t;
+    m_lastOpticalT = optical ? s.t : -std::numeric_limits<double>::infinity();
+    m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
     m_initialised = true;
     freezeInactive();
   }
@@ -292,17 +344,21 @@ class ArmFilter final : public JointEstimator {
       if constexpr (kAugmented) m.template bottomRows<N - kBase>() *= phiB;
     };
     applyF(m_x);
+    for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
     applyF(m_P);
     Mat pt = m_P.transpose();
     applyF(pt);
     m_P = pt.transpose();
 
-    const double gain = m_t - m_t0 < m_p.startupSeconds ? m_p.startupProcessNoiseGain : 1.0;
-    const double qa = gain * m_p.jointAccelVariance * dt / m_p.referenceStep;
+    const double var = m_t - m_t0 < m_p.startupSeconds
+                           ? std::max(m_p.jointAccelVariance, m_p.startupJointAccelVariance)
+                           : m_p.jointAccelVariance;
+    const double qa = var * dt / m_p.referenceStep;
     for (int j = 0; j < kNumJoints; ++j)
       if (m_p.activeJoints[j]) m_P(j, j) += qa;
-    const JointVector h = headingDirection(m_x.template segment<5>(10), m_p.gUp.normalized());
-    m_P.template block<5, 5>(10, 10) += m_p.headingVarianceRate * dt * h * h.transpose();
+    const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
+    m_P.template topLeftCorner<kBase, kBase>() += m_p.headingVarianceRate * dt * v * v.transpose();
+    m_headingFloor += m_p.headingVarianceRate * dt;
     if constexpr (kAugmented) {
       const double qb = m_p.bodyAccelVariance * (1.0 - phiB * phiB);
       for (int i = kBase; i < N; ++i) m_P(i, i) += qb;
@@ -347,6 +403,7 @@ class ArmFilter final : public JointEstimator {
     Gain k;
     for (int it = 0; it < iterations; ++it) {
       measure(xi, b, h, &jac);
+      projectHeading(xi, b, jac);
       MeasMat s = jac * m_P * jac.transpose();
       s.diagonal() += b.variance;
       const Eigen::LLT<MeasMat> llt(s);
@@ -398,6 +455,16 @@ class ArmFilter final : public JointEstimator {
       pzz += w * (dp * dp.transpose() + dm * dm.transpose());
       pxz += w * l.col(i) * (dp - dm).transpose();
     }
+    // The unscented transform's equivalent linearisation H = Pxz^T P^-1 gets the same heading
+    // projection as the EKF's Jacobian; the rest of Pzz (nonlinearity) is kept.
+    const Eigen::LLT<Mat> pl(m_P);
+    if (pl.info() != Eigen::Success) return false;
+    Jac hs = pl.solve(pxz).transpose();
+    const MeasMat linearPart = hs * m_P * hs.transpose();
+    if (projectHeading(m_x, b, hs)) {
+      pzz += hs * m_P * hs.transpose() - linearPart;
+      pxz = m_P * hs.transpose();
+    }
     pzz.diagonal() += b.variance;
     const Eigen::LLT<MeasMat> sl(pzz);
     if (sl.info() != Eigen::Success) return false;
@@ -405,6 +472,54 @@ class ArmFilter final : public JointEstimator {
     m_x += k * (b.z - zMean);
     m_P -= k * pzz * k.transpose();
     return true;
+  }
+
+  // Observability constraint: IMU rows must not see the heading (turning the whole arm about the
+  // vertical changes no IMU reading). Linearisation at a moving state would otherwise make the
+  // heading look observable and its variance collapse. Returns whether any row was changed.
+  bool projectHeading(const Vec& x, const BlockList& b, Jac& jac) const {
+    Vec v = Vec::Zero();
+    v.template head<kBase>() = headingSymmetry(x.template head<kBase>(), m_up);
+    const double vv = v.squaredNorm();
+    if (vv <= 0.0) return false;
+    bool changed = false;
+    for (int i = 0; i < b.count; ++i) {
+      if (b.block[i] == kElbow || b.block[i] == kWrist) continue;
+      auto rows = jac.template middleRows<3>(3 * i);
+      const Eigen::Vector3d hv = rows * v;
+      rows -= hv * v.transpose() / vv;
+      changed = true;
+    }
+    return changed;
+  }
+
+  // Unit heading direction among the angles at x: the rotation of the whole arm about the
+  // vertical, rates and accelerations held (zero elsewhere).
+  Vec headingAngles(const Vec& x) const {
+    Vec u = Vec::Zero();
+    u.template segment<5>(10) = headingDirection(x.template segment<5>(10), m_up);
+    return u;
+  }
+
+  // Heading honesty. The projection of the IMU rows keeps IMU-only updates from moving the
+  // heading, but information still leaks in (through correlations, and because the linearisation
+  // point moves with the noisy joint accelerations), so P's heading variance shrinks below what
+  // is known. The filter therefore tracks a floor beside P: the heading variance start-up (or the
+  // last optical fix) left, plus the heading random walk since. The reported angle uncertainty
+  // includes it, and the first optical update after IMU-only data gets it back into P, so the
+  // optical heading correction is taken at once. Changing P during IMU-only updates instead makes
+  // the filter unstable.
+  double headingShortfall(const Vec& u) const {
+    return std::max(0.0, m_headingFloor - u.dot(m_P * u));
+  }
+
+  void afterUpdate(bool optical) {
+    if (optical) m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
+  }
+
+  void beforeOpticalUpdate() {
+    const Vec u = headingAngles(m_x);
+    m_P += headingShortfall(u) * u * u.transpose();
   }
 
   void finishUpdate() {
@@ -437,6 +552,7 @@ class ArmFilter final : public JointEstimator {
   }
 
   EstimatorParams m_p;
+  Eigen::Vector3d m_up;  // unit up vector, frame 0
   Vec m_x;
   Mat m_P;
   bool m_initialised = false;
@@ -444,6 +560,7 @@ class ArmFilter final : public JointEstimator {
   double m_t0 = 0.0;  // time of the last (re)initialisation (s)
   double m_lastSeenT = 0.0;
   double m_lastOpticalT = 0.0;
+  double m_headingFloor = 0.0;  // least variance along the heading while IMU-only (rad^2)
   std::optional<ArmSample> m_pendingOptical;
   EstimatorCounters m_counters;
 };

@@ -67,7 +67,8 @@ struct EstimatorParams {
   JointVector fixedAngles = JointVector::Zero();  ///< rad
 
   /// Start-up: initial standard deviations after the gravity/optical initialisation.
-  double initialAngleStd = 45.0 * kDeg;   ///< rad
+  double initialAngleStd = 45.0 * kDeg;   ///< rad, start pose from gravity alone
+  double initialAngleStdOptical = 5.0 * kDeg;  ///< rad, start pose fixed by optical positions
   double initialRateStd = 0.5;            ///< rad/s
   double initialAccelStd = 10.0;          ///< rad/s^2
   double initialHeadingStd = 30.0 * kDeg;  ///< rad, extra along the heading direction
@@ -75,16 +76,17 @@ struct EstimatorParams {
   /// times, so a start while the arm moves fast cannot throw it off.
   int startupIterations = 4;
   double startupSeconds = 1.0;
-  /// During start-up the joint-acceleration process noise is this many times larger, so the
-  /// filter forgets a poor first guess (taken while the arm moved) within the start-up second.
-  double startupProcessNoiseGain = 1e4;
+  /// During start-up the joint-acceleration process noise is at least this, (rad/s^2)^2 per
+  /// reference step, so the filter forgets a poor first guess (taken while the arm moved) within
+  /// the start-up second. Default (100 deg/s^2)^2.
+  double startupJointAccelVariance = (30.0 * kDeg) * (30.0 * kDeg);
   /// Gyroscope first: for the first gyroFirstSeconds the accelerometer variance is this many
   /// times larger, so the gyroscopes settle the rates before gravity and body acceleration are
   /// split (a first guess taken while the arm moved is otherwise locked in).
-  double gyroFirstSeconds = 0.1;
+  double gyroFirstSeconds = 0.25;
   double gyroFirstAccelGain = 1e4;
   /// A gap between samples longer than this (s) restarts the filter from the next sample.
-  double maxGap = 0.5;
+  double maxGap = 0.1;
 };
 
 /// Output of the filter at one instant.
@@ -144,6 +146,12 @@ BatchResult estimateSamples(const std::vector<ArmSample>& samples, const Estimat
 /// The heading direction in joint space at th: the joint-rate direction that turns the whole arm
 /// about the vertical through the shoulder (unit norm, elbow entries zero).
 JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);
+
+/// The full-state direction (15 = [th'' th' th]) along which turning the whole arm about the
+/// vertical moves the state: th along h, and the rates and accelerations as the turn carries
+/// them. Scaled so its th part has unit norm. IMU readings are constant along it.
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up);
 
 /// Measurement function and its Jacobian, exposed for the tests: the stacked predicted readings
 /// [ua gyro, ua acc, fa gyro, fa acc, elbow, wrist] (18) for a 15-state x = [thdd thd th] under

@@ -10,6 +10,13 @@ namespace {
 constexpr double kPositionScale = 0.05;  // m of optical error worth one unit of residual
 constexpr double kPriorWeight = 0.05;    // per rad away from the neutral posture
 
+// How much an accelerometer's direction says about gravity: a reading far from g in size carries
+// body acceleration (the arm is moving), so it counts less; optical positions then lead.
+double gravityWeight(const Eigen::Vector3d& acc, double g) {
+  const double dev = (acc.norm() - g) / (0.1 * g);
+  return std::max(0.2, 1.0 / (1.0 + dev * dev));
+}
+
 // Residuals over the active joints: gravity direction per IMU, optical positions, prior.
 struct PoseResidual {
   using Scalar = double;
@@ -25,6 +32,9 @@ struct PoseResidual {
   int nValues = 0;
 
   int inputs() const { return static_cast<int>(active.size()); }
+  double gravityWeight(const Eigen::Vector3d& acc) const {
+    return armtrack::gravityWeight(acc, params->gUp.norm());
+  }
   int values() const { return nValues; }
 
   // th: all five joints (inactive ones at their fixed value).
@@ -39,8 +49,12 @@ struct PoseResidual {
       r.template segment<3>(row) = v;
       row += 3;
     };
-    if (sample->upperArm) put(sample->upperArm->acc.normalized().cast<T>() - k.upperImu.up);
-    if (sample->forearm) put(sample->forearm->acc.normalized().cast<T>() - k.forearmImu.up);
+    if (sample->upperArm)
+      put((sample->upperArm->acc.normalized().cast<T>() - k.upperImu.up) *
+          T(gravityWeight(sample->upperArm->acc)));
+    if (sample->forearm)
+      put((sample->forearm->acc.normalized().cast<T>() - k.forearmImu.up) *
+          T(gravityWeight(sample->forearm->acc)));
     if (sample->elbow) put((sample->elbow->cast<T>() - k.elbow) / T(kPositionScale));
     if (sample->wrist) put((sample->wrist->cast<T>() - k.wrist) / T(kPositionScale));
     const JointVector prior = neutralPosture();
