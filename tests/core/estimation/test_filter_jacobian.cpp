@@ -294,5 +294,36 @@ TEST(HeadingDirection, FiniteRotationChangesImuOnlyToSecondOrder) {
   EXPECT_LT(worst, 50.0);
 }
 
+// At a moving state the turn about the vertical also carries the joint rates and accelerations;
+// the full-state direction must leave every IMU reading unchanged while moving the optical ones.
+TEST(HeadingSymmetry, ImuReadingsInvariantAtMovingStates) {
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> ang(-1.2, 1.2), rate(-3.0, 3.0), acc(-30.0, 30.0);
+  EstimatorParams p;
+  double worstImu = 0.0;
+  for (int i = 0; i < 200; ++i) {
+    Eigen::Matrix<double, 15, 1> x;
+    for (int k = 0; k < 5; ++k) {
+      x(k) = acc(rng);
+      x(5 + k) = rate(rng);
+      x(10 + k) = ang(rng);
+    }
+    const Eigen::Matrix<double, 15, 1> v = headingSymmetry(x, p.gUp.normalized());
+    ASSERT_NEAR(v.segment<5>(10).norm(), 1.0, 1e-12);
+    const Eigen::Matrix<double, 18, 15> jac = predictAllJacobian(p, x);
+    const Eigen::Matrix<double, 18, 1> d = jac * v;
+    // Relative to how strongly the readings depend on the state at all.
+    const double scale = jac.topRows<12>().norm();
+    worstImu = std::max(worstImu, d.head<12>().norm() / scale);
+    EXPECT_LT(d.head<12>().norm(), 1e-6 * scale) << "state " << x.transpose();
+    EXPECT_GT(d.tail<6>().norm(), 1e-3);
+    // The angle-only direction is not enough once the arm moves.
+    Eigen::Matrix<double, 15, 1> thetaOnly = Eigen::Matrix<double, 15, 1>::Zero();
+    thetaOnly.segment<5>(10) = v.segment<5>(10);
+    EXPECT_GT((jac * thetaOnly).head<12>().norm(), 1e3 * d.head<12>().norm() + 1e-9);
+  }
+  RecordProperty("worst_relative_imu_change", std::to_string(worstImu));
+}
+
 }  // namespace
 }  // namespace armtrack
