@@ -39,13 +39,13 @@ namespace {
 // the three shoulder axes in frame 0 (z0, z1, z2). The damping only guards the gimbal lock; it is
 // small enough that h stays the exact rotation elsewhere.
 JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
-  const Eigen::Matrix4d h1 = dhTransform<double>(th(0), 0.0, std::numbers::pi / 2, 0.0);
-  const Eigen::Matrix4d h2 =
-      h1 * dhTransform<double>(th(1) + std::numbers::pi / 2, 0.0, std::numbers::pi / 2, 0.0);
+  // Rows 1-2 of the tables give z1 = Rz(th0) Rx(pi/2) z and z2 = z1's frame turned by th1 + pi/2.
+  const double c0 = std::cos(th(0)), s0 = std::sin(th(0));
+  const double c1 = std::cos(th(1)), s1 = std::sin(th(1));
   Eigen::Matrix3d j;
   j.col(0) = Eigen::Vector3d::UnitZ();
-  j.col(1) = h1.block<3, 1>(0, 2);
-  j.col(2) = h2.block<3, 1>(0, 2);
+  j.col(1) = Eigen::Vector3d(s0, -c0, 0.0);
+  j.col(2) = Eigen::Vector3d(c1 * c0, c1 * s0, s1);
   const Eigen::Vector3d rate =
       j.transpose() * (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).ldlt().solve(up);
   JointVector d = JointVector::Zero();
@@ -394,32 +394,52 @@ class ArmFilter final : public JointEstimator {
     }
   }
 
+  // The Kalman update for a given linearisation, one 3-row block at a time. R is block-diagonal,
+  // so this equals the batch update exactly, at a third of the cost: per block a 3x3 Cholesky
+  // factor L of S = H P H^T + R, the gain applied to the innovation left by the blocks before,
+  // and the symmetric rank-3 downdate P -= V^T V with V = L^-1 H P, which keeps P symmetric.
+  // Returns false when some S is not positive definite.
+  bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p,
+                        Vec& dx) const {
+    dx.setZero();
+    for (int i = 0; i < b.count; ++i) {
+      const Eigen::Matrix<double, 3, N> hj = jac.template middleRows<3>(3 * i);
+      // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
+      const Eigen::Matrix<double, 3, N> w = hj.lazyProduct(p);
+      Eigen::Matrix3d sj = w.lazyProduct(hj.transpose());
+      sj.diagonal() += b.variance.template segment<3>(3 * i);
+      const Eigen::LLT<Eigen::Matrix3d> llt(sj);
+      if (llt.info() != Eigen::Success) return false;
+      const Eigen::Vector3d r = innov.template segment<3>(3 * i) - hj * dx;
+      dx.noalias() += w.transpose() * llt.solve(r);
+      const Eigen::Matrix<double, 3, N> v = llt.matrixL().solve(w);
+      p.noalias() -= v.transpose().lazyProduct(v);
+    }
+    return true;
+  }
+
   bool ekfUpdate(const BlockList& b) {
     const int iterations = m_t - m_t0 < m_p.startupSeconds ? std::max(1, m_p.startupIterations) : 1;
     const Vec x0 = m_x;
-    Vec xi = m_x;
+    Vec xi = m_x, dx;
     MeasVec h;
     Jac jac;
-    Gain k;
+    Mat p;
     for (int it = 0; it < iterations; ++it) {
       measure(xi, b, h, &jac);
       projectHeading(xi, b, jac);
-      MeasMat s = jac * m_P * jac.transpose();
-      s.diagonal() += b.variance;
-      const Eigen::LLT<MeasMat> llt(s);
-      if (llt.info() != Eigen::Success) return false;
-      k = llt.solve(jac * m_P).transpose();  // P H^T S^-1 (S, P symmetric)
-      // Gauss-Newton step of the iterated EKF; one iteration is the plain EKF.
+      // Gauss-Newton step of the iterated EKF, from the prior each time; one iteration is the
+      // plain EKF.
       const MeasVec innov = b.z - h - jac * (x0 - xi);
-      const Vec next = x0 + k * innov;
+      p = m_P;
+      if (!sequentialUpdate(jac, innov, b, p, dx)) return false;
+      const Vec next = x0 + dx;
       const double change = (next - xi).norm();
       xi = next;
       if (change < 1e-9) break;
     }
     m_x = xi;
-    // Joseph form keeps P symmetric positive semi-definite.
-    Mat ikh = Mat::Identity() - k * jac;
-    m_P = ikh * m_P * ikh.transpose() + k * b.variance.asDiagonal() * k.transpose();
+    m_P = p;
     return true;
   }
 
