@@ -1,0 +1,122 @@
+// Per-sample cost of the estimators and of the measurement model, on simulated data.
+// Run: build/tests/benchmarks/bench_filter --benchmark_min_time=0.5
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <random>
+#include <vector>
+
+#include "core/estimation/ArmFilter.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
+
+namespace armtrack {
+namespace {
+
+constexpr double kWarmUp = 1.5;  // s of data fed before timing: past the iterated start-up (1 s)
+constexpr double kPool = 2.0;    // s of data cycled through while timing
+
+// Five-joint motion with Table 5 noise; every sample carries both IMUs, and with kinect every
+// one also carries elbow and wrist positions (the Kinect "runs" at the IMU rate).
+std::vector<ArmSample> makeSamples(bool kinect) {
+  const MultiJointTrajectory traj(1);
+  SimulationParams sp = defaultSimulation();
+  sp.duration = kWarmUp + kPool;
+  sp.kinect.enabled = kinect;
+  sp.kinect.rateHz = sp.upperArm.rateHz;
+  sp.includeTruth = false;
+  return simulateRecording(traj, sp).samples;
+}
+
+EstimatorParams params(FilterKind kind, MeasurementModel model) {
+  EstimatorParams p;
+  p.filter = kind;
+  p.model = model;
+  p.jointAccelVariance = std::pow(10.0 * kDeg, 2);
+  return p;
+}
+
+// Times one update per iteration. When the pool runs out, the filter is reset and warmed up
+// again outside the timed region, so timestamps keep increasing and no restart is ever timed.
+void filterStep(benchmark::State& state, FilterKind kind, MeasurementModel model, bool kinect) {
+  const std::vector<ArmSample> samples = makeSamples(kinect);
+  const std::unique_ptr<JointEstimator> filter = makeEstimator(params(kind, model));
+  std::size_t first = 0;
+  while (samples[first].t < kWarmUp) ++first;
+  auto warmUp = [&] {
+    filter->reset();
+    for (std::size_t i = 0; i < first; ++i) filter->update(samples[i]);
+  };
+  warmUp();
+  std::size_t i = first;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(filter->update(samples[i]));
+    if (++i == samples.size()) {
+      state.PauseTiming();
+      warmUp();
+      i = first;
+      state.ResumeTiming();
+    }
+  }
+  if (filter->counters().restarts != 0 || filter->counters().skippedUpdates != 0)
+    state.SkipWithError("filter restarted or skipped updates");
+}
+
+void BM_EkfStep_TwoImusAndKinect(benchmark::State& state) {
+  filterStep(state, FilterKind::Ekf, MeasurementModel::AccelGyro, true);
+}
+void BM_EkfStep_TwoImus(benchmark::State& state) {
+  filterStep(state, FilterKind::Ekf, MeasurementModel::AccelGyro, false);
+}
+void BM_UkfStep_TwoImusAndKinect(benchmark::State& state) {
+  filterStep(state, FilterKind::Ukf, MeasurementModel::AccelGyro, true);
+}
+void BM_EkfStep_MethodB(benchmark::State& state) {
+  filterStep(state, FilterKind::Ekf, MeasurementModel::AugmentedBodyAccel, true);
+}
+
+// Random states (angles in [-pi, pi], rates to 3 rad/s, accelerations to 30 rad/s^2).
+std::vector<Eigen::Matrix<double, 15, 1>> randomStates() {
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<Eigen::Matrix<double, 15, 1>> xs(256);
+  for (auto& x : xs)
+    for (int j = 0; j < 5; ++j) {
+      x(j) = 30.0 * u(rng);
+      x(5 + j) = 3.0 * u(rng);
+      x(10 + j) = 3.14159 * u(rng);
+    }
+  return xs;
+}
+
+void BM_MeasurementJacobian(benchmark::State& state) {
+  const EstimatorParams p = params(FilterKind::Ekf, MeasurementModel::AccelGyro);
+  const auto xs = randomStates();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(predictAllJacobian(p, xs[i]));
+    i = (i + 1) % xs.size();
+  }
+}
+
+void BM_MeasurementPrediction(benchmark::State& state) {
+  const EstimatorParams p = params(FilterKind::Ekf, MeasurementModel::AccelGyro);
+  const auto xs = randomStates();
+  std::size_t i = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(predictAll(p, xs[i]));
+    i = (i + 1) % xs.size();
+  }
+}
+
+BENCHMARK(BM_EkfStep_TwoImusAndKinect)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EkfStep_TwoImus)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_UkfStep_TwoImusAndKinect)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EkfStep_MethodB)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeasurementJacobian)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeasurementPrediction)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+}  // namespace armtrack
