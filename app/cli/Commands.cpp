@@ -15,6 +15,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Estimate.h"
+#include "app/cli/Orientation.h"
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
@@ -42,6 +43,7 @@ Commands:
   simulate   write a simulated recording with the true joint angles
   estimate   estimate joint angles from a recording (EKF or UKF)
   study      reproduce the paper's simulation studies (Table 6, Fig. 5)
+  orientation  orientation of one IMU (gyroscope + accelerometer) as quaternions
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
 See docs/cli.md for details.
@@ -346,6 +348,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (cmd == "simulate") return simulate(rest, out, err);
     if (cmd == "estimate") return estimate(rest, out, err);
     if (cmd == "study") return study(rest, out, err);
+    if (cmd == "orientation") return orientationCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

@@ -1,0 +1,376 @@
+#include "app/cli/Orientation.h"
+
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <stdexcept>
+#include <string_view>
+#include <system_error>
+
+#include "app/cli/Args.h"
+#include "core/io/Recording.h"
+#include "core/orientation/OrientationFilter.h"
+
+namespace armtrack::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::string_view kOrientationHelp =
+    R"(Usage: armtrack-cli orientation IMU.csv [--out QUAT.csv] [options]
+
+Estimates the orientation of one IMU from its gyroscope and accelerometer (no magnetometer) with
+a VQF-style filter with gyroscope bias estimation (docs/orientation.md). Reads a CSV whose header
+names the columns t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z (s, rad/s, m/s^2) and writes
+"t,qw,qx,qy,qz", one row per input row: the sensor-to-world rotation, world z up. The heading
+(rotation about the vertical) starts at zero and drifts. dt is taken from the timestamps.
+
+Options:
+  --out FILE         write the quaternions here (default: standard output)
+  --tau-acc S        accelerometer low-pass time constant, s (default 3)
+  --no-rest-bias     no gyroscope bias estimation at rest
+  --no-motion-bias   no gyroscope bias estimation during motion
+)";
+
+constexpr std::array<std::string_view, 7> kColumns = {"t",     "gyr_x", "gyr_y", "gyr_z",
+                                                      "acc_x", "acc_y", "acc_z"};
+constexpr std::string_view kColumnList = "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z";
+constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+std::string inQuotes(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+std::string shortest(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+std::string fixed(double v, int decimals) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  return buf;
+}
+
+std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
+  return s;
+}
+
+std::string readWholeFile(const fs::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw std::runtime_error(name + ": no such file");
+  if (fs::is_directory(path, ec))
+    throw RecordingError(name, 0, 0, "cannot open file: is a directory");
+  errno = 0;
+  std::ifstream in(path, std::ios::binary);
+  if (!in)
+    throw RecordingError(name, 0, 0, "cannot open file: " + std::generic_category().message(errno));
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad())
+    throw RecordingError(name, 0, 0, "cannot read file: " + std::generic_category().message(errno));
+  return data;
+}
+
+// Splits a line at commas into trimmed fields.
+void splitFields(std::string_view line, std::vector<std::string_view>& fields) {
+  fields.clear();
+  for (;;) {
+    const std::size_t comma = line.find(',');
+    fields.push_back(trim(line.substr(0, comma)));
+    if (comma == std::string_view::npos) break;
+    line.remove_prefix(comma + 1);
+  }
+}
+
+class ImuCsvParser {
+ public:
+  ImuCsvParser(std::string file, std::string_view text) : m_file(std::move(file)), m_text(text) {
+    if (m_text.starts_with("\xEF\xBB\xBF")) m_text.remove_prefix(3);  // UTF-8 byte order mark
+  }
+
+  ImuSeries parse() {
+    ImuSeries s;
+    std::vector<std::string_view> fields;
+    bool haveHeader = false;
+    int lineNo = 0;
+    std::size_t pos = 0;
+    while (pos < m_text.size()) {
+      std::size_t end = m_text.find('\n', pos);
+      if (end == std::string_view::npos) end = m_text.size();
+      const std::string_view line = trim(m_text.substr(pos, end - pos));
+      pos = end + 1;
+      ++lineNo;
+      if (line.empty() || line.front() == '#') continue;
+      splitFields(line, fields);
+      if (!haveHeader) {
+        readHeader(fields, lineNo);
+        haveHeader = true;
+        s.t.reserve(m_text.size() / 64);
+        s.gyr.reserve(3 * s.t.capacity());
+        s.acc.reserve(3 * s.t.capacity());
+        continue;
+      }
+      const int n = static_cast<int>(fields.size());
+      if (n != m_headerFields) {
+        fail(lineNo, std::min(n, m_headerFields) + 1,
+             "row has " + std::to_string(n) + " fields, header has " +
+                 std::to_string(m_headerFields));
+      }
+      std::array<double, 7> v;
+      for (int k = 0; k < 7; ++k) v[k] = number(fields[m_columnOf[k]], lineNo, k);
+      if (!s.t.empty() && v[0] < s.t.back()) {
+        fail(lineNo, m_columnOf[0] + 1,
+             "time goes backwards: " + shortest(v[0]) + " after " + shortest(s.t.back()));
+      }
+      s.t.push_back(v[0]);
+      s.gyr.insert(s.gyr.end(), v.begin() + 1, v.begin() + 4);
+      s.acc.insert(s.acc.end(), v.begin() + 4, v.end());
+    }
+    if (!haveHeader) fail(0, 0, "missing header (expected " + std::string(kColumnList) + ")");
+    return s;
+  }
+
+ private:
+  void readHeader(const std::vector<std::string_view>& fields, int lineNo) {
+    m_headerFields = static_cast<int>(fields.size());
+    m_columnOf.fill(-1);
+    for (int c = 0; c < m_headerFields; ++c) {
+      for (int k = 0; k < 7; ++k) {
+        if (fields[c] != kColumns[k]) continue;
+        if (m_columnOf[k] >= 0) fail(lineNo, c + 1, "duplicate column " + inQuotes(kColumns[k]));
+        m_columnOf[k] = c;
+      }
+    }
+    for (int k = 0; k < 7; ++k) {
+      if (m_columnOf[k] < 0) {
+        fail(lineNo, 0,
+             "missing column " + inQuotes(kColumns[k]) + " in header (expected " +
+                 std::string(kColumnList) + ")");
+      }
+    }
+  }
+
+  double number(std::string_view cell, int lineNo, int k) const {
+    const int column = m_columnOf[k] + 1;
+    const std::string where = " in column " + inQuotes(kColumns[k]);
+    if (cell.empty()) fail(lineNo, column, "empty cell" + where);
+    const char* b = cell.data();
+    const char* e = b + cell.size();
+    if (*b == '+' && e - b > 1 && b[1] != '-' && b[1] != '+') ++b;  // from_chars rejects '+'
+    double x = 0.0;
+    const auto r = std::from_chars(b, e, x);
+    if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
+    if (r.ptr != e || r.ec == std::errc::invalid_argument) {
+      fail(
+          lineNo, column,
+          "bad number " + inQuotes(cell) + where + " (expected a decimal number such as -1.25e-3)");
+    }
+    if (r.ec == std::errc::result_out_of_range)
+      fail(lineNo, column, "number out of range " + inQuotes(cell) + where);
+    fail(lineNo, column,
+         "not a finite number " + inQuotes(cell) + where + " (NaN and infinity are not allowed)");
+  }
+
+  [[noreturn]] void fail(int line, int column, const std::string& message) const {
+    throw RecordingError(m_file, line, column, message);
+  }
+
+  std::string m_file;
+  std::string_view m_text;
+  int m_headerFields = 0;
+  std::array<int, 7> m_columnOf{};  // field index of each of kColumns
+};
+
+// Streams "t,qw,qx,qy,qz" rows to standard output, or to a temporary file beside the target that
+// commit() renames into place (without commit() it is removed).
+class QuatCsvWriter {
+ public:
+  QuatCsvWriter(std::ostream& out, std::optional<fs::path> target)
+      : m_out(out), m_target(std::move(target)) {
+    if (m_target) {
+      std::random_device rd;
+      const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
+      char hex[17];
+      const auto r = std::to_chars(hex, hex + 16, tag, 16);
+      m_tmp = *m_target;
+      m_tmp.replace_filename("." + m_target->filename().string() + ".tmp-" +
+                             std::string(hex, r.ptr));
+      errno = 0;
+      m_file = std::fopen(m_tmp.c_str(), "wb");
+      if (!m_file) fail("cannot create temporary file " + inQuotes(m_tmp.string()), errno);
+    }
+    m_buf.reserve(kFlushBytes + 256);
+    m_buf = "t,qw,qx,qy,qz\n";
+  }
+  QuatCsvWriter(const QuatCsvWriter&) = delete;
+  QuatCsvWriter& operator=(const QuatCsvWriter&) = delete;
+  ~QuatCsvWriter() {
+    if (m_file) std::fclose(m_file);
+    if (m_target && !m_committed) {
+      std::error_code ec;
+      fs::remove(m_tmp, ec);
+    }
+  }
+
+  void add(double t, const double* q) {
+    char row[192];
+    char* p = std::to_chars(row, row + 32, t).ptr;
+    for (int k = 0; k < 4; ++k) {
+      *p++ = ',';
+      p = std::to_chars(p, p + 32, q[k]).ptr;
+    }
+    *p++ = '\n';
+    m_buf.append(row, p);
+    if (m_buf.size() >= kFlushBytes) flush();
+  }
+
+  void commit() {
+    flush();
+    if (!m_file) {
+      m_out.flush();
+      if (!m_out) throw std::runtime_error("writing to standard output failed");
+      m_committed = true;
+      return;
+    }
+    errno = 0;
+    if (std::fflush(m_file) != 0) fail("write failed", errno);
+    std::FILE* f = m_file;
+    m_file = nullptr;
+    errno = 0;
+    if (std::fclose(f) != 0) fail("closing the file failed", errno);
+    std::error_code ec;
+    fs::rename(m_tmp, *m_target, ec);
+    if (ec) fail("cannot rename " + inQuotes(m_tmp.string()) + " into place: " + ec.message(), 0);
+    m_committed = true;
+  }
+
+ private:
+  void flush() {
+    if (m_buf.empty()) return;
+    if (m_file) {
+      errno = 0;
+      if (std::fwrite(m_buf.data(), 1, m_buf.size(), m_file) != m_buf.size())
+        fail("write failed", errno);
+    } else {
+      m_out.write(m_buf.data(), static_cast<std::streamsize>(m_buf.size()));
+    }
+    m_buf.clear();
+  }
+
+  [[noreturn]] void fail(const std::string& message, int err) const {
+    std::string what = m_target->string() + ": " + message;
+    if (err != 0) what += ": " + std::generic_category().message(err);
+    throw std::runtime_error(what);
+  }
+
+  std::ostream& m_out;
+  std::optional<fs::path> m_target;
+  fs::path m_tmp;
+  std::FILE* m_file = nullptr;
+  std::string m_buf;
+  bool m_committed = false;
+};
+
+bool samePath(const fs::path& a, const fs::path& b) {
+  std::error_code ec1, ec2;
+  const fs::path ca = fs::weakly_canonical(a, ec1);
+  const fs::path cb = fs::weakly_canonical(b, ec2);
+  return !ec1 && !ec2 && ca == cb;
+}
+
+}  // namespace
+
+ImuSeries readImuCsv(const fs::path& path) {
+  const std::string text = readWholeFile(path);
+  return ImuCsvParser(path.string(), text).parse();
+}
+
+int orientationCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("orientation", args,
+               {{"--out", true},
+                {"--tau-acc", true},
+                {"--no-rest-bias", false},
+                {"--no-motion-bias", false}});
+  if (a.help()) {
+    out << kOrientationHelp;
+    return 0;
+  }
+  if (a.positionals().empty()) a.fail("missing the IMU file to read (orientation IMU.csv)");
+  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
+  const fs::path input = a.positionals()[0];
+  if (input.empty()) a.fail("missing the IMU file to read (orientation IMU.csv)");
+
+  OrientationParams params;
+  params.tauAcc = a.positive("--tau-acc", params.tauAcc);
+  params.restBiasEstEnabled = !a.flag("--no-rest-bias");
+  params.motionBiasEstEnabled = !a.flag("--no-motion-bias");
+  std::optional<fs::path> outPath;
+  if (const auto v = a.value("--out")) {
+    if (v->empty()) a.fail("--out: missing value");
+    outPath = *v;
+    if (samePath(*outPath, input))
+      a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the input");
+  }
+
+  const ImuSeries s = readImuCsv(input);
+  const std::size_t n = s.t.size();
+  if (n == 0) throw std::runtime_error(input.string() + ": no samples");
+  // dt of each row from the timestamps; the first row takes the first positive step.
+  std::vector<double> dt(n);
+  double firstStep = 0.0;
+  for (std::size_t i = 1; i < n && firstStep <= 0.0; ++i) firstStep = s.t[i] - s.t[i - 1];
+  if (!(firstStep > 0.0)) {
+    throw std::runtime_error(input.string() +
+                             ": need at least two samples with increasing time to derive dt");
+  }
+  dt[0] = firstStep;
+  for (std::size_t i = 1; i < n; ++i) dt[i] = s.t[i] - s.t[i - 1];
+
+  OrientationFilter filter(params);
+  std::vector<double> quat(4 * n);
+  const auto start = std::chrono::steady_clock::now();
+  filter.updateBatch(s.gyr, s.acc, dt, quat);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  QuatCsvWriter writer(out, outPath);
+  for (std::size_t i = 0; i < n; ++i) writer.add(s.t[i], &quat[4 * i]);
+  writer.commit();
+
+  const OrientationState& st = filter.state();
+  const Eigen::Vector3d b = filter.bias() * kRadToDeg;
+  err << "orientation: " << n << " samples (" << shortest(s.t.front()) << " to "
+      << shortest(s.t.back()) << " s";
+  if (n > 1) err << ", " << fixed((n - 1) / (s.t.back() - s.t.front()), 1) << " Hz";
+  err << "), " << fixed(1e9 * seconds / n, 0) << " ns per sample; gyroscope bias at the end "
+      << fixed(b.x(), 3) << " " << fixed(b.y(), 3) << " " << fixed(b.z(), 3) << " deg/s (sigma "
+      << fixed(filter.biasSigma() * kRadToDeg, 3) << ")";
+  if (outPath) err << "; wrote " << outPath->string();
+  err << "\n";
+  if (st.rejected > 0) {
+    err << "orientation: " << st.rejected
+        << " row(s) with the same time as the previous row skipped (their output repeats the "
+           "previous orientation)\n";
+  }
+  if (st.noAcc > 0) {
+    err << "orientation: " << st.noAcc
+        << " row(s) with zero acceleration, taken as missing: gyroscope only\n";
+  }
+  return 0;
+}
+
+}  // namespace armtrack::cli
