@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Sets up a Debian 12 machine, builds ArmTrack and runs every test (ctest labels unit,
+# integration and, once the GUI exists, gui), then prints the benchmark figures.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${ARMTRACK_BUILD_DIR:-$root/build}"
+
+bash "$root/packaging/deps-debian12.sh"
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DBUILD_TESTING=ON
+cmake --build "$build" --parallel "$(nproc)"
+
+# Benchmarks are figures, not pass/fail: print them before the test summary.
+if [ -x "$build/tests/benchmarks/bench_filter" ]; then
+  "$build/tests/benchmarks/bench_filter" --benchmark_min_time=0.2 || echo "benchmarks failed to run" >&2
+fi
+
+cd "$build"
+ctest --output-on-failure --parallel "$(nproc)" --timeout 600
