@@ -4,21 +4,9 @@
 #include <charconv>
 #include <cmath>
 
+#include "app/cli/Text.h"
+
 namespace armtrack::cli {
-
-namespace {
-
-std::string inQuotes(std::string_view s) {
-  return "\"" + std::string(s) + "\"";
-}
-
-std::string shortest(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-}  // namespace
 
 std::optional<double> parseDouble(std::string_view text) {
   if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);

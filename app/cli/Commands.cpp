@@ -1,5 +1,4 @@
 // Command dispatch and the simulate / estimate / study commands of armtrack-cli.
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -14,8 +13,10 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Cli.h"
+#include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
 #include "app/cli/Orientation.h"
+#include "app/cli/Text.h"
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
@@ -99,16 +100,6 @@ Options:
   --filter ekf|ukf  filter for table6 (default ekf; fig5 always runs both)
   --duration S      seconds per run, the first second is start-up (default 10)
 )";
-
-std::string inQuotes(std::string_view s) {
-  return "\"" + std::string(s) + "\"";
-}
-
-std::string shortest(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 FilterKind parseFilter(const Args& a) {
   const auto v = a.value("--filter");
@@ -209,13 +200,6 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
 // ---------------------------------------------------------------------------------------------
 
-bool samePath(const fs::path& a, const fs::path& b) {
-  std::error_code ec1, ec2;
-  const fs::path ca = fs::weakly_canonical(a, ec1);
-  const fs::path cb = fs::weakly_canonical(b, ec2);
-  return !ec1 && !ec2 && ca == cb;
-}
-
 int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Args a("estimate", args,
                {{"--filter", true},
@@ -258,8 +242,8 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
 
   const EstimatorParams params = makeParams(rec.meta, opt);
-  std::optional<AngleCsvWriter> writer;
-  if (outPath) writer.emplace(*outPath);
+  std::optional<CsvOutput> writer;
+  if (outPath) writer.emplace("t,th0,th1,th2,th4,th5", *outPath);
   const auto start = std::chrono::steady_clock::now();
   const EstimateStats st = estimateRecording(rec, params, writer ? &*writer : nullptr,
                                              [&](int p) { err << "progress: " << p << "%\n"; });

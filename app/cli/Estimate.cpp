@@ -1,35 +1,22 @@
 #include "app/cli/Estimate.h"
 
-#include <cerrno>
-#include <charconv>
 #include <cmath>
-#include <cstring>
+#include <cstdio>
 #include <limits>
-#include <random>
-#include <stdexcept>
-#include <system_error>
 
+#include "app/cli/Text.h"
 #include "core/metrics/Accuracy.h"
 
 namespace armtrack::cli {
-
-namespace fs = std::filesystem;
 
 namespace {
 
 constexpr double kStartupSeconds = 1.0;  // left out of the statistics after each (re)start
 constexpr double kWindowSeconds = 10.0;  // drift comparison windows
-constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
 constexpr const char* kJointLabels[kNumJoints] = {
     "th0 shoulder flexion/extension", "th1 shoulder abduction/adduction",
     "th2 shoulder internal/external rotation", "th4 elbow flexion/extension",
     "th5 forearm pronation/supination"};
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 }  // namespace
 
@@ -49,72 +36,8 @@ EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& opt
 
 // ---------------------------------------------------------------------------------------------
 
-AngleCsvWriter::AngleCsvWriter(fs::path target) : m_target(std::move(target)) {
-  std::random_device rd;
-  const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
-  char hex[17];
-  const auto r = std::to_chars(hex, hex + 16, tag, 16);
-  m_tmp = m_target;
-  m_tmp.replace_filename("." + m_target.filename().string() + ".tmp-" + std::string(hex, r.ptr));
-  errno = 0;
-  m_file = std::fopen(m_tmp.c_str(), "wb");
-  if (!m_file) fail("cannot create temporary file \"" + m_tmp.string() + "\"", errno);
-  m_buf.reserve(kFlushBytes + 256);
-  m_buf = "t,th0,th1,th2,th4,th5\n";
-}
-
-AngleCsvWriter::~AngleCsvWriter() {
-  if (m_file) std::fclose(m_file);
-  if (!m_committed) {
-    std::error_code ec;
-    fs::remove(m_tmp, ec);
-  }
-}
-
-void AngleCsvWriter::add(double t, const JointVector& th) {
-  char row[256];
-  char* p = std::to_chars(row, row + 32, t).ptr;
-  for (int j = 0; j < kNumJoints; ++j) {
-    *p++ = ',';
-    p = std::to_chars(p, p + 32, th(j)).ptr;
-  }
-  *p++ = '\n';
-  m_buf.append(row, p);
-  if (m_buf.size() >= kFlushBytes) flush();
-}
-
-void AngleCsvWriter::flush() {
-  if (m_buf.empty()) return;
-  errno = 0;
-  if (std::fwrite(m_buf.data(), 1, m_buf.size(), m_file) != m_buf.size())
-    fail("write failed", errno);
-  m_buf.clear();
-}
-
-void AngleCsvWriter::commit() {
-  flush();
-  errno = 0;
-  if (std::fflush(m_file) != 0) fail("write failed", errno);
-  std::FILE* f = m_file;
-  m_file = nullptr;
-  errno = 0;
-  if (std::fclose(f) != 0) fail("closing the file failed", errno);
-  std::error_code ec;
-  fs::rename(m_tmp, m_target, ec);
-  if (ec) fail("cannot rename \"" + m_tmp.string() + "\" into place: " + ec.message(), 0);
-  m_committed = true;
-}
-
-void AngleCsvWriter::fail(const std::string& message, int err) const {
-  std::string what = m_target.string() + ": " + message;
-  if (err != 0) what += ": " + std::generic_category().message(err);
-  throw std::runtime_error(what);
-}
-
-// ---------------------------------------------------------------------------------------------
-
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
-                                AngleCsvWriter* writer, const EstimateProgress& progress) {
+                                CsvOutput* writer, const EstimateProgress& progress) {
   const std::vector<ArmSample>& samples = recording.samples;
   const std::size_t n = samples.size();
   EstimateStats st;
@@ -152,7 +75,7 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
       }
       st.tLast = e.t;
       ++st.estimates;
-      if (writer) writer->add(e.t, e.th);
+      if (writer) writer->row(e.t, e.th.data(), kNumJoints);
       if (s.trueAngles && e.t >= tStart + kStartupSeconds) {
         all.add(e.th, *s.trueAngles);
         if (e.t >= st.firstWindow.from && e.t <= st.firstWindow.to) first.add(e.th, *s.trueAngles);

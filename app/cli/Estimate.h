@@ -3,12 +3,11 @@
 #pragma once
 
 #include <cstddef>
-#include <cstdio>
-#include <filesystem>
 #include <functional>
 #include <optional>
 #include <string>
 
+#include "app/cli/CsvOutput.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
 
@@ -49,39 +48,16 @@ struct EstimateStats {
   WindowError lastWindow;   ///< the last 10 s
 };
 
-/// Writes "t,th0,th1,th2,th4,th5" rows into a temporary file beside the target and renames it
-/// into place on commit(); without commit() the temporary file is removed. Errors throw
-/// std::runtime_error naming the file.
-class AngleCsvWriter {
- public:
-  explicit AngleCsvWriter(std::filesystem::path target);
-  AngleCsvWriter(const AngleCsvWriter&) = delete;
-  AngleCsvWriter& operator=(const AngleCsvWriter&) = delete;
-  ~AngleCsvWriter();
-
-  void add(double t, const JointVector& th);
-  void commit();
-
- private:
-  void flush();
-  [[noreturn]] void fail(const std::string& message, int err) const;
-
-  std::filesystem::path m_target;
-  std::filesystem::path m_tmp;
-  std::FILE* m_file = nullptr;
-  std::string m_buf;
-  bool m_committed = false;
-};
-
 /// Called with 10, 20, ..., 100 (percent of rows done) for recordings of more than
 /// kProgressRows rows.
 using EstimateProgress = std::function<void(int percent)>;
 inline constexpr std::size_t kProgressRows = 100000;
 
 /// Runs the filter sample by sample. Each accepted sample that carries IMU data yields one output
-/// row (written to writer when given) and, when it carries true angles, one error sample.
+/// row "t,th0,th1,th2,th4,th5" (written to writer when given) and, when it carries true angles, one
+/// error sample.
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
-                                AngleCsvWriter* writer, const EstimateProgress& progress = {});
+                                CsvOutput* writer, const EstimateProgress& progress = {});
 
 /// Markdown report of the errors (empty when there is no truth) and, when no optical data was
 /// fused, the heading note and the first-vs-last 10 s comparison.

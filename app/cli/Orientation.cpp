@@ -9,12 +9,13 @@
 #include <fstream>
 #include <numbers>
 #include <optional>
-#include <random>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/CsvOutput.h"
+#include "app/cli/Text.h"
 #include "core/io/Recording.h"
 #include "core/orientation/OrientationFilter.h"
 
@@ -43,24 +44,7 @@ Options:
 constexpr std::array<std::string_view, 7> kColumns = {"t",     "gyr_x", "gyr_y", "gyr_z",
                                                       "acc_x", "acc_y", "acc_z"};
 constexpr std::string_view kColumnList = "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z";
-constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
-
-std::string inQuotes(std::string_view s) {
-  return "\"" + std::string(s) + "\"";
-}
-
-std::string shortest(double v) {
-  char buf[32];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string fixed(double v, int decimals) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  return buf;
-}
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -195,103 +179,6 @@ class ImuCsvParser {
   std::array<int, 7> m_columnOf{};  // field index of each of kColumns
 };
 
-// Streams "t,qw,qx,qy,qz" rows to standard output, or to a temporary file beside the target that
-// commit() renames into place (without commit() it is removed).
-class QuatCsvWriter {
- public:
-  QuatCsvWriter(std::ostream& out, std::optional<fs::path> target)
-      : m_out(out), m_target(std::move(target)) {
-    if (m_target) {
-      std::random_device rd;
-      const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
-      char hex[17];
-      const auto r = std::to_chars(hex, hex + 16, tag, 16);
-      m_tmp = *m_target;
-      m_tmp.replace_filename("." + m_target->filename().string() + ".tmp-" +
-                             std::string(hex, r.ptr));
-      errno = 0;
-      m_file = std::fopen(m_tmp.c_str(), "wb");
-      if (!m_file) fail("cannot create temporary file " + inQuotes(m_tmp.string()), errno);
-    }
-    m_buf.reserve(kFlushBytes + 256);
-    m_buf = "t,qw,qx,qy,qz\n";
-  }
-  QuatCsvWriter(const QuatCsvWriter&) = delete;
-  QuatCsvWriter& operator=(const QuatCsvWriter&) = delete;
-  ~QuatCsvWriter() {
-    if (m_file) std::fclose(m_file);
-    if (m_target && !m_committed) {
-      std::error_code ec;
-      fs::remove(m_tmp, ec);
-    }
-  }
-
-  void add(double t, const double* q) {
-    char row[192];
-    char* p = std::to_chars(row, row + 32, t).ptr;
-    for (int k = 0; k < 4; ++k) {
-      *p++ = ',';
-      p = std::to_chars(p, p + 32, q[k]).ptr;
-    }
-    *p++ = '\n';
-    m_buf.append(row, p);
-    if (m_buf.size() >= kFlushBytes) flush();
-  }
-
-  void commit() {
-    flush();
-    if (!m_file) {
-      m_out.flush();
-      if (!m_out) throw std::runtime_error("writing to standard output failed");
-      m_committed = true;
-      return;
-    }
-    errno = 0;
-    if (std::fflush(m_file) != 0) fail("write failed", errno);
-    std::FILE* f = m_file;
-    m_file = nullptr;
-    errno = 0;
-    if (std::fclose(f) != 0) fail("closing the file failed", errno);
-    std::error_code ec;
-    fs::rename(m_tmp, *m_target, ec);
-    if (ec) fail("cannot rename " + inQuotes(m_tmp.string()) + " into place: " + ec.message(), 0);
-    m_committed = true;
-  }
-
- private:
-  void flush() {
-    if (m_buf.empty()) return;
-    if (m_file) {
-      errno = 0;
-      if (std::fwrite(m_buf.data(), 1, m_buf.size(), m_file) != m_buf.size())
-        fail("write failed", errno);
-    } else {
-      m_out.write(m_buf.data(), static_cast<std::streamsize>(m_buf.size()));
-    }
-    m_buf.clear();
-  }
-
-  [[noreturn]] void fail(const std::string& message, int err) const {
-    std::string what = m_target->string() + ": " + message;
-    if (err != 0) what += ": " + std::generic_category().message(err);
-    throw std::runtime_error(what);
-  }
-
-  std::ostream& m_out;
-  std::optional<fs::path> m_target;
-  fs::path m_tmp;
-  std::FILE* m_file = nullptr;
-  std::string m_buf;
-  bool m_committed = false;
-};
-
-bool samePath(const fs::path& a, const fs::path& b) {
-  std::error_code ec1, ec2;
-  const fs::path ca = fs::weakly_canonical(a, ec1);
-  const fs::path cb = fs::weakly_canonical(b, ec2);
-  return !ec1 && !ec2 && ca == cb;
-}
-
 }  // namespace
 
 ImuSeries readImuCsv(const fs::path& path) {
@@ -347,8 +234,8 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  QuatCsvWriter writer(out, outPath);
-  for (std::size_t i = 0; i < n; ++i) writer.add(s.t[i], &quat[4 * i]);
+  CsvOutput writer("t,qw,qx,qy,qz", outPath, &out);
+  for (std::size_t i = 0; i < n; ++i) writer.row(s.t[i], &quat[4 * i], 4);
   writer.commit();
 
   const OrientationState& st = filter.state();
