@@ -2,7 +2,6 @@
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -233,7 +232,6 @@ class ArmFilter final : public JointEstimator {
     }
     const Vec xBefore = m_x;
     const Mat pBefore = m_P;
-    const bool imuOnly = !hasOptical;
     if (hasOptical) beforeOpticalUpdate();
     // Both filters start with the iterated EKF update: a UKF's sigma points spread over the
     // start-up uncertainty (tens of degrees) wrap around and lose the arm.
@@ -245,7 +243,7 @@ class ArmFilter final : public JointEstimator {
       ++m_counters.skippedUpdates;
       return UpdateResult::Rejected;
     }
-    afterUpdate(!imuOnly);
+    afterUpdate(hasOptical);
     finishUpdate();
     return UpdateResult::Accepted;
   }
