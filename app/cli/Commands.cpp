@@ -65,6 +65,7 @@ Options:
   --kinect-rate HZ     Kinect rate (default 30)
   --kinect-noise M     Kinect position noise std per axis, m (default 0.01)
   --no-kinect          no optical rows
+  --side right|left    which arm (default right; a left arm is the right one mirrored)
   --gyro-noise RAD_S   gyroscope noise std, rad/s (default Table 5: sqrt(0.1) deg/s)
   --accel-noise M_S2   accelerometer noise std, m/s^2 (default Table 5: 0.1)
   --gyro-bias RAD_S    constant gyroscope bias on every axis of both IMUs (default 0)
@@ -131,6 +132,7 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                 {"--kinect-rate", true},
                 {"--kinect-noise", true},
                 {"--no-kinect", false},
+                {"--side", true},
                 {"--gyro-noise", true},
                 {"--accel-noise", true},
                 {"--gyro-bias", true},
@@ -166,6 +168,13 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     sim.forearm.misalignment = randomMisalignment(misalignDeg * kDeg, 2 * sim.seed + 2);
   }
   sim.kinect.enabled = !a.flag("--no-kinect");
+  if (const auto side = a.value("--side")) {
+    try {
+      sim.side = parseSide(*side);
+    } catch (const std::invalid_argument& e) {
+      a.fail(std::string("--side: ") + e.what());
+    }
+  }
   sim.kinect.rateHz = a.positive("--kinect-rate", 30.0);
   sim.kinect.noiseStd = a.nonNegative("--kinect-noise", Table5::posStd());
 

@@ -26,6 +26,7 @@ EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& opt
   p.model = options.model;
   p.geometry = meta.geometry;
   p.gUp = meta.gUp();
+  p.side = meta.side;
   p.useOptical = options.useOptical;
   if (options.jointAccelStdDeg) {
     const double s = *options.jointAccelStdDeg * kDeg;

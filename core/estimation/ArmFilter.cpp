@@ -159,7 +159,16 @@ class ArmFilter final : public JointEstimator {
   using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
   static constexpr bool kAugmented = N > kBase;
 
-  explicit ArmFilter(const EstimatorParams& p) : m_p(p), m_up(p.gUp.normalized()) { reset(); }
+  explicit ArmFilter(const EstimatorParams& p) : m_p(mirrored(p)), m_up(m_p.gUp.normalized()) {
+    reset();
+  }
+
+  // Everything below works on a right arm: a left arm's gravity direction is mirrored once here,
+  // its samples on arrival.
+  static EstimatorParams mirrored(EstimatorParams p) {
+    if (p.side == Side::Left) p.gUp = mirrorPoint(p.gUp);
+    return p;
+  }
 
   void reset() override {
     m_x.setZero();
@@ -203,7 +212,7 @@ class ArmFilter final : public JointEstimator {
     }
     m_lastSeenT = s.t;
 
-    ArmSample clean = sanitise(s);
+    ArmSample clean = sanitise(m_p.side == Side::Left ? mirrorSample(s) : s);
     const bool hasImu = clean.upperArm || clean.forearm;
     const bool hasOptical = clean.elbow || clean.wrist;
     if (!hasImu && !hasOptical) return UpdateResult::Rejected;

@@ -15,6 +15,7 @@
 
 #include "core/ArmSample.h"
 #include "core/kinematics/ArmModel.h"
+#include "core/kinematics/Side.h"
 
 namespace armtrack {
 
@@ -40,6 +41,9 @@ struct EstimatorParams {
   MeasurementModel model = MeasurementModel::AccelGyro;
   ArmGeometry geometry;                        ///< the arm and IMU mounting the filter assumes
   Eigen::Vector3d gUp{-9.81, 0.0, 0.0};        ///< g * up in the shoulder frame (m/s^2)
+  /// Which arm. Samples and gUp are in that arm's shoulder frame; a left arm is estimated as the
+  /// mirror image of a right arm (core/kinematics/Side.h), with the same joint angles.
+  Side side = Side::Right;
 
   /// Joint-acceleration process noise variance per reference step, (rad/s^2)^2. Table 5:
   /// 1 (deg/s^2)^2 at the paper's 1 ms step. For another dt the variance scales with dt / 1 ms.

@@ -465,6 +465,7 @@ std::string sidecarText(const RecordingMeta& meta) {
                    {"lu5", g.lu5}, {"lf6", g.lf6}, {"thf7", g.thf7}, {"lf8", g.lf8}};
   j["up"] = {meta.up.x(), meta.up.y(), meta.up.z()};
   j["g"] = meta.g;
+  j["side"] = sideName(meta.side);
   if (meta.camera) {
     const CameraParams& c = *meta.camera;
     OJson r = OJson::array();
@@ -695,7 +696,15 @@ RecordingMeta readSidecar(const fs::path& jsonPath) {
     }
     meta.camera = cam;
   }
-  // "side" and unknown keys are accepted and ignored.
+  if (j.contains("side")) {
+    if (!j["side"].is_string()) metaFail(file, "\"side\" must be \"left\" or \"right\"");
+    try {
+      meta.side = parseSide(j["side"].get<std::string>());
+    } catch (const std::invalid_argument& e) {
+      metaFail(file, e.what());
+    }
+  }
+  // Unknown keys are accepted and ignored.
   return meta;
 }
 

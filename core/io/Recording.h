@@ -11,6 +11,7 @@
 
 #include "core/ArmSample.h"
 #include "core/kinematics/ArmModel.h"
+#include "core/kinematics/Side.h"
 
 namespace armtrack {
 
@@ -28,6 +29,7 @@ struct RecordingMeta {
   Eigen::Vector3d up{-1.0, 0.0, 0.0};  ///< unit vector pointing up, shoulder-frame axes
   double g = 9.81;                     ///< m/s^2
   std::optional<CameraParams> camera;
+  Side side = Side::Right;  ///< which arm; a left arm's data are in its own shoulder frame
 
   Eigen::Vector3d gUp() const { return g * up; }
 };

@@ -125,6 +125,8 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
   rec.meta.geometry = params.geometry;
   rec.meta.up = params.up;
   rec.meta.g = params.g;
+  rec.meta.side = params.side;
+  const bool left = params.side == Side::Left;
 
   const ImuSimParams& up = params.upperArm;
   const ImuSimParams& fa = params.forearm;
@@ -138,7 +140,8 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
   Noise upperNoise(params.seed, NoiseStream::kUpperArm);
   Noise forearmNoise(params.seed, NoiseStream::kForearm);
   Noise kinectNoise(params.seed, NoiseStream::kKinect);
-  const Eigen::Vector3d gUp = params.g * params.up;
+  // A left arm is simulated as its right-arm mirror image, then mirrored back sample by sample.
+  const Eigen::Vector3d gUp = params.g * (left ? mirrorPoint(params.up) : params.up);
 
   // Merge the clocks: each row is the earliest pending time; every clock due at exactly that time
   // contributes to the same row.
@@ -172,6 +175,7 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
       for (int j = 0; j < kNumJoints; ++j) truth(j) = wrapAngle(m.th(j));
       s.trueAngles = truth;
     }
+    if (left) s = mirrorSample(s);
   }
   return rec;
 }

@@ -43,6 +43,9 @@ struct SimulationParams {
   OpticalSimParams kinect;
   std::uint64_t seed = 1;
   bool includeTruth = true;  ///< fill ArmSample::trueAngles on IMU rows
+  /// Which arm. A left arm is the mirror image of the right one (core/kinematics/Side.h): its
+  /// data come out in the left shoulder's frame, with `up` given in that frame.
+  Side side = Side::Right;
 };
 
 /// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise.
