@@ -3,32 +3,34 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "core/Strings.h"
 #include "core/estimation/Initializer.h"
 
 namespace armtrack {
 
 MeasurementModel parseMethod(const std::string& name) {
-  std::string s;
-  for (char c : name) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string s = asciiLower(name);
   if (s == "a") return MeasurementModel::AccelGyro;
   if (s == "b") return MeasurementModel::AugmentedBodyAccel;
   if (s == "c") return MeasurementModel::InclinometerGyro;
   if (s == "inclinometer") return MeasurementModel::Inclinometer;
-  throw std::invalid_argument("unknown method \"" + name +
-                              "\": expected A, B, C or inclinometer");
+  throw std::invalid_argument("unknown method \"" + name + "\": expected A, B, C or inclinometer");
 }
 
 std::string methodName(MeasurementModel m) {
   switch (m) {
-    case MeasurementModel::AccelGyro: return "A";
-    case MeasurementModel::AugmentedBodyAccel: return "B";
-    case MeasurementModel::InclinometerGyro: return "C";
-    case MeasurementModel::Inclinometer: return "inclinometer";
+    case MeasurementModel::AccelGyro:
+      return "A";
+    case MeasurementModel::AugmentedBodyAccel:
+      return "B";
+    case MeasurementModel::InclinometerGyro:
+      return "C";
+    case MeasurementModel::Inclinometer:
+      return "inclinometer";
   }
   return "?";
 }
@@ -113,8 +115,6 @@ struct BlockList {
   }
 };
 
-bool finite3(const Eigen::Vector3d& v) { return v.allFinite(); }
-
 // Predicted readings of all six blocks for the 15-state base, templated for AutoDiff.
 template <typename T>
 void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
@@ -125,12 +125,11 @@ void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
   const ArmKinematics<T> k = armKinematics<T>(p.geometry, th, thd, thdd, p.gUp);
   const bool bodyAccel = p.model == MeasurementModel::AccelGyro;
   out.template segment<3>(0) = k.upperImu.omega;
-  out.template segment<3>(3) = bodyAccel ? Eigen::Matrix<T, 3, 1>(k.upperImu.up + k.upperImu.accel)
-                                         : k.upperImu.up;
+  out.template segment<3>(3) =
+      bodyAccel ? Eigen::Matrix<T, 3, 1>(k.upperImu.up + k.upperImu.accel) : k.upperImu.up;
   out.template segment<3>(6) = k.forearmImu.omega;
-  out.template segment<3>(9) = bodyAccel
-                                   ? Eigen::Matrix<T, 3, 1>(k.forearmImu.up + k.forearmImu.accel)
-                                   : k.forearmImu.up;
+  out.template segment<3>(9) =
+      bodyAccel ? Eigen::Matrix<T, 3, 1>(k.forearmImu.up + k.forearmImu.accel) : k.forearmImu.up;
   out.template segment<3>(12) = k.elbow;
   out.template segment<3>(15) = k.wrist;
 }
@@ -245,7 +244,8 @@ class ArmFilter final : public JointEstimator {
     // Both filters start with the iterated EKF update: a UKF's sigma points spread over the
     // start-up uncertainty (tens of degrees) wrap around and lose the arm.
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
-    const bool ok = m_p.filter == FilterKind::Ekf || startup ? ekfUpdate(blocks) : ukfUpdate(blocks);
+    const bool ok =
+        m_p.filter == FilterKind::Ekf || startup ? ekfUpdate(blocks) : ukfUpdate(blocks);
     if (!ok || !m_x.allFinite() || !m_P.allFinite()) {
       m_x = xBefore;
       m_P = pBefore;
@@ -264,13 +264,13 @@ class ArmFilter final : public JointEstimator {
     c.t = s.t;
     auto imuOk = [&](const std::optional<ImuReading>& r) {
       if (!r) return false;
-      if (finite3(r->gyr) && finite3(r->acc)) return true;
+      if (r->gyr.allFinite() && r->acc.allFinite()) return true;
       ++m_counters.rejectedNonFinite;
       return false;
     };
     auto posOk = [&](const std::optional<Eigen::Vector3d>& p) {
       if (!p || !m_p.useOptical) return false;
-      if (finite3(*p)) return true;
+      if (p->allFinite()) return true;
       ++m_counters.rejectedNonFinite;
       return false;
     };
@@ -285,7 +285,8 @@ class ArmFilter final : public JointEstimator {
     BlockList b;
     const bool gyro = m_p.model != MeasurementModel::Inclinometer;
     const double accelVar =
-        m_p.accelVariance * (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0);
+        m_p.accelVariance *
+        (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0);
     if (s.upperArm) {
       if (gyro) b.add(kUaGyr, s.upperArm->gyr, m_p.gyroVariance);
       b.add(kUaAcc, s.upperArm->acc, accelVar);

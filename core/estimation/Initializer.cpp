@@ -32,9 +32,6 @@ struct PoseResidual {
   int nValues = 0;
 
   int inputs() const { return static_cast<int>(active.size()); }
-  double gravityWeight(const Eigen::Vector3d& acc) const {
-    return armtrack::gravityWeight(acc, params->gUp.norm());
-  }
   int values() const { return nValues; }
 
   // th: all five joints (inactive ones at their fixed value).
@@ -49,12 +46,13 @@ struct PoseResidual {
       r.template segment<3>(row) = v;
       row += 3;
     };
+    const double g = params->gUp.norm();
     if (sample->upperArm)
       put((sample->upperArm->acc.normalized().cast<T>() - k.upperImu.up) *
-          T(gravityWeight(sample->upperArm->acc)));
+          T(gravityWeight(sample->upperArm->acc, g)));
     if (sample->forearm)
       put((sample->forearm->acc.normalized().cast<T>() - k.forearmImu.up) *
-          T(gravityWeight(sample->forearm->acc)));
+          T(gravityWeight(sample->forearm->acc, g)));
     if (sample->elbow) put((sample->elbow->cast<T>() - k.elbow) / T(kPositionScale));
     if (sample->wrist) put((sample->wrist->cast<T>() - k.wrist) / T(kPositionScale));
     const JointVector prior = neutralPosture();
@@ -114,10 +112,8 @@ InitialPose initialPose(const EstimatorParams& params, const ArmSample& sample) 
   // A coarse set of starts covering the workspace; LM refines each, the lowest cost wins.
   const std::array<std::vector<double>, kNumJoints> starts{
       std::vector<double>{-60 * kDeg, 0.0, 60 * kDeg, 120 * kDeg},
-      std::vector<double>{0.0, 60 * kDeg},
-      std::vector<double>{-60 * kDeg, 30 * kDeg},
-      std::vector<double>{-100 * kDeg, -20 * kDeg},
-      std::vector<double>{-60 * kDeg, 60 * kDeg}};
+      std::vector<double>{0.0, 60 * kDeg}, std::vector<double>{-60 * kDeg, 30 * kDeg},
+      std::vector<double>{-100 * kDeg, -20 * kDeg}, std::vector<double>{-60 * kDeg, 60 * kDeg}};
   std::vector<std::size_t> idx(n, 0);
   for (;;) {
     Eigen::VectorXd x(n);

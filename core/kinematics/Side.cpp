@@ -1,19 +1,21 @@
 #include "core/kinematics/Side.h"
 
-#include <cctype>
 #include <stdexcept>
+
+#include "core/Strings.h"
 
 namespace armtrack {
 
 Side parseSide(const std::string& name) {
-  std::string s;
-  for (char c : name) s += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string s = asciiLower(name);
   if (s == "right") return Side::Right;
   if (s == "left") return Side::Left;
   throw std::invalid_argument("unknown side \"" + name + "\": expected \"left\" or \"right\"");
 }
 
-std::string sideName(Side side) { return side == Side::Left ? "left" : "right"; }
+std::string sideName(Side side) {
+  return side == Side::Left ? "left" : "right";
+}
 
 ArmSample mirrorSample(const ArmSample& s) {
   ArmSample m = s;
