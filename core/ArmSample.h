@@ -16,11 +16,11 @@ struct ImuReading {
 
 /// Everything measured at one instant. Sensors run at different rates: absent ones are empty.
 struct ArmSample {
-  double t = 0.0;                         ///< time (s)
-  std::optional<ImuReading> upperArm;     ///< upper-arm IMU
-  std::optional<ImuReading> forearm;      ///< forearm IMU
-  std::optional<Eigen::Vector3d> elbow;   ///< optical elbow position, shoulder frame (m)
-  std::optional<Eigen::Vector3d> wrist;   ///< optical wrist position, shoulder frame (m)
+  double t = 0.0;                           ///< time (s)
+  std::optional<ImuReading> upperArm;       ///< upper-arm IMU
+  std::optional<ImuReading> forearm;        ///< forearm IMU
+  std::optional<Eigen::Vector3d> elbow;     ///< optical elbow position, shoulder frame (m)
+  std::optional<Eigen::Vector3d> wrist;     ///< optical wrist position, shoulder frame (m)
   std::optional<Eigen::Vector2d> camWrist;  ///< wrist marker pixel (u, v)
   std::optional<Eigen::Vector2d> camElbow;  ///< elbow marker pixel (u, v)
   std::optional<JointVector> trueAngles;    ///< known true joint angles (rad), simulations

@@ -25,9 +25,9 @@ enum class FilterKind { Ekf, Ukf };
 
 /// What the accelerometers are assumed to measure (the gyroscope is used except where noted).
 enum class MeasurementModel {
-  Inclinometer,      ///< accelerometer = gravity only; no gyroscope (zero-order, Fig. 5)
-  InclinometerGyro,  ///< accelerometer = gravity only, plus gyroscope (Method C)
-  AccelGyro,         ///< accelerometer = gravity + body acceleration (eq. 17-18), gyro (Method A)
+  Inclinometer,        ///< accelerometer = gravity only; no gyroscope (zero-order, Fig. 5)
+  InclinometerGyro,    ///< accelerometer = gravity only, plus gyroscope (Method C)
+  AccelGyro,           ///< accelerometer = gravity + body acceleration (eq. 17-18), gyro (Method A)
   AugmentedBodyAccel,  ///< gravity + body acceleration as GM-1 states, plus gyro (Method B)
 };
 
@@ -39,8 +39,8 @@ std::string methodName(MeasurementModel m);
 struct EstimatorParams {
   FilterKind filter = FilterKind::Ekf;
   MeasurementModel model = MeasurementModel::AccelGyro;
-  ArmGeometry geometry;                        ///< the arm and IMU mounting the filter assumes
-  Eigen::Vector3d gUp{-9.81, 0.0, 0.0};        ///< g * up in the shoulder frame (m/s^2)
+  ArmGeometry geometry;                  ///< the arm and IMU mounting the filter assumes
+  Eigen::Vector3d gUp{-9.81, 0.0, 0.0};  ///< g * up in the shoulder frame (m/s^2)
   /// Which arm. Samples and gUp are in that arm's shoulder frame; a left arm is estimated as the
   /// mirror image of a right arm (core/kinematics/Side.h), with the same joint angles.
   Side side = Side::Right;
@@ -71,11 +71,11 @@ struct EstimatorParams {
   JointVector fixedAngles = JointVector::Zero();  ///< rad
 
   /// Start-up: initial standard deviations after the gravity/optical initialisation.
-  double initialAngleStd = 45.0 * kDeg;   ///< rad, start pose from gravity alone
+  double initialAngleStd = 45.0 * kDeg;        ///< rad, start pose from gravity alone
   double initialAngleStdOptical = 5.0 * kDeg;  ///< rad, start pose fixed by optical positions
-  double initialRateStd = 0.5;            ///< rad/s
-  double initialAccelStd = 10.0;          ///< rad/s^2
-  double initialHeadingStd = 30.0 * kDeg;  ///< rad, extra along the heading direction
+  double initialRateStd = 0.5;                 ///< rad/s
+  double initialAccelStd = 10.0;               ///< rad/s^2
+  double initialHeadingStd = 30.0 * kDeg;      ///< rad, extra along the heading direction
   /// During the first startupSeconds the EKF iterates its update (Gauss-Newton) up to this many
   /// times, so a start while the arm moves fast cannot throw it off.
   int startupIterations = 4;
@@ -95,11 +95,11 @@ struct EstimatorParams {
 
 /// Output of the filter at one instant.
 struct JointEstimate {
-  double t = 0.0;                            ///< s
-  JointVector th = JointVector::Zero();      ///< rad, wrapped to (-pi, pi]
-  JointVector thd = JointVector::Zero();     ///< rad/s
-  JointVector thdd = JointVector::Zero();    ///< rad/s^2
-  JointVector thStd = JointVector::Zero();   ///< 1-sigma of th (rad)
+  double t = 0.0;                           ///< s
+  JointVector th = JointVector::Zero();     ///< rad, wrapped to (-pi, pi]
+  JointVector thd = JointVector::Zero();    ///< rad/s
+  JointVector thdd = JointVector::Zero();   ///< rad/s^2
+  JointVector thStd = JointVector::Zero();  ///< 1-sigma of th (rad)
 };
 
 /// Counters of everything the filter refused or repaired; never reset except by reset().
@@ -114,10 +114,10 @@ struct EstimatorCounters {
 };
 
 enum class UpdateResult {
-  Accepted,      ///< the sample was fused
-  Initialised,   ///< the filter (re)started from this sample
-  Waiting,       ///< not yet initialised (no IMU sample seen)
-  Rejected,      ///< nothing usable in the sample (see counters)
+  Accepted,     ///< the sample was fused
+  Initialised,  ///< the filter (re)started from this sample
+  Waiting,      ///< not yet initialised (no IMU sample seen)
+  Rejected,     ///< nothing usable in the sample (see counters)
 };
 
 /// The estimator. Not thread-safe: one thread feeds it.

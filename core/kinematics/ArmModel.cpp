@@ -10,8 +10,12 @@ constexpr DhRow kShoulder3{2, 0.0, 0.0, 0.0, 0.0};
 }  // namespace
 
 std::array<DhRow, 6> upperImuTable(const ArmGeometry& geo) {
-  return {kShoulder1, kShoulder2, kShoulder3, DhRow{-1, 0.0, geo.lu3, 0.0, 0.0},
-          DhRow{-1, geo.thu4, 0.0, kHalfPi, 0.0}, DhRow{-1, 0.0, geo.lu5, 0.0, 0.0}};
+  return {kShoulder1,
+          kShoulder2,
+          kShoulder3,
+          DhRow{-1, 0.0, geo.lu3, 0.0, 0.0},
+          DhRow{-1, geo.thu4, 0.0, kHalfPi, 0.0},
+          DhRow{-1, 0.0, geo.lu5, 0.0, 0.0}};
 }
 
 std::array<DhRow, 5> elbowTable(const ArmGeometry& geo) {
@@ -21,15 +25,21 @@ std::array<DhRow, 5> elbowTable(const ArmGeometry& geo) {
 
 std::array<DhRow, 9> forearmImuTable(const ArmGeometry& geo) {
   const auto e = elbowTable(geo);
-  return {e[0], e[1], e[2], e[3], e[4], DhRow{4, 0.0, 0.0, 0.0, 0.0},
-          DhRow{-1, 0.0, geo.lf6, 0.0, 0.0}, DhRow{-1, geo.thf7 + kHalfPi, 0.0, kHalfPi, 0.0},
+  return {e[0],
+          e[1],
+          e[2],
+          e[3],
+          e[4],
+          DhRow{4, 0.0, 0.0, 0.0, 0.0},
+          DhRow{-1, 0.0, geo.lf6, 0.0, 0.0},
+          DhRow{-1, geo.thf7 + kHalfPi, 0.0, kHalfPi, 0.0},
           DhRow{-1, 0.0, geo.lf8, 0.0, 0.0}};
 }
 
 std::array<DhRow, 7> wristTable(const ArmGeometry& geo) {
   const auto e = elbowTable(geo);
-  return {e[0], e[1], e[2], e[3], e[4], DhRow{4, 0.0, 0.0, 0.0, 0.0},
-          DhRow{-1, 0.0, geo.l6, 0.0, 0.0}};
+  return {
+      e[0], e[1], e[2], e[3], e[4], DhRow{4, 0.0, 0.0, 0.0, 0.0}, DhRow{-1, 0.0, geo.l6, 0.0, 0.0}};
 }
 
 ArmPose forwardKinematics(const ArmGeometry& geo, const JointVector& th) {

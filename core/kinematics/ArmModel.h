@@ -22,14 +22,14 @@ inline constexpr int kNumJoints = 5;
 
 /// Segment lengths and IMU mounting parameters (paper's Table 7 defaults).
 struct ArmGeometry {
-  double l3 = 0.22;                      ///< upper arm length, shoulder to elbow (m)
-  double l6 = 0.20;                      ///< forearm length, elbow to wrist (m)
-  double lu3 = 0.11;                     ///< upper-arm strap distance from the shoulder (m)
-  double thu4 = std::numbers::pi / 2;    ///< upper-arm strap angle about the arm axis (rad)
-  double lu5 = 0.02;                     ///< upper-arm strap effective radius (m)
-  double lf6 = 0.20;                     ///< forearm strap distance from the elbow (m)
-  double thf7 = std::numbers::pi / 2;    ///< forearm strap angle about the forearm axis (rad)
-  double lf8 = 0.01;                     ///< forearm strap effective radius (m)
+  double l3 = 0.22;                    ///< upper arm length, shoulder to elbow (m)
+  double l6 = 0.20;                    ///< forearm length, elbow to wrist (m)
+  double lu3 = 0.11;                   ///< upper-arm strap distance from the shoulder (m)
+  double thu4 = std::numbers::pi / 2;  ///< upper-arm strap angle about the arm axis (rad)
+  double lu5 = 0.02;                   ///< upper-arm strap effective radius (m)
+  double lf6 = 0.20;                   ///< forearm strap distance from the elbow (m)
+  double thf7 = std::numbers::pi / 2;  ///< forearm strap angle about the forearm axis (rad)
+  double lf8 = 0.01;                   ///< forearm strap effective radius (m)
 };
 
 /// One DH row, H = Rz(gamma) Tz(lambda) Rx(beta) Tx(delta); gamma = theta[joint] + gammaOffset
@@ -209,12 +209,12 @@ ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5,
   }
   // Positions (eq. 11): the elbow is l3 along z3, the wrist l6 further along z6 (Table 4 row 7).
   // Vectors are carried back to frame 0 row by row, the innermost row first.
-  const double c4 = 0.0, s4 = 1.0;  // row 4: gamma = pi/2
-  Vec3 v(T(0), T(0), T(geo.l6));                     // wrist offset in frame 6
-  v = detail::toParent(v, c6, s6, 0.0);              // row 6 (no translation)
-  v = detail::toParent(v, c5, s5, kHalfPi);          // row 5
-  v = detail::toParent(v, c4, s4, -kHalfPi);         // row 4 rotation ...
-  v(2) += T(geo.l3);                                 // ... and its translation l3 along z3
+  const double c4 = 0.0, s4 = 1.0;            // row 4: gamma = pi/2
+  Vec3 v(T(0), T(0), T(geo.l6));              // wrist offset in frame 6
+  v = detail::toParent(v, c6, s6, 0.0);       // row 6 (no translation)
+  v = detail::toParent(v, c5, s5, kHalfPi);   // row 5
+  v = detail::toParent(v, c4, s4, -kHalfPi);  // row 4 rotation ...
+  v(2) += T(geo.l3);                          // ... and its translation l3 along z3
   // v is now wrist - shoulder in frame 3; rotate both it and the elbow (l3 z3) to frame 0.
   Vec3 e(T(0), T(0), T(geo.l3));
   v = detail::toParent(v, c3, s3, 0.0);

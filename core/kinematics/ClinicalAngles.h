@@ -20,9 +20,9 @@ struct ClinicalAngles {
 };
 
 struct ClinicalAngleInfo {
-  std::string_view key;       ///< stable identifier (CSV columns, settings)
-  std::string_view name;      ///< English display name
-  std::string_view positive;  ///< what a positive value means
+  std::string_view key;         ///< stable identifier (CSV columns, settings)
+  std::string_view name;        ///< English display name
+  std::string_view positive;    ///< what a positive value means
   double normalMin, normalMax;  ///< typical active range of motion (deg)
 };
 

@@ -20,7 +20,9 @@ std::string sideName(Side side);
 /// The mirror through the sagittal plane in shoulder-frame coordinates: z0 (lateral for the
 /// right arm) changes sign. For a left arm, frame 0 keeps x0 down and y0 forward, and z0 points
 /// to the patient's right, i.e. medially.
-inline Eigen::Vector3d mirrorPoint(const Eigen::Vector3d& p) { return {p.x(), p.y(), -p.z()}; }
+inline Eigen::Vector3d mirrorPoint(const Eigen::Vector3d& p) {
+  return {p.x(), p.y(), -p.z()};
+}
 
 /// An IMU reading mapped between a left-arm sensor and its right-arm twin. The twin of a sensor
 /// frame is its mirror image with the z axis reversed (so it stays right-handed): polar vectors

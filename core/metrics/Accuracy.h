@@ -12,7 +12,7 @@ class ErrorAccumulator {
  public:
   void add(const JointVector& estimate, const JointVector& truth);
   std::size_t count() const { return m_count; }
-  JointVector rmse() const;  ///< rad; zero when empty
+  JointVector rmse() const;                    ///< rad; zero when empty
   JointVector peak() const { return m_peak; }  ///< largest absolute error (rad)
 
  private:

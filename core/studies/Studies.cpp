@@ -106,7 +106,9 @@ std::string fmt(const char* f, double a, double b) {
   return buf;
 }
 
-std::string filterName(FilterKind f) { return f == FilterKind::Ekf ? "EKF" : "UKF"; }
+std::string filterName(FilterKind f) {
+  return f == FilterKind::Ekf ? "EKF" : "UKF";
+}
 
 }  // namespace
 
@@ -133,23 +135,23 @@ std::vector<Table6Row> runTable6(const StudySetup& setup, const StudyProgress& p
       rmse.push_back(err[m * setup.runs + r].rmse);
       peak.push_back(err[m * setup.runs + r].peak);
     }
-    rows.push_back({methods[m], stat(rmse), stat(peak), paper[m][0], paper[m][1], paper[m][2],
-                    paper[m][3]});
+    rows.push_back(
+        {methods[m], stat(rmse), stat(peak), paper[m][0], paper[m][1], paper[m][2], paper[m][3]});
   }
   return rows;
 }
 
 std::string formatTable6(const std::vector<Table6Row>& rows, const StudySetup& setup) {
-  std::string s = "Table 6: body-acceleration compensation, th0 = " +
-                  fmt("%.0f deg sin(2 pi 1 Hz t), %.0f s runs", setup.amplitudeDeg,
-                      setup.duration) +
-                  ", " + std::to_string(setup.runs) + " runs, " + filterName(setup.filter) +
-                  ", Table 5 noise, first second skipped\n\n";
+  std::string s =
+      "Table 6: body-acceleration compensation, th0 = " +
+      fmt("%.0f deg sin(2 pi 1 Hz t), %.0f s runs", setup.amplitudeDeg, setup.duration) + ", " +
+      std::to_string(setup.runs) + " runs, " + filterName(setup.filter) +
+      ", Table 5 noise, first second skipped\n\n";
   s += "| Method | RMSE mean (deg) | RMSE std | PE mean (deg) | PE std | Paper RMSE | Paper PE |\n";
   s += "|---|---|---|---|---|---|---|\n";
   for (const Table6Row& r : rows) {
-    s += "| " + methodName(r.method) + " | " + fmt("%.3f | %.3f", r.rmse.mean, r.rmse.std) +
-         " | " + fmt("%.3f | %.3f", r.peak.mean, r.peak.std) + " | " +
+    s += "| " + methodName(r.method) + " | " + fmt("%.3f | %.3f", r.rmse.mean, r.rmse.std) + " | " +
+         fmt("%.3f | %.3f", r.peak.mean, r.peak.std) + " | " +
          fmt("%.2f +/- %.2f", r.paperRmse, r.paperRmseStd) + " | " +
          fmt("%.2f +/- %.2f", r.paperPeak, r.paperPeakStd) + " |\n";
   }

@@ -21,8 +21,8 @@ struct Stat {
 
 struct Table6Row {
   MeasurementModel method;
-  Stat rmse;  ///< deg
-  Stat peak;  ///< deg
+  Stat rmse;                                                ///< deg
+  Stat peak;                                                ///< deg
   double paperRmse, paperRmseStd, paperPeak, paperPeakStd;  ///< the paper's Table 6 (deg)
 };
 

@@ -90,7 +90,8 @@ MultiJointResult runMultiJoint(FilterKind filter, bool kinect, std::uint64_t see
 TEST(MultiJoint, EkfWithKinectIsWithinOneDegreeOnEveryJoint) {
   for (std::uint64_t seed : {1u, 2u, 3u}) {
     const MultiJointResult r = runMultiJoint(FilterKind::Ekf, true, seed, 20.0);
-    for (int j = 0; j < kNumJoints; ++j) EXPECT_LE(r.rmse(j), 1.0) << "seed " << seed << " joint " << j;
+    for (int j = 0; j < kNumJoints; ++j)
+      EXPECT_LE(r.rmse(j), 1.0) << "seed " << seed << " joint " << j;
     EXPECT_FALSE(r.headingFromStartPoseOnly);
   }
 }

@@ -98,7 +98,9 @@ TEST(ArmModel, RecursionPositionsMatchTheTables) {
 // A smooth random joint trajectory with analytic derivatives.
 struct Wave {
   JointVector a, b, w, phi;
-  JointVector th(double t) const { return a + b.cwiseProduct((w * t + phi).array().sin().matrix()); }
+  JointVector th(double t) const {
+    return a + b.cwiseProduct((w * t + phi).array().sin().matrix());
+  }
   JointVector thd(double t) const {
     return b.cwiseProduct(w).cwiseProduct((w * t + phi).array().cos().matrix());
   }
@@ -118,8 +120,7 @@ auto d1(F f, double t, double h) {
 }
 template <typename F>
 auto d2(F f, double t, double h) {
-  return ((-f(t - 2 * h) + 16 * f(t - h) - 30 * f(t) + 16 * f(t + h) - f(t + 2 * h)) /
-          (12 * h * h))
+  return ((-f(t - 2 * h) + 16 * f(t - h) - 30 * f(t) + 16 * f(t + h) - f(t + 2 * h)) / (12 * h * h))
       .eval();
 }
 
@@ -188,8 +189,8 @@ TEST(ArmModel, PropagateHandlesLinkOffsets) {
   auto pos = [&](double s) -> Eigen::Vector3d { return pose(s).block<3, 1>(0, 3); };
   const double t = 0.37, hh = 1e-3;
   FrameState<double> f0;
-  const FrameState<double> f1 = propagateJoint<double>(f0, std::sin(2 * t), 0.0, 2 * std::cos(2 * t),
-                                                       -4 * std::sin(2 * t), 0.2, 0.4);
+  const FrameState<double> f1 = propagateJoint<double>(
+      f0, std::sin(2 * t), 0.0, 2 * std::cos(2 * t), -4 * std::sin(2 * t), 0.2, 0.4);
   const FrameState<double> f2 =
       propagateJoint<double>(f1, 1.5 * t * t, 0.0, 3 * t, 3.0, lambda, beta, delta);
   const Eigen::Vector3d ref = pose(t).topLeftCorner<3, 3>().transpose() * d2(pos, t, hh);

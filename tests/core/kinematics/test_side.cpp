@@ -89,16 +89,18 @@ TEST(Side, LeftImuReadingsMatchDifferentiatedLeftFrames) {
     if (s.t < 0.1 || s.t > 0.9 || std::fmod(s.t, 0.1) > 1e-9) continue;
     for (bool upper : {true, false}) {
       auto rot = [&](double t) -> Eigen::Matrix3d { return frame(t, upper).topLeftCorner<3, 3>(); };
-      auto pos = [&](double t) -> Eigen::Vector3d { return frame(t, upper).topRightCorner<3, 1>(); };
+      auto pos = [&](double t) -> Eigen::Vector3d {
+        return frame(t, upper).topRightCorner<3, 1>();
+      };
       const Eigen::Matrix3d r = rot(s.t);
       ASSERT_NEAR(r.determinant(), 1.0, 1e-12);
       const double t = s.t;
       const Eigen::Matrix3d rd =
           (rot(t - 2 * dt) - 8 * rot(t - dt) + 8 * rot(t + dt) - rot(t + 2 * dt)) / (12 * dt);
       const Eigen::Vector3d gyr = r.transpose() * vee(rd * r.transpose());
-      const Eigen::Vector3d pdd = (-pos(t - 2 * dt) + 16 * pos(t - dt) - 30 * pos(t) +
-                                   16 * pos(t + dt) - pos(t + 2 * dt)) /
-                                  (12 * dt * dt);
+      const Eigen::Vector3d pdd =
+          (-pos(t - 2 * dt) + 16 * pos(t - dt) - 30 * pos(t) + 16 * pos(t + dt) - pos(t + 2 * dt)) /
+          (12 * dt * dt);
       const Eigen::Vector3d acc = r.transpose() * (pdd + gUpLeft);
       const ImuReading& got = upper ? *s.upperArm : *s.forearm;
       EXPECT_LT((got.gyr - gyr).norm(), 1e-6) << "t = " << s.t << (upper ? " upper" : " forearm");
