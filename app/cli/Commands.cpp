@@ -17,6 +17,7 @@
 #include "app/cli/Estimate.h"
 #include "app/cli/Orientation.h"
 #include "app/cli/Text.h"
+#include "core/camera/PinholeCamera.h"
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
@@ -64,7 +65,13 @@ Options:
   --imu-rate HZ        rate of both IMUs (default 1000)
   --kinect-rate HZ     Kinect rate (default 30)
   --kinect-noise M     Kinect position noise std per axis, m (default 0.01)
-  --no-kinect          no optical rows
+  --no-kinect          no Kinect rows
+  --webcam             add webcam pixels of the wrist and elbow markers (camera block in the
+                       sidecar; 640x480, fx = fy = 600, mild barrel distortion)
+  --webcam-rate HZ     webcam frame rate (default 30)
+  --webcam-noise PX    marker pixel noise std (default 1)
+  --webcam-outliers P  probability a marker is mis-detected anywhere in the image (default 0)
+  --camera-distance M  camera distance in front of the shoulder, looking back (default 2)
   --side right|left    which arm (default right; a left arm is the right one mirrored)
   --gyro-noise RAD_S   gyroscope noise std, rad/s (default Table 5: sqrt(0.1) deg/s)
   --accel-noise M_S2   accelerometer noise std, m/s^2 (default Table 5: 0.1)
@@ -123,23 +130,17 @@ void noPositionals(const Args& a) {
 // ---------------------------------------------------------------------------------------------
 
 int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const Args a("simulate", args,
-               {{"--trajectory", true},
-                {"--out", true},
-                {"--duration", true},
-                {"--seed", true},
-                {"--imu-rate", true},
-                {"--kinect-rate", true},
-                {"--kinect-noise", true},
-                {"--no-kinect", false},
-                {"--side", true},
-                {"--gyro-noise", true},
-                {"--accel-noise", true},
-                {"--gyro-bias", true},
-                {"--misalignment", true},
-                {"--amplitude", true},
-                {"--frequency", true},
-                {"--wheel-period", true}});
+  const Args a("simulate", args, {{"--trajectory", true},      {"--out", true},
+                                  {"--duration", true},        {"--seed", true},
+                                  {"--imu-rate", true},        {"--kinect-rate", true},
+                                  {"--kinect-noise", true},    {"--no-kinect", false},
+                                  {"--webcam", false},         {"--webcam-rate", true},
+                                  {"--webcam-noise", true},    {"--webcam-outliers", true},
+                                  {"--camera-distance", true}, {"--side", true},
+                                  {"--gyro-noise", true},      {"--accel-noise", true},
+                                  {"--gyro-bias", true},       {"--misalignment", true},
+                                  {"--amplitude", true},       {"--frequency", true},
+                                  {"--wheel-period", true}});
   if (a.help()) {
     out << kSimulateHelp;
     return 0;
@@ -177,6 +178,17 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   sim.kinect.rateHz = a.positive("--kinect-rate", 30.0);
   sim.kinect.noiseStd = a.nonNegative("--kinect-noise", Table5::posStd());
+  sim.webcam.enabled = a.flag("--webcam");
+  sim.webcam.rateHz = a.positive("--webcam-rate", 30.0);
+  sim.webcam.noiseStdPx = a.nonNegative("--webcam-noise", 1.0);
+  sim.webcam.outlierProbability = a.nonNegative("--webcam-outliers", 0.0);
+  if (sim.webcam.outlierProbability > 1.0) a.fail("--webcam-outliers: expected a probability");
+  sim.webcam.camera = frontCamera(a.positive("--camera-distance", 2.0));
+  for (std::string_view o :
+       {"--webcam-rate", "--webcam-noise", "--webcam-outliers", "--camera-distance"}) {
+    if (a.flag(o) && !sim.webcam.enabled)
+      err << "warning: " << o << " only applies with --webcam; ignored\n";
+  }
 
   TrajectoryOptions traj;
   traj.seed = sim.seed;

@@ -5,16 +5,19 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
+
+#include "core/camera/PinholeCamera.h"
 
 namespace armtrack {
 namespace {
 
 // Independent noise streams per sensor, so that e.g. switching the Kinect on or off leaves the
 // IMU noise unchanged. Each is an mt19937_64 seeded from (seed, stream id).
-enum class NoiseStream : std::uint32_t { kUpperArm = 1, kForearm = 2, kKinect = 3 };
+enum class NoiseStream : std::uint32_t { kUpperArm = 1, kForearm = 2, kKinect = 3, kCamera = 4 };
 
 class Noise {
  public:
@@ -28,10 +31,12 @@ class Noise {
     const double x = m_normal(m_rng), y = m_normal(m_rng), z = m_normal(m_rng);
     return std * Eigen::Vector3d(x, y, z);
   }
+  double uniform() { return m_uniform(m_rng); }
 
  private:
   std::mt19937_64 m_rng;
   std::normal_distribution<double> m_normal{0.0, 1.0};
+  std::uniform_real_distribution<double> m_uniform{0.0, 1.0};
 };
 
 /// Sample times k / rate for k = 0 .. count-1, with t <= duration.
@@ -106,6 +111,7 @@ SimulationParams defaultSimulation() {
   p.kinect.enabled = true;
   p.kinect.rateHz = 30.0;
   p.kinect.noiseStd = Table5::posStd();
+  p.webcam.camera = frontCamera(2.0);
   return p;
 }
 
@@ -118,6 +124,18 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
       throw std::invalid_argument("simulateRecording: Kinect rate must be > 0");
     checkNonNegative(params.kinect.noiseStd, "Kinect noise std");
   }
+  const CameraSimParams& cam = params.webcam;
+  std::optional<PinholeCamera> camera;
+  if (cam.enabled) {
+    if (!(cam.rateHz > 0.0) || !std::isfinite(cam.rateHz))
+      throw std::invalid_argument("simulateRecording: webcam rate must be > 0");
+    checkNonNegative(cam.noiseStdPx, "webcam noise std");
+    if (!(cam.outlierProbability >= 0.0 && cam.outlierProbability <= 1.0))
+      throw std::invalid_argument("simulateRecording: outlier probability must be in [0, 1]");
+    if (cam.width <= 0 || cam.height <= 0)
+      throw std::invalid_argument("simulateRecording: webcam image size must be positive");
+    camera.emplace(cam.camera);  // throws on bad intrinsics or a non-rotation
+  }
   if (!std::isfinite(params.g) || std::abs(params.up.norm() - 1.0) > 1e-6)
     throw std::invalid_argument("simulateRecording: up must be a unit vector and g finite");
 
@@ -126,6 +144,7 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
   rec.meta.up = params.up;
   rec.meta.g = params.g;
   rec.meta.side = params.side;
+  if (camera) rec.meta.camera = cam.camera;
   const bool left = params.side == Side::Left;
 
   const ImuSimParams& up = params.upperArm;
@@ -135,23 +154,41 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
   Clock upperClock = makeClock(up.enabled, up.rateHz, params.duration);
   Clock forearmClock = makeClock(fa.enabled && !shared, fa.rateHz, params.duration);
   Clock kinectClock = makeClock(params.kinect.enabled, params.kinect.rateHz, params.duration);
-  rec.samples.reserve(upperClock.count + forearmClock.count + kinectClock.count);
+  Clock cameraClock = makeClock(cam.enabled, cam.rateHz, params.duration);
+  rec.samples.reserve(upperClock.count + forearmClock.count + kinectClock.count +
+                      cameraClock.count);
 
   Noise upperNoise(params.seed, NoiseStream::kUpperArm);
   Noise forearmNoise(params.seed, NoiseStream::kForearm);
   Noise kinectNoise(params.seed, NoiseStream::kKinect);
+  Noise cameraNoise(params.seed, NoiseStream::kCamera);
+  // One marker's pixel: the projection plus noise, a uniform outlier, or nothing when the marker
+  // is outside the image. The draws are made every time, so the stream does not depend on
+  // visibility.
+  auto markerPixel = [&](const Eigen::Vector3d& p) -> std::optional<Eigen::Vector2d> {
+    const Eigen::Vector3d n = cameraNoise.vec3(cam.noiseStdPx);
+    const double pick = cameraNoise.uniform();
+    const Eigen::Vector2d anywhere(cameraNoise.uniform() * cam.width,
+                                   cameraNoise.uniform() * cam.height);
+    Eigen::Vector2d px;
+    if (!camera->project(p, px)) return std::nullopt;
+    if (px.x() < 0 || px.y() < 0 || px.x() > cam.width || px.y() > cam.height) return std::nullopt;
+    if (pick < cam.outlierProbability) return anywhere;
+    return px + n.head<2>();
+  };
   // A left arm is simulated as its right-arm mirror image, then mirrored back sample by sample.
   const Eigen::Vector3d gUp = params.g * (left ? mirrorPoint(params.up) : params.up);
 
   // Merge the clocks: each row is the earliest pending time; every clock due at exactly that time
   // contributes to the same row.
   for (;;) {
-    const double t =
-        std::min({upperClock.nextTime(), forearmClock.nextTime(), kinectClock.nextTime()});
+    const double t = std::min({upperClock.nextTime(), forearmClock.nextTime(),
+                               kinectClock.nextTime(), cameraClock.nextTime()});
     if (!std::isfinite(t)) break;
     const bool upperDue = upperClock.nextTime() == t;
     const bool forearmDue = shared ? upperDue : forearmClock.nextTime() == t;
     const bool kinectDue = kinectClock.nextTime() == t;
+    const bool cameraDue = cameraClock.nextTime() == t;
 
     const JointMotion m = trajectory.at(t);
     const ArmPrediction ideal = predictSensors(params.geometry, m.th, m.thd, m.thdd, gUp);
@@ -176,6 +213,14 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
       s.trueAngles = truth;
     }
     if (left) s = mirrorSample(s);
+    if (cameraDue) {
+      // The camera sees the real arm: a left arm's points in its own shoulder frame.
+      const Eigen::Vector3d wrist = left ? mirrorPoint(ideal.wrist) : ideal.wrist;
+      const Eigen::Vector3d elbow = left ? mirrorPoint(ideal.elbow) : ideal.elbow;
+      if (cam.wrist) s.camWrist = markerPixel(wrist);
+      if (cam.elbow) s.camElbow = markerPixel(elbow);
+      ++cameraClock.next;
+    }
   }
   return rec;
 }

@@ -33,6 +33,21 @@ struct OpticalSimParams {
   double noiseStd = 0.01;  ///< per axis, m
 };
 
+/// A webcam tracking coloured markers on the elbow and the wrist (Tao & Hu): pixel positions
+/// through the pinhole model of core/camera. A marker that projects outside the image or behind
+/// the camera is absent from that frame.
+struct CameraSimParams {
+  bool enabled = false;
+  double rateHz = 30.0;
+  double noiseStdPx = 1.0;          ///< per pixel axis
+  CameraParams camera;              ///< intrinsics, distortion and pose; frontCamera(2) by default
+  int width = 640, height = 480;    ///< image size (pixels); markers outside are dropped
+  bool wrist = true, elbow = true;  ///< which markers are tracked
+  /// Probability that a marker is mis-detected: its pixel is then drawn uniformly over the image
+  /// (to exercise innovation gating).
+  double outlierProbability = 0.0;
+};
+
 struct SimulationParams {
   double duration = 10.0;  ///< s
   ArmGeometry geometry;    ///< the true arm (may differ from what a filter assumes)
@@ -41,6 +56,7 @@ struct SimulationParams {
   ImuSimParams upperArm;
   ImuSimParams forearm;
   OpticalSimParams kinect;
+  CameraSimParams webcam;  ///< off by default
   std::uint64_t seed = 1;
   bool includeTruth = true;  ///< fill ArmSample::trueAngles on IMU rows
   /// Which arm. A left arm is the mirror image of the right one (core/kinematics/Side.h): its
@@ -48,11 +64,13 @@ struct SimulationParams {
   Side side = Side::Right;
 };
 
-/// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise.
+/// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise; the webcam is off
+/// (frontCamera(2), 30 Hz, 1 px noise when switched on).
 SimulationParams defaultSimulation();
 
 /// Returns a recording: one row per IMU sample (both IMUs share the IMU clock when their rates
-/// are equal), Kinect rows at their own times, merged in time order. Deterministic given seed.
+/// are equal), Kinect and webcam rows at their own times, merged in time order. With the webcam
+/// on, the sidecar carries its camera block. Deterministic given seed.
 /// Sample times are k / rate while t <= duration; rows at the same instant are merged. Each
 /// sensor has its own noise stream, so enabling one sensor does not change another's noise.
 /// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading. Throws
