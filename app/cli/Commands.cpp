@@ -92,7 +92,9 @@ Options:
   --filter ekf|ukf         filter (default ekf)
   --method A|B|C|inclinometer
                            IMU measurement model (default A)
-  --no-kinect              ignore the optical elbow/wrist positions
+  --no-kinect              ignore the Kinect's elbow/wrist positions
+  --no-webcam              ignore the webcam's marker pixels (used when the sidecar has a
+                           camera block)
   --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
   --out FILE               write the angles here (default: statistics only)
 )";
@@ -226,6 +228,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                {{"--filter", true},
                 {"--method", true},
                 {"--no-kinect", false},
+                {"--no-webcam", false},
                 {"--joint-accel-std", true},
                 {"--out", true}});
   if (a.help()) {
@@ -246,6 +249,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     }
   }
   opt.useOptical = !a.flag("--no-kinect");
+  opt.useCamera = !a.flag("--no-webcam");
   if (a.flag("--joint-accel-std")) opt.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
   std::optional<fs::path> outPath;
   if (a.flag("--out")) {
@@ -285,6 +289,10 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     err << "filter: rejected non-finite " << c.rejectedNonFinite << ", rejected time "
         << c.rejectedTime << ", restarts " << c.restarts << ", skipped updates " << c.skippedUpdates
         << "\n";
+  }
+  if (c.cameraUpdates || c.rejectedOutliers || c.cameraNotVisible) {
+    err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << c.rejectedOutliers
+        << " gated as outliers, " << c.cameraNotVisible << " with the marker predicted out of view\n";
   }
   if (st.truthCount == 0 && st.opticalUsed)
     err << "estimate: no true angles in the recording, so no error statistics\n";

@@ -28,6 +28,8 @@ EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& opt
   p.gUp = meta.gUp();
   p.side = meta.side;
   p.useOptical = options.useOptical;
+  p.camera = meta.camera;
+  p.useCamera = options.useCamera;
   if (options.jointAccelStdDeg) {
     const double s = *options.jointAccelStdDeg * kDeg;
     p.jointAccelVariance = s * s;
@@ -92,7 +94,7 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
   }
 
   st.counters = filter->counters();
-  st.opticalUsed = st.counters.opticalUpdates > 0;
+  st.opticalUsed = st.counters.opticalUpdates > 0 || st.counters.cameraUpdates > 0;
   st.truthCount = all.count();
   st.rmseDeg = all.rmse() / kDeg;
   st.peakDeg = all.peak() / kDeg;

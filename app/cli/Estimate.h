@@ -17,7 +17,8 @@ namespace armtrack::cli {
 struct EstimateOptions {
   FilterKind filter = FilterKind::Ekf;
   MeasurementModel model = MeasurementModel::AccelGyro;
-  bool useOptical = true;
+  bool useOptical = true;  ///< fuse Kinect positions
+  bool useCamera = true;   ///< fuse webcam marker pixels (when the sidecar has a camera)
   std::optional<double> jointAccelStdDeg;  ///< deg/s^2; empty keeps the library default
 };
 

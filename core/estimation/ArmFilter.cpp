@@ -8,6 +8,7 @@
 #include <unsupported/Eigen/AutoDiff>
 
 #include "core/Strings.h"
+#include "core/camera/PinholeCamera.h"
 #include "core/estimation/Initializer.h"
 
 namespace armtrack {
@@ -92,33 +93,84 @@ Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>&
 namespace {
 
 constexpr int kBase = 15;
-constexpr int kMaxRows = 18;
+constexpr int kModelRows = 18;            // the six 3-row blocks of eq. 16
+constexpr int kMaxRows = kModelRows + 4;  // plus two 2-row marker pixels
 using Vec15 = Eigen::Matrix<double, kBase, 1>;
 using AD = Eigen::AutoDiffScalar<Vec15>;
 
-// Measurement blocks in the order of eq. 16 (gyros and accelerometers per IMU, then optics).
-enum Block { kUaGyr = 0, kUaAcc, kFaGyr, kFaAcc, kElbow, kWrist, kNumBlocks };
+// Measurement blocks in the order of eq. 16 (gyros and accelerometers per IMU, then optics),
+// then the webcam's marker pixels.
+enum Block { kUaGyr = 0, kUaAcc, kFaGyr, kFaAcc, kElbow, kWrist, kCamWrist, kCamElbow, kNumBlocks };
 
+constexpr bool isCamera(int b) {
+  return b == kCamWrist || b == kCamElbow;
+}
+constexpr bool isOptical(int b) {
+  return b == kElbow || b == kWrist || isCamera(b);
+}
+
+// The blocks present in one update: 3 rows for IMU and Kinect blocks, 2 for marker pixels.
 struct BlockList {
   std::array<int, kNumBlocks> block{};
+  std::array<int, kNumBlocks> offset{};
+  std::array<int, kNumBlocks> size{};
   int count = 0;
   Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> z;
   Eigen::Matrix<double, Eigen::Dynamic, 1, 0, kMaxRows, 1> variance;  // diagonal of R
-  int rows() const { return 3 * count; }
-  void add(int b, const Eigen::Vector3d& value, double var) {
-    block[count++] = b;
+  int rows() const { return static_cast<int>(z.size()); }
+  template <int M>
+  void add(int b, const Eigen::Matrix<double, M, 1>& value, double var) {
     const auto n = z.size();
-    z.conservativeResize(n + 3);
-    variance.conservativeResize(n + 3);
-    z.segment<3>(n) = value;
-    variance.segment<3>(n).setConstant(var);
+    block[count] = b;
+    offset[count] = static_cast<int>(n);
+    size[count++] = M;
+    z.conservativeResize(n + M);
+    variance.conservativeResize(n + M);
+    z.template segment<M>(n) = value;
+    variance.template segment<M>(n).setConstant(var);
+  }
+  bool has(int b) const {
+    for (int i = 0; i < count; ++i)
+      if (block[i] == b) return true;
+    return false;
+  }
+  bool anyOptical() const {
+    for (int i = 0; i < count; ++i)
+      if (isOptical(block[i])) return true;
+    return false;
+  }
+  // A copy without block i.
+  BlockList without(int i) const {
+    BlockList out;
+    for (int k = 0; k < count; ++k) {
+      if (k == i) continue;
+      if (size[k] == 3)
+        out.add<3>(block[k], z.segment<3>(offset[k]), variance(offset[k]));
+      else
+        out.add<2>(block[k], z.segment<2>(offset[k]), variance(offset[k]));
+    }
+    return out;
   }
 };
+
+// A marker's pixel from its predicted position p (right-arm frame) and dp/dx: the camera sees the
+// real arm, which for a left arm is the mirror image of the one the filter works on.
+bool markerPixel(const PinholeCamera& camera, bool left, const Eigen::Vector3d& p,
+                 const Eigen::Matrix<double, 3, kBase>* dp, Eigen::Vector2d& pixel,
+                 Eigen::Matrix<double, 2, kBase>* jac) {
+  const Eigen::Vector3d real = left ? mirrorPoint(p) : p;
+  if (!jac) return camera.project(real, pixel);
+  Eigen::Matrix<double, 2, 3> dPixel;
+  if (!camera.project(real, pixel, dPixel)) return false;
+  if (left) dPixel.col(2) = -dPixel.col(2);
+  *jac = dPixel * *dp;
+  return true;
+}
 
 // Predicted readings of all six blocks for the 15-state base, templated for AutoDiff.
 template <typename T>
 void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
-                 Eigen::Matrix<T, kMaxRows, 1>& out) {
+                 Eigen::Matrix<T, kModelRows, 1>& out) {
   const Eigen::Matrix<T, 5, 1> thdd = x.template segment<5>(0);
   const Eigen::Matrix<T, 5, 1> thd = x.template segment<5>(5);
   const Eigen::Matrix<T, 5, 1> th = x.template segment<5>(10);
@@ -135,13 +187,13 @@ void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
 }
 
 void predictBaseWithJacobian(const EstimatorParams& p, const Vec15& x,
-                             Eigen::Matrix<double, kMaxRows, 1>& h,
-                             Eigen::Matrix<double, kMaxRows, kBase>& jac) {
+                             Eigen::Matrix<double, kModelRows, 1>& h,
+                             Eigen::Matrix<double, kModelRows, kBase>& jac) {
   Eigen::Matrix<AD, kBase, 1> xa;
   for (int i = 0; i < kBase; ++i) xa(i) = AD(x(i), kBase, i);
-  Eigen::Matrix<AD, kMaxRows, 1> out;
+  Eigen::Matrix<AD, kModelRows, 1> out;
   predictBase<AD>(p, xa, out);
-  for (int i = 0; i < kMaxRows; ++i) {
+  for (int i = 0; i < kModelRows; ++i) {
     h(i) = out(i).value();
     jac.row(i) = out(i).derivatives().transpose();
   }
@@ -159,6 +211,7 @@ class ArmFilter final : public JointEstimator {
   static constexpr bool kAugmented = N > kBase;
 
   explicit ArmFilter(const EstimatorParams& p) : m_p(mirrored(p)), m_up(m_p.gUp.normalized()) {
+    if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);  // throws on a bad camera
     reset();
   }
 
@@ -177,6 +230,7 @@ class ArmFilter final : public JointEstimator {
     m_lastSeenT = -std::numeric_limits<double>::infinity();
     m_lastOpticalT = -std::numeric_limits<double>::infinity();
     m_pendingOptical.reset();
+    m_gatedInARow = {0, 0};
     m_counters = {};
   }
 
@@ -213,7 +267,7 @@ class ArmFilter final : public JointEstimator {
 
     ArmSample clean = sanitise(m_p.side == Side::Left ? mirrorSample(s) : s);
     const bool hasImu = clean.upperArm || clean.forearm;
-    const bool hasOptical = clean.elbow || clean.wrist;
+    const bool hasOptical = clean.elbow || clean.wrist || clean.camWrist || clean.camElbow;
     if (!hasImu && !hasOptical) return UpdateResult::Rejected;
 
     if (m_initialised && s.t - m_t > m_p.maxGap) {
@@ -229,30 +283,57 @@ class ArmFilter final : public JointEstimator {
       return UpdateResult::Initialised;
     }
 
+    const Vec xPrior = m_x;
+    const Mat pPrior = m_P;
+    const double tPrior = m_t, floorPrior = m_headingFloor;
     predict(s.t - m_t);
     m_t = s.t;
     BlockList blocks = gather(clean);
-    if (blocks.count == 0) return UpdateResult::Rejected;
-    if (hasOptical) {
-      m_lastOpticalT = s.t;
-      m_counters.opticalUpdates += static_cast<std::uint64_t>(clean.elbow.has_value()) +
-                                   static_cast<std::uint64_t>(clean.wrist.has_value());
-    }
     const Vec xBefore = m_x;
     const Mat pBefore = m_P;
-    if (hasOptical) beforeOpticalUpdate();
+    const bool optical = blocks.anyOptical();
+    if (optical) beforeOpticalUpdate();
+    if (!gateCamera(blocks) || blocks.count == 0) {
+      // Nothing left to fuse (e.g. a single mis-detected marker): the sample changes nothing.
+      m_x = xPrior;
+      m_P = pPrior;
+      m_t = tPrior;
+      m_headingFloor = floorPrior;
+      return UpdateResult::Rejected;
+    }
     // Both filters start with the iterated EKF update: a UKF's sigma points spread over the
     // start-up uncertainty (tens of degrees) wrap around and lose the arm.
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
-    const bool ok =
-        m_p.filter == FilterKind::Ekf || startup ? ekfUpdate(blocks) : ukfUpdate(blocks);
+    bool ok = false;
+    if (m_p.filter == FilterKind::Ekf || startup) {
+      ok = ekfUpdate(blocks);
+    } else {
+      bool sigmaOutOfView = false;
+      ok = ukfUpdate(blocks, sigmaOutOfView);
+      // A sigma point the camera cannot see has no pixel: linearise instead for this sample.
+      if (!ok && sigmaOutOfView) {
+        m_x = xBefore;
+        m_P = pBefore;
+        if (optical) beforeOpticalUpdate();
+        ok = ekfUpdate(blocks);
+      }
+    }
     if (!ok || !m_x.allFinite() || !m_P.allFinite()) {
       m_x = xBefore;
       m_P = pBefore;
       ++m_counters.skippedUpdates;
       return UpdateResult::Rejected;
     }
-    afterUpdate(hasOptical);
+    if (blocks.anyOptical()) {
+      m_lastOpticalT = s.t;
+      for (int i = 0; i < blocks.count; ++i) {
+        if (isCamera(blocks.block[i]))
+          ++m_counters.cameraUpdates;
+        else if (isOptical(blocks.block[i]))
+          ++m_counters.opticalUpdates;
+      }
+    }
+    afterUpdate(blocks.anyOptical());
     finishUpdate();
     return UpdateResult::Accepted;
   }
@@ -278,6 +359,14 @@ class ArmFilter final : public JointEstimator {
     if (imuOk(s.forearm)) c.forearm = s.forearm;
     if (posOk(s.elbow)) c.elbow = s.elbow;
     if (posOk(s.wrist)) c.wrist = s.wrist;
+    auto pixelOk = [&](const std::optional<Eigen::Vector2d>& px) {
+      if (!px || !m_camera) return false;
+      if (px->allFinite()) return true;
+      ++m_counters.rejectedNonFinite;
+      return false;
+    };
+    if (pixelOk(s.camWrist)) c.camWrist = s.camWrist;
+    if (pixelOk(s.camElbow)) c.camElbow = s.camElbow;
     return c;
   }
 
@@ -297,7 +386,65 @@ class ArmFilter final : public JointEstimator {
     }
     if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance);
     if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance);
+    if (s.camWrist) b.add(kCamWrist, *s.camWrist, m_p.pixelVariance);
+    if (s.camElbow) b.add(kCamElbow, *s.camElbow, m_p.pixelVariance);
     return b;
+  }
+
+  // Innovation gating of the marker pixels at the predicted state (a mis-detected marker lands
+  // far from where the arm can be). Gated and unseeable pixels are removed from b and counted.
+  // Start-up is not gated: the first pose may be far off and the pixels are what corrects it.
+  // Returns false when the state could not be linearised.
+  bool gateCamera(BlockList& b) {
+    if (!m_camera) return true;
+    const bool startup = m_t - m_t0 < m_p.startupSeconds;
+    for (int i = b.count - 1; i >= 0; --i) {
+      const int blk = b.block[i];
+      if (!isCamera(blk)) continue;
+      Eigen::Vector2d px;
+      Eigen::Matrix<double, 2, kBase> jac;
+      if (!predictPixel(m_x.template head<kBase>(), blk, px, &jac)) {
+        ++m_counters.cameraNotVisible;
+        b = b.without(i);
+        continue;
+      }
+      int& inARow = m_gatedInARow[blk == kCamWrist ? 0 : 1];
+      if (startup || inARow >= m_p.pixelGateResetFrames) {
+        inARow = 0;
+        continue;
+      }
+      const Eigen::Vector2d r = b.z.template segment<2>(b.offset[i]) - px;
+      Eigen::Matrix2d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+      sm.diagonal().array() += m_p.pixelVariance;
+      const Eigen::LLT<Eigen::Matrix2d> llt(sm);
+      if (llt.info() != Eigen::Success) return false;
+      const double d2 = r.dot(llt.solve(r));
+      if (d2 > m_p.pixelGate) {
+        ++m_counters.rejectedOutliers;
+        ++inARow;
+        b = b.without(i);
+      } else {
+        inARow = 0;
+      }
+    }
+    return true;
+  }
+
+  // A marker pixel predicted from a 15-state: the marker's position block, then the camera.
+  bool predictPixel(const Vec15& base, int blk, Eigen::Vector2d& px,
+                    Eigen::Matrix<double, 2, kBase>* jac) const {
+    const int posBlock = blk == kCamWrist ? kWrist : kElbow;
+    Eigen::Matrix<double, kModelRows, 1> all;
+    if (!jac) {
+      predictBase<double>(m_p, base, all);
+      return markerPixel(*m_camera, m_p.side == Side::Left, all.segment<3>(3 * posBlock), nullptr,
+                         px, nullptr);
+    }
+    Eigen::Matrix<double, kModelRows, kBase> allJac;
+    predictBaseWithJacobian(m_p, base, all, allJac);
+    const Eigen::Matrix<double, 3, kBase> dp = allJac.middleRows<3>(3 * posBlock);
+    return markerPixel(*m_camera, m_p.side == Side::Left, all.segment<3>(3 * posBlock), &dp, px,
+                       jac);
   }
 
   void initialise(const ArmSample& s) {
@@ -306,6 +453,8 @@ class ArmFilter final : public JointEstimator {
     if (m_pendingOptical && s.t - m_pendingOptical->t <= kOpticalWindow) {
       if (!first.elbow) first.elbow = m_pendingOptical->elbow;
       if (!first.wrist) first.wrist = m_pendingOptical->wrist;
+      if (!first.camWrist) first.camWrist = m_pendingOptical->camWrist;
+      if (!first.camElbow) first.camElbow = m_pendingOptical->camElbow;
     }
     m_pendingOptical.reset();
     const InitialPose pose = initialPose(m_p, first);
@@ -313,7 +462,9 @@ class ArmFilter final : public JointEstimator {
     m_x.template segment<5>(5) = pose.thd;
     m_x.template segment<5>(10) = pose.th;
     m_P.setZero();
-    const bool optical = first.elbow || first.wrist;
+    // Two marker pixels pin the arm like two positions do (up to the depth along each ray, which
+    // the arm's lengths fix); one pixel alone does not.
+    const bool optical = (first.elbow || first.wrist) || (first.camWrist && first.camElbow);
     const double angleStd = optical ? m_p.initialAngleStdOptical : m_p.initialAngleStd;
     for (int j = 0; j < kNumJoints; ++j) {
       m_P(j, j) = m_p.initialAccelStd * m_p.initialAccelStd;
@@ -373,10 +524,11 @@ class ArmFilter final : public JointEstimator {
     }
   }
 
-  // Predicted measurement (and Jacobian) for the present blocks at state x.
-  void measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const {
-    Eigen::Matrix<double, kMaxRows, 1> all;
-    Eigen::Matrix<double, kMaxRows, kBase> allJac;
+  // Predicted measurement (and Jacobian) for the present blocks at state x. Returns false when a
+  // marker is out of the camera's view at x.
+  bool measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const {
+    Eigen::Matrix<double, kModelRows, 1> all;
+    Eigen::Matrix<double, kModelRows, kBase> allJac;
     const Vec15 base = x.template head<kBase>();
     if (jac)
       predictBaseWithJacobian(m_p, base, all, allJac);
@@ -389,40 +541,66 @@ class ArmFilter final : public JointEstimator {
     }
     for (int i = 0; i < b.count; ++i) {
       const int blk = b.block[i];
-      h.template segment<3>(3 * i) = all.template segment<3>(3 * blk);
-      if (jac) jac->template block<3, kBase>(3 * i, 0) = allJac.template middleRows<3>(3 * blk);
+      const int row = b.offset[i];
+      if (isCamera(blk)) {
+        const int posBlock = blk == kCamWrist ? kWrist : kElbow;
+        Eigen::Vector2d px;
+        Eigen::Matrix<double, 2, kBase> pxJac;
+        Eigen::Matrix<double, 3, kBase> dp;
+        if (jac) dp = allJac.template middleRows<3>(3 * posBlock);
+        if (!markerPixel(*m_camera, m_p.side == Side::Left, all.template segment<3>(3 * posBlock),
+                         jac ? &dp : nullptr, px, jac ? &pxJac : nullptr))
+          return false;
+        h.template segment<2>(row) = px;
+        if (jac) jac->template block<2, kBase>(row, 0) = pxJac;
+        continue;
+      }
+      h.template segment<3>(row) = all.template segment<3>(3 * blk);
+      if (jac) jac->template block<3, kBase>(row, 0) = allJac.template middleRows<3>(3 * blk);
       if constexpr (kAugmented) {
         // Method B: the accelerometer also reads the augmented body-acceleration state.
         if (blk == kUaAcc || blk == kFaAcc) {
           const int off = kBase + (blk == kUaAcc ? 0 : 3);
-          h.template segment<3>(3 * i) += x.template segment<3>(off);
-          if (jac) jac->template block<3, 3>(3 * i, off).setIdentity();
+          h.template segment<3>(row) += x.template segment<3>(off);
+          if (jac) jac->template block<3, 3>(row, off).setIdentity();
         }
       }
     }
+    return true;
   }
 
-  // The Kalman update for a given linearisation, one 3-row block at a time. R is block-diagonal,
-  // so this equals the batch update exactly, at a third of the cost: per block a 3x3 Cholesky
+  // The Kalman update for a given linearisation, one block at a time. R is block-diagonal, so
+  // this equals the batch update exactly, at a third of the cost: per block an MxM Cholesky
   // factor L of S = H P H^T + R, the gain applied to the innovation left by the blocks before,
-  // and the symmetric rank-3 downdate P -= V^T V with V = L^-1 H P, which keeps P symmetric.
+  // and the symmetric rank-M downdate P -= V^T V with V = L^-1 H P, which keeps P symmetric.
   // Returns false when some S is not positive definite.
   bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p,
                         Vec& dx) const {
     dx.setZero();
     for (int i = 0; i < b.count; ++i) {
-      const Eigen::Matrix<double, 3, N> hj = jac.template middleRows<3>(3 * i);
-      // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
-      const Eigen::Matrix<double, 3, N> w = hj.lazyProduct(p);
-      Eigen::Matrix3d sj = w.lazyProduct(hj.transpose());
-      sj.diagonal() += b.variance.template segment<3>(3 * i);
-      const Eigen::LLT<Eigen::Matrix3d> llt(sj);
-      if (llt.info() != Eigen::Success) return false;
-      const Eigen::Vector3d r = innov.template segment<3>(3 * i) - hj * dx;
-      dx.noalias() += w.transpose() * llt.solve(r);
-      const Eigen::Matrix<double, 3, N> v = llt.matrixL().solve(w);
-      p.noalias() -= v.transpose().lazyProduct(v);
+      const bool ok = b.size[i] == 3 ? blockUpdate<3>(jac, innov, b, i, p, dx)
+                                     : blockUpdate<2>(jac, innov, b, i, p, dx);
+      if (!ok) return false;
     }
+    return true;
+  }
+
+  template <int M>
+  bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i, Mat& p,
+                   Vec& dx) const {
+    using SMat = Eigen::Matrix<double, M, M>;
+    const int row = b.offset[i];
+    const Eigen::Matrix<double, M, N> hj = jac.template middleRows<M>(row);
+    // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
+    const Eigen::Matrix<double, M, N> w = hj.lazyProduct(p);
+    SMat sj = w.lazyProduct(hj.transpose());
+    sj.diagonal() += b.variance.template segment<M>(row);
+    const Eigen::LLT<SMat> llt(sj);
+    if (llt.info() != Eigen::Success) return false;
+    const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
+    dx.noalias() += w.transpose() * llt.solve(r);
+    const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
+    p.noalias() -= v.transpose().lazyProduct(v);
     return true;
   }
 
@@ -434,7 +612,7 @@ class ArmFilter final : public JointEstimator {
     Jac jac;
     Mat p;
     for (int it = 0; it < iterations; ++it) {
-      measure(xi, b, h, &jac);
+      if (!measure(xi, b, h, &jac)) return false;
       projectHeading(xi, b, jac);
       // Gauss-Newton step of the iterated EKF, from the prior each time; one iteration is the
       // plain EKF.
@@ -451,7 +629,7 @@ class ArmFilter final : public JointEstimator {
     return true;
   }
 
-  bool ukfUpdate(const BlockList& b) {
+  bool ukfUpdate(const BlockList& b, bool& outOfView) {
     // Scaled unscented transform, alpha = 1, beta = 2, kappa = 0: positive weights 1/(2N).
     constexpr int kPoints = 2 * N + 1;
     Eigen::LLT<Mat> llt(static_cast<double>(N) * m_P);
@@ -464,13 +642,18 @@ class ArmFilter final : public JointEstimator {
     const int m = b.rows();
     Eigen::Matrix<double, Eigen::Dynamic, kPoints, 0, kMaxRows, kPoints> z(m, kPoints);
     MeasVec h;
-    measure(m_x, b, h, nullptr);
-    z.col(0) = h;
-    for (int i = 0; i < N; ++i) {
-      measure(m_x + l.col(i), b, h, nullptr);
-      z.col(1 + i) = h;
-      measure(m_x - l.col(i), b, h, nullptr);
-      z.col(1 + N + i) = h;
+    outOfView = false;
+    auto sigma = [&](const Vec& x, int col) {
+      if (!measure(x, b, h, nullptr)) return false;
+      z.col(col) = h;
+      return true;
+    };
+    bool seen = sigma(m_x, 0);
+    for (int i = 0; i < N && seen; ++i)
+      seen = sigma(m_x + l.col(i), 1 + i) && sigma(m_x - l.col(i), 1 + N + i);
+    if (!seen) {
+      outOfView = true;
+      return false;
     }
     const double w = 1.0 / (2.0 * N);
     const double w0c = 2.0;
@@ -512,8 +695,8 @@ class ArmFilter final : public JointEstimator {
     if (vv <= 0.0) return false;
     bool changed = false;
     for (int i = 0; i < b.count; ++i) {
-      if (b.block[i] == kElbow || b.block[i] == kWrist) continue;
-      auto rows = jac.template middleRows<3>(3 * i);
+      if (isOptical(b.block[i])) continue;
+      auto rows = jac.template middleRows<3>(b.offset[i]);
       const Eigen::Vector3d hv = rows * v;
       rows -= hv * v.transpose() / vv;
       changed = true;
@@ -590,6 +773,8 @@ class ArmFilter final : public JointEstimator {
   double m_lastOpticalT = 0.0;
   double m_headingFloor = 0.0;  // least variance along the heading while IMU-only (rad^2)
   std::optional<ArmSample> m_pendingOptical;
+  std::optional<PinholeCamera> m_camera;   // when params carry a camera and useCamera is set
+  std::array<int, 2> m_gatedInARow{0, 0};  // consecutive gated frames: wrist, elbow marker
   EstimatorCounters m_counters;
 };
 
@@ -616,17 +801,29 @@ BatchResult estimateSamples(const std::vector<ArmSample>& samples, const Estimat
 
 Eigen::Matrix<double, 18, 1> predictAll(const EstimatorParams& params,
                                         const Eigen::Matrix<double, 15, 1>& x) {
-  Eigen::Matrix<double, kMaxRows, 1> out;
+  Eigen::Matrix<double, kModelRows, 1> out;
   predictBase<double>(params, x, out);
   return out;
 }
 
 Eigen::Matrix<double, 18, 15> predictAllJacobian(const EstimatorParams& params,
                                                  const Eigen::Matrix<double, 15, 1>& x) {
-  Eigen::Matrix<double, kMaxRows, 1> h;
-  Eigen::Matrix<double, kMaxRows, kBase> jac;
+  Eigen::Matrix<double, kModelRows, 1> h;
+  Eigen::Matrix<double, kModelRows, kBase> jac;
   predictBaseWithJacobian(params, x, h, jac);
   return jac;
+}
+
+bool predictMarkerPixel(const EstimatorParams& params, const Eigen::Matrix<double, 15, 1>& x,
+                        bool wrist, Eigen::Vector2d& pixel, Eigen::Matrix<double, 2, 15>* jac) {
+  if (!params.camera) return false;
+  const PinholeCamera camera(*params.camera);
+  const int block = wrist ? kWrist : kElbow;
+  Eigen::Matrix<double, kModelRows, 1> h;
+  Eigen::Matrix<double, kModelRows, kBase> all;
+  predictBaseWithJacobian(params, x, h, all);
+  const Eigen::Matrix<double, 3, kBase> dp = all.middleRows<3>(3 * block);
+  return markerPixel(camera, params.side == Side::Left, h.segment<3>(3 * block), &dp, pixel, jac);
 }
 
 }  // namespace armtrack

@@ -10,10 +10,12 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
 
@@ -64,7 +66,20 @@ struct EstimatorParams {
   double bodyAccelVariance = 1.0;
   double bodyAccelCorrelationTime = 0.1;
 
-  bool useOptical = true;  ///< fuse elbow/wrist positions when a sample carries them
+  bool useOptical = true;  ///< fuse Kinect elbow/wrist positions when a sample carries them
+
+  /// Webcam: the camera that sees the wrist and elbow markers (the recording's `camera` block).
+  /// Without it, marker pixels are ignored.
+  std::optional<CameraParams> camera;
+  bool useCamera = true;       ///< fuse marker pixels when a sample carries them
+  double pixelVariance = 1.0;  ///< px^2 per image axis (1 px noise)
+  /// Innovation gate for marker pixels: a pixel whose squared Mahalanobis distance exceeds this
+  /// (chi-square, 2 degrees of freedom; 13.8 leaves out 0.1 % of good detections) is taken for a
+  /// mis-detected marker, dropped and counted. Not applied during start-up.
+  double pixelGate = 13.8;
+  /// After this many gated frames in a row for one marker the next one is fused ungated: the
+  /// filter, not the detector, is then the likelier one to be lost.
+  int pixelGateResetFrames = 15;
   /// Joints the filter estimates; inactive joints stay at fixedAngles (the paper's one-segment
   /// studies estimate th0 only).
   std::array<bool, kNumJoints> activeJoints{true, true, true, true, true};
@@ -110,7 +125,10 @@ struct EstimatorCounters {
   std::uint64_t skippedUpdates = 0;     ///< updates skipped: innovation covariance not invertible
   std::uint64_t covarianceRepairs = 0;  ///< covariance re-symmetrised / jittered to stay PD
   std::uint64_t restarts = 0;           ///< restarts after a gap longer than maxGap
-  std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused
+  std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused (Kinect)
+  std::uint64_t cameraUpdates = 0;      ///< marker pixels fused (webcam)
+  std::uint64_t rejectedOutliers = 0;   ///< marker pixels dropped by the innovation gate
+  std::uint64_t cameraNotVisible = 0;   ///< marker pixels dropped: predicted point not in view
 };
 
 enum class UpdateResult {
@@ -129,8 +147,9 @@ class JointEstimator {
   virtual bool initialised() const = 0;
   virtual JointEstimate estimate() const = 0;
   virtual const EstimatorCounters& counters() const = 0;
-  /// True while no optical position has been fused for headingMemory seconds: the arm's heading
-  /// about the vertical then rests on the start-pose assumption alone.
+  /// True while no optical measurement (Kinect position or marker pixel) has been fused for
+  /// headingMemory seconds: the arm's heading about the vertical then rests on the start-pose
+  /// assumption alone.
   virtual bool headingFromStartPoseOnly() const = 0;
   virtual void reset() = 0;
   /// Full state covariance (for tests and diagnostics).
@@ -164,5 +183,13 @@ Eigen::Matrix<double, 18, 1> predictAll(const EstimatorParams& params,
                                         const Eigen::Matrix<double, 15, 1>& x);
 Eigen::Matrix<double, 18, 15> predictAllJacobian(const EstimatorParams& params,
                                                  const Eigen::Matrix<double, 15, 1>& x);
+
+/// The predicted pixel of the wrist (or elbow) marker for a 15-state x through params.camera,
+/// with d(pixel)/dx when jac is given. x is the state of the (virtual right) arm the filter works
+/// on; for a left arm the camera sees the mirror image of its points. Returns false when there is
+/// no camera or the point is not in view.
+bool predictMarkerPixel(const EstimatorParams& params, const Eigen::Matrix<double, 15, 1>& x,
+                        bool wrist, Eigen::Vector2d& pixel,
+                        Eigen::Matrix<double, 2, 15>* jac = nullptr);
 
 }  // namespace armtrack

@@ -1,8 +1,11 @@
 #include "core/estimation/Initializer.h"
 
+#include <optional>
 #include <unsupported/Eigen/AutoDiff>
 #include <unsupported/Eigen/LevenbergMarquardt>
 #include <vector>
+
+#include "core/camera/PinholeCamera.h"
 
 namespace armtrack {
 namespace {
@@ -30,6 +33,11 @@ struct PoseResidual {
   const ArmSample* sample;
   std::vector<int> active;
   int nValues = 0;
+  // Rays back-projected from the marker pixels (right-arm frame): a marker lies on its ray.
+  struct Ray {
+    Eigen::Vector3d origin, direction;
+  };
+  std::optional<Ray> wristRay, elbowRay;
 
   int inputs() const { return static_cast<int>(active.size()); }
   int values() const { return nValues; }
@@ -55,6 +63,14 @@ struct PoseResidual {
           T(gravityWeight(sample->forearm->acc, g)));
     if (sample->elbow) put((sample->elbow->cast<T>() - k.elbow) / T(kPositionScale));
     if (sample->wrist) put((sample->wrist->cast<T>() - k.wrist) / T(kPositionScale));
+    // Distance of a marker from its ray (the part of p - origin across the ray).
+    auto offRay = [&](const Ray& ray, const Eigen::Matrix<T, 3, 1>& p) {
+      const Eigen::Matrix<T, 3, 1> d = p - ray.origin.cast<T>();
+      const Eigen::Matrix<T, 3, 1> u = ray.direction.cast<T>();
+      put((d - u * u.dot(d)) / T(kPositionScale));
+    };
+    if (wristRay) offRay(*wristRay, k.wrist);
+    if (elbowRay) offRay(*elbowRay, k.elbow);
     const JointVector prior = neutralPosture();
     for (int j : active) r(row++) = (th(j) - T(prior(j))) * T(kPriorWeight);
   }
@@ -100,8 +116,24 @@ InitialPose initialPose(const EstimatorParams& params, const ArmSample& sample) 
   for (int j = 0; j < kNumJoints; ++j)
     if (params.activeJoints[j]) f.active.push_back(j);
   const int n = static_cast<int>(f.active.size());
+  if (params.camera && params.useCamera) {
+    const PinholeCamera camera(*params.camera);
+    const bool left = params.side == Side::Left;
+    auto rayOf = [&](const Eigen::Vector2d& px) {
+      PoseResidual::Ray r;
+      camera.ray(px, r.origin, r.direction);
+      if (left) {  // the filter's arm is the mirror image of the one the camera sees
+        r.origin = mirrorPoint(r.origin);
+        r.direction = mirrorPoint(r.direction);
+      }
+      return r;
+    };
+    if (sample.camWrist && sample.camWrist->allFinite()) f.wristRay = rayOf(*sample.camWrist);
+    if (sample.camElbow && sample.camElbow->allFinite()) f.elbowRay = rayOf(*sample.camElbow);
+  }
   f.nValues = 3 * (int(sample.upperArm.has_value()) + int(sample.forearm.has_value()) +
-                   int(sample.elbow.has_value()) + int(sample.wrist.has_value())) +
+                   int(sample.elbow.has_value()) + int(sample.wrist.has_value()) +
+                   int(f.wristRay.has_value()) + int(f.elbowRay.has_value())) +
               n;
 
   InitialPose best;

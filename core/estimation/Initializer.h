@@ -16,8 +16,9 @@ struct InitialPose {
 };
 
 /// Solves for the joint angles that best explain the gravity direction in each present IMU's
-/// accelerometer and the optical positions (Levenberg-Marquardt from several starts), then the
-/// joint rates that best explain the gyroscopes. Inactive joints stay at params.fixedAngles.
+/// accelerometer, the optical positions and the rays through the marker pixels (Levenberg-Marquardt
+/// from several starts), then the joint rates that best explain the gyroscopes. Inactive joints
+/// stay at params.fixedAngles.
 InitialPose initialPose(const EstimatorParams& params, const ArmSample& sample);
 
 /// The posture the weak prior pulls toward: arm hanging, elbow slightly flexed (rad).
