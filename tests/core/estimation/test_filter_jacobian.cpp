@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/camera/PinholeCamera.h"
 #include "core/estimation/ArmFilter.h"
 
 namespace armtrack {
@@ -324,6 +325,68 @@ TEST(HeadingSymmetry, ImuReadingsInvariantAtMovingStates) {
   }
   RecordProperty("worst_relative_imu_change", std::to_string(worstImu));
 }
+
+// ---------------------------------------------------------------------------------------------
+// Marker pixels: the predicted pixel is the camera's projection of the arm's marker, and its
+// Jacobian (OpenCV's projection derivative chained with the kinematics) matches finite
+// differences.
+
+class MarkerPixel : public testing::TestWithParam<Side> {};
+
+TEST_P(MarkerPixel, IsTheProjectionOfTheMarkerAndItsJacobianMatchesFiniteDifferences) {
+  EstimatorParams p;
+  p.side = GetParam();
+  p.geometry = unusualGeometry();
+  p.camera = frontCamera(1.5);
+  const PinholeCamera camera(*p.camera);
+  std::mt19937_64 rng(11);
+  int checked = 0;
+  for (int trial = 0; trial < 60; ++trial) {
+    Vec15 x = randomState(rng);
+    x.segment<3>(kTh) *= 0.5;  // keep the arm roughly in front of the camera
+    for (const bool wrist : {true, false}) {
+      Eigen::Vector2d px;
+      Eigen::Matrix<double, 2, 15> jac;
+      const ArmPose pose = forwardKinematics(p.geometry, x.segment<5>(kTh));
+      Eigen::Vector3d marker = wrist ? pose.wrist : pose.elbow;
+      // The filter works on a right arm; the camera sees the left arm's points mirrored back.
+      if (p.side == Side::Left) marker = mirrorPoint(marker);
+      Eigen::Vector2d expected;
+      const bool visible = camera.project(marker, expected);
+      ASSERT_EQ(predictMarkerPixel(p, x, wrist, px, &jac), visible);
+      if (!visible) continue;
+      EXPECT_LT((px - expected).norm(), 1e-9);
+      const double h = 1e-6;
+      Eigen::Matrix<double, 2, 15> fd;
+      for (int c = 0; c < 15; ++c) {
+        Vec15 xp = x, xm = x;
+        xp(c) += h;
+        xm(c) -= h;
+        Eigen::Vector2d a, b;
+        ASSERT_TRUE(predictMarkerPixel(p, xp, wrist, a));
+        ASSERT_TRUE(predictMarkerPixel(p, xm, wrist, b));
+        fd.col(c) = (a - b) / (2 * h);
+      }
+      // Pixels per rad are in the hundreds: compare relative to the largest entry.
+      EXPECT_LT((jac - fd).cwiseAbs().maxCoeff(), 1e-5 * std::max(1.0, fd.cwiseAbs().maxCoeff()));
+      // Only the angles move a marker; the elbow marker ignores the elbow joints.
+      EXPECT_EQ(jac.leftCols<10>().cwiseAbs().maxCoeff(), 0.0);
+      if (!wrist) EXPECT_EQ(jac.rightCols<2>().cwiseAbs().maxCoeff(), 0.0);
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 60);  // most poses are in view
+}
+
+TEST(MarkerPixelWithoutCamera, IsNotPredicted) {
+  EstimatorParams p;
+  Eigen::Vector2d px(1, 2);
+  EXPECT_FALSE(predictMarkerPixel(p, Vec15::Zero(), true, px));
+  EXPECT_EQ(px, Eigen::Vector2d(1, 2));
+}
+
+INSTANTIATE_TEST_SUITE_P(BothArms, MarkerPixel, testing::Values(Side::Right, Side::Left),
+                         [](const auto& info) { return sideName(info.param); });
 
 }  // namespace
 }  // namespace armtrack
