@@ -396,14 +396,20 @@ class ArmFilter final : public JointEstimator {
   // Start-up is not gated: the first pose may be far off and the pixels are what corrects it.
   // Returns false when the state could not be linearised.
   bool gateCamera(BlockList& b) {
-    if (!m_camera) return true;
+    if (!m_camera || !(b.has(kCamWrist) || b.has(kCamElbow))) return true;
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
+    Eigen::Matrix<double, kModelRows, 1> all;
+    Eigen::Matrix<double, kModelRows, kBase> allJac;
+    predictBaseWithJacobian(m_p, m_x.template head<kBase>(), all, allJac);
     for (int i = b.count - 1; i >= 0; --i) {
       const int blk = b.block[i];
       if (!isCamera(blk)) continue;
       Eigen::Vector2d px;
       Eigen::Matrix<double, 2, kBase> jac;
-      if (!predictPixel(m_x.template head<kBase>(), blk, px, &jac)) {
+      const int posBlock = blk == kCamWrist ? kWrist : kElbow;
+      const Eigen::Matrix<double, 3, kBase> dp = allJac.middleRows<3>(3 * posBlock);
+      if (!markerPixel(*m_camera, m_p.side == Side::Left, all.segment<3>(3 * posBlock), &dp, px,
+                       &jac)) {
         ++m_counters.cameraNotVisible;
         b = b.without(i);
         continue;
@@ -428,23 +434,6 @@ class ArmFilter final : public JointEstimator {
       }
     }
     return true;
-  }
-
-  // A marker pixel predicted from a 15-state: the marker's position block, then the camera.
-  bool predictPixel(const Vec15& base, int blk, Eigen::Vector2d& px,
-                    Eigen::Matrix<double, 2, kBase>* jac) const {
-    const int posBlock = blk == kCamWrist ? kWrist : kElbow;
-    Eigen::Matrix<double, kModelRows, 1> all;
-    if (!jac) {
-      predictBase<double>(m_p, base, all);
-      return markerPixel(*m_camera, m_p.side == Side::Left, all.segment<3>(3 * posBlock), nullptr,
-                         px, nullptr);
-    }
-    Eigen::Matrix<double, kModelRows, kBase> allJac;
-    predictBaseWithJacobian(m_p, base, all, allJac);
-    const Eigen::Matrix<double, 3, kBase> dp = allJac.middleRows<3>(3 * posBlock);
-    return markerPixel(*m_camera, m_p.side == Side::Left, all.segment<3>(3 * posBlock), &dp, px,
-                       jac);
   }
 
   void initialise(const ArmSample& s) {

@@ -18,16 +18,19 @@ namespace {
 constexpr double kWarmUp = 1.5;  // s of data fed before timing: past the iterated start-up (1 s)
 constexpr double kPool = 2.0;    // s of data cycled through while timing
 
-// Five-joint motion with Table 5 noise; every sample carries both IMUs, and with kinect every
-// one also carries elbow and wrist positions (the Kinect "runs" at the IMU rate).
-std::vector<ArmSample> makeSamples(bool kinect) {
+// Five-joint motion with Table 5 noise; every sample carries both IMUs, and with kinect (webcam)
+// every one also carries elbow and wrist positions (marker pixels): the optical sensors "run" at
+// the IMU rate, so every timed step is a worst case.
+Recording makeRecording(bool kinect, bool webcam = false) {
   const MultiJointTrajectory traj(1);
   SimulationParams sp = defaultSimulation();
   sp.duration = kWarmUp + kPool;
   sp.kinect.enabled = kinect;
   sp.kinect.rateHz = sp.upperArm.rateHz;
+  sp.webcam.enabled = webcam;
+  sp.webcam.rateHz = sp.upperArm.rateHz;
   sp.includeTruth = false;
-  return simulateRecording(traj, sp).samples;
+  return simulateRecording(traj, sp);
 }
 
 EstimatorParams params(FilterKind kind, MeasurementModel model) {
@@ -40,9 +43,13 @@ EstimatorParams params(FilterKind kind, MeasurementModel model) {
 
 // Times one update per iteration. When the pool runs out, the filter is reset and warmed up
 // again outside the timed region, so timestamps keep increasing and no restart is ever timed.
-void filterStep(benchmark::State& state, FilterKind kind, MeasurementModel model, bool kinect) {
-  const std::vector<ArmSample> samples = makeSamples(kinect);
-  const std::unique_ptr<JointEstimator> filter = makeEstimator(params(kind, model));
+void filterStep(benchmark::State& state, FilterKind kind, MeasurementModel model, bool kinect,
+                bool webcam = false) {
+  const Recording rec = makeRecording(kinect, webcam);
+  const std::vector<ArmSample>& samples = rec.samples;
+  EstimatorParams p = params(kind, model);
+  p.camera = rec.meta.camera;
+  const std::unique_ptr<JointEstimator> filter = makeEstimator(p);
   std::size_t first = 0;
   while (samples[first].t < kWarmUp) ++first;
   auto warmUp = [&] {
@@ -72,6 +79,12 @@ void BM_EkfStep_TwoImus(benchmark::State& state) {
 }
 void BM_UkfStep_TwoImusAndKinect(benchmark::State& state) {
   filterStep(state, FilterKind::Ukf, MeasurementModel::AccelGyro, true);
+}
+void BM_EkfStep_TwoImusKinectAndWebcam(benchmark::State& state) {
+  filterStep(state, FilterKind::Ekf, MeasurementModel::AccelGyro, true, true);
+}
+void BM_UkfStep_TwoImusKinectAndWebcam(benchmark::State& state) {
+  filterStep(state, FilterKind::Ukf, MeasurementModel::AccelGyro, true, true);
 }
 void BM_EkfStep_MethodB(benchmark::State& state) {
   filterStep(state, FilterKind::Ekf, MeasurementModel::AugmentedBodyAccel, true);
@@ -114,6 +127,8 @@ void BM_MeasurementPrediction(benchmark::State& state) {
 BENCHMARK(BM_EkfStep_TwoImusAndKinect)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EkfStep_TwoImus)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UkfStep_TwoImusAndKinect)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EkfStep_TwoImusKinectAndWebcam)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_UkfStep_TwoImusKinectAndWebcam)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EkfStep_MethodB)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MeasurementJacobian)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MeasurementPrediction)->Unit(benchmark::kMicrosecond);
