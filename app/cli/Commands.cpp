@@ -16,6 +16,7 @@
 #include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
 #include "app/cli/Orientation.h"
+#include "app/cli/TaoHu.h"
 #include "app/cli/Text.h"
 #include "core/camera/PinholeCamera.h"
 #include "core/io/Recording.h"
@@ -44,7 +45,7 @@ Usage:
 Commands:
   simulate   write a simulated recording with the true joint angles
   estimate   estimate joint angles from a recording (EKF or UKF)
-  study      reproduce the paper's simulation studies (Table 6, Fig. 5)
+  study      simulation studies: the paper's Table 6 and Figs. 5, 7, 8; the sensor study
   orientation  orientation of one IMU (gyroscope + accelerometer) as quaternions
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
@@ -90,8 +91,12 @@ recording holds true angles, prints RMSE and peak error per joint (deg).
 
 Options:
   --filter ekf|ukf         filter (default ekf)
-  --method A|B|C|inclinometer
-                           IMU measurement model (default A)
+  --method A|B|C|inclinometer|tao-hu
+                           IMU measurement model (default A). tao-hu instead runs the webcam +
+                           forearm-IMU tracker of Tao & Hu (needs a camera block and the forearm
+                           IMU): one row per camera frame, "t,wrist_x,wrist_y,wrist_z,elbow_x,
+                           elbow_y,elbow_z,th0,th1,th2,th4,th5" (m, shoulder frame; rad), and
+                           wrist/elbow position errors in cm when there is truth
   --no-kinect              ignore the Kinect's elbow/wrist positions
   --no-webcam              ignore the webcam's marker pixels (used when the sidecar has a
                            camera block)
@@ -99,16 +104,21 @@ Options:
   --out FILE               write the angles here (default: statistics only)
 )";
 
-constexpr std::string_view kStudyHelp = R"(Usage: armtrack-cli study table6|fig5 [options]
+constexpr std::string_view kStudyHelp =
+    R"(Usage: armtrack-cli study table6|fig5|fig7|fig8|sensors [options]
 
-Reproduces a simulation study of the paper and prints its table.
-  table6   body-acceleration compensation: Methods A, B, C
+Runs a simulation study and prints its table (markdown).
+  table6   body-acceleration compensation: Methods A, B, C (the paper's Table 6)
   fig5     error against motion frequency per measurement model, EKF and UKF
+  fig7     IMU perturbations against the accuracy of the position measurements, 1 mm to 1 m
+  fig8     perturbation error against motion frequency, with and without Kinect positions
+  sensors  five joints from IMUs only, + Kinect, + webcam, + both, and the Tao-Hu tracker
 
 Options:
-  --runs N          Monte Carlo runs per setting (default 10)
-  --filter ekf|ukf  filter for table6 (default ekf; fig5 always runs both)
-  --duration S      seconds per run, the first second is start-up (default 10)
+  --runs N          Monte Carlo runs per setting (default 10; sensors: 3)
+  --filter ekf|ukf  filter for table6, fig7 and fig8 (default ekf; fig5 runs both, sensors EKF)
+  --duration S      seconds per run, the first second is start-up (default 10; fig7 and
+                    sensors: 30, fig7 measures the steady state over the second half)
 )";
 
 FilterKind parseFilter(const Args& a) {
@@ -239,9 +249,10 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
   const fs::path input = a.positionals()[0];
 
+  const bool taoHu = a.value("--method") == std::optional<std::string>("tao-hu");
   EstimateOptions opt;
   opt.filter = parseFilter(a);
-  if (const auto m = a.value("--method")) {
+  if (const auto m = a.value("--method"); m && !taoHu) {
     try {
       opt.model = parseMethod(*m);
     } catch (const std::invalid_argument& e) {
@@ -265,6 +276,35 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   std::size_t imuRows = 0;
   for (const ArmSample& s : rec.samples) imuRows += s.hasImu();
   if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
+
+  if (taoHu) {
+    for (std::string_view o : {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std"}) {
+      if (a.flag(o)) err << "warning: " << o << " does not apply to --method tao-hu; ignored\n";
+    }
+    std::optional<CsvOutput> writer;
+    if (outPath) writer.emplace(kTaoHuHeader, *outPath);
+    const TaoHuRun run = runTaoHuRecording(rec, writer ? &*writer : nullptr);
+    if (writer) writer->commit();
+    const TaoHuCounters& c = run.result.counters;
+    err << "estimate: " << run.result.frames.size() << " camera-frame estimates from " << c.samples
+        << " rows, method tao-hu (" << c.wristUpdates << " wrist and " << c.elbowUpdates
+        << " elbow pixels fused, " << c.wristGated + c.elbowGated << " gated), "
+        << fixed(run.seconds, 2) << " s";
+    if (outPath) err << "; wrote " << outPath->string();
+    err << "\n";
+    if (c.rejectedNonFinite || c.rejectedTime || c.restarts || c.initFailures || c.lmFailures) {
+      err << "tao-hu: rejected non-finite " << c.rejectedNonFinite << ", rejected time "
+          << c.rejectedTime << ", restarts " << c.restarts << ", alignment failures "
+          << c.initFailures << ", LM failures " << c.lmFailures << "\n";
+    }
+    if (run.result.frames.empty())
+      err << "estimate: the tracker never started (no frame with both markers after the "
+             "orientation warm-up)\n";
+    else if (run.errors.count == 0)
+      err << "estimate: no true angles in the recording, so no error statistics\n";
+    out << formatTaoHuReport(run);
+    return 0;
+  }
 
   const EstimatorParams params = makeParams(rec.meta, opt);
   std::optional<CsvOutput> writer;
@@ -308,24 +348,30 @@ int study(const std::vector<std::string>& args, std::ostream& out, std::ostream&
     out << kStudyHelp;
     return 0;
   }
-  if (a.positionals().empty()) a.fail("missing the study to run: table6 or fig5");
+  constexpr std::string_view kStudies = "table6, fig5, fig7, fig8 or sensors";
+  if (a.positionals().empty())
+    a.fail("missing the study to run: " + std::string(kStudies));
   if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
   const std::string& which = a.positionals()[0];
-  if (which != "table6" && which != "fig5")
-    a.fail("unknown study " + inQuotes(which) + ": expected table6 or fig5");
+  if (which != "table6" && which != "fig5" && which != "fig7" && which != "fig8" &&
+      which != "sensors")
+    a.fail("unknown study " + inQuotes(which) + ": expected " + std::string(kStudies));
 
+  const bool sensors = which == "sensors";
   StudySetup setup;
-  const std::uint64_t runs = a.integer("--runs", 10);
+  const std::uint64_t runs = a.integer("--runs", sensors ? 3 : 10);
   if (runs < 1 || runs > 100000) a.fail("--runs: must be between 1 and 100000");
   setup.runs = static_cast<int>(runs);
   setup.filter = parseFilter(a);
-  setup.duration = a.number("--duration", 10.0);
+  setup.duration = a.number("--duration", sensors || which == "fig7" ? 30.0 : 10.0);
   if (!(setup.duration > 1.0))
     a.fail("--duration: must be > 1 (the first second is start-up), got " +
            shortest(setup.duration));
 
   if (which == "fig5" && a.flag("--filter"))
     err << "warning: --filter is ignored by fig5, which runs both EKF and UKF\n";
+  if (sensors && a.flag("--filter"))
+    err << "warning: --filter is ignored by sensors, which runs the EKF and Tao-Hu\n";
   int lastTenth = 0;
   const StudyProgress progress = [&](int done, int total) {
     if (total <= 0) return;
@@ -336,8 +382,14 @@ int study(const std::vector<std::string>& args, std::ostream& out, std::ostream&
   };
   if (which == "table6") {
     out << formatTable6(runTable6(setup, progress), setup);
-  } else {
+  } else if (which == "fig5") {
     out << formatFig5(runFig5(setup, progress), setup);
+  } else if (which == "fig7") {
+    out << formatFig7(runFig7(setup, progress), setup);
+  } else if (which == "fig8") {
+    out << formatFig8(runFig8(setup, progress), setup);
+  } else {
+    out << formatSensors(runSensors(setup, progress), setup);
   }
   return 0;
 }

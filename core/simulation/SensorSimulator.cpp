@@ -72,8 +72,8 @@ void checkImu(const ImuSimParams& p, const char* name) {
     throw std::invalid_argument(std::string("simulateRecording: ") + name + " rate must be > 0");
   checkNonNegative(p.gyroNoiseStd, "gyro noise std");
   checkNonNegative(p.accelNoiseStd, "accel noise std");
-  if (!p.gyroBias.allFinite())
-    throw std::invalid_argument("simulateRecording: gyro bias must be finite");
+  if (!p.gyroBias.allFinite() || !p.accelBias.allFinite())
+    throw std::invalid_argument("simulateRecording: IMU biases must be finite");
   const Eigen::Matrix3d m = p.misalignment;
   if (!m.allFinite() || !(m.transpose() * m).isIdentity(1e-9) || m.determinant() < 0.0)
     throw std::invalid_argument(std::string("simulateRecording: ") + name +
@@ -83,7 +83,7 @@ void checkImu(const ImuSimParams& p, const char* name) {
 ImuReading simulateImu(const ImuPrediction& ideal, const ImuSimParams& p, Noise& noise) {
   ImuReading r;
   r.gyr = p.misalignment.transpose() * ideal.gyr + p.gyroBias + noise.vec3(p.gyroNoiseStd);
-  r.acc = p.misalignment.transpose() * ideal.acc + noise.vec3(p.accelNoiseStd);
+  r.acc = p.misalignment.transpose() * ideal.acc + p.accelBias + noise.vec3(p.accelNoiseStd);
   return r;
 }
 

@@ -21,7 +21,8 @@ struct ImuSimParams {
   double rateHz = 1000.0;
   double gyroNoiseStd = 0.0;                           ///< white noise, rad/s
   double accelNoiseStd = 0.0;                          ///< white noise, m/s^2
-  Eigen::Vector3d gyroBias = Eigen::Vector3d::Zero();  ///< constant, rad/s
+  Eigen::Vector3d gyroBias = Eigen::Vector3d::Zero();   ///< constant, rad/s
+  Eigen::Vector3d accelBias = Eigen::Vector3d::Zero();  ///< constant, m/s^2
   /// Rotation of the physical sensor's axes relative to the model's IMU frame: the sensor reads
   /// misalignment^T * (model reading). Identity = perfectly mounted.
   Eigen::Matrix3d misalignment = Eigen::Matrix3d::Identity();

@@ -4,12 +4,14 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <Eigen/Geometry>
 #include <mutex>
 #include <numbers>
 #include <thread>
 
 #include "core/metrics/Accuracy.h"
 #include "core/simulation/SensorSimulator.h"
+#include "core/taohu/TaoHuTracker.h"
 
 namespace armtrack {
 namespace {
@@ -27,7 +29,25 @@ struct SegmentCase {
   MeasurementModel model;
   FilterKind filter;
   std::uint64_t seed;
+  Perturbation perturbation = Perturbation::None;
+  double positionStd = 0.0;  // m; 0 = no elbow positions
+  bool steadyState = false;  // error over the second half of the run only
 };
+
+// The upper-arm IMU's most harmful axes at the zero pose (section 3.2): the accelerometer axis
+// along which th0 moves gravity's reading, and the gyroscope axis of th0's rotation.
+struct HarmfulAxes {
+  Eigen::Vector3d accel, gyro;
+};
+HarmfulAxes harmfulAxes(const ArmGeometry& geo, const Eigen::Vector3d& gUp) {
+  const JointVector zero = JointVector::Zero();
+  JointVector th = zero, rate = zero;
+  th(0) = 1e-4;
+  rate(0) = 1.0;
+  const Eigen::Vector3d a0 = predictSensors(geo, zero, zero, zero, gUp).upper.acc;
+  const Eigen::Vector3d a1 = predictSensors(geo, th, zero, zero, gUp).upper.acc;
+  return {(a1 - a0).normalized(), predictSensors(geo, zero, rate, zero, gUp).upper.gyr.normalized()};
+}
 
 // One run of the paper's one-segment simulation: th0 sinusoid, upper-arm IMU only, Table 5
 // noise on the sensors and Table 5 values in the filter, only th0 estimated.
@@ -43,9 +63,26 @@ RunError runSegment(const SegmentCase& c, const StudySetup& setup) {
   sim.duration = setup.duration;
   sim.geometry = c.geometry;
   sim.forearm.enabled = false;
-  sim.kinect.enabled = false;
+  sim.kinect.enabled = c.positionStd > 0.0;
+  sim.kinect.noiseStd = c.positionStd;
   sim.seed = c.seed;
-  const Recording rec = simulateRecording(traj, sim);
+  const HarmfulAxes axes = harmfulAxes(c.geometry, sim.g * sim.up);
+  switch (c.perturbation) {
+    case Perturbation::None:
+      break;
+    case Perturbation::Accel:
+      sim.upperArm.accelBias = 1.0 * axes.accel;  // 1 m/s^2
+      break;
+    case Perturbation::Gyro:
+      sim.upperArm.gyroBias = 1.0 * kDeg * axes.gyro;  // 1 deg/s
+      break;
+    case Perturbation::Misalignment:
+      sim.upperArm.misalignment = Eigen::AngleAxisd(5.0 * kDeg, axes.gyro).toRotationMatrix();
+      break;
+  }
+  Recording rec = simulateRecording(traj, sim);
+  // One segment: the optical sensor reports the elbow only.
+  for (ArmSample& s : rec.samples) s.wrist.reset();
 
   EstimatorParams p;
   p.filter = c.filter;
@@ -53,11 +90,13 @@ RunError runSegment(const SegmentCase& c, const StudySetup& setup) {
   p.geometry = c.geometry;
   p.gUp = sim.g * sim.up;
   p.activeJoints = {true, false, false, false, false};
+  if (c.positionStd > 0.0) p.positionVariance = c.positionStd * c.positionStd;
   auto filter = makeEstimator(p);
   ErrorAccumulator acc;
+  const double from = c.steadyState ? setup.duration / 2 : kStartupSeconds;
   for (const ArmSample& s : rec.samples) {
     filter->update(s);
-    if (s.trueAngles && s.t >= kStartupSeconds) acc.add(filter->estimate().th, *s.trueAngles);
+    if (s.trueAngles && s.t >= from) acc.add(filter->estimate().th, *s.trueAngles);
   }
   return {acc.rmse()(0) / kDeg, acc.peak()(0) / kDeg};
 }
@@ -75,20 +114,21 @@ Stat stat(const std::vector<double>& v) {
   return s;
 }
 
-// Runs every case on all cores; results keep the cases' order, so output is deterministic.
-std::vector<RunError> runAll(const std::vector<SegmentCase>& cases, const StudySetup& setup,
-                             const StudyProgress& progress) {
-  std::vector<RunError> out(cases.size());
+// Runs job(i) for i in [0, count) on all cores; results keep the cases' order, so output is
+// deterministic.
+template <typename Result, typename Job>
+std::vector<Result> parallelRuns(std::size_t count, const Job& job, const StudyProgress& progress) {
+  std::vector<Result> out(count);
   std::atomic<std::size_t> next{0};
   std::atomic<int> done{0};
   std::mutex progressMutex;
   auto worker = [&] {
-    for (std::size_t i = next++; i < cases.size(); i = next++) {
-      out[i] = runSegment(cases[i], setup);
+    for (std::size_t i = next++; i < count; i = next++) {
+      out[i] = job(i);
       const int d = ++done;
       if (progress) {
         std::lock_guard lock(progressMutex);
-        progress(d, static_cast<int>(cases.size()));
+        progress(d, static_cast<int>(count));
       }
     }
   };
@@ -98,6 +138,12 @@ std::vector<RunError> runAll(const std::vector<SegmentCase>& cases, const StudyS
   worker();
   for (auto& t : threads) t.join();
   return out;
+}
+
+std::vector<RunError> runAll(const std::vector<SegmentCase>& cases, const StudySetup& setup,
+                             const StudyProgress& progress) {
+  return parallelRuns<RunError>(
+      cases.size(), [&](std::size_t i) { return runSegment(cases[i], setup); }, progress);
 }
 
 std::string fmt(const char* f, double a, double b) {
@@ -209,6 +255,295 @@ std::string formatFig5(const std::vector<Fig5Point>& points, const StudySetup& s
     }
     s += "\n";
   }
+  return s;
+}
+
+}  // namespace armtrack
+
+// ---------------------------------------------------------------------------------------------
+// Figs. 7 and 8: IMU perturbations and what position measurements do about them
+
+namespace armtrack {
+
+std::string perturbationName(Perturbation p) {
+  switch (p) {
+    case Perturbation::None:
+      return "none";
+    case Perturbation::Accel:
+      return "accelerometer 1 m/s^2";
+    case Perturbation::Gyro:
+      return "gyroscope 1 deg/s";
+    case Perturbation::Misalignment:
+      return "mounting 5 deg";
+  }
+  return "?";
+}
+
+namespace {
+
+// Section 3.2's segment: the IMU near the elbow, as in Table 6.
+ArmGeometry segmentGeometry() {
+  ArmGeometry geo;
+  geo.lu3 = 0.20;
+  return geo;
+}
+
+std::vector<double> errorsOf(const std::vector<RunError>& err, std::size_t first, int runs,
+                             bool peak = false) {
+  std::vector<double> v;
+  for (int r = 0; r < runs; ++r) v.push_back(peak ? err[first + r].peak : err[first + r].rmse);
+  return v;
+}
+
+std::string cell(double v, int decimals = 3) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %.*f |", decimals, v);
+  return buf;
+}
+
+}  // namespace
+
+std::vector<Fig7Point> runFig7(const StudySetup& setup, const StudyProgress& progress) {
+  const std::array<double, 8> stds{0.0, 0.001, 0.00316, 0.01, 0.0316, 0.1, 0.316, 1.0};
+  const std::array<Perturbation, 3> kinds{Perturbation::Accel, Perturbation::Gyro,
+                                          Perturbation::Misalignment};
+  std::vector<SegmentCase> cases;
+  for (double sp : stds)
+    for (Perturbation k : kinds)
+      for (int r = 0; r < setup.runs; ++r) {
+        SegmentCase c{segmentGeometry(),   0.0, MeasurementModel::AccelGyro, setup.filter,
+                      std::uint64_t(r + 1)};
+        c.perturbation = k;
+        c.positionStd = sp;
+        c.steadyState = true;
+        cases.push_back(c);
+      }
+  const std::vector<RunError> err = runAll(cases, setup, progress);
+  std::vector<Fig7Point> points;
+  std::size_t i = 0;
+  for (double sp : stds)
+    for (Perturbation k : kinds) {
+      points.push_back({sp, k, stat(errorsOf(err, i, setup.runs))});
+      i += static_cast<std::size_t>(setup.runs);
+    }
+  return points;
+}
+
+std::string formatFig7(const std::vector<Fig7Point>& points, const StudySetup& setup) {
+  std::string s =
+      "Fig. 7: steady-state th0 error (deg, RMSE over the second half of " +
+      fmt("%.0f s runs, mean of %.0f runs", setup.duration, setup.runs) +
+      ") against the elbow-position noise, static arm, IMU 20 cm down the upper arm, Table 5 "
+      "IMU noise, " +
+      filterName(setup.filter) + "\n\n";
+  s += "| position noise std | accelerometer 1 m/s^2 | gyroscope 1 deg/s | mounting 5 deg |\n";
+  s += "|---|---:|---:|---:|\n";
+  for (std::size_t i = 0; i + 2 < points.size(); i += 3) {
+    const double sp = points[i].positionStd;
+    char head[48];
+    if (sp <= 0.0)
+      std::snprintf(head, sizeof head, "| none (IMU only) |");
+    else if (sp < 0.1)
+      std::snprintf(head, sizeof head, "| %.3g mm |", sp * 1000.0);
+    else
+      std::snprintf(head, sizeof head, "| %.3g m |", sp);
+    s += head;
+    for (std::size_t k = i; k < i + 3; ++k) s += cell(points[k].error.mean);
+    s += "\n";
+  }
+  return s;
+}
+
+std::vector<Fig8Point> runFig8(const StudySetup& setup, const StudyProgress& progress) {
+  std::vector<double> freqs;
+  for (int i = 0; i <= 6; ++i) freqs.push_back(0.5 * i);
+  const std::array<Perturbation, 3> kinds{Perturbation::None, Perturbation::Accel,
+                                          Perturbation::Gyro};
+  std::vector<SegmentCase> cases;
+  for (double f : freqs)
+    for (Perturbation k : kinds)
+      for (bool positions : {false, true})
+        for (int r = 0; r < setup.runs; ++r) {
+          SegmentCase c{segmentGeometry(), f, MeasurementModel::AccelGyro, setup.filter,
+                        std::uint64_t(r + 1)};
+          c.perturbation = k;
+          c.positionStd = positions ? Table5::posStd() : 0.0;
+          cases.push_back(c);
+        }
+  const std::vector<RunError> err = runAll(cases, setup, progress);
+  std::vector<Fig8Point> points;
+  std::size_t i = 0;
+  for (double f : freqs)
+    for (Perturbation k : kinds)
+      for (bool positions : {false, true}) {
+        points.push_back({f, k, positions, stat(errorsOf(err, i, setup.runs))});
+        i += static_cast<std::size_t>(setup.runs);
+      }
+  return points;
+}
+
+std::string formatFig8(const std::vector<Fig8Point>& points, const StudySetup& setup) {
+  std::string s = "Fig. 8: th0 RMSE (deg, mean of " + std::to_string(setup.runs) +
+                  " runs) against motion frequency, " +
+                  fmt("%.0f deg amplitude, %.0f s runs", setup.amplitudeDeg, setup.duration) +
+                  ", IMU 20 cm down the upper arm, Table 5 noise, " + filterName(setup.filter) +
+                  "; 'with' = Kinect elbow positions (1 cm)\n\n";
+  s += "| f (Hz) | none | none, with | accel. 1 m/s^2 | accel., with | gyro 1 deg/s | gyro, "
+       "with |\n";
+  s += "|---|---:|---:|---:|---:|---:|---:|\n";
+  for (std::size_t i = 0; i + 5 < points.size(); i += 6) {
+    char head[32];
+    std::snprintf(head, sizeof head, "| %.2f |", points[i].frequencyHz);
+    s += head;
+    for (std::size_t k = i; k < i + 6; ++k) s += cell(points[k].rmse.mean);
+    s += "\n";
+  }
+  return s;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The sensor study
+
+std::string sensorSetName(SensorSet s) {
+  switch (s) {
+    case SensorSet::ImuOnly:
+      return "IMUs only";
+    case SensorSet::ImuKinect:
+      return "IMUs + Kinect";
+    case SensorSet::ImuWebcam:
+      return "IMUs + webcam";
+    case SensorSet::ImuKinectWebcam:
+      return "IMUs + Kinect + webcam";
+    case SensorSet::TaoHu:
+      return "Tao-Hu (forearm IMU + webcam)";
+  }
+  return "?";
+}
+
+double fiveJointAccelVariance() {
+  return (10.0 * kDeg) * (10.0 * kDeg);
+}
+
+namespace {
+
+constexpr std::array<SensorSet, 5> kSensorSets{SensorSet::ImuOnly, SensorSet::ImuKinect,
+                                               SensorSet::ImuWebcam, SensorSet::ImuKinectWebcam,
+                                               SensorSet::TaoHu};
+
+struct SensorRunError {
+  JointVector rmse = JointVector::Zero();  // deg
+  double wristRmse = 0.0;                  // cm
+  bool ok = true;
+  std::string note;
+};
+
+// One configuration on one recording; errors against the trajectory after the first second.
+SensorRunError runSensorCase(SensorSet set, const Recording& rec, const Trajectory& traj) {
+  ErrorAccumulator angles;
+  double wristSq = 0.0;
+  std::size_t n = 0;
+  auto add = [&](double t, const JointVector& th, const Eigen::Vector3d& wrist) {
+    if (t < kStartupSeconds) return;
+    const JointVector truth = traj.at(t).th;
+    angles.add(th, truth);
+    wristSq += (wrist - forwardKinematics(rec.meta.geometry, truth).wrist).squaredNorm();
+    ++n;
+  };
+  SensorRunError out;
+  if (set == SensorSet::TaoHu) {
+    try {
+      const TaoHuResult r = runTaoHu(rec, taoHuParams(rec.meta));
+      for (const TaoHuFrame& f : r.frames) add(f.t, f.th, f.wrist);
+    } catch (const std::exception& e) {
+      out.ok = false;
+      out.note = e.what();
+      return out;
+    }
+  } else {
+    EstimatorParams p;
+    p.jointAccelVariance = fiveJointAccelVariance();
+    p.geometry = rec.meta.geometry;
+    p.gUp = rec.meta.gUp();
+    p.side = rec.meta.side;
+    p.camera = rec.meta.camera;
+    p.useOptical = set == SensorSet::ImuKinect || set == SensorSet::ImuKinectWebcam;
+    p.useCamera = set == SensorSet::ImuWebcam || set == SensorSet::ImuKinectWebcam;
+    auto filter = makeEstimator(p);
+    for (const ArmSample& s : rec.samples) {
+      const UpdateResult r = filter->update(s);
+      if (!s.hasImu() || !(r == UpdateResult::Accepted || r == UpdateResult::Initialised))
+        continue;
+      const JointEstimate e = filter->estimate();
+      add(e.t, e.th, forwardKinematics(p.geometry, e.th).wrist);
+    }
+  }
+  out.rmse = angles.rmse() / kDeg;
+  out.wristRmse = n > 0 ? 100.0 * std::sqrt(wristSq / static_cast<double>(n)) : 0.0;
+  return out;
+}
+
+}  // namespace
+
+std::vector<SensorRow> runSensors(const StudySetup& setup, const StudyProgress& progress) {
+  const std::size_t sets = kSensorSets.size();
+  const std::size_t total = sets * static_cast<std::size_t>(setup.runs);
+  const std::vector<SensorRunError> err = parallelRuns<SensorRunError>(
+      total,
+      [&](std::size_t i) {
+        const std::uint64_t seed = i / sets + 1;
+        const MultiJointTrajectory traj(seed);
+        SimulationParams sim = defaultSimulation();
+        sim.duration = setup.duration;
+        sim.seed = seed;
+        sim.webcam.enabled = true;
+        // Each job simulates its own copy (cheap next to the estimation) so runs stay independent.
+        return runSensorCase(kSensorSets[i % sets], simulateRecording(traj, sim), traj);
+      },
+      progress);
+
+  std::vector<SensorRow> rows;
+  for (std::size_t k = 0; k < sets; ++k) {
+    SensorRow row;
+    row.sensors = kSensorSets[k];
+    std::array<std::vector<double>, kNumJoints> perJoint;
+    std::vector<double> wrist;
+    for (int r = 0; r < setup.runs; ++r) {
+      const SensorRunError& e = err[static_cast<std::size_t>(r) * sets + k];
+      if (!e.ok) {
+        row.available = false;
+        row.note = e.note;
+        continue;
+      }
+      for (int j = 0; j < kNumJoints; ++j) perJoint[j].push_back(e.rmse(j));
+      wrist.push_back(e.wristRmse);
+    }
+    for (int j = 0; j < kNumJoints; ++j) row.rmse[j] = stat(perJoint[j]);
+    row.wristRmse = stat(wrist);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::string formatSensors(const std::vector<SensorRow>& rows, const StudySetup& setup) {
+  std::string s =
+      "Sensor study: five joints moving (multi-joint, " +
+      fmt("%.0f s runs, mean of %.0f runs", setup.duration, setup.runs) +
+      "), Table 5 IMU noise, Kinect 30 Hz / 1 cm, webcam 30 Hz / 1 px at 2 m; EKF with "
+      "sigma_thdd = 10 deg/s^2; RMSE in deg after the first second, wrist position RMSE in cm\n\n";
+  s += "| sensors | th0 | th1 | th2 | th4 | th5 | wrist (cm) |\n";
+  s += "|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const SensorRow& r : rows) {
+    s += "| " + sensorSetName(r.sensors) + " |";
+    if (!r.available) {
+      s += " not run: " + r.note + " |||||\n";
+      continue;
+    }
+    for (int j = 0; j < kNumJoints; ++j) s += cell(r.rmse[j].mean, 2);
+    s += cell(r.wristRmse.mean, 2) + "\n";
+  }
+  s += "\nWithout optical data the arm's heading about the vertical rests on the start pose, so "
+       "the shoulder angles of 'IMUs only' drift. The paper of Tao & Hu reports its wrist "
+       "positions within +/-5 cm.\n";
   return s;
 }
 

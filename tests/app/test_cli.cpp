@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -196,3 +197,43 @@ TEST_F(CliTest, UnwritableOutputExitsWithOne) {
 }
 
 }  // namespace
+
+// --method tao-hu: one row per camera frame with positions and angles, position errors in cm next
+// to the paper's +/-5 cm, and exit 1 with a clear message without a camera or a forearm IMU.
+TEST_F(CliTest, TaoHuMethodWritesFramesAndPositionErrors) {
+  const fs::path rec = path("webcam.csv");
+  const CliResult sim = cli({"simulate", "--trajectory", "multi-joint", "--duration", "8",
+                             "--webcam", "--no-kinect", "--out", rec.string()});
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  const fs::path out = path("taohu.csv");
+  const CliResult r = cli({"estimate", rec.string(), "--method", "tao-hu", "--out", out.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("method tao-hu"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("| wrist |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("+/-5 cm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("th5 forearm pronation"), std::string::npos) << r.out;
+  const std::vector<std::string> lines = readLines(out);
+  ASSERT_FALSE(lines.empty());
+  EXPECT_EQ(lines[0], "t,wrist_x,wrist_y,wrist_z,elbow_x,elbow_y,elbow_z,th0,th1,th2,th4,th5");
+  EXPECT_NEAR(static_cast<double>(lines.size() - 1), 7.0 * 30.0, 3.0);  // 1 s warm-up
+  EXPECT_EQ(std::count(lines[1].begin(), lines[1].end(), ','), 11);
+
+  // No camera block: exit 1, named.
+  const CliResult noCam = cli({"estimate", simulated(3.0).string(), "--method", "tao-hu"});
+  EXPECT_EQ(noCam.code, 1);
+  EXPECT_NE(noCam.err.find("no camera block"), std::string::npos) << noCam.err;
+
+  // No forearm IMU: exit 1, named.
+  armtrack::Recording noForearm = armtrack::readRecording(rec);
+  for (armtrack::ArmSample& s : noForearm.samples) s.forearm.reset();
+  const fs::path nf = path("noforearm.csv");
+  armtrack::writeRecording(nf, noForearm);
+  const CliResult noFa = cli({"estimate", nf.string(), "--method", "tao-hu"});
+  EXPECT_EQ(noFa.code, 1);
+  EXPECT_NE(noFa.err.find("no forearm IMU"), std::string::npos) << noFa.err;
+
+  // Options of the joint-angle filter are named as ignored.
+  const CliResult warn = cli({"estimate", rec.string(), "--method", "tao-hu", "--filter", "ukf"});
+  EXPECT_EQ(warn.code, 0);
+  EXPECT_NE(warn.err.find("--filter does not apply"), std::string::npos) << warn.err;
+}
