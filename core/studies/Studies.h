@@ -96,6 +96,7 @@ struct SensorRow {
   SensorSet sensors;
   std::array<Stat, kNumJoints> rmse;  ///< deg per joint, after the first second
   Stat wristRmse;                     ///< cm, wrist position (forward kinematics of the angles)
+  double wristPeak = 0.0;             ///< cm, largest wrist position error over all runs
   bool available = true;              ///< false when the method could not run (message in note)
   std::string note;
 };
