@@ -301,6 +301,10 @@ class ArmFilter final : public JointEstimator {
       m_headingFloor = floorPrior;
       return UpdateResult::Rejected;
     }
+    // The gate saw the heading variance restored; when it dropped every optical block, this is
+    // an IMU-only update and P goes back to what it was.
+    const bool fuseOptical = blocks.anyOptical();
+    if (optical && !fuseOptical) m_P = pBefore;
     // Both filters start with the iterated EKF update: a UKF's sigma points spread over the
     // start-up uncertainty (tens of degrees) wrap around and lose the arm.
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
@@ -314,7 +318,7 @@ class ArmFilter final : public JointEstimator {
       if (!ok && sigmaOutOfView) {
         m_x = xBefore;
         m_P = pBefore;
-        if (optical) beforeOpticalUpdate();
+        if (fuseOptical) beforeOpticalUpdate();
         ok = ekfUpdate(blocks);
       }
     }
@@ -324,7 +328,7 @@ class ArmFilter final : public JointEstimator {
       ++m_counters.skippedUpdates;
       return UpdateResult::Rejected;
     }
-    if (blocks.anyOptical()) {
+    if (fuseOptical) {
       m_lastOpticalT = s.t;
       for (int i = 0; i < blocks.count; ++i) {
         if (isCamera(blocks.block[i]))
@@ -333,7 +337,7 @@ class ArmFilter final : public JointEstimator {
           ++m_counters.opticalUpdates;
       }
     }
-    afterUpdate(blocks.anyOptical());
+    afterUpdate(fuseOptical);
     finishUpdate();
     return UpdateResult::Accepted;
   }
