@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev nlohmann-json3-dev libopencv-dev
+  libeigen3-dev nlohmann-json3-dev libopencv-dev libceres-dev
   libgtest-dev googletest libbenchmark-dev
 )
 

@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/Calibrate.h"
 #include "app/cli/Cli.h"
 #include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
@@ -45,6 +46,7 @@ Usage:
 Commands:
   simulate   write a simulated recording with the true joint angles
   estimate   estimate joint angles from a recording (EKF or UKF)
+  calibrate  sensor-to-segment calibration from a protocol recording (docs/calibration.md)
   study      simulation studies: the paper's Table 6 and Figs. 5, 7, 8; the sensor study
   orientation  orientation of one IMU (gyroscope + accelerometer) as quaternions
 
@@ -59,9 +61,9 @@ Simulates both IMUs and the Kinect along a joint trajectory and writes a recordi
 the sidecar REC.json) that includes the true joint angles.
 
 Options:
-  --trajectory NAME    sinusoid, multi-joint or shoulder-wheel (required)
+  --trajectory NAME    sinusoid, multi-joint, shoulder-wheel or calibration (required)
   --out FILE           the recording to write (required)
-  --duration S         length in s (default 10)
+  --duration S         length in s (default 10; calibration: the whole protocol, 54 s)
   --seed N             seed for the trajectory, noise and misalignment (default 1)
   --imu-rate HZ        rate of both IMUs (default 1000)
   --kinect-rate HZ     Kinect rate (default 30)
@@ -101,6 +103,8 @@ Options:
   --no-webcam              ignore the webcam's marker pixels (used when the sidecar has a
                            camera block)
   --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
+  --calibration FILE       apply a calibration made by "armtrack-cli calibrate" (IMU mounting,
+                           gyroscope biases, segment lengths; docs/calibration.md)
   --out FILE               write the angles here (default: statistics only)
 )";
 
@@ -162,7 +166,10 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   const fs::path outPath = requiredPath(a, "--out");
 
   SimulationParams sim = defaultSimulation();
-  sim.duration = a.positive("--duration", 10.0);
+  // The calibration protocol has its own length; everything else defaults to 10 s.
+  sim.duration = a.positive(
+      "--duration",
+      name == "calibration" ? std::ceil(CalibrationProtocolTrajectory().duration()) : 10.0);
   sim.seed = a.integer("--seed", 1);
   const double imuRate = a.positive("--imu-rate", 1000.0);
   const double gyroNoise = a.nonNegative("--gyro-noise", Table5::gyroStd());
@@ -240,6 +247,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                 {"--no-kinect", false},
                 {"--no-webcam", false},
                 {"--joint-accel-std", true},
+                {"--calibration", true},
                 {"--out", true}});
   if (a.help()) {
     out << kEstimateHelp;
@@ -271,8 +279,9 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
   std::error_code ec;
   if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
-  const Recording rec = readRecording(input);
+  Recording rec = readRecording(input);
   for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
+  if (a.flag("--calibration")) applyCalibrationFile(requiredPath(a, "--calibration"), rec, err);
   std::size_t imuRows = 0;
   for (const ArmSample& s : rec.samples) imuRows += s.hasImu();
   if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
@@ -332,7 +341,8 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   if (c.cameraUpdates || c.rejectedOutliers || c.cameraNotVisible) {
     err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << c.rejectedOutliers
-        << " gated as outliers, " << c.cameraNotVisible << " with the marker predicted out of view\n";
+        << " gated as outliers, " << c.cameraNotVisible
+        << " with the marker predicted out of view\n";
   }
   if (st.truthCount == 0 && st.opticalUsed)
     err << "estimate: no true angles in the recording, so no error statistics\n";
@@ -349,8 +359,7 @@ int study(const std::vector<std::string>& args, std::ostream& out, std::ostream&
     return 0;
   }
   constexpr std::string_view kStudies = "table6, fig5, fig7, fig8 or sensors";
-  if (a.positionals().empty())
-    a.fail("missing the study to run: " + std::string(kStudies));
+  if (a.positionals().empty()) a.fail("missing the study to run: " + std::string(kStudies));
   if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
   const std::string& which = a.positionals()[0];
   if (which != "table6" && which != "fig5" && which != "fig7" && which != "fig8" &&
@@ -413,6 +422,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (cmd == "simulate") return simulate(rest, out, err);
     if (cmd == "estimate") return estimate(rest, out, err);
     if (cmd == "study") return study(rest, out, err);
+    if (cmd == "calibrate") return calibrateCommand(rest, out, err);
     if (cmd == "orientation") return orientationCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");

@@ -226,6 +226,136 @@ ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5,
   return out;
 }
 
+/// ArmGeometry with a generic scalar (a ceres::Jet or Eigen::AutoDiffScalar), so that predicted
+/// readings can be differentiated with respect to the segment lengths and the IMU mounting
+/// (sensor-to-segment calibration, core/calibration/). Same fields, units and meaning as
+/// ArmGeometry.
+template <typename T>
+struct ArmGeometryT {
+  T l3, l6, lu3, thu4, lu5, lf6, thf7, lf8;
+};
+
+/// geo's values as an ArmGeometryT<T> (constants for automatic differentiation).
+template <typename T>
+ArmGeometryT<T> geometryAs(const ArmGeometry& geo) {
+  return {T(geo.l3),  T(geo.l6),  T(geo.lu3),  T(geo.thu4),
+          T(geo.lu5), T(geo.lf6), T(geo.thf7), T(geo.lf8)};
+}
+
+/// One DH row with a generic translation lambda (always applied, even when it is zero) and no
+/// Tx offset: propagate() for rows whose lambda or gamma is a calibration unknown.
+template <typename T>
+FrameState<T> propagateGeneric(const FrameState<T>& prev, const T& c, const T& s, const T& gammaDot,
+                               const T& gammaDDot, const T& lambda, double beta) {
+  using Vec3 = Eigen::Matrix<T, 3, 1>;
+  const Vec3& w0 = prev.omega;
+  const Vec3& wd0 = prev.omegaDot;
+  const Vec3 w(w0(0), w0(1), w0(2) + gammaDot);
+  const Vec3 wd(wd0(0) + w0(1) * gammaDot, wd0(1) - w0(0) * gammaDot, wd0(2) + gammaDDot);
+  Vec3 a = prev.accel;
+  a(0) += lambda * (wd0(1) + w0(0) * w0(2));
+  a(1) += lambda * (w0(1) * w0(2) - wd0(0));
+  a(2) -= lambda * (w0(0) * w0(0) + w0(1) * w0(1));
+  FrameState<T> next;
+  next.omega = detail::toChild(w, c, s, beta);
+  next.omegaDot = detail::toChild(wd, c, s, beta);
+  next.accel = detail::toChild(a, c, s, beta);
+  next.up = detail::toChild(prev.up, c, s, beta);
+  return next;
+}
+
+/// Frame 3 (the upper arm after the three shoulder rows), shared by every sensor.
+template <typename T>
+FrameState<T> shoulderKinematics(const Eigen::Matrix<T, 5, 1>& th,
+                                 const Eigen::Matrix<T, 5, 1>& thd,
+                                 const Eigen::Matrix<T, 5, 1>& thdd, const Eigen::Vector3d& gUp) {
+  using std::cos;
+  using std::sin;
+  constexpr double kHalfPi = detail::kHalfPi;
+  FrameState<T> f0;
+  f0.up = gUp.cast<T>();
+  const T c1 = cos(th(0)), s1 = sin(th(0));
+  const T c2 = -sin(th(1)), s2 = cos(th(1));  // cos and sin of th1 + pi/2
+  const T c3 = cos(th(2)), s3 = sin(th(2));
+  const FrameState<T> f1 = propagate<T, T>(f0, c1, s1, thd(0), thdd(0), 0.0, kHalfPi, 0.0);
+  const FrameState<T> f2 = propagate<T, T>(f1, c2, s2, thd(1), thdd(1), 0.0, kHalfPi, 0.0);
+  return propagate<T, T>(f2, c3, s3, thd(2), thdd(2), 0.0, 0.0, 0.0);
+}
+
+/// The upper-arm IMU frame (Table 1 rows 4-6) from frame 3, with a generic geometry.
+template <typename T>
+FrameState<T> upperImuKinematics(const FrameState<T>& f3, const ArmGeometryT<T>& geo) {
+  using std::cos;
+  using std::sin;
+  const T zero(0), one(1);
+  const FrameState<T> u4 = propagateGeneric<T>(f3, one, zero, zero, zero, geo.lu3, 0.0);
+  const FrameState<T> u5 =
+      propagateGeneric<T>(u4, cos(geo.thu4), sin(geo.thu4), zero, zero, zero, detail::kHalfPi);
+  return propagateGeneric<T>(u5, one, zero, zero, zero, geo.lu5, 0.0);
+}
+
+/// The forearm IMU frame (Table 3 rows 4-9) from frame 3, with a generic geometry.
+template <typename T>
+FrameState<T> forearmImuKinematics(const FrameState<T>& f3, const Eigen::Matrix<T, 5, 1>& th,
+                                   const Eigen::Matrix<T, 5, 1>& thd,
+                                   const Eigen::Matrix<T, 5, 1>& thdd, const ArmGeometryT<T>& geo) {
+  using std::cos;
+  using std::sin;
+  constexpr double kHalfPi = detail::kHalfPi;
+  const T zero(0), one(1);
+  const FrameState<T> e4 = propagateGeneric<T>(f3, zero, one, zero, zero, geo.l3, -kHalfPi);
+  const FrameState<T> e5 =
+      propagate<T, T>(e4, cos(th(3)), sin(th(3)), thd(3), thdd(3), 0.0, kHalfPi, 0.0);
+  const FrameState<T> e6 =
+      propagate<T, T>(e5, cos(th(4)), sin(th(4)), thd(4), thdd(4), 0.0, 0.0, 0.0);
+  const FrameState<T> f7 = propagateGeneric<T>(e6, one, zero, zero, zero, geo.lf6, 0.0);
+  const T g8 = geo.thf7 + kHalfPi;
+  const FrameState<T> f8 = propagateGeneric<T>(f7, cos(g8), sin(g8), zero, zero, zero, kHalfPi);
+  return propagateGeneric<T>(f8, one, zero, zero, zero, geo.lf8, 0.0);
+}
+
+/// Elbow and wrist positions in frame 0 (m), with a generic geometry (eq. 11).
+template <typename T>
+void armPositions(const Eigen::Matrix<T, 5, 1>& th, const ArmGeometryT<T>& geo,
+                  Eigen::Matrix<T, 3, 1>& elbow, Eigen::Matrix<T, 3, 1>& wrist) {
+  using std::cos;
+  using std::sin;
+  using Vec3 = Eigen::Matrix<T, 3, 1>;
+  constexpr double kHalfPi = detail::kHalfPi;
+  const T c1 = cos(th(0)), s1 = sin(th(0));
+  const T c2 = -sin(th(1)), s2 = cos(th(1));
+  const T c3 = cos(th(2)), s3 = sin(th(2));
+  const T c5 = cos(th(3)), s5 = sin(th(3));
+  const T c6 = cos(th(4)), s6 = sin(th(4));
+  const double c4 = 0.0, s4 = 1.0;
+  Vec3 v(T(0), T(0), geo.l6);
+  v = detail::toParent(v, c6, s6, 0.0);
+  v = detail::toParent(v, c5, s5, kHalfPi);
+  v = detail::toParent(v, c4, s4, -kHalfPi);
+  v(2) += geo.l3;
+  Vec3 e(T(0), T(0), geo.l3);
+  v = detail::toParent(v, c3, s3, 0.0);
+  e = detail::toParent(e, c3, s3, 0.0);
+  v = detail::toParent(v, c2, s2, kHalfPi);
+  e = detail::toParent(e, c2, s2, kHalfPi);
+  wrist = detail::toParent(v, c1, s1, kHalfPi);
+  elbow = detail::toParent(e, c1, s1, kHalfPi);
+}
+
+/// armKinematics with a generic geometry: the same predictions, differentiable with respect to
+/// the geometry as well as the joint motion.
+template <typename T>
+ArmKinematics<T> armKinematics(const ArmGeometryT<T>& geo, const Eigen::Matrix<T, 5, 1>& th,
+                               const Eigen::Matrix<T, 5, 1>& thd,
+                               const Eigen::Matrix<T, 5, 1>& thdd, const Eigen::Vector3d& gUp) {
+  const FrameState<T> f3 = shoulderKinematics<T>(th, thd, thdd, gUp);
+  ArmKinematics<T> out;
+  out.upperImu = upperImuKinematics<T>(f3, geo);
+  out.forearmImu = forearmImuKinematics<T>(f3, th, thd, thdd, geo);
+  armPositions<T>(th, geo, out.elbow, out.wrist);
+  return out;
+}
+
 /// The DH tables as data, for the forward-kinematics reference and the docs. Table 1 (upper-arm
 /// IMU), 2 (elbow), 3 (forearm IMU), 4 (wrist).
 std::array<DhRow, 6> upperImuTable(const ArmGeometry& geo);

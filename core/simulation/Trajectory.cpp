@@ -151,8 +151,103 @@ JointMotion ShoulderWheelTrajectory::at(double t) const {
   return m;
 }
 
+namespace {
+
+// Key poses of the calibration protocol, deg [th0 th1 th2 th4 th5], with the time to move there
+// and the time to hold it (s). docs/calibration.md gives the therapist's version.
+struct ProtocolStep {
+  std::array<double, kNumJoints> poseDeg;
+  double moveSeconds, holdSeconds;
+};
+
+std::vector<ProtocolStep> protocolSteps() {
+  constexpr std::array<double, kNumJoints> kStart{0, 0, 0, -90, 0};
+  std::vector<ProtocolStep> steps;
+  steps.push_back({kStart, 0.0, 4.0});  // start pose, held still
+  // Static poses.
+  steps.push_back({{90, 0, 0, -10, 0}, 2.0, 2.0});       // arm forward, elbow almost straight
+  steps.push_back({{20, 60, 0, -10, 0}, 2.0, 2.0});      // arm out to the side
+  steps.push_back({{45, 20, 45, -90, 60}, 2.0, 2.0});    // hand across, palm down
+  steps.push_back({{0, 10, -30, -100, -60}, 2.0, 2.0});  // hand out, palm up
+  // Elbow flexion/extension with pronation/supination, four times.
+  for (int i = 0; i < 4; ++i) {
+    steps.push_back({{30, 15, 0, -20, -70}, i == 0 ? 1.5 : 1.0, 0.0});
+    steps.push_back({{30, 15, 0, -130, 70}, 1.0, 0.0});
+  }
+  // Shoulder internal/external rotation with the elbow at 90 deg, three times.
+  for (int i = 0; i < 3; ++i) {
+    steps.push_back({{20, 20, -50, -90, 0}, i == 0 ? 1.5 : 1.0, 0.0});
+    steps.push_back({{20, 20, 50, -90, 0}, 1.0, 0.0});
+  }
+  // Reach forward and up, then hand to mouth, three times.
+  for (int i = 0; i < 3; ++i) {
+    steps.push_back({{100, 20, 0, -20, -30}, 1.2, 0.0});
+    steps.push_back({{40, 10, 60, -140, 40}, 1.2, 0.0});
+  }
+  // Abduction/adduction, three times.
+  for (int i = 0; i < 3; ++i) {
+    steps.push_back({{0, 70, 20, -40, 0}, 1.0, 0.0});
+    steps.push_back({{30, -10, -20, -60, 20}, 1.0, 0.0});
+  }
+  steps.push_back({kStart, 2.0, 3.0});  // back to the start pose
+  return steps;
+}
+
+}  // namespace
+
+CalibrationProtocolTrajectory::CalibrationProtocolTrajectory() {
+  double t = 0.0;
+  for (const ProtocolStep& step : protocolSteps()) {
+    JointVector th;
+    for (int j = 0; j < kNumJoints; ++j) th(j) = step.poseDeg[j] * kDeg;
+    t += step.moveSeconds;
+    m_keys.push_back({t, th});
+    if (step.holdSeconds > 0.0) {
+      t += step.holdSeconds;
+      m_keys.push_back({t, th});
+    }
+  }
+}
+
+double CalibrationProtocolTrajectory::duration() const {
+  return m_keys.back().t;
+}
+
+JointVector CalibrationProtocolTrajectory::startPose() {
+  JointVector th;
+  th << 0.0, 0.0, 0.0, -90.0 * kDeg, 0.0;
+  return th;
+}
+
+JointMotion CalibrationProtocolTrajectory::at(double t) const {
+  JointMotion m;
+  if (!(t > m_keys.front().t)) {
+    m.th = m_keys.front().th;
+    return m;
+  }
+  if (t >= m_keys.back().t) {
+    m.th = m_keys.back().th;
+    return m;
+  }
+  // The segment [k-1, k] that holds t; minimum jerk s(u) = 10u^3 - 15u^4 + 6u^5.
+  const auto it = std::upper_bound(m_keys.begin(), m_keys.end(), t,
+                                   [](double v, const Key& k) { return v < k.t; });
+  const Key& b = *it;
+  const Key& a = *(it - 1);
+  const double T = b.t - a.t;
+  const double u = (t - a.t) / T;
+  const double s = u * u * u * (10.0 + u * (-15.0 + 6.0 * u));
+  const double sd = 30.0 * u * u * (1.0 - u) * (1.0 - u) / T;
+  const double sdd = 60.0 * u * (1.0 - u) * (1.0 - 2.0 * u) / (T * T);
+  const JointVector d = b.th - a.th;
+  m.th = a.th + s * d;
+  m.thd = sd * d;
+  m.thdd = sdd * d;
+  return m;
+}
+
 std::vector<std::string> trajectoryNames() {
-  return {"sinusoid", "multi-joint", "shoulder-wheel"};
+  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
@@ -168,6 +263,7 @@ std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const Trajec
                                                   opts.amplitudeScale);
   if (name == "shoulder-wheel")
     return std::make_unique<ShoulderWheelTrajectory>(opts.geometry, opts.wheelPeriod);
+  if (name == "calibration") return std::make_unique<CalibrationProtocolTrajectory>();
   std::string valid;
   for (const std::string& n : trajectoryNames()) valid += (valid.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown trajectory '" + name + "'; valid names: " + valid);

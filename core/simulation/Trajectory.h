@@ -76,6 +76,31 @@ class ShoulderWheelTrajectory final : public Trajectory {
   double m_period, m_w, m_h, m_r, m_s;
 };
 
+/// The sensor-to-segment calibration protocol of docs/calibration.md, as a therapist would guide
+/// it (about 57 s): the start pose held 4 s (upper arm hanging, elbow flexed 90 deg, forearm
+/// pointing forward, thumb up: th = [0 0 0 -90 0] deg), four static poses (2 s move, 2 s hold),
+/// then functional movements (elbow flexion with pronation/supination, shoulder rotation with the
+/// elbow at 90 deg, reach-to-mouth, abduction/adduction), and back to the start pose held 3 s.
+/// Moves between consecutive key poses follow a minimum-jerk (quintic) profile, so rates and
+/// accelerations are continuous and zero at every key pose. Before 0 and after duration() the arm
+/// stays in the start pose.
+class CalibrationProtocolTrajectory final : public Trajectory {
+ public:
+  CalibrationProtocolTrajectory();
+  JointMotion at(double t) const override;
+  /// Length of the protocol (s).
+  double duration() const;
+  /// The start pose [0 0 0 -90 0] deg, in rad.
+  static JointVector startPose();
+
+ private:
+  struct Key {
+    double t;        // s, time the arm reaches the pose
+    JointVector th;  // rad
+  };
+  std::vector<Key> m_keys;
+};
+
 struct TrajectoryOptions {
   std::uint64_t seed = 1;
   JointVector amplitude = JointVector::Constant(0.5);  ///< sinusoid: rad
@@ -87,7 +112,8 @@ struct TrajectoryOptions {
   ArmGeometry geometry;                                ///< shoulder wheel
 };
 
-/// Names: "sinusoid", "multi-joint", "shoulder-wheel". Throws std::invalid_argument otherwise.
+/// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol).
+/// Throws std::invalid_argument otherwise.
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts);
 std::vector<std::string> trajectoryNames();
 

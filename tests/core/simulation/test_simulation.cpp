@@ -233,7 +233,8 @@ TEST(Trajectory, WheelRejectsUnreachable) {
 
 TEST(Trajectory, Factory) {
   const std::vector<std::string> names = trajectoryNames();
-  ASSERT_EQ(names, (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel"}));
+  ASSERT_EQ(names,
+            (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration"}));
   TrajectoryOptions opts;
   for (const std::string& n : names) EXPECT_NE(makeTrajectory(n, opts), nullptr);
 
