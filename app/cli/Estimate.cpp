@@ -21,14 +21,10 @@ constexpr const char* kJointLabels[kNumJoints] = {
 }  // namespace
 
 EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& options) {
-  EstimatorParams p;
+  EstimatorParams p = recordingParams(meta);
   p.filter = options.filter;
   p.model = options.model;
-  p.geometry = meta.geometry;
-  p.gUp = meta.gUp();
-  p.side = meta.side;
   p.useOptical = options.useOptical;
-  p.camera = meta.camera;
   p.useCamera = options.useCamera;
   if (options.jointAccelStdDeg) {
     const double s = *options.jointAccelStdDeg * kDeg;

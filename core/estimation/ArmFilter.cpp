@@ -779,6 +779,15 @@ std::unique_ptr<JointEstimator> makeEstimator(const EstimatorParams& params) {
   return std::make_unique<ArmFilter<kBase>>(params);
 }
 
+EstimatorParams recordingParams(const RecordingMeta& meta) {
+  EstimatorParams p;
+  p.geometry = meta.geometry;
+  p.gUp = meta.gUp();
+  p.side = meta.side;
+  p.camera = meta.camera;
+  return p;
+}
+
 BatchResult estimateSamples(const std::vector<ArmSample>& samples, const EstimatorParams& params) {
   BatchResult out;
   auto filter = makeEstimator(params);

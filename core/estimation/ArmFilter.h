@@ -158,6 +158,10 @@ class JointEstimator {
 
 std::unique_ptr<JointEstimator> makeEstimator(const EstimatorParams& params);
 
+/// Parameters for a recording: the geometry, gravity, side and camera of its sidecar; everything
+/// else at the defaults.
+EstimatorParams recordingParams(const RecordingMeta& meta);
+
 /// Runs a whole recording offline; one estimate per sample that carries IMU data (after
 /// initialisation). The batch entry point the CLI and the tests use.
 struct BatchResult {

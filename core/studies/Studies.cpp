@@ -469,12 +469,8 @@ SensorRunError runSensorCase(SensorSet set, const Recording& rec, const Trajecto
       return out;
     }
   } else {
-    EstimatorParams p;
+    EstimatorParams p = recordingParams(rec.meta);
     p.jointAccelVariance = fiveJointAccelVariance();
-    p.geometry = rec.meta.geometry;
-    p.gUp = rec.meta.gUp();
-    p.side = rec.meta.side;
-    p.camera = rec.meta.camera;
     p.useOptical = set == SensorSet::ImuKinect || set == SensorSet::ImuKinectWebcam;
     p.useCamera = set == SensorSet::ImuWebcam || set == SensorSet::ImuKinectWebcam;
     auto filter = makeEstimator(p);

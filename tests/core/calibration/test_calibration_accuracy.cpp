@@ -67,10 +67,7 @@ void printResult(const CalibrationResult& r) {
 
 // Per-joint RMSE (deg) of the EKF with the five-joint tuning over rec, skipping the first second.
 JointVector estimateRmseDeg(const Recording& rec) {
-  EstimatorParams p;
-  p.geometry = rec.meta.geometry;
-  p.gUp = rec.meta.gUp();
-  p.side = rec.meta.side;
+  EstimatorParams p = recordingParams(rec.meta);
   p.jointAccelVariance = (10.0 * kDeg) * (10.0 * kDeg);  // five-joint tuning, docs/estimator.md
   const BatchResult r = estimateSamples(rec.samples, p);
   std::map<double, JointVector> truth;

@@ -54,13 +54,9 @@ Recording simulate(const Sensors& s, double duration, std::uint64_t seed) {
 // The documented five-joint tuning (sigma_thdd = 10 deg/s^2), geometry and camera from the
 // recording.
 EstimatorParams paramsFor(const Recording& rec, FilterKind kind) {
-  EstimatorParams p;
+  EstimatorParams p = recordingParams(rec.meta);
   p.filter = kind;
   p.jointAccelVariance = sq(10.0 * kDeg);
-  p.geometry = rec.meta.geometry;
-  p.gUp = rec.meta.gUp();
-  p.side = rec.meta.side;
-  p.camera = rec.meta.camera;
   return p;
 }
 
