@@ -293,8 +293,11 @@ class ArmFilter final : public JointEstimator {
     const Mat pBefore = m_P;
     const bool optical = blocks.anyOptical();
     if (optical) beforeOpticalUpdate();
-    if (!gateCamera(blocks) || blocks.count == 0) {
-      // Nothing left to fuse (e.g. a single mis-detected marker): the sample changes nothing.
+    const bool gated = gateCamera(blocks);
+    if (!gated || blocks.count == 0) {
+      // Nothing left to fuse (e.g. a single mis-detected marker), or the gate could not be
+      // evaluated: the sample changes nothing.
+      if (!gated) ++m_counters.skippedUpdates;
       m_x = xPrior;
       m_P = pPrior;
       m_t = tPrior;
