@@ -1,0 +1,62 @@
+// Builds the estimator's ArmSample rows from the synchronised, time-ordered events of several
+// devices: events close together in time share one row.
+#pragma once
+
+#include <Eigen/Core>
+#include <optional>
+#include <variant>
+#include <vector>
+
+#include "core/ArmSample.h"
+#include "core/sync/TimeSync.h"
+
+namespace armtrack {
+
+/// What a device contributes to a row.
+enum class ArmSlot { UpperArmImu, ForearmImu, Optical, Camera };
+
+/// Kinect (or external tracker) positions in the shoulder frame (m).
+struct OpticalPositions {
+  std::optional<Eigen::Vector3d> elbow;
+  std::optional<Eigen::Vector3d> wrist;
+};
+
+/// Webcam marker pixels (u, v).
+struct MarkerPixels {
+  std::optional<Eigen::Vector2d> wrist;
+  std::optional<Eigen::Vector2d> elbow;
+};
+
+/// Payload of a sensor event: an IMU reading, optical positions or marker pixels.
+using SensorPayload = std::variant<ImuReading, OpticalPositions, MarkerPixels>;
+using SensorEvent = SyncEvent<SensorPayload>;
+
+/// Groups events into rows: an event joins the open row when it is within mergeWindow seconds of
+/// the row's first event and its slot is still empty; otherwise the open row is completed and a
+/// new one starts. The row time is its first event's time, so rows are non-decreasing in time when
+/// the events are. Not thread-safe.
+class ArmSampleAssembler {
+ public:
+  /// slotOfDevice[d] is the slot of device d. mergeWindow in s, default 0.5 ms.
+  explicit ArmSampleAssembler(std::vector<ArmSlot> slotOfDevice, double mergeWindow = 0.5e-3);
+
+  /// Adds one event; returns the row it completed, if any. An event whose payload does not fit
+  /// its device's slot (e.g. pixels from an IMU device) or whose device is unknown is counted in
+  /// mismatched() and ignored.
+  std::optional<ArmSample> add(const SensorEvent& event);
+  /// Completes the open row, if any.
+  std::optional<ArmSample> flush();
+
+  std::uint64_t mismatched() const { return m_mismatched; }
+
+ private:
+  bool slotFilled(ArmSlot slot) const;
+  void fill(ArmSlot slot, const SensorPayload& payload);
+
+  std::vector<ArmSlot> m_slots;
+  double m_window;
+  std::optional<ArmSample> m_row;
+  std::uint64_t m_mismatched = 0;
+};
+
+}  // namespace armtrack
