@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Sets up a Debian 12 machine, builds ArmTrack and starts it. Until the GUI lands this runs a
-# demo session through the command-line tool: a simulated recording of both IMUs and a Kinect
-# (the virtual devices' source), estimated and compared with the simulation's truth.
+# demo session through the command-line tool: a simulated recording of both IMUs, a Kinect and
+# a webcam (the virtual devices' source), estimated and compared with the simulation's truth.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_BUILD_DIR:-$root/build}"
@@ -13,6 +13,6 @@ cmake --build "$build" --parallel "$(nproc)" --target armtrack-cli
 
 cli="$build/app/armtrack-cli"
 mkdir -p "$data"
-"$cli" simulate --trajectory multi-joint --duration 30 --out "$data/session.csv"
+"$cli" simulate --trajectory multi-joint --duration 30 --webcam --out "$data/session.csv"
 "$cli" estimate "$data/session.csv" --joint-accel-std 10 --out "$data/angles.csv"
 echo "Recording and estimated angles are in $data"
