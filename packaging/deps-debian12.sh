@@ -7,6 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev nlohmann-json3-dev libopencv-dev libceres-dev
   libgtest-dev googletest libbenchmark-dev
+  clang libclang-rt-14-dev
 )
 
 missing=()

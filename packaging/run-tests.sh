@@ -16,3 +16,7 @@ fi
 
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600
+
+# A short libFuzzer run of every protocol parser (about a minute in all); the long run is the same
+# script with more seconds per target.
+bash "$root/packaging/run-fuzzers.sh" "${ARMTRACK_FUZZ_SECONDS:-10}"

@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets of the protocol parsers with Clang (ASan + UBSan) in their own
+# build dir and runs each for a while. CI runs it briefly from run-tests.sh; for a long run give
+# more seconds per target, e.g.  bash packaging/run-fuzzers.sh 3600
+# New corpus entries go to <build>/corpus/<target>/ and crashes to <build>/artifacts/.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${ARMTRACK_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+seconds="${1:-10}"
+targets=(fuzz_shimmer3 fuzz_lineimu fuzz_ngimu fuzz_skeleton)
+
+cxx="$(command -v clang++ || command -v clang++-14 || true)"
+cc="$(command -v clang || command -v clang-14 || true)"
+if [ -z "$cxx" ] || [ -z "$cc" ]; then
+  echo "run-fuzzers: clang not found (packaging/deps-debian12.sh installs it)" >&2
+  exit 1
+fi
+
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" \
+  -DARMTRACK_BUILD_FUZZERS=ON >/dev/null
+cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
+
+mkdir -p "$build/artifacts"
+status=0
+for t in "${targets[@]}"; do
+  mkdir -p "$build/corpus/$t"
+  log="$build/$t.log"
+  # The first corpus dir collects new inputs; the seeds in the tree are only read.
+  if "$build/tests/fuzz/$t" "$build/corpus/$t" "$root/tests/fuzz/corpus/$t" \
+      -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+      -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
+    runs="$(grep -m1 'stat::number_of_executed_units' "$log" | awk '{print $2}')"
+    echo "run-fuzzers: $t ok, ${runs:-?} executions in ${seconds} s"
+  else
+    echo "run-fuzzers: $t FAILED; last lines of $log:" >&2
+    tail -n 40 "$log" >&2
+    status=1
+  fi
+done
+exit "$status"
