@@ -12,6 +12,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 
 namespace armtrack {
 
@@ -113,16 +114,18 @@ Eigen::Matrix<T, 3, 1> toParent(const Eigen::Matrix<T, 3, 1>& v, const C& c, con
 ///   a  = a' + w.' x lambda k + w' x (w' x lambda k)  [+ w. x d + w x (w x d) when delta != 0,
 ///        where d = delta Rz(gamma) x is the part of the offset that turns with frame i].
 /// The paper's eq. 15 prints R g; coordinates change by the transpose, R^T g, as for the rest.
-template <typename T, typename C>
+/// lambda may be a number (skipped when zero) or an unknown of type L = T (a calibration
+/// parameter, always applied: a zero value may still carry a derivative).
+template <typename T, typename C, typename L = double>
 FrameState<T> propagate(const FrameState<T>& prev, const C& c, const C& s, const T& gammaDot,
-                        const T& gammaDDot, double lambda, double beta, double delta) {
+                        const T& gammaDDot, const L& lambda, double beta, double delta) {
   using Vec3 = Eigen::Matrix<T, 3, 1>;
   const Vec3& w0 = prev.omega;
   const Vec3& wd0 = prev.omegaDot;
   const Vec3 w(w0(0), w0(1), w0(2) + gammaDot);
   const Vec3 wd(wd0(0) + w0(1) * gammaDot, wd0(1) - w0(0) * gammaDot, wd0(2) + gammaDDot);
   Vec3 a = prev.accel;
-  if (lambda != 0.0) {
+  if (!std::is_arithmetic_v<L> || lambda != L(0)) {
     a(0) += lambda * (wd0(1) + w0(0) * w0(2));
     a(1) += lambda * (w0(1) * w0(2) - wd0(0));
     a(2) -= lambda * (w0(0) * w0(0) + w0(1) * w0(1));
@@ -242,26 +245,11 @@ ArmGeometryT<T> geometryAs(const ArmGeometry& geo) {
           T(geo.lu5), T(geo.lf6), T(geo.thf7), T(geo.lf8)};
 }
 
-/// One DH row with a generic translation lambda (always applied, even when it is zero) and no
-/// Tx offset: propagate() for rows whose lambda or gamma is a calibration unknown.
+/// One DH row whose lambda or gamma is a calibration unknown (no Tx offset).
 template <typename T>
 FrameState<T> propagateGeneric(const FrameState<T>& prev, const T& c, const T& s, const T& gammaDot,
                                const T& gammaDDot, const T& lambda, double beta) {
-  using Vec3 = Eigen::Matrix<T, 3, 1>;
-  const Vec3& w0 = prev.omega;
-  const Vec3& wd0 = prev.omegaDot;
-  const Vec3 w(w0(0), w0(1), w0(2) + gammaDot);
-  const Vec3 wd(wd0(0) + w0(1) * gammaDot, wd0(1) - w0(0) * gammaDot, wd0(2) + gammaDDot);
-  Vec3 a = prev.accel;
-  a(0) += lambda * (wd0(1) + w0(0) * w0(2));
-  a(1) += lambda * (w0(1) * w0(2) - wd0(0));
-  a(2) -= lambda * (w0(0) * w0(0) + w0(1) * w0(1));
-  FrameState<T> next;
-  next.omega = detail::toChild(w, c, s, beta);
-  next.omegaDot = detail::toChild(wd, c, s, beta);
-  next.accel = detail::toChild(a, c, s, beta);
-  next.up = detail::toChild(prev.up, c, s, beta);
-  return next;
+  return propagate<T, T, T>(prev, c, s, gammaDot, gammaDDot, lambda, beta, 0.0);
 }
 
 /// Frame 3 (the upper arm after the three shoulder rows), shared by every sensor.
