@@ -2,17 +2,19 @@
 // (temporary file beside the target, renamed into place on commit) or streamed to an ostream.
 #pragma once
 
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <ostream>
+#include <stdexcept>
 #include <string>
+
+#include "core/io/AtomicFile.h"
 
 namespace armtrack::cli {
 
 /// Writes a header line and rows "t,v0,v1,..." of doubles in their shortest round-trip form.
-/// With a target, rows go to a temporary file ".<name>.tmp-<random hex>" beside it that commit()
-/// renames into place; without commit() the temporary file is removed. Without a target, rows go
+/// With a target, rows go through an AtomicFile (core/io/AtomicFile.h): commit() puts the whole
+/// file in place, without it the target is untouched. Without a target, rows go
 /// to *out. Errors throw std::runtime_error naming the file.
 class CsvOutput {
  public:
@@ -30,14 +32,20 @@ class CsvOutput {
 
  private:
   void flush();
-  [[noreturn]] void fail(const std::string& message, int err) const;
+  /// Runs a file step; a failure becomes std::runtime_error "<target>: <what went wrong>".
+  template <typename F>
+  static void guarded(F&& step) {
+    try {
+      step();
+    } catch (const AtomicFileError& e) {
+      throw std::runtime_error(e.what());
+    }
+  }
 
   std::ostream* m_out = nullptr;
   std::optional<std::filesystem::path> m_target;
-  std::filesystem::path m_tmp;
-  std::FILE* m_file = nullptr;
+  std::optional<AtomicFile> m_file;
   std::string m_buf;
-  bool m_committed = false;
 };
 
 }  // namespace armtrack::cli

@@ -7,9 +7,10 @@
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <sstream>
 #include <system_error>
+
+#include "core/io/AtomicFile.h"
 
 namespace armtrack {
 
@@ -161,30 +162,12 @@ void writeCalibration(const fs::path& path, const Calibration& c) {
   j["heldFixed"] = c.heldFixed;
   const std::string text = j.dump(2) + "\n";
 
-  // Temporary file beside the target, renamed into place once complete.
-  std::random_device rd;
-  fs::path tmp = path;
-  tmp.replace_filename("." + path.filename().string() + ".tmp-" + std::to_string(rd()));
-  {
-    errno = 0;
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) fail(path, "cannot create " + tmp.string() + ": " + osReason(errno));
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) {
-      const int e = errno;
-      out.close();
-      std::error_code ec;
-      fs::remove(tmp, ec);
-      fail(path, "write failed: " + osReason(e));
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ec2;
-    fs::remove(tmp, ec2);
-    fail(path, "cannot rename the temporary file into place: " + ec.message());
+  try {
+    AtomicFile out(path);
+    out.write(text);
+    out.commit();
+  } catch (const AtomicFileError& e) {
+    fail(path, e.message());
   }
 }
 

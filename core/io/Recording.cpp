@@ -10,9 +10,10 @@
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <string_view>
 #include <system_error>
+
+#include "core/io/AtomicFile.h"
 
 namespace armtrack {
 
@@ -393,67 +394,16 @@ std::pair<int, int> textPosition(std::string_view text, std::size_t byte) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Writing: into a temporary file beside the target, renamed over it only once complete.
-
-class TempFile {
- public:
-  explicit TempFile(const fs::path& target) : m_target(target) {
-    std::random_device rd;
-    const unsigned long long tag = (static_cast<unsigned long long>(rd()) << 32) ^ rd();
-    char hex[17];
-    const auto r = std::to_chars(hex, hex + 16, tag, 16);
-    m_tmp = target;
-    m_tmp.replace_filename("." + target.filename().string() + ".tmp-" + std::string(hex, r.ptr));
-    errno = 0;
-    m_out.open(m_tmp, std::ios::binary | std::ios::trunc);
-    if (!m_out) {
-      fail("cannot create temporary file " + inQuotes(m_tmp.string()) + ": " + osReason(errno));
-    }
+// Writing: through AtomicFile (a temporary file beside the target, renamed over it once
+// complete); its failures are reported as RecordingError on the file concerned.
+template <typename F>
+void reportingAsRecordingError(F&& write) {
+  try {
+    write();
+  } catch (const AtomicFileError& e) {
+    throw RecordingError(e.target().string(), 0, 0, e.message());
   }
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-
-  ~TempFile() {
-    if (m_out.is_open()) m_out.close();
-    if (!m_published) {
-      std::error_code ec;
-      fs::remove(m_tmp, ec);
-    }
-  }
-
-  void write(std::string_view data) {
-    errno = 0;
-    m_out.write(data.data(), static_cast<std::streamsize>(data.size()));
-    if (!m_out) fail("write failed: " + osReason(errno));
-  }
-
-  /// Flushes and closes; throws if any byte did not reach the OS.
-  void close() {
-    errno = 0;
-    m_out.flush();
-    if (!m_out) fail("write failed: " + osReason(errno));
-    m_out.close();
-    if (!m_out) fail("closing the file failed: " + osReason(errno));
-  }
-
-  /// Renames the finished temporary file to the target, replacing any old file.
-  void publish() {
-    std::error_code ec;
-    fs::rename(m_tmp, m_target, ec);
-    if (ec) fail("cannot rename " + inQuotes(m_tmp.string()) + " into place: " + ec.message());
-    m_published = true;
-  }
-
-  [[noreturn]] void fail(const std::string& message) const {
-    throw RecordingError(m_target.string(), 0, 0, message);
-  }
-
- private:
-  fs::path m_target;
-  fs::path m_tmp;
-  std::ofstream m_out;
-  bool m_published = false;
-};
+}
 
 std::string sidecarText(const RecordingMeta& meta) {
   using OJson = nlohmann::ordered_json;
@@ -516,7 +466,7 @@ std::string csvHeader(const std::array<bool, kNumGroups>& present) {
 }
 
 /// Writes the CSV into an open temporary file.
-void writeCsv(TempFile& out, const std::string& file, const Recording& rec) {
+void writeCsv(AtomicFile& out, const std::string& file, const Recording& rec) {
   std::array<bool, kNumGroups> present{};
   for (const ArmSample& s : rec.samples) {
     present[kUaGyr] |= s.upperArm.has_value();
@@ -710,23 +660,25 @@ RecordingMeta readSidecar(const fs::path& jsonPath) {
 
 void writeSidecar(const fs::path& jsonPath, const RecordingMeta& meta) {
   checkMetaWritable(jsonPath.string(), meta);
-  TempFile out(jsonPath);
-  out.write(sidecarText(meta));
-  out.close();
-  out.publish();
+  reportingAsRecordingError([&] {
+    AtomicFile out(jsonPath);
+    out.write(sidecarText(meta));
+    out.commit();
+  });
 }
 
 void writeRecording(const fs::path& csvPath, const Recording& recording) {
   const fs::path jsonPath = sidecarPath(csvPath);
   checkMetaWritable(jsonPath.string(), recording.meta);
-  TempFile csv(csvPath);
-  writeCsv(csv, csvPath.string(), recording);
-  csv.close();
-  TempFile json(jsonPath);
-  json.write(sidecarText(recording.meta));
-  json.close();
-  json.publish();
-  csv.publish();
+  reportingAsRecordingError([&] {
+    AtomicFile csv(csvPath);
+    writeCsv(csv, csvPath.string(), recording);
+    csv.finish();
+    AtomicFile json(jsonPath);
+    json.write(sidecarText(recording.meta));
+    json.commit();
+    csv.publish();
+  });
 }
 
 }  // namespace armtrack
