@@ -96,4 +96,17 @@ double Args::nonNegative(std::string_view name, double fallback) const {
   return v;
 }
 
+std::string Args::single(std::string_view what) const {
+  if (m_positionals.empty() || m_positionals[0].empty()) fail("missing " + std::string(what));
+  if (m_positionals.size() > 1) fail("unexpected argument " + inQuotes(m_positionals[1]));
+  return m_positionals[0];
+}
+
+std::string Args::required(std::string_view name) const {
+  const auto v = value(name);
+  if (!v) fail(std::string(name) + " is required");
+  if (v->empty()) fail(std::string(name) + ": missing value");
+  return *v;
+}
+
 }  // namespace armtrack::cli

@@ -47,6 +47,12 @@ class Args {
   /// The option as a non-negative integer, or fallback when absent.
   std::uint64_t integer(std::string_view name, std::uint64_t fallback) const;
 
+  /// The one positional argument; UsageError "missing <what>" when there is none (or it is
+  /// empty), "unexpected argument '...'" when there are more.
+  std::string single(std::string_view what) const;
+  /// The option's value; UsageError when the option is absent or its value empty.
+  std::string required(std::string_view name) const;
+
   /// Range checks: throw UsageError("--name: must be > 0, got 0").
   double positive(std::string_view name, double fallback) const;
   double nonNegative(std::string_view name, double fallback) const;

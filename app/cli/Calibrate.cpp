@@ -64,14 +64,8 @@ int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, st
     out << kCalibrateHelp;
     return 0;
   }
-  if (a.positionals().empty()) a.fail("missing the recording to read (calibrate REC.csv)");
-  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
-  const fs::path input = a.positionals()[0];
-  if (input.empty()) a.fail("missing the recording to read (calibrate REC.csv)");
-  const auto outValue = a.value("--out");
-  if (!outValue) a.fail("--out is required");
-  if (outValue->empty()) a.fail("--out: missing value");
-  const fs::path outPath = *outValue;
+  const fs::path input = a.single("the recording to read (calibrate REC.csv)");
+  const fs::path outPath = a.required("--out");
   if (samePath(outPath, input) || samePath(outPath, sidecarPath(input)))
     a.fail("--out: " + inQuotes(outPath.string()) + " would overwrite the recording");
 

@@ -132,13 +132,6 @@ FilterKind parseFilter(const Args& a) {
   a.fail("--filter: expected ekf or ukf, got " + inQuotes(*v));
 }
 
-std::string requiredPath(const Args& a, std::string_view name) {
-  const auto v = a.value(name);
-  if (!v) a.fail(std::string(name) + " is required");
-  if (v->empty()) a.fail(std::string(name) + ": missing value");
-  return *v;
-}
-
 void noPositionals(const Args& a) {
   if (!a.positionals().empty()) a.fail("unexpected argument " + inQuotes(a.positionals()[0]));
 }
@@ -162,8 +155,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     return 0;
   }
   noPositionals(a);
-  const std::string name = requiredPath(a, "--trajectory");
-  const fs::path outPath = requiredPath(a, "--out");
+  const std::string name = a.required("--trajectory");
+  const fs::path outPath = a.required("--out");
 
   SimulationParams sim = defaultSimulation();
   // The calibration protocol has its own length; everything else defaults to 10 s.
@@ -253,9 +246,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     out << kEstimateHelp;
     return 0;
   }
-  if (a.positionals().empty()) a.fail("missing the recording to read (estimate REC.csv)");
-  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
-  const fs::path input = a.positionals()[0];
+  const fs::path input = a.single("the recording to read (estimate REC.csv)");
 
   const bool taoHu = a.value("--method") == std::optional<std::string>("tao-hu");
   EstimateOptions opt;
@@ -272,7 +263,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (a.flag("--joint-accel-std")) opt.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
   std::optional<fs::path> outPath;
   if (a.flag("--out")) {
-    outPath = requiredPath(a, "--out");
+    outPath = a.required("--out");
     if (samePath(*outPath, input) || samePath(*outPath, sidecarPath(input)))
       a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the recording");
   }
@@ -281,7 +272,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
   Recording rec = readRecording(input);
   for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
-  if (a.flag("--calibration")) applyCalibrationFile(requiredPath(a, "--calibration"), rec, err);
+  if (a.flag("--calibration")) applyCalibrationFile(a.required("--calibration"), rec, err);
   std::size_t imuRows = 0;
   for (const ArmSample& s : rec.samples) imuRows += s.hasImu();
   if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
@@ -359,9 +350,7 @@ int study(const std::vector<std::string>& args, std::ostream& out, std::ostream&
     return 0;
   }
   constexpr std::string_view kStudies = "table6, fig5, fig7, fig8 or sensors";
-  if (a.positionals().empty()) a.fail("missing the study to run: " + std::string(kStudies));
-  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
-  const std::string& which = a.positionals()[0];
+  const std::string which = a.single("the study to run: " + std::string(kStudies));
   if (which != "table6" && which != "fig5" && which != "fig7" && which != "fig8" &&
       which != "sensors")
     a.fail("unknown study " + inQuotes(which) + ": expected " + std::string(kStudies));

@@ -196,10 +196,7 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
     out << kOrientationHelp;
     return 0;
   }
-  if (a.positionals().empty()) a.fail("missing the IMU file to read (orientation IMU.csv)");
-  if (a.positionals().size() > 1) a.fail("unexpected argument " + inQuotes(a.positionals()[1]));
-  const fs::path input = a.positionals()[0];
-  if (input.empty()) a.fail("missing the IMU file to read (orientation IMU.csv)");
+  const fs::path input = a.single("the IMU file to read (orientation IMU.csv)");
 
   OrientationParams params;
   params.tauAcc = a.positive("--tau-acc", params.tauAcc);
