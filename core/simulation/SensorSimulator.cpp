@@ -57,7 +57,9 @@ Clock makeClock(bool enabled, double rateHz, double duration) {
   c.active = true;
   c.rate = rateHz;
   // The tiny slack keeps a sample that lands on the duration despite rounding of duration*rate.
-  c.count = static_cast<std::size_t>(std::floor(duration * rateHz + 1e-9)) + 1;
+  c.count = std::isfinite(duration)
+                ? static_cast<std::size_t>(std::floor(duration * rateHz + 1e-9)) + 1
+                : std::numeric_limits<std::size_t>::max();
   return c;
 }
 
@@ -115,8 +117,11 @@ SimulationParams defaultSimulation() {
   return p;
 }
 
-Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params) {
-  checkNonNegative(params.duration, "duration");
+namespace {
+
+void checkParams(const SimulationParams& params) {
+  if (!(params.duration >= 0.0) || std::isnan(params.duration))
+    throw std::invalid_argument("simulateRecording: duration must be >= 0");
   checkImu(params.upperArm, "upper-arm IMU");
   checkImu(params.forearm, "forearm IMU");
   if (params.kinect.enabled) {
@@ -125,7 +130,6 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
     checkNonNegative(params.kinect.noiseStd, "Kinect noise std");
   }
   const CameraSimParams& cam = params.webcam;
-  std::optional<PinholeCamera> camera;
   if (cam.enabled) {
     if (!(cam.rateHz > 0.0) || !std::isfinite(cam.rateHz))
       throw std::invalid_argument("simulateRecording: webcam rate must be > 0");
@@ -134,38 +138,49 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
       throw std::invalid_argument("simulateRecording: outlier probability must be in [0, 1]");
     if (cam.width <= 0 || cam.height <= 0)
       throw std::invalid_argument("simulateRecording: webcam image size must be positive");
-    camera.emplace(cam.camera);  // throws on bad intrinsics or a non-rotation
   }
   if (!std::isfinite(params.g) || std::abs(params.up.norm() - 1.0) > 1e-6)
     throw std::invalid_argument("simulateRecording: up must be a unit vector and g finite");
+}
 
-  Recording rec;
-  rec.meta.geometry = params.geometry;
-  rec.meta.up = params.up;
-  rec.meta.g = params.g;
-  rec.meta.side = params.side;
-  if (camera) rec.meta.camera = cam.camera;
-  const bool left = params.side == Side::Left;
+}  // namespace
 
-  const ImuSimParams& up = params.upperArm;
-  const ImuSimParams& fa = params.forearm;
-  // Both IMUs on one clock when they share a rate, else each on its own.
-  const bool shared = up.enabled && fa.enabled && up.rateHz == fa.rateHz;
-  Clock upperClock = makeClock(up.enabled, up.rateHz, params.duration);
-  Clock forearmClock = makeClock(fa.enabled && !shared, fa.rateHz, params.duration);
-  Clock kinectClock = makeClock(params.kinect.enabled, params.kinect.rateHz, params.duration);
-  Clock cameraClock = makeClock(cam.enabled, cam.rateHz, params.duration);
-  rec.samples.reserve(upperClock.count + forearmClock.count + kinectClock.count +
-                      cameraClock.count);
+struct SensorStream::Impl {
+  Impl(const Trajectory& traj, const SimulationParams& p)
+      : trajectory(&traj),
+        params(p),
+        upperNoise(p.seed, NoiseStream::kUpperArm),
+        forearmNoise(p.seed, NoiseStream::kForearm),
+        kinectNoise(p.seed, NoiseStream::kKinect),
+        cameraNoise(p.seed, NoiseStream::kCamera) {
+    checkParams(p);
+    if (p.webcam.enabled) camera.emplace(p.webcam.camera);  // throws on bad intrinsics
+    meta.geometry = p.geometry;
+    meta.up = p.up;
+    meta.g = p.g;
+    meta.side = p.side;
+    if (camera) meta.camera = p.webcam.camera;
+    left = p.side == Side::Left;
+    // Both IMUs on one clock when they share a rate, else each on its own.
+    shared = p.upperArm.enabled && p.forearm.enabled && p.upperArm.rateHz == p.forearm.rateHz;
+    upperClock = makeClock(p.upperArm.enabled, p.upperArm.rateHz, p.duration);
+    forearmClock = makeClock(p.forearm.enabled && !shared, p.forearm.rateHz, p.duration);
+    kinectClock = makeClock(p.kinect.enabled, p.kinect.rateHz, p.duration);
+    cameraClock = makeClock(p.webcam.enabled, p.webcam.rateHz, p.duration);
+    // A left arm is simulated as its right-arm mirror image, then mirrored back sample by sample.
+    gUp = p.g * (left ? mirrorPoint(p.up) : p.up);
+  }
 
-  Noise upperNoise(params.seed, NoiseStream::kUpperArm);
-  Noise forearmNoise(params.seed, NoiseStream::kForearm);
-  Noise kinectNoise(params.seed, NoiseStream::kKinect);
-  Noise cameraNoise(params.seed, NoiseStream::kCamera);
+  double nextTime() const {
+    return std::min({upperClock.nextTime(), forearmClock.nextTime(), kinectClock.nextTime(),
+                     cameraClock.nextTime()});
+  }
+
   // One marker's pixel: the projection plus noise, a uniform outlier, or nothing when the marker
   // is outside the image. The draws are made every time, so the stream does not depend on
   // visibility.
-  auto markerPixel = [&](const Eigen::Vector3d& p) -> std::optional<Eigen::Vector2d> {
+  std::optional<Eigen::Vector2d> markerPixel(const Eigen::Vector3d& p) {
+    const CameraSimParams& cam = params.webcam;
     const Eigen::Vector3d n = cameraNoise.vec3(cam.noiseStdPx);
     const double pick = cameraNoise.uniform();
     const Eigen::Vector2d anywhere(cameraNoise.uniform() * cam.width,
@@ -175,31 +190,27 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
     if (px.x() < 0 || px.y() < 0 || px.x() > cam.width || px.y() > cam.height) return std::nullopt;
     if (pick < cam.outlierProbability) return anywhere;
     return px + n.head<2>();
-  };
-  // A left arm is simulated as its right-arm mirror image, then mirrored back sample by sample.
-  const Eigen::Vector3d gUp = params.g * (left ? mirrorPoint(params.up) : params.up);
+  }
 
-  // Merge the clocks: each row is the earliest pending time; every clock due at exactly that time
-  // contributes to the same row.
-  for (;;) {
-    const double t = std::min({upperClock.nextTime(), forearmClock.nextTime(),
-                               kinectClock.nextTime(), cameraClock.nextTime()});
-    if (!std::isfinite(t)) break;
+  // Each row is the earliest pending time; every clock due at exactly that time contributes to
+  // the same row.
+  std::optional<ArmSample> next() {
+    const double t = nextTime();
+    if (!std::isfinite(t)) return std::nullopt;
     const bool upperDue = upperClock.nextTime() == t;
     const bool forearmDue = shared ? upperDue : forearmClock.nextTime() == t;
     const bool kinectDue = kinectClock.nextTime() == t;
     const bool cameraDue = cameraClock.nextTime() == t;
-
-    const JointMotion m = trajectory.at(t);
+    const JointMotion m = trajectory->at(t);
     const ArmPrediction ideal = predictSensors(params.geometry, m.th, m.thd, m.thdd, gUp);
-    ArmSample& s = rec.samples.emplace_back();
+    ArmSample s;
     s.t = t;
     if (upperDue) {
-      s.upperArm = simulateImu(ideal.upper, up, upperNoise);
+      s.upperArm = simulateImu(ideal.upper, params.upperArm, upperNoise);
       ++upperClock.next;
     }
     if (forearmDue) {
-      s.forearm = simulateImu(ideal.forearm, fa, forearmNoise);
+      s.forearm = simulateImu(ideal.forearm, params.forearm, forearmNoise);
       if (!shared) ++forearmClock.next;
     }
     if (kinectDue) {
@@ -217,11 +228,52 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
       // The camera sees the real arm: a left arm's points in its own shoulder frame.
       const Eigen::Vector3d wrist = left ? mirrorPoint(ideal.wrist) : ideal.wrist;
       const Eigen::Vector3d elbow = left ? mirrorPoint(ideal.elbow) : ideal.elbow;
-      if (cam.wrist) s.camWrist = markerPixel(wrist);
-      if (cam.elbow) s.camElbow = markerPixel(elbow);
+      if (params.webcam.wrist) s.camWrist = markerPixel(wrist);
+      if (params.webcam.elbow) s.camElbow = markerPixel(elbow);
       ++cameraClock.next;
     }
+    return s;
   }
+
+  const Trajectory* trajectory;
+  SimulationParams params;
+  std::optional<PinholeCamera> camera;
+  RecordingMeta meta;
+  bool left = false, shared = false;
+  Clock upperClock, forearmClock, kinectClock, cameraClock;
+  Noise upperNoise, forearmNoise, kinectNoise, cameraNoise;
+  Eigen::Vector3d gUp;
+};
+
+SensorStream::SensorStream(const Trajectory& trajectory, const SimulationParams& params)
+    : m(std::make_unique<Impl>(trajectory, params)) {}
+SensorStream::~SensorStream() = default;
+SensorStream::SensorStream(SensorStream&&) noexcept = default;
+SensorStream& SensorStream::operator=(SensorStream&&) noexcept = default;
+double SensorStream::nextTime() const {
+  return m->nextTime();
+}
+std::optional<ArmSample> SensorStream::next() {
+  return m->next();
+}
+const RecordingMeta& SensorStream::meta() const {
+  return m->meta;
+}
+
+Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params) {
+  if (!std::isfinite(params.duration))
+    throw std::invalid_argument("simulateRecording: duration must be finite");
+  SensorStream stream(trajectory, params);
+  Recording rec;
+  rec.meta = stream.meta();
+  const auto count = [&](bool on, double rate) {
+    return on ? static_cast<std::size_t>(params.duration * rate) + 1 : 0;
+  };
+  rec.samples.reserve(count(params.upperArm.enabled, params.upperArm.rateHz) +
+                      count(params.forearm.enabled, params.forearm.rateHz) +
+                      count(params.kinect.enabled, params.kinect.rateHz) +
+                      count(params.webcam.enabled, params.webcam.rateHz));
+  while (auto s = stream.next()) rec.samples.push_back(std::move(*s));
   return rec;
 }
 

@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <memory>
+#include <optional>
 
 #include "core/io/Recording.h"
 #include "core/simulation/Trajectory.h"
@@ -78,6 +80,31 @@ SimulationParams defaultSimulation();
 /// std::invalid_argument on bad parameters (rate <= 0, negative std or duration, up not a unit
 /// vector, misalignment not a rotation).
 Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params);
+
+/// The same simulation, one row at a time, for live sources (the virtual-arm device). With an
+/// infinite duration it never ends. simulateRecording(t, p).samples equals the rows next() returns
+/// for the same trajectory and parameters. The trajectory must outlive the stream. Not
+/// thread-safe.
+class SensorStream {
+ public:
+  /// Throws std::invalid_argument on bad parameters, as simulateRecording does. The duration may
+  /// be +infinity.
+  SensorStream(const Trajectory& trajectory, const SimulationParams& params);
+  ~SensorStream();
+  SensorStream(SensorStream&&) noexcept;
+  SensorStream& operator=(SensorStream&&) noexcept;
+
+  /// Time (s) of the row next() will return; +infinity when the stream has ended.
+  double nextTime() const;
+  /// The next row in time order, or nothing once past the duration.
+  std::optional<ArmSample> next();
+  /// The sidecar of the simulated recording (geometry, up, g, side, camera).
+  const RecordingMeta& meta() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m;
+};
 
 /// Rotation about a random axis by angleRad, drawn from seed: a misalignment perturbation.
 Eigen::Matrix3d randomMisalignment(double angleRad, std::uint64_t seed);

@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <optional>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -589,6 +591,53 @@ TEST(Simulator, TenMinutesAtOneKilohertz) {
 #ifdef NDEBUG
   EXPECT_LT(seconds, 5.0);  // generous: the machine may be shared
 #endif
+}
+
+TEST(SensorStream, EndlessStreamStartsLikeAFiniteRecording) {
+  // A live source runs without an end: its rows must be those of a finite recording with the same
+  // seed, sensors and rates (all four sensors, rates that do not divide each other).
+  const MultiJointTrajectory traj(3);
+  SimulationParams p = defaultSimulation();
+  p.duration = 2.0;
+  p.forearm.rateHz = 400.0;
+  p.webcam.enabled = true;
+  const Recording rec = simulateRecording(traj, p);
+  p.duration = std::numeric_limits<double>::infinity();
+  SensorStream stream(traj, p);
+  for (const ArmSample& want : rec.samples) {
+    ASSERT_EQ(stream.nextTime(), want.t);
+    const std::optional<ArmSample> got = stream.next();
+    ASSERT_TRUE(got.has_value());
+    EXPECT_EQ(got->t, want.t);
+    ASSERT_EQ(got->upperArm.has_value(), want.upperArm.has_value());
+    if (want.upperArm) EXPECT_EQ(got->upperArm->acc, want.upperArm->acc);
+    ASSERT_EQ(got->forearm.has_value(), want.forearm.has_value());
+    if (want.forearm) EXPECT_EQ(got->forearm->gyr, want.forearm->gyr);
+    ASSERT_EQ(got->wrist.has_value(), want.wrist.has_value());
+    if (want.wrist) EXPECT_EQ(*got->wrist, *want.wrist);
+    ASSERT_EQ(got->camWrist.has_value(), want.camWrist.has_value());
+    if (want.camWrist) EXPECT_EQ(*got->camWrist, *want.camWrist);
+  }
+  // And it goes on past the finite recording's end.
+  EXPECT_GT(stream.nextTime(), 2.0);
+  EXPECT_TRUE(std::isfinite(stream.nextTime()));
+  EXPECT_EQ(stream.meta().camera.has_value(), true);
+}
+
+TEST(SensorStream, FiniteStreamEndsAndRecordingRefusesInfinity) {
+  const MultiJointTrajectory traj(1);
+  SimulationParams p = defaultSimulation();
+  p.duration = 0.01;
+  SensorStream stream(traj, p);
+  int rows = 0;
+  while (stream.next()) ++rows;
+  EXPECT_EQ(rows, 11);  // IMU rows at 0, 1, ..., 10 ms; the Kinect's first frame shares t = 0
+  EXPECT_FALSE(std::isfinite(stream.nextTime()));
+  EXPECT_FALSE(stream.next().has_value());
+  p.duration = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(simulateRecording(traj, p), std::invalid_argument);
+  p.duration = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(SensorStream(traj, p), std::invalid_argument);
 }
 
 }  // namespace
