@@ -24,6 +24,7 @@ struct ArmSample {
   std::optional<Eigen::Vector2d> camWrist;  ///< wrist marker pixel (u, v)
   std::optional<Eigen::Vector2d> camElbow;  ///< elbow marker pixel (u, v)
   std::optional<JointVector> trueAngles;    ///< known true joint angles (rad), simulations
+  std::optional<JointVector> estimate;      ///< angles a live session estimated (rad), if recorded
 
   bool hasImu() const { return upperArm.has_value() || forearm.has_value(); }
 };

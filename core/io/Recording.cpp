@@ -8,7 +8,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstring>
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string_view>
 #include <system_error>
@@ -41,8 +45,19 @@ constexpr int kFormatVersion = 1;
 // ---------------------------------------------------------------------------------------------
 // Column groups. Every group is all-or-nothing on a row; slot 0 of a row is the time.
 
-enum Group { kUaGyr, kUaAcc, kFaGyr, kFaAcc, kElbow, kWrist, kCamWrist, kCamElbow, kTruth };
-constexpr int kNumGroups = 9;
+enum Group {
+  kUaGyr,
+  kUaAcc,
+  kFaGyr,
+  kFaAcc,
+  kElbow,
+  kWrist,
+  kCamWrist,
+  kCamElbow,
+  kTruth,
+  kEstimate
+};
+constexpr int kNumGroups = 10;
 
 struct GroupDef {
   std::string_view label;  // for messages
@@ -62,8 +77,9 @@ constexpr std::array<GroupDef, kNumGroups> kGroups{{
     {"wrist marker pixel", 2, {"cam_wrist_u", "cam_wrist_v"}, 19},
     {"elbow marker pixel", 2, {"cam_elbow_u", "cam_elbow_v"}, 21},
     {"true joint angles", 5, {"true_th0", "true_th1", "true_th2", "true_th4", "true_th5"}, 23},
+    {"estimated joint angles", 5, {"est_th0", "est_th1", "est_th2", "est_th4", "est_th5"}, 28},
 }};
-constexpr int kNumSlots = 28;
+constexpr int kNumSlots = 33;
 
 std::string osReason(int err) {
   return err != 0 ? std::generic_category().message(err) : std::string("unknown I/O error");
@@ -222,12 +238,14 @@ class CsvParser {
       if (present[kWrist]) s.wrist = vec3(kWrist);
       if (present[kCamWrist]) s.camWrist = vec2(kCamWrist);
       if (present[kCamElbow]) s.camElbow = vec2(kCamElbow);
-      if (present[kTruth]) {
-        const int k = kGroups[kTruth].firstSlot;
+      auto joints = [&](Group g) {
+        const int k = kGroups[g].firstSlot;
         JointVector th;
         th << v[k], v[k + 1], v[k + 2], v[k + 3], v[k + 4];
-        s.trueAngles = th;
-      }
+        return th;
+      };
+      if (present[kTruth]) s.trueAngles = joints(kTruth);
+      if (present[kEstimate]) s.estimate = joints(kEstimate);
     }
     return samples;
   }
@@ -465,87 +483,110 @@ std::string csvHeader(const std::array<bool, kNumGroups>& present) {
   return h;
 }
 
+using GroupSet = std::array<bool, kNumGroups>;
+
+GroupSet groupsOf(const ArmSample& s) {
+  GroupSet g{};
+  g[kUaGyr] = g[kUaAcc] = s.upperArm.has_value();
+  g[kFaGyr] = g[kFaAcc] = s.forearm.has_value();
+  g[kElbow] = s.elbow.has_value();
+  g[kWrist] = s.wrist.has_value();
+  g[kCamWrist] = s.camWrist.has_value();
+  g[kCamElbow] = s.camElbow.has_value();
+  g[kTruth] = s.trueAngles.has_value();
+  g[kEstimate] = s.estimate.has_value();
+  return g;
+}
+
+std::string fileHeader(const GroupSet& present) {
+  return "# ArmTrack recording, format version 1\n" + csvHeader(present) + "\n";
+}
+
+/// Appends one CSV row for the columns in `present`. `prevT` is the previous row's time (NaN for
+/// the first row). Throws RecordingError for non-finite values, decreasing time, or a sensor the
+/// columns do not hold.
+void appendRow(std::string& buf, const GroupSet& present, const ArmSample& s, double prevT,
+               const std::string& file, int line) {
+  if (!std::isfinite(s.t)) {
+    throw RecordingError(file, line, 1, "cannot write non-finite time " + formatDouble(s.t));
+  }
+  if (s.t < prevT) {
+    throw RecordingError(
+        file, line, 1,
+        "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT));
+  }
+  std::array<double, kNumSlots> v{};
+  const GroupSet has = groupsOf(s);
+  auto put = [&](Group g, const auto& x) {
+    for (int k = 0; k < kGroups[g].size; ++k) v[kGroups[g].firstSlot + k] = x[k];
+  };
+  if (s.upperArm) {
+    put(kUaGyr, s.upperArm->gyr);
+    put(kUaAcc, s.upperArm->acc);
+  }
+  if (s.forearm) {
+    put(kFaGyr, s.forearm->gyr);
+    put(kFaAcc, s.forearm->acc);
+  }
+  if (s.elbow) put(kElbow, *s.elbow);
+  if (s.wrist) put(kWrist, *s.wrist);
+  if (s.camWrist) put(kCamWrist, *s.camWrist);
+  if (s.camElbow) put(kCamElbow, *s.camElbow);
+  if (s.trueAngles) put(kTruth, *s.trueAngles);
+  if (s.estimate) put(kEstimate, *s.estimate);
+
+  const std::size_t rowStart = buf.size();
+  char tbuf[32];
+  const auto tr = std::to_chars(tbuf, tbuf + sizeof tbuf, s.t);
+  buf.append(tbuf, tr.ptr);
+  int column = 1;
+  for (int g = 0; g < kNumGroups; ++g) {
+    const GroupDef& def = kGroups[g];
+    if (!present[g]) {
+      if (has[g]) {
+        buf.resize(rowStart);
+        throw RecordingError(file, line, 1,
+                             "cannot write the " + std::string(def.label) +
+                                 ": the recording has no columns for it");
+      }
+      continue;
+    }
+    if (!has[g]) {
+      buf.append(static_cast<std::size_t>(def.size), ',');
+      column += def.size;
+      continue;
+    }
+    for (int k = 0; k < def.size; ++k) {
+      const double x = v[def.firstSlot + k];
+      ++column;
+      if (!std::isfinite(x)) {
+        buf.resize(rowStart);
+        throw RecordingError(file, line, column,
+                             "cannot write non-finite value " + formatDouble(x) + " in column " +
+                                 inQuotes(def.columns[k]));
+      }
+      appendNumber(buf, x);
+    }
+  }
+  buf += '\n';
+}
+
 /// Writes the CSV into an open temporary file.
 void writeCsv(AtomicFile& out, const std::string& file, const Recording& rec) {
-  std::array<bool, kNumGroups> present{};
+  GroupSet present{};
   for (const ArmSample& s : rec.samples) {
-    present[kUaGyr] |= s.upperArm.has_value();
-    present[kFaGyr] |= s.forearm.has_value();
-    present[kElbow] |= s.elbow.has_value();
-    present[kWrist] |= s.wrist.has_value();
-    present[kCamWrist] |= s.camWrist.has_value();
-    present[kCamElbow] |= s.camElbow.has_value();
-    present[kTruth] |= s.trueAngles.has_value();
+    const GroupSet g = groupsOf(s);
+    for (int k = 0; k < kNumGroups; ++k) present[k] = present[k] || g[k];
   }
-  present[kUaAcc] = present[kUaGyr];
-  present[kFaAcc] = present[kFaGyr];
-
   constexpr std::size_t kFlushAt = std::size_t{1} << 20;
   std::string buf;
   buf.reserve(kFlushAt + 4096);
-  buf += "# ArmTrack recording, format version 1\n";
-  buf += csvHeader(present);
-  buf += '\n';
-
+  buf += fileHeader(present);
   constexpr int kFirstRowLine = 3;  // comment, header
-  std::array<double, kNumSlots> v{};
-  double prevT = 0.0;
+  double prevT = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < rec.samples.size(); ++i) {
-    const ArmSample& s = rec.samples[i];
-    const int line = kFirstRowLine + static_cast<int>(i);
-    if (!std::isfinite(s.t)) {
-      throw RecordingError(file, line, 1, "cannot write non-finite time " + formatDouble(s.t));
-    }
-    if (i > 0 && s.t < prevT) {
-      throw RecordingError(
-          file, line, 1,
-          "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT));
-    }
-    prevT = s.t;
-
-    std::array<bool, kNumGroups> has{};
-    auto put = [&](Group g, const auto& x) {
-      has[g] = true;
-      for (int k = 0; k < kGroups[g].size; ++k) v[kGroups[g].firstSlot + k] = x[k];
-    };
-    if (s.upperArm) {
-      put(kUaGyr, s.upperArm->gyr);
-      put(kUaAcc, s.upperArm->acc);
-    }
-    if (s.forearm) {
-      put(kFaGyr, s.forearm->gyr);
-      put(kFaAcc, s.forearm->acc);
-    }
-    if (s.elbow) put(kElbow, *s.elbow);
-    if (s.wrist) put(kWrist, *s.wrist);
-    if (s.camWrist) put(kCamWrist, *s.camWrist);
-    if (s.camElbow) put(kCamElbow, *s.camElbow);
-    if (s.trueAngles) put(kTruth, *s.trueAngles);
-
-    char tbuf[32];
-    const auto tr = std::to_chars(tbuf, tbuf + sizeof tbuf, s.t);
-    buf.append(tbuf, tr.ptr);
-    int column = 1;
-    for (int g = 0; g < kNumGroups; ++g) {
-      if (!present[g]) continue;
-      const GroupDef& def = kGroups[g];
-      if (!has[g]) {
-        buf.append(static_cast<std::size_t>(def.size), ',');
-        column += def.size;
-        continue;
-      }
-      for (int k = 0; k < def.size; ++k) {
-        const double x = v[def.firstSlot + k];
-        ++column;
-        if (!std::isfinite(x)) {
-          throw RecordingError(file, line, column,
-                               "cannot write non-finite value " + formatDouble(x) + " in column " +
-                                   inQuotes(def.columns[k]));
-        }
-        appendNumber(buf, x);
-      }
-    }
-    buf += '\n';
+    appendRow(buf, present, rec.samples[i], prevT, file, kFirstRowLine + static_cast<int>(i));
+    prevT = rec.samples[i].t;
     if (buf.size() >= kFlushAt) {
       out.write(buf);
       buf.clear();
@@ -568,8 +609,97 @@ Recording readRecording(const fs::path& csvPath) {
   }
   const std::string text = readWholeFile(csvPath);
   const auto lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-  rec.samples = CsvParser(csvPath.string(), text).parse(lines + 1);
+  try {
+    rec.samples = CsvParser(csvPath.string(), text).parse(lines + 1);
+  } catch (const RecordingError& e) {
+    // A session killed while writing leaves its last line cut short: drop that line alone.
+    const bool cutShort = !text.empty() && text.back() != '\n' &&
+                          e.line() == static_cast<int>(lines) + 1 && lines >= 2;
+    if (!cutShort) throw;
+    const std::string_view whole(text.data(), text.rfind('\n') + 1);
+    rec.samples = CsvParser(csvPath.string(), whole).parse(lines);
+    rec.warnings.push_back("line " + std::to_string(e.line()) +
+                           " was cut short (the recording was interrupted) and is ignored");
+  }
   return rec;
+}
+
+RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& meta,
+                                 const RecordingColumns& c)
+    : m_path(csvPath), m_prevT(std::numeric_limits<double>::quiet_NaN()) {
+  static_assert(std::tuple_size_v<decltype(m_present)> == kNumGroups);
+  m_present[kUaGyr] = m_present[kUaAcc] = c.upperArm;
+  m_present[kFaGyr] = m_present[kFaAcc] = c.forearm;
+  m_present[kElbow] = c.elbow;
+  m_present[kWrist] = c.wrist;
+  m_present[kCamWrist] = c.camWrist;
+  m_present[kCamElbow] = c.camElbow;
+  m_present[kTruth] = c.truth;
+  m_present[kEstimate] = c.estimate;
+  writeSidecar(sidecarPath(csvPath), meta);
+  m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (m_fd < 0)
+    throw RecordingError(csvPath.string(), 0, 0, "cannot create the file: " + osReason(errno));
+  m_buf = fileHeader(m_present);
+  flush();
+}
+
+RecordingWriter::~RecordingWriter() {
+  if (m_fd < 0) return;
+  try {
+    sync();
+  } catch (const RecordingError&) {
+    // Nothing more can be done here; the caller that wanted to know calls close().
+  }
+  ::close(m_fd);
+}
+
+void RecordingWriter::append(const ArmSample& sample) {
+  if (m_fd < 0) throw RecordingError(m_path.string(), 0, 0, "the recording is closed");
+  appendRow(m_buf, m_present, sample, m_prevT, m_path.string(), static_cast<int>(m_rows) + 3);
+  m_prevT = sample.t;
+  ++m_rows;
+}
+
+void RecordingWriter::writeAll(std::string_view data, std::size_t& written) {
+  while (!data.empty()) {
+    const ssize_t n = ::write(m_fd, data.data(), data.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      throw RecordingError(m_path.string(), 0, 0,
+                           "cannot write (" + osReason(n < 0 ? errno : ENOSPC) +
+                               "); free some disk space or choose another folder");
+    }
+    data.remove_prefix(static_cast<std::size_t>(n));
+    written += static_cast<std::size_t>(n);
+  }
+}
+
+void RecordingWriter::flush() {
+  if (m_fd < 0) throw RecordingError(m_path.string(), 0, 0, "the recording is closed");
+  // What could not be written stays buffered for the next attempt, so a retry after freeing space
+  // completes the file; a row cut by the failure is completed by that retry (or dropped by the
+  // reader if none comes).
+  std::size_t written = 0;
+  try {
+    writeAll(m_buf, written);
+  } catch (...) {
+    m_buf.erase(0, written);
+    throw;
+  }
+  m_buf.clear();
+}
+
+void RecordingWriter::sync() {
+  flush();
+  if (::fsync(m_fd) != 0)
+    throw RecordingError(m_path.string(), 0, 0, "cannot force to disk: " + osReason(errno));
+}
+
+void RecordingWriter::close() {
+  sync();
+  ::close(m_fd);
+  m_fd = -1;
 }
 
 RecordingMeta readSidecar(const fs::path& jsonPath) {

@@ -3,6 +3,8 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
+#include <string_view>
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
@@ -62,6 +64,53 @@ Recording readRecording(const std::filesystem::path& csvPath);
 /// Writes the CSV and its sidecar. Only the sensors present in some sample get columns.
 /// Throws RecordingError when the file cannot be written (e.g. a full disk).
 void writeRecording(const std::filesystem::path& csvPath, const Recording& recording);
+
+/// The column groups a RecordingWriter writes (fixed when it opens).
+struct RecordingColumns {
+  bool upperArm = false, forearm = false;  ///< gyroscope and accelerometer of each IMU
+  bool elbow = false, wrist = false;       ///< optical positions
+  bool camWrist = false, camElbow = false;  ///< marker pixels
+  bool truth = false;                       ///< true_th*
+  bool estimate = false;                    ///< est_th*
+};
+
+/// Writes a recording row by row, for live sessions. The sidecar is written first (all or
+/// nothing); the CSV goes straight to its final name, so a session that is killed leaves a
+/// readable file up to the last flush (readRecording drops a last line cut short, with a
+/// warning). Throws RecordingError on every failure (a full disk, a removed folder), with the
+/// operating system's reason; rows appended before a failure that were flushed stay on disk.
+/// One thread at a time.
+class RecordingWriter {
+ public:
+  RecordingWriter(const std::filesystem::path& csvPath, const RecordingMeta& meta,
+                  const RecordingColumns& columns);
+  ~RecordingWriter();  ///< closes (and syncs) without throwing
+  RecordingWriter(const RecordingWriter&) = delete;
+  RecordingWriter& operator=(const RecordingWriter&) = delete;
+
+  /// Buffers one row. Throws for a non-finite value, a time before the previous row's, or a
+  /// sensor the columns do not hold; the row is then not written and the writer stays usable.
+  void append(const ArmSample& sample);
+  /// Writes the buffered rows to the file (no fsync).
+  void flush();
+  /// flush() and force the file to disk (fsync).
+  void sync();
+  /// sync() and close. Further calls throw.
+  void close();
+
+  std::uint64_t rows() const { return m_rows; }
+  const std::filesystem::path& path() const { return m_path; }
+
+ private:
+  void writeAll(std::string_view data, std::size_t& written);
+
+  std::filesystem::path m_path;
+  std::array<bool, 10> m_present{};
+  std::string m_buf;
+  int m_fd = -1;
+  double m_prevT;
+  std::uint64_t m_rows = 0;
+};
 
 /// The sidecar path for a CSV path: same name, extension .json.
 std::filesystem::path sidecarPath(const std::filesystem::path& csvPath);

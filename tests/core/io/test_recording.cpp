@@ -683,6 +683,128 @@ TEST_F(RecordingTest, FailedWriteKeepsTheOldFile) {
 #endif
 
 // ---------------------------------------------------------------------------------------------
+// RecordingWriter (live sessions)
+
+namespace {
+ArmSample liveRow(int i) {
+  ArmSample s;
+  s.t = 0.001 * i + 1e-7 / 3.0;  // not a short decimal: the round trip must be exact
+  s.upperArm = ImuReading{Eigen::Vector3d(0.1 / 3, -0.2, 0.3 * i), Eigen::Vector3d(9.81, 0.1, -0.2)};
+  if (i % 3 == 0) s.wrist = Eigen::Vector3d(0.2, 0.3 / 7, -0.1);
+  JointVector th;
+  th << 0.1, -0.2 / 3, 0.3, 1.0 / 7, -0.5;
+  s.trueAngles = th;
+  if (i > 0) s.estimate = th * 1.0001;
+  return s;
+}
+RecordingColumns liveColumns() {
+  RecordingColumns c;
+  c.upperArm = c.wrist = c.truth = c.estimate = true;
+  return c;
+}
+}  // namespace
+
+TEST_F(RecordingTest, WriterRowsReadBackBitExactWithEstimates) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingMeta meta;
+  meta.g = 9.80665;
+  {
+    RecordingWriter w(p, meta, liveColumns());
+    for (int i = 0; i < 500; ++i) w.append(liveRow(i));
+    w.close();
+    EXPECT_EQ(w.rows(), 500u);
+  }
+  const Recording rec = readRecording(p);
+  EXPECT_TRUE(rec.warnings.empty());
+  EXPECT_EQ(rec.meta.g, 9.80665);
+  ASSERT_EQ(rec.samples.size(), 500u);
+  for (int i = 0; i < 500; ++i) {
+    const ArmSample want = liveRow(i);
+    const ArmSample& got = rec.samples[static_cast<std::size_t>(i)];
+    EXPECT_EQ(got.t, want.t);
+    EXPECT_EQ(got.upperArm->gyr, want.upperArm->gyr);
+    EXPECT_EQ(got.wrist.has_value(), want.wrist.has_value());
+    EXPECT_EQ(*got.trueAngles, *want.trueAngles);
+    ASSERT_EQ(got.estimate.has_value(), i > 0);
+    if (i > 0) EXPECT_EQ(*got.estimate, *want.estimate);
+    EXPECT_FALSE(got.forearm.has_value());
+  }
+}
+
+TEST_F(RecordingTest, WriterRefusesBadRowsAndStaysUsable) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingWriter w(p, RecordingMeta{}, liveColumns());
+  w.append(liveRow(1));
+  ArmSample extra = liveRow(2);
+  extra.forearm = ImuReading{};  // no forearm columns
+  EXPECT_NE(errorOf([&] { w.append(extra); }).message().find("forearm"), std::string::npos);
+  ArmSample nan = liveRow(2);
+  nan.upperArm->acc.x() = std::nan("");
+  EXPECT_NE(errorOf([&] { w.append(nan); }).message().find("non-finite"), std::string::npos);
+  EXPECT_NE(errorOf([&] { w.append(liveRow(0)); }).message().find("decreasing"),
+            std::string::npos);
+  w.append(liveRow(2));
+  w.close();
+  const Recording rec = readRecording(p);
+  ASSERT_EQ(rec.samples.size(), 2u);
+  EXPECT_EQ(rec.samples[1].t, liveRow(2).t);
+}
+
+TEST_F(RecordingTest, InterruptedRecordingReadsUpToTheCutLine) {
+  // What a killed session leaves: flushed rows, then part of a row and no final newline.
+  const fs::path p = dir_ / "live.csv";
+  {
+    RecordingWriter w(p, RecordingMeta{}, liveColumns());
+    for (int i = 0; i < 10; ++i) w.append(liveRow(i));
+    w.close();
+  }
+  std::string text = readText(p);
+  text.resize(text.size() - 20);  // cut into the last row
+  writeText(p, text);
+  const Recording rec = readRecording(p);
+  ASSERT_EQ(rec.samples.size(), 9u);
+  ASSERT_EQ(rec.warnings.size(), 1u);
+  EXPECT_NE(rec.warnings[0].find("line 12 was cut short"), std::string::npos) << rec.warnings[0];
+  // A bad row that is not the cut-short last line is still an error.
+  writeText(p, text + "\n");
+  EXPECT_THROW(readRecording(p), RecordingError);
+}
+
+#ifdef __linux__
+TEST_F(RecordingTest, WriterFullDiskKeepsWrittenRowsAndRetries) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingWriter w(p, RecordingMeta{}, liveColumns());
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit limited = old;
+  limited.rlim_cur = 64 * 1024;
+  const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+  int i = 0;
+  std::string message;
+  for (; i < 5000 && message.empty(); ++i) {
+    w.append(liveRow(i));
+    if (i % 100 == 99) {
+      try {
+        w.flush();
+      } catch (const RecordingError& e) {
+        message = e.message();
+      }
+    }
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, oldHandler);
+  ASSERT_FALSE(message.empty()) << "the size limit never hit";
+  EXPECT_NE(message.find("free some disk space"), std::string::npos) << message;
+  // Space is back: the next flush completes the file, nothing lost or doubled.
+  w.close();
+  const Recording rec = readRecording(p);
+  ASSERT_EQ(rec.samples.size(), static_cast<std::size_t>(i));
+  for (int k = 0; k < i; ++k) EXPECT_EQ(rec.samples[static_cast<std::size_t>(k)].t, liveRow(k).t);
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
 // Timing (run by hand: --gtest_also_run_disabled_tests --gtest_filter=*Timing*)
 
 TEST_F(RecordingTest, DISABLED_Timing600kRows) {
