@@ -5,7 +5,8 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev nlohmann-json3-dev libopencv-dev libceres-dev
+  libeigen3-dev nlohmann-json3-dev libopencv-dev libopencv-contrib-dev libceres-dev
+  qt6-base-dev qt6-serialport-dev libfreenect-dev libfreenect-bin
   libgtest-dev googletest libbenchmark-dev
   clang libclang-rt-14-dev
 )

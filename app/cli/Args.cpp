@@ -46,12 +46,21 @@ Args::Args(std::string command, const std::vector<std::string>& args,
     }
     if (eq != std::string::npos) {
       m_values[name] = a.substr(eq + 1);
+      m_all.emplace_back(name, m_values[name]);
     } else if (i + 1 < args.size() && !args[i + 1].starts_with("--")) {
       m_values[name] = args[++i];
+      m_all.emplace_back(name, m_values[name]);
     } else {
       fail(name + ": missing value");
     }
   }
+}
+
+std::vector<std::string> Args::values(std::string_view name) const {
+  std::vector<std::string> out;
+  for (const auto& [n, v] : m_all)
+    if (n == name) out.push_back(v);
+  return out;
 }
 
 std::optional<std::string> Args::value(std::string_view name) const {

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace armtrack::cli {
@@ -40,6 +41,8 @@ class Args {
   /// The option's value (the last one given), if present.
   std::optional<std::string> value(std::string_view name) const;
   const std::vector<std::string>& positionals() const { return m_positionals; }
+  /// Every value of a repeatable option, in the order given.
+  std::vector<std::string> values(std::string_view name) const;
 
   /// The option as a finite number, or fallback when absent. Throws UsageError on bad text.
   std::optional<double> number(std::string_view name) const;
@@ -64,6 +67,7 @@ class Args {
   bool m_help = false;
   std::map<std::string, std::string, std::less<>> m_values;  // flags map to ""
   std::vector<std::string> m_positionals;
+  std::vector<std::pair<std::string, std::string>> m_all;  // every "--name value", in order
 };
 
 /// Parses a whole string as a finite decimal number (a leading '+' is accepted).

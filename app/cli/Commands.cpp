@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/Live.h"
 #include "app/cli/Calibrate.h"
 #include "app/cli/Cli.h"
 #include "app/cli/CsvOutput.h"
@@ -49,6 +50,9 @@ Commands:
   calibrate  sensor-to-segment calibration from a protocol recording (docs/calibration.md)
   study      simulation studies: the paper's Table 6 and Figs. 5, 7, 8; the sensor study
   orientation  orientation of one IMU (gyroscope + accelerometer) as quaternions
+  devices    list the device plugins and their options
+  record     record a live session from devices (with the live estimates)
+  live       run a live session; --stats prints rates, losses and latency
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
 See docs/cli.md for details.
@@ -413,6 +417,9 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (cmd == "study") return study(rest, out, err);
     if (cmd == "calibrate") return calibrateCommand(rest, out, err);
     if (cmd == "orientation") return orientationCommand(rest, out, err);
+    if (cmd == "devices") return devicesCommand(rest, out, err);
+    if (cmd == "record") return recordCommand(rest, out, err);
+    if (cmd == "live") return liveCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

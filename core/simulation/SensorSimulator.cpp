@@ -256,6 +256,14 @@ double SensorStream::nextTime() const {
 std::optional<ArmSample> SensorStream::next() {
   return m->next();
 }
+void SensorStream::skipTo(double t) {
+  for (Clock* c : {&m->upperClock, &m->forearmClock, &m->kinectClock, &m->cameraClock}) {
+    if (!c->active || !(t > 0.0)) continue;
+    const double k = std::ceil(t * c->rate - 1e-9);
+    const auto first = k >= static_cast<double>(c->count) ? c->count : static_cast<std::size_t>(k);
+    c->next = std::max(c->next, first);
+  }
+}
 const RecordingMeta& SensorStream::meta() const {
   return m->meta;
 }

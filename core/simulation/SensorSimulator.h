@@ -98,6 +98,9 @@ class SensorStream {
   double nextTime() const;
   /// The next row in time order, or nothing once past the duration.
   std::optional<ArmSample> next();
+  /// Skips the rows before time t (s) without simulating them (a live source joining a shared
+  /// time base late). The noise streams are not advanced.
+  void skipTo(double t);
   /// The sidecar of the simulated recording (geometry, up, g, side, camera).
   const RecordingMeta& meta() const;
 

@@ -18,6 +18,8 @@ bool ArmSampleAssembler::slotFilled(ArmSlot slot) const {
       return r.elbow.has_value() || r.wrist.has_value();
     case ArmSlot::Camera:
       return r.camWrist.has_value() || r.camElbow.has_value();
+    case ArmSlot::Truth:
+      return r.trueAngles.has_value();
   }
   return false;
 }
@@ -43,6 +45,9 @@ void ArmSampleAssembler::fill(ArmSlot slot, const SensorPayload& payload) {
       r.camElbow = m.elbow;
       break;
     }
+    case ArmSlot::Truth:
+      r.trueAngles = std::get<TruthAngles>(payload).th;
+      break;
   }
 }
 
@@ -53,10 +58,10 @@ std::optional<ArmSample> ArmSampleAssembler::add(const SensorEvent& event) {
   }
   const ArmSlot slot = m_slots[static_cast<std::size_t>(event.device)];
   const bool imu = slot == ArmSlot::UpperArmImu || slot == ArmSlot::ForearmImu;
-  const bool ok = imu ? std::holds_alternative<ImuReading>(event.payload)
-                  : slot == ArmSlot::Optical
-                      ? std::holds_alternative<OpticalPositions>(event.payload)
-                      : std::holds_alternative<MarkerPixels>(event.payload);
+  const bool ok = imu                       ? std::holds_alternative<ImuReading>(event.payload)
+                  : slot == ArmSlot::Optical ? std::holds_alternative<OpticalPositions>(event.payload)
+                  : slot == ArmSlot::Camera  ? std::holds_alternative<MarkerPixels>(event.payload)
+                                             : std::holds_alternative<TruthAngles>(event.payload);
   if (!ok) {
     ++m_mismatched;
     return std::nullopt;

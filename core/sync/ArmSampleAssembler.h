@@ -13,7 +13,7 @@
 namespace armtrack {
 
 /// What a device contributes to a row.
-enum class ArmSlot { UpperArmImu, ForearmImu, Optical, Camera };
+enum class ArmSlot { UpperArmImu, ForearmImu, Optical, Camera, Truth };
 
 /// Kinect (or external tracker) positions in the shoulder frame (m).
 struct OpticalPositions {
@@ -27,8 +27,13 @@ struct MarkerPixels {
   std::optional<Eigen::Vector2d> elbow;
 };
 
-/// Payload of a sensor event: an IMU reading, optical positions or marker pixels.
-using SensorPayload = std::variant<ImuReading, OpticalPositions, MarkerPixels>;
+/// The true joint angles (rad) of a simulated arm, for end-to-end accuracy checks.
+struct TruthAngles {
+  JointVector th = JointVector::Zero();
+};
+
+/// Payload of a sensor event: an IMU reading, optical positions, marker pixels or simulated truth.
+using SensorPayload = std::variant<ImuReading, OpticalPositions, MarkerPixels, TruthAngles>;
 using SensorEvent = SyncEvent<SensorPayload>;
 
 /// Groups events into rows: an event joins the open row when it is within mergeWindow seconds of
@@ -46,6 +51,10 @@ class ArmSampleAssembler {
   std::optional<ArmSample> add(const SensorEvent& event);
   /// Completes the open row, if any.
   std::optional<ArmSample> flush();
+  /// Time (s) of the open row, if any.
+  std::optional<double> openTime() const {
+    return m_row ? std::optional<double>(m_row->t) : std::nullopt;
+  }
 
   std::uint64_t mismatched() const { return m_mismatched; }
 

@@ -1,0 +1,319 @@
+#include "app/cli/Live.h"
+
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <QCoreApplication>
+#include <QSettings>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <thread>
+
+#include "app/cli/Args.h"
+#include "app/plugins/PluginRegistry.h"
+#include "core/session/Session.h"
+#include "devices/api/Options.h"
+
+namespace armtrack::cli {
+namespace {
+
+constexpr const char* kDevicesHelp = R"(usage: armtrack-cli devices [--plugins DIR]...
+
+Lists the device plugins found, their options, and the plugin files that were refused and why.
+Plugins are looked for in --plugins folders, the settings' devices/pluginPath,
+$ARMTRACK_PLUGIN_PATH, <exe>/../plugins and <exe>/../lib/armtrack/plugins.
+)";
+
+constexpr const char* kRecordHelp = R"(usage: armtrack-cli record --device NAME[:OPTIONS] [--device ...] --duration S --out FILE.csv
+                          [--plugins DIR] [--filter ekf|ukf] [--no-estimate] [--side right|left]
+                          [--latency-window S] [--quiet]
+
+Runs a live session and records it in the open format (docs/recording-format.md): the raw
+samples in time order, the angles estimated live (est_th*) and, with the virtual arm, the true
+angles (true_th*). OPTIONS are key=value pairs joined by ',' (armtrack-cli devices lists them),
+e.g. --device virtual-arm:sensors=upper+forearm+kinect,disappear=10+3
+Device states and problems are printed as they happen; Ctrl-C ends the session early and keeps
+everything recorded so far.
+)";
+
+constexpr const char* kLiveHelp = R"(usage: armtrack-cli live --device NAME[:OPTIONS] [--device ...] [--duration S] [--stats]
+                        [--stats-interval S] [--out FILE.csv] [--plugins DIR] [--filter ekf|ukf]
+                        [--side right|left] [--latency-window S] [--quiet]
+
+Runs a live session (until --duration, or Ctrl-C) and prints the joint angles once a second, or
+with --stats the pipeline's figures: per stream the sample rate, samples received, rejected and
+late, link losses; samples lost; sample-to-estimate latency percentiles; CPU use; resident
+memory. --out records the session as `record` does.
+)";
+
+std::atomic<bool> g_interrupted{false};
+extern "C" void onInterrupt(int) {
+  g_interrupted = true;
+}
+
+/// A QCoreApplication for the duration of a command when the caller has none.
+struct QtApp {
+  QtApp() {
+    if (!QCoreApplication::instance()) {
+      static int argc = 1;
+      static char name[] = "armtrack-cli";
+      static char* argv[] = {name, nullptr};
+      app = std::make_unique<QCoreApplication>(argc, argv);
+    }
+  }
+  std::unique_ptr<QCoreApplication> app;
+};
+
+QStringList pluginFolders(const Args& a) {
+  QStringList folders;
+  for (const std::string& d : a.values("--plugins")) folders << QString::fromStdString(d);
+  const QSettings settings(QStringLiteral("ArmTrack"), QStringLiteral("ArmTrack"));
+  const QString configured = settings.value(QStringLiteral("devices/pluginPath")).toString();
+  if (!configured.isEmpty()) folders << configured.split(u':', Qt::SkipEmptyParts);
+  folders << app::PluginRegistry::defaultFolders();
+  return folders;
+}
+
+double residentMegabytes() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double processCpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+struct LiveOptions {
+  std::vector<std::string> devices;
+  double duration = 0.0;  // 0 = until Ctrl-C
+  std::string out;
+  bool stats = false;
+  double statsInterval = 10.0;
+  bool anglesEverySecond = false;
+  bool quiet = false;
+};
+
+const std::vector<OptionSpec> kSessionOptions = {
+    {"--device", true},     {"--duration", true},  {"--out", true},
+    {"--plugins", true},    {"--filter", true},    {"--no-estimate", false},
+    {"--side", true},       {"--latency-window", true}, {"--stats", false},
+    {"--stats-interval", true}, {"--quiet", false}};
+
+void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent,
+                double rssMb) {
+  char line[256];
+  std::snprintf(line, sizeof line, "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n",
+                s.elapsed, static_cast<unsigned long long>(s.rows),
+                static_cast<unsigned long long>(s.estimates),
+                static_cast<unsigned long long>(s.recordedRows),
+                static_cast<unsigned long long>(s.lost()));
+  out << line;
+  for (std::size_t i = 0; i < s.streams.size(); ++i) {
+    const session::StreamStats& st = s.streams[i];
+    std::snprintf(line, sizeof line,
+                  "  %-14s %-8s %8.1f Hz  received %9llu  rejected %5llu  late %5llu  "
+                  "link lost %6llu  corrupt %5llu  drift %+7.1f ppm  jitter %5.2f ms\n",
+                  st.device.c_str(), st.stream.c_str(), st.rateHz,
+                  static_cast<unsigned long long>(st.received),
+                  static_cast<unsigned long long>(st.rejected),
+                  static_cast<unsigned long long>(st.late),
+                  static_cast<unsigned long long>(st.deviceDropped),
+                  static_cast<unsigned long long>(st.deviceCorrupt), st.driftPpm, st.jitterMs);
+    out << line;
+  }
+  std::snprintf(line, sizeof line,
+                "  latency p50 %.1f ms  p90 %.1f ms  p99 %.1f ms  max %.1f ms   CPU %.1f %% of one "
+                "core   resident %.1f MB   input queue max %zu\n",
+                s.latency.quantile(0.5) * 1e3, s.latency.quantile(0.9) * 1e3,
+                s.latency.quantile(0.99) * 1e3, s.latency.max() * 1e3, cpuPercent, rssMb,
+                s.maxInputQueued);
+  out << line;
+  out.flush();
+}
+
+int runSession(const std::string& command, const std::vector<std::string>& args, bool record,
+               std::ostream& out, std::ostream& err) {
+  const Args a(command, args, kSessionOptions);
+  if (a.help()) {
+    out << (record ? kRecordHelp : kLiveHelp);
+    return 0;
+  }
+  if (!a.positionals().empty()) a.fail("unexpected argument '" + a.positionals()[0] + "'");
+  LiveOptions o;
+  o.devices = a.values("--device");
+  if (o.devices.empty()) a.fail("--device is required (armtrack-cli devices lists them)");
+  o.duration = record ? a.positive("--duration", 0.0) : a.nonNegative("--duration", 0.0);
+  if (record && !a.value("--duration")) a.fail("--duration is required");
+  o.out = record ? a.required("--out") : a.value("--out").value_or("");
+  o.stats = a.flag("--stats");
+  o.statsInterval = a.positive("--stats-interval", 10.0);
+  o.quiet = a.flag("--quiet");
+  o.anglesEverySecond = !record && !o.stats;
+
+  session::SessionParams params;
+  const std::string filter = a.value("--filter").value_or("ekf");
+  if (filter == "ekf")
+    params.estimator.filter = FilterKind::Ekf;
+  else if (filter == "ukf")
+    params.estimator.filter = FilterKind::Ukf;
+  else
+    a.fail("--filter: expected ekf or ukf, got '" + filter + "'");
+  const std::string side = a.value("--side").value_or("right");
+  if (side == "left")
+    params.meta.side = Side::Left;
+  else if (side != "right")
+    a.fail("--side: expected right or left, got '" + side + "'");
+  params.estimate = !a.flag("--no-estimate");
+  params.latencyWindow = a.positive("--latency-window", params.latencyWindow);
+  params.recordingPath = o.out;
+
+  QtApp qt;
+  app::PluginRegistry registry;
+  registry.load(pluginFolders(a));
+  session::Session session(params);
+  for (const std::string& spec : o.devices) {
+    const auto colon = spec.find(':');
+    const QString name = QString::fromStdString(spec.substr(0, colon));
+    const QVariantMap options = devices::Options::parse(
+        colon == std::string::npos ? QString() : QString::fromStdString(spec.substr(colon + 1)));
+    devices::DevicePlugin* plugin = registry.plugin(name);
+    if (!plugin) {
+      err << "armtrack-cli: error: no device plugin '" << name.toStdString() << "'; found: "
+          << registry.names().join(QStringLiteral(", ")).toStdString()
+          << " (armtrack-cli devices tells which files were refused)\n";
+      return 1;
+    }
+    QString why;
+    std::unique_ptr<devices::Device> device = plugin->create(options, &why);
+    if (!device) {
+      err << "armtrack-cli: error: " << why.toStdString() << "\n";
+      return 1;
+    }
+    session.addDevice(std::move(device), QStringLiteral("%1#%2").arg(name).arg(o.devices.size() > 1
+                                                                                  ? QString::number(&spec - o.devices.data() + 1)
+                                                                                  : QStringLiteral("1")));
+  }
+  if (const QString why = session.start(); !why.isEmpty()) {
+    err << "armtrack-cli: error: " << why.toStdString() << "\n";
+    return 1;
+  }
+  g_interrupted = false;
+  const auto oldInt = std::signal(SIGINT, onInterrupt);
+  const auto oldTerm = std::signal(SIGTERM, onInterrupt);
+
+  const double start = devices::hostNow();
+  const double cpu0 = processCpuSeconds();
+  double nextStats = start + o.statsInterval, nextAngles = start + 1.0;
+  double rssAtMinute = 0.0, cpuAtMinute = 0.0, minuteTime = 0.0;
+  std::vector<std::string> events;
+  std::vector<session::EstimateRow> results;
+  auto drainEvents = [&] {
+    events.clear();
+    session.takeEvents(events);
+    if (!o.quiet)
+      for (const std::string& e : events) err << "  " << e << "\n";
+  };
+  while (!g_interrupted) {
+    const double now = devices::hostNow();
+    if (o.duration > 0.0 && now - start >= o.duration) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    QCoreApplication::processEvents();
+    drainEvents();
+    results.clear();
+    session.takeResults(results);  // the GUI drains this buffer the same way
+    if (rssAtMinute == 0.0 && now - start >= 60.0) {
+      rssAtMinute = residentMegabytes();
+      cpuAtMinute = processCpuSeconds();
+      minuteTime = now;
+    }
+    if (o.anglesEverySecond && now >= nextAngles && !results.empty()) {
+      const session::EstimateRow& r = results.back();
+      char line[160];
+      std::snprintf(line, sizeof line, "t %9.3f s  th0 %7.2f  th1 %7.2f  th2 %7.2f  th4 %7.2f  th5 %7.2f deg\n",
+                    r.t, r.th(0) * 180 / M_PI, r.th(1) * 180 / M_PI, r.th(2) * 180 / M_PI,
+                    r.th(3) * 180 / M_PI, r.th(4) * 180 / M_PI);
+      out << line << std::flush;
+      nextAngles = now + 1.0;
+    }
+    if (o.stats && now >= nextStats) {
+      printStats(out, session.stats(), 100.0 * (processCpuSeconds() - cpu0) / (now - start),
+                 residentMegabytes());
+      nextStats = now + o.statsInterval;
+    }
+  }
+  const double end = devices::hostNow();
+  const double cpu = processCpuSeconds();
+  const double rss = residentMegabytes();
+  session.stop();
+  std::signal(SIGINT, oldInt);
+  std::signal(SIGTERM, oldTerm);
+  drainEvents();
+  const session::SessionStats s = session.stats();
+  if (o.stats || record) {
+    out << (g_interrupted ? "interrupted; " : "") << "session summary:\n";
+    printStats(out, s, 100.0 * (cpu - cpu0) / (end - start), rss);
+    if (rssAtMinute > 0.0) {
+      char line[200];
+      std::snprintf(line, sizeof line,
+                    "  after the first minute: resident %.1f -> %.1f MB (%+.1f %%), CPU %.1f %% of "
+                    "one core\n",
+                    rssAtMinute, rss, 100.0 * (rss - rssAtMinute) / rssAtMinute,
+                    100.0 * (cpu - cpuAtMinute) / (end - minuteTime));
+      out << line;
+    }
+  }
+  if (!o.out.empty()) {
+    out << "recorded " << s.recordedRows << " rows in " << o.out << "\n";
+    if (!s.recorderError.empty()) {
+      err << "armtrack-cli: error: the recording is incomplete: " << s.recorderError << "\n";
+      return 1;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+int devicesCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
+  const Args a("devices", args, {{"--plugins", true}});
+  if (a.help()) {
+    out << kDevicesHelp;
+    return 0;
+  }
+  if (!a.positionals().empty()) a.fail("unexpected argument '" + a.positionals()[0] + "'");
+  QtApp qt;
+  app::PluginRegistry registry;
+  registry.load(pluginFolders(a));
+  for (const app::PluginRecord& r : registry.records()) {
+    if (!r.loaded) continue;
+    devices::DevicePlugin* p = registry.plugin(r.name);
+    out << r.name.toStdString() << ": " << p->description().toStdString() << "\n";
+    for (const QString& line : p->optionsHelp().split(u'\n'))
+      out << "    " << line.toStdString() << "\n";
+    out << "    (" << r.file.toStdString() << ")\n";
+  }
+  for (const app::PluginRecord& r : registry.records())
+    if (!r.loaded) out << "refused " << r.file.toStdString() << ": " << r.refusal.toStdString() << "\n";
+  if (registry.names().isEmpty()) out << "no device plugins found\n";
+  return 0;
+}
+
+int recordCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  return runSession("record", args, true, out, err);
+}
+
+int liveCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  return runSession("live", args, false, out, err);
+}
+
+}  // namespace armtrack::cli

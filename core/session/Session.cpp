@@ -1,0 +1,553 @@
+#include "core/session/Session.h"
+
+#include <pthread.h>
+
+#include <QCoreApplication>
+#include <QMetaObject>
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+
+#include "core/sync/ArmSampleAssembler.h"
+#include "core/sync/TimeSync.h"
+
+namespace armtrack::session {
+
+using devices::DeviceSample;
+using devices::DeviceState;
+using devices::StreamRole;
+
+namespace {
+
+ArmSlot slotOf(StreamRole role) {
+  switch (role) {
+    case StreamRole::UpperArmImu:
+      return ArmSlot::UpperArmImu;
+    case StreamRole::ForearmImu:
+      return ArmSlot::ForearmImu;
+    case StreamRole::Optical:
+      return ArmSlot::Optical;
+    case StreamRole::Camera:
+      return ArmSlot::Camera;
+    case StreamRole::Truth:
+      return ArmSlot::Truth;
+  }
+  return ArmSlot::UpperArmImu;
+}
+
+bool finiteOpt3(const std::optional<Eigen::Vector3d>& v) {
+  return !v || v->allFinite();
+}
+bool finiteOpt2(const std::optional<Eigen::Vector2d>& v) {
+  return !v || v->allFinite();
+}
+
+/// True when the payload is what the role promises and every value in it is finite.
+bool validPayload(StreamRole role, const SensorPayload& p) {
+  switch (role) {
+    case StreamRole::UpperArmImu:
+    case StreamRole::ForearmImu: {
+      const auto* r = std::get_if<ImuReading>(&p);
+      return r && r->gyr.allFinite() && r->acc.allFinite();
+    }
+    case StreamRole::Optical: {
+      const auto* o = std::get_if<OpticalPositions>(&p);
+      return o && finiteOpt3(o->elbow) && finiteOpt3(o->wrist);
+    }
+    case StreamRole::Camera: {
+      const auto* m = std::get_if<MarkerPixels>(&p);
+      return m && finiteOpt2(m->wrist) && finiteOpt2(m->elbow);
+    }
+    case StreamRole::Truth: {
+      const auto* t = std::get_if<TruthAngles>(&p);
+      return t && t->th.allFinite();
+    }
+  }
+  return false;
+}
+
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+
+void LatencyHistogram::add(double seconds) {
+  const double s = std::max(0.0, seconds);
+  const auto bin = static_cast<std::size_t>(std::min(s / kBin, static_cast<double>(kBins)));
+  ++m_bins[bin];
+  ++m_count;
+  m_max = std::max(m_max, s);
+}
+
+double LatencyHistogram::quantile(double q) const {
+  if (m_count == 0) return 0.0;
+  const auto want = static_cast<std::uint64_t>(std::ceil(q * static_cast<double>(m_count)));
+  std::uint64_t seen = 0;
+  for (std::size_t i = 0; i < m_bins.size(); ++i) {
+    seen += m_bins[i];
+    if (seen >= std::max<std::uint64_t>(want, 1))
+      return i == kBins ? m_max : std::min(m_max, static_cast<double>(i + 1) * kBin);
+  }
+  return m_max;
+}
+
+std::uint64_t SessionStats::lost() const {
+  std::uint64_t n = inputOverflow;
+  for (const StreamStats& s : streams) n += s.rejected;
+  return n;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+Session::Session(SessionParams params, QObject* parent)
+    : QObject(parent), m_params(std::move(params)) {}
+
+Session::~Session() {
+  stop();
+}
+
+int Session::addDevice(std::unique_ptr<devices::Device> device, const QString& label) {
+  DeviceEntry e;
+  e.firstStream = static_cast<int>(m_streams.size());
+  const int index = static_cast<int>(m_devices.size());
+  for (std::size_t k = 0; k < device->streams().size(); ++k)
+    m_streams.push_back({index, static_cast<int>(k), device->streams()[k]});
+  e.device = std::move(device);
+  e.label = label;
+  m_devices.push_back(std::move(e));
+  return index;
+}
+
+void Session::logEvent(const std::string& text) {
+  {
+    std::lock_guard lock(m_statsMutex);
+    if (m_events.size() >= m_params.maxEvents) m_events.erase(m_events.begin());
+    m_events.push_back(text);
+  }
+}
+
+QString Session::start() {
+  if (m_running) return QStringLiteral("the session is already running");
+  if (m_devices.empty()) return QStringLiteral("no device: add at least one device");
+  // One stream per role, and a camera model for marker pixels.
+  for (std::size_t i = 0; i < m_streams.size(); ++i)
+    for (std::size_t j = i + 1; j < m_streams.size(); ++j)
+      if (m_streams[i].info.role == m_streams[j].info.role)
+        return QStringLiteral("two streams provide the %1 (%2 and %3); keep one")
+            .arg(QString::fromLatin1(devices::toString(m_streams[i].info.role)),
+                 m_devices[static_cast<std::size_t>(m_streams[i].device)].label,
+                 m_devices[static_cast<std::size_t>(m_streams[j].device)].label);
+  bool imu = false;
+  RecordingColumns columns;
+  columns.estimate = m_params.estimate;
+  for (const Stream& s : m_streams) {
+    switch (s.info.role) {
+      case StreamRole::UpperArmImu:
+        imu = columns.upperArm = true;
+        break;
+      case StreamRole::ForearmImu:
+        imu = columns.forearm = true;
+        break;
+      case StreamRole::Optical:
+        columns.elbow = columns.wrist = true;
+        break;
+      case StreamRole::Camera:
+        columns.camWrist = columns.camElbow = true;
+        if (s.info.camera) m_params.meta.camera = s.info.camera;
+        if (!m_params.meta.camera)
+          return QStringLiteral("the camera of %1 has no calibration; calibrate it "
+                                "(armtrack-cli camera-calibrate, camera-register) and pass the "
+                                "file to the device")
+              .arg(m_devices[static_cast<std::size_t>(s.device)].label);
+        break;
+      case StreamRole::Truth:
+        columns.truth = true;
+        break;
+    }
+  }
+  if (m_params.estimate && !imu)
+    return QStringLiteral("no IMU among the devices: the estimator needs the upper-arm or "
+                          "forearm IMU (or record without estimating)");
+  {
+    EstimatorParams e = recordingParams(m_params.meta);
+    EstimatorParams p = m_params.estimator;
+    p.geometry = e.geometry;
+    p.gUp = e.gUp;
+    p.camera = e.camera;
+    p.side = e.side;
+    m_params.estimator = p;
+  }
+  if (!m_params.recordingPath.empty()) {
+    try {
+      m_writer = std::make_unique<RecordingWriter>(m_params.recordingPath, m_params.meta, columns);
+    } catch (const RecordingError& e) {
+      return QStringLiteral("cannot record: %1").arg(QString::fromStdString(e.what()));
+    }
+  }
+
+  m_stats = SessionStats{};
+  for (const Stream& s : m_streams) {
+    StreamStats st;
+    st.device = m_devices[static_cast<std::size_t>(s.device)].label.toStdString();
+    st.stream = s.info.name;
+    st.role = s.info.role;
+    m_stats.streams.push_back(st);
+  }
+  for (const DeviceEntry& d : m_devices) m_stats.deviceLabels.push_back(d.label.toStdString());
+  m_inputClosed = m_recClosed = false;
+  m_input.reserve(4096);
+  m_startTime = devices::hostNow();
+  m_worker = std::thread([this] { workerLoop(); });
+  if (m_writer) m_recorder = std::thread([this] { recorderLoop(); });
+
+  for (std::size_t i = 0; i < m_devices.size(); ++i) {
+    DeviceEntry& d = m_devices[i];
+    devices::Device* dev = d.device.get();
+    const int index = static_cast<int>(i);
+    const std::string label = d.label.toStdString();
+    connect(dev, &devices::Device::samplesReady, this,
+            [this, index](const devices::SampleBatch& b) { onSamples(index, b); },
+            Qt::DirectConnection);
+    connect(dev, &devices::Device::stateChanged, this,
+            [this, index, label](DeviceState s, const QString& reason) {
+              logEvent(label + ": " + devices::toString(s) +
+                       (reason.isEmpty() ? std::string() : " (" + reason.toStdString() + ")"));
+              emit deviceStateChanged(index, s, reason);
+            },
+            Qt::DirectConnection);
+    connect(dev, &devices::Device::problem, this,
+            [this, label](const QString& message) {
+              logEvent(label + ": " + message.toStdString());
+              emit problem(QString::fromStdString(label) + QStringLiteral(": ") + message);
+            },
+            Qt::DirectConnection);
+    d.thread = new QThread;
+    d.thread->setObjectName(QStringLiteral("device ") + d.label);
+    dev->moveToThread(d.thread);
+    d.thread->start();
+    QMetaObject::invokeMethod(dev, &devices::Device::start, Qt::QueuedConnection);
+  }
+  m_running = true;
+  return {};
+}
+
+void Session::onSamples(int device, const devices::SampleBatch& batch) {
+  const int first = m_devices[static_cast<std::size_t>(device)].firstStream;
+  const int count = static_cast<int>(m_devices[static_cast<std::size_t>(device)].device->streams().size());
+  bool wake = false;
+  std::uint64_t overflow = 0;
+  {
+    std::lock_guard lock(m_inputMutex);
+    if (m_inputClosed) return;
+    wake = m_input.empty();
+    for (const DeviceSample& s : batch) {
+      if (m_input.size() >= m_params.inputCapacity) {
+        ++overflow;
+        continue;
+      }
+      DeviceSample g = s;
+      // A stream index the device does not have is kept (and rejected, counted, by the worker).
+      g.stream = s.stream >= 0 && s.stream < count ? first + s.stream : -1 - device;
+      m_input.push_back(std::move(g));
+    }
+  }
+  if (overflow) {
+    std::lock_guard lock(m_statsMutex);
+    m_stats.inputOverflow += overflow;
+  }
+  if (wake) m_inputCv.notify_one();
+}
+
+void Session::workerLoop() {
+  pthread_setname_np(pthread_self(), "armtrack-worker");
+  std::vector<ClockParams> clocks;
+  std::vector<ArmSlot> slotOfStream;
+  for (const Stream& s : m_streams) {
+    ClockParams c;
+    c.wrapPeriod = s.info.wrapPeriod;
+    clocks.push_back(c);
+    slotOfStream.push_back(slotOf(s.info.role));
+  }
+  SyncParams sp;
+  sp.latencyWindow = m_params.latencyWindow;
+  TimeSync<SensorPayload> sync(sp, clocks);
+  ArmSampleAssembler assembler(slotOfStream, m_params.mergeWindow);
+  std::unique_ptr<JointEstimator> filter;
+  if (m_params.estimate) filter = makeEstimator(m_params.estimator);
+
+  std::vector<DeviceSample> local;
+  local.reserve(4096);
+  std::vector<std::uint64_t> received(m_streams.size()), rejected(m_streams.size());
+  std::uint64_t rows = 0, estimates = 0, recorderWaits = 0;
+  LatencyHistogram latency;
+  std::vector<EstimateRow> fresh;
+  std::size_t maxQueued = 0;
+  double rowOldestArrival = std::numeric_limits<double>::infinity();
+  double nextStats = 0.0;
+  std::uint64_t reportedRejects = 0;
+
+  auto processRow = [&](ArmSample row, double oldestArrival) {
+    ++rows;
+    row.t -= m_startTime;  // session time: 0 at start()
+    if (filter) {
+      const UpdateResult r = filter->update(row);
+      if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && row.hasImu()) {
+        const JointEstimate e = filter->estimate();
+        row.estimate = e.th;
+        ++estimates;
+        const double lat = devices::hostNow() - oldestArrival;
+        latency.add(lat);
+        fresh.push_back({row.t, e.th, row.trueAngles, lat});
+      }
+    }
+    if (m_writer) {
+      std::unique_lock lock(m_recMutex);
+      if (m_recQueue.size() >= m_params.recorderCapacity) {
+        ++recorderWaits;  // never drop a row: wait for the recorder
+        m_recSpaceCv.wait(lock, [&] { return m_recQueue.size() < m_params.recorderCapacity; });
+      }
+      const bool wake = m_recQueue.empty();
+      m_recQueue.push_back(std::move(row));
+      lock.unlock();
+      if (wake) m_recCv.notify_one();
+    }
+  };
+  auto sink = [&](const SensorEvent& ev) {
+    if (auto done = assembler.add(ev)) {
+      processRow(std::move(*done), rowOldestArrival);
+      rowOldestArrival = ev.arrivalTime;
+    } else {
+      rowOldestArrival = std::min(rowOldestArrival, ev.arrivalTime);
+    }
+  };
+  auto publish = [&](bool final) {
+    if (!fresh.empty()) {
+      std::lock_guard lock(m_resultMutex);
+      for (EstimateRow& r : fresh) {
+        if (m_results.size() >= m_params.resultCapacity) {
+          m_results.pop_front();
+          std::lock_guard s(m_statsMutex);
+          ++m_stats.resultsOverwritten;
+        }
+        m_results.push_back(std::move(r));
+      }
+      fresh.clear();
+    }
+    const double now = devices::hostNow();
+    if (!final && now < nextStats) return;
+    nextStats = now + 0.1;
+    std::uint64_t totalRejects = 0;
+    std::lock_guard lock(m_statsMutex);
+    for (std::size_t i = 0; i < m_streams.size(); ++i) {
+      StreamStats& st = m_stats.streams[i];
+      st.received = received[i];
+      st.rejected = rejected[i];
+      totalRejects += rejected[i];
+      const DeviceSyncStats ds = sync.stats(static_cast<int>(i));
+      st.late = ds.merge.late;
+      st.driftPpm = ds.driftPpm;
+      st.jitterMs = ds.jitter * 1e3;
+    }
+    m_stats.rows = rows;
+    m_stats.estimates = estimates;
+    m_stats.recorderWaits = recorderWaits;
+    m_stats.latency = latency;
+    m_stats.maxInputQueued = std::max(m_stats.maxInputQueued, maxQueued);
+    if (filter) m_stats.estimator = filter->counters();
+    m_stats.workerCpuSeconds = threadCpuSeconds();
+    if (totalRejects > reportedRejects) {
+      m_events.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
+                         " sample(s) with NaN/infinite values or the wrong kind of data");
+      reportedRejects = totalRejects;
+    }
+  };
+
+  for (;;) {
+    bool closed = false;
+    {
+      std::unique_lock lock(m_inputMutex);
+      m_inputCv.wait_for(lock, std::chrono::duration<double>(m_params.workerPeriod),
+                         [&] { return !m_input.empty() || m_inputClosed; });
+      maxQueued = std::max(maxQueued, m_input.size());
+      local.swap(m_input);
+      closed = m_inputClosed;
+    }
+    for (DeviceSample& s : local) {
+      if (s.stream < 0) continue;  // a stream index the device does not have
+      const auto k = static_cast<std::size_t>(s.stream);
+      ++received[k];
+      if (!validPayload(m_streams[k].info.role, s.payload)) {
+        ++rejected[k];
+        continue;
+      }
+      if (sync.push(s.stream, s.deviceTime, s.arrivalTime, std::move(s.payload), sink) ==
+          PushResult::Rejected)
+        ++rejected[k];
+    }
+    local.clear();
+    if (closed) break;
+    const double now = devices::hostNow();
+    sync.poll(now, sink);
+    // The open row cannot grow any more once the synchroniser has released everything up to a
+    // merge window past it: complete it now rather than when the next sample arrives.
+    if (auto t = assembler.openTime(); t && *t + m_params.mergeWindow < now - m_params.latencyWindow) {
+      if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
+      rowOldestArrival = std::numeric_limits<double>::infinity();
+    }
+    publish(false);
+  }
+  // Shutdown: everything received is processed.
+  sync.flush(sink);
+  if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
+  publish(true);
+  {
+    std::lock_guard lock(m_recMutex);
+    m_recClosed = true;
+  }
+  m_recCv.notify_one();
+}
+
+void Session::recorderLoop() {
+  pthread_setname_np(pthread_self(), "armtrack-record");
+  std::deque<ArmSample> local;
+  double nextFlush = devices::hostNow() + m_params.flushInterval;
+  double nextSync = devices::hostNow() + m_params.syncInterval;
+  std::string lastError;
+  auto attempt = [&](auto&& step) {
+    try {
+      step();
+      if (!lastError.empty()) {
+        logEvent("recording: writing again after: " + lastError);
+        lastError.clear();
+      }
+    } catch (const RecordingError& e) {
+      if (e.what() != lastError) {
+        lastError = e.what();
+        logEvent("recording: " + lastError);
+        emit problem(QStringLiteral("recording: ") + QString::fromStdString(lastError));
+      }
+      std::lock_guard lock(m_statsMutex);
+      m_stats.recorderError = lastError;
+    }
+  };
+  for (;;) {
+    bool closed = false;
+    {
+      std::unique_lock lock(m_recMutex);
+      m_recCv.wait_for(lock, std::chrono::duration<double>(m_params.flushInterval),
+                       [&] { return !m_recQueue.empty() || m_recClosed; });
+      local.swap(m_recQueue);
+      closed = m_recClosed;
+    }
+    m_recSpaceCv.notify_all();
+    std::uint64_t written = 0;
+    for (const ArmSample& s : local) {
+      try {
+        m_writer->append(s);
+        ++written;
+      } catch (const RecordingError& e) {
+        // Rows come from the synchroniser in time order with finite values; this would be a bug.
+        logEvent(std::string("recording: row refused: ") + e.what());
+      }
+    }
+    local.clear();
+    {
+      std::lock_guard lock(m_statsMutex);
+      m_stats.recordedRows += written;
+    }
+    const double now = devices::hostNow();
+    if (closed) {
+      attempt([&] { m_writer->close(); });
+      break;
+    }
+    if (now >= nextSync) {
+      attempt([&] { m_writer->sync(); });
+      nextSync = now + m_params.syncInterval;
+      nextFlush = now + m_params.flushInterval;
+    } else if (now >= nextFlush) {
+      attempt([&] { m_writer->flush(); });
+      nextFlush = now + m_params.flushInterval;
+    }
+  }
+}
+
+void Session::stopDevices() {
+  QThread* home = thread();
+  for (DeviceEntry& d : m_devices) {
+    if (!d.thread) continue;
+    devices::Device* dev = d.device.get();
+    // Stop in the device's own thread, then hand the object back so it can be destroyed here.
+    QMetaObject::invokeMethod(
+        dev,
+        [dev, home] {
+          dev->stop();
+          dev->moveToThread(home);
+        },
+        Qt::BlockingQueuedConnection);
+    d.thread->quit();
+    if (!d.thread->wait(10000)) logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
+    delete d.thread;
+    d.thread = nullptr;
+    disconnect(dev, nullptr, this, nullptr);
+  }
+}
+
+void Session::stop() {
+  if (!m_running) return;
+  stopDevices();
+  {
+    std::lock_guard lock(m_inputMutex);
+    m_inputClosed = true;
+  }
+  m_inputCv.notify_one();
+  if (m_worker.joinable()) m_worker.join();
+  if (m_recorder.joinable()) m_recorder.join();
+  m_writer.reset();
+  m_running = false;
+}
+
+SessionStats Session::stats() const {
+  SessionStats s;
+  {
+    std::lock_guard lock(m_statsMutex);
+    s = m_stats;
+  }
+  s.elapsed = devices::hostNow() - m_startTime;
+  for (std::size_t i = 0; i < m_streams.size(); ++i) {
+    const Stream& st = m_streams[i];
+    const devices::DeviceHealth h = m_devices[static_cast<std::size_t>(st.device)].device->health();
+    const devices::StreamHealth& sh = h.streams[static_cast<std::size_t>(st.index)];
+    if (i < s.streams.size()) {
+      s.streams[i].rateHz = sh.rateHz;
+      s.streams[i].published = sh.samples;
+      s.streams[i].deviceDropped = sh.dropped;
+      s.streams[i].deviceCorrupt = sh.corrupt;
+    }
+  }
+  s.deviceStates.clear();
+  for (const DeviceEntry& d : m_devices) s.deviceStates.push_back(d.device->state());
+  return s;
+}
+
+std::size_t Session::takeResults(std::vector<EstimateRow>& out) {
+  std::lock_guard lock(m_resultMutex);
+  const std::size_t n = m_results.size();
+  for (EstimateRow& r : m_results) out.push_back(std::move(r));
+  m_results.clear();
+  return n;
+}
+
+std::size_t Session::takeEvents(std::vector<std::string>& out) {
+  std::lock_guard lock(m_statsMutex);
+  const std::size_t n = m_events.size();
+  for (std::string& e : m_events) out.push_back(std::move(e));
+  m_events.clear();
+  return n;
+}
+
+}  // namespace armtrack::session

@@ -1,0 +1,193 @@
+// The live session pipeline: device threads -> time synchroniser -> estimator worker -> recorder,
+// and a results buffer the GUI drains on a timer. Qt Core only (no widgets).
+// See docs/session.md.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QThread>
+#include <array>
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/estimation/ArmFilter.h"
+#include "core/io/Recording.h"
+#include "devices/api/Device.h"
+
+namespace armtrack::session {
+
+struct SessionParams {
+  /// The arm, gravity, side (and camera, if no device brings one): the sidecar of the recording
+  /// and the estimator's model.
+  RecordingMeta meta;
+  /// Estimator settings; geometry, gravity and camera are taken from meta at start().
+  EstimatorParams estimator;
+  bool estimate = true;                  ///< run the estimator (off: record raw data only)
+  std::filesystem::path recordingPath;   ///< CSV to record into; empty = no recording
+  double latencyWindow = 0.010;          ///< s the synchroniser waits for late samples
+  double mergeWindow = 0.5e-3;           ///< s within which samples share one row
+  double workerPeriod = 0.002;           ///< s between synchroniser polls
+  std::size_t inputCapacity = 1 << 17;   ///< samples queued between devices and the worker
+  std::size_t recorderCapacity = 1 << 17;  ///< rows queued between worker and recorder
+  std::size_t resultCapacity = 1 << 14;  ///< estimates kept for the GUI (oldest overwritten)
+  double flushInterval = 0.5;            ///< s between recorder flushes
+  double syncInterval = 5.0;             ///< s between fsyncs of the recording
+  std::size_t maxEvents = 1000;          ///< session messages kept until taken
+};
+
+/// One estimate, for the GUI and `live`.
+struct EstimateRow {
+  double t = 0.0;                        ///< synchronised time (s since the session started)
+  JointVector th = JointVector::Zero();  ///< rad
+  std::optional<JointVector> truth;      ///< rad, simulated devices
+  double latency = 0.0;                  ///< s from the oldest sample's arrival to the estimate
+};
+
+/// Latencies in 0.1 ms bins up to 1 s.
+class LatencyHistogram {
+ public:
+  void add(double seconds);
+  /// The q-quantile (0..1) in s (upper edge of its bin); 0 when empty.
+  double quantile(double q) const;
+  double max() const { return m_max; }
+  std::uint64_t count() const { return m_count; }
+
+ private:
+  static constexpr int kBins = 10000;
+  static constexpr double kBin = 1e-4;
+  std::array<std::uint64_t, kBins + 1> m_bins{};
+  std::uint64_t m_count = 0;
+  double m_max = 0.0;
+};
+
+struct StreamStats {
+  std::string device;  ///< device label
+  std::string stream;  ///< stream name
+  devices::StreamRole role = devices::StreamRole::UpperArmImu;
+  double rateHz = 0.0;           ///< measured by the device
+  std::uint64_t published = 0;   ///< samples the device emitted
+  std::uint64_t received = 0;    ///< samples the worker took from the device
+  std::uint64_t rejected = 0;    ///< NaN/inf values, payloads not matching the role, bad times
+  std::uint64_t late = 0;        ///< arrived after later samples were processed (time clamped)
+  std::uint64_t deviceDropped = 0;  ///< samples the device reports lost on its link
+  std::uint64_t deviceCorrupt = 0;  ///< packets the device rejected as malformed
+  double driftPpm = 0.0;         ///< device clock drift the synchroniser estimated
+  double jitterMs = 0.0;         ///< arrival jitter above the fastest delivery (ms)
+};
+
+struct SessionStats {
+  double elapsed = 0.0;  ///< s since start()
+  std::vector<StreamStats> streams;
+  std::vector<devices::DeviceState> deviceStates;
+  std::vector<std::string> deviceLabels;
+  std::uint64_t inputOverflow = 0;   ///< samples lost because the input queue was full
+  std::uint64_t rows = 0;            ///< rows built from synchronised samples
+  std::uint64_t estimates = 0;       ///< estimates made
+  std::uint64_t recordedRows = 0;    ///< rows the recorder wrote
+  std::uint64_t recorderWaits = 0;   ///< times the worker waited for a full recorder queue
+  std::uint64_t resultsOverwritten = 0;  ///< GUI rows overwritten before being taken
+  std::size_t maxInputQueued = 0;    ///< most samples ever waiting for the worker
+  std::string recorderError;         ///< the newest recording failure, empty if none
+  EstimatorCounters estimator;
+  LatencyHistogram latency;          ///< sample arrival to estimate
+  double workerCpuSeconds = 0.0;     ///< CPU time of the estimator worker thread
+  /// Samples lost anywhere between the devices and the recorder (input overflow + rejected);
+  /// device link losses are counted apart, per stream.
+  std::uint64_t lost() const;
+};
+
+/// A running session. Construct, add devices, start(), later stop(). The devices, the worker and
+/// the recorder each run in their own thread; the public functions are for the thread that owns
+/// the Session, except stats(), takeResults() and takeEvents(), which any thread may call.
+class Session : public QObject {
+  Q_OBJECT
+ public:
+  explicit Session(SessionParams params, QObject* parent = nullptr);
+  ~Session() override;  ///< stops
+
+  /// Adds a device before start(); returns its index. The session owns it.
+  int addDevice(std::unique_ptr<devices::Device> device, const QString& label);
+
+  /// Checks the set-up (one stream per role, a camera model for pixels), opens the recording and
+  /// starts every thread. Returns an empty string, or what is wrong and what to do (nothing is
+  /// started then).
+  QString start();
+  /// Stops the devices, processes every sample already received, closes the recording and joins
+  /// the threads (no terminate()). Idempotent.
+  void stop();
+  bool running() const { return m_running; }
+
+  /// The recording's metadata as written (after start()).
+  const RecordingMeta& meta() const { return m_params.meta; }
+
+  SessionStats stats() const;
+  /// Moves the estimates made since the last call into out (appended); returns how many.
+  std::size_t takeResults(std::vector<EstimateRow>& out);
+  /// Moves the session messages (device states, problems, recorder failures) into out.
+  std::size_t takeEvents(std::vector<std::string>& out);
+
+ signals:
+  /// Emitted from the device's thread.
+  void deviceStateChanged(int device, armtrack::devices::DeviceState state, const QString& reason);
+  /// A problem worth showing the user. Emitted from any of the session's threads.
+  void problem(const QString& message);
+
+ private:
+  struct Stream {
+    int device = 0;
+    int index = 0;  ///< within the device
+    devices::StreamInfo info;
+  };
+  struct DeviceEntry {
+    std::unique_ptr<devices::Device> device;
+    QString label;
+    QThread* thread = nullptr;
+    int firstStream = 0;
+  };
+
+  void onSamples(int device, const devices::SampleBatch& batch);
+  void logEvent(const std::string& text);
+  void workerLoop();
+  void recorderLoop();
+  void stopDevices();
+
+  SessionParams m_params;
+  std::vector<DeviceEntry> m_devices;
+  std::vector<Stream> m_streams;
+  bool m_running = false;
+  double m_startTime = 0.0;
+
+  // devices -> worker
+  std::mutex m_inputMutex;
+  std::condition_variable m_inputCv;
+  std::vector<devices::DeviceSample> m_input;  // stream index is global here
+  bool m_inputClosed = false;
+
+  // worker -> recorder
+  std::mutex m_recMutex;
+  std::condition_variable m_recCv, m_recSpaceCv;
+  std::deque<ArmSample> m_recQueue;
+  bool m_recClosed = false;
+  std::unique_ptr<RecordingWriter> m_writer;
+
+  // worker -> GUI
+  mutable std::mutex m_resultMutex;
+  std::deque<EstimateRow> m_results;
+
+  mutable std::mutex m_statsMutex;
+  SessionStats m_stats;
+  std::vector<std::string> m_events;
+
+  std::thread m_worker, m_recorder;
+};
+
+}  // namespace armtrack::session

@@ -1,0 +1,160 @@
+// The device plugin interface: what every sensor source (real or virtual) gives the session.
+// Depends on core types and Qt Core only; no widgets. See docs/devices/plugins.md.
+#pragma once
+
+#include <QObject>
+#include <QString>
+#include <QVariantMap>
+#include <QtPlugin>
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/io/Recording.h"
+#include "core/sync/ArmSampleAssembler.h"
+
+namespace armtrack::devices {
+
+/// Version of this interface. A plugin built against another version is refused by the loader.
+inline constexpr int kDeviceApiVersion = 1;
+
+/// Seconds on the host's monotonic clock (std::chrono::steady_clock), shared by every device and
+/// the session. Any thread.
+double hostNow();
+
+enum class DeviceState {
+  Disconnected,  ///< not started, or stopped
+  Connecting,    ///< opening, or waiting for a device that went away to come back
+  Streaming,     ///< samples are flowing
+  Error,         ///< cannot go on without the user (bad port, bad file); see the reason
+};
+/// "disconnected", "connecting", "streaming", "error".
+const char* toString(DeviceState state);
+
+/// What one stream of a device measures; the session maps streams to the estimator's inputs.
+enum class StreamRole {
+  UpperArmImu,  ///< ImuReading in the upper-arm sensor's axes
+  ForearmImu,   ///< ImuReading in the forearm sensor's axes
+  Optical,      ///< OpticalPositions in the shoulder frame (m)
+  Camera,       ///< MarkerPixels in the camera image (pixels)
+  Truth,        ///< TruthAngles of a simulated arm (rad)
+};
+const char* toString(StreamRole role);
+
+/// A stream: one clock, one kind of payload.
+struct StreamInfo {
+  std::string name;           ///< e.g. "upper-arm IMU"
+  StreamRole role = StreamRole::UpperArmImu;
+  double nominalRateHz = 0.0;  ///< Hz, 0 when unknown
+  double wrapPeriod = 0.0;     ///< s after which the device timestamp wraps; 0 = never
+  /// The camera model of a Camera stream (intrinsics and pose in the shoulder frame), when the
+  /// device knows it (a calibration file, a simulation). The estimator needs it for pixels.
+  std::optional<CameraParams> camera;
+};
+
+/// One timestamped sample in SI units.
+struct DeviceSample {
+  int stream = 0;            ///< index into Device::streams()
+  double deviceTime = 0.0;   ///< s on the device's own clock (may wrap, see StreamInfo)
+  double arrivalTime = 0.0;  ///< s on hostNow() when the bytes arrived
+  SensorPayload payload;     ///< must match the stream's role
+};
+using SampleBatch = std::vector<DeviceSample>;
+
+/// Health of one stream, counted since start().
+struct StreamHealth {
+  double rateHz = 0.0;          ///< samples per second over the last second
+  std::uint64_t samples = 0;    ///< samples published
+  std::uint64_t dropped = 0;    ///< samples the device says it lost (sequence gaps, dropouts)
+  std::uint64_t corrupt = 0;    ///< packets or frames rejected as malformed
+};
+
+struct DeviceHealth {
+  std::vector<StreamHealth> streams;     ///< one per Device::streams() entry
+  std::optional<double> batteryPercent;  ///< 0-100 where the device tells
+  std::uint64_t reconnects = 0;          ///< times the device came back after going away
+  std::string lastProblem;               ///< newest reported problem, empty if none
+};
+
+/// A sensor source. It lives in its own thread (the session moves it there): start() and stop()
+/// are called in that thread (queued), and samplesReady() is emitted from it. state() and health()
+/// may be called from any thread. Objects a device creates for its work (timers, ports, sockets)
+/// are created in start() or are children of the device, so they live in its thread.
+class Device : public QObject {
+  Q_OBJECT
+ public:
+  explicit Device(std::vector<StreamInfo> streams, QObject* parent = nullptr);
+  ~Device() override;
+
+  const std::vector<StreamInfo>& streams() const { return m_streams; }
+  DeviceState state() const { return m_state.load(); }
+  DeviceHealth health() const;
+
+ public slots:
+  /// Opens the device and starts streaming (asynchronously: watch stateChanged). Device thread.
+  virtual void start() = 0;
+  /// Stops streaming and closes the device; emits nothing afterwards. Device thread.
+  virtual void stop() = 0;
+
+ signals:
+  void stateChanged(armtrack::devices::DeviceState state, const QString& reason);
+  /// Samples in arrival order. Emitted from the device thread; a receiver connected directly
+  /// must be thread-safe.
+  void samplesReady(const armtrack::devices::SampleBatch& batch);
+  /// A problem the session should report but that does not stop the device (a corrupt packet,
+  /// a dropout, a sequence gap).
+  void problem(const QString& message);
+
+ protected:
+  /// Changes the state and emits stateChanged() when it differs.
+  void setState(DeviceState state, const QString& reason = {});
+  /// Counts the batch in the health figures and emits samplesReady(). Empty batches are ignored.
+  void publish(const SampleBatch& batch);
+  /// Records the message as lastProblem and emits problem().
+  void reportProblem(const QString& message);
+  void countDropped(int stream, std::uint64_t n);
+  void countCorrupt(int stream, std::uint64_t n);
+  void countReconnect();
+  void setBattery(std::optional<double> percent);
+
+ private:
+  struct RateWindow {
+    double start = -1.0;
+    std::uint64_t count = 0;
+  };
+  const std::vector<StreamInfo> m_streams;
+  std::atomic<DeviceState> m_state{DeviceState::Disconnected};
+  mutable std::mutex m_mutex;  // guards m_health and m_windows
+  DeviceHealth m_health;
+  std::vector<RateWindow> m_windows;
+};
+
+/// A factory of devices, loaded by the application with QPluginLoader. A plugin never opens a
+/// dialog; its options come as strings from the command line or the settings.
+class DevicePlugin {
+ public:
+  virtual ~DevicePlugin() = default;
+  /// The interface version the plugin was built against (kDeviceApiVersion at its build).
+  virtual int apiVersion() const { return kDeviceApiVersion; }
+  /// Short name used on the command line, e.g. "virtual-arm".
+  virtual QString name() const = 0;
+  /// One line for `armtrack-cli devices`.
+  virtual QString description() const = 0;
+  /// The options create() understands, one per line: "key=default  meaning".
+  virtual QString optionsHelp() const = 0;
+  /// Creates a device, or returns nullptr and sets *error to a message that says what to change.
+  /// Unknown option keys are errors. Called in the thread that will own the device until the
+  /// session moves it.
+  virtual std::unique_ptr<Device> create(const QVariantMap& options, QString* error) = 0;
+};
+
+}  // namespace armtrack::devices
+
+#define ARMTRACK_DEVICE_PLUGIN_IID "org.armtrack.DevicePlugin/1"
+Q_DECLARE_INTERFACE(armtrack::devices::DevicePlugin, ARMTRACK_DEVICE_PLUGIN_IID)
+Q_DECLARE_METATYPE(armtrack::devices::DeviceState)
+Q_DECLARE_METATYPE(armtrack::devices::SampleBatch)

@@ -1,0 +1,98 @@
+#include "devices/virtual_arm/VirtualArmPlugin.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "devices/api/Options.h"
+#include "devices/virtual_arm/VirtualArmDevice.h"
+
+namespace armtrack::devices::virtualarm {
+
+QString VirtualArmPlugin::description() const {
+  return QStringLiteral("simulated IMUs, Kinect and webcam in real time, with fault injection");
+}
+
+QString VirtualArmPlugin::optionsHelp() const {
+  return QStringLiteral(
+      "sensors=upper+forearm+kinect  any of upper, forearm, kinect, webcam joined by '+'\n"
+      "trajectory=multi-joint        sinusoid, multi-joint, shoulder-wheel or calibration\n"
+      "seed=1                        noise and trajectory seed\n"
+      "imu-rate=1000                 Hz, both IMUs\n"
+      "kinect-rate=30                Hz\n"
+      "webcam-rate=30                Hz\n"
+      "noise=on                      the paper's Table 5 noise (off: noise-free)\n"
+      "truth=on                      a stream of the true joint angles beside the IMUs\n"
+      "duration=0                    s of simulation, 0 = endless\n"
+      "tick=0.002                    s between deliveries (the link's batching)\n"
+      "Faults (START and SECONDS in simulated seconds, several joined by '|'):\n"
+      "dropout=STREAM@START+SECONDS  one stream goes silent\n"
+      "disappear=START+SECONDS       the whole device goes away and comes back\n"
+      "restart-clock=off             after coming back, its IMU clock restarts from 0\n"
+      "stall=START+SECONDS           the link holds samples, then delivers them in a burst\n"
+      "jump=AT:SECONDS               the IMU clock steps (negative: goes backwards)\n"
+      "corrupt=0                     probability that an IMU sample carries NaN\n"
+      "drift=0                       IMU clock rate error, ppm");
+}
+
+std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QString* error) {
+  Options o(options);
+  VirtualArmParams p;
+  p.sim = defaultSimulation();
+  const QStringList sensors =
+      o.text(QStringLiteral("sensors"), QStringLiteral("upper+forearm+kinect")).split(u'+');
+  const QString trajectory = o.text(QStringLiteral("trajectory"), QStringLiteral("multi-joint"));
+  p.sim.seed = static_cast<std::uint64_t>(o.integer(QStringLiteral("seed"), 1, 0, 1 << 30));
+  p.trajectoryOptions.seed = static_cast<int>(p.sim.seed);
+  const double imuRate = o.number(QStringLiteral("imu-rate"), 1000.0, 1.0, 4000.0);
+  p.sim.kinect.rateHz = o.number(QStringLiteral("kinect-rate"), 30.0, 1.0, 200.0);
+  p.sim.webcam.rateHz = o.number(QStringLiteral("webcam-rate"), 30.0, 1.0, 200.0);
+  const bool noise = o.flag(QStringLiteral("noise"), true);
+  p.truth = o.flag(QStringLiteral("truth"), true);
+  const double duration = o.number(QStringLiteral("duration"), 0.0, 0.0, 1e7);
+  const double tick = o.number(QStringLiteral("tick"), 0.002, 0.001, 0.2);
+  const QString dropout = o.text(QStringLiteral("dropout"));
+  const QString disappear = o.text(QStringLiteral("disappear"));
+  p.faults.restartClock = o.flag(QStringLiteral("restart-clock"), false);
+  const QString stall = o.text(QStringLiteral("stall"));
+  const QString jump = o.text(QStringLiteral("jump"));
+  p.faults.corruptProbability = o.number(QStringLiteral("corrupt"), 0.0, 0.0, 1.0);
+  p.faults.driftPpm = o.number(QStringLiteral("drift"), 0.0, -1000.0, 1000.0);
+  QStringList problems;
+  if (!o.error().isEmpty()) problems << o.error();
+
+  p.sim.upperArm.enabled = sensors.contains(QStringLiteral("upper"));
+  p.sim.forearm.enabled = sensors.contains(QStringLiteral("forearm"));
+  p.sim.kinect.enabled = sensors.contains(QStringLiteral("kinect"));
+  p.sim.webcam.enabled = sensors.contains(QStringLiteral("webcam"));
+  for (const QString& s : sensors)
+    if (s != u"upper" && s != u"forearm" && s != u"kinect" && s != u"webcam")
+      problems << QStringLiteral("unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
+                                 "webcam joined by '+')")
+                      .arg(s);
+  for (ImuSimParams* imu : {&p.sim.upperArm, &p.sim.forearm}) {
+    imu->rateHz = imuRate;
+    if (!noise) imu->gyroNoiseStd = imu->accelNoiseStd = 0.0;
+  }
+  if (!noise) p.sim.kinect.noiseStd = p.sim.webcam.noiseStdPx = 0.0;
+  p.sim.duration = duration > 0.0 ? duration : std::numeric_limits<double>::infinity();
+  p.trajectory = trajectory.toStdString();
+  try {
+    p.faults.dropouts = parseDropouts(dropout.toStdString());
+    p.faults.disappear = parseWindows(disappear.toStdString());
+    p.faults.stalls = parseWindows(stall.toStdString());
+    p.faults.jumps = parseJumps(jump.toStdString());
+  } catch (const std::invalid_argument& e) {
+    problems << QString::fromStdString(e.what());
+  }
+  if (problems.isEmpty()) {
+    try {
+      return std::make_unique<VirtualArmDevice>(p, tick);
+    } catch (const std::invalid_argument& e) {
+      problems << QString::fromStdString(e.what());
+    }
+  }
+  if (error) *error = QStringLiteral("virtual-arm: ") + problems.join(QStringLiteral("; "));
+  return nullptr;
+}
+
+}  // namespace armtrack::devices::virtualarm

@@ -1,0 +1,239 @@
+#include "devices/virtual_arm/VirtualArmSource.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace armtrack::devices::virtualarm {
+namespace {
+
+std::vector<std::string> split(const std::string& text, char sep) {
+  std::vector<std::string> parts;
+  std::string cur;
+  std::istringstream in(text);
+  while (std::getline(in, cur, sep))
+    if (!cur.empty()) parts.push_back(cur);
+  return parts;
+}
+
+double number(const std::string& s, const std::string& what) {
+  std::size_t used = 0;
+  double v = 0.0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != s.size() || !std::isfinite(v))
+    throw std::invalid_argument("'" + what + "' is not a valid fault: '" + s +
+                                "' is not a number");
+  return v;
+}
+
+Window window(const std::string& text) {
+  const auto plus = text.find('+', 1);
+  if (plus == std::string::npos)
+    throw std::invalid_argument("'" + text + "' is not a valid time window: write START+SECONDS");
+  Window w{number(text.substr(0, plus), text), number(text.substr(plus + 1), text)};
+  if (w.start < 0.0 || w.duration <= 0.0)
+    throw std::invalid_argument("'" + text + "': the start must be >= 0 and the length > 0");
+  return w;
+}
+
+std::string seconds(double s) {
+  std::ostringstream o;
+  o << s << " s";
+  return o.str();
+}
+
+}  // namespace
+
+bool Faults::any() const {
+  return !dropouts.empty() || !disappear.empty() || !stalls.empty() || !jumps.empty() ||
+         corruptProbability > 0.0 || driftPpm != 0.0;
+}
+
+std::vector<Window> parseWindows(const std::string& text) {
+  std::vector<Window> out;
+  for (const std::string& part : split(text, '|')) out.push_back(window(part));
+  return out;
+}
+
+std::vector<Dropout> parseDropouts(const std::string& text) {
+  std::vector<Dropout> out;
+  for (const std::string& part : split(text, '|')) {
+    const auto at = part.find('@');
+    if (at == std::string::npos)
+      throw std::invalid_argument("'" + part + "' is not a valid dropout: write STREAM@START+SECONDS");
+    out.push_back({part.substr(0, at), window(part.substr(at + 1))});
+  }
+  return out;
+}
+
+std::vector<ClockJump> parseJumps(const std::string& text) {
+  std::vector<ClockJump> out;
+  for (const std::string& part : split(text, '|')) {
+    const auto colon = part.find(':');
+    if (colon == std::string::npos)
+      throw std::invalid_argument("'" + part + "' is not a valid clock jump: write AT:SECONDS");
+    ClockJump j{number(part.substr(0, colon), part), number(part.substr(colon + 1), part)};
+    if (j.at < 0.0 || j.delta == 0.0)
+      throw std::invalid_argument("'" + part + "': the time must be >= 0 and the step not 0");
+    out.push_back(j);
+  }
+  return out;
+}
+
+VirtualArmSource::VirtualArmSource(const VirtualArmParams& params)
+    : m_p(params), m_rng(params.sim.seed ^ 0x5eedf417ULL) {
+  m_trajectory = makeTrajectory(m_p.trajectory, m_p.trajectoryOptions);
+  const SimulationParams& s = m_p.sim;
+  if (!(m_p.faults.corruptProbability >= 0.0 && m_p.faults.corruptProbability <= 1.0))
+    throw std::invalid_argument("the corrupt-sample probability must be in [0, 1]");
+  if (!std::isfinite(m_p.faults.driftPpm) || std::abs(m_p.faults.driftPpm) > 1000.0)
+    throw std::invalid_argument("the clock drift must be within +-1000 ppm");
+  SimulationParams sim = s;
+  sim.includeTruth = m_p.truth;
+  m_stream = std::make_unique<SensorStream>(*m_trajectory, sim);
+  if (s.upperArm.enabled) m_streams.push_back({"upper", ArmSlot::UpperArmImu, s.upperArm.rateHz});
+  if (s.forearm.enabled) m_streams.push_back({"forearm", ArmSlot::ForearmImu, s.forearm.rateHz});
+  if (s.kinect.enabled) m_streams.push_back({"kinect", ArmSlot::Optical, s.kinect.rateHz});
+  if (s.webcam.enabled) m_streams.push_back({"webcam", ArmSlot::Camera, s.webcam.rateHz});
+  if (m_p.truth && (s.upperArm.enabled || s.forearm.enabled))
+    m_streams.push_back({"truth", ArmSlot::Truth, std::max(s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
+                                                           s.forearm.enabled ? s.forearm.rateHz : 0.0)});
+  if (m_streams.empty()) throw std::invalid_argument("the virtual arm needs at least one sensor");
+  for (const Dropout& d : m_p.faults.dropouts) {
+    bool known = false;
+    for (const VirtualStream& v : m_streams) known = known || v.name == d.stream;
+    if (!known) {
+      std::string names;
+      for (const VirtualStream& v : m_streams) names += (names.empty() ? "" : ", ") + v.name;
+      throw std::invalid_argument("dropout of '" + d.stream +
+                                  "', which this virtual arm does not have (it has " + names + ")");
+    }
+  }
+  m_dropped.assign(m_streams.size(), 0);
+  m_corrupted.assign(m_streams.size(), 0);
+  m_inDropout.assign(m_streams.size(), false);
+}
+
+VirtualArmSource::~VirtualArmSource() = default;
+
+int VirtualArmSource::streamIndex(ArmSlot slot) const {
+  for (std::size_t i = 0; i < m_streams.size(); ++i)
+    if (m_streams[i].slot == slot) return static_cast<int>(i);
+  return -1;
+}
+
+double VirtualArmSource::imuClock(double t) const {
+  return (t - m_clockBase) * (1.0 + m_p.faults.driftPpm * 1e-6) + m_jumpOffset;
+}
+
+void VirtualArmSource::skipTo(double t) {
+  m_stream->skipTo(t);
+}
+
+void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>& out,
+                               std::vector<SourceEvent>& events) {
+  const double t = row.t;
+  // Link state.
+  bool gone = false;
+  for (const Window& w : m_p.faults.disappear) gone = gone || w.contains(t);
+  if (gone && m_linkUp) {
+    m_linkUp = false;
+    events.push_back({SourceEventKind::LinkLost, t, -1,
+                      "virtual arm: link lost at " + seconds(t) + " (injected)"});
+  } else if (!gone && !m_linkUp) {
+    m_linkUp = true;
+    if (m_p.faults.restartClock) {
+      m_clockBase = t;
+      m_jumpOffset = 0.0;
+    }
+    events.push_back({SourceEventKind::LinkBack, t, -1,
+                      std::string("virtual arm: link back at ") + seconds(t) +
+                          (m_p.faults.restartClock ? ", its clock restarted from 0" : "")});
+  }
+  while (m_nextJump < m_p.faults.jumps.size() && m_p.faults.jumps[m_nextJump].at <= t) {
+    m_jumpOffset += m_p.faults.jumps[m_nextJump].delta;
+    events.push_back({SourceEventKind::ClockJump, t, -1,
+                      "virtual arm: IMU clock stepped by " +
+                          seconds(m_p.faults.jumps[m_nextJump].delta) + " (injected)"});
+    ++m_nextJump;
+  }
+  bool stalled = false;
+  for (const Window& w : m_p.faults.stalls) stalled = stalled || w.contains(t);
+  if (stalled && !m_stalled)
+    events.push_back({SourceEventKind::StallStart, t, -1,
+                      "virtual arm: link stalled at " + seconds(t) + " (injected)"});
+  m_stalled = stalled;
+
+  auto deliver = [&](ArmSlot slot, double deviceTime, SensorPayload payload) {
+    const int k = streamIndex(slot);
+    if (k < 0) return;
+    const auto i = static_cast<std::size_t>(k);
+    bool dropping = false;
+    for (const Dropout& d : m_p.faults.dropouts)
+      dropping = dropping || (d.stream == m_streams[i].name && d.window.contains(t));
+    if (dropping != m_inDropout[i]) {
+      m_inDropout[i] = dropping;
+      events.push_back({dropping ? SourceEventKind::DropoutStart : SourceEventKind::DropoutEnd, t,
+                        k,
+                        "virtual arm: " + m_streams[i].name +
+                            (dropping ? " dropped out at " : " back at ") + seconds(t) +
+                            (dropping ? " (injected)" : "")});
+    }
+    if (gone || dropping) {
+      if (slot != ArmSlot::Truth) ++m_dropped[i];
+      return;
+    }
+    if (auto* imu = std::get_if<ImuReading>(&payload); imu && m_p.faults.corruptProbability > 0.0) {
+      if (std::uniform_real_distribution<double>(0.0, 1.0)(m_rng) < m_p.faults.corruptProbability) {
+        imu->acc.x() = std::numeric_limits<double>::quiet_NaN();
+        ++m_corrupted[i];
+      }
+    }
+    VirtualSample s{k, deviceTime, std::move(payload)};
+    if (stalled)
+      m_held.push_back(std::move(s));
+    else
+      out.push_back(std::move(s));
+  };
+
+  const double imuT = imuClock(t);
+  if (row.upperArm) deliver(ArmSlot::UpperArmImu, imuT, *row.upperArm);
+  if (row.forearm) deliver(ArmSlot::ForearmImu, imuT, *row.forearm);
+  if (row.elbow || row.wrist) deliver(ArmSlot::Optical, t, OpticalPositions{row.elbow, row.wrist});
+  if (row.camWrist || row.camElbow)
+    deliver(ArmSlot::Camera, t, MarkerPixels{row.camWrist, row.camElbow});
+  if (row.trueAngles) deliver(ArmSlot::Truth, imuT, TruthAngles{*row.trueAngles});
+}
+
+void VirtualArmSource::advance(double t, std::vector<VirtualSample>& out,
+                               std::vector<SourceEvent>& events) {
+  if (m_finished) return;
+  while (m_stream->nextTime() <= t) {
+    const std::optional<ArmSample> row = m_stream->next();
+    if (!row) break;
+    const bool wasStalled = m_stalled;
+    std::vector<VirtualSample> now;
+    emitRow(*row, now, events);
+    if (wasStalled && !m_stalled) {
+      events.push_back({SourceEventKind::StallEnd, row->t, -1,
+                        "virtual arm: link delivered " + std::to_string(m_held.size()) +
+                            " held samples at " + seconds(row->t)});
+      for (VirtualSample& s : m_held) out.push_back(std::move(s));
+      m_held.clear();
+    }
+    for (VirtualSample& s : now) out.push_back(std::move(s));
+  }
+  if (!std::isfinite(m_stream->nextTime())) {
+    for (VirtualSample& s : m_held) out.push_back(std::move(s));
+    m_held.clear();
+    m_finished = true;
+    events.push_back({SourceEventKind::Finished, t, -1, "virtual arm: simulation finished"});
+  }
+}
+
+}  // namespace armtrack::devices::virtualarm
