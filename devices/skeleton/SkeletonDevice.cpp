@@ -1,0 +1,206 @@
+#include "devices/skeleton/SkeletonDevice.h"
+
+#include <QLoggingCategory>
+#include <QNetworkDatagram>
+#include <QTimer>
+#include <QUdpSocket>
+#include <cmath>
+
+#include "devices/api/Options.h"
+
+Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
+
+namespace armtrack::devices::skeleton {
+namespace {
+
+constexpr int kProblemWindowMs = 1000;
+
+int toMs(double seconds) {
+  return static_cast<int>(std::lround(seconds * 1000.0));
+}
+
+StreamInfo opticalStream() {
+  StreamInfo info;
+  info.name = "tracker elbow and wrist";
+  info.role = StreamRole::Optical;
+  return info;  // the tracker's rate is unknown here; its time does not wrap
+}
+
+Eigen::Vector3d vec(const std::array<double, 3>& p) {
+  return {p[0], p[1], p[2]};
+}
+
+}  // namespace
+
+std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options, QString* error) {
+  Options opts(options);
+  SkeletonSettings s;
+  QStringList problems;
+  s.port = static_cast<std::uint16_t>(opts.integer(QStringLiteral("port"), 9870, 1, 65535));
+  const QString origin =
+      opts.text(QStringLiteral("origin"), QStringLiteral("shoulder")).trimmed().toLower();
+  s.timeoutSeconds = opts.number(QStringLiteral("timeout"), 3.0, 0.2, 60.0);
+  if (origin == u"shoulder")
+    s.origin = Origin::Shoulder;
+  else if (origin == u"camera")
+    s.origin = Origin::Camera;
+  else
+    problems << QStringLiteral("option 'origin' must be shoulder or camera, not '%1'").arg(origin);
+  if (const QString e = opts.error(); !e.isEmpty()) problems << e;
+  if (!problems.isEmpty()) {
+    if (error) *error = problems.join(QStringLiteral("; "));
+    return std::nullopt;
+  }
+  return s;
+}
+
+SkeletonDevice::SkeletonDevice(const SkeletonSettings& settings, QObject* parent)
+    : Device({opticalStream()}, parent), m_settings(settings) {}
+
+SkeletonDevice::~SkeletonDevice() = default;
+
+void SkeletonDevice::start() {
+  if (!m_socket) {
+    m_socket = new QUdpSocket(this);
+    connect(m_socket, &QUdpSocket::readyRead, this, &SkeletonDevice::onReadyRead);
+    m_silenceTimer = new QTimer(this);
+    m_silenceTimer->setSingleShot(true);
+    connect(m_silenceTimer, &QTimer::timeout, this, &SkeletonDevice::onSilence);
+    m_problemTimer = new QTimer(this);
+    m_problemTimer->setSingleShot(true);
+    connect(m_problemTimer, &QTimer::timeout, this, &SkeletonDevice::flushHeldProblems);
+  }
+  if (m_running) return;
+  m_running = true;
+  m_streaming = false;
+  m_everStreamed = false;
+  m_errorsSeen = m_parser.errors().count();
+  m_droppedSeen = m_parser.droppedFrames();
+  if (!m_socket->bind(QHostAddress::Any, m_settings.port, QAbstractSocket::DontShareAddress)) {
+    const QString why = m_socket->errorString();
+    return fail(
+        m_socket->error() == QAbstractSocket::AddressInUseError
+            ? QStringLiteral("UDP port %1 is already in use (another device or program "
+                             "listens on it): choose another port with port=")
+                  .arg(m_settings.port)
+            : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.port).arg(why));
+  }
+  qCInfo(lcSkeleton) << "listening on UDP port" << m_settings.port;
+  setState(
+      DeviceState::Connecting,
+      QStringLiteral("listening on UDP port %1, waiting for tracker frames").arg(m_settings.port));
+  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+}
+
+void SkeletonDevice::stop() {
+  if (!m_socket) return;  // never started
+  m_running = false;      // also after an Error: the state goes to Disconnected whatever it was
+  m_socket->close();
+  m_silenceTimer->stop();
+  m_problemTimer->stop();
+  flushHeldProblems();
+  setState(DeviceState::Disconnected, QStringLiteral("stopped"));
+}
+
+void SkeletonDevice::onReadyRead() {
+  const double arrival = hostNow();
+  SampleBatch batch;
+  std::uint64_t unusable = 0;
+  QString unusableWhy;
+  while (m_socket->hasPendingDatagrams()) {
+    const QByteArray bytes = m_socket->receiveDatagram().data();
+    const std::optional<Frame> frame = m_parser.parseDatagram(
+        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+    if (!frame) continue;
+    OpticalPositions p;
+    if (m_settings.origin == Origin::Shoulder) {
+      if (!frame->shoulder) {
+        ++unusable;
+        unusableWhy = QStringLiteral(
+                          "frame %1 has no shoulder: elbow and wrist cannot be placed "
+                          "relative to it (send the shoulder, or set origin=camera)")
+                          .arg(frame->frame);
+        continue;
+      }
+      const Eigen::Vector3d shoulder = vec(frame->shoulder->position);
+      if (frame->elbow) p.elbow = vec(frame->elbow->position) - shoulder;
+      if (frame->wrist) p.wrist = vec(frame->wrist->position) - shoulder;
+    } else {
+      if (frame->elbow) p.elbow = vec(frame->elbow->position);
+      if (frame->wrist) p.wrist = vec(frame->wrist->position);
+    }
+    if (!p.elbow && !p.wrist) {
+      ++unusable;
+      unusableWhy = QStringLiteral("frame %1 tracks neither elbow nor wrist").arg(frame->frame);
+      continue;
+    }
+    batch.push_back(DeviceSample{0, frame->t, arrival, p});
+  }
+  if (!m_running) return;
+
+  const ParseErrorLog& log = m_parser.errors();
+  if (log.count() != m_errorsSeen) {
+    const std::uint64_t n = log.count() - m_errorsSeen;
+    m_errorsSeen = log.count();
+    countCorrupt(0, n);
+    noteProblems(n, QString::fromStdString(log.last()));
+  }
+  if (const std::uint64_t d = m_parser.droppedFrames(); d != m_droppedSeen) {
+    countDropped(0, d - m_droppedSeen);
+    m_droppedSeen = d;
+  }
+  if (unusable) noteProblems(unusable, unusableWhy);
+  if (batch.empty()) return;
+
+  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  if (!m_streaming) {
+    m_streaming = true;
+    if (m_everStreamed) countReconnect();
+    m_everStreamed = true;
+    setState(DeviceState::Streaming,
+             QStringLiteral("streaming from UDP port %1").arg(m_settings.port));
+  }
+  publish(batch);
+}
+
+void SkeletonDevice::onSilence() {
+  if (!m_running) return;
+  m_streaming = false;
+  setState(DeviceState::Connecting,
+           QStringLiteral("no tracker frame on UDP port %1 for %2 s; waiting")
+               .arg(m_settings.port)
+               .arg(m_settings.timeoutSeconds));
+}
+
+void SkeletonDevice::fail(const QString& reason) {
+  qCWarning(lcSkeleton).noquote() << reason;
+  m_running = false;
+  m_silenceTimer->stop();
+  setState(DeviceState::Error, reason);
+}
+
+void SkeletonDevice::noteProblems(std::uint64_t count, const QString& latest) {
+  // The first problem of a quiet second is reported at once; the rest of that second are summed
+  // up when it ends, so a flood of bad datagrams yields one message per second.
+  if (!m_problemTimer->isActive()) {
+    reportProblem(count == 1
+                      ? latest
+                      : QStringLiteral("%1 (and %2 more problems)").arg(latest).arg(count - 1));
+    m_problemTimer->start(kProblemWindowMs);
+    return;
+  }
+  m_heldProblems += count;
+  m_heldMessage = latest;
+}
+
+void SkeletonDevice::flushHeldProblems() {
+  if (m_heldProblems == 0) return;
+  reportProblem(QStringLiteral("%1 more problems in the last second; the latest: %2")
+                    .arg(m_heldProblems)
+                    .arg(m_heldMessage));
+  m_heldProblems = 0;
+  m_heldMessage.clear();
+  if (m_running) m_problemTimer->start(kProblemWindowMs);
+}
+
+}  // namespace armtrack::devices::skeleton

@@ -1,0 +1,75 @@
+// The skeleton device: elbow and wrist positions from an external body tracker, one JSON object
+// per UDP datagram. See docs/devices/skeleton-udp.md, "Using the plugin".
+#pragma once
+
+#include <QString>
+#include <QVariantMap>
+#include <cstdint>
+#include <optional>
+
+#include "devices/api/Device.h"
+#include "devices/skeleton/SkeletonParser.h"
+
+class QTimer;
+class QUdpSocket;
+
+namespace armtrack::devices::skeleton {
+
+/// Where the published positions are measured from.
+enum class Origin {
+  Shoulder,  ///< elbow and wrist minus the tracked shoulder (camera axes); frames need a shoulder
+  Camera,    ///< as sent: the tracker's own frame
+};
+
+/// What the plugin's options select.
+struct SkeletonSettings {
+  std::uint16_t port = 9870;         ///< local UDP port the tracker sends to
+  Origin origin = Origin::Shoulder;  ///< see Origin
+  double timeoutSeconds = 3.0;       ///< s without a frame: back to Connecting
+};
+
+/// Reads `port`, `origin` and `timeout`. Empty, with *error saying what to change, when an option
+/// is malformed or unknown. Any thread.
+std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options, QString* error);
+
+/// An external tracker as one Optical stream (OpticalPositions, m). Listens on the UDP port on all
+/// addresses; Connecting until the first frame, then Streaming; no frame for `timeoutSeconds`
+/// sets Connecting ("no data") and frames coming back count as a reconnect. A port already in
+/// use is an Error. Device time is the frame's "t" (s); gaps in "frame" count as dropped.
+/// Frames without elbow and wrist, or (origin shoulder) without a shoulder, publish nothing and
+/// are reported, rate-limited. Threads: construct anywhere, then use only from the device's
+/// thread (see Device).
+class SkeletonDevice final : public Device {
+  Q_OBJECT
+ public:
+  explicit SkeletonDevice(const SkeletonSettings& settings, QObject* parent = nullptr);
+  ~SkeletonDevice() override;
+
+ public slots:
+  void start() override;
+  void stop() override;
+
+ private:
+  void onReadyRead();
+  void onSilence();
+  void fail(const QString& reason);
+  void noteProblems(std::uint64_t count, const QString& latest);
+  void flushHeldProblems();
+
+  const SkeletonSettings m_settings;
+  QUdpSocket* m_socket = nullptr;  // children, created in start()
+  QTimer* m_silenceTimer = nullptr;
+  QTimer* m_problemTimer = nullptr;  // one problem message per second at most
+  bool m_running = false;
+
+  SkeletonParser m_parser;
+  std::uint64_t m_errorsSeen = 0;
+  std::uint64_t m_droppedSeen = 0;
+  bool m_streaming = false;
+  bool m_everStreamed = false;  // a later Streaming counts as a reconnect
+
+  std::uint64_t m_heldProblems = 0;
+  QString m_heldMessage;
+};
+
+}  // namespace armtrack::devices::skeleton

@@ -1,0 +1,31 @@
+#include "devices/skeleton/SkeletonPlugin.h"
+
+#include "devices/skeleton/SkeletonDevice.h"
+
+namespace armtrack::devices::skeleton {
+
+QString SkeletonPlugin::name() const {
+  return QStringLiteral("skeleton-udp");
+}
+
+QString SkeletonPlugin::description() const {
+  return QStringLiteral(
+      "elbow and wrist positions from an external body tracker (Kinect SDK, "
+      "pose estimator), JSON over UDP");
+}
+
+QString SkeletonPlugin::optionsHelp() const {
+  return QStringLiteral(
+      "port=9870        local UDP port the tracker sends to\n"
+      "origin=shoulder  shoulder: elbow and wrist relative to the tracked shoulder; camera: as "
+      "sent\n"
+      "timeout=3        seconds without a frame before the state goes back to connecting");
+}
+
+std::unique_ptr<Device> SkeletonPlugin::create(const QVariantMap& options, QString* error) {
+  const auto settings = readSkeletonSettings(options, error);
+  if (!settings) return nullptr;
+  return std::make_unique<SkeletonDevice>(*settings);
+}
+
+}  // namespace armtrack::devices::skeleton

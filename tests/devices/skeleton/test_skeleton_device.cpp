@@ -1,0 +1,259 @@
+// The "skeleton-udp" plugin against a fake tracker on loopback UDP. Datagrams are JSON text written
+// here from the documented format; expected positions are computed here.
+#include <gtest/gtest.h>
+
+#include <QTest>
+#include <QThread>
+#include <QUdpSocket>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "devices/api/Device.h"
+#include "tests/support/LoadPlugin.h"
+
+using namespace armtrack;
+using namespace armtrack::devices;
+
+namespace {
+
+// Joint positions of frame k (m, camera frame), exactly representable.
+struct Joints {
+  double shoulder[3], elbow[3], wrist[3];
+};
+Joints joints(int k) {
+  const double d = 0.0625 * k;
+  return {{0.25, 0.5, 2.0}, {0.25 + d, 0.25, 2.125}, {0.5, -0.125 + d, 1.875}};
+}
+std::string xyz(const double* p) {
+  char s[96];
+  std::snprintf(s, sizeof s, "[%.6f,%.6f,%.6f]", p[0], p[1], p[2]);
+  return s;
+}
+double frameTime(int k) {
+  return 100.0 + k / 32.0;
+}
+std::string frameJson(int k, bool shoulder = true, bool elbow = true, bool wrist = true) {
+  const Joints j = joints(k);
+  char head[96];
+  std::snprintf(head, sizeof head, R"({"v":1,"t":%.6f,"frame":%d,"side":"right","joints":{)",
+                frameTime(k), k);
+  std::string s = head;
+  std::string sep;
+  if (shoulder) s += std::exchange(sep, ",") + "\"shoulder\":" + xyz(j.shoulder);
+  if (elbow) s += std::exchange(sep, ",") + "\"elbow\":" + xyz(j.elbow);
+  if (wrist) s += std::exchange(sep, ",") + "\"wrist\":" + xyz(j.wrist);
+  return s + R"(},"confidence":{"elbow":0.9},"hand":[1,2,3]})";
+}
+
+void expectFrame(const DeviceSample& s, int k, bool relative, bool elbow = true,
+                 bool wrist = true) {
+  SCOPED_TRACE("frame " + std::to_string(k));
+  EXPECT_EQ(s.stream, 0);
+  EXPECT_NEAR(s.deviceTime, frameTime(k), 1e-9);
+  ASSERT_TRUE(std::holds_alternative<OpticalPositions>(s.payload));
+  const OpticalPositions& p = std::get<OpticalPositions>(s.payload);
+  const Joints j = joints(k);
+  ASSERT_EQ(p.elbow.has_value(), elbow);
+  ASSERT_EQ(p.wrist.has_value(), wrist);
+  for (int i = 0; i < 3; ++i) {
+    const double o = relative ? j.shoulder[i] : 0.0;
+    if (elbow) EXPECT_NEAR((*p.elbow)[i], j.elbow[i] - o, 1e-12);
+    if (wrist) EXPECT_NEAR((*p.wrist)[i], j.wrist[i] - o, 1e-12);
+  }
+}
+
+// The device in its own thread, as the session runs it; what it emits is collected here.
+struct Harness {
+  std::unique_ptr<Device> device;
+  QThread thread;
+  QObject receiver;
+  std::vector<DeviceSample> samples;
+  std::vector<std::pair<DeviceState, QString>> states;
+  QStringList problems;
+
+  explicit Harness(std::unique_ptr<Device> d) : device(std::move(d)) {
+    QObject::connect(device.get(), &Device::samplesReady, &receiver, [this](const SampleBatch& b) {
+      samples.insert(samples.end(), b.begin(), b.end());
+    });
+    QObject::connect(device.get(), &Device::stateChanged, &receiver,
+                     [this](DeviceState s, const QString& why) { states.emplace_back(s, why); });
+    QObject::connect(device.get(), &Device::problem, &receiver,
+                     [this](const QString& m) { problems << m; });
+    device->moveToThread(&thread);
+    thread.start();
+    QMetaObject::invokeMethod(device.get(), &Device::start, Qt::QueuedConnection);
+  }
+  ~Harness() { stop(); }
+  void stop() {
+    if (!thread.isRunning()) return;
+    QMetaObject::invokeMethod(device.get(), &Device::stop, Qt::BlockingQueuedConnection);
+    thread.quit();
+    thread.wait();
+    QCoreApplication::processEvents();
+  }
+  DeviceState state() const {
+    return states.empty() ? DeviceState::Disconnected : states.back().first;
+  }
+  QString reason() const { return states.empty() ? QString() : states.back().second; }
+  bool waitState(DeviceState s, int ms = 2000) {
+    return QTest::qWaitFor([&] { return state() == s; }, ms);
+  }
+  bool waitSamples(std::size_t n, int ms = 2000) {
+    return QTest::qWaitFor([&] { return samples.size() >= n; }, ms);
+  }
+};
+
+class SkeletonDevice : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    m_plugin = test::loadPlugin(QStringLiteral("skeleton-udp"));
+    ASSERT_NE(m_plugin, nullptr);
+    QUdpSocket probe;  // a port that was free a moment ago
+    ASSERT_TRUE(probe.bind(QHostAddress::LocalHost, 0));
+    m_port = probe.localPort();
+  }
+  std::unique_ptr<Harness> start(QVariantMap options = {}) {
+    options.insert(QStringLiteral("port"), m_port);
+    QString error;
+    auto d = m_plugin->create(options, &error);
+    EXPECT_TRUE(d) << error.toStdString();
+    if (!d) return nullptr;
+    auto h = std::make_unique<Harness>(std::move(d));
+    EXPECT_TRUE(h->waitState(DeviceState::Connecting));
+    return h;
+  }
+  void send(const std::string& d) {
+    ASSERT_EQ(m_tx.writeDatagram(d.data(), static_cast<qint64>(d.size()), QHostAddress::LocalHost,
+                                 m_port),
+              static_cast<qint64>(d.size()));
+  }
+
+  DevicePlugin* m_plugin = nullptr;
+  std::uint16_t m_port = 0;
+  QUdpSocket m_tx;
+};
+
+}  // namespace
+
+TEST_F(SkeletonDevice, OptionsSayWhatToChange) {
+  EXPECT_EQ(m_plugin->name(), QStringLiteral("skeleton-udp"));
+  QString error;
+  EXPECT_FALSE(m_plugin->create({{QStringLiteral("origin"), QStringLiteral("hip")}}, &error));
+  EXPECT_TRUE(error.contains(QStringLiteral("shoulder or camera, not 'hip'")))
+      << error.toStdString();
+  EXPECT_FALSE(m_plugin->create({{QStringLiteral("role"), QStringLiteral("upper")}}, &error));
+  EXPECT_TRUE(error.contains(QStringLiteral("unknown option 'role'"))) << error.toStdString();
+  auto d = m_plugin->create({}, &error);  // every option has a default
+  ASSERT_TRUE(d);
+  ASSERT_EQ(d->streams().size(), 1u);
+  EXPECT_EQ(d->streams()[0].role, StreamRole::Optical);
+}
+
+TEST_F(SkeletonDevice, FramesBecomeShoulderRelativePositions) {
+  auto h = start();
+  ASSERT_TRUE(h);
+  const double before = hostNow();
+  for (int k = 0; k < 10; ++k) send(frameJson(k));
+  send(frameJson(10, true, false, true));  // elbow not tracked
+  ASSERT_TRUE(h->waitSamples(11));
+  ASSERT_EQ(h->samples.size(), 11u);
+  for (int k = 0; k < 10; ++k) {
+    expectFrame(h->samples[k], k, /*relative=*/true);
+    EXPECT_GE(h->samples[k].arrivalTime, before);
+    EXPECT_LE(h->samples[k].arrivalTime, hostNow());
+  }
+  expectFrame(h->samples[10], 10, true, /*elbow=*/false, /*wrist=*/true);
+  EXPECT_EQ(h->state(), DeviceState::Streaming);
+  EXPECT_TRUE(h->problems.isEmpty()) << h->problems.join(u'\n').toStdString();
+}
+
+TEST_F(SkeletonDevice, CameraOriginPassesPositionsThroughAndNeedsNoShoulder) {
+  auto h = start({{QStringLiteral("origin"), QStringLiteral("camera")}});
+  ASSERT_TRUE(h);
+  send(frameJson(0));
+  send(frameJson(1, /*shoulder=*/false));
+  ASSERT_TRUE(h->waitSamples(2));
+  expectFrame(h->samples[0], 0, /*relative=*/false);
+  expectFrame(h->samples[1], 1, false);
+}
+
+TEST_F(SkeletonDevice, MalformedDatagramsAreReportedAndLaterFramesKept) {
+  auto h = start();
+  ASSERT_TRUE(h);
+  std::vector<int> good;
+  auto sendGood = [&](int k) {
+    good.push_back(k);
+    send(frameJson(k));
+  };
+  sendGood(0);
+  send("\x01\x02\xff\xfe binary");  // 1: not JSON
+  const std::string whole = frameJson(1);
+  send(whole.substr(0, whole.size() / 2));  // 2: truncated
+  sendGood(2);
+  std::string v2 = frameJson(3);
+  v2.replace(v2.find("\"v\":1"), 5, "\"v\":2");
+  send(v2);  // 3: wrong version
+  std::string far = frameJson(4);
+  far.replace(far.find("2.125000"), 8, "99.00000");
+  send(far);                                          // 4: elbow 99 m away
+  send(R"({"v":1,"t":1,"frame":5,"side":"right"})");  // 5: no joints
+  send("{" + std::string(9000, ' ') + "}");           // 6: too long
+  sendGood(6);                                        // frames 1, 3-5 missing: 4 dropped
+  sendGood(7);
+  ASSERT_TRUE(h->waitSamples(good.size()));
+  QTest::qWait(50);
+  ASSERT_EQ(h->samples.size(), good.size());
+  for (std::size_t i = 0; i < good.size(); ++i) expectFrame(h->samples[i], good[i], true);
+  const DeviceHealth health = h->device->health();
+  EXPECT_EQ(health.streams[0].corrupt, 6u);
+  EXPECT_EQ(health.streams[0].dropped, 4u);
+  ASSERT_FALSE(h->problems.isEmpty());
+  EXPECT_TRUE(h->problems.front().contains(QStringLiteral("datagram")))
+      << h->problems.front().toStdString();
+  EXPECT_LE(h->problems.size(), 2);
+  EXPECT_EQ(h->state(), DeviceState::Streaming);
+}
+
+TEST_F(SkeletonDevice, FrameWithoutShoulderIsReportedNotPublished) {
+  auto h = start();
+  ASSERT_TRUE(h);
+  send(frameJson(0, /*shoulder=*/false));
+  send(frameJson(1));
+  ASSERT_TRUE(h->waitSamples(1));
+  QTest::qWait(50);
+  ASSERT_EQ(h->samples.size(), 1u);
+  expectFrame(h->samples[0], 1, true);
+  ASSERT_EQ(h->problems.size(), 1);
+  EXPECT_TRUE(h->problems[0].contains(QStringLiteral("origin=camera")))
+      << h->problems[0].toStdString();
+  EXPECT_EQ(h->device->health().streams[0].corrupt, 0u);
+}
+
+TEST_F(SkeletonDevice, SilenceGoesConnectingAndTheTrackerComesBack) {
+  auto h = start({{QStringLiteral("timeout"), QStringLiteral("0.3")}});
+  ASSERT_TRUE(h);
+  send(frameJson(0));
+  ASSERT_TRUE(h->waitState(DeviceState::Streaming));
+  ASSERT_TRUE(h->waitState(DeviceState::Connecting, 1500));
+  EXPECT_TRUE(h->reason().contains(QStringLiteral("no tracker frame")))
+      << h->reason().toStdString();
+  send("garbage");
+  send(frameJson(1));
+  ASSERT_TRUE(h->waitState(DeviceState::Streaming));
+  ASSERT_TRUE(h->waitSamples(2));
+  expectFrame(h->samples[1], 1, true);
+  EXPECT_EQ(h->device->health().reconnects, 1u);
+  EXPECT_EQ(h->device->health().streams[0].corrupt, 1u);
+}
+
+TEST_F(SkeletonDevice, PortInUseIsAnError) {
+  QUdpSocket other;
+  ASSERT_TRUE(other.bind(QHostAddress::Any, m_port));
+  QString error;
+  Harness h(m_plugin->create({{QStringLiteral("port"), m_port}}, &error));
+  ASSERT_TRUE(h.waitState(DeviceState::Error));
+  EXPECT_TRUE(h.reason().contains(QStringLiteral("already in use"))) << h.reason().toStdString();
+}
