@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/Camera.h"
 #include "app/cli/Live.h"
 #include "app/cli/Calibrate.h"
 #include "app/cli/Cli.h"
@@ -53,6 +54,8 @@ Commands:
   devices    list the device plugins and their options
   record     record a live session from devices (with the live estimates)
   live       run a live session; --stats prints rates, losses and latency
+  camera-calibrate  camera intrinsics from chessboard images (docs/devices/webcam.md)
+  camera-register   camera pose in the shoulder frame from an ArUco board image
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
 See docs/cli.md for details.
@@ -420,6 +423,8 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (cmd == "devices") return devicesCommand(rest, out, err);
     if (cmd == "record") return recordCommand(rest, out, err);
     if (cmd == "live") return liveCommand(rest, out, err);
+    if (cmd == "camera-calibrate") return cameraCalibrateCommand(rest, out, err);
+    if (cmd == "camera-register") return cameraRegisterCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QSettings>
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -152,8 +153,8 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   LiveOptions o;
   o.devices = a.values("--device");
   if (o.devices.empty()) a.fail("--device is required (armtrack-cli devices lists them)");
-  o.duration = record ? a.positive("--duration", 0.0) : a.nonNegative("--duration", 0.0);
   if (record && !a.value("--duration")) a.fail("--duration is required");
+  o.duration = record ? a.positive("--duration", 0.0) : a.nonNegative("--duration", 0.0);
   o.out = record ? a.required("--out") : a.value("--out").value_or("");
   o.stats = a.flag("--stats");
   o.statsInterval = a.positive("--stats-interval", 10.0);
@@ -226,6 +227,14 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   while (!g_interrupted) {
     const double now = devices::hostNow();
     if (o.duration > 0.0 && now - start >= o.duration) break;
+    const session::SessionStats st = session.stats();
+    const bool allEnded = std::all_of(st.deviceStates.begin(), st.deviceStates.end(), [](auto s) {
+      return s == devices::DeviceState::Disconnected || s == devices::DeviceState::Error;
+    });
+    if (allEnded && now - start > 1.0) {
+      out << "every device has ended; stopping\n";
+      break;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     QCoreApplication::processEvents();
     drainEvents();

@@ -170,6 +170,15 @@ QString Session::start() {
         break;
     }
   }
+  m_scale = m_devices.front().device->timeScale();
+  for (const DeviceEntry& d : m_devices)
+    if (d.device->timeScale() != m_scale)
+      return QStringLiteral("%1 runs at %2x and %3 at %4x: a replay faster than real time cannot "
+                            "be mixed with live devices")
+          .arg(m_devices.front().label)
+          .arg(m_scale)
+          .arg(d.label)
+          .arg(d.device->timeScale());
   if (m_params.estimate && !imu)
     return QStringLiteral("no IMU among the devices: the estimator needs the upper-arm or "
                           "forearm IMU (or record without estimating)");
@@ -273,8 +282,12 @@ void Session::workerLoop() {
     clocks.push_back(c);
     slotOfStream.push_back(slotOf(s.info.role));
   }
+  // A replay at N x runs the session's clocks N times faster, so device time stays the
+  // recording's time; latencies are reported in real seconds.
+  const double scale = m_scale;
+  const double window = m_params.latencyWindow * scale;
   SyncParams sp;
-  sp.latencyWindow = m_params.latencyWindow;
+  sp.latencyWindow = window;
   TimeSync<SensorPayload> sync(sp, clocks);
   ArmSampleAssembler assembler(slotOfStream, m_params.mergeWindow);
   std::unique_ptr<JointEstimator> filter;
@@ -293,14 +306,14 @@ void Session::workerLoop() {
 
   auto processRow = [&](ArmSample row, double oldestArrival) {
     ++rows;
-    row.t -= m_startTime;  // session time: 0 at start()
+    row.t -= m_startTime * scale;  // session time: 0 at start()
     if (filter) {
       const UpdateResult r = filter->update(row);
       if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && row.hasImu()) {
         const JointEstimate e = filter->estimate();
         row.estimate = e.th;
         ++estimates;
-        const double lat = devices::hostNow() - oldestArrival;
+        const double lat = devices::hostNow() - oldestArrival / scale;
         latency.add(lat);
         fresh.push_back({row.t, e.th, row.trueAngles, lat});
       }
@@ -385,17 +398,17 @@ void Session::workerLoop() {
         ++rejected[k];
         continue;
       }
-      if (sync.push(s.stream, s.deviceTime, s.arrivalTime, std::move(s.payload), sink) ==
+      if (sync.push(s.stream, s.deviceTime, s.arrivalTime * scale, std::move(s.payload), sink) ==
           PushResult::Rejected)
         ++rejected[k];
     }
     local.clear();
     if (closed) break;
-    const double now = devices::hostNow();
+    const double now = devices::hostNow() * scale;
     sync.poll(now, sink);
     // The open row cannot grow any more once the synchroniser has released everything up to a
     // merge window past it: complete it now rather than when the next sample arrives.
-    if (auto t = assembler.openTime(); t && *t + m_params.mergeWindow < now - m_params.latencyWindow) {
+    if (auto t = assembler.openTime(); t && *t + m_params.mergeWindow < now - window) {
       if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
       rowOldestArrival = std::numeric_limits<double>::infinity();
     }

@@ -165,6 +165,7 @@ class Session : public QObject {
   std::vector<Stream> m_streams;
   bool m_running = false;
   double m_startTime = 0.0;
+  double m_scale = 1.0;  // device seconds per host second (replays faster than real time)
 
   // devices -> worker
   std::mutex m_inputMutex;

@@ -53,7 +53,13 @@ DeviceHealth Device::health() const {
 }
 
 void Device::setState(DeviceState state, const QString& reason) {
-  if (m_state.exchange(state) == state) return;
+  // A new reason is news even when the state stays (e.g. "link lost" then "port missing").
+  const bool same = m_state.exchange(state) == state;
+  {
+    std::lock_guard lock(m_mutex);
+    if (same && (reason.isEmpty() || reason == m_lastReason)) return;
+    m_lastReason = reason;
+  }
   emit stateChanged(state, reason);
 }
 

@@ -92,6 +92,9 @@ class Device : public QObject {
 
   const std::vector<StreamInfo>& streams() const { return m_streams; }
   DeviceState state() const { return m_state.load(); }
+  /// Device seconds per host second: 1 for live devices; a replay at 4x returns 4. The session
+  /// runs its clocks at this rate, so device time stays the recording's time. Any thread.
+  virtual double timeScale() const { return 1.0; }
   DeviceHealth health() const;
 
  public slots:
@@ -110,7 +113,7 @@ class Device : public QObject {
   void problem(const QString& message);
 
  protected:
-  /// Changes the state and emits stateChanged() when it differs.
+  /// Changes the state and emits stateChanged() when the state or a non-empty reason differs.
   void setState(DeviceState state, const QString& reason = {});
   /// Counts the batch in the health figures and emits samplesReady(). Empty batches are ignored.
   void publish(const SampleBatch& batch);
@@ -131,6 +134,7 @@ class Device : public QObject {
   mutable std::mutex m_mutex;  // guards m_health and m_windows
   DeviceHealth m_health;
   std::vector<RateWindow> m_windows;
+  QString m_lastReason;
 };
 
 /// A factory of devices, loaded by the application with QPluginLoader. A plugin never opens a
