@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Sets up a Debian 12 machine, builds ArmTrack and starts it. Until the GUI lands this runs a
-# demo session through the command-line tool: a simulated recording of both IMUs, a Kinect and
-# a webcam (the virtual devices' source), estimated and compared with the simulation's truth.
+# demo session through the command-line tool: a 30 s live session with the virtual arm (both
+# IMUs, a Kinect and a webcam, simulated in real time) through the device plugins, the time
+# synchroniser and the estimator, recorded with the live angles and the simulation's truth,
+# then re-estimated offline and compared with the truth.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_BUILD_DIR:-$root/build}"
@@ -9,10 +11,11 @@ data="${XDG_DATA_HOME:-$HOME/.local/share}/ArmTrack/demo"
 
 bash "$root/packaging/deps-debian12.sh"
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
-cmake --build "$build" --parallel "$(nproc)" --target armtrack-cli
+cmake --build "$build" --parallel "$(nproc)" --target armtrack-cli armtrack_plugin_virtual-arm
 
 cli="$build/app/armtrack-cli"
 mkdir -p "$data"
-"$cli" simulate --trajectory multi-joint --duration 30 --webcam --out "$data/session.csv"
-"$cli" estimate "$data/session.csv" --joint-accel-std 10 --out "$data/angles.csv"
-echo "Recording and estimated angles are in $data"
+"$cli" record --device virtual-arm:sensors=upper+forearm+kinect+webcam --duration 30 \
+  --out "$data/session.csv"
+"$cli" estimate "$data/session.csv" --out "$data/angles.csv"
+echo "Recording (with the live angles) and the offline angles are in $data"
