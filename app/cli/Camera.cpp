@@ -33,7 +33,7 @@ differently in each, covering the corners of the image too. Writes the camera fi
 pose; add the pose with camera-register. docs/devices/webcam.md
 
 Options:
-  --images PATH      a folder (its .png, .jpg, .jpeg, .bmp, .tif, .tiff files) or one image;
+  --images PATH      a folder (its .png, .jpg, .jpeg and .bmp files) or one image;
                      image files may also be given as arguments
   --board WxH        inner corners across x down, e.g. 9x6 for a board of 10 x 7 squares
                      (required)
@@ -110,8 +110,7 @@ bool isImageFile(const fs::path& p) {
   std::string ext = p.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp" || ext == ".tif" ||
-         ext == ".tiff";
+  return ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".bmp";
 }
 
 std::string sizeText(cv::Size s) {
@@ -162,8 +161,7 @@ int cameraCalibrateCommand(const std::vector<std::string>& args, std::ostream& o
         if (entry.is_regular_file() && isImageFile(entry.path())) files.push_back(entry.path());
       if (ec) throw std::runtime_error(*dir + ": cannot list the folder (" + ec.message() + ")");
       std::sort(files.begin(), files.end());
-      if (files.empty())
-        throw std::runtime_error(*dir + ": no .png, .jpg, .jpeg, .bmp, .tif or .tiff images");
+      if (files.empty()) throw std::runtime_error(*dir + ": no .png, .jpg, .jpeg or .bmp images");
     } else {
       files.emplace_back(*dir);
     }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
 #include <opencv2/aruco.hpp>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
@@ -67,16 +70,50 @@ bool isRotation(const cv::Matx33d& R, double tol) {
   return worst <= tol && std::abs(cv::determinant(R) - 1.0) <= tol;
 }
 
-cv::Mat loadImage(const std::string& path) {
+namespace {
+
+// The leading bytes that identify the accepted formats.
+const char* cameraImageFormat(const unsigned char* d, std::size_t n) {
+  if (n >= 3 && d[0] == 0xFF && d[1] == 0xD8 && d[2] == 0xFF) return "JPEG";
+  static const unsigned char png[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
+  if (n >= 8 && std::equal(png, png + 8, d)) return "PNG";
+  if (n >= 2 && d[0] == 'B' && d[1] == 'M') return "BMP";
+  return nullptr;
+}
+
+}  // namespace
+
+cv::Mat decodeCameraImage(const unsigned char* data, std::size_t size, std::string* why) {
+  auto fail = [&](std::string reason) {
+    if (why) *why = std::move(reason);
+    return cv::Mat();
+  };
+  if (size == 0) return fail("the file is empty");
+  if (!cameraImageFormat(data, size))
+    return fail("not a JPEG, PNG or BMP image (save the photo in one of those formats)");
+  if (size > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    return fail("the file is too large for an image");
   cv::Mat image;
   try {
-    image = cv::imread(path, cv::IMREAD_COLOR);
+    image =
+        cv::imdecode(cv::Mat(1, static_cast<int>(size), CV_8UC1, const_cast<unsigned char*>(data)),
+                     cv::IMREAD_COLOR);
   } catch (const cv::Exception& e) {
-    throw CalibrationError(path + ": cannot read the image (" + e.err + ")");
+    return fail("the image does not decode (" + e.err + ")");
   }
-  if (image.empty())
-    throw CalibrationError(path + ": cannot read the image (missing, or not an image format " +
-                           "OpenCV reads: PNG, JPEG, BMP, TIFF, ...)");
+  if (image.empty()) return fail("the image does not decode (corrupt or truncated)");
+  return image;
+}
+
+cv::Mat loadImage(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CalibrationError(path + ": cannot open the image (missing or not readable)");
+  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
+                                         std::istreambuf_iterator<char>());
+  if (in.bad()) throw CalibrationError(path + ": cannot read the image (read error)");
+  std::string why;
+  cv::Mat image = decodeCameraImage(bytes.data(), bytes.size(), &why);
+  if (image.empty()) throw CalibrationError(path + ": " + why);
   return image;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <opencv2/core.hpp>
 #include <stdexcept>
 #include <string>
@@ -101,8 +102,16 @@ Extrinsics registerCamera(const cv::Mat& image, const Intrinsics& intrinsics,
                           const ArucoBoardSpec& board, const Pose& boardInShoulder,
                           int minMarkers = 4);
 
-/// Reads an image file (any format cv::imread knows). Throws CalibrationError naming the file.
+/// Reads a photo of a calibration board: JPEG, PNG or BMP, the formats cameras and screenshot
+/// tools write. Other formats are refused before any decoder sees them (OpenCV would also try
+/// DICOM, TIFF, EXR, ..., whose decoders trust sizes in the header and can allocate gigabytes
+/// for a few corrupt bytes). Throws CalibrationError naming the file.
 cv::Mat loadImage(const std::string& path);
+
+/// Decodes an encoded camera image held in memory, JPEG, PNG or BMP only (see loadImage), to
+/// 8-bit BGR. Returns an empty Mat and sets *why when the bytes are not one of those formats or
+/// do not decode. Any thread.
+cv::Mat decodeCameraImage(const unsigned char* data, std::size_t size, std::string* why = nullptr);
 
 /// Whether R is a rotation to tol (orthonormal, determinant +1).
 bool isRotation(const cv::Matx33d& R, double tol = 1e-6);

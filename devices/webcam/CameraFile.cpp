@@ -107,7 +107,7 @@ CameraFile cameraFileFromJson(std::string_view text, const std::string& source) 
   json j;
   try {
     j = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a huge number
     rd.fail("", std::string("not valid JSON (") + e.what() +
                     "); make the file again with armtrack-cli camera-calibrate");
   }
@@ -209,7 +209,7 @@ BoardPoseFile boardPoseFromJson(std::string_view text, const std::string& source
   json j;
   try {
     j = json::parse(text.begin(), text.end());
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, or out_of_range for a huge number
     rd.fail("", std::string("not valid JSON (") + e.what() + ")");
   }
   if (!j.is_object()) rd.fail("", "expected a JSON object");

@@ -1,13 +1,13 @@
-// libFuzzer target: one input = one camera frame as an encoded image (any format cv::imdecode
-// knows) into both marker detectors, or, when the first byte is '{', a camera file and a
-// board-pose file for their JSON parsers.
+// libFuzzer target: one input = one camera frame as an encoded image (through decodeCameraImage,
+// so JPEG, PNG or BMP, as the calibration commands read them) into both marker detectors, or, when
+// the first byte is '{', a camera file and a board-pose file for their JSON parsers.
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <opencv2/core/utils/logger.hpp>
-#include <opencv2/imgcodecs.hpp>
 #include <string_view>
 
+#include "devices/webcam/CameraCalibration.h"
 #include "devices/webcam/CameraFile.h"
 #include "devices/webcam/MarkerDetection.h"
 
@@ -51,14 +51,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     return 0;
   }
-  cv::Mat image;
-  try {
-    image =
-        cv::imdecode(cv::Mat(1, static_cast<int>(size), CV_8UC1, const_cast<std::uint8_t*>(data)),
-                     cv::IMREAD_COLOR);
-  } catch (const cv::Exception&) {
-    return 0;  // the decoders report malformed input by throwing
-  }
+  const cv::Mat image = decodeCameraImage(data, size);
   if (image.empty()) return 0;
   static ColourMarkerDetector colour;
   static ArucoMarkerDetector aruco;

@@ -376,6 +376,8 @@ TEST(CameraFile, CorruptFilesAreClearErrors) {
   expectError(replaced("\"fx\": 801.25", "\"fx\": \"big\""), "'intrinsics.fx': expected a number");
   expectError(replaced("\"version\": 1", "\"version\": 7"), "newer");
   expectError(replaced("\"image_size\"", "\"size\""), "'image_size': missing");
+  // A number beyond double's range is a JSON error, not an escaping library exception.
+  expectError(replaced("\"fx\": 801.25", "\"fx\": 4e3333"), "not valid JSON");
   expectError(replaced("0.1,\n      -0.2", "0.1,\n      -0.2, 4"), "'extrinsics.t_m'");
   std::string notRotation = good;
   {
@@ -388,4 +390,58 @@ TEST(CameraFile, CorruptFilesAreClearErrors) {
   // The text parser alone never throws anything but CameraFileError.
   for (std::size_t n = 0; n < good.size(); n += 7)
     EXPECT_THROW(cameraFileFromJson(good.substr(0, n), "x"), CameraFileError) << n;
+}
+
+namespace {
+
+std::string loadError(const std::string& path) {
+  try {
+    loadImage(path);
+  } catch (const CalibrationError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+}  // namespace
+
+TEST(ImageFiles, CameraFormatsLoadAndOthersAreRefusedBeforeDecoding) {
+  const TempDir dir("images");
+  const cv::Mat img = background(64, 48);
+  for (const char* ext : {".png", ".bmp", ".jpg"}) {
+    const std::string path = dir.file(std::string("board") + ext);
+    ASSERT_TRUE(cv::imwrite(path, img)) << ext;
+    const cv::Mat back = loadImage(path);
+    ASSERT_EQ(back.size(), img.size()) << ext;
+    ASSERT_EQ(back.type(), CV_8UC3) << ext;
+    // PNG and BMP are lossless; JPEG stays close.
+    const double worst = cv::norm(back, img, cv::NORM_INF);
+    if (std::string(ext) == ".jpg")
+      EXPECT_LT(cv::norm(back, img, cv::NORM_L1) / img.total() / 3.0, 6.0);
+    else
+      EXPECT_EQ(worst, 0.0) << ext;
+  }
+  // A DICOM header claiming a 4 GB element: OpenCV's GDCM reader would try to allocate it.
+  std::string dicom(128, '\0');
+  dicom += "DICM";
+  dicom += std::string("\x02\x00\x10\x00OB\x00\x00\xf0\xff\xff\xff", 12);
+  writeBytes(dir.file("scan.dcm"), dicom);
+  EXPECT_NE(loadError(dir.file("scan.dcm")).find("not a JPEG, PNG or BMP"), std::string::npos);
+  // A PNG signature with a broken line-ending check (what a text-mode copy does to a PNG).
+  writeBytes(dir.file("mangled.png"), std::string("\x89PNG\r\x00\x00\x00", 8) + dicom);
+  EXPECT_NE(loadError(dir.file("mangled.png")).find("not a JPEG, PNG or BMP"), std::string::npos);
+  // A real PNG cut short, an empty file and a missing one.
+  std::vector<unsigned char> png;
+  cv::imencode(".png", img, png);
+  writeBytes(dir.file("cut.png"), std::string(png.begin(), png.begin() + png.size() / 3));
+  EXPECT_NE(loadError(dir.file("cut.png")).find("does not decode"), std::string::npos);
+  writeBytes(dir.file("empty.png"), "");
+  EXPECT_NE(loadError(dir.file("empty.png")).find("empty"), std::string::npos);
+  const std::string missing = loadError(dir.file("missing.png"));
+  EXPECT_NE(missing.find("missing.png"), std::string::npos);
+  EXPECT_NE(missing.find("cannot open"), std::string::npos);
 }
