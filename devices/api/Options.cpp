@@ -51,6 +51,20 @@ QString Options::text(const QString& key, const QString& fallback) {
   return m_values.contains(key) ? m_values.value(key).toString() : fallback;
 }
 
+StreamRole Options::imuRole(const QString& key) {
+  const QString role = text(key).trimmed().toLower();
+  if (role == u"upper") return StreamRole::UpperArmImu;
+  if (role == u"forearm") return StreamRole::ForearmImu;
+  if (role.isEmpty())
+    m_problems << QStringLiteral(
+                      "option '%1' is required: %1=upper or %1=forearm (the arm segment the "
+                      "sensor is strapped to)")
+                      .arg(key);
+  else
+    m_problems << QStringLiteral("option '%1' must be upper or forearm, not '%2'").arg(key, role);
+  return StreamRole::UpperArmImu;
+}
+
 QString Options::error() const {
   QStringList problems = m_problems;
   for (auto it = m_values.cbegin(); it != m_values.cend(); ++it)

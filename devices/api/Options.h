@@ -6,6 +6,8 @@
 #include <QStringList>
 #include <QVariantMap>
 
+#include "devices/api/Device.h"
+
 namespace armtrack::devices {
 
 /// Reads options one key at a time; every key read is marked as known. After the reads,
@@ -20,6 +22,9 @@ class Options {
   /// "1/0", "true/false", "yes/no", "on/off".
   bool flag(const QString& key, bool fallback);
   QString text(const QString& key, const QString& fallback = {});
+  /// The arm segment an IMU is strapped to: "upper" or "forearm" (required; any case). On a
+  /// missing or bad value the problem is noted and UpperArmImu returned.
+  StreamRole imuRole(const QString& key = QStringLiteral("role"));
   bool has(const QString& key) const { return m_values.contains(key); }
 
   /// Empty when everything was fine, else "option 'x': ...; unknown option 'y' (known: ...)".

@@ -13,8 +13,6 @@ Q_LOGGING_CATEGORY(lcLineImu, "armtrack.devices.lineimu")
 namespace armtrack::devices::lineimu {
 namespace {
 
-constexpr int kProblemWindowMs = 1000;
-
 int toMs(double seconds) {
   return static_cast<int>(std::lround(seconds * 1000.0));
 }
@@ -35,7 +33,7 @@ std::optional<LineImuSettings> readLineImuSettings(const QVariantMap& options, Q
   s.serialPort = opts.text(QStringLiteral("port")).trimmed();
   const int udp = opts.integer(QStringLiteral("udp"), 0, 1, 65535);
   s.baud = opts.integer(QStringLiteral("baud"), 115200, 300, 4000000);
-  const QString role = opts.text(QStringLiteral("role")).trimmed().toLower();
+  s.role = opts.imuRole();
   s.retrySeconds = opts.number(QStringLiteral("retry"), 1.0, 0.1, 60.0);
   s.timeoutSeconds = opts.number(QStringLiteral("timeout"), 3.0, 0.2, 60.0);
   s.udpPort = static_cast<std::uint16_t>(udp);
@@ -49,16 +47,6 @@ std::optional<LineImuSettings> readLineImuSettings(const QVariantMap& options, Q
     problems << QStringLiteral("option 'port' must name a serial port, e.g. port=/dev/ttyUSB0");
   if (hasUdp && opts.has(QStringLiteral("baud")))
     problems << QStringLiteral("option 'baud' is for a serial port; remove it with 'udp'");
-  if (role == u"upper")
-    s.role = StreamRole::UpperArmImu;
-  else if (role == u"forearm")
-    s.role = StreamRole::ForearmImu;
-  else if (role.isEmpty())
-    problems << QStringLiteral(
-        "option 'role' is required: role=upper or role=forearm (the arm "
-        "segment the sensor is strapped to)");
-  else
-    problems << QStringLiteral("option 'role' must be upper or forearm, not '%1'").arg(role);
   if (const QString e = opts.error(); !e.isEmpty()) problems << e;
   if (!problems.isEmpty()) {
     if (error) *error = problems.join(QStringLiteral("; "));
@@ -98,9 +86,8 @@ void LineImuDevice::createObjects() {
   m_silenceTimer = new QTimer(this);
   m_silenceTimer->setSingleShot(true);
   connect(m_silenceTimer, &QTimer::timeout, this, &LineImuDevice::onSilence);
-  m_problemTimer = new QTimer(this);
-  m_problemTimer->setSingleShot(true);
-  connect(m_problemTimer, &QTimer::timeout, this, &LineImuDevice::flushHeldProblems);
+  m_problems = std::make_unique<ProblemLimiter>(
+      this, [this](const QString& message) { reportProblem(message); });
 }
 
 void LineImuDevice::start() {
@@ -127,8 +114,7 @@ void LineImuDevice::stop() {
   if (m_udp) m_udp->close();
   m_retryTimer->stop();
   m_silenceTimer->stop();
-  m_problemTimer->stop();
-  flushHeldProblems();
+  m_problems->flush();
   setState(DeviceState::Disconnected, QStringLiteral("stopped"));
 }
 
@@ -214,7 +200,7 @@ void LineImuDevice::publishSamples(double arrival) {
     const std::uint64_t n = log.count() - m_errorsSeen;
     m_errorsSeen = log.count();
     countCorrupt(0, n);
-    noteProblems(n, QString::fromStdString(log.last()));
+    m_problems->note(n, QString::fromStdString(log.last()));
   }
   if (m_samples.empty()) return;
 
@@ -222,9 +208,10 @@ void LineImuDevice::publishSamples(double arrival) {
   batch.reserve(m_samples.size());
   for (const Sample& s : m_samples) {
     if (m_lastEpoch && s.epoch != *m_lastEpoch)
-      noteProblems(1, QStringLiteral("%1 restarted ($HELLO): its clock starts again")
-                          .arg(m_parser.hello() ? QString::fromStdString(m_parser.hello()->device)
-                                                : source()));
+      m_problems->note(
+          1,
+          QStringLiteral("%1 restarted ($HELLO): its clock starts again")
+              .arg(m_parser.hello() ? QString::fromStdString(m_parser.hello()->device) : source()));
     m_lastEpoch = s.epoch;
     ImuReading r;
     r.gyr = Eigen::Vector3d(s.gyr[0], s.gyr[1], s.gyr[2]);
@@ -276,30 +263,6 @@ void LineImuDevice::fail(const QString& reason) {
   m_retryTimer->stop();
   m_silenceTimer->stop();
   setState(DeviceState::Error, reason);
-}
-
-void LineImuDevice::noteProblems(std::uint64_t count, const QString& latest) {
-  // The first problem of a quiet second is reported at once; the rest of that second are summed
-  // up when it ends, so a flood of bad input yields one message per second.
-  if (!m_problemTimer->isActive()) {
-    reportProblem(count == 1
-                      ? latest
-                      : QStringLiteral("%1 (and %2 more problems)").arg(latest).arg(count - 1));
-    m_problemTimer->start(kProblemWindowMs);
-    return;
-  }
-  m_heldProblems += count;
-  m_heldMessage = latest;
-}
-
-void LineImuDevice::flushHeldProblems() {
-  if (m_heldProblems == 0) return;
-  reportProblem(QStringLiteral("%1 more problems in the last second; the latest: %2")
-                    .arg(m_heldProblems)
-                    .arg(m_heldMessage));
-  m_heldProblems = 0;
-  m_heldMessage.clear();
-  if (m_running) m_problemTimer->start(kProblemWindowMs);
 }
 
 }  // namespace armtrack::devices::lineimu

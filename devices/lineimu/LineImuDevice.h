@@ -7,10 +7,12 @@
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "devices/api/Device.h"
+#include "devices/api/ProblemLimiter.h"
 #include "devices/lineimu/LineImuParser.h"
 
 class QTimer;
@@ -64,8 +66,6 @@ class LineImuDevice final : public Device {
   void linkLost(const QString& reason);
   void fail(const QString& reason);
   void publishSamples(double arrival);
-  void noteProblems(std::uint64_t count, const QString& latest);
-  void flushHeldProblems();
   QString source() const;
 
   const LineImuSettings m_settings;
@@ -73,7 +73,7 @@ class LineImuDevice final : public Device {
   QUdpSocket* m_udp = nullptr;
   QTimer* m_retryTimer = nullptr;
   QTimer* m_silenceTimer = nullptr;
-  QTimer* m_problemTimer = nullptr;  // one problem message per second at most
+  std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
   LineImuParser m_parser;
@@ -85,9 +85,6 @@ class LineImuDevice final : public Device {
   bool m_streaming = false;
   bool m_everStreamed = false;  // a later Streaming counts as a reconnect
   bool m_openedOnce = false;    // permission errors after the first open are transient
-
-  std::uint64_t m_heldProblems = 0;
-  QString m_heldMessage;
 };
 
 }  // namespace armtrack::devices::lineimu

@@ -13,8 +13,6 @@ Q_LOGGING_CATEGORY(lcNgimu, "armtrack.devices.ngimu")
 namespace armtrack::devices::ngimu {
 namespace {
 
-constexpr int kProblemWindowMs = 1000;
-
 int toMs(double seconds) {
   return static_cast<int>(std::lround(seconds * 1000.0));
 }
@@ -33,22 +31,12 @@ std::optional<NgimuSettings> readNgimuSettings(const QVariantMap& options, QStri
   NgimuSettings s;
   QStringList problems;
   s.port = static_cast<std::uint16_t>(opts.integer(QStringLiteral("port"), 0, 1, 65535));
-  const QString role = opts.text(QStringLiteral("role")).trimmed().toLower();
+  s.role = opts.imuRole();
   s.timeoutSeconds = opts.number(QStringLiteral("timeout"), 3.0, 0.2, 60.0);
   if (!opts.has(QStringLiteral("port")))
     problems << QStringLiteral(
         "option 'port' is required: the UDP port the NGIMU sends to (its "
         "Wi-Fi send port setting), e.g. port=8001");
-  if (role == u"upper")
-    s.role = StreamRole::UpperArmImu;
-  else if (role == u"forearm")
-    s.role = StreamRole::ForearmImu;
-  else if (role.isEmpty())
-    problems << QStringLiteral(
-        "option 'role' is required: role=upper or role=forearm (the arm "
-        "segment the sensor is strapped to)");
-  else
-    problems << QStringLiteral("option 'role' must be upper or forearm, not '%1'").arg(role);
   if (const QString e = opts.error(); !e.isEmpty()) problems << e;
   if (!problems.isEmpty()) {
     if (error) *error = problems.join(QStringLiteral("; "));
@@ -69,9 +57,8 @@ void NgimuDevice::start() {
     m_silenceTimer = new QTimer(this);
     m_silenceTimer->setSingleShot(true);
     connect(m_silenceTimer, &QTimer::timeout, this, &NgimuDevice::onSilence);
-    m_problemTimer = new QTimer(this);
-    m_problemTimer->setSingleShot(true);
-    connect(m_problemTimer, &QTimer::timeout, this, &NgimuDevice::flushHeldProblems);
+    m_problems = std::make_unique<ProblemLimiter>(
+        this, [this](const QString& message) { reportProblem(message); });
   }
   if (m_running) return;
   m_running = true;
@@ -98,8 +85,7 @@ void NgimuDevice::stop() {
   m_running = false;      // also after an Error: the state goes to Disconnected whatever it was
   m_socket->close();
   m_silenceTimer->stop();
-  m_problemTimer->stop();
-  flushHeldProblems();
+  m_problems->flush();
   setState(DeviceState::Disconnected, QStringLiteral("stopped"));
 }
 
@@ -119,7 +105,7 @@ void NgimuDevice::onReadyRead() {
     const std::uint64_t n = log.count() - m_errorsSeen;
     m_errorsSeen = log.count();
     countCorrupt(0, n);
-    noteProblems(n, QString::fromStdString(log.last()));
+    m_problems->note(n, QString::fromStdString(log.last()));
   }
   if (m_samples.empty()) return;
 
@@ -128,8 +114,8 @@ void NgimuDevice::onReadyRead() {
   for (const SensorsSample& s : m_samples) {
     if (!s.hasTimetag && !m_toldNoTimetag) {
       m_toldNoTimetag = true;
-      noteProblems(1, QStringLiteral("/sensors messages come without a bundle time tag: their "
-                                     "arrival time is used as device time"));
+      m_problems->note(1, QStringLiteral("/sensors messages come without a bundle time tag: their "
+                                         "arrival time is used as device time"));
     }
     ImuReading r;
     r.gyr = Eigen::Vector3d(s.gyr[0], s.gyr[1], s.gyr[2]);
@@ -160,30 +146,6 @@ void NgimuDevice::fail(const QString& reason) {
   m_running = false;
   m_silenceTimer->stop();
   setState(DeviceState::Error, reason);
-}
-
-void NgimuDevice::noteProblems(std::uint64_t count, const QString& latest) {
-  // The first problem of a quiet second is reported at once; the rest of that second are summed
-  // up when it ends, so a flood of bad datagrams yields one message per second.
-  if (!m_problemTimer->isActive()) {
-    reportProblem(count == 1
-                      ? latest
-                      : QStringLiteral("%1 (and %2 more problems)").arg(latest).arg(count - 1));
-    m_problemTimer->start(kProblemWindowMs);
-    return;
-  }
-  m_heldProblems += count;
-  m_heldMessage = latest;
-}
-
-void NgimuDevice::flushHeldProblems() {
-  if (m_heldProblems == 0) return;
-  reportProblem(QStringLiteral("%1 more problems in the last second; the latest: %2")
-                    .arg(m_heldProblems)
-                    .arg(m_heldMessage));
-  m_heldProblems = 0;
-  m_heldMessage.clear();
-  if (m_running) m_problemTimer->start(kProblemWindowMs);
 }
 
 }  // namespace armtrack::devices::ngimu

@@ -5,10 +5,12 @@
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "devices/api/Device.h"
+#include "devices/api/ProblemLimiter.h"
 #include "devices/ngimu/NgimuParser.h"
 
 class QTimer;
@@ -48,13 +50,11 @@ class NgimuDevice final : public Device {
   void onReadyRead();
   void onSilence();
   void fail(const QString& reason);
-  void noteProblems(std::uint64_t count, const QString& latest);
-  void flushHeldProblems();
 
   const NgimuSettings m_settings;
   QUdpSocket* m_socket = nullptr;  // children, created in start()
   QTimer* m_silenceTimer = nullptr;
-  QTimer* m_problemTimer = nullptr;  // one problem message per second at most
+  std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
   NgimuParser m_parser;
@@ -63,9 +63,6 @@ class NgimuDevice final : public Device {
   bool m_streaming = false;
   bool m_everStreamed = false;  // a later Streaming counts as a reconnect
   bool m_toldNoTimetag = false;
-
-  std::uint64_t m_heldProblems = 0;
-  QString m_heldMessage;
 };
 
 }  // namespace armtrack::devices::ngimu

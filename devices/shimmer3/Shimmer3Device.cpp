@@ -12,7 +12,6 @@ namespace armtrack::devices::shimmer3 {
 namespace {
 
 constexpr int kDrainMs = 200;  // after the stop command, input is dropped for this long
-constexpr int kProblemWindowMs = 1000;
 constexpr double kWrapSeconds = static_cast<double>(kTimestampWrap) / kTickHz;  // 512 s
 
 int toMs(double seconds) {
@@ -33,23 +32,13 @@ std::optional<Shimmer3Settings> readShimmer3Settings(const QVariantMap& options,
   Shimmer3Settings s;
   QStringList problems;
   s.port = opts.text(QStringLiteral("port")).trimmed();
-  const QString role = opts.text(QStringLiteral("role")).trimmed().toLower();
+  s.role = opts.imuRole();
   s.retrySeconds = opts.number(QStringLiteral("retry"), 1.0, 0.1, 60.0);
   s.timeoutSeconds = opts.number(QStringLiteral("timeout"), 3.0, 0.2, 60.0);
   if (s.port.isEmpty())
     problems << QStringLiteral(
         "option 'port' is required: the Shimmer's serial port, e.g. "
         "port=/dev/rfcomm0");
-  if (role == u"upper")
-    s.role = StreamRole::UpperArmImu;
-  else if (role == u"forearm")
-    s.role = StreamRole::ForearmImu;
-  else if (role.isEmpty())
-    problems << QStringLiteral(
-        "option 'role' is required: role=upper or role=forearm (the arm "
-        "segment the sensor is strapped to)");
-  else
-    problems << QStringLiteral("option 'role' must be upper or forearm, not '%1'").arg(role);
   if (const QString e = opts.error(); !e.isEmpty()) problems << e;
   if (!problems.isEmpty()) {
     if (error) *error = problems.join(QStringLiteral("; "));
@@ -76,9 +65,8 @@ void Shimmer3Device::start() {
     m_phaseTimer = new QTimer(this);
     m_phaseTimer->setSingleShot(true);
     connect(m_phaseTimer, &QTimer::timeout, this, &Shimmer3Device::onPhaseTimeout);
-    m_problemTimer = new QTimer(this);
-    m_problemTimer->setSingleShot(true);
-    connect(m_problemTimer, &QTimer::timeout, this, &Shimmer3Device::flushHeldProblems);
+    m_problems = std::make_unique<ProblemLimiter>(
+        this, [this](const QString& message) { reportProblem(message); });
   }
   if (m_phase != Phase::Idle) return;  // already running
   m_everStreamed = false;
@@ -96,9 +84,8 @@ void Shimmer3Device::stop() {
   }
   closePort();
   m_phaseTimer->stop();
-  m_problemTimer->stop();
   m_phase = Phase::Idle;
-  flushHeldProblems();
+  m_problems->flush();
   setState(DeviceState::Disconnected, QStringLiteral("stopped"));
 }
 
@@ -303,31 +290,7 @@ void Shimmer3Device::takeParserProblems() {
   const std::uint64_t n = log.count() - m_errorsSeen;
   m_errorsSeen = log.count();
   countCorrupt(0, n);
-  noteProblems(n, QString::fromStdString(log.last()));
-}
-
-void Shimmer3Device::noteProblems(std::uint64_t count, const QString& latest) {
-  // The first problem of a quiet second is reported at once; the rest of that second are summed
-  // up when it ends, so a flood of garbage yields one message per second.
-  if (!m_problemTimer->isActive()) {
-    reportProblem(count == 1
-                      ? latest
-                      : QStringLiteral("%1 (and %2 more problems)").arg(latest).arg(count - 1));
-    m_problemTimer->start(kProblemWindowMs);
-    return;
-  }
-  m_heldProblems += count;
-  m_heldMessage = latest;
-}
-
-void Shimmer3Device::flushHeldProblems() {
-  if (m_heldProblems == 0) return;
-  reportProblem(QStringLiteral("%1 more problems in the last second; the latest: %2")
-                    .arg(m_heldProblems)
-                    .arg(m_heldMessage));
-  m_heldProblems = 0;
-  m_heldMessage.clear();
-  if (m_phase != Phase::Idle) m_problemTimer->start(kProblemWindowMs);
+  m_problems->note(n, QString::fromStdString(log.last()));
 }
 
 }  // namespace armtrack::devices::shimmer3

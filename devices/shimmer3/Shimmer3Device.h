@@ -6,10 +6,12 @@
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "devices/api/Device.h"
+#include "devices/api/ProblemLimiter.h"
 #include "devices/shimmer3/Shimmer3Parser.h"
 
 class QTimer;
@@ -64,13 +66,11 @@ class Shimmer3Device final : public Device {
   void sendCommand(std::uint8_t command);
   void publishSamples(double arrival);
   void takeParserProblems();
-  void noteProblems(std::uint64_t count, const QString& latest);
-  void flushHeldProblems();
 
   const Shimmer3Settings m_settings;
-  QSerialPort* m_port = nullptr;     // child, created in start()
-  QTimer* m_phaseTimer = nullptr;    // retry, drain, answer and silence timeouts
-  QTimer* m_problemTimer = nullptr;  // one problem message per second at most
+  QSerialPort* m_port = nullptr;               // child, created in start()
+  QTimer* m_phaseTimer = nullptr;              // retry, drain, answer and silence timeouts
+  std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   Phase m_phase = Phase::Idle;
 
   Shimmer3Parser m_parser;
@@ -86,9 +86,6 @@ class Shimmer3Device final : public Device {
   bool m_haveLast = false;
   double m_lastDeviceTime = 0.0;  // s
   double m_lastArrival = 0.0;     // s, hostNow()
-
-  std::uint64_t m_heldProblems = 0;
-  QString m_heldMessage;
 };
 
 }  // namespace armtrack::devices::shimmer3

@@ -13,8 +13,6 @@ Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 namespace armtrack::devices::skeleton {
 namespace {
 
-constexpr int kProblemWindowMs = 1000;
-
 int toMs(double seconds) {
   return static_cast<int>(std::lround(seconds * 1000.0));
 }
@@ -66,9 +64,8 @@ void SkeletonDevice::start() {
     m_silenceTimer = new QTimer(this);
     m_silenceTimer->setSingleShot(true);
     connect(m_silenceTimer, &QTimer::timeout, this, &SkeletonDevice::onSilence);
-    m_problemTimer = new QTimer(this);
-    m_problemTimer->setSingleShot(true);
-    connect(m_problemTimer, &QTimer::timeout, this, &SkeletonDevice::flushHeldProblems);
+    m_problems = std::make_unique<ProblemLimiter>(
+        this, [this](const QString& message) { reportProblem(message); });
   }
   if (m_running) return;
   m_running = true;
@@ -97,8 +94,7 @@ void SkeletonDevice::stop() {
   m_running = false;      // also after an Error: the state goes to Disconnected whatever it was
   m_socket->close();
   m_silenceTimer->stop();
-  m_problemTimer->stop();
-  flushHeldProblems();
+  m_problems->flush();
   setState(DeviceState::Disconnected, QStringLiteral("stopped"));
 }
 
@@ -143,13 +139,13 @@ void SkeletonDevice::onReadyRead() {
     const std::uint64_t n = log.count() - m_errorsSeen;
     m_errorsSeen = log.count();
     countCorrupt(0, n);
-    noteProblems(n, QString::fromStdString(log.last()));
+    m_problems->note(n, QString::fromStdString(log.last()));
   }
   if (const std::uint64_t d = m_parser.droppedFrames(); d != m_droppedSeen) {
     countDropped(0, d - m_droppedSeen);
     m_droppedSeen = d;
   }
-  if (unusable) noteProblems(unusable, unusableWhy);
+  if (unusable) m_problems->note(unusable, unusableWhy);
   if (batch.empty()) return;
 
   m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
@@ -177,30 +173,6 @@ void SkeletonDevice::fail(const QString& reason) {
   m_running = false;
   m_silenceTimer->stop();
   setState(DeviceState::Error, reason);
-}
-
-void SkeletonDevice::noteProblems(std::uint64_t count, const QString& latest) {
-  // The first problem of a quiet second is reported at once; the rest of that second are summed
-  // up when it ends, so a flood of bad datagrams yields one message per second.
-  if (!m_problemTimer->isActive()) {
-    reportProblem(count == 1
-                      ? latest
-                      : QStringLiteral("%1 (and %2 more problems)").arg(latest).arg(count - 1));
-    m_problemTimer->start(kProblemWindowMs);
-    return;
-  }
-  m_heldProblems += count;
-  m_heldMessage = latest;
-}
-
-void SkeletonDevice::flushHeldProblems() {
-  if (m_heldProblems == 0) return;
-  reportProblem(QStringLiteral("%1 more problems in the last second; the latest: %2")
-                    .arg(m_heldProblems)
-                    .arg(m_heldMessage));
-  m_heldProblems = 0;
-  m_heldMessage.clear();
-  if (m_running) m_problemTimer->start(kProblemWindowMs);
 }
 
 }  // namespace armtrack::devices::skeleton

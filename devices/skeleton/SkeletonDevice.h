@@ -5,9 +5,11 @@
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "devices/api/Device.h"
+#include "devices/api/ProblemLimiter.h"
 #include "devices/skeleton/SkeletonParser.h"
 
 class QTimer;
@@ -53,13 +55,11 @@ class SkeletonDevice final : public Device {
   void onReadyRead();
   void onSilence();
   void fail(const QString& reason);
-  void noteProblems(std::uint64_t count, const QString& latest);
-  void flushHeldProblems();
 
   const SkeletonSettings m_settings;
   QUdpSocket* m_socket = nullptr;  // children, created in start()
   QTimer* m_silenceTimer = nullptr;
-  QTimer* m_problemTimer = nullptr;  // one problem message per second at most
+  std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
   SkeletonParser m_parser;
@@ -67,9 +67,6 @@ class SkeletonDevice final : public Device {
   std::uint64_t m_droppedSeen = 0;
   bool m_streaming = false;
   bool m_everStreamed = false;  // a later Streaming counts as a reconnect
-
-  std::uint64_t m_heldProblems = 0;
-  QString m_heldMessage;
 };
 
 }  // namespace armtrack::devices::skeleton

@@ -150,9 +150,8 @@ void WebcamDevice::start() {
   m_retryTimer = new QTimer(this);
   m_retryTimer->setSingleShot(true);
   connect(m_retryTimer, &QTimer::timeout, this, &WebcamDevice::open);
-  m_problemTimer = new QTimer(this);
-  m_problemTimer->setSingleShot(true);
-  connect(m_problemTimer, &QTimer::timeout, this, &WebcamDevice::flushProblems);
+  m_problems = std::make_unique<ProblemLimiter>(
+      this, [this](const QString& message) { reportProblem(message); });
   m_streamedBefore = false;
   m_lost = false;
   m_sizeChecked = false;
@@ -168,8 +167,9 @@ void WebcamDevice::start() {
 void WebcamDevice::stop() {
   if (!m_running) return;
   m_running = false;
-  flushProblems();
-  for (QTimer** t : {&m_frameTimer, &m_retryTimer, &m_problemTimer}) {
+  m_problems->flush();
+  m_problems.reset();
+  for (QTimer** t : {&m_frameTimer, &m_retryTimer}) {
     delete *t;
     *t = nullptr;
   }
@@ -307,9 +307,9 @@ void WebcamDevice::tickFile() {
       ++m_framesPlayed;
       if (!processFrame(frame, t, batch)) {
         countCorrupt(0, 1);
-        noteProblem(QStringLiteral("%1: frame %2 could not be processed; skipped")
-                        .arg(m_settings.source)
-                        .arg(index));
+        m_problems->note(1, QStringLiteral("%1: frame %2 could not be processed; skipped")
+                                .arg(m_settings.source)
+                                .arg(index));
       }
       continue;
     }
@@ -342,7 +342,8 @@ void WebcamDevice::tickFile() {
     }
     ++m_framesPlayed;
     countCorrupt(0, 1);
-    noteProblem(
+    m_problems->note(
+        1,
         QStringLiteral("%1: frame %2 cannot be decoded; skipped").arg(m_settings.source).arg(pos));
   }
   // Samples first: what was read before a failure is not lost.
@@ -381,7 +382,7 @@ void WebcamDevice::tickFile() {
   }
   m_frameTimer->stop();
   closeCapture();
-  flushProblems();
+  if (m_problems) m_problems->flush();
   setState(DeviceState::Disconnected, QStringLiteral("end of %1").arg(sourceName()));
 }
 
@@ -412,7 +413,8 @@ void WebcamDevice::tickCamera() {
   SampleBatch batch;
   if (!ok || !processFrame(frame, captured, batch)) {
     countCorrupt(0, 1);
-    noteProblem(QStringLiteral("%1: a frame could not be decoded; skipped").arg(sourceName()));
+    m_problems->note(1,
+                     QStringLiteral("%1: a frame could not be decoded; skipped").arg(sourceName()));
     return;
   }
   publish(batch);
@@ -464,31 +466,9 @@ void WebcamDevice::cameraLost(const QString& reason) {
 void WebcamDevice::fail(const QString& reason) {
   if (m_frameTimer) m_frameTimer->stop();
   closeCapture();
-  flushProblems();
+  if (m_problems) m_problems->flush();
   setState(DeviceState::Error, reason);
   reportProblem(reason);
-}
-
-void WebcamDevice::noteProblem(const QString& message) {
-  const double now = hostNow();
-  if (now - m_lastProblemHost >= 1.0) {
-    m_lastProblemHost = now;
-    reportProblem(message);
-    return;
-  }
-  ++m_heldProblems;
-  m_heldLatest = message;
-  if (m_problemTimer && !m_problemTimer->isActive())
-    m_problemTimer->start(std::max(1, static_cast<int>((m_lastProblemHost + 1.0 - now) * 1000.0)));
-}
-
-void WebcamDevice::flushProblems() {
-  if (m_heldProblems == 0) return;
-  reportProblem(QStringLiteral("%1 more problem(s) in the last second; the latest: %2")
-                    .arg(m_heldProblems)
-                    .arg(m_heldLatest));
-  m_heldProblems = 0;
-  m_lastProblemHost = hostNow();
 }
 
 }  // namespace armtrack::devices::webcam

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "devices/api/Device.h"
+#include "devices/api/ProblemLimiter.h"
 #include "devices/webcam/CameraFile.h"
 #include "devices/webcam/MarkerDetection.h"
 
@@ -80,17 +81,15 @@ class WebcamDevice final : public Device {
   bool processFrame(const cv::Mat& frame, double deviceTime, SampleBatch& batch);
   void cameraLost(const QString& reason);
   void fail(const QString& reason);
-  void noteProblem(const QString& message);
-  void flushProblems();
   void closeCapture();
   QString sourceName() const;
 
   const WebcamSettings m_settings;
   MarkerDetector m_detector;
   std::unique_ptr<cv::VideoCapture> m_capture;
-  QTimer* m_frameTimer = nullptr;    // reads frames; created in start()
-  QTimer* m_retryTimer = nullptr;    // reopens a lost camera
-  QTimer* m_problemTimer = nullptr;  // flushes held problem messages
+  QTimer* m_frameTimer = nullptr;              // reads frames; created in start()
+  QTimer* m_retryTimer = nullptr;              // reopens a lost camera
+  std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
   // Files.
@@ -108,9 +107,6 @@ class WebcamDevice final : public Device {
   bool m_lost = false;
 
   bool m_sizeChecked = false;
-  std::uint64_t m_heldProblems = 0;
-  QString m_heldLatest;
-  double m_lastProblemHost = -1e9;
 };
 
 }  // namespace armtrack::devices::webcam
