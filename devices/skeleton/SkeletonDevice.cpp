@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "devices/api/Options.h"
+#include "devices/webcam/CameraFile.h"
 
 Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 
@@ -44,6 +45,42 @@ std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options,
     s.origin = Origin::Camera;
   else
     problems << QStringLiteral("option 'origin' must be shoulder or camera, not '%1'").arg(origin);
+  const QString cameraPath = opts.text(QStringLiteral("camera")).trimmed();
+  const QString axes = opts.text(QStringLiteral("axes")).trimmed().toLower();
+  if (!axes.isEmpty() && axes != u"shoulder")
+    problems << QStringLiteral(
+                    "option 'axes' can only be 'shoulder' (the tracker already sends "
+                    "shoulder-frame axes), not '%1'; otherwise give camera=FILE")
+                    .arg(axes);
+  else if (!axes.isEmpty() && !cameraPath.isEmpty())
+    problems << QStringLiteral(
+        "give camera=FILE or axes=shoulder, not both: the camera file's pose turns the "
+        "tracker's axes into the shoulder frame's");
+  else if (axes.isEmpty() && cameraPath.isEmpty())
+    problems << QStringLiteral(
+        "the tracker's axes must be registered to the shoulder frame: give camera=FILE (its "
+        "camera's file with a pose: armtrack-cli camera-calibrate, then camera-register), or "
+        "axes=shoulder if the tracker already sends shoulder-frame axes");
+  else if (!cameraPath.isEmpty()) {
+    try {
+      const webcam::CameraFile f = webcam::readCameraFile(cameraPath.toStdString());
+      if (!f.extrinsics)
+        problems << QStringLiteral(
+                        "%1 has no pose in the shoulder frame; run armtrack-cli camera-register "
+                        "on it")
+                        .arg(cameraPath);
+      else {
+        TrackerPose pose;
+        for (int r = 0; r < 3; ++r) {
+          for (int c = 0; c < 3; ++c) pose.R(r, c) = f.extrinsics->R(r, c);
+          pose.t[r] = f.extrinsics->t[r];
+        }
+        s.pose = pose;
+      }
+    } catch (const webcam::CameraFileError& e) {
+      problems << QString::fromStdString(e.what());
+    }
+  }
   if (const QString e = opts.error(); !e.isEmpty()) problems << e;
   if (!problems.isEmpty()) {
     if (error) *error = problems.join(QStringLiteral("; "));
@@ -119,11 +156,12 @@ void SkeletonDevice::onReadyRead() {
         continue;
       }
       const Eigen::Vector3d shoulder = vec(frame->shoulder->position);
-      if (frame->elbow) p.elbow = vec(frame->elbow->position) - shoulder;
-      if (frame->wrist) p.wrist = vec(frame->wrist->position) - shoulder;
+      if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - shoulder);
+      if (frame->wrist) p.wrist = toShoulderAxes(vec(frame->wrist->position) - shoulder);
     } else {
-      if (frame->elbow) p.elbow = vec(frame->elbow->position);
-      if (frame->wrist) p.wrist = vec(frame->wrist->position);
+      const Eigen::Vector3d t = m_settings.pose ? m_settings.pose->t : Eigen::Vector3d::Zero();
+      if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - t);
+      if (frame->wrist) p.wrist = toShoulderAxes(vec(frame->wrist->position) - t);
     }
     if (!p.elbow && !p.wrist) {
       ++unusable;
@@ -157,6 +195,10 @@ void SkeletonDevice::onReadyRead() {
              QStringLiteral("streaming from UDP port %1").arg(m_settings.port));
   }
   publish(batch);
+}
+
+Eigen::Vector3d SkeletonDevice::toShoulderAxes(const Eigen::Vector3d& v) const {
+  return m_settings.pose ? Eigen::Vector3d(m_settings.pose->R.transpose() * v) : v;
 }
 
 void SkeletonDevice::onSilence() {

@@ -2,6 +2,7 @@
 // per UDP datagram. See docs/devices/skeleton-udp.md, "Using the plugin".
 #pragma once
 
+#include <Eigen/Core>
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
@@ -19,8 +20,15 @@ namespace armtrack::devices::skeleton {
 
 /// Where the published positions are measured from.
 enum class Origin {
-  Shoulder,  ///< elbow and wrist minus the tracked shoulder (camera axes); frames need a shoulder
+  Shoulder,  ///< elbow and wrist minus the tracked shoulder; frames need a shoulder
   Camera,    ///< as sent: the tracker's own frame
+};
+
+/// The tracker's pose in the shoulder frame: p_tracker = R p_shoulder + t (m), the convention of
+/// a registered camera file (docs/devices/webcam.md).
+struct TrackerPose {
+  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d t = Eigen::Vector3d::Zero();
 };
 
 /// What the plugin's options select.
@@ -28,19 +36,25 @@ struct SkeletonSettings {
   std::uint16_t port = 9870;         ///< local UDP port the tracker sends to
   Origin origin = Origin::Shoulder;  ///< see Origin
   double timeoutSeconds = 3.0;       ///< s without a frame: back to Connecting
+  /// From camera=FILE: turns tracker axes into shoulder-frame axes. Empty with axes=shoulder,
+  /// when the tracker already sends shoulder-frame axes.
+  std::optional<TrackerPose> pose;
 };
 
-/// Reads `port`, `origin` and `timeout`. Empty, with *error saying what to change, when an option
-/// is malformed or unknown. Any thread.
+/// Reads `port`, `origin`, `timeout` and the registration: `camera=FILE` (a camera file with its
+/// pose, from armtrack-cli camera-register) or `axes=shoulder`; one of the two is required, since
+/// published positions must be in the shoulder frame. Empty, with *error saying what to change,
+/// when an option is malformed, unknown or missing. Any thread.
 std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options, QString* error);
 
 /// An external tracker as one Optical stream (OpticalPositions, m). Listens on the UDP port on all
 /// addresses; Connecting until the first frame, then Streaming; no frame for `timeoutSeconds`
 /// sets Connecting ("no data") and frames coming back count as a reconnect. A port already in
 /// use is an Error. Device time is the frame's "t" (s); gaps in "frame" count as dropped.
-/// Frames without elbow and wrist, or (origin shoulder) without a shoulder, publish nothing and
-/// are reported, rate-limited. Threads: construct anywhere, then use only from the device's
-/// thread (see Device).
+/// Positions are published in the shoulder frame: with a pose, elbow and wrist become
+/// R^T (p - shoulder) (origin shoulder) or R^T (p - t) (origin camera). Frames without elbow and
+/// wrist, or (origin shoulder) without a shoulder, publish nothing and are reported, rate-limited.
+/// Threads: construct anywhere, then use only from the device's thread (see Device).
 class SkeletonDevice final : public Device {
   Q_OBJECT
  public:
@@ -55,6 +69,8 @@ class SkeletonDevice final : public Device {
   void onReadyRead();
   void onSilence();
   void fail(const QString& reason);
+  /// A tracker-axes vector in shoulder-frame axes (R^T v with a pose, else v).
+  Eigen::Vector3d toShoulderAxes(const Eigen::Vector3d& v) const;
 
   const SkeletonSettings m_settings;
   QUdpSocket* m_socket = nullptr;  // children, created in start()

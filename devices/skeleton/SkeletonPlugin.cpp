@@ -19,7 +19,10 @@ QString SkeletonPlugin::optionsHelp() const {
       "port=9870        local UDP port the tracker sends to\n"
       "origin=shoulder  shoulder: elbow and wrist relative to the tracked shoulder; camera: as "
       "sent\n"
-      "timeout=3        seconds without a frame before the state goes back to connecting");
+      "timeout=3        seconds without a frame before the state goes back to connecting\n"
+      "camera=FILE      the tracker camera's file with its pose (camera-register): turns the\n"
+      "                 tracker's axes into the shoulder frame's\n"
+      "axes=shoulder    instead of camera=: the tracker already sends shoulder-frame axes");
 }
 
 std::unique_ptr<Device> SkeletonPlugin::create(const QVariantMap& options, QString* error) {

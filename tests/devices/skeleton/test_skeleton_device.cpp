@@ -2,6 +2,9 @@
 // here from the documented format; expected positions are computed here.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+#include <QTemporaryDir>
+
 #include <QTest>
 #include <QThread>
 #include <QUdpSocket>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "devices/api/Device.h"
+#include "devices/webcam/CameraFile.h"
 #include "tests/support/LoadPlugin.h"
 
 using namespace armtrack;
@@ -46,6 +50,25 @@ std::string frameJson(int k, bool shoulder = true, bool elbow = true, bool wrist
   if (elbow) s += std::exchange(sep, ",") + "\"elbow\":" + xyz(j.elbow);
   if (wrist) s += std::exchange(sep, ",") + "\"wrist\":" + xyz(j.wrist);
   return s + R"(},"confidence":{"elbow":0.9},"hand":[1,2,3]})";
+}
+
+void expectHas(const std::string& text, const std::string& needle) {
+  EXPECT_NE(text.find(needle), std::string::npos) << "'" << needle << "' not in: " << text;
+}
+
+// A camera file for the tracker's camera (the intrinsics are not used by skeleton-udp).
+std::string writeCamera(const QTemporaryDir& dir, const char* name,
+                        std::optional<webcam::Extrinsics> pose) {
+  webcam::CameraFile f;
+  f.id = "tracker";
+  f.intrinsics.imageSize = cv::Size(640, 480);
+  f.intrinsics.fx = f.intrinsics.fy = 525.0;
+  f.intrinsics.cx = 320.0;
+  f.intrinsics.cy = 240.0;
+  f.extrinsics = pose;
+  const std::string path = dir.filePath(QString::fromLatin1(name)).toStdString();
+  webcam::writeCameraFile(path, f);
+  return path;
 }
 
 void expectFrame(const DeviceSample& s, int k, bool relative, bool elbow = true,
@@ -115,8 +138,11 @@ class SkeletonDevice : public ::testing::Test {
     ASSERT_TRUE(probe.bind(QHostAddress::LocalHost, 0));
     m_port = probe.localPort();
   }
+  // Without a registration the tests say the tracker sends shoulder-frame axes.
   std::unique_ptr<Harness> start(QVariantMap options = {}) {
     options.insert(QStringLiteral("port"), m_port);
+    if (!options.contains(QStringLiteral("camera")))
+      options.insert(QStringLiteral("axes"), QStringLiteral("shoulder"));
     QString error;
     auto d = m_plugin->create(options, &error);
     EXPECT_TRUE(d) << error.toStdString();
@@ -140,16 +166,80 @@ class SkeletonDevice : public ::testing::Test {
 
 TEST_F(SkeletonDevice, OptionsSayWhatToChange) {
   EXPECT_EQ(m_plugin->name(), QStringLiteral("skeleton-udp"));
+  const QString axes = QStringLiteral("axes"), shoulder = QStringLiteral("shoulder");
+  const auto errorOf = [&](const QVariantMap& options) {
+    QString error;
+    EXPECT_FALSE(m_plugin->create(options, &error));
+    return error.toStdString();
+  };
+  expectHas(errorOf({{QStringLiteral("origin"), QStringLiteral("hip")}, {axes, shoulder}}),
+            "shoulder or camera, not 'hip'");
+  expectHas(errorOf({{QStringLiteral("role"), QStringLiteral("upper")}, {axes, shoulder}}),
+            "unknown option 'role'");
+  // Positions must reach the filter in the shoulder frame: a registration is required.
+  expectHas(errorOf({}), "give camera=FILE");
+  expectHas(errorOf({{axes, QStringLiteral("camera")}}), "'axes' can only be 'shoulder'");
+  expectHas(errorOf({{axes, shoulder}, {QStringLiteral("camera"), QStringLiteral("c.json")}}),
+            "not both");
+  expectHas(errorOf({{QStringLiteral("camera"), QStringLiteral("/nonexistent/cam.json")}}),
+            "/nonexistent/cam.json");
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const std::string unregistered = writeCamera(dir, "intrinsics-only.json", std::nullopt);
+  expectHas(errorOf({{QStringLiteral("camera"), QString::fromStdString(unregistered)}}),
+            "run armtrack-cli camera-register");
   QString error;
-  EXPECT_FALSE(m_plugin->create({{QStringLiteral("origin"), QStringLiteral("hip")}}, &error));
-  EXPECT_TRUE(error.contains(QStringLiteral("shoulder or camera, not 'hip'")))
-      << error.toStdString();
-  EXPECT_FALSE(m_plugin->create({{QStringLiteral("role"), QStringLiteral("upper")}}, &error));
-  EXPECT_TRUE(error.contains(QStringLiteral("unknown option 'role'"))) << error.toStdString();
-  auto d = m_plugin->create({}, &error);  // every option has a default
-  ASSERT_TRUE(d);
+  auto d = m_plugin->create({{axes, shoulder}}, &error);
+  ASSERT_TRUE(d) << error.toStdString();
   ASSERT_EQ(d->streams().size(), 1u);
   EXPECT_EQ(d->streams()[0].role, StreamRole::Optical);
+}
+
+TEST_F(SkeletonDevice, RegisteredTrackerAxesBecomeShoulderFrameAxes) {
+  // The tracker camera stands in front of the patient, turned and tilted: p_cam = R p_sh + t.
+  const Eigen::Matrix3d R = (Eigen::AngleAxisd(2.6, Eigen::Vector3d(0.2, -1.0, 0.3).normalized()) *
+                             Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()))
+                                .toRotationMatrix();
+  const Eigen::Vector3d t(0.1, -0.3, 2.2);
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  webcam::Extrinsics e;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) e.R(r, c) = R(r, c);
+    e.t[r] = t[r];
+  }
+  const QString path = QString::fromStdString(writeCamera(dir, "tracker.json", e));
+  const auto expectShoulderFrame = [&](const DeviceSample& s, int k, bool relative) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    const Joints j = joints(k);
+    const Eigen::Vector3d sh(j.shoulder), el(j.elbow), wr(j.wrist);
+    const Eigen::Vector3d origin = relative ? sh : t;
+    // Independent of the device's formula: solve R x = p - origin.
+    const Eigen::Vector3d elbow = R.colPivHouseholderQr().solve(el - origin);
+    const Eigen::Vector3d wrist = R.colPivHouseholderQr().solve(wr - origin);
+    const OpticalPositions& p = std::get<OpticalPositions>(s.payload);
+    ASSERT_TRUE(p.elbow && p.wrist);
+    EXPECT_LT((*p.elbow - elbow).norm(), 1e-6);  // the camera file keeps about 9 digits
+    EXPECT_LT((*p.wrist - wrist).norm(), 1e-6);
+    // The arm's segment lengths do not depend on the axes.
+    EXPECT_NEAR((*p.wrist - *p.elbow).norm(), (wr - el).norm(), 1e-9);
+  };
+  {
+    auto h = start({{QStringLiteral("camera"), path}});
+    ASSERT_TRUE(h);
+    for (int k = 0; k < 3; ++k) send(frameJson(k));
+    ASSERT_TRUE(h->waitSamples(3));
+    for (int k = 0; k < 3; ++k) expectShoulderFrame(h->samples[k], k, /*relative=*/true);
+    EXPECT_TRUE(h->problems.isEmpty()) << h->problems.join(u'\n').toStdString();
+  }
+  {
+    auto h = start(
+        {{QStringLiteral("camera"), path}, {QStringLiteral("origin"), QStringLiteral("camera")}});
+    ASSERT_TRUE(h);
+    send(frameJson(0, /*shoulder=*/false));
+    ASSERT_TRUE(h->waitSamples(1));
+    expectShoulderFrame(h->samples[0], 0, /*relative=*/false);
+  }
 }
 
 TEST_F(SkeletonDevice, FramesBecomeShoulderRelativePositions) {
@@ -253,7 +343,11 @@ TEST_F(SkeletonDevice, PortInUseIsAnError) {
   QUdpSocket other;
   ASSERT_TRUE(other.bind(QHostAddress::Any, m_port));
   QString error;
-  Harness h(m_plugin->create({{QStringLiteral("port"), m_port}}, &error));
+  auto device = m_plugin->create(
+      {{QStringLiteral("port"), m_port}, {QStringLiteral("axes"), QStringLiteral("shoulder")}},
+      &error);
+  ASSERT_TRUE(device) << error.toStdString();
+  Harness h(std::move(device));
   ASSERT_TRUE(h.waitState(DeviceState::Error));
   EXPECT_TRUE(h.reason().contains(QStringLiteral("already in use"))) << h.reason().toStdString();
 }
