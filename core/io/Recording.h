@@ -4,11 +4,12 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
-#include <string_view>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/ArmSample.h"
@@ -59,20 +60,54 @@ class RecordingError : public std::runtime_error {
   std::string m_message;
 };
 
-/// Reads a CSV recording and its sidecar (<name>.json beside it). Throws RecordingError.
-Recording readRecording(const std::filesystem::path& csvPath);
-/// Writes the CSV and its sidecar. Only the sensors present in some sample get columns.
-/// Throws RecordingError when the file cannot be written (e.g. a full disk).
-void writeRecording(const std::filesystem::path& csvPath, const Recording& recording);
-
-/// The column groups a RecordingWriter writes (fixed when it opens).
+/// The column groups a RecordingWriter writes (fixed when it opens), or a file's header holds.
 struct RecordingColumns {
-  bool upperArm = false, forearm = false;  ///< gyroscope and accelerometer of each IMU
-  bool elbow = false, wrist = false;       ///< optical positions
+  bool upperArm = false, forearm = false;   ///< gyroscope and accelerometer of each IMU
+  bool elbow = false, wrist = false;        ///< optical positions
   bool camWrist = false, camElbow = false;  ///< marker pixels
   bool truth = false;                       ///< true_th*
   bool estimate = false;                    ///< est_th*
 };
+
+/// Reads a CSV recording row by row, holding one chunk of the file in memory, not the whole
+/// recording (a replay of an hour at 1 kHz). The constructor reads the sidecar and the header;
+/// next() the rows, checked as readRecording checks them. Throws RecordingError. One thread at a
+/// time.
+class RecordingReader {
+ public:
+  explicit RecordingReader(const std::filesystem::path& csvPath);
+  ~RecordingReader();
+  RecordingReader(const RecordingReader&) = delete;
+  RecordingReader& operator=(const RecordingReader&) = delete;
+
+  const RecordingMeta& meta() const { return m_meta; }
+  /// The column groups of the header (a group may still be empty in every row).
+  const RecordingColumns& columns() const { return m_columns; }
+  /// The next row into sample; false at the end. A last line cut short by a kill ends the file
+  /// with a warning instead of an error.
+  bool next(ArmSample& sample);
+  /// A missing sidecar, a last line cut short.
+  const std::vector<std::string>& warnings() const { return m_warnings; }
+  std::uint64_t rows() const { return m_rows; }
+  /// For progress: bytes consumed so far, and the file's size (0 when unknown).
+  std::uint64_t bytesRead() const;
+  std::uint64_t fileSize() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+  RecordingMeta m_meta;
+  RecordingColumns m_columns;
+  std::vector<std::string> m_warnings;
+  std::uint64_t m_rows = 0;
+};
+
+/// Reads a CSV recording and its sidecar (<name>.json beside it) into memory. Throws
+/// RecordingError.
+Recording readRecording(const std::filesystem::path& csvPath);
+/// Writes the CSV and its sidecar. Only the sensors present in some sample get columns.
+/// Throws RecordingError when the file cannot be written (e.g. a full disk).
+void writeRecording(const std::filesystem::path& csvPath, const Recording& recording);
 
 /// Writes a recording row by row, for live sessions. The sidecar is written first (all or
 /// nothing); the CSV goes straight to its final name, so a session that is killed leaves a

@@ -689,7 +689,8 @@ namespace {
 ArmSample liveRow(int i) {
   ArmSample s;
   s.t = 0.001 * i + 1e-7 / 3.0;  // not a short decimal: the round trip must be exact
-  s.upperArm = ImuReading{Eigen::Vector3d(0.1 / 3, -0.2, 0.3 * i), Eigen::Vector3d(9.81, 0.1, -0.2)};
+  s.upperArm =
+      ImuReading{Eigen::Vector3d(0.1 / 3, -0.2, 0.3 * i), Eigen::Vector3d(9.81, 0.1, -0.2)};
   if (i % 3 == 0) s.wrist = Eigen::Vector3d(0.2, 0.3 / 7, -0.1);
   JointVector th;
   th << 0.1, -0.2 / 3, 0.3, 1.0 / 7, -0.5;
@@ -741,8 +742,7 @@ TEST_F(RecordingTest, WriterRefusesBadRowsAndStaysUsable) {
   ArmSample nan = liveRow(2);
   nan.upperArm->acc.x() = std::nan("");
   EXPECT_NE(errorOf([&] { w.append(nan); }).message().find("non-finite"), std::string::npos);
-  EXPECT_NE(errorOf([&] { w.append(liveRow(0)); }).message().find("decreasing"),
-            std::string::npos);
+  EXPECT_NE(errorOf([&] { w.append(liveRow(0)); }).message().find("decreasing"), std::string::npos);
   w.append(liveRow(2));
   w.close();
   const Recording rec = readRecording(p);
@@ -835,6 +835,87 @@ TEST_F(RecordingTest, DISABLED_Timing600kRows) {
   ASSERT_EQ(back.samples.size(), rec.samples.size());
   EXPECT_EQ(bits(back.samples.back().forearm->acc.z()), bits(rec.samples.back().forearm->acc.z()));
   EXPECT_LT(rs, 3.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// RecordingReader (row by row, for replays of long recordings)
+
+TEST_F(RecordingTest, ReaderStreamsRowsAcrossChunkBoundariesBitExact) {
+  // 40,000 rows (about 9 MB, several of the reader's 1 MiB chunks): rows cross chunk edges.
+  const fs::path p = dir_ / "long.csv";
+  constexpr int kRows = 40000;
+  std::vector<ArmSample> written;
+  written.reserve(kRows);
+  {
+    RecordingWriter w(p, RecordingMeta{}, liveColumns());
+    for (int i = 0; i < kRows; ++i) {
+      written.push_back(liveRow(i));
+      w.append(written.back());
+    }
+    w.close();
+  }
+  const auto size = fs::file_size(p);
+  ASSERT_GT(size, 4u << 20);
+
+  RecordingReader reader(p);
+  EXPECT_TRUE(reader.warnings().empty());
+  const RecordingColumns& c = reader.columns();
+  EXPECT_TRUE(c.upperArm && c.wrist && c.truth && c.estimate);
+  EXPECT_FALSE(c.forearm || c.elbow || c.camWrist || c.camElbow);
+  EXPECT_EQ(reader.fileSize(), size);
+  std::vector<ArmSample> read;
+  ArmSample s;
+  std::uint64_t lastBytes = reader.bytesRead();
+  while (reader.next(s)) {
+    read.push_back(s);
+    EXPECT_GE(reader.bytesRead(), lastBytes);
+    lastBytes = reader.bytesRead();
+  }
+  EXPECT_FALSE(reader.next(s));  // stays at the end
+  EXPECT_EQ(reader.rows(), static_cast<std::uint64_t>(kRows));
+  EXPECT_EQ(reader.bytesRead(), size);
+  expectSameSamples(read, written);
+  for (std::size_t i = 0; i < read.size(); i += 997)
+    EXPECT_EQ(read[i].estimate.has_value(), written[i].estimate.has_value()) << i;
+}
+
+TEST_F(RecordingTest, ReaderReportsTheRightLineFarIntoAFileAndCutShortLastLine) {
+  const fs::path p = dir_ / "long.csv";
+  {
+    RecordingWriter w(p, RecordingMeta{}, liveColumns());
+    for (int i = 0; i < 20000; ++i) w.append(liveRow(i));
+    w.close();
+  }
+  std::string text = readText(p);
+  // Lines: 1 comment, 2 header, 3.. rows. Break row 15000 (line 15002) with a letter.
+  std::size_t at = 0;
+  for (int line = 1; line < 15002; ++line) at = text.find('\n', at) + 1;
+  std::string broken = text;
+  broken.insert(at, "x");
+  writeText(p, broken);
+  {
+    RecordingReader reader(p);
+    ArmSample s;
+    int rows = 0;
+    try {
+      while (reader.next(s)) ++rows;
+      ADD_FAILURE() << "no error";
+    } catch (const RecordingError& e) {
+      EXPECT_EQ(e.line(), 15002) << e.what();
+      EXPECT_EQ(e.column(), 1) << e.what();
+    }
+    EXPECT_EQ(rows, 14999);
+  }
+  // Killed mid-row: the rows before the cut line are read, then a warning, no error.
+  writeText(p, text.substr(0, text.size() - 25));
+  RecordingReader reader(p);
+  ArmSample s;
+  int rows = 0;
+  while (reader.next(s)) ++rows;
+  EXPECT_EQ(rows, 19999);
+  ASSERT_EQ(reader.warnings().size(), 1u);
+  EXPECT_NE(reader.warnings()[0].find("line 20002 was cut short"), std::string::npos)
+      << reader.warnings()[0];
 }
 
 }  // namespace
