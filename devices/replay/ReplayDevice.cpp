@@ -1,89 +1,161 @@
 #include "devices/replay/ReplayDevice.h"
 
 namespace armtrack::devices::replay {
+namespace {
 
-std::vector<StreamInfo> ReplayDevice::describe(const Recording& rec) {
-  bool up = false, fa = false, opt = false, cam = false, truth = false;
-  for (const ArmSample& s : rec.samples) {
-    up |= s.upperArm.has_value();
-    fa |= s.forearm.has_value();
-    opt |= s.elbow.has_value() || s.wrist.has_value();
-    cam |= s.camWrist.has_value() || s.camElbow.has_value();
-    truth |= s.trueAngles.has_value();
-  }
+// The stream rates are measured over the recording's first seconds.
+constexpr double kRateWindowSeconds = 10.0;
+
+}  // namespace
+
+struct ReplayDevice::Opened {
+  std::unique_ptr<RecordingReader> reader;
+  ArmSample first;
+};
+
+ReplayDevice::Opened ReplayDevice::open(const std::filesystem::path& file) {
+  Opened o{std::make_unique<RecordingReader>(file), {}};
+  if (!o.reader->next(o.first)) throw RecordingError(file.string(), 0, 0, "holds no samples");
+  return o;
+}
+
+std::vector<StreamInfo> ReplayDevice::describe(const std::filesystem::path& file) {
+  Opened o = open(file);
+  const RecordingColumns& c = o.reader->columns();
+  // Rows of each stream within the window, and the span they cover.
+  std::array<std::uint64_t, 5> n{};
+  const double t0 = o.first.t;
+  double t1 = t0;
+  ArmSample s = o.first;
+  do {
+    if (s.t - t0 > kRateWindowSeconds) break;
+    t1 = s.t;
+    n[0] += s.upperArm.has_value();
+    n[1] += s.forearm.has_value();
+    n[2] += s.elbow || s.wrist;
+    n[3] += s.camWrist || s.camElbow;
+    n[4] += s.trueAngles.has_value();
+  } while (o.reader->next(s));
+  const double span = t1 - t0;
+  auto rate = [&](std::uint64_t k) { return span > 0.0 && k > 1 ? (k - 1) / span : 0.0; };
   std::vector<StreamInfo> out;
-  const double duration = rec.samples.empty() ? 0.0 : rec.samples.back().t - rec.samples.front().t;
-  auto rate = [&](auto has) {
-    std::size_t n = 0;
-    for (const ArmSample& s : rec.samples) n += has(s);
-    return duration > 0.0 ? static_cast<double>(n - 1) / duration : 0.0;
-  };
-  if (up) out.push_back({"upper", StreamRole::UpperArmImu, rate([](const ArmSample& s) { return s.upperArm.has_value(); }), 0.0, {}});
-  if (fa) out.push_back({"forearm", StreamRole::ForearmImu, rate([](const ArmSample& s) { return s.forearm.has_value(); }), 0.0, {}});
-  if (opt) out.push_back({"optical", StreamRole::Optical, rate([](const ArmSample& s) { return s.elbow || s.wrist; }), 0.0, {}});
-  if (cam) out.push_back({"camera", StreamRole::Camera, rate([](const ArmSample& s) { return s.camWrist || s.camElbow; }), 0.0, rec.meta.camera});
-  if (truth) out.push_back({"truth", StreamRole::Truth, rate([](const ArmSample& s) { return s.trueAngles.has_value(); }), 0.0, {}});
+  if (c.upperArm) out.push_back({"upper", StreamRole::UpperArmImu, rate(n[0]), 0.0, {}});
+  if (c.forearm) out.push_back({"forearm", StreamRole::ForearmImu, rate(n[1]), 0.0, {}});
+  if (c.elbow || c.wrist) out.push_back({"optical", StreamRole::Optical, rate(n[2]), 0.0, {}});
+  if (c.camWrist || c.camElbow)
+    out.push_back({"camera", StreamRole::Camera, rate(n[3]), 0.0, o.reader->meta().camera});
+  if (c.truth) out.push_back({"truth", StreamRole::Truth, rate(n[4]), 0.0, {}});
   return out;
 }
 
-ReplayDevice::ReplayDevice(Recording recording, double speed, bool loop)
-    : Device(describe(recording)), m_rec(std::move(recording)), m_speed(speed), m_loop(loop) {
+ReplayDevice::ReplayDevice(const std::filesystem::path& file, double speed, bool loop)
+    : ReplayDevice(file, speed, loop, describe(file)) {}
+
+ReplayDevice::ReplayDevice(const std::filesystem::path& file, double speed, bool loop,
+                           std::vector<StreamInfo> streams)
+    : Device(std::move(streams)), m_file(file), m_speed(speed), m_loop(loop) {
   m_streamOf.assign(5, -1);
-  for (std::size_t i = 0; i < streams().size(); ++i)
-    m_streamOf[static_cast<std::size_t>(streams()[i].role)] = static_cast<int>(i);
+  for (std::size_t i = 0; i < this->streams().size(); ++i)
+    m_streamOf[static_cast<std::size_t>(this->streams()[i].role)] = static_cast<int>(i);
+}
+
+ReplayDevice::~ReplayDevice() = default;
+
+bool ReplayDevice::rewind() {
+  try {
+    Opened o = open(m_file);
+    m_reader = std::move(o.reader);
+    m_pending = std::move(o.first);
+    m_hasPending = true;
+    m_firstT = m_pending.t;
+    m_passRows = 0;
+    m_warningsShown = 0;
+    return true;
+  } catch (const RecordingError& e) {
+    fail(QString::fromStdString(e.what()));
+    return false;
+  }
 }
 
 void ReplayDevice::start() {
   if (m_timer) return;
-  m_next = 0;
   m_timeOffset = 0.0;
+  if (!rewind()) return;
+  reportNewWarnings();  // e.g. no sidecar: default geometry
   m_startHost = hostNow();
   m_timer = new QTimer(this);
   m_timer->setTimerType(Qt::PreciseTimer);
   m_timer->setInterval(2);
   connect(m_timer, &QTimer::timeout, this, &ReplayDevice::tick);
   m_timer->start();
-  setState(DeviceState::Streaming, QStringLiteral("replaying %1 rows at %2x")
-                                       .arg(m_rec.samples.size())
+  setState(DeviceState::Streaming, QStringLiteral("replaying %1 at %2x")
+                                       .arg(QString::fromStdString(m_file.filename().string()))
                                        .arg(m_speed));
 }
 
 void ReplayDevice::stop() {
   delete m_timer;
   m_timer = nullptr;
+  m_reader.reset();
+  m_hasPending = false;
   setState(DeviceState::Disconnected, QStringLiteral("stopped"));
 }
 
+void ReplayDevice::fail(const QString& reason) {
+  if (m_timer) m_timer->stop();
+  m_reader.reset();
+  m_hasPending = false;
+  setState(DeviceState::Error, QStringLiteral("%1; the rows before it were played").arg(reason));
+  reportProblem(reason);
+}
+
+void ReplayDevice::reportNewWarnings() {
+  const std::vector<std::string>& w = m_reader->warnings();
+  for (; m_warningsShown < w.size(); ++m_warningsShown)
+    reportProblem(QStringLiteral("%1: %2").arg(QString::fromStdString(m_file.string()),
+                                               QString::fromStdString(w[m_warningsShown])));
+}
+
 void ReplayDevice::tick() {
-  if (m_rec.samples.empty()) {
-    stop();
-    return;
-  }
-  const double t0 = m_rec.samples.front().t;
-  const double due = t0 + (hostNow() - m_startHost) * m_speed;
   const double arrival = hostNow();
+  const double due = m_firstT + (arrival - m_startHost) * m_speed;
   SampleBatch batch;
   auto add = [&](StreamRole role, double t, SensorPayload p) {
     const int k = m_streamOf[static_cast<std::size_t>(role)];
     if (k >= 0) batch.push_back({k, t + m_timeOffset, arrival, std::move(p)});
   };
-  while (m_next < m_rec.samples.size() && m_rec.samples[m_next].t <= due) {
-    const ArmSample& s = m_rec.samples[m_next++];
+  QString error;
+  while (m_hasPending && m_pending.t <= due) {
+    const ArmSample& s = m_pending;
     if (s.upperArm) add(StreamRole::UpperArmImu, s.t, *s.upperArm);
     if (s.forearm) add(StreamRole::ForearmImu, s.t, *s.forearm);
     if (s.elbow || s.wrist) add(StreamRole::Optical, s.t, OpticalPositions{s.elbow, s.wrist});
-    if (s.camWrist || s.camElbow) add(StreamRole::Camera, s.t, MarkerPixels{s.camWrist, s.camElbow});
+    if (s.camWrist || s.camElbow)
+      add(StreamRole::Camera, s.t, MarkerPixels{s.camWrist, s.camElbow});
     if (s.trueAngles) add(StreamRole::Truth, s.t, TruthAngles{*s.trueAngles});
+    m_lastT = s.t;
+    ++m_passRows;
+    try {
+      m_hasPending = m_reader->next(m_pending);
+    } catch (const RecordingError& e) {
+      m_hasPending = false;
+      error = QString::fromStdString(e.what());
+    }
   }
   publish(batch);
-  if (m_next < m_rec.samples.size()) return;
+  if (!error.isEmpty()) {
+    fail(error);
+    return;
+  }
+  if (m_hasPending) return;
+  if (m_timeOffset == 0.0) reportNewWarnings();  // a line cut short: once, not every loop
   if (m_loop) {
-    // Device time continues past the end, one mean sample step after the last row.
-    const double span = m_rec.samples.back().t - t0;
-    const double step = m_rec.samples.size() > 1 ? span / static_cast<double>(m_rec.samples.size() - 1) : 0.001;
+    // Device time continues past the end, one mean row step after the last row.
+    const double span = m_lastT - m_firstT;
+    const double step = m_passRows > 1 ? span / static_cast<double>(m_passRows - 1) : 0.001;
     m_timeOffset += span + step;
     m_startHost += (span + step) / m_speed;
-    m_next = 0;
+    rewind();
     return;
   }
   m_timer->stop();

@@ -2,9 +2,13 @@
 // with its own timing, and the estimates are as good as offline.
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 #include <thread>
 
@@ -33,7 +37,8 @@ TEST(Replay, FourTimesFasterKeepsEverySampleAndItsTiming) {
   ASSERT_NE(plugin, nullptr);
   QString why;
   auto device = plugin->create(
-      devices::Options::parse(QStringLiteral("file=%1,speed=4").arg(QString::fromStdString(source.string()))),
+      devices::Options::parse(
+          QStringLiteral("file=%1,speed=4").arg(QString::fromStdString(source.string()))),
       &why);
   ASSERT_NE(device, nullptr) << why.toStdString();
   EXPECT_EQ(device->timeScale(), 4.0);
@@ -98,10 +103,124 @@ TEST(Replay, BadFilesAreClearErrors) {
     std::fputs("t,ua_gx\n0,1\n", f);
     std::fclose(f);
   }
-  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("file=") + bad + QStringLiteral(",speed=1000")), &why), nullptr);
+  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("file=") + bad +
+                                                   QStringLiteral(",speed=1000")),
+                           &why),
+            nullptr);
   EXPECT_NE(why.indexOf(QStringLiteral("speed")), -1) << why.toStdString();
   EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("file=") + bad), &why), nullptr);
   EXPECT_NE(why.indexOf(QStringLiteral("bad.csv:1")), -1) << why.toStdString();
+}
+
+namespace {
+
+// A replay device run in this thread's event loop until it leaves Streaming (or `seconds` pass).
+struct Played {
+  std::vector<devices::DeviceSample> samples;
+  QStringList problems;
+  devices::DeviceState state = devices::DeviceState::Disconnected;
+  QString reason;
+};
+
+Played play(const QString& options, double seconds) {
+  Played out;
+  QString why;
+  auto device =
+      test::loadPlugin(QStringLiteral("replay"))->create(devices::Options::parse(options), &why);
+  EXPECT_NE(device, nullptr) << why.toStdString();
+  if (!device) return out;
+  QObject::connect(device.get(), &devices::Device::samplesReady,
+                   [&](const devices::SampleBatch& b) {
+                     out.samples.insert(out.samples.end(), b.begin(), b.end());
+                   });
+  QObject::connect(device.get(), &devices::Device::problem,
+                   [&](const QString& m) { out.problems << m; });
+  QObject::connect(device.get(), &devices::Device::stateChanged,
+                   [&](devices::DeviceState st, const QString& r) {
+                     out.state = st;
+                     out.reason = r;
+                   });
+  device->start();
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end && (out.state == devices::DeviceState::Streaming ||
+                                                    out.state == devices::DeviceState::Connecting))
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+  const devices::DeviceState last = out.state;
+  const QString lastReason = out.reason;
+  device->stop();
+  out.state = last;  // as it was before stop()
+  out.reason = lastReason;
+  return out;
+}
+
+Recording shortRecording(double duration) {
+  SimulationParams p = defaultSimulation();
+  p.duration = duration;
+  return simulateRecording(MultiJointTrajectory(2), p);
+}
+
+}  // namespace
+
+TEST(Replay, BadRowMidFilePlaysTheRowsBeforeItThenStopsWithTheLine) {
+  QTemporaryDir dir;
+  const fs::path path = fs::path(dir.path().toStdString()) / "broken.csv";
+  // Past the first 10 s, which the device reads when it is created (for the stream rates): an
+  // error there would refuse the file at once.
+  const Recording rec = shortRecording(15.0);
+  writeRecording(path, rec);
+  // Break the data row on line 12002, at 12 s (line 1 is a comment, line 2 the header).
+  std::string text;
+  {
+    std::ifstream in(path, std::ios::binary);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::size_t at = 0;
+  for (int line = 1; line < 12002; ++line) at = text.find('\n', at) + 1;
+  text.insert(at, "oops");
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+
+  const Played r =
+      play(QStringLiteral("speed=20,file=") + QString::fromStdString(path.string()), 5.0);
+  EXPECT_EQ(r.state, devices::DeviceState::Error);
+  EXPECT_TRUE(r.reason.contains(QStringLiteral("broken.csv:12002:1"))) << r.reason.toStdString();
+  EXPECT_TRUE(r.reason.contains(QStringLiteral("rows before it were played")))
+      << r.reason.toStdString();
+  // Rows 1-11999 were published: their IMU samples, in order.
+  const std::size_t before = static_cast<std::size_t>(
+      std::count_if(rec.samples.begin(), rec.samples.begin() + 11999,
+                    [](const ArmSample& x) { return x.upperArm.has_value(); }));
+  std::vector<double> upper;
+  for (const devices::DeviceSample& s : r.samples)
+    if (std::holds_alternative<ImuReading>(s.payload) && s.stream == 0)
+      upper.push_back(s.deviceTime);
+  EXPECT_EQ(upper.size(), before);
+  EXPECT_TRUE(std::is_sorted(upper.begin(), upper.end()));
+}
+
+TEST(Replay, LoopPlaysAgainWithDeviceTimeMovingOn) {
+  QTemporaryDir dir;
+  const fs::path path = fs::path(dir.path().toStdString()) / "short.csv";
+  const Recording rec = shortRecording(0.5);
+  writeRecording(path, rec);  // no sidecar problems: writeRecording writes one
+  const Played r =
+      play(QStringLiteral("speed=10,loop=1,file=") + QString::fromStdString(path.string()), 0.4);
+  EXPECT_EQ(r.state, devices::DeviceState::Streaming) << r.reason.toStdString();  // still looping
+  EXPECT_TRUE(r.problems.isEmpty()) << r.problems.join(u'\n').toStdString();
+  std::vector<double> upper;
+  for (const devices::DeviceSample& s : r.samples)
+    if (s.stream == 0) upper.push_back(s.deviceTime);
+  std::size_t rows = 0;
+  for (const ArmSample& x : rec.samples) rows += x.upperArm.has_value();
+  // 0.4 s at 10x is eight passes of 0.5 s; at least five came out, each after the last.
+  ASSERT_GT(upper.size(), 5 * rows);
+  for (std::size_t i = 1; i < upper.size(); ++i) ASSERT_GT(upper[i], upper[i - 1]) << i;
+  // The n-th pass repeats the first, shifted by whole passes.
+  const double pass = upper[rows] - upper[0];
+  // A pass lasts the recording's span plus one mean row step (docs/devices/replay.md).
+  const double span = rec.samples.back().t - rec.samples.front().t;
+  EXPECT_NEAR(pass, span + span / static_cast<double>(rec.samples.size() - 1), 1e-9);
+  for (std::size_t i = 0; i < rows; i += 37)
+    EXPECT_NEAR(upper[4 * rows + i] - upper[i], 4 * pass, 1e-9) << i;
 }
 
 }  // namespace
