@@ -117,11 +117,14 @@ void ReplayDevice::reportNewWarnings() {
 }
 
 void ReplayDevice::tick() {
-  const double arrival = hostNow();
-  const double due = m_firstT + (arrival - m_startHost) * m_speed;
+  const double now = hostNow();
+  const double due = m_firstT + (now - m_startHost) * m_speed;
   SampleBatch batch;
   auto add = [&](StreamRole role, double t, SensorPayload p) {
     const int k = m_streamOf[static_cast<std::size_t>(role)];
+    // Arrival is when the row was due, not when this tick ran: the session's clock fit then
+    // sees the recording's own timing, without the timer's jitter (times the speed).
+    const double arrival = m_startHost + (t - m_firstT) / m_speed;
     if (k >= 0) batch.push_back({k, t + m_timeOffset, arrival, std::move(p)});
   };
   QString error;

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <numbers>
 #include <thread>
@@ -65,11 +66,14 @@ TEST(Replay, FourTimesFasterKeepsEverySampleAndItsTiming) {
   for (std::size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a[i]->upperArm->gyr, b[i]->upperArm->gyr) << i;
     ASSERT_EQ(a[i]->forearm->acc, b[i]->forearm->acc) << i;
-    // Session time is the recording's time as the synchroniser maps it: intervals are kept up to
-    // the refinements of its clock fit, which at 4x see four times the timer jitter.
+    // Session time is the recording's time as the synchroniser maps it. The replay stamps each
+    // row's arrival with when it was due, so the clock fit sees no timer jitter; what remains is
+    // the row assembler putting an IMU sample into the row of a Kinect sample less than its
+    // 0.5 ms merge window before it (an IMU row at 0.067 s joins the Kinect's at 0.0667 s).
     worst = std::max(worst, std::abs((b[i]->t - b[0]->t) - (a[i]->t - a[0]->t)));
   }
-  EXPECT_LT(worst, 0.015) << "timing distorted by " << worst << " s";
+  std::cout << "replay at 4x: intervals kept to " << worst * 1e6 << " us\n";
+  EXPECT_LE(worst, 0.5e-3 + 1e-9) << "timing distorted by " << worst << " s";
   std::size_t kinectA = 0, kinectB = 0;
   for (const ArmSample& x : original.samples) kinectA += x.wrist.has_value();
   for (const ArmSample& x : replayed.samples) kinectB += x.wrist.has_value();
