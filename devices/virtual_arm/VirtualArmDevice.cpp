@@ -51,9 +51,11 @@ std::vector<StreamInfo> VirtualArmDevice::describe(const VirtualArmSource& sourc
 }
 
 VirtualArmDevice::VirtualArmDevice(const VirtualArmParams& params, double tickSeconds)
-    : Device(describe(VirtualArmSource(params))), m_params(params), m_tick(tickSeconds) {
-  m_meta = VirtualArmSource(params).meta();
-}
+    : VirtualArmDevice(VirtualArmSource(params), params, tickSeconds) {}
+
+VirtualArmDevice::VirtualArmDevice(const VirtualArmSource& source, const VirtualArmParams& params,
+                                   double tickSeconds)
+    : Device(describe(source)), m_params(params), m_tick(tickSeconds), m_meta(source.meta()) {}
 
 VirtualArmDevice::~VirtualArmDevice() {
   if (m_source) releaseEpoch();
@@ -93,7 +95,8 @@ void VirtualArmDevice::tick() {
   const double arrival = hostNow();
   SampleBatch batch;
   batch.reserve(due.size());
-  for (VirtualSample& v : due) batch.push_back({v.stream, v.deviceTime, arrival, std::move(v.payload)});
+  for (VirtualSample& v : due)
+    batch.push_back({v.stream, v.deviceTime, arrival, std::move(v.payload)});
   for (std::size_t i = 0; i < m_reportedDrops.size(); ++i) {
     const std::uint64_t d = m_source->dropped(static_cast<int>(i));
     if (d > m_reportedDrops[i]) countDropped(static_cast<int>(i), d - m_reportedDrops[i]);

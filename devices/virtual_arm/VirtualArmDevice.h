@@ -34,6 +34,9 @@ class VirtualArmDevice final : public Device {
  private:
   void tick();
   static std::vector<StreamInfo> describe(const VirtualArmSource& source);
+  // The source is built once here for the stream list and the metadata; start() builds its own.
+  VirtualArmDevice(const VirtualArmSource& source, const VirtualArmParams& params,
+                   double tickSeconds);
 
   VirtualArmParams m_params;
   double m_tick;
