@@ -230,7 +230,7 @@ class ArmFilter final : public JointEstimator {
     m_lastSeenT = -std::numeric_limits<double>::infinity();
     m_lastOpticalT = -std::numeric_limits<double>::infinity();
     m_pendingOptical.reset();
-    m_gatedInARow = {0, 0};
+    m_gatedInARow = {0, 0, 0, 0};
     m_counters = {};
   }
 
@@ -293,7 +293,7 @@ class ArmFilter final : public JointEstimator {
     const Mat pBefore = m_P;
     const bool optical = blocks.anyOptical();
     if (optical) beforeOpticalUpdate();
-    const bool gated = gateCamera(blocks);
+    const bool gated = gateOptical(blocks);
     if (!gated || blocks.count == 0) {
       // Nothing left to fuse (e.g. a single mis-detected marker), or the gate could not be
       // evaluated: the sample changes nothing.
@@ -398,19 +398,46 @@ class ArmFilter final : public JointEstimator {
     return b;
   }
 
-  // Innovation gating of the marker pixels at the predicted state (a mis-detected marker lands
-  // far from where the arm can be). Gated and unseeable pixels are removed from b and counted.
-  // Start-up is not gated: the first pose may be far off and the pixels are what corrects it.
+  // Innovation gating of the optical measurements at the predicted state: a mis-detected marker
+  // (in the webcam image, or in the Kinect's colour image before depth is added) lands far from
+  // where the arm can be. Gated and unseeable measurements are removed from b and counted.
+  // Start-up is not gated: the first pose may be far off and the optics are what corrects it.
   // Returns false when the state could not be linearised.
-  bool gateCamera(BlockList& b) {
-    if (!m_camera || !(b.has(kCamWrist) || b.has(kCamElbow))) return true;
+  bool gateOptical(BlockList& b) {
+    const bool anyCamera = m_camera && (b.has(kCamWrist) || b.has(kCamElbow));
+    const bool anyPosition = m_p.positionGate > 0.0 && (b.has(kElbow) || b.has(kWrist));
+    if (!anyCamera && !anyPosition) return true;
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
     Eigen::Matrix<double, kModelRows, 1> all;
     Eigen::Matrix<double, kModelRows, kBase> allJac;
     predictBaseWithJacobian(m_p, m_x.template head<kBase>(), all, allJac);
     for (int i = b.count - 1; i >= 0; --i) {
       const int blk = b.block[i];
-      if (!isCamera(blk)) continue;
+      if (blk == kElbow || blk == kWrist) {
+        if (!anyPosition) continue;
+        int& inARow = m_gatedInARow[blk == kWrist ? 2 : 3];
+        if (startup || inARow >= m_p.positionGateResetFrames) {
+          inARow = 0;
+          continue;
+        }
+        const Eigen::Vector3d r = b.z.template segment<3>(b.offset[i]) - all.segment<3>(3 * blk);
+        const Eigen::Matrix<double, 3, kBase> jac = allJac.middleRows<3>(3 * blk);
+        Eigen::Matrix3d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+        sm.diagonal().array() += m_p.positionVariance;
+        const Eigen::LLT<Eigen::Matrix3d> llt(sm);
+        if (llt.info() != Eigen::Success) return false;
+        // Both far in metres and improbable: a small stated variance alone must not turn a
+        // model error's systematic innovation into an "outlier".
+        if (r.norm() > m_p.positionGateMinDistance && r.dot(llt.solve(r)) > m_p.positionGate) {
+          ++m_counters.rejectedOutliers;
+          ++inARow;
+          b = b.without(i);
+        } else {
+          inARow = 0;
+        }
+        continue;
+      }
+      if (!isCamera(blk) || !anyCamera) continue;
       Eigen::Vector2d px;
       Eigen::Matrix<double, 2, kBase> jac;
       const int posBlock = blk == kCamWrist ? kWrist : kElbow;
@@ -769,8 +796,9 @@ class ArmFilter final : public JointEstimator {
   double m_lastOpticalT = 0.0;
   double m_headingFloor = 0.0;  // least variance along the heading while IMU-only (rad^2)
   std::optional<ArmSample> m_pendingOptical;
-  std::optional<PinholeCamera> m_camera;   // when params carry a camera and useCamera is set
-  std::array<int, 2> m_gatedInARow{0, 0};  // consecutive gated frames: wrist, elbow marker
+  std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
+  // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
+  std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
   EstimatorCounters m_counters;
 };
 

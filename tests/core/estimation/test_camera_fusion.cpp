@@ -169,6 +169,45 @@ TEST_P(ByFilter, MisdetectedMarkersAreGatedAndCounted) {
   EXPECT_GT(ungated.rmse.head<3>().maxCoeff(), 3.0 * gated.rmse.head<3>().maxCoeff());
 }
 
+// The Kinect plugin finds its markers in the colour image too: a distractor gives a 3D point
+// far from the arm. 5 % of the wrist positions are moved 37 cm away.
+TEST_P(ByFilter, MisdetectedKinectPositionsAreGated) {
+  const Recording clean = simulate({.kinect = true, .webcam = false}, 30.0, 9);
+  Recording dirty = clean;
+  std::uint64_t injected = 0, kinectRows = 0;
+  for (ArmSample& x : dirty.samples) {
+    if (!x.wrist) continue;
+    if (++kinectRows % 20 == 7) {
+      *x.wrist += Eigen::Vector3d(0.3, -0.2, 0.1);
+      ++injected;
+    }
+  }
+  ASSERT_GT(injected, 40u);
+
+  const EstimatorParams p = paramsFor(dirty, GetParam());
+  const RunResult reference = run(clean.samples, p);
+  const RunResult gated = run(dirty.samples, p);
+  EstimatorParams ungatedParams = p;
+  ungatedParams.positionGate = 0.0;  // off
+  const RunResult ungated = run(dirty.samples, ungatedParams);
+  report(kindName(GetParam()) + " Kinect clean", reference.rmse);
+  report(kindName(GetParam()) + " Kinect 5% wrist outliers, gated", gated.rmse);
+  report(kindName(GetParam()) + " Kinect 5% wrist outliers, no gate", ungated.rmse);
+  std::printf("[ measured ] injected %llu, gated %llu (clean run: %llu)\n",
+              static_cast<unsigned long long>(injected),
+              static_cast<unsigned long long>(gated.counters.rejectedOutliers),
+              static_cast<unsigned long long>(reference.counters.rejectedOutliers));
+
+  // Every outlier after start-up is caught, and no good position is.
+  EXPECT_GE(gated.counters.rejectedOutliers, injected - 2);
+  EXPECT_LE(gated.counters.rejectedOutliers, injected);
+  EXPECT_EQ(reference.counters.rejectedOutliers, 0u);
+  EXPECT_EQ(ungated.counters.rejectedOutliers, 0u);
+  for (int j = 0; j < kNumJoints; ++j)
+    EXPECT_LE(gated.rmse(j), reference.rmse(j) + 0.05 * kDeg) << "joint " << j;
+  EXPECT_GT(ungated.rmse.maxCoeff(), 3.0 * gated.rmse.maxCoeff());
+}
+
 // A marker that is occluded (or out of frame) is simply absent: the wrist marker is lost for
 // 5 s, the elbow marker in every other frame.
 TEST(WebcamFusion, OccludedMarkersAreSimplyAbsent) {
