@@ -151,8 +151,8 @@ class FileLines {
       if (m_p == m_buf.size() && !refill()) return false;
       const char* base = m_buf.data();
       const char* nl = static_cast<const char*>(std::memchr(base + m_p, '\n', m_buf.size() - m_p));
-      if (!nl && !m_eof) {  // the line goes on in the next chunk
-        if (!refill()) continue;
+      if (!nl && !m_eof) {  // the line may go on in the next chunk
+        refill();
         continue;
       }
       const std::size_t end = nl ? static_cast<std::size_t>(nl - base) : m_buf.size();
