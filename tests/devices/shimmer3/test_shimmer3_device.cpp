@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "devices/api/Device.h"
+#include "tests/support/DeviceHarness.h"
 #include "tests/support/LoadPlugin.h"
 
 using namespace armtrack;
@@ -178,45 +179,7 @@ class FakeShimmer {
   std::unique_ptr<QSocketNotifier> m_notifier;
 };
 
-// The device in its own thread, as the session runs it; what it emits is collected here.
-struct Harness {
-  std::unique_ptr<Device> device;
-  QThread thread;
-  QObject receiver;
-  std::vector<DeviceSample> samples;
-  std::vector<std::pair<DeviceState, QString>> states;
-  QStringList problems;
-
-  explicit Harness(std::unique_ptr<Device> d) : device(std::move(d)) {
-    QObject::connect(device.get(), &Device::samplesReady, &receiver, [this](const SampleBatch& b) {
-      samples.insert(samples.end(), b.begin(), b.end());
-    });
-    QObject::connect(device.get(), &Device::stateChanged, &receiver,
-                     [this](DeviceState s, const QString& why) { states.emplace_back(s, why); });
-    QObject::connect(device.get(), &Device::problem, &receiver,
-                     [this](const QString& m) { problems << m; });
-    device->moveToThread(&thread);
-    thread.start();
-    QMetaObject::invokeMethod(device.get(), &Device::start, Qt::QueuedConnection);
-  }
-  ~Harness() { stop(); }
-  void stop() {
-    if (!thread.isRunning()) return;
-    QMetaObject::invokeMethod(device.get(), &Device::stop, Qt::BlockingQueuedConnection);
-    thread.quit();
-    thread.wait();
-    QCoreApplication::processEvents();  // deliver what was queued before stop()
-  }
-  DeviceState state() const {
-    return states.empty() ? DeviceState::Disconnected : states.back().first;
-  }
-  bool waitState(DeviceState s, int ms = 2000) {
-    return QTest::qWaitFor([&] { return state() == s; }, ms);
-  }
-  bool waitSamples(std::size_t n, int ms = 2000) {
-    return QTest::qWaitFor([&] { return samples.size() >= n; }, ms);
-  }
-};
+using Harness = test::DeviceHarness;
 
 class Shimmer3Device : public ::testing::Test {
  protected:
