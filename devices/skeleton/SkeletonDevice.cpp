@@ -8,6 +8,7 @@
 
 #include "devices/api/Options.h"
 #include "devices/webcam/CameraFile.h"
+#include "devices/webcam/CoreCameraParams.h"
 
 Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 
@@ -69,14 +70,8 @@ std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options,
                         "%1 has no pose in the shoulder frame; run armtrack-cli camera-register "
                         "on it")
                         .arg(cameraPath);
-      else {
-        TrackerPose pose;
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c) pose.R(r, c) = f.extrinsics->R(r, c);
-          pose.t[r] = f.extrinsics->t[r];
-        }
-        s.pose = pose;
-      }
+      else
+        s.pose = webcam::toCameraParams(f);
     } catch (const webcam::CameraFileError& e) {
       problems << QString::fromStdString(e.what());
     }

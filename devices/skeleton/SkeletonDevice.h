@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "core/io/Recording.h"
 #include "devices/api/Device.h"
 #include "devices/api/ProblemLimiter.h"
 #include "devices/skeleton/SkeletonParser.h"
@@ -24,21 +25,15 @@ enum class Origin {
   Camera,    ///< as sent: the tracker's own frame
 };
 
-/// The tracker's pose in the shoulder frame: p_tracker = R p_shoulder + t (m), the convention of
-/// a registered camera file (docs/devices/webcam.md).
-struct TrackerPose {
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d t = Eigen::Vector3d::Zero();
-};
-
 /// What the plugin's options select.
 struct SkeletonSettings {
   std::uint16_t port = 9870;         ///< local UDP port the tracker sends to
   Origin origin = Origin::Shoulder;  ///< see Origin
   double timeoutSeconds = 3.0;       ///< s without a frame: back to Connecting
-  /// From camera=FILE: turns tracker axes into shoulder-frame axes. Empty with axes=shoulder,
+  /// From camera=FILE: the tracker camera, whose pose (p_camera = R p_shoulder + t, m) turns
+  /// tracker axes into shoulder-frame axes; only R and t are used. Empty with axes=shoulder,
   /// when the tracker already sends shoulder-frame axes.
-  std::optional<TrackerPose> pose;
+  std::optional<CameraParams> pose;
 };
 
 /// Reads `port`, `origin`, `timeout` and the registration: `camera=FILE` (a camera file with its

@@ -11,6 +11,7 @@
 #include "devices/api/Device.h"
 #include "devices/api/ProblemLimiter.h"
 #include "devices/webcam/CameraFile.h"
+#include "devices/webcam/CoreCameraParams.h"
 #include "devices/webcam/MarkerDetection.h"
 
 class QTimer;
@@ -41,9 +42,6 @@ struct WebcamSettings {
 /// Reads the options; empty with *error saying what to change when one is malformed or unknown,
 /// the calibration file cannot be read, or the marker options do not fit. Any thread.
 std::optional<WebcamSettings> readWebcamSettings(const QVariantMap& options, QString* error);
-
-/// The CameraParams of a calibration file (intrinsics, distortion and pose), when it has a pose.
-std::optional<CameraParams> toCameraParams(const CameraFile& file);
 
 /// One camera as one Camera stream of MarkerPixels. Every frame read is published, with a marker
 /// absent where it was not found.
