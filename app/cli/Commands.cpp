@@ -68,7 +68,7 @@ Simulates both IMUs and the Kinect along a joint trajectory and writes a recordi
 the sidecar REC.json) that includes the true joint angles.
 
 Options:
-  --trajectory NAME    sinusoid, multi-joint, shoulder-wheel or calibration (required)
+  --trajectory NAME    sinusoid, multi-joint, shoulder-wheel, calibration or reaching (required)
   --out FILE           the recording to write (required)
   --duration S         length in s (default 10; calibration: the whole protocol, 54 s)
   --seed N             seed for the trajectory, noise and misalignment (default 1)
@@ -90,6 +90,8 @@ Options:
   --amplitude DEG      sinusoid: amplitude of every joint (default 28.6, i.e. 0.5 rad)
   --frequency HZ       sinusoid: frequency of every joint (default 0.5)
   --wheel-period S     shoulder-wheel: seconds per turn (default 4)
+  --peak-rate DEG_S    reaching: fastest joint rate of a move (default 420)
+  --peak-accel DEG_S2  reaching: fastest joint acceleration of a move (default 4000)
 )";
 
 constexpr std::string_view kEstimateHelp = R"(Usage: armtrack-cli estimate REC.csv [options]
@@ -156,7 +158,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                                   {"--gyro-noise", true},      {"--accel-noise", true},
                                   {"--gyro-bias", true},       {"--misalignment", true},
                                   {"--amplitude", true},       {"--frequency", true},
-                                  {"--wheel-period", true}});
+                                  {"--wheel-period", true},    {"--peak-rate", true},
+                                  {"--peak-accel", true}});
   if (a.help()) {
     out << kSimulateHelp;
     return 0;
@@ -215,6 +218,9 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (const auto amp = a.number("--amplitude")) traj.amplitude.setConstant(*amp * kDeg);
   traj.frequency.setConstant(a.nonNegative("--frequency", traj.frequency(0)));
   traj.wheelPeriod = a.positive("--wheel-period", traj.wheelPeriod);
+  traj.peakRate = a.positive("--peak-rate", traj.peakRate / kDeg) * kDeg;
+  traj.peakAccel = a.positive("--peak-accel", traj.peakAccel / kDeg) * kDeg;
+  traj.duration = sim.duration;
   const auto ignoredFor = [&](std::string_view option, std::string_view trajectory) {
     if (a.flag(option) && name != trajectory) {
       err << "warning: " << option << " only applies to the " << trajectory
@@ -224,6 +230,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   ignoredFor("--amplitude", "sinusoid");
   ignoredFor("--frequency", "sinusoid");
   ignoredFor("--wheel-period", "shoulder-wheel");
+  ignoredFor("--peak-rate", "reaching");
+  ignoredFor("--peak-accel", "reaching");
 
   std::unique_ptr<Trajectory> trajectory;
   try {

@@ -195,32 +195,28 @@ std::vector<ProtocolStep> protocolSteps() {
 
 }  // namespace
 
-CalibrationProtocolTrajectory::CalibrationProtocolTrajectory() {
-  double t = 0.0;
-  for (const ProtocolStep& step : protocolSteps()) {
-    JointVector th;
-    for (int j = 0; j < kNumJoints; ++j) th(j) = step.poseDeg[j] * kDeg;
-    t += step.moveSeconds;
-    m_keys.push_back({t, th});
-    if (step.holdSeconds > 0.0) {
-      t += step.holdSeconds;
-      m_keys.push_back({t, th});
-    }
-  }
+void MinimumJerkPath::add(double t, const JointVector& th) {
+  if (!m_keys.empty() && !(t >= m_keys.back().t))
+    throw std::invalid_argument("MinimumJerkPath: keys must be in time order");
+  m_keys.push_back({t, th});
 }
 
-double CalibrationProtocolTrajectory::duration() const {
-  return m_keys.back().t;
+void MinimumJerkPath::hold(double seconds) {
+  add(endTime() + seconds, lastPosture());
 }
 
-JointVector CalibrationProtocolTrajectory::startPose() {
-  JointVector th;
-  th << 0.0, 0.0, 0.0, -90.0 * kDeg, 0.0;
-  return th;
+double MinimumJerkPath::endTime() const {
+  return m_keys.empty() ? 0.0 : m_keys.back().t;
 }
 
-JointMotion CalibrationProtocolTrajectory::at(double t) const {
+const JointVector& MinimumJerkPath::lastPosture() const {
+  static const JointVector kZero = JointVector::Zero();
+  return m_keys.empty() ? kZero : m_keys.back().th;
+}
+
+JointMotion MinimumJerkPath::at(double t) const {
   JointMotion m;
+  if (m_keys.empty()) return m;
   if (!(t > m_keys.front().t)) {
     m.th = m_keys.front().th;
     return m;
@@ -229,7 +225,7 @@ JointMotion CalibrationProtocolTrajectory::at(double t) const {
     m.th = m_keys.back().th;
     return m;
   }
-  // The segment [k-1, k] that holds t; minimum jerk s(u) = 10u^3 - 15u^4 + 6u^5.
+  // The segment [k-1, k] that holds t.
   const auto it = std::upper_bound(m_keys.begin(), m_keys.end(), t,
                                    [](double v, const Key& k) { return v < k.t; });
   const Key& b = *it;
@@ -246,8 +242,78 @@ JointMotion CalibrationProtocolTrajectory::at(double t) const {
   return m;
 }
 
+CalibrationProtocolTrajectory::CalibrationProtocolTrajectory() {
+  double t = 0.0;
+  for (const ProtocolStep& step : protocolSteps()) {
+    JointVector th;
+    for (int j = 0; j < kNumJoints; ++j) th(j) = step.poseDeg[j] * kDeg;
+    t += step.moveSeconds;
+    m_path.add(t, th);
+    if (step.holdSeconds > 0.0) {
+      t += step.holdSeconds;
+      m_path.add(t, th);
+    }
+  }
+}
+
+double CalibrationProtocolTrajectory::duration() const {
+  return m_path.endTime();
+}
+
+JointVector CalibrationProtocolTrajectory::startPose() {
+  JointVector th;
+  th << 0.0, 0.0, 0.0, -90.0 * kDeg, 0.0;
+  return th;
+}
+
+JointMotion CalibrationProtocolTrajectory::at(double t) const {
+  return m_path.at(t);
+}
+
+namespace {
+// Reaching postures (rad): anatomical ranges that keep th1 away from the +-90 deg gimbal lock.
+constexpr std::array<double, kNumJoints> kReachLow{-40 * kDeg, -20 * kDeg, -60 * kDeg,
+                                                   -120 * kDeg, -80 * kDeg};
+constexpr std::array<double, kNumJoints> kReachHigh{120 * kDeg, 80 * kDeg, 60 * kDeg, 0.0,
+                                                    80 * kDeg};
+constexpr double kMinReach = 60 * kDeg;  // the largest joint change of every move
+}  // namespace
+
+ReachingTrajectory::ReachingTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
+                                       double durationSeconds) {
+  if (!(peakRate > 0.0) || !std::isfinite(peakRate) || !(peakAccel > 0.0) ||
+      !std::isfinite(peakAccel))
+    throw std::invalid_argument("ReachingTrajectory: peak rate and acceleration must be > 0");
+  if (!(durationSeconds >= 0.0) || !std::isfinite(durationSeconds))
+    throw std::invalid_argument("ReachingTrajectory: duration must be >= 0 s");
+  std::mt19937_64 rng(seed);
+  std::array<std::uniform_real_distribution<double>, kNumJoints> joint;
+  for (int j = 0; j < kNumJoints; ++j)
+    joint[j] = std::uniform_real_distribution<double>(kReachLow[j], kReachHigh[j]);
+  std::uniform_real_distribution<double> pause(0.1, 0.4);
+  auto posture = [&] {
+    JointVector th;
+    for (int j = 0; j < kNumJoints; ++j) th(j) = joint[j](rng);
+    return th;
+  };
+  m_path.add(0.0, posture());
+  m_path.hold(pause(rng));
+  while (m_path.endTime() < durationSeconds) {
+    JointVector next = posture();
+    while ((next - m_path.lastPosture()).cwiseAbs().maxCoeff() < kMinReach) next = posture();
+    const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
+    const double seconds = std::max(1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel));
+    m_path.add(m_path.endTime() + seconds, next);
+    m_path.hold(pause(rng));
+  }
+}
+
+JointMotion ReachingTrajectory::at(double t) const {
+  return m_path.at(t);
+}
+
 std::vector<std::string> trajectoryNames() {
-  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration"};
+  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration", "reaching"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
@@ -264,6 +330,9 @@ std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const Trajec
   if (name == "shoulder-wheel")
     return std::make_unique<ShoulderWheelTrajectory>(opts.geometry, opts.wheelPeriod);
   if (name == "calibration") return std::make_unique<CalibrationProtocolTrajectory>();
+  if (name == "reaching")
+    return std::make_unique<ReachingTrajectory>(opts.seed, opts.peakRate, opts.peakAccel,
+                                                opts.duration);
   std::string valid;
   for (const std::string& n : trajectoryNames()) valid += (valid.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown trajectory '" + name + "'; valid names: " + valid);

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -76,6 +77,26 @@ class ShoulderWheelTrajectory final : public Trajectory {
   double m_period, m_w, m_h, m_r, m_s;
 };
 
+/// Postures joined by minimum-jerk moves, s(u) = 10u^3 - 15u^4 + 6u^5: rates and accelerations
+/// are continuous and zero at every key. Before the first key and after the last the arm holds.
+class MinimumJerkPath {
+ public:
+  /// Appends a key: the arm reaches th (rad) at time t (s), t not before the previous key's.
+  void add(double t, const JointVector& th);
+  /// Holds the last posture for s seconds (a second key at the same posture).
+  void hold(double seconds);
+  JointMotion at(double t) const;
+  double endTime() const;
+  const JointVector& lastPosture() const;
+
+ private:
+  struct Key {
+    double t;        // s, time the arm reaches the pose
+    JointVector th;  // rad
+  };
+  std::vector<Key> m_keys;
+};
+
 /// The sensor-to-segment calibration protocol of docs/calibration.md, as a therapist would guide
 /// it (about 57 s): the start pose held 4 s (upper arm hanging, elbow flexed 90 deg, forearm
 /// pointing forward, thumb up: th = [0 0 0 -90 0] deg), four static poses (2 s move, 2 s hold),
@@ -94,11 +115,26 @@ class CalibrationProtocolTrajectory final : public Trajectory {
   static JointVector startPose();
 
  private:
-  struct Key {
-    double t;        // s, time the arm reaches the pose
-    JointVector th;  // rad
-  };
-  std::vector<Key> m_keys;
+  MinimumJerkPath m_path;
+};
+
+/// Fast, smooth reaching: the arm moves from one posture to the next, all five joints at once,
+/// each move a minimum-jerk profile, with a short pause (0.1-0.4 s) between moves. Target postures
+/// are drawn from a seeded generator inside anatomical ranges (th0 [-40, 120], th1 [-20, 80],
+/// th2 [-60, 60], th4 [-120, 0], th5 [-80, 80] deg), each at least 60 deg from the last in the
+/// joint that moves most. A move lasts long enough that no joint exceeds peakRate (rad/s) or
+/// peakAccel (rad/s^2); the joint that moves most reaches one of the two. Minimum jerk gives
+/// peak rate 1.875 A / T and peak acceleration 5.77 A / T^2 for a move of A over T seconds.
+/// Moves are planned for durationSeconds; after that the arm holds its last posture.
+class ReachingTrajectory final : public Trajectory {
+ public:
+  /// Throws std::invalid_argument unless peakRate and peakAccel are finite and positive.
+  ReachingTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
+                     double durationSeconds = 600.0);
+  JointMotion at(double t) const override;
+
+ private:
+  MinimumJerkPath m_path;
 };
 
 struct TrajectoryOptions {
@@ -109,10 +145,14 @@ struct TrajectoryOptions {
   double maxFrequencyHz = 0.8;                         ///< multi-joint
   double amplitudeScale = 1.0;                         ///< multi-joint
   double wheelPeriod = 4.0;                            ///< shoulder wheel: s per turn
+  double peakRate = 420.0 * std::numbers::pi / 180.0;    ///< reaching: rad/s
+  double peakAccel = 4000.0 * std::numbers::pi / 180.0;  ///< reaching: rad/s^2
+  double duration = 600.0;  ///< reaching: s of planned moves
   ArmGeometry geometry;                                ///< shoulder wheel
 };
 
-/// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol).
+/// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol),
+/// "reaching".
 /// Throws std::invalid_argument otherwise.
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts);
 std::vector<std::string> trajectoryNames();
