@@ -71,7 +71,8 @@ struct StreamHealth {
   std::uint64_t samples = 0;  ///< samples published
   std::uint64_t dropped = 0;  ///< samples the device says it lost (sequence gaps, dropouts)
   std::uint64_t corrupt = 0;  ///< packets or frames rejected as malformed
-  /// Samples that arrived after a newer one (UDP reorders); published, not counted as dropped.
+  /// Samples that arrived after a newer one (UDP reorders): not published, since device time
+  /// must not go back, and not counted as dropped either: they were not lost on the link.
   /// Added in a way that keeps the plugin interface (kDeviceApiVersion 1): a field at the end
   /// and a non-virtual counting function.
   std::uint64_t reordered = 0;
@@ -125,8 +126,8 @@ class Device : public QObject {
   void reportProblem(const QString& message);
   void countDropped(int stream, std::uint64_t n);
   void countCorrupt(int stream, std::uint64_t n);
-  /// n samples counted as dropped arrived after all, overtaken by newer ones: moves them from
-  /// dropped to reordered.
+  /// n samples counted as dropped arrived after all, overtaken by newer ones (and were not
+  /// published): moves them from dropped to reordered.
   void countReordered(int stream, std::uint64_t n);
   void countReconnect();
   void setBattery(std::optional<double> percent);

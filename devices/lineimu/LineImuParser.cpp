@@ -223,13 +223,9 @@ void LineImuParser::parseBody(std::string_view body, std::vector<Sample>& out) {
       m_seq.add(m_seqUnwrapped);
       m_timeUs += static_cast<std::uint32_t>(s.rawTimeUs - m_lastRawUs);
     } else {
-      const std::uint32_t back = m_lastSeq - s.seq;
-      if (m_seq.add(m_seqUnwrapped - back) != SequenceStatus::Reordered) return;  // counted
-      // Its time is behind the newest sentence's; the newest stays the reference.
-      s.deviceTimeUs = m_timeUs - static_cast<std::uint32_t>(m_lastRawUs - s.rawTimeUs);
-      s.t = static_cast<double>(s.deviceTimeUs) * 1e-6;
-      ++m_samples;
-      out.push_back(s);
+      // Older than the newest sentence: overtaken on the way (counted reordered) or a duplicate.
+      // Either way it is not returned: device time never decreases within an epoch.
+      m_seq.add(m_seqUnwrapped - (m_lastSeq - s.seq));
       return;
     }
     m_haveTime = true;

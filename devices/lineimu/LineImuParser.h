@@ -58,8 +58,9 @@ class LineImuParser {
   std::uint64_t samples() const { return m_samples; }
   /// Sentences missing from `seq` when a later one arrived (gaps), whether or not they came later.
   std::uint64_t droppedSamples() const { return m_seq.missing(); }
-  /// Of those, sentences that arrived after a newer one (UDP reorders), within 64 sentences;
-  /// published with their own time. droppedSamples() - reorderedSamples() were lost.
+  /// Of those, sentences that arrived after a newer one (UDP reorders), within 64 sentences. They
+  /// are not returned either (device time never decreases within an epoch), but they were not
+  /// lost on the link: droppedSamples() - reorderedSamples() were.
   std::uint64_t reorderedSamples() const { return m_seq.reordered(); }
   /// Sentences dropped because their `seq` had arrived before, or came more than 64 late.
   std::uint64_t duplicateSamples() const { return m_seq.duplicates() + m_seq.tooLate(); }

@@ -110,7 +110,8 @@ bool TimetagSequence::accept(double t) {
   }
   const double back = m_period > 0.0 ? std::round(-step / m_period) : 0.0;
   if (back >= static_cast<double>(m_seq)) return false;
-  return m_tracker.add(m_seq - static_cast<std::uint64_t>(back)) == SequenceStatus::Reordered;
+  m_tracker.add(m_seq - static_cast<std::uint64_t>(back));
+  return false;  // not published: time never goes back (counted reordered or duplicate)
 }
 
 void NgimuDevice::stop() {
@@ -154,7 +155,7 @@ void NgimuDevice::onReadyRead() {
   // which advance by one sample period per message (docs/devices/ngimu.md).
   std::size_t kept = 0;
   for (std::size_t i = 0; i < m_samples.size(); ++i) {
-    if (m_samples[i].hasTimetag && !m_sequence.accept(m_samples[i].t)) continue;  // duplicate
+    if (m_samples[i].hasTimetag && !m_sequence.accept(m_samples[i].t)) continue;  // counted
     m_samples[kept] = m_samples[i];
     m_arrivals[kept] = m_arrivals[i];
     ++kept;

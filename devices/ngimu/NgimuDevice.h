@@ -38,8 +38,8 @@ std::optional<NgimuSettings> readNgimuSettings(const QVariantMap& options, QStri
 /// period; a shorter step later resets it (rate changed). Plain data.
 class TimetagSequence {
  public:
-  /// Takes a message with time tag t (s). False when it is to be dropped: a duplicate, or older
-  /// than the reorder window.
+  /// Takes a message with time tag t (s). False when it is not to be published: older than the
+  /// newest one (counted reordered, or duplicate when seen before).
   bool accept(double t);
   const SequenceTracker& tracker() const { return m_tracker; }
   double periodSeconds() const { return m_period; }

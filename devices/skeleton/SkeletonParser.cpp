@@ -117,7 +117,8 @@ std::optional<Frame> SkeletonParser::parseDatagram(std::string_view d) {
     return fail(0, "no tracked joint (shoulder, elbow or wrist)");
 
   // The frame counter tells lost frames (gaps), frames overtaken by newer ones on the way (UDP
-  // reorders: used, counted reordered) and duplicates (dropped). A jump by 2^20 or more either
+  // reorders: not returned, so that time never goes back, but counted reordered, not lost) and
+  // duplicates (not returned). A jump by 2^20 or more either
   // way, or back beyond the reorder window, is a restarted tracker: followed anew.
   if (m_seq.started()) {
     const std::uint64_t last = m_lastFrame;
@@ -129,11 +130,10 @@ std::optional<Frame> SkeletonParser::parseDatagram(std::string_view d) {
     case SequenceStatus::InOrder:
       m_lastFrame = f.frame;
       break;
-    case SequenceStatus::Reordered:
-      break;
-    case SequenceStatus::Duplicate:
+    case SequenceStatus::Reordered:  // counted in reorderedFrames(), not an error
+    case SequenceStatus::Duplicate:  // counted in duplicateFrames(), not an error
     case SequenceStatus::TooLate:
-      return std::nullopt;  // counted in duplicateFrames(), not an error
+      return std::nullopt;
   }
   ++m_frames;
   return f;

@@ -41,8 +41,8 @@ std::string encode(const Frame& frame);
 /// Datagram parser: one whole datagram per call. Never throws. Not thread-safe: one owner.
 class SkeletonParser {
  public:
-  /// The frame, or empty when the datagram is invalid (the reason is in errors()) or a duplicate
-  /// (counted in duplicateFrames()).
+  /// The frame, or empty when the datagram is invalid (the reason is in errors()), older than the
+  /// newest frame (counted in reorderedFrames()) or a duplicate (duplicateFrames()).
   std::optional<Frame> parseDatagram(std::string_view datagram);
   std::optional<Frame> parseDatagram(std::span<const std::uint8_t> datagram);
 
@@ -51,7 +51,8 @@ class SkeletonParser {
   /// Frames missing from the counter when a later one arrived (gaps), whether or not they came
   /// later; droppedFrames() - reorderedFrames() were lost.
   std::uint64_t droppedFrames() const { return m_seq.missing(); }
-  /// Frames that arrived after a newer one (UDP reorders); returned with their own time.
+  /// Frames that arrived after a newer one (UDP reorders): not returned (time never goes back),
+  /// not lost on the link either.
   std::uint64_t reorderedFrames() const { return m_seq.reordered(); }
   /// Frames whose number had arrived before: not returned (a duplicated datagram).
   std::uint64_t duplicateFrames() const { return m_seq.duplicates() + m_seq.tooLate(); }
