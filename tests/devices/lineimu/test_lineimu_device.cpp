@@ -481,10 +481,11 @@ TEST_F(LineImuDevice, UdpFloodLosesNoGoodSampleUncountedAndStampsArrivalsHonestl
     flood = floodUdp(port, [](std::uint32_t k) { return imuSentence(imu(k, 2000u * k)); });
     done = true;
   });
-  QTest::qWaitFor([&] { return done.load(); }, 10000);  // the device's samples are delivered here
+  // The device's samples are delivered to this thread while it waits.
+  EXPECT_TRUE(QTest::qWaitFor([&] { return done.load(); }, 10000));
   sender.join();
   const auto accounted = [&] { return h.samples.size() + h.device->health().streams[0].dropped; };
-  QTest::qWaitFor([&] { return accounted() >= flood.goodSent; }, 3000);
+  EXPECT_TRUE(QTest::qWaitFor([&] { return accounted() >= flood.goodSent; }, 3000));
   h.stop();
   const StreamHealth s = h.device->health().streams[0];
   std::printf(
