@@ -172,11 +172,12 @@ void OrientationFilter::restartAfterGap(double gap) {
 
 bool OrientationFilter::update(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc,
                                double dtIn) {
-  // Plausibility at the door; the comparisons are false for NaN, so they also refuse non-finite
-  // values (infinity is at or beyond any limit).
+  // Plausibility at the door. The largest magnitude propagates NaN (Eigen's default maxCoeff
+  // may skip it) and the comparisons are false for NaN, so they also refuse non-finite values
+  // (infinity is at or beyond any limit).
   if (!(dtIn > 0.0) || !(dtIn < std::numeric_limits<double>::infinity()) ||
-      !(gyr.cwiseAbs().maxCoeff() < m_gyrMax) || !(acc.cwiseAbs().maxCoeff() < m_p.accMax))
-      [[unlikely]] {
+      !(gyr.cwiseAbs().maxCoeff<Eigen::PropagateNaN>() < m_gyrMax) ||
+      !(acc.cwiseAbs().maxCoeff<Eigen::PropagateNaN>() < m_p.accMax)) [[unlikely]] {
     return reject(gyr, acc, dtIn);
   }
   double dt = dtIn;

@@ -357,6 +357,26 @@ TEST(OrientationFilter, AbsurdButFiniteReadingsAreRejectedAndTheFilterKeepsTrack
   }
 }
 
+TEST(OrientationFilter, NonFiniteValueOnAnyAxisIsRejected) {
+  // Eigen's default maxCoeff() may skip a NaN that is not the first coefficient.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double bad : {nan, -nan, inf, -inf}) {
+      OrientationFilter f;
+      Eigen::Vector3d gyr = Eigen::Vector3d::Zero(), acc(0.0, 0.0, kG);
+      gyr(axis) = bad;
+      EXPECT_FALSE(f.update(gyr, acc, 0.01)) << "gyr axis " << axis << " " << bad;
+      gyr.setZero();
+      acc(axis) = bad;
+      EXPECT_FALSE(f.update(gyr, acc, 0.01)) << "acc axis " << axis << " " << bad;
+      EXPECT_TRUE(finite(f.orientation()));
+      EXPECT_EQ(f.state().rejected, 2u);
+      EXPECT_EQ(f.state().outOfRange, 0u);
+    }
+  }
+}
+
 TEST(OrientationFilter, PlausibilityLimitsAreCountedAndReadingsJustInsideAreUsed) {
   OrientationFilter f;
   const double dt = 0.005;
