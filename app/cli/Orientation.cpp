@@ -1,5 +1,6 @@
 #include "app/cli/Orientation.h"
 
+#include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
@@ -7,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
@@ -31,20 +33,29 @@ constexpr std::string_view kOrientationHelp =
 Estimates the orientation of one IMU from its gyroscope and accelerometer (no magnetometer) with
 a VQF-style filter with gyroscope bias estimation (docs/orientation.md). Reads a CSV whose header
 names the columns t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z (s, rad/s, m/s^2) and writes
-"t,qw,qx,qy,qz", one row per input row: the sensor-to-world rotation, world z up. The heading
+"t,qw,qx,qy,qz,flag", one row per input row: the sensor-to-world rotation, world z up. The heading
 (rotation about the vertical) starts at zero and drifts. dt is taken from the timestamps.
+
+flag: 0 = row used; 1 = row rejected (a value not finite or at or beyond the plausible range,
+or the same time as the row before): the quaternion repeats the last one; 2 = first row after a
+gap in time: the gyroscope was not integrated across the gap and the inclination starts again
+from the accelerometer. Rejected rows and gaps are counted on standard error.
 
 Options:
   --out FILE         write the quaternions here (default: standard output)
   --tau-acc S        accelerometer low-pass time constant, s (default 3)
   --no-rest-bias     no gyroscope bias estimation at rest
   --no-motion-bias   no gyroscope bias estimation during motion
+  --gyr-max DEG/S    plausible gyroscope range per axis, deg/s (default 2000)
+  --acc-max M/S2     plausible accelerometer range per axis, m/s^2 (default 156.9, 16 g)
+  --gap S            a step in time longer than this is a gap, s (default 0.1)
 )";
 
 constexpr std::array<std::string_view, 7> kColumns = {"t",     "gyr_x", "gyr_y", "gyr_z",
                                                       "acc_x", "acc_y", "acc_z"};
 constexpr std::string_view kColumnList = "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z";
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+constexpr std::size_t kListedRows = 5;  // rejected rows and gaps listed by line and time
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
@@ -106,6 +117,7 @@ class ImuCsvParser {
         s.t.reserve(m_text.size() / 64);
         s.gyr.reserve(3 * s.t.capacity());
         s.acc.reserve(3 * s.t.capacity());
+        s.line.reserve(s.t.capacity());
         continue;
       }
       const int n = static_cast<int>(fields.size());
@@ -121,6 +133,7 @@ class ImuCsvParser {
              "time goes backwards: " + shortest(v[0]) + " after " + shortest(s.t.back()));
       }
       s.t.push_back(v[0]);
+      s.line.push_back(lineNo);
       s.gyr.insert(s.gyr.end(), v.begin() + 1, v.begin() + 4);
       s.acc.insert(s.acc.end(), v.begin() + 4, v.end());
     }
@@ -158,6 +171,10 @@ class ImuCsvParser {
     double x = 0.0;
     const auto r = std::from_chars(b, e, x);
     if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
+    // A sensor value that is a number but not a finite double (nan, inf, 1e999): the row is
+    // kept and the filter rejects it, so one bad reading does not cost the whole file.
+    if (k > 0 && r.ptr == e && (r.ec == std::errc() || r.ec == std::errc::result_out_of_range))
+      return std::numeric_limits<double>::quiet_NaN();
     if (r.ptr != e || r.ec == std::errc::invalid_argument) {
       fail(
           lineNo, column,
@@ -191,7 +208,10 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
                {{"--out", true},
                 {"--tau-acc", true},
                 {"--no-rest-bias", false},
-                {"--no-motion-bias", false}});
+                {"--no-motion-bias", false},
+                {"--gyr-max", true},
+                {"--acc-max", true},
+                {"--gap", true}});
   if (a.help()) {
     out << kOrientationHelp;
     return 0;
@@ -202,6 +222,9 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
   params.tauAcc = a.positive("--tau-acc", params.tauAcc);
   params.restBiasEstEnabled = !a.flag("--no-rest-bias");
   params.motionBiasEstEnabled = !a.flag("--no-motion-bias");
+  params.gyrMax = a.positive("--gyr-max", params.gyrMax);
+  params.accMax = a.positive("--acc-max", params.accMax);
+  params.gapSeconds = a.positive("--gap", params.gapSeconds);
   std::optional<fs::path> outPath;
   if (const auto v = a.value("--out")) {
     if (v->empty()) a.fail("--out: missing value");
@@ -226,13 +249,24 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
 
   OrientationFilter filter(params);
   std::vector<double> quat(4 * n);
+  std::vector<OrientationStatus> status(n);
   const auto start = std::chrono::steady_clock::now();
-  filter.updateBatch(s.gyr, s.acc, dt, quat);
+  const std::size_t accepted = filter.updateBatch(s.gyr, s.acc, dt, quat, status);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (accepted == 0) {
+    throw std::runtime_error(input.string() + ": no plausible sample in " + std::to_string(n) +
+                             " rows (every row has a value that is not finite or at or beyond "
+                             "--gyr-max or --acc-max, or repeats the time before it)");
+  }
 
-  CsvOutput writer("t,qw,qx,qy,qz", outPath, &out);
-  for (std::size_t i = 0; i < n; ++i) writer.row(s.t[i], &quat[4 * i], 4);
+  CsvOutput writer("t,qw,qx,qy,qz,flag", outPath, &out);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::array<double, 5> v;
+    std::copy_n(&quat[4 * i], 4, v.begin());
+    v[4] = static_cast<double>(status[i]);
+    writer.row(s.t[i], v.data(), 5);
+  }
   writer.commit();
 
   const OrientationState& st = filter.state();
@@ -245,10 +279,42 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
       << fixed(filter.biasSigma() * kRadToDeg, 3) << ")";
   if (outPath) err << "; wrote " << outPath->string();
   err << "\n";
+
+  // Where: "line L (t = T s)" for the first few rows of a kind.
+  const auto listRows = [&](OrientationStatus kind) {
+    std::string where;
+    std::size_t listed = 0, total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      if (status[i] != kind) continue;
+      if (++total > kListedRows) continue;
+      where += (listed++ ? ", line " : "line ") + std::to_string(s.line[i]) +
+               " (t = " + shortest(s.t[i]) + " s)";
+    }
+    if (total > listed) where += ", ...";
+    return where;
+  };
   if (st.rejected > 0) {
-    err << "orientation: " << st.rejected
-        << " row(s) with the same time as the previous row skipped (their output repeats the "
-           "previous orientation)\n";
+    std::uint64_t nonFinite = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double* g = &s.gyr[3 * i];
+      const double* c = &s.acc[3 * i];
+      if (status[i] == OrientationStatus::Rejected &&
+          !std::isfinite(g[0] + g[1] + g[2] + c[0] + c[1] + c[2]))
+        ++nonFinite;
+    }
+    err << "orientation: " << st.rejected << " row(s) rejected (flag 1; their output repeats the "
+        << "previous orientation): " << st.outOfRange << " at or beyond " << shortest(params.gyrMax)
+        << " deg/s or " << shortest(params.accMax) << " m/s^2 on an axis, " << nonFinite
+        << " not finite, " << st.rejected - st.outOfRange - nonFinite
+        << " with the same time as the previous row; " << listRows(OrientationStatus::Rejected)
+        << "\n";
+  }
+  if (st.gaps > 0) {
+    err << "orientation: " << st.gaps << " gap(s) in time longer than "
+        << shortest(params.gapSeconds) << " s (" << fixed(st.gapTime, 3)
+        << " s in all): the gyroscope is not integrated across a gap, the inclination starts "
+        << "again from the accelerometer at the row after it (flag 2); "
+        << listRows(OrientationStatus::AfterGap) << "\n";
   }
   if (st.noAcc > 0) {
     err << "orientation: " << st.noAcc

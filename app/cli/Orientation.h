@@ -12,14 +12,17 @@ namespace armtrack::cli {
 /// One IMU's samples as read from "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z" (s, rad/s, m/s^2).
 struct ImuSeries {
   std::vector<double> t;    ///< s, never decreasing
-  std::vector<double> gyr;  ///< x,y,z per sample
-  std::vector<double> acc;  ///< x,y,z per sample
+  std::vector<double> gyr;  ///< x,y,z per sample; NaN where the file had no finite number
+  std::vector<double> acc;  ///< x,y,z per sample; NaN where the file had no finite number
+  std::vector<int> line;    ///< line number of each sample in the file (1 = first line)
 };
 
 /// Reads the IMU CSV: a header line naming at least the seven columns (any order; other columns
 /// are ignored), then one row per sample. Blank lines and lines starting with '#' are skipped.
 /// Throws RecordingError ("file:line:column: message") for malformed input: missing columns,
-/// bad or non-finite numbers, wrong field counts, time going backwards.
+/// cells that are not numbers, wrong field counts, a time that is not finite or goes backwards.
+/// A sensor cell holding NaN, infinity or a number beyond the range of double reads as NaN: the
+/// row stays (the filter rejects it and the command reports it).
 ImuSeries readImuCsv(const std::filesystem::path& path);
 
 /// armtrack-cli orientation IMU.csv [--out QUAT.csv] [options]. Throws UsageError for usage

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -95,6 +96,10 @@ OrientationFilter::OrientationFilter(const OrientationParams& params) : m_p(para
   positive(m_p.restFilterTau, "restFilterTau");
   positive(m_p.restThGyr, "restThGyr");
   positive(m_p.restThAcc, "restThAcc");
+  positive(m_p.gyrMax, "gyrMax");
+  positive(m_p.accMax, "accMax");
+  positive(m_p.gapSeconds, "gapSeconds");
+  m_gyrMax = m_p.gyrMax * kDegToRad;
   if (!(m_p.restMinT >= 0.0) || !std::isfinite(m_p.restMinT))
     throw std::invalid_argument("OrientationParams::restMinT must be >= 0");
   if (!(m_p.biasVerticalForgettingFactor >= 0.0))
@@ -136,10 +141,59 @@ void OrientationFilter::setCoefficients(double dt) {
   m_c.biasRestW = pRest * pRest / m_c.biasV + pRest;
 }
 
-bool OrientationFilter::update(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc, double dt) {
-  if (!(dt > 0.0) || !std::isfinite(dt) || !gyr.allFinite() || !acc.allFinite()) [[unlikely]] {
-    ++m_s.rejected;
-    return false;
+bool OrientationFilter::reject(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc, double dt) {
+  ++m_s.rejected;
+  m_s.last = OrientationStatus::Rejected;
+  if (gyr.allFinite() && acc.allFinite()) {
+    if (gyr.cwiseAbs().maxCoeff() >= m_gyrMax || acc.cwiseAbs().maxCoeff() >= m_p.accMax)
+      ++m_s.outOfRange;
+  }
+  // The time of a refused sample still passes: the next accepted sample covers it.
+  if (dt > 0.0 && std::isfinite(dt)) m_s.pendingDt += dt;
+  return false;
+}
+
+// Nothing is known about the motion during a gap: keep the last orientation (its heading is the
+// best there is), but let the inclination start again from the accelerometer as at start-up,
+// and forget every low-passed quantity, since the almost-inertial frame may have turned.
+void OrientationFilter::restartAfterGap(double gap) {
+  ++m_s.gaps;
+  m_s.gapTime += gap;
+  m_s.accLp = {};
+  m_s.rotLp = {};
+  m_s.biasLp = {};
+  m_s.restGyrLp = {};
+  m_s.restAccLp = {};
+  m_s.restTime = 0.0;
+  m_s.rest = false;
+  m_s.biasHold = true;
+  m_s.last = OrientationStatus::AfterGap;
+}
+
+bool OrientationFilter::update(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc,
+                               double dtIn) {
+  // Plausibility at the door. The largest magnitude propagates NaN (Eigen's default maxCoeff
+  // may skip it) and the comparisons are false for NaN, so they also refuse non-finite values
+  // (infinity is at or beyond any limit).
+  if (!(dtIn > 0.0) || !(dtIn < std::numeric_limits<double>::infinity()) ||
+      !(gyr.cwiseAbs().maxCoeff<Eigen::PropagateNaN>() < m_gyrMax) ||
+      !(acc.cwiseAbs().maxCoeff<Eigen::PropagateNaN>() < m_p.accMax)) [[unlikely]] {
+    return reject(gyr, acc, dtIn);
+  }
+  double dt = dtIn;
+  m_s.last = OrientationStatus::Accepted;
+  if (m_s.pendingDt > 0.0) [[unlikely]] {
+    dt += m_s.pendingDt;
+    m_s.pendingDt = 0.0;
+  }
+  if (dt > m_p.gapSeconds) [[unlikely]] {
+    if (m_s.accepted > 0) {
+      restartAfterGap(dt);
+      // The gyroscope reading belongs to the end of the gap: integrate it over one ordinary step.
+      dt = m_c.dt;
+    } else {
+      dt = std::min(dt, m_p.gapSeconds);  // the first sample: nothing to integrate yet
+    }
   }
   if (std::abs(dt - m_c.dt) > kDtTolerance * m_c.dt) [[unlikely]]
     setCoefficients(dt);
@@ -221,8 +275,10 @@ bool OrientationFilter::update(const Eigen::Vector3d& gyr, const Eigen::Vector3d
 // measures R b. R and R b are low-passed like the accelerometer, matching the correction's lag.
 void OrientationFilter::estimateBias(const Eigen::Vector3d& accWorld, double dt) {
   const bool rest = m_p.restBiasEstEnabled && m_s.rest;
-  const bool motion = m_p.motionBiasEstEnabled;
-  if (!m_p.restBiasEstEnabled && !motion) return;
+  if (m_s.biasHold && m_s.accLp.running) m_s.biasHold = false;
+  const bool motionEnabled = m_p.motionBiasEstEnabled;
+  const bool motion = motionEnabled && !m_s.biasHold;
+  if (!m_p.restBiasEstEnabled && !motionEnabled) return;
   Eigen::Vector3d& bias = m_s.bias;
   Eigen::Matrix3d& P = m_s.biasP;
 
@@ -230,17 +286,19 @@ void OrientationFilter::estimateBias(const Eigen::Vector3d& accWorld, double dt)
   for (int i = 0; i < 3; ++i) {
     if (P(i, i) < m_c.biasP0) P(i, i) += m_c.biasV;
   }
-  if (!rest && !motion) return;
 
   Eigen::Matrix3d H;
   Eigen::Vector3d e;
   double w0, w1, w2;
-  if (motion) {
-    // Low-pass even at rest, so the filters are settled when motion starts.
+  if (motionEnabled) {
+    // Low-pass even at rest and while held, so the filters are settled when updates start.
     Eigen::Matrix3d R = orientation().toRotationMatrix();
     const Eigen::Vector3d rb = R * bias;
     lowPass(m_s.rotLp, R.data(), m_c.acc, m_p.tauAcc, dt);
     lowPass(m_s.biasLp, rb.data(), m_c.acc, m_p.tauAcc, dt);
+  }
+  if (!rest && !motion) return;
+  if (motion) {
     H = Eigen::Map<const Eigen::Matrix3d>(m_s.rotLp.y.data());
     const Eigen::Vector3d hb = H * bias;
     e.x() = -accWorld.y() / dt + m_s.biasLp.y[0] - hb.x();
@@ -270,14 +328,17 @@ void OrientationFilter::estimateBias(const Eigen::Vector3d& accWorld, double dt)
 }
 
 std::size_t OrientationFilter::updateBatch(std::span<const double> gyr, std::span<const double> acc,
-                                           std::span<const double> dt, std::span<double> quatOut) {
+                                           std::span<const double> dt, std::span<double> quatOut,
+                                           std::span<OrientationStatus> statusOut) {
   const std::size_t n = dt.size();
-  if (gyr.size() != 3 * n || acc.size() != 3 * n || (!quatOut.empty() && quatOut.size() != 4 * n))
+  if (gyr.size() != 3 * n || acc.size() != 3 * n || (!quatOut.empty() && quatOut.size() != 4 * n) ||
+      (!statusOut.empty() && statusOut.size() != n))
     throw std::invalid_argument("OrientationFilter::updateBatch: sizes do not match");
   std::size_t accepted = 0;
   for (std::size_t i = 0; i < n; ++i) {
     accepted += update(Eigen::Vector3d(gyr[3 * i], gyr[3 * i + 1], gyr[3 * i + 2]),
                        Eigen::Vector3d(acc[3 * i], acc[3 * i + 1], acc[3 * i + 2]), dt[i]);
+    if (!statusOut.empty()) statusOut[i] = m_s.last;
     if (!quatOut.empty()) {
       const Eigen::Quaterniond q = orientation();
       double* o = quatOut.data() + 4 * i;

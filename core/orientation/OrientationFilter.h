@@ -53,6 +53,25 @@ struct OrientationParams {
   /// Rest threshold on the deviation of the accelerometer from its low-passed value (m/s^2).
   /// Default 0.5.
   double restThAcc = 0.5;
+
+  /// Plausibility of the gyroscope, per axis (deg/s): a reading at or beyond it (the usual full
+  /// scale of MEMS gyroscopes, so also a saturated one) is rejected. Default 2000.
+  double gyrMax = 2000.0;
+  /// Plausibility of the accelerometer, per axis (m/s^2): a reading at or beyond it (16 g, the
+  /// usual full scale) is rejected. Default 156.9064 (16 x 9.80665).
+  double accMax = 16.0 * 9.80665;
+  /// A time step without usable samples longer than this is a gap (s): the gyroscope is not
+  /// integrated across it, the inclination starts again from the accelerometer as at start-up and
+  /// the motion bias estimation waits until the accelerometer low-pass has settled again. Must
+  /// exceed the sampling interval (e.g. use 0.5 below 20 Hz). Default 0.1.
+  double gapSeconds = 0.1;
+};
+
+/// What update() did with a sample (also written per sample by updateBatch()).
+enum class OrientationStatus : std::uint8_t {
+  Accepted = 0,  ///< used
+  Rejected = 1,  ///< refused (implausible value or bad dt); the estimate is unchanged
+  AfterGap = 2,  ///< used, first sample after a gap: the inclination starts again from here
 };
 
 /// Coefficients of a second-order IIR low-pass, normalised to a0 = 1.
@@ -92,9 +111,21 @@ struct OrientationState {
   double restTime = 0.0;  ///< s for which the accelerometer rest criterion has held
   bool rest = false;      ///< rest detected
 
+  /// s of refused samples since the last accepted one: added to the next accepted sample's dt,
+  /// so that a run of refused samples longer than gapSeconds is a gap.
+  double pendingDt = 0.0;
+  /// After a gap: no motion bias updates until the accelerometer low-pass has warmed up again,
+  /// so the re-initialisation of the inclination is not taken for a gyroscope bias.
+  bool biasHold = false;
+  OrientationStatus last = OrientationStatus::Accepted;  ///< status of the last sample
+
   std::uint64_t accepted = 0;  ///< samples used
-  std::uint64_t rejected = 0;  ///< samples refused: non-finite values or dt not > 0
-  std::uint64_t noAcc = 0;     ///< accepted samples with acc = (0,0,0): gyroscope only
+  /// Samples refused: non-finite or implausible values (see outOfRange) or dt not > 0.
+  std::uint64_t rejected = 0;
+  std::uint64_t outOfRange = 0;  ///< of those, finite but at or beyond gyrMax or accMax
+  std::uint64_t noAcc = 0;       ///< accepted samples with acc = (0,0,0): gyroscope only
+  std::uint64_t gaps = 0;        ///< gaps (steps longer than gapSeconds) after the first sample
+  double gapTime = 0.0;          ///< s spent in those gaps
 };
 
 /// VQF-style 6D orientation filter. update() does no heap allocation and no I/O.
@@ -104,17 +135,21 @@ class OrientationFilter {
   explicit OrientationFilter(const OrientationParams& params = {});
 
   /// One sample: gyr (rad/s) and acc (m/s^2) in sensor axes, dt (s) since the previous sample.
-  /// Returns false, counts the sample in state().rejected and leaves the state otherwise
-  /// untouched when any value is not finite or dt <= 0. acc = (0,0,0) means "no accelerometer
-  /// sample": the gyroscope is still integrated.
+  /// Returns false and counts the sample in state().rejected when any value is not finite, a
+  /// gyroscope or accelerometer axis is at or beyond gyrMax or accMax, or dt is not > 0; the
+  /// estimate is then untouched, and a valid dt is carried over to the next accepted sample.
+  /// A step (with carried-over time) longer than gapSeconds is a gap, see OrientationParams.
+  /// acc = (0,0,0) means "no accelerometer sample": the gyroscope is still integrated.
   bool update(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc, double dt);
 
   /// update() over n samples. gyr and acc hold x,y,z per sample (3n values), dt one value per
   /// sample, quatOut (if not empty) receives w,x,y,z of orientation() after each sample (4n
-  /// values; a rejected sample repeats the previous orientation). Returns the number of samples
-  /// accepted. Throws std::invalid_argument when the sizes do not match.
+  /// values; a rejected sample repeats the previous orientation), statusOut (if not empty) the
+  /// OrientationStatus of each sample (n values). Returns the number of samples accepted. Throws
+  /// std::invalid_argument when the sizes do not match.
   std::size_t updateBatch(std::span<const double> gyr, std::span<const double> acc,
-                          std::span<const double> dt, std::span<double> quatOut);
+                          std::span<const double> dt, std::span<double> quatOut,
+                          std::span<OrientationStatus> statusOut = {});
 
   /// Sensor-to-world rotation (world z up; heading arbitrary and drifting).
   Eigen::Quaterniond orientation() const { return m_s.accQuat * m_s.gyrQuat; }
@@ -122,6 +157,8 @@ class OrientationFilter {
   /// Upper bound of the bias estimate's standard deviation (rad/s).
   double biasSigma() const;
   bool restDetected() const { return m_s.rest; }
+  /// What the last update() did with its sample.
+  OrientationStatus lastStatus() const { return m_s.last; }
 
   const OrientationParams& params() const { return m_p; }
   const OrientationState& state() const { return m_s; }
@@ -137,9 +174,12 @@ class OrientationFilter {
   };
 
   void setCoefficients(double dt);
+  bool reject(const Eigen::Vector3d& gyr, const Eigen::Vector3d& acc, double dt);
+  void restartAfterGap(double gap);
   void estimateBias(const Eigen::Vector3d& accWorld, double dt);
 
   OrientationParams m_p;
+  double m_gyrMax = 0.0;  // rad/s, from m_p.gyrMax
   Coefficients m_c;
   OrientationState m_s;
 };

@@ -28,8 +28,9 @@ DeviceClock::DeviceClock(const ClockParams& params) : m_p(params) {
   if (!(params.binSeconds > 0.0) || !(params.windowSeconds >= params.binSeconds) ||
       !(params.envelopeGate > 0.0) || !(params.jumpThreshold > 0.0) || !(params.maxDelay > 0.0) ||
       !(params.backwardTolerance >= 0.0) || params.jumpConfirmSamples < 1 ||
-      !(params.stallConfirmSeconds >= 0.0) || !(params.maxDrift >= 0.0) ||
-      !(params.wrapPeriod >= 0.0) || !(params.statsAlpha > 0.0 && params.statsAlpha <= 1.0))
+      !(params.stallConfirmSeconds >= 0.0) || !(params.delaySteadiness > 0.0) ||
+      !(params.maxDrift >= 0.0) || !(params.wrapPeriod >= 0.0) ||
+      !(params.statsAlpha > 0.0 && params.statsAlpha <= 1.0))
     throw std::invalid_argument("DeviceClock: invalid parameters");
   m_maxBins = static_cast<std::size_t>(std::ceil(params.windowSeconds / params.binSeconds));
   m_hull.reserve(m_maxBins + 1);
@@ -87,9 +88,19 @@ ClockUpdate DeviceClock::update(double deviceTime, double arrivalTime) {
     u.status = ClockStatus::Locked;
     if (r > m_p.maxDelay) {
       ++m_s.counters.delayed;
+      if (m_s.delayedRun) {
+        m_s.delayedMin = std::min(m_s.delayedMin, r);
+        m_s.delayedMax = std::max(m_s.delayedMax, r);
+        if (m_s.delayedMax - m_s.delayedMin > m_p.delaySteadiness) {
+          // The delay grows or drains: a backlog, not a clock that fell back. Start again here.
+          ++m_s.counters.unsteady;
+          m_s.delayedRun = false;
+        }
+      }
       if (!m_s.delayedRun) {
         m_s.delayedRun = true;
         m_s.delayedSince = arrivalTime;
+        m_s.delayedMin = m_s.delayedMax = r;
       } else if (arrivalTime - m_s.delayedSince >= m_p.stallConfirmSeconds) {
         // Not a burst after a stall: the clock fell back. Re-lock, keeping the drift.
         ++m_s.counters.jumps;

@@ -45,18 +45,25 @@ struct ClockParams {
   double envelopeGate = 0.002;
   /// Drift prior before the first fit (dimensionless). Default 0.
   double initialDrift = 0.0;
-  /// Largest drift accepted (dimensionless); the fit is clamped to it. Default 2e-3 (2000 ppm).
-  double maxDrift = 2e-3;
+  /// Largest drift accepted (dimensionless); the fit is clamped to it. Quartz oscillators are
+  /// within about +-100 ppm; the limit keeps a fit that arrivals delayed by a flood or a backlog
+  /// could still bend from going beyond what a clock can do. Default 5e-4 (500 ppm).
+  double maxDrift = 5e-4;
   /// A sample that arrives this much earlier than the model allows is a clock jump candidate (s).
   /// Default 0.05.
   double jumpThreshold = 0.05;
   /// Samples delayed by more than this above the envelope count as delayed (s). A stall's backlog
   /// arrives in a burst and is mapped by the model as usual; delayed samples that keep arriving
-  /// for stallConfirmSeconds of host time mean the device clock fell back: it re-locks. Default 1.
+  /// for stallConfirmSeconds of host time with a steady delay mean the device clock fell back:
+  /// it re-locks. Default 1.
   double maxDelay = 1.0;
-  /// Host time over which delayed samples must keep arriving before the clock re-locks (s).
-  /// Default 1.
+  /// Host time over which delayed samples must keep arriving, their delay above the envelope
+  /// staying within delaySteadiness, before the clock re-locks (s). Default 1.
   double stallConfirmSeconds = 1.0;
+  /// Largest spread of the delays of a delayed run that still counts as steady (s). A clock that
+  /// fell back shows one constant extra delay; a backlog (a flood on the port, a reader that fell
+  /// behind) one that grows and drains, which must not move the model. Default 0.05.
+  double delaySteadiness = 0.05;
   /// A device timestamp this much behind the previous one is a clock jump candidate (s); smaller
   /// steps back are accepted and counted. Default 0.01.
   double backwardTolerance = 0.01;
@@ -101,7 +108,8 @@ struct ClockCounters {
   std::uint64_t gaps = 0;               ///< device-time steps longer than gapSeconds
   std::uint64_t backwards = 0;          ///< small steps back in device time (accepted)
   std::uint64_t delayed = 0;            ///< samples delayed by more than maxDelay (accepted)
-  std::uint64_t refits = 0;             ///< model refits (one per closed bin)
+  std::uint64_t unsteady = 0;  ///< delayed runs restarted because the delay changed (backlogs)
+  std::uint64_t refits = 0;    ///< model refits (one per closed bin)
 };
 
 /// Everything DeviceClock carries between samples (plain data; copy it to save/restore). The model
@@ -123,9 +131,11 @@ struct ClockState {
   double candA = 0.0;   ///< provisional delay floor at candT0 (s)
   double candLastT = 0.0;
   int candCount = 0;
-  // A run of delayed samples (above maxDelay).
+  // A run of delayed samples (above maxDelay) with a steady delay.
   bool delayedRun = false;
   double delayedSince = 0.0;  ///< host arrival time of the first of the run (s)
+  double delayedMin = 0.0;    ///< smallest delay above the line in the run (s)
+  double delayedMax = 0.0;    ///< largest delay above the line in the run (s)
 
   // Statistics.
   double dtMean = 0.0;     ///< average device-time step (s), gaps excluded

@@ -1,5 +1,6 @@
 #include "devices/api/Device.h"
 
+#include <algorithm>
 #include <chrono>
 
 namespace armtrack::devices {
@@ -107,6 +108,15 @@ void Device::countCorrupt(int stream, std::uint64_t n) {
   std::lock_guard lock(m_mutex);
   if (stream >= 0 && static_cast<std::size_t>(stream) < m_streams.size())
     m_health.streams[static_cast<std::size_t>(stream)].corrupt += n;
+}
+
+void Device::countReordered(int stream, std::uint64_t n) {
+  std::lock_guard lock(m_mutex);
+  if (stream >= 0 && static_cast<std::size_t>(stream) < m_streams.size()) {
+    StreamHealth& h = m_health.streams[static_cast<std::size_t>(stream)];
+    h.dropped -= std::min(h.dropped, n);
+    h.reordered += n;
+  }
 }
 
 void Device::countReconnect() {

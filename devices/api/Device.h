@@ -47,7 +47,7 @@ const char* toString(StreamRole role);
 
 /// A stream: one clock, one kind of payload.
 struct StreamInfo {
-  std::string name;           ///< e.g. "upper-arm IMU"
+  std::string name;  ///< e.g. "upper-arm IMU"
   StreamRole role = StreamRole::UpperArmImu;
   double nominalRateHz = 0.0;  ///< Hz, 0 when unknown
   double wrapPeriod = 0.0;     ///< s after which the device timestamp wraps; 0 = never
@@ -67,10 +67,15 @@ using SampleBatch = std::vector<DeviceSample>;
 
 /// Health of one stream, counted since start().
 struct StreamHealth {
-  double rateHz = 0.0;          ///< samples per second over the last second
-  std::uint64_t samples = 0;    ///< samples published
-  std::uint64_t dropped = 0;    ///< samples the device says it lost (sequence gaps, dropouts)
-  std::uint64_t corrupt = 0;    ///< packets or frames rejected as malformed
+  double rateHz = 0.0;        ///< samples per second over the last second
+  std::uint64_t samples = 0;  ///< samples published
+  std::uint64_t dropped = 0;  ///< samples the device says it lost (sequence gaps, dropouts)
+  std::uint64_t corrupt = 0;  ///< packets or frames rejected as malformed
+  /// Samples that arrived after a newer one (UDP reorders): not published, since device time
+  /// must not go back, and not counted as dropped either: they were not lost on the link.
+  /// Added in a way that keeps the plugin interface (kDeviceApiVersion 1): a field at the end
+  /// and a non-virtual counting function.
+  std::uint64_t reordered = 0;
 };
 
 struct DeviceHealth {
@@ -121,6 +126,9 @@ class Device : public QObject {
   void reportProblem(const QString& message);
   void countDropped(int stream, std::uint64_t n);
   void countCorrupt(int stream, std::uint64_t n);
+  /// n samples counted as dropped arrived after all, overtaken by newer ones (and were not
+  /// published): moves them from dropped to reordered.
+  void countReordered(int stream, std::uint64_t n);
   void countReconnect();
   void setBattery(std::optional<double> percent);
 

@@ -1,9 +1,9 @@
 #include "devices/lineimu/LineImuDevice.h"
 
 #include <QLoggingCategory>
-#include <QNetworkDatagram>
 #include <QTimer>
 #include <QUdpSocket>
+#include <algorithm>
 #include <cmath>
 
 #include "devices/api/Options.h"
@@ -101,6 +101,8 @@ void LineImuDevice::start() {
   m_parser.reset();
   m_errorsSeen = m_parser.errors().count();
   m_droppedSeen = m_parser.droppedSamples();
+  m_reorderedSeen = m_parser.reorderedSamples();
+  m_duplicatesSeen = m_parser.duplicateSamples();
   if (m_udp)
     openUdp();
   else
@@ -158,7 +160,12 @@ void LineImuDevice::openUdp() {
                   .arg(m_settings.udpPort)
             : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.udpPort).arg(why));
   }
-  qCInfo(lcLineImu) << "listening on UDP port" << m_settings.udpPort;
+  // A larger receive buffer rides out bursts (a flood on the port, a busy host) without losses;
+  // the kernel caps it (net.core.rmem_max on Linux), so the size granted is logged.
+  m_udp->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
+  qCInfo(lcLineImu) << "listening on UDP port" << m_settings.udpPort << "receive buffer"
+                    << m_udp->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt()
+                    << "bytes";
   setState(DeviceState::Connecting,
            QStringLiteral("listening on UDP port %1, waiting for $IMU sentences")
                .arg(m_settings.udpPort));
@@ -173,28 +180,54 @@ void LineImuDevice::onSerialReadyRead() {
   m_parser.feed(std::span(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
                           static_cast<std::size_t>(bytes.size())),
                 m_samples);
-  publishSamples(arrival);
+  m_arrivals.assign(m_samples.size(), arrival);
+  publishSamples();
 }
 
 void LineImuDevice::onUdpReadyRead() {
-  const double arrival = hostNow();
+  // Each datagram is stamped when it is read, and one call reads a bounded number of them: under
+  // a flood the socket never runs dry, and one stamp for a read loop of seconds would put samples
+  // before the time they were sent, which drags the session's clock model. What is left is read
+  // at the next readyRead(): QUdpSocket emits it again once a datagram has been read. The first
+  // read is tried even when nothing seems pending, since only a read re-arms that signal.
   m_samples.clear();
-  while (m_udp->hasPendingDatagrams()) {
-    const QNetworkDatagram datagram = m_udp->receiveDatagram();
-    const QByteArray& bytes = datagram.data();
-    m_parser.feed(std::span(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
-                            static_cast<std::size_t>(bytes.size())),
+  m_arrivals.clear();
+  int reads = 0;
+  do {
+    const qint64 size = m_udp->pendingDatagramSize();
+    if (size > m_datagram.size()) m_datagram.resize(size);
+    const qint64 got = m_udp->readDatagram(m_datagram.data(), m_datagram.size());
+    const double arrival = hostNow();
+    if (got < 0) break;
+    m_parser.feed(std::span(reinterpret_cast<const std::uint8_t*>(m_datagram.constData()),
+                            static_cast<std::size_t>(got)),
                   m_samples);
     m_parser.endOfDatagram();  // a sentence never continues in the next datagram
-  }
-  if (m_running) publishSamples(arrival);
+    m_arrivals.resize(m_samples.size(), arrival);
+  } while (++reads < kMaxDatagramsPerRead && m_udp->hasPendingDatagrams());
+  if (m_running) publishSamples();
 }
 
-void LineImuDevice::publishSamples(double arrival) {
+void LineImuDevice::countLosses() {
   if (const std::uint64_t d = m_parser.droppedSamples(); d != m_droppedSeen) {
     countDropped(0, d - m_droppedSeen);
     m_droppedSeen = d;
   }
+  if (const std::uint64_t r = m_parser.reorderedSamples(); r != m_reorderedSeen) {
+    countReordered(0, r - m_reorderedSeen);
+    m_reorderedSeen = r;
+  }
+  if (const std::uint64_t d = m_parser.duplicateSamples(); d != m_duplicatesSeen) {
+    m_problems->note(d - m_duplicatesSeen,
+                     QStringLiteral("%1: $IMU sentence with a seq seen before (a duplicated or "
+                                    "very late datagram) dropped")
+                         .arg(source()));
+    m_duplicatesSeen = d;
+  }
+}
+
+void LineImuDevice::publishSamples() {
+  countLosses();
   const ParseErrorLog& log = m_parser.errors();
   if (log.count() != m_errorsSeen) {
     const std::uint64_t n = log.count() - m_errorsSeen;
@@ -206,7 +239,8 @@ void LineImuDevice::publishSamples(double arrival) {
 
   SampleBatch batch;
   batch.reserve(m_samples.size());
-  for (const Sample& s : m_samples) {
+  for (std::size_t i = 0; i < m_samples.size(); ++i) {
+    const Sample& s = m_samples[i];
     if (m_lastEpoch && s.epoch != *m_lastEpoch)
       m_problems->note(
           1,
@@ -216,7 +250,7 @@ void LineImuDevice::publishSamples(double arrival) {
     ImuReading r;
     r.gyr = Eigen::Vector3d(s.gyr[0], s.gyr[1], s.gyr[2]);
     r.acc = Eigen::Vector3d(s.acc[0], s.acc[1], s.acc[2]);
-    batch.push_back(DeviceSample{0, s.t, arrival, r});
+    batch.push_back(DeviceSample{0, s.t, m_arrivals[i], r});
   }
   m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
   if (!m_streaming) {

@@ -65,7 +65,8 @@ class LineImuDevice final : public Device {
   void onSilence();
   void linkLost(const QString& reason);
   void fail(const QString& reason);
-  void publishSamples(double arrival);
+  void publishSamples();
+  void countLosses();
   QString source() const;
 
   const LineImuSettings m_settings;
@@ -76,10 +77,17 @@ class LineImuDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
+  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
+  static constexpr int kReceiveBufferBytes = 4 << 20;
+
   LineImuParser m_parser;
-  std::vector<Sample> m_samples;  // reused between reads
+  std::vector<Sample> m_samples;   // reused between reads
+  std::vector<double> m_arrivals;  // arrival time of each of m_samples (s, hostNow())
+  QByteArray m_datagram;           // reused between reads
   std::uint64_t m_errorsSeen = 0;
   std::uint64_t m_droppedSeen = 0;
+  std::uint64_t m_reorderedSeen = 0;
+  std::uint64_t m_duplicatesSeen = 0;
   std::optional<std::uint32_t> m_lastEpoch;
 
   bool m_streaming = false;

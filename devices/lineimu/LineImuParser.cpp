@@ -210,18 +210,28 @@ void LineImuParser::parseBody(std::string_view body, std::vector<Sample>& out) {
     }
     s.seq = *seq;
     s.rawTimeUs = *us;
-    if (m_haveTime) {
-      const std::uint32_t gap = s.seq - m_lastSeq - 1u;
-      if (gap != 0 && gap < 0x80000000u) m_dropped += gap;
+    s.epoch = m_epoch;
+    // The sequence number says whether this sentence is newer than every one before it (the
+    // usual case), overtaken by a newer one on the way (UDP reorders), or seen before.
+    const std::uint32_t ahead = s.seq - m_lastSeq;  // modulo 2^32
+    if (!m_haveTime) {
+      m_seq.restart();  // a new epoch or a reconnect: the counter is followed anew
+      m_seq.add(m_seqUnwrapped);
+      m_timeUs = s.rawTimeUs;
+    } else if (ahead != 0 && ahead < 0x80000000u) {
+      m_seqUnwrapped += ahead;
+      m_seq.add(m_seqUnwrapped);
       m_timeUs += static_cast<std::uint32_t>(s.rawTimeUs - m_lastRawUs);
     } else {
-      m_timeUs = s.rawTimeUs;
+      // Older than the newest sentence: overtaken on the way (counted reordered) or a duplicate.
+      // Either way it is not returned: device time never decreases within an epoch.
+      m_seq.add(m_seqUnwrapped - (m_lastSeq - s.seq));
+      return;
     }
     m_haveTime = true;
     m_lastSeq = s.seq;
     m_lastRawUs = s.rawTimeUs;
     s.deviceTimeUs = m_timeUs;
-    s.epoch = m_epoch;
     s.t = static_cast<double>(m_timeUs) * 1e-6;
     ++m_samples;
     out.push_back(s);

@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/sync/SequenceTracker.h"
 #include "devices/common/ParseErrorLog.h"
 
 namespace armtrack::devices::lineimu {
@@ -55,7 +56,14 @@ class LineImuParser {
 
   const std::optional<Hello>& hello() const { return m_hello; }
   std::uint64_t samples() const { return m_samples; }
-  std::uint64_t droppedSamples() const { return m_dropped; }  ///< gaps in `seq`
+  /// Sentences missing from `seq` when a later one arrived (gaps), whether or not they came later.
+  std::uint64_t droppedSamples() const { return m_seq.missing(); }
+  /// Of those, sentences that arrived after a newer one (UDP reorders), within 64 sentences. They
+  /// are not returned either (device time never decreases within an epoch), but they were not
+  /// lost on the link: droppedSamples() - reorderedSamples() were.
+  std::uint64_t reorderedSamples() const { return m_seq.reordered(); }
+  /// Sentences dropped because their `seq` had arrived before, or came more than 64 late.
+  std::uint64_t duplicateSamples() const { return m_seq.duplicates() + m_seq.tooLate(); }
   std::uint64_t garbageBytes() const { return m_garbageBytes; }
   const ParseErrorLog& errors() const { return m_errors; }
 
@@ -77,8 +85,11 @@ class LineImuParser {
   std::uint32_t m_lastRawUs = 0, m_lastSeq = 0;
   std::uint64_t m_timeUs = 0;
   std::uint32_t m_epoch = 0;
+  // m_lastSeq without its wraps; starts high so that a sentence behind it never goes below 0.
+  std::uint64_t m_seqUnwrapped = std::uint64_t{1} << 40;
+  SequenceTracker m_seq;
 
-  std::uint64_t m_samples = 0, m_dropped = 0, m_garbageBytes = 0;
+  std::uint64_t m_samples = 0, m_garbageBytes = 0;
   ParseErrorLog m_errors;
 };
 

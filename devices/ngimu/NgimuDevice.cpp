@@ -1,9 +1,9 @@
 #include "devices/ngimu/NgimuDevice.h"
 
 #include <QLoggingCategory>
-#include <QNetworkDatagram>
 #include <QTimer>
 #include <QUdpSocket>
+#include <algorithm>
 #include <cmath>
 
 #include "devices/api/Options.h"
@@ -65,6 +65,8 @@ void NgimuDevice::start() {
   m_streaming = false;
   m_everStreamed = false;
   m_errorsSeen = m_parser.errors().count();
+  m_sequence = TimetagSequence{};
+  m_droppedSeen = m_reorderedSeen = m_duplicatesSeen = 0;
   if (!m_socket->bind(QHostAddress::Any, m_settings.port, QAbstractSocket::DontShareAddress)) {
     const QString why = m_socket->errorString();
     return fail(
@@ -74,10 +76,42 @@ void NgimuDevice::start() {
                   .arg(m_settings.port)
             : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.port).arg(why));
   }
-  qCInfo(lcNgimu) << "listening on UDP port" << m_settings.port;
+  // A larger receive buffer rides out bursts without losses; the kernel caps it
+  // (net.core.rmem_max on Linux), so the size granted is logged.
+  m_socket->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
+  qCInfo(lcNgimu) << "listening on UDP port" << m_settings.port << "receive buffer"
+                  << m_socket->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt()
+                  << "bytes";
   setState(DeviceState::Connecting,
            QStringLiteral("listening on UDP port %1, waiting for /sensors").arg(m_settings.port));
   m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+}
+
+bool TimetagSequence::accept(double t) {
+  if (!m_started) {
+    m_started = true;
+    m_last = t;
+    m_tracker.add(m_seq);
+    return true;
+  }
+  const double step = t - m_last;
+  if (step > 0.0) {
+    std::uint64_t k = 1;
+    if (m_period <= 0.0 || step < 0.75 * m_period) {
+      m_period = step;  // the first step, or the rate went up (or the first step spanned a loss)
+    } else {
+      k = static_cast<std::uint64_t>(std::max(1.0, std::round(step / m_period)));
+      if (k == 1) m_period += 0.01 * (step - m_period);
+    }
+    m_seq += k;
+    m_last = t;
+    m_tracker.add(m_seq);
+    return true;
+  }
+  const double back = m_period > 0.0 ? std::round(-step / m_period) : 0.0;
+  if (back >= static_cast<double>(m_seq)) return false;
+  m_tracker.add(m_seq - static_cast<std::uint64_t>(back));
+  return false;  // not published: time never goes back (counted reordered or duplicate)
 }
 
 void NgimuDevice::stop() {
@@ -90,14 +124,24 @@ void NgimuDevice::stop() {
 }
 
 void NgimuDevice::onReadyRead() {
-  const double arrival = hostNow();
+  // Each datagram is stamped when it is read, at most kMaxDatagramsPerRead per call (the rest at
+  // the next readyRead(), which a read re-arms): under a flood one stamp for a long read loop
+  // would put samples before they were sent. The first read is tried even if nothing seems
+  // pending, since only a read re-arms the signal.
   m_samples.clear();
-  while (m_socket->hasPendingDatagrams()) {
-    const QByteArray bytes = m_socket->receiveDatagram().data();
-    m_parser.parseDatagram(std::span(reinterpret_cast<const std::uint8_t*>(bytes.constData()),
-                                     static_cast<std::size_t>(bytes.size())),
+  m_arrivals.clear();
+  int reads = 0;
+  do {
+    const qint64 size = m_socket->pendingDatagramSize();
+    if (size > m_datagram.size()) m_datagram.resize(size);
+    const qint64 got = m_socket->readDatagram(m_datagram.data(), m_datagram.size());
+    const double arrival = hostNow();
+    if (got < 0) break;
+    m_parser.parseDatagram(std::span(reinterpret_cast<const std::uint8_t*>(m_datagram.constData()),
+                                     static_cast<std::size_t>(got)),
                            m_samples);
-  }
+    m_arrivals.resize(m_samples.size(), arrival);
+  } while (++reads < kMaxDatagramsPerRead && m_socket->hasPendingDatagrams());
   if (!m_running) return;
 
   const ParseErrorLog& log = m_parser.errors();
@@ -107,11 +151,38 @@ void NgimuDevice::onReadyRead() {
     countCorrupt(0, n);
     m_problems->note(n, QString::fromStdString(log.last()));
   }
+  // /sensors carries no sequence number: losses and reordering are inferred from the time tags,
+  // which advance by one sample period per message (docs/devices/ngimu.md).
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < m_samples.size(); ++i) {
+    if (m_samples[i].hasTimetag && !m_sequence.accept(m_samples[i].t)) continue;  // counted
+    m_samples[kept] = m_samples[i];
+    m_arrivals[kept] = m_arrivals[i];
+    ++kept;
+  }
+  m_samples.resize(kept);
+  const SequenceTracker& seq = m_sequence.tracker();
+  if (seq.missing() != m_droppedSeen) {
+    countDropped(0, seq.missing() - m_droppedSeen);
+    m_droppedSeen = seq.missing();
+  }
+  if (seq.reordered() != m_reorderedSeen) {
+    countReordered(0, seq.reordered() - m_reorderedSeen);
+    m_reorderedSeen = seq.reordered();
+  }
+  if (const std::uint64_t d = seq.duplicates() + seq.tooLate(); d != m_duplicatesSeen) {
+    m_problems->note(d - m_duplicatesSeen,
+                     QStringLiteral("/sensors with a time tag seen before (a duplicated or very "
+                                    "late datagram) on UDP port %1: dropped")
+                         .arg(m_settings.port));
+    m_duplicatesSeen = d;
+  }
   if (m_samples.empty()) return;
 
   SampleBatch batch;
   batch.reserve(m_samples.size());
-  for (const SensorsSample& s : m_samples) {
+  for (std::size_t i = 0; i < m_samples.size(); ++i) {
+    const SensorsSample& s = m_samples[i];
     if (!s.hasTimetag && !m_toldNoTimetag) {
       m_toldNoTimetag = true;
       m_problems->note(1, QStringLiteral("/sensors messages come without a bundle time tag: their "
@@ -120,7 +191,7 @@ void NgimuDevice::onReadyRead() {
     ImuReading r;
     r.gyr = Eigen::Vector3d(s.gyr[0], s.gyr[1], s.gyr[2]);
     r.acc = Eigen::Vector3d(s.acc[0], s.acc[1], s.acc[2]);
-    batch.push_back(DeviceSample{0, s.hasTimetag ? s.t : arrival, arrival, r});
+    batch.push_back(DeviceSample{0, s.hasTimetag ? s.t : m_arrivals[i], m_arrivals[i], r});
   }
   m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
   if (!m_streaming) {

@@ -2,6 +2,7 @@
 // become IMU samples. See docs/devices/ngimu.md, "Using the plugin".
 #pragma once
 
+#include <QByteArray>
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/sync/SequenceTracker.h"
 #include "devices/api/Device.h"
 #include "devices/api/ProblemLimiter.h"
 #include "devices/ngimu/NgimuParser.h"
@@ -28,6 +30,27 @@ struct NgimuSettings {
 /// Reads `port`, `role` and `timeout`. Empty, with *error saying what to change, when an option is
 /// missing, malformed or unknown. Any thread.
 std::optional<NgimuSettings> readNgimuSettings(const QVariantMap& options, QString* error);
+
+/// Sequence numbers for /sensors messages, which carry none, from their time tags: a message
+/// advances the count by its time step over the sample period (estimated from the steps, which
+/// on the NGIMU's own clock are regular), so a step of three periods means two lost messages and
+/// a time tag behind the newest one a reordered (or duplicated) message. The first steps set the
+/// period; a shorter step later resets it (rate changed). Plain data.
+class TimetagSequence {
+ public:
+  /// Takes a message with time tag t (s). False when it is not to be published: older than the
+  /// newest one (counted reordered, or duplicate when seen before).
+  bool accept(double t);
+  const SequenceTracker& tracker() const { return m_tracker; }
+  double periodSeconds() const { return m_period; }
+
+ private:
+  bool m_started = false;
+  double m_last = 0.0;                           // newest time tag (s)
+  double m_period = 0.0;                         // s, 0 until the first step
+  std::uint64_t m_seq = std::uint64_t{1} << 40;  // of the newest; high, so steps back stay > 0
+  SequenceTracker m_tracker;
+};
 
 /// One NGIMU as one IMU stream. Listens on the UDP port on all addresses; Connecting until the
 /// first "/sensors" message, then Streaming; no sample for `timeoutSeconds` sets Connecting ("no
@@ -57,7 +80,14 @@ class NgimuDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
+  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
+  static constexpr int kReceiveBufferBytes = 4 << 20;
+
   NgimuParser m_parser;
+  std::vector<double> m_arrivals;  // arrival time of each of m_samples (s, hostNow())
+  QByteArray m_datagram;           // reused between reads
+  TimetagSequence m_sequence;
+  std::uint64_t m_droppedSeen = 0, m_reorderedSeen = 0, m_duplicatesSeen = 0;
   std::vector<SensorsSample> m_samples;  // reused between reads
   std::uint64_t m_errorsSeen = 0;
   bool m_streaming = false;

@@ -1,7 +1,6 @@
 #include "devices/skeleton/SkeletonDevice.h"
 
 #include <QLoggingCategory>
-#include <QNetworkDatagram>
 #include <QTimer>
 #include <QUdpSocket>
 #include <cmath>
@@ -105,6 +104,8 @@ void SkeletonDevice::start() {
   m_everStreamed = false;
   m_errorsSeen = m_parser.errors().count();
   m_droppedSeen = m_parser.droppedFrames();
+  m_reorderedSeen = m_parser.reorderedFrames();
+  m_duplicatesSeen = m_parser.duplicateFrames();
   if (!m_socket->bind(QHostAddress::Any, m_settings.port, QAbstractSocket::DontShareAddress)) {
     const QString why = m_socket->errorString();
     return fail(
@@ -114,7 +115,12 @@ void SkeletonDevice::start() {
                   .arg(m_settings.port)
             : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.port).arg(why));
   }
-  qCInfo(lcSkeleton) << "listening on UDP port" << m_settings.port;
+  // A larger receive buffer rides out bursts without losses; the kernel caps it
+  // (net.core.rmem_max on Linux), so the size granted is logged.
+  m_socket->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
+  qCInfo(lcSkeleton)
+      << "listening on UDP port" << m_settings.port << "receive buffer"
+      << m_socket->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt() << "bytes";
   setState(
       DeviceState::Connecting,
       QStringLiteral("listening on UDP port %1, waiting for tracker frames").arg(m_settings.port));
@@ -131,14 +137,22 @@ void SkeletonDevice::stop() {
 }
 
 void SkeletonDevice::onReadyRead() {
-  const double arrival = hostNow();
+  // Each datagram is stamped when it is read, at most kMaxDatagramsPerRead per call (the rest at
+  // the next readyRead(), which a read re-arms): under a flood one stamp for a long read loop
+  // would put frames before they were sent. The first read is tried even if nothing seems
+  // pending, since only a read re-arms the signal.
   SampleBatch batch;
   std::uint64_t unusable = 0;
   QString unusableWhy;
-  while (m_socket->hasPendingDatagrams()) {
-    const QByteArray bytes = m_socket->receiveDatagram().data();
+  int reads = 0;
+  do {
+    const qint64 size = m_socket->pendingDatagramSize();
+    if (size > m_datagram.size()) m_datagram.resize(size);
+    const qint64 got = m_socket->readDatagram(m_datagram.data(), m_datagram.size());
+    const double arrival = hostNow();
+    if (got < 0) break;
     const std::optional<Frame> frame = m_parser.parseDatagram(
-        std::string_view(bytes.constData(), static_cast<std::size_t>(bytes.size())));
+        std::string_view(m_datagram.constData(), static_cast<std::size_t>(got)));
     if (!frame) continue;
     OpticalPositions p;
     if (m_settings.origin == Origin::Shoulder) {
@@ -164,7 +178,7 @@ void SkeletonDevice::onReadyRead() {
       continue;
     }
     batch.push_back(DeviceSample{0, frame->t, arrival, p});
-  }
+  } while (++reads < kMaxDatagramsPerRead && m_socket->hasPendingDatagrams());
   if (!m_running) return;
 
   const ParseErrorLog& log = m_parser.errors();
@@ -177,6 +191,17 @@ void SkeletonDevice::onReadyRead() {
   if (const std::uint64_t d = m_parser.droppedFrames(); d != m_droppedSeen) {
     countDropped(0, d - m_droppedSeen);
     m_droppedSeen = d;
+  }
+  if (const std::uint64_t r = m_parser.reorderedFrames(); r != m_reorderedSeen) {
+    countReordered(0, r - m_reorderedSeen);
+    m_reorderedSeen = r;
+  }
+  if (const std::uint64_t d = m_parser.duplicateFrames(); d != m_duplicatesSeen) {
+    m_problems->note(d - m_duplicatesSeen,
+                     QStringLiteral("a frame number seen before (a duplicated or very late "
+                                    "datagram) on UDP port %1: dropped")
+                         .arg(m_settings.port));
+    m_duplicatesSeen = d;
   }
   if (unusable) m_problems->note(unusable, unusableWhy);
   if (batch.empty()) return;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <QByteArray>
 #include <QString>
 #include <QVariantMap>
 #include <cstdint>
@@ -73,9 +74,15 @@ class SkeletonDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
+  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
+  static constexpr int kReceiveBufferBytes = 4 << 20;
+
   SkeletonParser m_parser;
+  QByteArray m_datagram;  // reused between reads
   std::uint64_t m_errorsSeen = 0;
   std::uint64_t m_droppedSeen = 0;
+  std::uint64_t m_reorderedSeen = 0;
+  std::uint64_t m_duplicatesSeen = 0;
   bool m_streaming = false;
   bool m_everStreamed = false;  // a later Streaming counts as a reconnect
 };

@@ -116,9 +116,25 @@ std::optional<Frame> SkeletonParser::parseDatagram(std::string_view d) {
   if (!f.shoulder && !f.elbow && !f.wrist)
     return fail(0, "no tracked joint (shoulder, elbow or wrist)");
 
-  if (m_lastFrame && f.frame > *m_lastFrame + 1 && f.frame - *m_lastFrame < (1u << 20))
-    m_dropped += f.frame - *m_lastFrame - 1;
-  m_lastFrame = f.frame;
+  // The frame counter tells lost frames (gaps), frames overtaken by newer ones on the way (UDP
+  // reorders: not returned, so that time never goes back, but counted reordered, not lost) and
+  // duplicates (not returned). A jump by 2^20 or more either
+  // way, or back beyond the reorder window, is a restarted tracker: followed anew.
+  if (m_seq.started()) {
+    const std::uint64_t last = m_lastFrame;
+    const bool farAhead = f.frame > last && f.frame - last >= (1u << 20);
+    const bool farBack = f.frame < last && last - f.frame >= SequenceTracker::kWindow;
+    if (farAhead || farBack) m_seq.restart();
+  }
+  switch (m_seq.add(f.frame)) {
+    case SequenceStatus::InOrder:
+      m_lastFrame = f.frame;
+      break;
+    case SequenceStatus::Reordered:  // counted in reorderedFrames(), not an error
+    case SequenceStatus::Duplicate:  // counted in duplicateFrames(), not an error
+    case SequenceStatus::TooLate:
+      return std::nullopt;
+  }
   ++m_frames;
   return f;
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "core/sync/SequenceTracker.h"
 #include "devices/common/ParseErrorLog.h"
 
 namespace armtrack::devices::skeleton {
@@ -40,18 +41,27 @@ std::string encode(const Frame& frame);
 /// Datagram parser: one whole datagram per call. Never throws. Not thread-safe: one owner.
 class SkeletonParser {
  public:
-  /// The frame, or empty when the datagram is invalid (the reason is in errors()).
+  /// The frame, or empty when the datagram is invalid (the reason is in errors()), older than the
+  /// newest frame (counted in reorderedFrames()) or a duplicate (duplicateFrames()).
   std::optional<Frame> parseDatagram(std::string_view datagram);
   std::optional<Frame> parseDatagram(std::span<const std::uint8_t> datagram);
 
   std::uint64_t datagrams() const { return m_datagrams; }
   std::uint64_t frames() const { return m_frames; }
-  std::uint64_t droppedFrames() const { return m_dropped; }  ///< gaps in the frame counter
+  /// Frames missing from the counter when a later one arrived (gaps), whether or not they came
+  /// later; droppedFrames() - reorderedFrames() were lost.
+  std::uint64_t droppedFrames() const { return m_seq.missing(); }
+  /// Frames that arrived after a newer one (UDP reorders): not returned (time never goes back),
+  /// not lost on the link either.
+  std::uint64_t reorderedFrames() const { return m_seq.reordered(); }
+  /// Frames whose number had arrived before: not returned (a duplicated datagram).
+  std::uint64_t duplicateFrames() const { return m_seq.duplicates() + m_seq.tooLate(); }
   const ParseErrorLog& errors() const { return m_errors; }
 
  private:
-  std::uint64_t m_datagrams = 0, m_frames = 0, m_dropped = 0;
-  std::optional<std::uint64_t> m_lastFrame;
+  std::uint64_t m_datagrams = 0, m_frames = 0;
+  std::uint64_t m_lastFrame = 0;  // newest frame number
+  SequenceTracker m_seq;
   ParseErrorLog m_errors;
 };
 

@@ -7,10 +7,12 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/orientation/OrientationFilter.h"
@@ -282,6 +284,188 @@ TEST(OrientationFilter, NonFiniteSamplesAndBadDtAreRejectedWithoutTouchingTheSta
   EXPECT_EQ(after.restTime, before.restTime);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Hostile input: absurd but finite readings, saturation and gaps in time
+
+// A sensor turned about changing axes with a small body acceleration, gyroscope bias and noise;
+// the truth is integrated exactly from the analytic rate.
+struct TurningImu {
+  Eigen::Quaterniond truth{Eigen::AngleAxisd(25.0 * kToRad, Eigen::Vector3d::UnitX())};
+  Eigen::Vector3d bias{0.004, -0.003, 0.002};  // rad/s
+  std::mt19937 rng{13};
+  std::normal_distribution<double> gyrNoise{0.0, 0.004}, accNoise{0.0, 0.04};
+
+  static Eigen::Vector3d rate(double t) {
+    return {0.9 * std::sin(1.1 * t), 0.7 * std::sin(0.6 * t + 1.0), 0.8 * std::cos(0.8 * t)};
+  }
+  // Advances the truth to t + dt and returns the reading at its end (gyr, acc).
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> step(double t, double dt) {
+    const Eigen::Vector3d w = rate(t + dt);
+    truth = rotateBody(truth, w, dt);
+    const Eigen::Vector3d bodyAcc(0.4 * std::sin(2.5 * t), 0.3 * std::cos(1.7 * t), 0.0);
+    const Eigen::Vector3d acc = truth.conjugate() * (Eigen::Vector3d(0.0, 0.0, kG) + bodyAcc);
+    return {w + bias + Eigen::Vector3d(gyrNoise(rng), gyrNoise(rng), gyrNoise(rng)),
+            acc + Eigen::Vector3d(accNoise(rng), accNoise(rng), accNoise(rng))};
+  }
+};
+
+bool finite(const Eigen::Quaterniond& q) {
+  return q.coeffs().allFinite();
+}
+
+TEST(OrientationFilter, AbsurdButFiniteReadingsAreRejectedAndTheFilterKeepsTracking) {
+  const double saturatedGyr = 2000.0 * kToRad;  // the usual full scale, reached
+  const double saturatedAcc = 16.0 * 9.80665;
+  struct Spike {
+    const char* what;
+    Eigen::Vector3d gyr, acc;  // replaces the reading; NaN = keep the true value
+  };
+  const double keep = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Spike> spikes = {
+      {"gyr 1e308", {1e308, 0.0, 0.0}, Eigen::Vector3d::Constant(keep)},
+      {"gyr 1e38", {0.0, -1e38, 0.0}, Eigen::Vector3d::Constant(keep)},
+      {"gyr 1e6", {0.0, 0.0, 1e6}, Eigen::Vector3d::Constant(keep)},
+      {"gyr saturated", {saturatedGyr, 0.1, 0.1}, Eigen::Vector3d::Constant(keep)},
+      {"acc 1e38", Eigen::Vector3d::Constant(keep), {1e38, 0.0, 9.81}},
+      {"acc saturated", Eigen::Vector3d::Constant(keep), {0.0, 0.0, saturatedAcc}},
+  };
+  for (const Spike& spike : spikes) {
+    SCOPED_TRACE(spike.what);
+    TurningImu imu;
+    OrientationFilter f;
+    const double dt = 0.005;
+    double worstAfter = 0.0;
+    bool allFinite = true;
+    for (int k = 0; k < 6000; ++k) {  // 30 s, the spike at 10 s
+      const double t = k * dt;
+      auto [gyr, acc] = imu.step(t, dt);
+      const bool spiked = k == 2000;
+      if (spiked) {
+        for (int j = 0; j < 3; ++j) {
+          if (!std::isnan(spike.gyr(j))) gyr(j) = spike.gyr(j);
+          if (!std::isnan(spike.acc(j))) acc(j) = spike.acc(j);
+        }
+      }
+      EXPECT_EQ(f.update(gyr, acc, dt), !spiked) << "sample " << k;
+      allFinite = allFinite && finite(f.orientation()) && f.bias().allFinite();
+      if (k > 2000) worstAfter = std::max(worstAfter, inclinationError(f.orientation(), imu.truth));
+    }
+    EXPECT_TRUE(allFinite);
+    EXPECT_EQ(f.state().rejected, 1u);
+    EXPECT_LT(worstAfter, 1.0 * kToRad);  // the spike leaves no trace
+    EXPECT_LT((f.bias() - imu.bias).norm(), 0.3 * kToRad);
+  }
+}
+
+TEST(OrientationFilter, NonFiniteValueOnAnyAxisIsRejected) {
+  // Eigen's default maxCoeff() may skip a NaN that is not the first coefficient.
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int axis = 0; axis < 3; ++axis) {
+    for (double bad : {nan, -nan, inf, -inf}) {
+      OrientationFilter f;
+      Eigen::Vector3d gyr = Eigen::Vector3d::Zero(), acc(0.0, 0.0, kG);
+      gyr(axis) = bad;
+      EXPECT_FALSE(f.update(gyr, acc, 0.01)) << "gyr axis " << axis << " " << bad;
+      gyr.setZero();
+      acc(axis) = bad;
+      EXPECT_FALSE(f.update(gyr, acc, 0.01)) << "acc axis " << axis << " " << bad;
+      EXPECT_TRUE(finite(f.orientation()));
+      EXPECT_EQ(f.state().rejected, 2u);
+      EXPECT_EQ(f.state().outOfRange, 0u);
+    }
+  }
+}
+
+TEST(OrientationFilter, PlausibilityLimitsAreCountedAndReadingsJustInsideAreUsed) {
+  OrientationFilter f;
+  const double dt = 0.005;
+  const Eigen::Vector3d g(0.0, 0.0, kG);
+  EXPECT_TRUE(f.update({1999.0 * kToRad, 0.0, 0.0}, g, dt));
+  EXPECT_TRUE(f.update({0.0, 0.0, 0.0}, {0.0, -15.9 * 9.80665, 0.0}, dt));
+  EXPECT_FALSE(f.update({0.0, -2000.0 * kToRad, 0.0}, g, dt));
+  EXPECT_EQ(f.lastStatus(), OrientationStatus::Rejected);
+  EXPECT_FALSE(f.update({0.0, 0.0, 0.0}, {0.0, 0.0, 1e6}, dt));
+  EXPECT_FALSE(f.update({std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0}, g, dt));
+  EXPECT_EQ(f.state().rejected, 3u);
+  EXPECT_EQ(f.state().outOfRange, 2u);
+  EXPECT_TRUE(f.update({0.0, 0.0, 0.0}, g, dt));
+  EXPECT_EQ(f.lastStatus(), OrientationStatus::Accepted);
+  // The three refused samples' time is carried over: 4 x 5 ms is not yet a gap.
+  EXPECT_EQ(f.state().gaps, 0u);
+
+  OrientationParams p;
+  p.gyrMax = 500.0;
+  OrientationFilter narrow(p);
+  EXPECT_FALSE(narrow.update({0.0, 0.0, 600.0 * kToRad}, g, dt));
+  p.gapSeconds = 0.0;
+  EXPECT_THROW(OrientationFilter{p}, std::invalid_argument);
+}
+
+// The sensor keeps turning through a 5 s gap in the samples (as when a wireless link drops).
+// Returns the worst inclination error (deg) from `settle` s after the gap on.
+struct GapRun {
+  double worstAfterSettleDeg = 0.0;
+  double errorJustAfterDeg = 0.0;  // 0.1 s after the gap
+  bool allFinite = true;
+  Eigen::Vector3d biasError = Eigen::Vector3d::Zero();  // rad/s, at the end
+  std::uint64_t gaps = 0;
+};
+
+GapRun runWithGap(double gapStart, double gapLength, double settle, double end) {
+  TurningImu imu;
+  OrientationFilter f;
+  const double dt = 0.005;
+  GapRun r;
+  double tPrev = 0.0;
+  for (int k = 1; k * dt <= end; ++k) {
+    const double t = k * dt;
+    const auto [gyr, acc] = imu.step(t - dt, dt);
+    if (t > gapStart && t <= gapStart + gapLength) continue;  // nothing arrives
+    EXPECT_TRUE(f.update(gyr, acc, t - tPrev));
+    tPrev = t;
+    r.allFinite = r.allFinite && finite(f.orientation()) && f.bias().allFinite();
+    const double e = inclinationError(f.orientation(), imu.truth) / kToRad;
+    if (t > gapStart + gapLength + settle)
+      r.worstAfterSettleDeg = std::max(r.worstAfterSettleDeg, e);
+    if (std::abs(t - (gapStart + gapLength + 0.1)) < 0.5 * dt) r.errorJustAfterDeg = e;
+  }
+  r.biasError = f.bias() - imu.bias;
+  r.gaps = f.state().gaps;
+  return r;
+}
+
+TEST(OrientationFilter, FiveSecondGapWhileTurningRecoversWithinTwoSeconds) {
+  const GapRun r = runWithGap(20.0, 5.0, 2.0, 40.0);
+  std::printf(
+      "5 s gap while turning: inclination error 0.1 s after the gap %.2f deg, worst from 2 s "
+      "after %.3f deg; bias error at the end %.3f deg/s\n",
+      r.errorJustAfterDeg, r.worstAfterSettleDeg, r.biasError.norm() / kToRad);
+  EXPECT_TRUE(r.allFinite);
+  EXPECT_LT(r.worstAfterSettleDeg, 2.0);
+  // The gap must not be taken for a gyroscope bias.
+  EXPECT_LT(r.biasError.norm(), 0.3 * kToRad);
+}
+
+TEST(OrientationFilter, GapsAreCountedAndMarkedAndShortStepsAreNotGaps) {
+  const GapRun r = runWithGap(20.0, 5.0, 2.0, 30.0);
+  EXPECT_EQ(r.gaps, 1u);
+  OrientationFilter f;
+  const Eigen::Vector3d g(0.0, 0.0, kG);
+  for (int k = 0; k < 100; ++k) ASSERT_TRUE(f.update({0.0, 0.0, 0.0}, g, 0.01));
+  ASSERT_TRUE(f.update({0.0, 0.0, 0.0}, g, 0.09));  // a late sample, not a gap
+  EXPECT_EQ(f.lastStatus(), OrientationStatus::Accepted);
+  ASSERT_TRUE(f.update({0.0, 0.0, 0.0}, g, 0.5));
+  EXPECT_EQ(f.lastStatus(), OrientationStatus::AfterGap);
+  EXPECT_EQ(f.state().gaps, 1u);
+  EXPECT_DOUBLE_EQ(f.state().gapTime, 0.5);
+  // 30 refused samples of 10 ms in a row are a gap too.
+  for (int k = 0; k < 30; ++k) ASSERT_FALSE(f.update({1e6, 0.0, 0.0}, g, 0.01));
+  ASSERT_TRUE(f.update({0.0, 0.0, 0.0}, g, 0.01));
+  EXPECT_EQ(f.lastStatus(), OrientationStatus::AfterGap);
+  EXPECT_EQ(f.state().gaps, 2u);
+}
+
 TEST(OrientationFilter, BatchMatchesSampleBySample) {
   const int n = 1000;
   std::vector<double> gyr(3 * n), acc(3 * n), dt(n), out(4 * n);
@@ -296,7 +480,10 @@ TEST(OrientationFilter, BatchMatchesSampleBySample) {
   }
   gyr[3 * 500] = std::numeric_limits<double>::quiet_NaN();
   OrientationFilter batch, single;
-  EXPECT_EQ(batch.updateBatch(gyr, acc, dt, out), std::size_t(n - 1));
+  std::vector<OrientationStatus> status(n);
+  EXPECT_EQ(batch.updateBatch(gyr, acc, dt, out, status), std::size_t(n - 1));
+  EXPECT_EQ(status[500], OrientationStatus::Rejected);
+  EXPECT_EQ(status[501], OrientationStatus::Accepted);
   for (int i = 0; i < n; ++i) {
     single.update({gyr[3 * i], gyr[3 * i + 1], gyr[3 * i + 2]},
                   {acc[3 * i], acc[3 * i + 1], acc[3 * i + 2]}, dt[i]);

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <limits>
 #include <random>
 #include <vector>
 
 #include "core/sync/ArmSampleAssembler.h"
+#include "core/sync/SequenceTracker.h"
 #include "core/sync/TimeSync.h"
 
 namespace armtrack {
@@ -268,6 +270,99 @@ TEST(TimeSyncClock, DropoutKeepsTheModel) {
   EXPECT_NEAR(clock.drift(), d.drift, 5 * kPpm);
 }
 
+// A flood on a device's UDP port from host time 20 s to 25 s: its reader falls behind, so its
+// samples wait in the socket buffer and arrive late by a backlog that grows by 0.4 s per second
+// (up to 2 s), then drains in 1 s once the flood stops; arrivals stay first-in first-out. The
+// clock must not take the growing delay for drift, and must map the samples correctly again soon
+// after the flood, so they are not released late for the rest of the run.
+std::vector<SimSample> floodedStream(const SimDevice& d, double hostEnd, std::uint32_t seed) {
+  auto samples = simulate(d, 0, 0.0, hostEnd, seed);
+  double prev = 0.0;
+  for (auto& s : samples) {
+    const double x = s.trueHost;
+    double backlog = 0.0;
+    if (x >= 20.0 && x < 25.0) backlog = 0.4 * (x - 20.0);
+    if (x >= 25.0) backlog = std::max(0.0, 2.0 - 2.0 * (x - 25.0));
+    s.arrival = std::max(prev, s.arrival + backlog);
+    prev = s.arrival;
+  }
+  return samples;
+}
+
+TEST(TimeSyncClock, FloodBacklogDoesNotDragTheDriftAndTheModelRecovers) {
+  SimDevice d;
+  d.rateHz = 500.0;
+  d.offset = 7.0;
+  d.drift = 40 * kPpm;
+  const auto samples = floodedStream(d, 60.0, 21);
+  DeviceClock clock;
+  double worstDrift = 0.0, worstAfter = 0.0;
+  for (const auto& s : samples) {
+    const ClockUpdate u = clock.update(s.deviceTime, s.arrival);
+    worstDrift = std::max(worstDrift, std::abs(clock.drift() - d.drift));
+    if (s.trueHost >= 28.0)
+      worstAfter = std::max(worstAfter, std::abs(u.hostTime - (s.trueHost + d.floor)));
+  }
+  std::printf(
+      "flood backlog: worst drift error %.0f ppm, drift at the end %.1f ppm (true %.0f), "
+      "worst mapping error from 3 s after the flood %.3f ms, jumps %llu\n",
+      worstDrift / kPpm, clock.drift() / kPpm, d.drift / kPpm, worstAfter * 1e3,
+      static_cast<unsigned long long>(clock.counters().jumps));
+  EXPECT_LT(worstDrift, 300 * kPpm);
+  EXPECT_LT(worstAfter, 1e-3);
+  EXPECT_NEAR(clock.drift(), d.drift, 5 * kPpm);
+}
+
+TEST(TimeSyncClock, AClockThatFellBackStillRelocks) {
+  // The device sleeps for 3 s with its clock stopped: afterwards every sample is 3 s later than
+  // the model expects, steadily. That is a clock that fell back, not a backlog: it re-locks.
+  SimDevice d;
+  d.rateHz = 500.0;
+  d.offset = 2.0;
+  auto samples = simulate(d, 0, 0.0, 30.0, 24, {{10.0, 13.0}});
+  for (auto& s : samples)
+    if (s.trueHost >= 13.0) s.deviceTime -= 3.0;
+  DeviceClock clock;
+  double worst = 0.0;
+  for (const auto& s : samples) {
+    const ClockUpdate u = clock.update(s.deviceTime, s.arrival);
+    if (s.trueHost >= 15.0) worst = std::max(worst, std::abs(u.hostTime - (s.trueHost + d.floor)));
+  }
+  EXPECT_EQ(clock.counters().jumps, 1u);
+  EXPECT_LT(worst, 1e-3);
+}
+
+TEST(TimeSyncMerger, AfterAFloodTheFloodedDeviceIsNotReleasedLate) {
+  SimDevice calm, flooded;
+  calm.rateHz = 500.0;
+  calm.offset = 3.0;
+  calm.drift = -30 * kPpm;
+  flooded.rateHz = 500.0;
+  flooded.offset = 7.0;
+  flooded.drift = 40 * kPpm;
+  auto a = simulate(calm, 0, 0.0, 60.0, 22);
+  auto b = floodedStream(flooded, 60.0, 23);
+  for (auto& s : b) s.device = 1;
+  TimeSync<std::uint64_t> sync({}, {ClockParams{}, ClockParams{}});
+  std::uint64_t lateAfter = 0, releasedAfter = 0;
+  auto sink = [&](const SyncEvent<std::uint64_t>& e) {
+    if (e.device == 1 && e.arrivalTime >= 28.0) {
+      ++releasedAfter;
+      lateAfter += e.late;
+    }
+  };
+  for (const auto& s : byArrival({a, b})) {
+    sync.poll(s.arrival, sink);
+    sync.push(s.device, s.deviceTime, s.arrival, s.seq, sink);
+  }
+  sync.flush(sink);
+  std::printf("after the flood: %llu of %llu samples of the flooded device released late\n",
+              static_cast<unsigned long long>(lateAfter),
+              static_cast<unsigned long long>(releasedAfter));
+  EXPECT_GT(releasedAfter, 15000u);
+  EXPECT_LT(lateAfter, releasedAfter / 100);
+}
+
 TEST(TimeSyncClock, NonFiniteTimestampsAreRejected) {
   DeviceClock clock;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -506,6 +601,29 @@ TEST(TimeSyncMerger, RebootDropoutAndNonFiniteInputs) {
 
 // ---------------------------------------------------------------------------------------------
 // Rows for the estimator
+
+TEST(SequenceTracker, CountsLossesReorderingAndDuplicates) {
+  SequenceTracker t;
+  using S = SequenceStatus;
+  EXPECT_EQ(t.add(100), S::InOrder);
+  EXPECT_EQ(t.add(101), S::InOrder);
+  EXPECT_EQ(t.add(104), S::InOrder);  // 102 and 103 missing
+  EXPECT_EQ(t.missing(), 2u);
+  EXPECT_EQ(t.add(103), S::Reordered);
+  EXPECT_EQ(t.add(103), S::Duplicate);
+  EXPECT_EQ(t.add(101), S::Duplicate);
+  EXPECT_EQ(t.lost(), 1u);                  // 102
+  EXPECT_EQ(t.add(104 + 200), S::InOrder);  // a long gap: 199 missing
+  EXPECT_EQ(t.add(102), S::TooLate);        // long after it was counted lost
+  EXPECT_EQ(t.missing(), 201u);
+  EXPECT_EQ(t.reordered(), 1u);
+  EXPECT_EQ(t.duplicates(), 2u);
+  EXPECT_EQ(t.tooLate(), 1u);
+  EXPECT_EQ(t.add(304 - 63), S::Reordered);  // the oldest still in the window
+  t.restart();
+  EXPECT_EQ(t.add(5), S::InOrder);  // a restarted counter is not a step back
+  EXPECT_EQ(t.missing(), 201u);
+}
 
 TEST(TimeSyncAssembler, MergesCloseEventsIntoRows) {
   ArmSampleAssembler rows({ArmSlot::UpperArmImu, ArmSlot::ForearmImu, ArmSlot::Optical});

@@ -1,9 +1,12 @@
 // The "line-imu" plugin against a fake device at the byte level: a pseudo-terminal for the serial
 // transport, loopback datagrams for UDP. Sentences are built here (checksum computed here, values
 // formatted from known numbers) and every published sample is compared with what was sent.
+#include <arpa/inet.h>
 #include <fcntl.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
 #include <pty.h>
+#include <sys/socket.h>
 #include <termios.h>
 #include <unistd.h>
 
@@ -13,11 +16,15 @@
 #include <QTest>
 #include <QThread>
 #include <QUdpSocket>
+#include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "devices/api/Device.h"
@@ -356,6 +363,35 @@ TEST_F(LineImuDevice, UdpDatagramsGarbageAndSilence) {
   EXPECT_EQ(h.device->health().reconnects, 1u);
 }
 
+TEST_F(LineImuDevice, UdpOutOfOrderDatagramsAreCountedReorderedNotDropped) {
+  const std::uint16_t port = freeUdpPort();
+  Harness h(
+      create({{QStringLiteral("udp"), port}, {QStringLiteral("role"), QStringLiteral("upper")}}));
+  ASSERT_TRUE(h.waitState(DeviceState::Connecting));
+  QUdpSocket tx;
+  // 0 1 3 2 5 4 4 7: two overtaken (2, 4), one duplicate (4), one really lost (6). Overtaken
+  // sentences are not published (device time never goes back) but are not counted as dropped.
+  const std::vector<std::uint32_t> order = {0, 1, 3, 2, 5, 4, 4, 7};
+  for (std::uint32_t k : order) {
+    const std::string d = imuSentence(imu(k, 20000u * k));
+    ASSERT_EQ(
+        tx.writeDatagram(d.data(), static_cast<qint64>(d.size()), QHostAddress::LocalHost, port),
+        static_cast<qint64>(d.size()));
+    QTest::qWait(2);  // keep the order on the wire
+  }
+  ASSERT_TRUE(h.waitSamples(5));
+  QTest::qWait(50);
+  ASSERT_EQ(h.samples.size(), 5u);
+  const std::vector<std::uint32_t> published = {0, 1, 3, 5, 7};
+  for (std::size_t i = 0; i < published.size(); ++i)
+    expectSample(h.samples[i], imu(published[i], 20000u * published[i]), 0.02 * published[i]);
+  const StreamHealth s = h.device->health().streams[0];
+  EXPECT_EQ(s.dropped, 1u);  // seq 6 only
+  EXPECT_EQ(s.reordered, 2u);
+  EXPECT_EQ(s.samples + s.dropped + s.reordered, 8u);  // every distinct seq 0-7 accounted for
+  EXPECT_FALSE(h.problems.isEmpty());                  // the duplicate is reported
+}
+
 TEST_F(LineImuDevice, UdpPortInUseIsAnErrorTheUserMustFix) {
   QUdpSocket other;
   ASSERT_TRUE(other.bind(QHostAddress::Any, 0));
@@ -383,4 +419,88 @@ TEST_F(LineImuDevice, ARestartedDeviceIsReported) {
   EXPECT_TRUE(h.problems[0].contains(QStringLiteral("esp32 restarted")))
       << h.problems[0].toStdString();
   EXPECT_EQ(h.device->health().streams[0].corrupt, 0u);
+}
+
+// ---------------------------------------------------------------------------------------------
+// A flood on the port: good $IMU datagrams at 500 Hz, for 2 s buried under as many junk datagrams
+// as one sender thread can push to 127.0.0.1 (about 100k per second), then 1 s of good ones
+// alone. Every good datagram must be either published or counted as dropped, and no sample may
+// be stamped as arriving before it was sent.
+
+namespace {
+
+struct FloodResult {
+  std::uint32_t goodSent = 0;
+  std::uint64_t junkSent = 0;
+  std::vector<double> sentAt;  // hostNow() just before each good datagram was sent
+};
+
+// Sends to 127.0.0.1:port from this thread; returns when done (about 3.5 s).
+FloodResult floodUdp(std::uint16_t port, const std::function<std::string(std::uint32_t)>& good) {
+  FloodResult r;
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  EXPECT_GE(fd, 0);
+  sockaddr_in to{};
+  to.sin_family = AF_INET;
+  to.sin_port = htons(port);
+  to.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  const auto send = [&](const std::string& d) {
+    return ::sendto(fd, d.data(), d.size(), 0, reinterpret_cast<const sockaddr*>(&to), sizeof to) ==
+           static_cast<ssize_t>(d.size());
+  };
+  const std::string junk(120, 'x');  // no '$': one corrupt datagram each
+  const double start = hostNow(), period = 0.002;
+  const double floodFrom = 0.5, floodTo = 2.5, end = 3.5;
+  for (;;) {
+    const double now = hostNow() - start;
+    if (now >= end) break;
+    if (now >= r.goodSent * period) {
+      r.sentAt.push_back(hostNow());
+      EXPECT_TRUE(send(good(r.goodSent)));
+      ++r.goodSent;
+    } else if (now >= floodFrom && now < floodTo) {
+      r.junkSent += send(junk);
+    } else {
+      ::usleep(200);
+    }
+  }
+  ::close(fd);
+  return r;
+}
+
+}  // namespace
+
+TEST_F(LineImuDevice, UdpFloodLosesNoGoodSampleUncountedAndStampsArrivalsHonestly) {
+  const std::uint16_t port = freeUdpPort();
+  Harness h(
+      create({{QStringLiteral("udp"), port}, {QStringLiteral("role"), QStringLiteral("upper")}}));
+  ASSERT_TRUE(h.waitState(DeviceState::Connecting));
+  FloodResult flood;
+  std::atomic<bool> done{false};
+  std::thread sender([&] {
+    flood = floodUdp(port, [](std::uint32_t k) { return imuSentence(imu(k, 2000u * k)); });
+    done = true;
+  });
+  // The device's samples are delivered to this thread while it waits.
+  EXPECT_TRUE(QTest::qWaitFor([&] { return done.load(); }, 10000));
+  sender.join();
+  const auto accounted = [&] { return h.samples.size() + h.device->health().streams[0].dropped; };
+  EXPECT_TRUE(QTest::qWaitFor([&] { return accounted() >= flood.goodSent; }, 3000));
+  h.stop();
+  const StreamHealth s = h.device->health().streams[0];
+  std::printf(
+      "line-imu flood: %u good and %llu junk datagrams sent; %zu published, %llu counted "
+      "dropped (%.1f %%), %llu corrupt\n",
+      flood.goodSent, static_cast<unsigned long long>(flood.junkSent), h.samples.size(),
+      static_cast<unsigned long long>(s.dropped), 100.0 * s.dropped / flood.goodSent,
+      static_cast<unsigned long long>(s.corrupt));
+  EXPECT_GT(flood.junkSent, 10000u);
+  EXPECT_EQ(h.samples.size() + s.dropped, flood.goodSent);
+  // Arrival stamps: never before the datagram was sent.
+  std::size_t early = 0;
+  for (const DeviceSample& d : h.samples) {
+    const auto k = static_cast<std::size_t>(std::lround(d.deviceTime / 0.002));
+    if (k < flood.sentAt.size() && d.arrivalTime < flood.sentAt[k]) ++early;
+  }
+  EXPECT_EQ(early, 0u);
 }

@@ -240,3 +240,24 @@ TEST_F(NgimuDevice, PortInUseIsAnError) {
   h.stop();
   EXPECT_EQ(h.state(), DeviceState::Disconnected);
 }
+
+TEST_F(NgimuDevice, LossesAndReorderingAreCountedFromTheTimeTags) {
+  // /sensors has no sequence number: a time tag three periods after the last means two lost
+  // messages, one behind the newest a reordered message (not published, time never goes back,
+  // but not lost either), one seen before a duplicate.
+  auto h = start();
+  ASSERT_TRUE(h);
+  for (int k : {0, 1, 2, 4, 3, 5, 5, 8, 9}) {
+    send(sensorsBundle(k));
+    QTest::qWait(2);  // keep the order on the wire
+  }
+  ASSERT_TRUE(h->waitSamples(7));
+  QTest::qWait(50);
+  ASSERT_EQ(h->samples.size(), 7u);
+  const std::vector<int> published = {0, 1, 2, 4, 5, 8, 9};
+  for (std::size_t i = 0; i < published.size(); ++i) expectSample(h->samples[i], published[i]);
+  const StreamHealth s = h->device->health().streams[0];
+  EXPECT_EQ(s.dropped, 2u);  // 6 and 7
+  EXPECT_EQ(s.reordered, 1u);
+  EXPECT_FALSE(h->problems.isEmpty());  // the duplicate is reported
+}

@@ -44,6 +44,34 @@ TEST(SkeletonParser, RoundTripAndMissingJoints) {
   EXPECT_EQ(p.errors().count(), 0u);
 }
 
+TEST(SkeletonParser, OutOfOrderFramesAreReorderedNotDropped) {
+  SkeletonParser p;
+  const auto frame = [&](std::uint64_t n) {
+    Frame f;
+    f.t = 0.01 * static_cast<double>(n);
+    f.frame = n;
+    f.wrist = Joint{{0.1, 0.2, 0.3}, std::nullopt};
+    return p.parseDatagram(encode(f));
+  };
+  // 10 11 13 12 15 14 14 17: two overtaken (12, 14), one duplicate (14), one lost (16). The
+  // overtaken ones are not returned (time never goes back) but are not counted as dropped.
+  for (std::uint64_t n : {10, 11, 13}) ASSERT_TRUE(frame(n));
+  EXPECT_FALSE(frame(12));
+  ASSERT_TRUE(frame(15));
+  EXPECT_FALSE(frame(14));
+  EXPECT_FALSE(frame(14));  // a duplicate
+  ASSERT_TRUE(frame(17));
+  EXPECT_EQ(p.droppedFrames() - p.reorderedFrames(), 1u);
+  EXPECT_EQ(p.reorderedFrames(), 2u);
+  EXPECT_EQ(p.duplicateFrames(), 1u);
+  EXPECT_EQ(p.errors().count(), 0u);
+  // A restarted tracker (frame 0 again, far behind) is followed anew, not counted.
+  for (std::uint64_t n = 18; n < 200; ++n) ASSERT_TRUE(frame(n));
+  ASSERT_TRUE(frame(0));
+  ASSERT_TRUE(frame(1));
+  EXPECT_EQ(p.droppedFrames() - p.reorderedFrames(), 1u);
+}
+
 TEST(SkeletonParser, MalformedDatagramsAreErrors) {
   const std::string bad[] = {
       "",
