@@ -4,12 +4,14 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "core/Strings.h"
 #include "core/camera/PinholeCamera.h"
 #include "core/estimation/Initializer.h"
+#include "core/estimation/WindowFit.h"
 
 namespace armtrack {
 
@@ -210,9 +212,18 @@ class ArmFilter final : public JointEstimator {
   using Gain = Eigen::Matrix<double, N, Eigen::Dynamic, 0, N, kMaxRows>;
   static constexpr bool kAugmented = N > kBase;
 
-  explicit ArmFilter(const EstimatorParams& p) : m_p(mirrored(p)), m_up(m_p.gUp.normalized()) {
+  explicit ArmFilter(const EstimatorParams& p)
+      : m_p(mirrored(p)), m_up(m_p.gUp.normalized()), m_gate(gateLimits(m_p)) {
     if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);  // throws on a bad camera
     reset();
+  }
+
+  static PlausibilityLimits gateLimits(const EstimatorParams& p) {
+    PlausibilityLimits l = p.plausibility;
+    l.maxReach = std::min(
+        l.maxReach,
+        PlausibilityLimits::forGeometry(p.geometry.l3, p.geometry.l6).maxReach);
+    return l;
   }
 
   // Everything below works on a right arm: a left arm's gravity direction is mirrored once here,
@@ -231,6 +242,13 @@ class ArmFilter final : public JointEstimator {
     m_lastOpticalT = -std::numeric_limits<double>::infinity();
     m_pendingOptical.reset();
     m_gatedInARow = {0, 0, 0, 0};
+    m_gate.reset();
+    m_matchedQ.setZero();
+    m_recent.clear();
+    m_recentStates.clear();
+    m_badSince.reset();
+    m_opticalDisagrees = false;
+    m_fitAt.reset();
     m_counters = {};
   }
 
@@ -268,9 +286,20 @@ class ArmFilter final : public JointEstimator {
     ArmSample clean = sanitise(m_p.side == Side::Left ? mirrorSample(s) : s);
     const bool hasImu = clean.upperArm || clean.forearm;
     const bool hasOptical = clean.elbow || clean.wrist || clean.camWrist || clean.camElbow;
-    if (!hasImu && !hasOptical) return UpdateResult::Rejected;
+    if (!hasImu && !hasOptical) {
+      // Readings refused at the door: coast through a short stretch, so the row still gets an
+      // estimate (its standard deviation grows with the prediction).
+      if (m_initialised && m_gate.lastRefused() && s.t - m_lastDataT <= m_p.maxCoastSeconds) {
+        predict(s.t - m_t);
+        m_t = s.t;
+        finishUpdate();
+        ++m_counters.coasted;
+        return UpdateResult::Predicted;
+      }
+      return UpdateResult::Rejected;
+    }
 
-    if (m_initialised && s.t - m_t > m_p.maxGap) {
+    if (m_initialised && s.t - m_lastDataT > m_p.maxGap) {
       ++m_counters.restarts;
       m_initialised = false;
     }
@@ -280,6 +309,7 @@ class ArmFilter final : public JointEstimator {
         return UpdateResult::Waiting;
       }
       initialise(clean);
+      remember(clean);
       return UpdateResult::Initialised;
     }
 
@@ -329,6 +359,9 @@ class ArmFilter final : public JointEstimator {
       m_x = xBefore;
       m_P = pBefore;
       ++m_counters.skippedUpdates;
+      // Updates that keep failing are a lost filter too, not something to skip for ever.
+      if (!m_badSince) m_badSince = s.t;
+      if (s.t - *m_badSince >= m_p.lostAfterSeconds) return recover(clean);
       return UpdateResult::Rejected;
     }
     if (fuseOptical) {
@@ -340,40 +373,31 @@ class ArmFilter final : public JointEstimator {
           ++m_counters.opticalUpdates;
       }
     }
+    m_lastDataT = s.t;
     afterUpdate(fuseOptical);
+    matchProcessNoise(xBefore, s.t - tPrior);
     finishUpdate();
+    remember(clean);
+    if (m_fitAt && m_t >= *m_fitAt) {
+      m_fitAt.reset();
+      if (refitFromWindow(m_t0)) return UpdateResult::Recovered;
+    }
+    if (lost()) return recover(clean);
     return UpdateResult::Accepted;
   }
 
  private:
-  // Drops (and counts) every sensor block that carries NaN or inf.
+  // The blocks this filter uses, each checked at the door: implausible ones are dropped and
+  // counted (SampleGate), so no reading a sensor cannot produce reaches the update.
   ArmSample sanitise(const ArmSample& s) {
-    ArmSample c;
-    c.t = s.t;
-    auto imuOk = [&](const std::optional<ImuReading>& r) {
-      if (!r) return false;
-      if (r->gyr.allFinite() && r->acc.allFinite()) return true;
-      ++m_counters.rejectedNonFinite;
-      return false;
-    };
-    auto posOk = [&](const std::optional<Eigen::Vector3d>& p) {
-      if (!p || !m_p.useOptical) return false;
-      if (p->allFinite()) return true;
-      ++m_counters.rejectedNonFinite;
-      return false;
-    };
-    if (imuOk(s.upperArm)) c.upperArm = s.upperArm;
-    if (imuOk(s.forearm)) c.forearm = s.forearm;
-    if (posOk(s.elbow)) c.elbow = s.elbow;
-    if (posOk(s.wrist)) c.wrist = s.wrist;
-    auto pixelOk = [&](const std::optional<Eigen::Vector2d>& px) {
-      if (!px || !m_camera) return false;
-      if (px->allFinite()) return true;
-      ++m_counters.rejectedNonFinite;
-      return false;
-    };
-    if (pixelOk(s.camWrist)) c.camWrist = s.camWrist;
-    if (pixelOk(s.camElbow)) c.camElbow = s.camElbow;
+    ArmSample c = s;
+    if (!m_p.useOptical) c.elbow.reset(), c.wrist.reset();
+    if (!m_camera) c.camWrist.reset(), c.camElbow.reset();
+    c = m_gate.check(c);
+    if (m_gate.lastRefused()) {
+      m_counters.implausible = m_gate.counters();
+      m_counters.rejectedNonFinite = m_counters.implausible.byReason(Implausible::NonFinite);
+    }
     return c;
   }
 
@@ -417,6 +441,7 @@ class ArmFilter final : public JointEstimator {
         if (!anyPosition) continue;
         int& inARow = m_gatedInARow[blk == kWrist ? 2 : 3];
         if (startup || inARow >= m_p.positionGateResetFrames) {
+          if (!startup) m_opticalDisagrees = true;
           inARow = 0;
           continue;
         }
@@ -430,6 +455,7 @@ class ArmFilter final : public JointEstimator {
         // model error's systematic innovation into an "outlier".
         if (r.norm() > m_p.positionGateMinDistance && r.dot(llt.solve(r)) > m_p.positionGate) {
           ++m_counters.rejectedOutliers;
+          ++m_counters.gatedPositions;
           ++inARow;
           b = b.without(i);
         } else {
@@ -450,6 +476,7 @@ class ArmFilter final : public JointEstimator {
       }
       int& inARow = m_gatedInARow[blk == kCamWrist ? 0 : 1];
       if (startup || inARow >= m_p.pixelGateResetFrames) {
+        if (!startup) m_opticalDisagrees = true;
         inARow = 0;
         continue;
       }
@@ -484,10 +511,27 @@ class ArmFilter final : public JointEstimator {
     m_x.setZero();
     m_x.template segment<5>(5) = pose.thd;
     m_x.template segment<5>(10) = pose.th;
-    m_P.setZero();
     // Two marker pixels pin the arm like two positions do (up to the depth along each ray, which
     // the arm's lengths fix); one pixel alone does not.
     const bool optical = (first.elbow || first.wrist) || (first.camWrist && first.camElbow);
+    startCovariance(optical);
+    m_t = m_t0 = m_lastDataT = s.t;
+    m_recent.clear();
+    m_recentStates.clear();
+    m_badSince.reset();
+    m_opticalDisagrees = false;
+    m_matchedQ.setZero();
+    m_fitAt = m_p.fitWindowSeconds > 0.0 ? std::optional<double>(s.t + m_p.fitWindowSeconds)
+                                         : std::nullopt;
+    m_lastOpticalT = optical ? s.t : -std::numeric_limits<double>::infinity();
+    m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
+    m_initialised = true;
+    freezeInactive();
+  }
+
+  // The start-up covariance around the present state.
+  void startCovariance(bool optical) {
+    m_P.setZero();
     const double angleStd = optical ? m_p.initialAngleStdOptical : m_p.initialAngleStd;
     for (int j = 0; j < kNumJoints; ++j) {
       m_P(j, j) = m_p.initialAccelStd * m_p.initialAccelStd;
@@ -503,11 +547,7 @@ class ArmFilter final : public JointEstimator {
     if constexpr (kAugmented) {
       for (int i = kBase; i < N; ++i) m_P(i, i) = m_p.bodyAccelVariance;
     }
-    m_t = m_t0 = s.t;
-    m_lastOpticalT = optical ? s.t : -std::numeric_limits<double>::infinity();
     m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
-    m_initialised = true;
-    freezeInactive();
   }
 
   // x <- F x, P <- F P F^T + Q for step dt (eqs. 3-4 with the time step taken from the data).
@@ -535,9 +575,8 @@ class ArmFilter final : public JointEstimator {
     const double var = m_t - m_t0 < m_p.startupSeconds
                            ? std::max(m_p.jointAccelVariance, m_p.startupJointAccelVariance)
                            : m_p.jointAccelVariance;
-    const double qa = var * dt / m_p.referenceStep;
     for (int j = 0; j < kNumJoints; ++j)
-      if (m_p.activeJoints[j]) m_P(j, j) += qa;
+      if (m_p.activeJoints[j]) m_P(j, j) += std::max(var, m_matchedQ(j)) * dt / m_p.referenceStep;
     const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
     m_P.template topLeftCorner<kBase, kBase>() += m_p.headingVarianceRate * dt * v * v.transpose();
     m_headingFloor += m_p.headingVarianceRate * dt;
@@ -598,8 +637,10 @@ class ArmFilter final : public JointEstimator {
   // and the symmetric rank-M downdate P -= V^T V with V = L^-1 H P, which keeps P symmetric.
   // Returns false when some S is not positive definite.
   bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p,
-                        Vec& dx) const {
+                        Vec& dx) {
     dx.setZero();
+    m_updateNis = 0.0;
+    m_updateDof = 0;
     for (int i = 0; i < b.count; ++i) {
       const bool ok = b.size[i] == 3 ? blockUpdate<3>(jac, innov, b, i, p, dx)
                                      : blockUpdate<2>(jac, innov, b, i, p, dx);
@@ -610,7 +651,7 @@ class ArmFilter final : public JointEstimator {
 
   template <int M>
   bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i, Mat& p,
-                   Vec& dx) const {
+                   Vec& dx) {
     using SMat = Eigen::Matrix<double, M, M>;
     const int row = b.offset[i];
     const Eigen::Matrix<double, M, N> hj = jac.template middleRows<M>(row);
@@ -621,7 +662,9 @@ class ArmFilter final : public JointEstimator {
     const Eigen::LLT<SMat> llt(sj);
     if (llt.info() != Eigen::Success) return false;
     const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
-    dx.noalias() += w.transpose() * llt.solve(r);
+    const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
+    if (!isOptical(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
+    dx.noalias() += w.transpose() * sr;
     const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
     p.noalias() -= v.transpose().lazyProduct(v);
     return true;
@@ -702,6 +745,11 @@ class ArmFilter final : public JointEstimator {
     pzz.diagonal() += b.variance;
     const Eigen::LLT<MeasMat> sl(pzz);
     if (sl.info() != Eigen::Success) return false;
+    {
+      const MeasVec nu = b.z - zMean;
+      m_updateNis = nu.dot(sl.solve(nu));
+      m_updateDof = m;
+    }
     const Gain k = sl.solve(pxz.transpose()).transpose();
     m_x += k * (b.z - zMean);
     m_P -= k * pzz * k.transpose();
@@ -756,6 +804,115 @@ class ArmFilter final : public JointEstimator {
     m_P += headingShortfall(u) * u * u.transpose();
   }
 
+  // The recent past, for the window fit: fused readings only, in the right-arm frame.
+  void remember(const ArmSample& clean) {
+    ArmSample kept = clean;
+    kept.trueAngles.reset();
+    kept.estimate.reset();
+    m_recent.push_back(std::move(kept));
+    m_recentStates.push_back(m_x.template head<kBase>());
+    while (!m_recent.empty() && m_recent.front().t < m_t - m_p.fitWindowSeconds) {
+      m_recent.pop_front();
+      m_recentStates.pop_front();
+    }
+  }
+
+  std::vector<ArmSample> recentSince(double t, std::vector<Vec15>* states = nullptr) const {
+    std::vector<ArmSample> w;
+    for (std::size_t i = 0; i < m_recent.size(); ++i) {
+      if (m_recent[i].t < t) continue;
+      w.push_back(m_recent[i]);
+      if (states) states->push_back(m_recentStates[i]);
+    }
+    return w;
+  }
+
+  // Seeds for a window fit at the latest sample: the running state, and the single-sample
+  // start pose there (rates from the gyroscopes).
+  std::vector<Vec15> fitSeeds(const ArmSample& last) const {
+    std::vector<Vec15> seeds{m_x.template head<kBase>()};
+    const InitialPose pose = initialPose(m_p, last);
+    Vec15 x = Vec15::Zero();
+    x.template segment<5>(5) = pose.thd;
+    x.template segment<5>(10) = pose.th;
+    seeds.push_back(x);
+    return seeds;
+  }
+
+  // Start-up in mid-motion: once fitWindowSeconds of data are in, a batch fit of one smooth
+  // motion to all of them replaces the running state when it explains the data clearly better.
+  bool refitFromWindow(double since) {
+    std::vector<Vec15> states;
+    const std::vector<ArmSample> w = recentSince(since, &states);
+    if (w.size() < 2) return false;
+    const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back()));
+    if (!fit.ok || !(fit.rms < kGoodFitRms)) return false;
+    if (!(fit.rms < kRefitGain * trajectoryRms(m_p, w, states))) return false;
+    takeFit(fit, w);
+    ++m_counters.startupRefits;
+    return true;
+  }
+
+  // A fitted state replaces the running one with the start-up covariance: the fit is good to a
+  // few degrees, and the filter must stay ready to take the next corrections.
+  void takeFit(const WindowFitResult& fit, const std::vector<ArmSample>& w) {
+    m_x.template head<kBase>() = fit.x;
+    bool optical = false;
+    for (const ArmSample& r : w) optical = optical || r.elbow || r.wrist || (r.camWrist && r.camElbow);
+    startCovariance(optical);
+    finishUpdate();
+  }
+
+  // Consistency watch: IMU innovations far beyond their covariance for lostAfterSeconds in a
+  // row, or a state no arm can be in, mean the filter has lost the arm.
+  bool lost() {
+    if (!m_x.allFinite() ||
+        m_x.template segment<5>(5).cwiseAbs().maxCoeff() > m_p.plausibility.gyroRange)
+      return true;
+    if (m_t - m_t0 < m_p.startupSeconds) return false;
+    // The optics kept contradicting the state (a gated point, frame after frame): the IMUs alone
+    // cannot fix a wrong heading or branch, so start again from the window.
+    if (m_opticalDisagrees) {
+      m_opticalDisagrees = false;
+      return true;
+    }
+    if (m_updateDof == 0) return false;
+    if (m_updateNis / m_updateDof <= m_p.lostNis) {
+      m_badSince.reset();
+      return false;
+    }
+    if (!m_badSince) m_badSince = m_t;
+    return m_t - *m_badSince >= m_p.lostAfterSeconds;
+  }
+
+  // Re-initialises from the recent window (or, when that fails, from the sample alone), counts it
+  // and reports it: the estimate jumps here without the arm having moved.
+  UpdateResult recover(const ArmSample& last) {
+    ++m_counters.recoveries;
+    m_badSince.reset();
+    const std::vector<ArmSample> w = recentSince(m_t - m_p.fitWindowSeconds);
+    const std::vector<Vec15> seeds = fitSeeds(last);
+    initialise(last);  // fresh covariance, start-up noise and iterations, a new start-up fit
+    if (w.size() >= 2) {
+      const WindowFitResult fit = fitWindow(m_p, w, seeds);
+      if (fit.ok && fit.rms < kGoodFitRms) takeFit(fit, w);
+    }
+    remember(last);
+    return UpdateResult::Recovered;
+  }
+
+  // Covariance matching: the squared correction an update makes to each joint acceleration,
+  // per reference step and averaged over adaptationTime, is the process noise the motion needs.
+  void matchProcessNoise(const Vec& xPredicted, double dt) {
+    if (!m_p.adaptiveProcessNoise || !(dt > 0.0) || !(m_p.adaptationTime > 0.0)) return;
+    const double w = std::min(1.0, dt / m_p.adaptationTime);
+    for (int j = 0; j < kNumJoints; ++j) {
+      const double d = m_x(j) - xPredicted(j);
+      m_matchedQ(j) += w * (d * d * m_p.referenceStep / dt - m_matchedQ(j));
+      m_matchedQ(j) = std::min(m_matchedQ(j), m_p.maxJointAccelVariance);
+    }
+  }
+
   void finishUpdate() {
     for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
     m_P = 0.5 * (m_P + m_P.transpose()).eval();
@@ -793,12 +950,24 @@ class ArmFilter final : public JointEstimator {
   double m_t = 0.0;   // time of the state (s)
   double m_t0 = 0.0;  // time of the last (re)initialisation (s)
   double m_lastSeenT = 0.0;
+  double m_lastDataT = 0.0;  // time of the last sample whose readings were fused (s)
   double m_lastOpticalT = 0.0;
+  static constexpr double kRefitGain = 0.7;  // a start-up fit must explain the data this much better
+  static constexpr double kGoodFitRms = 3.0;  // whitened residual RMS of a fit worth taking
+  std::deque<Vec15> m_recentStates;  // the filter's state after each of m_recent
+  bool m_opticalDisagrees = false;   // an optical point was gated many frames in a row
+  JointVector m_matchedQ = JointVector::Zero();
+  std::deque<ArmSample> m_recent;    // fused samples of the last fitWindowSeconds
+  std::optional<double> m_fitAt;     // when the start-up window fit is due (s)
+  std::optional<double> m_badSince;  // start of a run of inconsistent IMU updates (s)
+  double m_updateNis = 0.0;          // normalised innovation squared of the last update (IMU rows)
+  int m_updateDof = 0;  // matched joint-acceleration noise, (rad/s^2)^2
   double m_headingFloor = 0.0;  // least variance along the heading while IMU-only (rad^2)
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
+  SampleGate m_gate;
   EstimatorCounters m_counters;
 };
 
@@ -825,7 +994,7 @@ BatchResult estimateSamples(const std::vector<ArmSample>& samples, const Estimat
   out.estimates.reserve(samples.size());
   for (const ArmSample& s : samples) {
     const UpdateResult r = filter->update(s);
-    if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && s.hasImu())
+    if (hasEstimate(r) && s.hasImu())
       out.estimates.push_back(filter->estimate());
   }
   out.counters = filter->counters();

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/estimation/SampleGate.h"
 #include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
@@ -51,6 +52,17 @@ struct EstimatorParams {
   /// 1 (deg/s^2)^2 at the paper's 1 ms step. For another dt the variance scales with dt / 1 ms.
   double jointAccelVariance = 1.0 * kDeg * kDeg;
   double referenceStep = 1e-3;  ///< s, the step jointAccelVariance refers to
+  /// Adaptive joint-acceleration noise (covariance matching, Mohamed & Schwarz 1999): the
+  /// corrections the updates make to the joint accelerations, averaged over adaptationTime,
+  /// raise the process noise above jointAccelVariance while the arm moves fast, so fast human
+  /// movement (600 deg/s, 6,000 deg/s^2) is tracked without tuning, and it falls back to
+  /// jointAccelVariance when the arm slows down. Off reproduces the paper's fixed noise.
+  bool adaptiveProcessNoise = true;
+  double adaptationTime = 0.05;  ///< s, averaging time of the matched noise
+  /// Ceiling of the matched noise, (rad/s^2)^2 per reference step: (1000 deg/s^2)^2, several
+  /// times what the fastest minimum-jerk reach of a human arm needs, so readings no arm can
+  /// produce cannot blow the covariance up.
+  double maxJointAccelVariance = (1000.0 * kDeg) * (1000.0 * kDeg);
   /// GM-1 correlation time of the joint accelerations (s). Infinity gives eq. 3's identity block.
   double jointAccelCorrelationTime = std::numeric_limits<double>::infinity();
   /// Random-walk variance rate along the unobservable heading direction (rad^2/s): keeps the
@@ -67,6 +79,10 @@ struct EstimatorParams {
   double bodyAccelCorrelationTime = 0.1;
 
   bool useOptical = true;  ///< fuse Kinect elbow/wrist positions when a sample carries them
+
+  /// What the sensors and an arm can produce; implausible blocks are refused before the filter
+  /// sees them (core/estimation/SampleGate.h). maxReach is capped at 1.5 x (l3 + l6) + 0.2 m.
+  PlausibilityLimits plausibility;
 
   /// Webcam: the camera that sees the wrist and elbow markers (the recording's `camera` block).
   /// Without it, marker pixels are ignored.
@@ -114,8 +130,22 @@ struct EstimatorParams {
   /// split (a first guess taken while the arm moved is otherwise locked in).
   double gyroFirstSeconds = 0.25;
   double gyroFirstAccelGain = 1e4;
-  /// A gap between samples longer than this (s) restarts the filter from the next sample.
+  /// Start-up in mid-motion: this long (s) after each (re)start, a batch fit of one smooth motion
+  /// to the window's readings (core/estimation/WindowFit.h) replaces the state when it explains
+  /// them clearly better. The same window serves recovery. 0 turns both off.
+  double fitWindowSeconds = 0.25;
+  /// The arm is taken as lost when the IMU rows' normalised innovation squared per row stays
+  /// above lostNis for lostAfterSeconds (after start-up), or a joint rate exceeds the gyroscope
+  /// range; the filter then re-initialises from the recent window (counters().recoveries).
+  double lostNis = 400.0;
+  double lostAfterSeconds = 0.15;
+  /// A stretch longer than this (s) without usable data (a gap in time, or rows whose every
+  /// reading was refused at the door) restarts the filter from the next usable sample.
   double maxGap = 0.1;
+  /// Rows whose every reading was refused at the door still get an estimate for this long (s)
+  /// after the last usable data: the filter predicts to each row's time (UpdateResult::Predicted),
+  /// its standard deviations growing with the prediction.
+  double maxCoastSeconds = 1.0;
 };
 
 /// Output of the filter at one instant.
@@ -131,13 +161,19 @@ struct JointEstimate {
 struct EstimatorCounters {
   std::uint64_t samples = 0;            ///< samples offered
   std::uint64_t rejectedNonFinite = 0;  ///< sensor blocks dropped for NaN/inf
+  /// Every sensor block refused at the door (NaN/inf included), by block, reason and time.
+  GateCounters implausible;
   std::uint64_t rejectedTime = 0;       ///< samples dropped: time not finite or going backwards
   std::uint64_t skippedUpdates = 0;     ///< updates skipped: innovation covariance not invertible
   std::uint64_t covarianceRepairs = 0;  ///< covariance re-symmetrised / jittered to stay PD
   std::uint64_t restarts = 0;           ///< restarts after a gap longer than maxGap
+  std::uint64_t coasted = 0;  ///< rows whose readings were all refused, predicted through
+  std::uint64_t recoveries = 0;     ///< re-initialisations after the arm was lost
+  std::uint64_t startupRefits = 0;  ///< start-up states replaced by the window fit
   std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused (Kinect)
   std::uint64_t cameraUpdates = 0;      ///< marker pixels fused (webcam)
   std::uint64_t rejectedOutliers = 0;   ///< pixels and positions dropped by the innovation gate
+  std::uint64_t gatedPositions = 0;     ///< of which Kinect positions
   std::uint64_t cameraNotVisible = 0;   ///< marker pixels dropped: predicted point not in view
 };
 
@@ -146,7 +182,19 @@ enum class UpdateResult {
   Initialised,  ///< the filter (re)started from this sample
   Waiting,      ///< not yet initialised (no IMU sample seen)
   Rejected,     ///< nothing usable in the sample (see counters)
+  /// Every reading of the sample was refused at the door (counters().implausible); the filter
+  /// predicted to the sample's time, so estimate() is current but rests on no measurement.
+  Predicted,
+  /// The filter had lost the arm (or its start-up guess was poor) and re-initialised from a fit
+  /// to the recent window: the estimate may jump here without the arm having moved.
+  Recovered,
 };
+
+/// Whether an update gave an estimate for the sample's time.
+inline bool hasEstimate(UpdateResult r) {
+  return r == UpdateResult::Accepted || r == UpdateResult::Initialised ||
+         r == UpdateResult::Predicted || r == UpdateResult::Recovered;
+}
 
 /// The estimator. Not thread-safe: one thread feeds it.
 class JointEstimator {

@@ -151,6 +151,8 @@ ArmSample SampleGate::check(const ArmSample& s) {
     if (!p) return;
     if (!p->allFinite())
       count(b, Implausible::NonFinite, s.t);
+    else if (p->isZero(0.0))  // the shoulder itself: a link that sends zeros
+      count(b, Implausible::AllZero, s.t);
     else if (p->norm() > m_limits.maxReach)
       count(b, Implausible::BeyondRange, s.t);
     else
@@ -163,6 +165,8 @@ ArmSample SampleGate::check(const ArmSample& s) {
     if (!px) return;
     if (!px->allFinite())
       count(b, Implausible::NonFinite, s.t);
+    else if (px->isZero(0.0))
+      count(b, Implausible::AllZero, s.t);
     else if (px->cwiseAbs().maxCoeff() > m_limits.maxPixel)
       count(b, Implausible::BeyondRange, s.t);
     else

@@ -50,7 +50,8 @@ enum class Implausible : std::uint8_t {
   NonFinite,    ///< NaN or infinity
   BeyondRange,  ///< beyond the sensor's full scale, or an optical point far from the arm
   Saturated,    ///< at the sensor's full scale: clipped
-  AllZero,      ///< an accelerometer reading exactly zero on every axis (a dead link or sensor)
+  AllZero,      ///< exactly zero on every axis: an accelerometer (which always feels gravity
+                ///< on an arm), an optical point (the shoulder itself) or a pixel: a dead link
   Stuck,        ///< the same reading repeated bit for bit (a frozen sensor)
 };
 inline constexpr int kNumImplausible = 5;

@@ -309,7 +309,7 @@ void Session::workerLoop() {
     row.t -= m_startTime * scale;  // session time: 0 at start()
     if (filter) {
       const UpdateResult r = filter->update(row);
-      if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && row.hasImu()) {
+      if (hasEstimate(r) && row.hasImu()) {
         const JointEstimate e = filter->estimate();
         row.estimate = e.th;
         ++estimates;

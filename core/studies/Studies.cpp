@@ -87,6 +87,7 @@ RunError runSegment(const SegmentCase& c, const StudySetup& setup) {
   for (ArmSample& s : rec.samples) s.wrist.reset();
 
   EstimatorParams p;
+  p.adaptiveProcessNoise = false;  // the paper's fixed Table 5 noise, as the study reproduces it
   p.filter = c.filter;
   p.model = c.model;
   p.geometry = c.geometry;
@@ -476,7 +477,7 @@ SensorRunError runSensorCase(SensorSet set, const Recording& rec, const Trajecto
     auto filter = makeEstimator(p);
     for (const ArmSample& s : rec.samples) {
       const UpdateResult r = filter->update(s);
-      if (!s.hasImu() || !(r == UpdateResult::Accepted || r == UpdateResult::Initialised)) continue;
+      if (!s.hasImu() || !hasEstimate(r)) continue;
       const JointEstimate e = filter->estimate();
       add(e.t, e.th, forwardKinematics(p.geometry, e.th).wrist);
     }

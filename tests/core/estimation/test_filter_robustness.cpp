@@ -170,16 +170,20 @@ TEST_P(ByFilter, NonFiniteBlocksAreDroppedAndCounted) {
         int(s.upperArm.has_value() && !ref.upperArm) + int(s.forearm.has_value() && !ref.forearm) +
         int(s.elbow.has_value() && !ref.elbow) + int(s.wrist.has_value() && !ref.wrist);
     ASSERT_EQ(dropped, static_cast<std::uint64_t>(expected)) << "t = " << s.t;
-    if (!ref.hasImu() && !ref.elbow && !ref.wrist) EXPECT_EQ(r, UpdateResult::Rejected);
+    // A row whose every reading is refused is predicted through (after start-up), not dropped.
+    if (!ref.hasImu() && !ref.elbow && !ref.wrist)
+      EXPECT_TRUE(r == UpdateResult::Predicted || r == UpdateResult::Rejected);
     const JointEstimate e = f->estimate();
     ASSERT_TRUE(e.th.allFinite() && e.thd.allFinite() && e.thdd.allFinite()) << "t = " << s.t;
     ASSERT_TRUE(f->covariance().allFinite());
   });
   EXPECT_EQ(f->counters().rejectedNonFinite, badBlocks);
   EXPECT_EQ(f->counters().rejectedTime, 0u);
-  // Dropping a block is the same as never receiving it.
-  EXPECT_EQ(f->estimate().th, fRemoved->estimate().th);
-  EXPECT_EQ(f->estimate().thd, fRemoved->estimate().thd);
+  // Dropping a block is the same as never receiving it, except that a row left with nothing is
+  // predicted through, which splits one prediction step in two (the process noise lands in two
+  // parts): the same estimate to well within a hundredth of a degree.
+  EXPECT_LT((f->estimate().th - fRemoved->estimate().th).cwiseAbs().maxCoeff(), 0.01 * kDeg);
+  EXPECT_LT((f->estimate().thd - fRemoved->estimate().thd).cwiseAbs().maxCoeff(), 0.01 * kDeg);
   report(kindName(p.filter) + " bad blocks", double(badBlocks));
   report(kindName(p.filter) + " RMSE clean [2.5,4] s (deg)", deg(rmseClean));
   report(kindName(p.filter) + " RMSE corrupted [2.5,4] s (deg)", deg(rmse));
@@ -373,9 +377,9 @@ TEST_P(ByFilter, AnglesStayWrappedWhenTh0CrossesPi) {
   EXPECT_LT(deg(worst), 2.5);
 }
 
-// An update that produces a non-finite state is skipped (the state stays at the prediction); the
-// output must still be wrapped when that prediction has crossed pi.
-TEST_P(ByFilter, AnglesStayWrappedAfterASkippedUpdate) {
+// Readings no sensor can produce are refused and the row is predicted through; the output must
+// still be wrapped when that prediction has crossed pi.
+TEST_P(ByFilter, AnglesStayWrappedWhenPredictingThroughRefusedReadings) {
   EstimatorParams p;
   p.filter = GetParam();
   const SinusoidTrajectory traj = overheadSwing();
@@ -387,15 +391,16 @@ TEST_P(ByFilter, AnglesStayWrappedAfterASkippedUpdate) {
     const JointEstimate e = f->estimate();
     const double dt = 0.9 * p.maxGap;  // no restart: the filter predicts across it
     if (s.t < 1.5 || !s.upperArm || e.th(0) < kPi - 0.5 * dt || e.thd(0) < 1.0) continue;
-    // dt later the prediction is past pi; readings of 1e308 overflow the update.
+    // dt later the prediction is past pi; readings of 1e308 are refused at the door.
     ArmSample huge = s;
     huge.t = s.t + dt;
     huge.upperArm->gyr.setConstant(1e308);
     huge.upperArm->acc.setConstant(1e308);
     huge.forearm->gyr.setConstant(1e308);
     huge.forearm->acc.setConstant(-1e308);
-    EXPECT_EQ(f->update(huge), UpdateResult::Rejected);
-    EXPECT_EQ(f->counters().skippedUpdates, 1u);
+    EXPECT_EQ(f->update(huge), UpdateResult::Predicted);
+    EXPECT_EQ(f->counters().implausible.byReason(Implausible::BeyondRange), 2u);
+    EXPECT_EQ(f->counters().skippedUpdates, 0u);
     EXPECT_TRUE(wrapped(f->estimate().th)) << f->estimate().th.transpose();
     tried = true;
     break;

@@ -95,6 +95,15 @@ TEST(SampleGate, RefusesAllZeroAccelerometerButNotZeroGyro) {
   EXPECT_FALSE(out.upperArm);
   EXPECT_TRUE(out.forearm);
   EXPECT_EQ(gate.counters().byReason(Implausible::AllZero), 1u);
+  // A link sending zeros for the optics too.
+  s = sample(4.001);
+  s.elbow->setZero();
+  s.camWrist->setZero();
+  const ArmSample optics = gate.check(s);
+  EXPECT_FALSE(optics.elbow);
+  EXPECT_FALSE(optics.camWrist);
+  EXPECT_TRUE(optics.wrist && optics.upperArm);
+  EXPECT_EQ(gate.counters().byReason(Implausible::AllZero), 3u);
 }
 
 TEST(SampleGate, RefusesAFrozenSensorOnlyAfterManyIdenticalRepeats) {

@@ -1,0 +1,43 @@
+// A batch fit of the arm's motion over a short window of samples: the start (or restart) of the
+// joint-angle filter in the middle of a movement, and its recovery when it has lost the arm.
+// A single sample cannot tell gravity from body acceleration while the arm moves; a fraction of
+// a second of gyroscope, accelerometer and optical data explained by one smooth motion can.
+// See docs/estimator.md, "Start-up and recovery".
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+#include "core/ArmSample.h"
+#include "core/estimation/ArmFilter.h"
+
+namespace armtrack {
+
+/// The fitted motion at the window's last sample.
+struct WindowFitResult {
+  bool ok = false;                                       ///< the solver converged from some seed
+  Eigen::Matrix<double, 15, 1> x = decltype(x)::Zero();  ///< [th'' th' th] at tEnd
+  double tEnd = 0.0;                                     ///< s
+  /// Root mean square of the whitened residuals (1 when the motion explains the data to within
+  /// the sensors' stated noise; large when it does not).
+  double rms = 0.0;
+  int residuals = 0;  ///< number of residual rows used
+};
+
+/// Fits th(t) as a cubic per active joint over `window` (time-ordered samples already in the
+/// filter's right-arm frame, implausible blocks removed) to every IMU and optical reading in it,
+/// through the filter's own measurement model (params.model, params.camera), with a robust loss
+/// against outliers. Each seed is a 15-state [th'' th' th] at the window's last sample; the fit
+/// from the seed with the lowest cost is returned. Inactive joints stay at params.fixedAngles.
+/// IMU samples are thinned to at most maxImuSamples, spread evenly. The heading about the
+/// vertical is not observable without optical data and stays near the seed's.
+WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
+                          const std::vector<Eigen::Matrix<double, 15, 1>>& seeds,
+                          int maxImuSamples = 60);
+
+/// Whitened residual RMS of a filter's own states over the window (states[i] belongs to
+/// window[i]), without a robust loss: how well the running filter explains the same data.
+double trajectoryRms(const EstimatorParams& params, const std::vector<ArmSample>& window,
+                     const std::vector<Eigen::Matrix<double, 15, 1>>& states);
+
+}  // namespace armtrack
