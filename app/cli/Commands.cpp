@@ -323,7 +323,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
   const EstimatorParams params = makeParams(rec.meta, opt);
   std::optional<CsvOutput> writer;
-  if (outPath) writer.emplace("t,th0,th1,th2,th4,th5", *outPath);
+  if (outPath) writer.emplace(kEstimateHeader, *outPath);
   const auto start = std::chrono::steady_clock::now();
   const EstimateStats st = estimateRecording(rec, params, writer ? &*writer : nullptr,
                                              [&](int p) { err << "progress: " << p << "%\n"; });
@@ -340,17 +340,34 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   if (outPath) err << "; wrote " << outPath->string();
   err << "\n";
   const EstimatorCounters& c = st.counters;
-  if (c.rejectedNonFinite || c.rejectedTime || c.restarts || c.skippedUpdates) {
-    err << "filter: rejected non-finite " << c.rejectedNonFinite << ", rejected time "
-        << c.rejectedTime << ", restarts " << c.restarts << ", skipped updates " << c.skippedUpdates
-        << "\n";
+  if (c.implausible.total() > 0) {
+    err << "filter: " << c.implausible.summary() << "; " << st.predicted
+        << " rows were estimated by prediction alone (status 1 in --out)\n";
   }
-  if (c.cameraUpdates || c.rejectedOutliers || c.cameraNotVisible) {
-    err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << c.rejectedOutliers
+  if (c.rejectedTime || c.restarts || c.skippedUpdates || c.recoveries) {
+    err << "filter: rejected time " << c.rejectedTime << ", restarts after gaps " << c.restarts
+        << " (status 2 in --out), recoveries after losing the arm " << c.recoveries
+        << " (status 3), skipped updates " << c.skippedUpdates << "\n";
+  }
+  if (st.estimates < st.imuRows) {
+    err << "warning: " << st.imuRows - st.estimates << " of " << st.imuRows
+        << " rows with IMU data got no estimate (before start-up, or in stretches of refused "
+           "readings longer than "
+        << shortest(params.maxGap) << " s)\n";
+  }
+  const std::uint64_t gatedPixels = c.rejectedOutliers - c.gatedPositions;
+  if (c.gatedPositions > 0)
+    err << "kinect: " << c.opticalUpdates << " positions fused, " << c.gatedPositions
+        << " gated as outliers\n";
+  if (c.cameraUpdates || gatedPixels || c.cameraNotVisible) {
+    err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << gatedPixels
         << " gated as outliers, " << c.cameraNotVisible
         << " with the marker predicted out of view\n";
   }
-  if (st.truthCount == 0 && st.opticalUsed)
+  if (st.truthCount == 0 && st.truthRows > 0)
+    err << "estimate: no error statistics: every estimate with true angles lies in the first "
+        << shortest(1.0) << " s after a (re)start, which the statistics leave out\n";
+  else if (st.truthCount == 0 && st.opticalUsed)
     err << "estimate: no true angles in the recording, so no error statistics\n";
   out << formatReport(st);
   return 0;

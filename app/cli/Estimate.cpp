@@ -1,5 +1,7 @@
 #include "app/cli/Estimate.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -58,27 +60,40 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
   int nextPercent = 10;
   std::size_t nextRow = reporting ? n / 10 : std::numeric_limits<std::size_t>::max();
 
+  std::array<double, 2 * kNumJoints + 1> values{};
   for (std::size_t i = 0; i < n; ++i) {
     const ArmSample& s = samples[i];
     const UpdateResult r = filter->update(s);
-    if ((r == UpdateResult::Accepted || r == UpdateResult::Initialised) && s.hasImu()) {
+    st.imuRows += s.hasImu();
+    if (hasEstimate(r) && s.hasImu()) {
       const JointEstimate e = filter->estimate();
       if (r == UpdateResult::Initialised) tStart = e.t;
       if (!started) {
         started = true;
         st.tFirst = e.t;
-        st.firstWindow.from = st.tFirst + kStartupSeconds;
-        st.firstWindow.to = st.firstWindow.from + kWindowSeconds;
+        // Windows within the data: the first after start-up, the last after the first.
+        st.firstWindow.from = std::min(st.tFirst + kStartupSeconds, tLastImu);
+        st.firstWindow.to = std::min(st.firstWindow.from + kWindowSeconds, tLastImu);
         st.lastWindow.to = tLastImu;
-        st.lastWindow.from = tLastImu - kWindowSeconds;
+        st.lastWindow.from = std::max(tLastImu - kWindowSeconds, st.firstWindow.to);
       }
       st.tLast = e.t;
       ++st.estimates;
-      if (writer) writer->row(e.t, e.th.data(), kNumJoints);
+      st.predicted += r == UpdateResult::Predicted;
+      if (writer) {
+        std::copy(e.th.data(), e.th.data() + kNumJoints, values.begin());
+        std::copy(e.thStd.data(), e.thStd.data() + kNumJoints, values.begin() + kNumJoints);
+        values.back() = r == UpdateResult::Predicted     ? kStatusPredicted
+                        : r == UpdateResult::Initialised ? kStatusRestarted
+                        : r == UpdateResult::Recovered   ? kStatusRecovered
+                                                         : kStatusFused;
+        writer->row(e.t, values.data(), static_cast<int>(values.size()));
+      }
+      st.truthRows += s.trueAngles.has_value();
       if (s.trueAngles && e.t >= tStart + kStartupSeconds) {
         all.add(e.th, *s.trueAngles);
         if (e.t >= st.firstWindow.from && e.t <= st.firstWindow.to) first.add(e.th, *s.trueAngles);
-        if (e.t >= st.lastWindow.from && e.t <= st.lastWindow.to) last.add(e.th, *s.trueAngles);
+        if (e.t > st.lastWindow.from && e.t <= st.lastWindow.to) last.add(e.th, *s.trueAngles);
       }
     }
     if (i + 1 >= nextRow) {
@@ -120,8 +135,10 @@ std::string formatReport(const EstimateStats& st) {
       s += "\nRMSE (deg) early vs late, to show the drift:\n\n";
       s += "| window | th0 | th1 | th2 | th4 | th5 |\n|---|---:|---:|---:|---:|---:|\n";
       for (const auto& [name, w] :
-           {std::pair{"first 10 s", &st.firstWindow}, std::pair{"last 10 s", &st.lastWindow}}) {
-        s += "| " + std::string(name) + " (" + fixed(w->from, 1) + "-" + fixed(w->to, 1) + " s) |";
+           {std::pair{"first", &st.firstWindow}, std::pair{"last", &st.lastWindow}}) {
+        if (w->count == 0) continue;  // a recording too short for two windows has one
+        s += "| " + std::string(name) + " " + fixed(w->to - w->from, 1) + " s (" +
+             fixed(w->from, 1) + "-" + fixed(w->to, 1) + " s) |";
         for (int j = 0; j < kNumJoints; ++j) {
           s += " " + (w->count > 0 ? fixed(w->rmseDeg(j), 3) : std::string("-")) + " |";
         }

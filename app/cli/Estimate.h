@@ -34,7 +34,9 @@ struct WindowError {
 
 struct EstimateStats {
   std::size_t rows = 0;       ///< samples offered to the filter
-  std::size_t estimates = 0;  ///< output rows: accepted samples that carry IMU data
+  std::size_t estimates = 0;  ///< output rows: samples that carry IMU data and got an estimate
+  std::size_t imuRows = 0;    ///< samples that carry IMU data
+  std::size_t predicted = 0;  ///< output rows whose readings were all refused (predictions)
   double tFirst = 0.0;        ///< time of the first estimate (s)
   double tLast = 0.0;         ///< time of the last estimate (s)
   EstimatorCounters counters;
@@ -45,8 +47,9 @@ struct EstimateStats {
   std::size_t truthCount = 0;
   JointVector rmseDeg = JointVector::Zero();
   JointVector peakDeg = JointVector::Zero();
-  WindowError firstWindow;  ///< the first 10 s after start-up
-  WindowError lastWindow;   ///< the last 10 s
+  std::size_t truthRows = 0;  ///< estimates that had true angles, start-up seconds included
+  WindowError firstWindow;  ///< the first 10 s after start-up (shorter for a short recording)
+  WindowError lastWindow;   ///< the last 10 s after the first window (may be empty)
 };
 
 /// Called with 10, 20, ..., 100 (percent of rows done) for recordings of more than
@@ -54,9 +57,20 @@ struct EstimateStats {
 using EstimateProgress = std::function<void(int percent)>;
 inline constexpr std::size_t kProgressRows = 100000;
 
-/// Runs the filter sample by sample. Each accepted sample that carries IMU data yields one output
-/// row "t,th0,th1,th2,th4,th5" (written to writer when given) and, when it carries true angles, one
-/// error sample.
+/// The header of `estimate --out`: time, the five angles (rad), their standard deviations (rad)
+/// and a status per row (kStatus* below).
+inline constexpr const char* kEstimateHeader =
+    "t,th0,th1,th2,th4,th5,sd_th0,sd_th1,sd_th2,sd_th4,sd_th5,status";
+/// Status of an output row: 0 the readings were fused; 1 every reading of the row was refused as
+/// implausible and the estimate is a prediction; 2 the filter (re)started here; 3 the filter had
+/// lost the arm (or its start-up guess was poor) and re-initialised from the recent window. At 2
+/// and 3 the angles may jump without the arm having moved.
+inline constexpr double kStatusFused = 0, kStatusPredicted = 1, kStatusRestarted = 2,
+                        kStatusRecovered = 3;
+
+/// Runs the filter sample by sample. Each sample that carries IMU data and gets an estimate yields
+/// one output row (kEstimateHeader, written to writer when given) and, when it carries true
+/// angles, one error sample.
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
                                 CsvOutput* writer, const EstimateProgress& progress = {});
 
