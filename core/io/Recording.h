@@ -147,6 +147,27 @@ class RecordingWriter {
   std::uint64_t m_rows = 0;
 };
 
+/// What a real arm, IMU mounting and camera can never exceed; a sidecar outside these limits is
+/// refused by readSidecar (and never written). docs/recording-format.md explains each limit.
+struct MetaLimits {
+  static constexpr double kMinSegment = 0.10;        ///< l3, l6 at least (m)
+  static constexpr double kMaxSegment = 0.60;        ///< l3, l6 at most (m)
+  static constexpr double kStrapMargin = 0.10;       ///< lu3 <= l3 + margin, lf6 <= l6 + margin (m)
+  static constexpr double kMaxStrapRadius = 0.15;    ///< |lu5|, |lf8| at most (m)
+  static constexpr double kMaxStrapAngle = 6.3;      ///< |thu4|, |thf7| at most (rad, about 2 pi)
+  static constexpr double kMinG = 9.5;               ///< g at least (m/s^2)
+  static constexpr double kMaxG = 10.2;              ///< g at most (m/s^2)
+  static constexpr double kMaxFocal = 1e6;           ///< fx, fy at most (pixels)
+  static constexpr double kMaxPrincipal = 1e6;       ///< |cx|, |cy| at most (pixels)
+  static constexpr double kMaxCameraDistance = 100;  ///< |t| at most (m)
+  static constexpr double kRotationTolerance = 1e-3;  ///< max |R^T R - I|, as PinholeCamera
+};
+
+/// The first value of meta that is not finite or outside MetaLimits, as a message that starts
+/// with its sidecar key in quotes (e.g. "\"geometry.l3\" is 0 m: ..."); empty when every value
+/// is possible. Any thread.
+std::string metaProblem(const RecordingMeta& meta);
+
 /// The sidecar path for a CSV path: same name, extension .json.
 std::filesystem::path sidecarPath(const std::filesystem::path& csvPath);
 RecordingMeta readSidecar(const std::filesystem::path& jsonPath);  // throws RecordingError

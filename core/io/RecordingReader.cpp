@@ -257,7 +257,7 @@ class CsvParser {
     const auto r = std::from_chars(b, e, x);
     if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
     const std::string where =
-        inQuotes(cell) + " in column " + inQuotes(slotName(m_slotOfColumn[column]));
+        quotedCell(cell) + " in column " + inQuotes(slotName(m_slotOfColumn[column]));
     if (r.ptr != e || r.ec == std::errc::invalid_argument) {
       fail(line, column + 1,
            "bad number " + where + " (expected a decimal number such as -1.25e-3)");

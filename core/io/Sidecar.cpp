@@ -93,7 +93,113 @@ std::pair<int, int> textPosition(std::string_view text, std::size_t byte) {
   return {line, column};
 }
 
+/// "\"key\" is <value> <unit>: <why>".
+std::string outside(const std::string& key, double v, const std::string& unit,
+                    const std::string& why) {
+  return inQuotes(key) + " is " + formatDouble(v) + (unit.empty() ? "" : " " + unit) + ": " + why;
+}
+
+/// Where the JSON library's message names the offending token ("... parsing '1e999'"), the
+/// line and column of its first occurrence in text; {0, 0} when it does not.
+std::pair<int, int> tokenPosition(std::string_view text, const std::string& what) {
+  const auto open = what.find('\'');
+  const auto close = open == std::string::npos ? open : what.find('\'', open + 1);
+  if (close == std::string::npos || close == open + 1) return {0, 0};
+  const std::string token = what.substr(open + 1, close - open - 1);
+  const auto at = text.find(token);
+  if (at == std::string_view::npos) return {0, 0};
+  return textPosition(text, at + 1);
+}
+
 }  // namespace
+
+std::string metaProblem(const RecordingMeta& meta) {
+  using L = MetaLimits;
+  const ArmGeometry& g = meta.geometry;
+  const std::pair<const char*, double> all[] = {
+      {"geometry.l3", g.l3},     {"geometry.l6", g.l6},   {"geometry.lu3", g.lu3},
+      {"geometry.thu4", g.thu4}, {"geometry.lu5", g.lu5}, {"geometry.lf6", g.lf6},
+      {"geometry.thf7", g.thf7}, {"geometry.lf8", g.lf8}, {"g", meta.g}};
+  for (const auto& [key, v] : all) {
+    if (!std::isfinite(v))
+      return inQuotes(key) + " is " + formatDouble(v) + ", not a finite number";
+  }
+  const std::string segment =
+      "between " + formatDouble(L::kMinSegment) + " and " + formatDouble(L::kMaxSegment) + " m";
+  if (!(g.l3 >= L::kMinSegment && g.l3 <= L::kMaxSegment))
+    return outside("geometry.l3", g.l3, "m",
+                   "the upper arm (shoulder to elbow) must be " + segment);
+  if (!(g.l6 >= L::kMinSegment && g.l6 <= L::kMaxSegment))
+    return outside("geometry.l6", g.l6, "m", "the forearm (elbow to wrist) must be " + segment);
+  if (!(g.lu3 >= 0.0 && g.lu3 <= g.l3 + L::kStrapMargin))
+    return outside("geometry.lu3", g.lu3, "m",
+                   "the upper-arm IMU must sit on the upper arm, 0 to l3 + " +
+                       formatDouble(L::kStrapMargin) + " = " +
+                       formatDouble(g.l3 + L::kStrapMargin) + " m from the shoulder");
+  if (!(g.lf6 >= 0.0 && g.lf6 <= g.l6 + L::kStrapMargin))
+    return outside("geometry.lf6", g.lf6, "m",
+                   "the forearm IMU must sit on the forearm, 0 to l6 + " +
+                       formatDouble(L::kStrapMargin) + " = " +
+                       formatDouble(g.l6 + L::kStrapMargin) + " m from the elbow");
+  for (const auto& [key, v] :
+       {std::pair{"geometry.lu5", g.lu5}, std::pair{"geometry.lf8", g.lf8}}) {
+    if (!(std::abs(v) <= L::kMaxStrapRadius))
+      return outside(key, v, "m",
+                     "an IMU strapped to the arm sits at most " + formatDouble(L::kMaxStrapRadius) +
+                         " m from the bone's axis");
+  }
+  for (const auto& [key, v] :
+       {std::pair{"geometry.thu4", g.thu4}, std::pair{"geometry.thf7", g.thf7}}) {
+    if (!(std::abs(v) <= L::kMaxStrapAngle))
+      return outside(key, v, "rad",
+                     "an angle about the arm's axis is between -" +
+                         formatDouble(L::kMaxStrapAngle) + " and " +
+                         formatDouble(L::kMaxStrapAngle) + " rad");
+  }
+  if (!(meta.g >= L::kMinG && meta.g <= L::kMaxG))
+    return outside("g", meta.g, "m/s^2",
+                   "gravity on Earth is between " + formatDouble(L::kMinG) + " and " +
+                       formatDouble(L::kMaxG) + " m/s^2");
+  if (!meta.up.allFinite() || !(std::abs(meta.up.norm() - 1.0) <= 0.5))
+    return "\"up\" must be a unit vector (pointing up in the shoulder frame)";
+  if (!meta.camera) return {};
+  const CameraParams& c = *meta.camera;
+  const std::pair<const char*, double> cam[] = {
+      {"camera.fx", c.fx}, {"camera.fy", c.fy}, {"camera.cx", c.cx}, {"camera.cy", c.cy}};
+  for (const auto& [key, v] : cam) {
+    if (!std::isfinite(v))
+      return inQuotes(key) + " is " + formatDouble(v) + ", not a finite number";
+  }
+  for (std::size_t i = 0; i < c.dist.size(); ++i) {
+    if (!std::isfinite(c.dist[i]))
+      return "\"camera.dist[" + std::to_string(i) + "]\" is not a finite number";
+  }
+  if (!c.R.allFinite()) return "\"camera.R\" holds a value that is not a finite number";
+  if (!c.t.allFinite()) return "\"camera.t\" holds a value that is not a finite number";
+  for (const auto& [key, v] : {std::pair{"camera.fx", c.fx}, std::pair{"camera.fy", c.fy}}) {
+    if (!(v > 0.0 && v <= L::kMaxFocal))
+      return outside(
+          key, v, "pixels",
+          "a focal length is positive and at most " + formatDouble(L::kMaxFocal) + " pixels");
+  }
+  for (const auto& [key, v] : {std::pair{"camera.cx", c.cx}, std::pair{"camera.cy", c.cy}}) {
+    if (!(std::abs(v) <= L::kMaxPrincipal))
+      return outside(key, v, "pixels",
+                     "a principal point is at most " + formatDouble(L::kMaxPrincipal) +
+                         " pixels from the image's corner");
+  }
+  const double orthoError =
+      (c.R.transpose() * c.R - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(orthoError <= L::kRotationTolerance && c.R.determinant() > 0.0))
+    return "\"camera.R\" is not a rotation matrix (orthonormal to " +
+           formatDouble(L::kRotationTolerance) + ", determinant +1): |R^T R - I| reaches " +
+           formatDouble(orthoError) + ", det R = " + formatDouble(c.R.determinant());
+  if (!(c.t.norm() <= L::kMaxCameraDistance))
+    return outside(
+        "camera.t", c.t.norm(), "m",
+        "the camera is at most " + formatDouble(L::kMaxCameraDistance) + " m from the shoulder");
+  return {};
+}
 
 namespace recording_detail {
 
@@ -138,9 +244,15 @@ void checkMetaWritable(const std::string& file, const RecordingMeta& meta) {
          std::all_of(c.dist.begin(), c.dist.end(), [](double d) { return std::isfinite(d); });
   }
   if (!ok) throw RecordingError(file, 0, 0, "cannot write non-finite values in the sidecar");
+  if (const std::string why = metaProblem(meta); !why.empty())
+    throw RecordingError(file, 0, 0, "cannot write the sidecar: " + why);
 }
 
 }  // namespace recording_detail
+
+namespace {
+RecordingMeta sidecarFromJson(const std::string& file, Json& j);
+}  // namespace
 
 RecordingMeta readSidecar(const fs::path& jsonPath) {
   const std::string file = jsonPath.string();
@@ -154,7 +266,23 @@ RecordingMeta readSidecar(const fs::path& jsonPath) {
     if (const auto p = what.find("] "); p != std::string::npos) what.erase(0, p + 2);
     throw RecordingError(file, line, column,
                          "bad JSON at byte " + std::to_string(e.byte) + ": " + what);
+  } catch (const Json::exception& e) {  // e.g. out_of_range for a number such as 1e999
+    std::string what = e.what();
+    if (const auto p = what.find("] "); p != std::string::npos) what.erase(0, p + 2);
+    const auto [line, column] = tokenPosition(text, what);
+    throw RecordingError(file, line, column, "bad JSON: " + what);
   }
+  try {
+    return sidecarFromJson(file, j);
+  } catch (const Json::exception& e) {  // a check above missed a type: still name the file
+    throw RecordingError(file, 0, 0, std::string("unexpected JSON content: ") + e.what());
+  }
+}
+
+namespace {
+
+/// The checked contents of a parsed sidecar.
+RecordingMeta sidecarFromJson(const std::string& file, Json& j) {
   if (!j.is_object()) metaFail(file, "the sidecar must be a JSON object");
 
   if (!j.contains("format")) metaFail(file, "missing \"format\": expected \"armtrack-recording\"");
@@ -225,8 +353,11 @@ RecordingMeta readSidecar(const fs::path& jsonPath) {
     }
   }
   // Unknown keys are accepted and ignored.
+  if (const std::string why = metaProblem(meta); !why.empty()) metaFail(file, why);
   return meta;
 }
+
+}  // namespace
 
 void writeSidecar(const fs::path& jsonPath, const RecordingMeta& meta) {
   checkMetaWritable(jsonPath.string(), meta);
