@@ -1,11 +1,13 @@
 // Writers of the open recording format (docs/recording-format.md): a whole recording at once,
 // and row by row for live sessions.
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string_view>
 
@@ -161,12 +163,50 @@ RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& m
   m_present[kCamElbow] = c.camElbow;
   m_present[kTruth] = c.truth;
   m_present[kEstimate] = c.estimate;
-  writeSidecar(sidecarPath(csvPath), meta);
-  m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (m_fd < 0)
-    throw RecordingError(csvPath.string(), 0, 0, "cannot create the file: " + osReason(errno));
-  m_buf = fileHeader(m_present);
-  flush();
+  // Check everything that can be checked before creating anything, so a refused recording
+  // leaves no file behind (not even a sidecar).
+  const std::string name = csvPath.string();
+  const fs::path jsonPath = sidecarPath(csvPath);
+  checkMetaWritable(jsonPath.string(), meta);
+  if (jsonPath == csvPath)
+    throw RecordingError(name, 0, 0,
+                         "a recording's name must not end in .json, the extension of its sidecar");
+  std::error_code ec;
+  if (fs::is_directory(csvPath, ec))
+    throw RecordingError(name, 0, 0, "cannot record into a directory; give a file name");
+  if (fs::is_directory(jsonPath, ec))
+    throw RecordingError(jsonPath.string(), 0, 0,
+                         "cannot write the sidecar: is a directory; give another file name");
+  bool created = true;
+  m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (m_fd < 0 && errno == EEXIST) {
+    created = false;
+    m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CLOEXEC);  // not truncated until locked
+  }
+  if (m_fd < 0) throw RecordingError(name, 0, 0, "cannot create the file: " + osReason(errno));
+  // One writer per file: the lock is held until the file is closed (or the process ends).
+  if (::flock(m_fd, LOCK_EX | LOCK_NB) != 0) {
+    const int err = errno;
+    ::close(m_fd);
+    m_fd = -1;
+    if (err == EWOULDBLOCK)
+      throw RecordingError(name, 0, 0,
+                           "another recording is being written to this file (another process "
+                           "holds its lock); choose another file or end that recording first");
+    throw RecordingError(name, 0, 0, "cannot lock the file: " + osReason(err));
+  }
+  try {
+    writeSidecar(jsonPath, meta);
+    if (!created && ::ftruncate(m_fd, 0) != 0)
+      throw RecordingError(name, 0, 0, "cannot empty the file: " + osReason(errno));
+    m_buf = fileHeader(m_present);
+    flush();
+  } catch (...) {
+    if (created) ::unlink(csvPath.c_str());
+    ::close(m_fd);
+    m_fd = -1;
+    throw;
+  }
 }
 
 RecordingWriter::~RecordingWriter() {
@@ -206,13 +246,28 @@ void RecordingWriter::flush() {
   // completes the file; a row cut by the failure is completed by that retry (or dropped by the
   // reader if none comes).
   std::size_t written = 0;
+  auto countLines = [&] {
+    const char* p = m_buf.data();
+    const char* e = p + written;
+    while ((p = static_cast<const char*>(std::memchr(p, '\n', static_cast<std::size_t>(e - p))))) {
+      ++p;
+      ++m_linesWritten;
+    }
+  };
   try {
     writeAll(m_buf, written);
   } catch (...) {
+    countLines();
     m_buf.erase(0, written);
     throw;
   }
+  countLines();
   m_buf.clear();
+}
+
+std::uint64_t RecordingWriter::rowsWritten() const {
+  constexpr std::uint64_t kHeaderLines = 2;  // the comment and the column names
+  return m_linesWritten > kHeaderLines ? m_linesWritten - kHeaderLines : 0;
 }
 
 void RecordingWriter::sync() {

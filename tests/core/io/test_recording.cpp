@@ -919,6 +919,90 @@ TEST_F(RecordingTest, NonPrintableBytesInACellAreShownEscaped) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// Item 8: one writer per file, nothing created for an unusable path.
+
+TEST_F(RecordingTest, SecondWriterOnTheSameFileIsRefusedAndTheFirstRecordingSurvives) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingMeta meta;
+  meta.g = 9.80665;
+  RecordingWriter first(p, meta, liveColumns());
+  for (int i = 0; i < 100; ++i) first.append(liveRow(i));
+  first.flush();
+  RecordingMeta other;
+  other.geometry.l3 = 0.3;
+  RecordingColumns otherColumns;
+  otherColumns.forearm = true;
+  const RecordingError e = errorOf([&] { RecordingWriter second(p, other, otherColumns); });
+  EXPECT_EQ(e.file(), p.string());
+  EXPECT_NE(e.message().find("another recording is being written to this file"), std::string::npos)
+      << e.message();
+  for (int i = 100; i < 200; ++i) first.append(liveRow(i));
+  first.close();
+  const Recording rec = readRecording(p);
+  EXPECT_TRUE(rec.warnings.empty());
+  EXPECT_EQ(rec.meta.g, 9.80665);  // the sidecar is the first writer's
+  EXPECT_EQ(rec.meta.geometry.l3, ArmGeometry{}.l3);
+  ASSERT_EQ(rec.samples.size(), 200u);
+  for (int i = 0; i < 200; ++i) EXPECT_EQ(rec.samples[static_cast<std::size_t>(i)].t, liveRow(i).t);
+  // Once the first is closed, the file can be written again (the caller decides on replacing).
+  RecordingWriter third(p, other, otherColumns);
+  third.close();
+  EXPECT_EQ(readRecording(p).samples.size(), 0u);
+}
+
+TEST_F(RecordingTest, WriterOnADirectoryOrJsonNameCreatesNothing) {
+  fs::create_directory(dir_ / "d");
+  RecordingError e = errorOf([&] { RecordingWriter w(dir_ / "d", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (dir_ / "d").string());
+  EXPECT_NE(e.message().find("directory"), std::string::npos) << e.message();
+  fs::create_directory(dir_ / "s.json");
+  e = errorOf([&] { RecordingWriter w(dir_ / "s.csv", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (dir_ / "s.json").string());
+  e = errorOf([&] { RecordingWriter w(dir_ / "x.json", RecordingMeta{}, liveColumns()); });
+  EXPECT_NE(e.message().find(".json"), std::string::npos) << e.message();
+  EXPECT_EQ(dirEntries(), (std::set<std::string>{"d", "s.json"}));  // no d.json, s.csv, x.json
+  EXPECT_TRUE(fs::is_empty(dir_ / "d"));
+}
+
+#ifdef __linux__
+// Item 9: the writer's own account of what reached the file.
+TEST_F(RecordingTest, WriterCountsTheRowsThatReachedTheFile) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingWriter w(p, RecordingMeta{}, liveColumns());
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit limited = old;
+  limited.rlim_cur = 32 * 1024;
+  const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+  bool failed = false;
+  for (int i = 0; i < 3000; ++i) {
+    w.append(liveRow(i));
+    if (i % 100 == 99) {
+      try {
+        w.flush();
+      } catch (const RecordingError&) {
+        failed = true;
+      }
+    }
+  }
+  std::uint64_t writtenWhileFull = w.rowsWritten();
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, oldHandler);
+  ASSERT_TRUE(failed) << "the size limit never hit";
+  EXPECT_EQ(w.rows(), 3000u);
+  // Independent truth: the complete lines in the file, less the comment and the header.
+  std::string text = readText(p);
+  const auto lines = static_cast<std::uint64_t>(std::count(text.begin(), text.end(), '\n'));
+  EXPECT_EQ(writtenWhileFull, lines - 2);
+  EXPECT_LT(writtenWhileFull, 3000u);
+  w.close();
+  EXPECT_EQ(w.rowsWritten(), 3000u);
+  EXPECT_EQ(readRecording(p).samples.size(), 3000u);
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
 // Timing (run by hand: --gtest_also_run_disabled_tests --gtest_filter=*Timing*)
 
 TEST_F(RecordingTest, DISABLED_Timing600kRows) {
