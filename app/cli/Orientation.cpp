@@ -36,6 +36,7 @@ names the columns t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z (s, rad/s, m/s^2) and wr
 
 Options:
   --out FILE         write the quaternions here (default: standard output)
+  --overwrite        replace the --out file if it exists (otherwise an error)
   --tau-acc S        accelerometer low-pass time constant, s (default 3)
   --no-rest-bias     no gyroscope bias estimation at rest
   --no-motion-bias   no gyroscope bias estimation during motion
@@ -159,14 +160,14 @@ class ImuCsvParser {
     const auto r = std::from_chars(b, e, x);
     if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
     if (r.ptr != e || r.ec == std::errc::invalid_argument) {
-      fail(
-          lineNo, column,
-          "bad number " + inQuotes(cell) + where + " (expected a decimal number such as -1.25e-3)");
+      fail(lineNo, column,
+           "bad number " + quotedCell(cell) + where +
+               " (expected a decimal number such as -1.25e-3)");
     }
     if (r.ec == std::errc::result_out_of_range)
-      fail(lineNo, column, "number out of range " + inQuotes(cell) + where);
+      fail(lineNo, column, "number out of range " + quotedCell(cell) + where);
     fail(lineNo, column,
-         "not a finite number " + inQuotes(cell) + where + " (NaN and infinity are not allowed)");
+         "not a finite number " + quotedCell(cell) + where + " (NaN and infinity are not allowed)");
   }
 
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
@@ -191,7 +192,8 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
                {{"--out", true},
                 {"--tau-acc", true},
                 {"--no-rest-bias", false},
-                {"--no-motion-bias", false}});
+                {"--no-motion-bias", false},
+                {"--overwrite", false}});
   if (a.help()) {
     out << kOrientationHelp;
     return 0;
@@ -208,6 +210,7 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
     outPath = *v;
     if (samePath(*outPath, input))
       a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the input");
+    checkOutputPath(*outPath, a.flag("--overwrite"));
   }
 
   const ImuSeries s = readImuCsv(input);
