@@ -1,6 +1,11 @@
 #include "app/cli/CsvOutput.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <stdexcept>
 #include <system_error>
@@ -23,9 +28,20 @@ void checkOne(const std::filesystem::path& target, bool overwrite, const char* w
   const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   if (!fs::is_directory(folder, ec))
     throw std::runtime_error(name + ": the folder " + folder.string() + " does not exist");
-  if (fs::exists(fs::symlink_status(target, ec)) && !overwrite)
+  if (!fs::exists(fs::symlink_status(target, ec))) return;
+  if (!overwrite)
     throw std::runtime_error(name + ": exists; pass --overwrite to replace it, or choose another " +
                              "file name for the " + what);
+  // A recording in progress holds a lock on its file (RecordingWriter): replacing the file would
+  // leave that recording writing into a file that no longer has a name.
+  const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return;
+  const bool locked = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+  ::close(fd);
+  if (locked)
+    throw std::runtime_error(name +
+                             ": another recording is being written to this file; it cannot be "
+                             "replaced until that recording ends");
 }
 
 }  // namespace

@@ -303,6 +303,22 @@ TEST_F(CliTest, ExistingOutputsAreReplacedOnlyWithOverwrite) {
   r = cli({"estimate", rec.string(), "--out", out.string(), "--overwrite"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(fileText(out).find("t,th0"), std::string::npos);
+  // A recording being written (its writer holds a lock) is not replaced even with --overwrite.
+  {
+    const fs::path live = path("live.csv");
+    armtrack::RecordingWriter writer(live, armtrack::RecordingMeta{}, armtrack::RecordingColumns{});
+    r = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out", live.string(),
+             "--overwrite"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find(live.string() + ": another recording is being written to this file"),
+              std::string::npos)
+        << r.err;
+    r = cli({"estimate", rec.string(), "--out", live.string(), "--overwrite"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("another recording is being written"), std::string::npos) << r.err;
+    writer.close();
+    EXPECT_TRUE(armtrack::readRecording(live).samples.empty());
+  }
   // A directory is never an output, with or without --overwrite.
   r = cli({"estimate", rec.string(), "--out", m_dir.string(), "--overwrite"});
   EXPECT_EQ(r.code, 1);
