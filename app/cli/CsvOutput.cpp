@@ -29,19 +29,19 @@ void checkOne(const std::filesystem::path& target, bool overwrite, const char* w
   if (!fs::is_directory(folder, ec))
     throw std::runtime_error(name + ": the folder " + folder.string() + " does not exist");
   if (!fs::exists(fs::symlink_status(target, ec))) return;
+  // A recording in progress holds a lock on its file (RecordingWriter): say so first, since
+  // replacing the file would leave that recording writing into a file that has no name.
+  if (const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK); fd >= 0) {
+    const bool locked = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd);
+    if (locked)
+      throw std::runtime_error(name +
+                               ": another recording is being written to this file; it cannot be "
+                               "replaced until that recording ends");
+  }
   if (!overwrite)
     throw std::runtime_error(name + ": exists; pass --overwrite to replace it, or choose another " +
                              "file name for the " + what);
-  // A recording in progress holds a lock on its file (RecordingWriter): replacing the file would
-  // leave that recording writing into a file that no longer has a name.
-  const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) return;
-  const bool locked = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
-  ::close(fd);
-  if (locked)
-    throw std::runtime_error(name +
-                             ": another recording is being written to this file; it cannot be "
-                             "replaced until that recording ends");
 }
 
 }  // namespace
