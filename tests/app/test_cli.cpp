@@ -236,6 +236,30 @@ TEST_F(CliTest, ImpossibleSidecarGeometryIsRefusedNamingFileAndKey) {
   EXPECT_NE(r.err.find("1e999"), std::string::npos) << r.err;
 }
 
+TEST_F(CliTest, CameraFileErrorsNameTheFileAndWhereInIt) {
+  const fs::path cam = path("cam.json");
+  const fs::path pose = path("pose.json");
+  writeFile(pose, R"({"R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t_m": [0, 0, 0]})");
+  auto registerWith = [&](const std::string& camText) {
+    writeFile(cam, camText);
+    return cli({"camera-register", "--camera", cam.string(), "--image", path("none.png").string(),
+                "--board-pose", pose.string(), "--out", path("o.json").string()});
+  };
+  CliResult r = registerWith("{\"format\": \"armtrack-camera\",\n \"version\": 1, \"x\": 1e999}");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(cam.string() + ": not valid JSON"), std::string::npos) << r.err;
+  // Before: "number overflow parsing '1e999'" without a position.
+  EXPECT_NE(r.err.find("'1e999' at line 2, column 21"), std::string::npos) << r.err;
+  r = registerWith("{\"format\": \"armtrack-camera\",\n \"version\": 1, \"x\": }");
+  EXPECT_NE(r.err.find(cam.string() + ": not valid JSON"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 2, column 21"), std::string::npos) << r.err;
+  r = registerWith(R"({"format": "armtrack-camera", "version": 1, "image_size": [640, 480],
+    "intrinsics": {"fx": 0, "fy": 600, "cx": 320, "cy": 240}, "distortion": [0, 0, 0, 0, 0]})");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(cam.string() + ": 'intrinsics.fx': must be > 0"), std::string::npos)
+      << r.err;
+}
+
 TEST_F(CliTest, NulByteInACellIsShownEscapedInTheError) {
   const fs::path rec = path("nul.csv");
   writeFile(rec, "t,ua_gx,ua_gy,ua_gz,ua_ax,ua_ay,ua_az\n" + std::string("0,0\0zz", 6) +
