@@ -235,7 +235,7 @@ TEST(LiveCli, TwoRecordersOnOneFileTheSecondIsRefusedAndTheFirstRecordingIsWhole
   QTemporaryDir dir;
   const QString out = dir.filePath(QStringLiteral("shared.csv"));
   QProcess first;
-  first.start(QStringLiteral(ARMTRACK_CLI), recordArgs(out, QStringLiteral("4")));
+  first.start(QStringLiteral(ARMTRACK_CLI), recordArgs(out, QStringLiteral("6")));
   ASSERT_TRUE(first.waitForStarted());
   ASSERT_TRUE(waitForBytes(out.toStdString(), 2000));
   const std::string sidecarBefore = textOf(sidecarPath(out.toStdString()));
@@ -261,7 +261,7 @@ TEST(LiveCli, TwoRecordersOnOneFileTheSecondIsRefusedAndTheFirstRecordingIsWhole
   EXPECT_EQ(rec.meta.side, Side::Right);
   EXPECT_EQ(static_cast<long long>(rec.samples.size()), numberAfter(firstOut, "recorded "))
       << firstOut;
-  ASSERT_GT(rec.samples.size(), 3800u);
+  ASSERT_GT(rec.samples.size(), 5700u);
   for (std::size_t i = 1; i < rec.samples.size(); ++i)
     ASSERT_LT(rec.samples[i].t - rec.samples[i - 1].t, 0.05) << "a gap at row " << i;
 }
