@@ -1,4 +1,6 @@
 // Command dispatch and the simulate / estimate / study commands of armtrack-cli.
+#include <algorithm>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -70,6 +72,7 @@ the sidecar REC.json) that includes the true joint angles.
 Options:
   --trajectory NAME    sinusoid, multi-joint, shoulder-wheel, calibration or reaching (required)
   --out FILE           the recording to write (required)
+  --overwrite          replace FILE and its sidecar if they exist (otherwise an error)
   --duration S         length in s (default 10; calibration: the whole protocol, 54 s)
   --seed N             seed for the trajectory, noise and misalignment (default 1)
   --imu-rate HZ        rate of both IMUs (default 1000)
@@ -115,6 +118,7 @@ Options:
   --calibration FILE       apply a calibration made by "armtrack-cli calibrate" (IMU mounting,
                            gyroscope biases, segment lengths; docs/calibration.md)
   --out FILE               write the angles here (default: statistics only)
+  --overwrite              replace the --out file if it exists (otherwise an error)
 )";
 
 constexpr std::string_view kStudyHelp =
@@ -159,7 +163,7 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                                   {"--gyro-bias", true},       {"--misalignment", true},
                                   {"--amplitude", true},       {"--frequency", true},
                                   {"--wheel-period", true},    {"--peak-rate", true},
-                                  {"--peak-accel", true}});
+                                  {"--peak-accel", true},      {"--overwrite", false}});
   if (a.help()) {
     out << kSimulateHelp;
     return 0;
@@ -167,6 +171,7 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   noPositionals(a);
   const std::string name = a.required("--trajectory");
   const fs::path outPath = a.required("--out");
+  checkOutputPath(outPath, a.flag("--overwrite"), true);
 
   SimulationParams sim = defaultSimulation();
   // The calibration protocol has its own length; everything else defaults to 10 s.
@@ -256,7 +261,8 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                 {"--no-webcam", false},
                 {"--joint-accel-std", true},
                 {"--calibration", true},
-                {"--out", true}});
+                {"--out", true},
+                {"--overwrite", false}});
   if (a.help()) {
     out << kEstimateHelp;
     return 0;
@@ -281,6 +287,7 @@ int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     outPath = a.required("--out");
     if (samePath(*outPath, input) || samePath(*outPath, sidecarPath(input)))
       a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the recording");
+    checkOutputPath(*outPath, a.flag("--overwrite"));
   }
 
   std::error_code ec;
@@ -426,8 +433,27 @@ int study(const std::vector<std::string>& args, std::ostream& out, std::ostream&
 
 }  // namespace
 
-int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  constexpr std::string_view kError = "armtrack-cli: error: ";
+namespace {
+
+constexpr std::string_view kError = "armtrack-cli: error: ";
+
+/// calibrate's own options do not know --overwrite (docs/cli.md): the check is made here.
+int calibrateWithOutputCheck(std::vector<std::string> args, std::ostream& out, std::ostream& err) {
+  const bool overwrite = takeOverwriteFlag(args);
+  const bool help = std::find_if(args.begin(), args.end(), [](const std::string& a) {
+                      return a == "--help" || a == "-h";
+                    }) != args.end();
+  if (!help) {
+    if (const auto target = rawOptionValue(args, "--out"); target && !target->empty())
+      checkOutputPath(*target, overwrite);
+  }
+  const int code = calibrateCommand(args, out, err);
+  if (help)
+    out << "  --overwrite          replace the --out file if it exists (otherwise an error)\n";
+  return code;
+}
+
+int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   try {
     if (args.empty()) throw UsageError("", "missing command");
     const std::string& cmd = args[0];
@@ -443,7 +469,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (cmd == "simulate") return simulate(rest, out, err);
     if (cmd == "estimate") return estimate(rest, out, err);
     if (cmd == "study") return study(rest, out, err);
-    if (cmd == "calibrate") return calibrateCommand(rest, out, err);
+    if (cmd == "calibrate") return calibrateWithOutputCheck(rest, out, err);
     if (cmd == "orientation") return orientationCommand(rest, out, err);
     if (cmd == "devices") return devicesCommand(rest, out, err);
     if (cmd == "record") return recordCommand(rest, out, err);
@@ -464,6 +490,23 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     err << kError << "unexpected failure\n";
   }
   return 1;
+}
+
+}  // namespace
+
+int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const int code = dispatch(args, out, err);
+  // A report that never reached its reader (a full disk, /dev/full, a closed file) is a failure.
+  errno = 0;
+  out.flush();
+  if (!out) {
+    const int e = errno;
+    err << kError << "cannot write the results to standard output"
+        << (e != 0 ? " (" + std::generic_category().message(e) + ")" : std::string())
+        << "; they are lost\n";
+    return code == 0 ? 1 : code;
+  }
+  return code;
 }
 
 }  // namespace armtrack::cli

@@ -1,7 +1,16 @@
 #include "app/cli/CsvOutput.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <stdexcept>
+#include <system_error>
+
+#include "core/io/Recording.h"
 
 namespace armtrack::cli {
 
@@ -9,7 +18,68 @@ namespace {
 
 constexpr std::size_t kFlushBytes = std::size_t{1} << 20;
 
+void checkOne(const std::filesystem::path& target, bool overwrite, const char* what) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const std::string name = target.string();
+  const fs::file_status st = fs::status(target, ec);
+  if (fs::is_directory(st))
+    throw std::runtime_error(name + ": is a directory; give a file name for the " + what);
+  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (!fs::is_directory(folder, ec))
+    throw std::runtime_error(name + ": the folder " + folder.string() + " does not exist");
+  if (!fs::exists(fs::symlink_status(target, ec))) return;
+  // A recording in progress holds a lock on its file (RecordingWriter): say so first, since
+  // replacing the file would leave that recording writing into a file that has no name.
+  if (const int fd = ::open(target.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK); fd >= 0) {
+    const bool locked = ::flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
+    ::close(fd);
+    if (locked)
+      throw std::runtime_error(name +
+                               ": another recording is being written to this file; it cannot be "
+                               "replaced until that recording ends");
+  }
+  if (!overwrite)
+    throw std::runtime_error(name + ": exists; pass --overwrite to replace it, or choose another " +
+                             "file name for the " + what);
+}
+
 }  // namespace
+
+void checkOutputPath(const std::filesystem::path& target, bool overwrite, bool recording) {
+  if (!recording) {
+    checkOne(target, overwrite, "output");
+    return;
+  }
+  const std::filesystem::path json = armtrack::sidecarPath(target);
+  if (json == target)
+    throw std::runtime_error(target.string() +
+                             ": a recording's name must not end in .json, the extension of its "
+                             "sidecar; use e.g. .csv");
+  checkOne(target, overwrite, "recording");
+  checkOne(json, overwrite, "recording's sidecar");
+}
+
+bool takeOverwriteFlag(std::vector<std::string>& args) {
+  const auto end = std::remove(args.begin(), args.end(), std::string("--overwrite"));
+  const bool found = end != args.end();
+  args.erase(end, args.end());
+  return found;
+}
+
+std::optional<std::string> rawOptionValue(const std::vector<std::string>& args,
+                                          std::string_view name) {
+  std::optional<std::string> value;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == name && i + 1 < args.size()) {
+      value = args[++i];
+    } else if (a.size() > name.size() && a.starts_with(name) && a[name.size()] == '=') {
+      value = a.substr(name.size() + 1);
+    }
+  }
+  return value;
+}
 
 CsvOutput::CsvOutput(std::string header, std::optional<std::filesystem::path> target,
                      std::ostream* out)

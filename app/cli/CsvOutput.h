@@ -7,10 +7,27 @@
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "core/io/AtomicFile.h"
 
 namespace armtrack::cli {
+
+/// Refuses an output before any work is done: throws std::runtime_error naming the path when it is
+/// a directory, when its folder does not exist, or when it exists and overwrite is false ("...
+/// exists; pass --overwrite to replace it"). With recording, the sidecar beside it
+/// (core/io/Recording.h, sidecarPath) is checked the same way, and a name whose sidecar would be
+/// the file itself (ending in .json) is refused.
+void checkOutputPath(const std::filesystem::path& target, bool overwrite, bool recording = false);
+
+/// Removes every "--overwrite" from args (the words after the command name); true when there was
+/// one. For commands whose own options do not list it (calibrate): the dispatcher checks the
+/// output with checkOutputPath instead.
+bool takeOverwriteFlag(std::vector<std::string>& args);
+/// The value of "--name VALUE" or "--name=VALUE" in args (the last one), without parsing the rest.
+std::optional<std::string> rawOptionValue(const std::vector<std::string>& args,
+                                          std::string_view name);
 
 /// Writes a header line and rows "t,v0,v1,..." of doubles in their shortest round-trip form.
 /// With a target, rows go through an AtomicFile (core/io/AtomicFile.h): commit() puts the whole

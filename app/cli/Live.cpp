@@ -1,22 +1,30 @@
 #include "app/cli/Live.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <QCoreApplication>
 #include <QSettings>
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
+#include <system_error>
 #include <thread>
 
 #include "app/cli/Args.h"
+#include "app/cli/CsvOutput.h"
 #include "app/plugins/PluginRegistry.h"
+#include "core/io/Recording.h"
 #include "core/session/Session.h"
 #include "devices/api/Options.h"
 
@@ -30,26 +38,31 @@ Plugins are looked for in --plugins folders, the settings' devices/pluginPath,
 $ARMTRACK_PLUGIN_PATH, <exe>/../plugins and <exe>/../lib/armtrack/plugins.
 )";
 
-constexpr const char* kRecordHelp = R"(usage: armtrack-cli record --device NAME[:OPTIONS] [--device ...] --duration S --out FILE.csv
+constexpr const char* kRecordHelp =
+    R"(usage: armtrack-cli record --device NAME[:OPTIONS] [--device ...] --duration S --out FILE.csv
                           [--plugins DIR] [--filter ekf|ukf] [--no-estimate] [--side right|left]
-                          [--latency-window S] [--quiet]
+                          [--latency-window S] [--quiet] [--overwrite]
 
 Runs a live session and records it in the open format (docs/recording-format.md): the raw
 samples in time order, the angles estimated live (est_th*) and, with the virtual arm, the true
 angles (true_th*). OPTIONS are key=value pairs joined by ',' (armtrack-cli devices lists them),
 e.g. --device virtual-arm:sensors=upper+forearm+kinect,disappear=10+3
-Device states and problems are printed as they happen; Ctrl-C ends the session early and keeps
-everything recorded so far.
+Device states and problems are printed as they happen; Ctrl-C (SIGINT), SIGTERM or SIGHUP ends
+the session early and keeps everything recorded so far. An existing FILE.csv (or its sidecar) is
+only replaced with --overwrite, and a file another recording is being written to never is.
+The row count printed is what the file holds; if rows could not be written (a full disk), the
+number lost is printed and the exit status is 1.
 )";
 
-constexpr const char* kLiveHelp = R"(usage: armtrack-cli live --device NAME[:OPTIONS] [--device ...] [--duration S] [--stats]
+constexpr const char* kLiveHelp =
+    R"(usage: armtrack-cli live --device NAME[:OPTIONS] [--device ...] [--duration S] [--stats]
                         [--stats-interval S] [--out FILE.csv] [--plugins DIR] [--filter ekf|ukf]
-                        [--side right|left] [--latency-window S] [--quiet]
+                        [--side right|left] [--latency-window S] [--quiet] [--overwrite]
 
 Runs a live session (until --duration, or Ctrl-C) and prints the joint angles once a second, or
 with --stats the pipeline's figures: per stream the sample rate, samples received, rejected and
 late, link losses; samples lost; sample-to-estimate latency percentiles; CPU use; resident
-memory. --out records the session as `record` does.
+memory. --out records the session as `record` does (--overwrite to replace an existing file).
 )";
 
 std::atomic<bool> g_interrupted{false};
@@ -94,6 +107,26 @@ double processCpuSeconds() {
          1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
 }
 
+/// The rows a recording holds (a last line cut short not counted). Throws RecordingError.
+std::uint64_t rowsInRecording(const std::string& path) {
+  RecordingReader reader(path);
+  ArmSample s;
+  while (reader.next(s)) {
+  }
+  return reader.rows();
+}
+
+/// Removes the empty file made to claim a recording's name, unless a writer has it (locked) or
+/// wrote into it since.
+void removeUnusedPlaceholder(const std::string& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  struct stat st {};
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &st) == 0 && st.st_size == 0)
+    ::unlink(path.c_str());
+  ::close(fd);
+}
+
 struct LiveOptions {
   std::vector<std::string> devices;
   double duration = 0.0;  // 0 = until Ctrl-C
@@ -105,18 +138,19 @@ struct LiveOptions {
 };
 
 const std::vector<OptionSpec> kSessionOptions = {
-    {"--device", true},     {"--duration", true},  {"--out", true},
-    {"--plugins", true},    {"--filter", true},    {"--no-estimate", false},
-    {"--side", true},       {"--latency-window", true}, {"--stats", false},
-    {"--stats-interval", true}, {"--quiet", false}};
+    {"--device", true}, {"--duration", true},       {"--out", true},    {"--plugins", true},
+    {"--filter", true}, {"--no-estimate", false},   {"--side", true},   {"--latency-window", true},
+    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false}, {"--overwrite", false}};
 
-void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent,
-                double rssMb) {
+/// recorded: the rows to report as recorded (the session's count unless given).
+void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent, double rssMb,
+                std::optional<std::uint64_t> recorded = std::nullopt) {
   char line[256];
-  std::snprintf(line, sizeof line, "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n",
-                s.elapsed, static_cast<unsigned long long>(s.rows),
+  std::snprintf(line, sizeof line,
+                "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n", s.elapsed,
+                static_cast<unsigned long long>(s.rows),
                 static_cast<unsigned long long>(s.estimates),
-                static_cast<unsigned long long>(s.recordedRows),
+                static_cast<unsigned long long>(recorded.value_or(s.recordedRows)),
                 static_cast<unsigned long long>(s.lost()));
   out << line;
   for (std::size_t i = 0; i < s.streams.size(); ++i) {
@@ -160,6 +194,15 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   o.statsInterval = a.positive("--stats-interval", 10.0);
   o.quiet = a.flag("--quiet");
   o.anglesEverySecond = !record && !o.stats;
+  const bool overwrite = a.flag("--overwrite");
+  if (overwrite && o.out.empty()) a.fail("--overwrite: only applies with --out");
+  if (!o.out.empty()) {  // before anything starts
+    try {
+      checkOutputPath(o.out, overwrite, true);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string("cannot record: ") + e.what());
+    }
+  }
 
   session::SessionParams params;
   const std::string filter = a.value("--filter").value_or("ekf");
@@ -204,13 +247,31 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
                                                                                   ? QString::number(&spec - o.devices.data() + 1)
                                                                                   : QStringLiteral("1")));
   }
+  // Without --overwrite, claim the name now (O_EXCL), so a recording that appeared since the
+  // check above is not replaced; the session's writer then locks and fills this file.
+  bool placeholder = false;
+  if (!o.out.empty() && !overwrite) {
+    const int fd = ::open(o.out.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (fd < 0) {
+      err << "armtrack-cli: error: " << o.out << ": "
+          << (errno == EEXIST
+                  ? "exists; pass --overwrite to replace it, or choose another file name"
+                  : "cannot create the file: " + std::generic_category().message(errno))
+          << "\n";
+      return 1;
+    }
+    ::close(fd);
+    placeholder = true;
+  }
   if (const QString why = session.start(); !why.isEmpty()) {
+    if (placeholder) removeUnusedPlaceholder(o.out);
     err << "armtrack-cli: error: " << why.toStdString() << "\n";
     return 1;
   }
   g_interrupted = false;
   const auto oldInt = std::signal(SIGINT, onInterrupt);
   const auto oldTerm = std::signal(SIGTERM, onInterrupt);
+  const auto oldHup = std::signal(SIGHUP, onInterrupt);  // a closed terminal ends it cleanly too
 
   const double start = devices::hostNow();
   const double cpu0 = processCpuSeconds();
@@ -266,11 +327,23 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   session.stop();
   std::signal(SIGINT, oldInt);
   std::signal(SIGTERM, oldTerm);
+  std::signal(SIGHUP, oldHup);
   drainEvents();
   const session::SessionStats s = session.stats();
+  // The account of the recording is what the file holds, read back, not what the recorder was
+  // handed: rows that a full disk kept from the file are counted as lost.
+  std::optional<std::uint64_t> onDisk;
+  std::string unreadable;
+  if (!o.out.empty()) {
+    try {
+      onDisk = rowsInRecording(o.out);
+    } catch (const std::exception& e) {
+      unreadable = e.what();
+    }
+  }
   if (o.stats || record) {
     out << (g_interrupted ? "interrupted; " : "") << "session summary:\n";
-    printStats(out, s, 100.0 * (cpu - cpu0) / (end - start), rss);
+    printStats(out, s, 100.0 * (cpu - cpu0) / (end - start), rss, onDisk);
     if (rssAtMinute > 0.0) {
       char line[200];
       std::snprintf(line, sizeof line,
@@ -282,11 +355,21 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
     }
   }
   if (!o.out.empty()) {
-    out << "recorded " << s.recordedRows << " rows in " << o.out << "\n";
-    if (!s.recorderError.empty()) {
-      err << "armtrack-cli: error: the recording is incomplete: " << s.recorderError << "\n";
+    if (!onDisk) {
+      err << "armtrack-cli: error: the recording cannot be read back: " << unreadable << "\n";
       return 1;
     }
+    out << "recorded " << *onDisk << " rows in " << o.out << "\n";
+    const std::uint64_t handed = s.recordedRows;
+    if (*onDisk < handed) {
+      err << "armtrack-cli: error: the recording is incomplete: " << handed - *onDisk << " of "
+          << handed << " rows were lost"
+          << (s.recorderError.empty() ? std::string() : " (" + s.recorderError + ")") << "\n";
+      return 1;
+    }
+    if (!s.recorderError.empty())
+      err << "note: writing the recording failed for a while (" << s.recorderError
+          << ") and then went on; no row was lost\n";
   }
   return 0;
 }

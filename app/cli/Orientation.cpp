@@ -43,6 +43,7 @@ from the accelerometer. Rejected rows and gaps are counted on standard error.
 
 Options:
   --out FILE         write the quaternions here (default: standard output)
+  --overwrite        replace the --out file if it exists (otherwise an error)
   --tau-acc S        accelerometer low-pass time constant, s (default 3)
   --no-rest-bias     no gyroscope bias estimation at rest
   --no-motion-bias   no gyroscope bias estimation during motion
@@ -176,14 +177,14 @@ class ImuCsvParser {
     if (k > 0 && r.ptr == e && (r.ec == std::errc() || r.ec == std::errc::result_out_of_range))
       return std::numeric_limits<double>::quiet_NaN();
     if (r.ptr != e || r.ec == std::errc::invalid_argument) {
-      fail(
-          lineNo, column,
-          "bad number " + inQuotes(cell) + where + " (expected a decimal number such as -1.25e-3)");
+      fail(lineNo, column,
+           "bad number " + quotedCell(cell) + where +
+               " (expected a decimal number such as -1.25e-3)");
     }
     if (r.ec == std::errc::result_out_of_range)
-      fail(lineNo, column, "number out of range " + inQuotes(cell) + where);
+      fail(lineNo, column, "number out of range " + quotedCell(cell) + where);
     fail(lineNo, column,
-         "not a finite number " + inQuotes(cell) + where + " (NaN and infinity are not allowed)");
+         "not a finite number " + quotedCell(cell) + where + " (NaN and infinity are not allowed)");
   }
 
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
@@ -211,7 +212,8 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
                 {"--no-motion-bias", false},
                 {"--gyr-max", true},
                 {"--acc-max", true},
-                {"--gap", true}});
+                {"--gap", true},
+                {"--overwrite", false}});
   if (a.help()) {
     out << kOrientationHelp;
     return 0;
@@ -231,6 +233,7 @@ int orientationCommand(const std::vector<std::string>& args, std::ostream& out, 
     outPath = *v;
     if (samePath(*outPath, input))
       a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the input");
+    checkOutputPath(*outPath, a.flag("--overwrite"));
   }
 
   const ImuSeries s = readImuCsv(input);

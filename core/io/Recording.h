@@ -109,12 +109,19 @@ Recording readRecording(const std::filesystem::path& csvPath);
 /// Throws RecordingError when the file cannot be written (e.g. a full disk).
 void writeRecording(const std::filesystem::path& csvPath, const Recording& recording);
 
-/// Writes a recording row by row, for live sessions. The sidecar is written first (all or
-/// nothing); the CSV goes straight to its final name, so a session that is killed leaves a
-/// readable file up to the last flush (readRecording drops a last line cut short, with a
-/// warning). Throws RecordingError on every failure (a full disk, a removed folder), with the
-/// operating system's reason; rows appended before a failure that were flushed stay on disk.
-/// One thread at a time.
+/// Writes a recording row by row, for live sessions. The CSV goes straight to its final name, so
+/// a session that is killed leaves a readable file up to the last flush (readRecording drops a
+/// last line cut short, with a warning). Throws RecordingError on every failure (a full disk, a
+/// removed folder), with the operating system's reason; rows appended before a failure that were
+/// flushed stay on disk, and rows not yet written stay buffered for the next flush.
+///
+/// Opening checks the metadata (metaProblem) and that neither the CSV nor the sidecar path is a
+/// directory before creating anything; then it opens the CSV (an existing file is replaced: the
+/// caller decides whether that is allowed) and takes an exclusive lock on it (flock), held until
+/// the writer is closed or destroyed: a second writer on the same file, in this process or
+/// another, is refused with a message saying so, before it changes the file or its sidecar. Only
+/// then is the sidecar written (all or nothing) and the CSV emptied. A CSV the constructor
+/// created is removed again if a later step fails. One thread at a time.
 class RecordingWriter {
  public:
   RecordingWriter(const std::filesystem::path& csvPath, const RecordingMeta& meta,
@@ -133,7 +140,11 @@ class RecordingWriter {
   /// sync() and close. Further calls throw.
   void close();
 
+  /// Rows appended (buffered or written).
   std::uint64_t rows() const { return m_rows; }
+  /// Rows whose every byte the operating system has accepted (write(); fsync is another matter).
+  /// rows() - rowsWritten() rows are still buffered, e.g. while the disk is full.
+  std::uint64_t rowsWritten() const;
   const std::filesystem::path& path() const { return m_path; }
 
  private:
@@ -145,7 +156,29 @@ class RecordingWriter {
   int m_fd = -1;
   double m_prevT;
   std::uint64_t m_rows = 0;
+  std::uint64_t m_linesWritten = 0;  // newline-terminated lines written, the header's included
 };
+
+/// What a real arm, IMU mounting and camera can never exceed; a sidecar outside these limits is
+/// refused by readSidecar (and never written). docs/recording-format.md explains each limit.
+struct MetaLimits {
+  static constexpr double kMinSegment = 0.10;        ///< l3, l6 at least (m)
+  static constexpr double kMaxSegment = 0.60;        ///< l3, l6 at most (m)
+  static constexpr double kStrapMargin = 0.10;       ///< lu3 <= l3 + margin, lf6 <= l6 + margin (m)
+  static constexpr double kMaxStrapRadius = 0.15;    ///< |lu5|, |lf8| at most (m)
+  static constexpr double kMaxStrapAngle = 6.3;      ///< |thu4|, |thf7| at most (rad, about 2 pi)
+  static constexpr double kMinG = 9.5;               ///< g at least (m/s^2)
+  static constexpr double kMaxG = 10.2;              ///< g at most (m/s^2)
+  static constexpr double kMaxFocal = 1e6;           ///< fx, fy at most (pixels)
+  static constexpr double kMaxPrincipal = 1e6;       ///< |cx|, |cy| at most (pixels)
+  static constexpr double kMaxCameraDistance = 100;  ///< |t| at most (m)
+  static constexpr double kRotationTolerance = 1e-3;  ///< max |R^T R - I|, as PinholeCamera
+};
+
+/// The first value of meta that is not finite or outside MetaLimits, as a message that starts
+/// with its sidecar key in quotes (e.g. "\"geometry.l3\" is 0 m: ..."); empty when every value
+/// is possible. Any thread.
+std::string metaProblem(const RecordingMeta& meta);
 
 /// The sidecar path for a CSV path: same name, extension .json.
 std::filesystem::path sidecarPath(const std::filesystem::path& csvPath);

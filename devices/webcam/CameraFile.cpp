@@ -73,6 +73,28 @@ class Reader {
   std::string m_source;
 };
 
+/// The JSON library's message, with the line and column of the offending token added when the
+/// library gives none (out_of_range for a number such as 1e999 names the token, not where it is).
+std::string jsonErrorText(const json::exception& e, std::string_view text) {
+  std::string what = e.what();
+  if (dynamic_cast<const json::parse_error*>(&e)) return what;  // has "at line L, column C"
+  const auto open = what.find('\'');
+  const auto close = open == std::string::npos ? open : what.find('\'', open + 1);
+  if (close == std::string::npos || close == open + 1) return what;
+  const auto at = text.find(std::string_view(what).substr(open + 1, close - open - 1));
+  if (at == std::string_view::npos) return what;
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < at; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return what + " at line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
 json sizeJson(cv::Size s) {
   return json::array({s.width, s.height});
 }
@@ -108,7 +130,7 @@ CameraFile cameraFileFromJson(std::string_view text, const std::string& source) 
   try {
     j = json::parse(text.begin(), text.end());
   } catch (const json::exception& e) {  // parse_error, or out_of_range for a huge number
-    rd.fail("", std::string("not valid JSON (") + e.what() +
+    rd.fail("", "not valid JSON (" + jsonErrorText(e, text) +
                     "); make the file again with armtrack-cli camera-calibrate");
   }
   if (!j.is_object()) rd.fail("", "expected a JSON object");
@@ -210,7 +232,7 @@ BoardPoseFile boardPoseFromJson(std::string_view text, const std::string& source
   try {
     j = json::parse(text.begin(), text.end());
   } catch (const json::exception& e) {  // parse_error, or out_of_range for a huge number
-    rd.fail("", std::string("not valid JSON (") + e.what() + ")");
+    rd.fail("", "not valid JSON (" + jsonErrorText(e, text) + ")");
   }
   if (!j.is_object()) rd.fail("", "expected a JSON object");
   BoardPoseFile f;

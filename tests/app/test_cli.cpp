@@ -5,7 +5,9 @@
 #include <unistd.h>
 #include <algorithm>
 #include <fstream>
+#include <iterator>
 #include <sstream>
+#include <streambuf>
 #include <string>
 #include <vector>
 
@@ -194,6 +196,175 @@ TEST_F(CliTest, UnwritableOutputExitsWithOne) {
   const CliResult s = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out",
                            path("missing-dir/rec.csv").string()});
   EXPECT_EQ(s.code, 1) << s.err;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Issue 9, items 7, 8, 10, 12 through the CLI.
+
+std::string fileText(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeFile(const fs::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+TEST_F(CliTest, ImpossibleSidecarGeometryIsRefusedNamingFileAndKey) {
+  const fs::path rec = simulated(3.0);
+  const fs::path json = armtrack::sidecarPath(rec);
+  const std::string good = fileText(json);
+  // Before: l3 = 0 and negative lengths gave exit 0 and 14-172 deg errors, 1e300 one estimate.
+  for (const std::string& bad : {std::string("0"), std::string("-0.22"), std::string("1e300")}) {
+    std::string text = good;
+    const auto at = text.find("\"l3\": ");
+    ASSERT_NE(at, std::string::npos) << text;
+    text.replace(at, text.find(',', at) - at, "\"l3\": " + bad);
+    writeFile(json, text);
+    const CliResult r = cli({"estimate", rec.string()});
+    EXPECT_EQ(r.code, 1) << bad << "\n" << r.err;
+    EXPECT_NE(r.err.find(json.string() + ":0:0: \"geometry.l3\" is "), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("RMSE"), std::string::npos) << r.out;
+  }
+  std::string text = good;
+  text.replace(text.find("\"l3\": "), text.find(',', text.find("\"l3\": ")) - text.find("\"l3\": "),
+               "\"l3\": 1e999");
+  writeFile(json, text);
+  const CliResult r = cli({"estimate", rec.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(json.string() + ":"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("1e999"), std::string::npos) << r.err;
+}
+
+TEST_F(CliTest, CameraFileErrorsNameTheFileAndWhereInIt) {
+  const fs::path cam = path("cam.json");
+  const fs::path pose = path("pose.json");
+  writeFile(pose, R"({"R": [[1, 0, 0], [0, 1, 0], [0, 0, 1]], "t_m": [0, 0, 0]})");
+  auto registerWith = [&](const std::string& camText) {
+    writeFile(cam, camText);
+    return cli({"camera-register", "--camera", cam.string(), "--image", path("none.png").string(),
+                "--board-pose", pose.string(), "--out", path("o.json").string()});
+  };
+  CliResult r = registerWith("{\"format\": \"armtrack-camera\",\n \"version\": 1, \"x\": 1e999}");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(cam.string() + ": not valid JSON"), std::string::npos) << r.err;
+  // Before: "number overflow parsing '1e999'" without a position.
+  EXPECT_NE(r.err.find("'1e999' at line 2, column 21"), std::string::npos) << r.err;
+  r = registerWith("{\"format\": \"armtrack-camera\",\n \"version\": 1, \"x\": }");
+  EXPECT_NE(r.err.find(cam.string() + ": not valid JSON"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 2, column 21"), std::string::npos) << r.err;
+  r = registerWith(R"({"format": "armtrack-camera", "version": 1, "image_size": [640, 480],
+    "intrinsics": {"fx": 0, "fy": 600, "cx": 320, "cy": 240}, "distortion": [0, 0, 0, 0, 0]})");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(cam.string() + ": 'intrinsics.fx': must be > 0"), std::string::npos)
+      << r.err;
+}
+
+TEST_F(CliTest, NulByteInACellIsShownEscapedInTheError) {
+  const fs::path rec = path("nul.csv");
+  writeFile(rec, "t,ua_gx,ua_gy,ua_gz,ua_ax,ua_ay,ua_az\n" + std::string("0,0\0zz", 6) +
+                     ",0,0,0,0,9.81\n");
+  const CliResult r = cli({"estimate", rec.string()});
+  EXPECT_EQ(r.code, 1);
+  // Before: the message ended at "bad number \"0".
+  EXPECT_NE(r.err.find("bad number \"0\\x00zz\" in column \"ua_gx\""), std::string::npos) << r.err;
+  // The orientation command's own IMU reader likewise.
+  const fs::path imu = path("nul-imu.csv");
+  writeFile(imu, "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z\n" + std::string("0,0\0zz", 6) +
+                     ",0,0,0,0,9.81\n");
+  const CliResult o = cli({"orientation", imu.string()});
+  EXPECT_EQ(o.code, 1);
+  EXPECT_NE(o.err.find("bad number \"0\\x00zz\" in column \"gyr_x\""), std::string::npos) << o.err;
+}
+
+TEST_F(CliTest, ExistingOutputsAreReplacedOnlyWithOverwrite) {
+  const fs::path rec = simulated(3.0);
+  const std::string keep = "do not lose me\n";
+  // simulate: the recording and, separately, its sidecar.
+  const fs::path sim = path("sim.csv");
+  writeFile(sim, keep);
+  CliResult r =
+      cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out", sim.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(sim.string() + ": exists; pass --overwrite"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(sim), keep);
+  EXPECT_FALSE(fs::exists(path("sim.json")));
+  fs::remove(sim);
+  writeFile(path("sim.json"), keep);
+  r = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out", sim.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(path("sim.json").string() + ": exists"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(path("sim.json")), keep);
+  EXPECT_FALSE(fs::exists(sim));
+  r = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out", sim.string(),
+           "--overwrite"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_GE(armtrack::readRecording(sim).samples.size(), 1000u);  // 1 s of IMU rows at 1 kHz
+
+  // estimate, orientation and calibrate --out.
+  const fs::path out = path("out.csv");
+  writeFile(out, keep);
+  r = cli({"estimate", rec.string(), "--out", out.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(out.string() + ": exists; pass --overwrite"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(out), keep);
+  const fs::path imu = path("imu.csv");
+  writeFile(imu, "t,gyr_x,gyr_y,gyr_z,acc_x,acc_y,acc_z\n0,0,0,0,0,0,9.81\n0.01,0,0,0,0,0,9.81\n");
+  r = cli({"orientation", imu.string(), "--out", out.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(out.string() + ": exists"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(out), keep);
+  r = cli({"calibrate", rec.string(), "--out", out.string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(out.string() + ": exists"), std::string::npos) << r.err;
+  EXPECT_EQ(fileText(out), keep);
+  r = cli({"calibrate", "--help"});
+  EXPECT_NE(r.out.find("--overwrite"), std::string::npos) << r.out;
+
+  r = cli({"orientation", imu.string(), "--out", out.string(), "--overwrite"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(fileText(out).find("t,qw,qx,qy,qz"), std::string::npos);
+  r = cli({"estimate", rec.string(), "--out", out.string(), "--overwrite"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(fileText(out).find("t,th0"), std::string::npos);
+  // A recording being written (its writer holds a lock) is not replaced even with --overwrite.
+  {
+    const fs::path live = path("live.csv");
+    armtrack::RecordingWriter writer(live, armtrack::RecordingMeta{}, armtrack::RecordingColumns{});
+    r = cli({"simulate", "--trajectory", "sinusoid", "--duration", "1", "--out", live.string(),
+             "--overwrite"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find(live.string() + ": another recording is being written to this file"),
+              std::string::npos)
+        << r.err;
+    r = cli({"estimate", rec.string(), "--out", live.string(), "--overwrite"});
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find("another recording is being written"), std::string::npos) << r.err;
+    writer.close();
+    EXPECT_TRUE(armtrack::readRecording(live).samples.empty());
+  }
+  // A directory is never an output, with or without --overwrite.
+  r = cli({"estimate", rec.string(), "--out", m_dir.string(), "--overwrite"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("is a directory"), std::string::npos) << r.err;
+}
+
+/// A stream whose every write fails, as standard output on /dev/full or a full disk.
+class FullStreamBuf : public std::streambuf {
+ protected:
+  int overflow(int) override { return traits_type::eof(); }
+  std::streamsize xsputn(const char*, std::streamsize) override { return 0; }
+};
+
+TEST_F(CliTest, AReportThatCannotBeWrittenIsAFailure) {
+  const fs::path rec = simulated(3.0);
+  FullStreamBuf full;
+  std::ostream out(&full);
+  std::ostringstream err;
+  // Before: exit 0 with the RMSE table lost.
+  EXPECT_EQ(runCli({"estimate", rec.string()}, out, err), 1);
+  EXPECT_NE(err.str().find("cannot write the results to standard output"), std::string::npos)
+      << err.str();
 }
 
 }  // namespace

@@ -2,11 +2,13 @@
 // every documented error with its line and column.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <functional>
@@ -801,6 +803,202 @@ TEST_F(RecordingTest, WriterFullDiskKeepsWrittenRowsAndRetries) {
   const Recording rec = readRecording(p);
   ASSERT_EQ(rec.samples.size(), static_cast<std::size_t>(i));
   for (int k = 0; k < i; ++k) EXPECT_EQ(rec.samples[static_cast<std::size_t>(k)].t, liveRow(k).t);
+}
+#endif
+
+// ---------------------------------------------------------------------------------------------
+// Hostile sidecars (issue 9, item 7): impossible geometry and camera blocks are refused naming the
+// file and the key; every JSON error names the file.
+
+TEST_F(RecordingTest, SidecarRefusesImpossibleGeometryNamingFileAndKey) {
+  const fs::path j = dir_ / "m.json";
+  auto geometryError = [&](const std::string& geometry) {
+    writeText("m.json", R"({"format": "armtrack-recording", "version": 1, "geometry": )" +
+                            geometry + "}");
+    return errorOf([&] { readSidecar(j); });
+  };
+  // Each of these was accepted before and gave 14-172 deg errors (or no estimates at all).
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"l3": 0})", "geometry.l3"},        {R"({"l3": -0.3})", "geometry.l3"},
+      {R"({"l3": 1e300})", "geometry.l3"},    {R"({"l3": 0.05})", "geometry.l3"},
+      {R"({"l3": 0.61})", "geometry.l3"},     {R"({"l6": 0})", "geometry.l6"},
+      {R"({"l6": -0.2})", "geometry.l6"},     {R"({"l6": 2.5})", "geometry.l6"},
+      {R"({"lu3": -0.01})", "geometry.lu3"},  {R"({"l3": 0.22, "lu3": 0.33})", "geometry.lu3"},
+      {R"({"lf6": -0.05})", "geometry.lf6"},  {R"({"l6": 0.2, "lf6": 0.31})", "geometry.lf6"},
+      {R"({"lu5": 0.2})", "geometry.lu5"},    {R"({"lf8": -1e6})", "geometry.lf8"},
+      {R"({"thu4": 1e300})", "geometry.thu4"}, {R"({"thf7": -7})", "geometry.thf7"}};
+  for (const auto& [geometry, key] : cases) {
+    SCOPED_TRACE(geometry);
+    expectError(geometryError(geometry), j, 0, 0, "\"" + key + "\"");
+  }
+  // The limits themselves, and the paper's strap at the shoulder (lu3 = lu5 = 0), are possible.
+  for (const std::string ok :
+       {R"({"l3": 0.1, "l6": 0.6})", R"({"l3": 0.6, "l6": 0.1, "lu3": 0.7, "lf6": 0.2})",
+        R"({"lu3": 0, "lu5": 0, "lf6": 0, "lf8": 0})", R"({"lu5": -0.15, "thu4": -6.28})"}) {
+    writeText("m.json", R"({"format": "armtrack-recording", "version": 1, "geometry": )" + ok +
+                            "}");
+    EXPECT_NO_THROW(readSidecar(j)) << ok;
+  }
+  writeText("m.json", R"({"format": "armtrack-recording", "version": 1, "g": 1e300})");
+  expectError(errorOf([&] { readSidecar(j); }), j, 0, 0, "\"g\"");
+  writeText("m.json", R"({"format": "armtrack-recording", "version": 1, "g": 1})");
+  expectError(errorOf([&] { readSidecar(j); }), j, 0, 0, "\"g\"");
+}
+
+TEST_F(RecordingTest, SidecarWithAHugeNumberNamesFileLineAndColumn) {
+  const fs::path j = writeText("m.json", "{\"format\": \"armtrack-recording\", \"version\": 1,\n"
+                                         "  \"geometry\": {\"l3\": 1e999}}\n");
+  // Before: nlohmann's out_of_range escaped with "number overflow parsing '1e999'" and no file.
+  const RecordingError e = errorOf([&] { readSidecar(j); });
+  expectError(e, j, 2, 22, "1e999");
+  // Through the CSV reader too.
+  writeText("rec.csv", kImuHeader + "0,0,0,0,0,0,9.81\n");
+  writeText("rec.json", "{\"format\": \"armtrack-recording\", \"version\": 1, \"g\": -1e999}");
+  expectError(readError(dir_ / "rec.csv"), dir_ / "rec.json", 1, 53, "-1e999");
+}
+
+TEST_F(RecordingTest, SidecarCameraWithZeroFocalOrBadRotationNamesFileAndKey) {
+  const fs::path j = dir_ / "m.json";
+  auto cameraError = [&](const std::string& camera) {
+    writeText("m.json",
+              R"({"format": "armtrack-recording", "version": 1, "camera": )" + camera + "}");
+    return errorOf([&] { readSidecar(j); });
+  };
+  expectError(cameraError(R"({"fx": 0, "fy": 600, "cx": 320, "cy": 240})"), j, 0, 0,
+              "\"camera.fx\"");
+  expectError(cameraError(R"({"fx": 600, "fy": -600, "cx": 320, "cy": 240})"), j, 0, 0,
+              "\"camera.fy\"");
+  expectError(cameraError(R"({"fx": 600, "fy": 600, "cx": 1e300, "cy": 240})"), j, 0, 0,
+              "\"camera.cx\"");
+  // Scaled, sheared and mirrored matrices are not rotations.
+  for (const std::string r : {"[2, 0, 0, 0, 2, 0, 0, 0, 2]", "[1, 0, 0, 0, 1, 0, 0, 0, -1]",
+                              "[1, 0.1, 0, 0, 1, 0, 0, 0, 1]", "[0, 0, 0, 0, 0, 0, 0, 0, 0]"}) {
+    expectError(cameraError(R"({"fx": 600, "fy": 600, "cx": 320, "cy": 240, "R": )" + r + "}"), j,
+                0, 0, "\"camera.R\" is not a rotation");
+  }
+  expectError(cameraError(R"({"fx": 600, "fy": 600, "cx": 320, "cy": 240, "t": [0, 0, 1e9]})"), j,
+              0, 0, "\"camera.t\"");
+}
+
+TEST_F(RecordingTest, SidecarWithAnInvalidUtf8StringNamesTheFile) {
+  const fs::path j = writeText("m.json", "{\"format\": \"\xff\xfe\", \"version\": 1}");
+  const RecordingError e = errorOf([&] { readSidecar(j); });
+  EXPECT_EQ(e.file(), j.string()) << e.what();
+}
+
+TEST_F(RecordingTest, ImpossibleMetaIsNeverWritten) {
+  Recording rec = mixedRecording();
+  rec.meta.geometry.l3 = 0.0;
+  const RecordingError e = errorOf([&] { writeRecording(dir_ / "r.csv", rec); });
+  EXPECT_EQ(e.file(), (dir_ / "r.json").string());
+  EXPECT_NE(e.message().find("\"geometry.l3\""), std::string::npos) << e.message();
+  rec = mixedRecording();
+  rec.meta.camera->fx = 0.0;
+  EXPECT_THROW(writeRecording(dir_ / "r.csv", rec), RecordingError);
+  EXPECT_THROW(RecordingWriter(dir_ / "live.csv", rec.meta, liveColumns()), RecordingError);
+  EXPECT_TRUE(dirEntries().empty());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 12: a NUL byte in a cell must not cut the message short.
+
+TEST_F(RecordingTest, NonPrintableBytesInACellAreShownEscaped) {
+  const fs::path p = writeCsv(kImuHeader + "0,0,0,0,0,0,9.81\n" + std::string("0.1,1\0x\x01", 8) +
+                              ",0,0,0,0,9.81\n");
+  const RecordingError e = readError(p);
+  expectError(e, p, 3, 2, "bad number \"1\\x00x\\x01\" in column \"ua_gx\"");
+  const std::string what = e.what();
+  EXPECT_EQ(what.find('\0'), std::string::npos);
+  EXPECT_EQ(std::strlen(e.what()), what.size());  // what a C string consumer sees is all of it
+  // A long cell is shown in part.
+  const fs::path q =
+      writeCsv(kImuHeader + "0," + std::string(5000, '7') + "z,0,0,0,0,9.81\n");
+  const RecordingError l = readError(q);
+  EXPECT_LT(l.message().size(), 200u) << l.message();
+  EXPECT_NE(l.message().find("5001 bytes, first 40 shown"), std::string::npos) << l.message();
+}
+
+// ---------------------------------------------------------------------------------------------
+// Item 8: one writer per file, nothing created for an unusable path.
+
+TEST_F(RecordingTest, SecondWriterOnTheSameFileIsRefusedAndTheFirstRecordingSurvives) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingMeta meta;
+  meta.g = 9.80665;
+  RecordingWriter first(p, meta, liveColumns());
+  for (int i = 0; i < 100; ++i) first.append(liveRow(i));
+  first.flush();
+  RecordingMeta other;
+  other.geometry.l3 = 0.3;
+  RecordingColumns otherColumns;
+  otherColumns.forearm = true;
+  const RecordingError e = errorOf([&] { RecordingWriter second(p, other, otherColumns); });
+  EXPECT_EQ(e.file(), p.string());
+  EXPECT_NE(e.message().find("another recording is being written to this file"), std::string::npos)
+      << e.message();
+  for (int i = 100; i < 200; ++i) first.append(liveRow(i));
+  first.close();
+  const Recording rec = readRecording(p);
+  EXPECT_TRUE(rec.warnings.empty());
+  EXPECT_EQ(rec.meta.g, 9.80665);  // the sidecar is the first writer's
+  EXPECT_EQ(rec.meta.geometry.l3, ArmGeometry{}.l3);
+  ASSERT_EQ(rec.samples.size(), 200u);
+  for (int i = 0; i < 200; ++i) EXPECT_EQ(rec.samples[static_cast<std::size_t>(i)].t, liveRow(i).t);
+  // Once the first is closed, the file can be written again (the caller decides on replacing).
+  RecordingWriter third(p, other, otherColumns);
+  third.close();
+  EXPECT_EQ(readRecording(p).samples.size(), 0u);
+}
+
+TEST_F(RecordingTest, WriterOnADirectoryOrJsonNameCreatesNothing) {
+  fs::create_directory(dir_ / "d");
+  RecordingError e = errorOf([&] { RecordingWriter w(dir_ / "d", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (dir_ / "d").string());
+  EXPECT_NE(e.message().find("directory"), std::string::npos) << e.message();
+  fs::create_directory(dir_ / "s.json");
+  e = errorOf([&] { RecordingWriter w(dir_ / "s.csv", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (dir_ / "s.json").string());
+  e = errorOf([&] { RecordingWriter w(dir_ / "x.json", RecordingMeta{}, liveColumns()); });
+  EXPECT_NE(e.message().find(".json"), std::string::npos) << e.message();
+  EXPECT_EQ(dirEntries(), (std::set<std::string>{"d", "s.json"}));  // no d.json, s.csv, x.json
+  EXPECT_TRUE(fs::is_empty(dir_ / "d"));
+}
+
+#ifdef __linux__
+// Item 9: the writer's own account of what reached the file.
+TEST_F(RecordingTest, WriterCountsTheRowsThatReachedTheFile) {
+  const fs::path p = dir_ / "live.csv";
+  RecordingWriter w(p, RecordingMeta{}, liveColumns());
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit limited = old;
+  limited.rlim_cur = 32 * 1024;
+  const auto oldHandler = std::signal(SIGXFSZ, SIG_IGN);
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &limited), 0);
+  bool failed = false;
+  for (int i = 0; i < 3000; ++i) {
+    w.append(liveRow(i));
+    if (i % 100 == 99) {
+      try {
+        w.flush();
+      } catch (const RecordingError&) {
+        failed = true;
+      }
+    }
+  }
+  std::uint64_t writtenWhileFull = w.rowsWritten();
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, oldHandler);
+  ASSERT_TRUE(failed) << "the size limit never hit";
+  EXPECT_EQ(w.rows(), 3000u);
+  // Independent truth: the complete lines in the file, less the comment and the header.
+  std::string text = readText(p);
+  const auto lines = static_cast<std::uint64_t>(std::count(text.begin(), text.end(), '\n'));
+  EXPECT_EQ(writtenWhileFull, lines - 2);
+  EXPECT_LT(writtenWhileFull, 3000u);
+  w.close();
+  EXPECT_EQ(w.rowsWritten(), 3000u);
+  EXPECT_EQ(readRecording(p).samples.size(), 3000u);
 }
 #endif
 

@@ -1,0 +1,121 @@
+// Internal to core/io: the column layout of the recording format (docs/recording-format.md) and
+// helpers shared by its reader, sidecar and writer. Not a public header.
+#pragma once
+
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+#include "core/io/AtomicFile.h"
+#include "core/io/Recording.h"
+
+namespace armtrack::recording_detail {
+
+inline constexpr std::string_view kFormatName = "armtrack-recording";
+inline constexpr int kFormatVersion = 1;
+
+// ---------------------------------------------------------------------------------------------
+// Column groups. Every group is all-or-nothing on a row; slot 0 of a row is the time.
+
+enum Group {
+  kUaGyr,
+  kUaAcc,
+  kFaGyr,
+  kFaAcc,
+  kElbow,
+  kWrist,
+  kCamWrist,
+  kCamElbow,
+  kTruth,
+  kEstimate
+};
+inline constexpr int kNumGroups = 10;
+
+struct GroupDef {
+  std::string_view label;  // for messages
+  int size;
+  std::array<std::string_view, 5> columns;
+  int firstSlot;
+};
+
+// The fixed write order; also the slot layout of a parsed row.
+inline constexpr std::array<GroupDef, kNumGroups> kGroups{{
+    {"upper-arm gyroscope", 3, {"ua_gx", "ua_gy", "ua_gz"}, 1},
+    {"upper-arm accelerometer", 3, {"ua_ax", "ua_ay", "ua_az"}, 4},
+    {"forearm gyroscope", 3, {"fa_gx", "fa_gy", "fa_gz"}, 7},
+    {"forearm accelerometer", 3, {"fa_ax", "fa_ay", "fa_az"}, 10},
+    {"elbow position", 3, {"elbow_x", "elbow_y", "elbow_z"}, 13},
+    {"wrist position", 3, {"wrist_x", "wrist_y", "wrist_z"}, 16},
+    {"wrist marker pixel", 2, {"cam_wrist_u", "cam_wrist_v"}, 19},
+    {"elbow marker pixel", 2, {"cam_elbow_u", "cam_elbow_v"}, 21},
+    {"true joint angles", 5, {"true_th0", "true_th1", "true_th2", "true_th4", "true_th5"}, 23},
+    {"estimated joint angles", 5, {"est_th0", "est_th1", "est_th2", "est_th4", "est_th5"}, 28},
+}};
+inline constexpr int kNumSlots = 33;
+
+using GroupSet = std::array<bool, kNumGroups>;
+
+inline std::string osReason(int err) {
+  return err != 0 ? std::generic_category().message(err) : std::string("unknown I/O error");
+}
+
+inline std::string inQuotes(std::string_view s) {
+  return "\"" + std::string(s) + "\"";
+}
+
+/// A cell or column name from a file, quoted for a message: bytes outside printable ASCII as
+/// \xNN (a NUL would otherwise cut the message short), and at most 40 bytes of it shown.
+inline std::string quotedCell(std::string_view s) {
+  constexpr std::size_t kShown = 40;
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "\"";
+  for (std::size_t i = 0; i < s.size() && i < kShown; ++i) {
+    const auto c = static_cast<unsigned char>(s[i]);
+    if (c < 0x20 || c > 0x7e) {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  out += '"';
+  if (s.size() > kShown)
+    out += " (" + std::to_string(s.size()) + " bytes, first " + std::to_string(kShown) + " shown)";
+  return out;
+}
+
+inline std::string formatDouble(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+inline std::string_view trim(std::string_view s) {
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t')) s.remove_suffix(1);
+  return s;
+}
+
+// Sidecar.cpp
+/// The sidecar's JSON text.
+std::string sidecarText(const RecordingMeta& meta);
+/// Throws RecordingError on file when meta holds a value the sidecar cannot store.
+void checkMetaWritable(const std::string& file, const RecordingMeta& meta);
+
+// ---------------------------------------------------------------------------------------------
+// Writing: through AtomicFile (a temporary file beside the target, renamed over it once
+// complete); its failures are reported as RecordingError on the file concerned.
+template <typename F>
+void reportingAsRecordingError(F&& write) {
+  try {
+    write();
+  } catch (const AtomicFileError& e) {
+    throw RecordingError(e.target().string(), 0, 0, e.message());
+  }
+}
+
+}  // namespace armtrack::recording_detail

@@ -1,0 +1,398 @@
+// Reader of the open recording format's CSV (docs/recording-format.md).
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+#include "core/io/Recording.h"
+#include "core/io/RecordingFormat.h"
+
+namespace armtrack {
+
+namespace fs = std::filesystem;
+using namespace recording_detail;
+
+RecordingError::RecordingError(std::string file, int line, int column, const std::string& message)
+    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
+                         message),
+      m_file(std::move(file)),
+      m_line(line),
+      m_column(column),
+      m_message(message) {}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------
+// CSV reading
+
+/// Reads a file in chunks and yields the lines that carry data (not blank, not comments) with
+/// their physical line numbers, and whether each ended with a newline (the last line of a file
+/// cut short by a kill does not). Memory: one chunk plus the longest line.
+class FileLines {
+ public:
+  explicit FileLines(const fs::path& path) : m_name(path.string()) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec))
+      throw RecordingError(m_name, 0, 0, "cannot open file: is a directory");
+    errno = 0;
+    m_in.open(path, std::ios::binary);
+    if (!m_in) throw RecordingError(m_name, 0, 0, "cannot open file: " + osReason(errno));
+    m_size = fs::file_size(path, ec);
+    if (ec) m_size = 0;
+  }
+
+  /// The next data line (valid until the next call), or false at the end of the file.
+  bool next(std::string_view& line, int& number, bool& terminated) {
+    for (;;) {
+      if (m_p == m_buf.size() && !refill()) return false;
+      const char* base = m_buf.data();
+      const char* nl = static_cast<const char*>(std::memchr(base + m_p, '\n', m_buf.size() - m_p));
+      if (!nl && !m_eof) {  // the line may go on in the next chunk
+        refill();
+        continue;
+      }
+      const std::size_t end = nl ? static_cast<std::size_t>(nl - base) : m_buf.size();
+      std::string_view s(base + m_p, end - m_p);
+      m_p = nl ? end + 1 : end;
+      ++m_line;
+      if (m_line == 1 && s.starts_with("\xEF\xBB\xBF")) s.remove_prefix(3);  // UTF-8 BOM
+      if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
+      if (!s.empty() && s.front() == '#') continue;
+      if (s.find_first_not_of(" \t") == std::string_view::npos) continue;
+      line = s;
+      number = m_line;
+      terminated = nl != nullptr;
+      return true;
+    }
+  }
+
+  std::uint64_t bytesRead() const { return m_consumed + m_p; }
+  std::uint64_t size() const { return m_size; }
+
+ private:
+  // Keeps the unread tail, appends the next chunk. False when nothing more could be read.
+  bool refill() {
+    if (m_eof) return false;
+    m_consumed += m_p;
+    m_buf.erase(0, m_p);
+    m_p = 0;
+    const std::size_t old = m_buf.size();
+    constexpr std::size_t kChunk = std::size_t{1} << 20;
+    m_buf.resize(old + kChunk);
+    m_in.read(m_buf.data() + old, static_cast<std::streamsize>(kChunk));
+    const auto got = static_cast<std::size_t>(m_in.gcount());
+    m_buf.resize(old + got);
+    if (m_in.bad()) throw RecordingError(m_name, 0, 0, "cannot read file: " + osReason(errno));
+    if (got < kChunk) m_eof = true;
+    return got > 0;
+  }
+
+  std::string m_name;
+  std::ifstream m_in;
+  std::string m_buf;
+  std::size_t m_p = 0;           // next unread byte in m_buf
+  std::uint64_t m_consumed = 0;  // bytes dropped from the front of m_buf
+  std::uint64_t m_size = 0;
+  bool m_eof = false;
+  int m_line = 0;
+};
+
+/// Splits a line at commas into out (cleared first).
+void splitFields(std::string_view line, std::vector<std::string_view>& out) {
+  out.clear();
+  const char* p = line.data();
+  const char* e = p + line.size();
+  for (;;) {
+    const char* c = static_cast<const char*>(std::memchr(p, ',', e - p));
+    out.emplace_back(p, (c ? c : e) - p);
+    if (!c) break;
+    p = c + 1;
+  }
+}
+
+/// Parses the CSV's header, then its rows one at a time (each checked against the previous one's
+/// time). Errors throw RecordingError with the line and column.
+class CsvParser {
+ public:
+  explicit CsvParser(std::string file) : m_file(std::move(file)) {}
+
+  /// The header line, or lineNo 0 when the file has no data line at all.
+  void parseHeader(std::string_view line, int lineNo) {
+    m_headerLine = lineNo;
+    if (lineNo == 0)
+      fail(0, 0, "missing header (the file has no lines other than comments and blank lines)");
+    std::vector<std::string_view> names;
+    splitFields(line, names);
+    m_columnOfSlot.fill(-1);
+    m_slotOfColumn.assign(names.size(), -1);
+    for (int c = 0; c < static_cast<int>(names.size()); ++c) {
+      const std::string_view name = trim(names[c]);
+      const int slot = slotOf(name);
+      if (slot < 0) continue;  // unknown columns are ignored
+      if (m_columnOfSlot[slot] >= 0)
+        fail(m_headerLine, c + 1, "duplicate column " + inQuotes(name));
+      m_columnOfSlot[slot] = c;
+      m_slotOfColumn[c] = slot;
+    }
+    if (m_columnOfSlot[0] < 0) fail(m_headerLine, 0, "no \"t\" column in header");
+    for (int g = 0; g < kNumGroups; ++g) {
+      const GroupDef& def = kGroups[g];
+      int have = -1, missing = -1;
+      for (int k = def.size - 1; k >= 0; --k) {
+        (m_columnOfSlot[def.firstSlot + k] >= 0 ? have : missing) = k;  // the first of each
+      }
+      if (have >= 0 && missing >= 0) {
+        fail(m_headerLine, m_columnOfSlot[def.firstSlot + have] + 1,
+             "column " + inQuotes(def.columns[have]) + " without " +
+                 inQuotes(def.columns[missing]) + ": the " + std::string(def.label) +
+                 " needs all of " + listColumns(def));
+      }
+    }
+  }
+
+  /// Whether the header has the columns of group g.
+  bool hasGroup(int g) const { return m_columnOfSlot[kGroups[g].firstSlot] >= 0; }
+
+  /// One data row into s (overwritten whole).
+  void parseRow(std::string_view line, int lineNo, ArmSample& s) {
+    std::vector<std::string_view>& fields = m_fields;
+    std::array<double, kNumSlots>& v = m_values;
+    std::array<bool, kNumSlots> filled{};
+    std::array<bool, kNumGroups> present{};
+    splitFields(line, fields);
+    const int n = static_cast<int>(fields.size());
+    const int expected = static_cast<int>(m_slotOfColumn.size());
+    if (n != expected) {
+      fail(lineNo, std::min(n, expected) + 1,
+           "row has " + std::to_string(n) + " fields, header has " + std::to_string(expected));
+    }
+    for (int c = 0; c < n; ++c) {
+      const int slot = m_slotOfColumn[c];
+      if (slot < 0) continue;
+      const std::string_view cell = trim(fields[c]);
+      if (cell.empty()) continue;
+      v[slot] = parseNumber(cell, lineNo, c);
+      filled[slot] = true;
+    }
+
+    if (!filled[0]) fail(lineNo, m_columnOfSlot[0] + 1, "empty cell in required column \"t\"");
+    const double t = v[0];
+    if (m_rows > 0 && t < m_prevT) {
+      fail(lineNo, m_columnOfSlot[0] + 1,
+           "time goes backwards: " + formatDouble(t) + " after " + formatDouble(m_prevT) +
+               " (\"t\" must not decrease)");
+    }
+
+    for (int g = 0; g < kNumGroups; ++g) present[g] = groupPresent(g, filled, lineNo);
+    checkImu(kUaGyr, kUaAcc, present, lineNo);
+    checkImu(kFaGyr, kFaAcc, present, lineNo);
+
+    s = ArmSample{};
+    s.t = t;
+    auto vec3 = [&](Group g) {
+      const int k = kGroups[g].firstSlot;
+      return Eigen::Vector3d(v[k], v[k + 1], v[k + 2]);
+    };
+    auto vec2 = [&](Group g) {
+      const int k = kGroups[g].firstSlot;
+      return Eigen::Vector2d(v[k], v[k + 1]);
+    };
+    if (present[kUaGyr]) s.upperArm = ImuReading{vec3(kUaGyr), vec3(kUaAcc)};
+    if (present[kFaGyr]) s.forearm = ImuReading{vec3(kFaGyr), vec3(kFaAcc)};
+    if (present[kElbow]) s.elbow = vec3(kElbow);
+    if (present[kWrist]) s.wrist = vec3(kWrist);
+    if (present[kCamWrist]) s.camWrist = vec2(kCamWrist);
+    if (present[kCamElbow]) s.camElbow = vec2(kCamElbow);
+    auto joints = [&](Group g) {
+      const int k = kGroups[g].firstSlot;
+      JointVector th;
+      th << v[k], v[k + 1], v[k + 2], v[k + 3], v[k + 4];
+      return th;
+    };
+    if (present[kTruth]) s.trueAngles = joints(kTruth);
+    if (present[kEstimate]) s.estimate = joints(kEstimate);
+    m_prevT = t;
+    ++m_rows;
+  }
+
+ private:
+  [[noreturn]] void fail(int line, int column, const std::string& message) const {
+    throw RecordingError(m_file, line, column, message);
+  }
+
+  static int slotOf(std::string_view name) {
+    if (name == "t") return 0;
+    for (const GroupDef& def : kGroups) {
+      for (int k = 0; k < def.size; ++k) {
+        if (def.columns[k] == name) return def.firstSlot + k;
+      }
+    }
+    return -1;
+  }
+
+  static std::string listColumns(const GroupDef& def) {
+    std::string s;
+    for (int k = 0; k < def.size; ++k) s += (k ? ", " : "") + std::string(def.columns[k]);
+    return s;
+  }
+
+  std::string_view slotName(int slot) const {
+    if (slot == 0) return "t";
+    for (const GroupDef& def : kGroups) {
+      if (slot < def.firstSlot + def.size) return def.columns[slot - def.firstSlot];
+    }
+    return "?";
+  }
+
+  double parseNumber(std::string_view cell, int line, int column) const {
+    const char* b = cell.data();
+    const char* e = b + cell.size();
+    if (*b == '+' && e - b > 1 && b[1] != '-' && b[1] != '+') ++b;  // from_chars rejects '+'
+    double x;
+    const auto r = std::from_chars(b, e, x);
+    if (r.ptr == e && r.ec == std::errc() && std::isfinite(x)) return x;
+    const std::string where =
+        quotedCell(cell) + " in column " + inQuotes(slotName(m_slotOfColumn[column]));
+    if (r.ptr != e || r.ec == std::errc::invalid_argument) {
+      fail(line, column + 1,
+           "bad number " + where + " (expected a decimal number such as -1.25e-3)");
+    }
+    if (r.ec == std::errc::result_out_of_range) {
+      fail(line, column + 1, "number out of range " + where);
+    }
+    fail(line, column + 1, "not a finite number " + where + " (NaN and infinity are not allowed)");
+  }
+
+  bool groupPresent(int g, const std::array<bool, kNumSlots>& filled, int line) const {
+    const GroupDef& def = kGroups[g];
+    if (m_columnOfSlot[def.firstSlot] < 0) return false;  // not in the header
+    int count = 0;
+    for (int k = 0; k < def.size; ++k) count += filled[def.firstSlot + k];
+    if (count == 0) return false;
+    if (count == def.size) return true;
+    int empty = 0, set = 0;
+    for (int k = def.size - 1; k >= 0; --k) (filled[def.firstSlot + k] ? set : empty) = k;
+    fail(line, m_columnOfSlot[def.firstSlot + empty] + 1,
+         "empty cell in column " + inQuotes(def.columns[empty]) + " while " +
+             inQuotes(def.columns[set]) + " is set: the " + std::string(def.label) +
+             " needs all of " + listColumns(def) + " or none");
+  }
+
+  void checkImu(Group gyr, Group acc, const std::array<bool, kNumGroups>& present, int line) const {
+    if (present[gyr] == present[acc]) return;
+    const Group have = present[gyr] ? gyr : acc;
+    const Group missing = present[gyr] ? acc : gyr;
+    const int col = m_columnOfSlot[kGroups[missing].firstSlot] >= 0
+                        ? m_columnOfSlot[kGroups[missing].firstSlot]
+                        : m_columnOfSlot[kGroups[have].firstSlot];
+    fail(line, col + 1,
+         std::string(kGroups[have].label) + " values but no " +
+             std::string(kGroups[missing].label) + " values (" + listColumns(kGroups[missing]) +
+             "); an IMU reading needs both");
+  }
+
+  std::string m_file;
+  int m_headerLine = 0;
+  std::uint64_t m_rows = 0;  // rows parsed
+  double m_prevT = 0.0;      // the last row's time
+  std::vector<std::string_view> m_fields;
+  std::array<double, kNumSlots> m_values{};
+  std::vector<int> m_slotOfColumn;              // header column -> slot, -1 if ignored
+  std::array<int, kNumSlots> m_columnOfSlot{};  // slot -> 0-based header column, -1 if absent
+};
+
+}  // namespace
+
+struct RecordingReader::Impl {
+  explicit Impl(const fs::path& csvPath) : lines(csvPath), parser(csvPath.string()) {}
+  FileLines lines;
+  CsvParser parser;
+  int completeLines = 0;  // newline-terminated data lines read so far (header included)
+  bool done = false;
+};
+
+RecordingReader::RecordingReader(const fs::path& csvPath) {
+  const fs::path jsonPath = sidecarPath(csvPath);
+  std::error_code ec;
+  if (fs::status(jsonPath, ec).type() != fs::file_type::not_found) {
+    m_meta = readSidecar(jsonPath);  // also reports a sidecar that exists but cannot be read
+  } else {
+    m_warnings.push_back("no sidecar " + inQuotes(jsonPath.string()) +
+                         " found; using the default geometry, up and g");
+  }
+  m_impl = std::make_unique<Impl>(csvPath);
+  std::string_view line;
+  int number = 0;
+  bool terminated = false;
+  if (!m_impl->lines.next(line, number, terminated)) number = 0;
+  m_impl->parser.parseHeader(line, number);
+  m_impl->completeLines += terminated;
+  const CsvParser& p = m_impl->parser;
+  m_columns.upperArm = p.hasGroup(kUaGyr);
+  m_columns.forearm = p.hasGroup(kFaGyr);
+  m_columns.elbow = p.hasGroup(kElbow);
+  m_columns.wrist = p.hasGroup(kWrist);
+  m_columns.camWrist = p.hasGroup(kCamWrist);
+  m_columns.camElbow = p.hasGroup(kCamElbow);
+  m_columns.truth = p.hasGroup(kTruth);
+  m_columns.estimate = p.hasGroup(kEstimate);
+}
+
+RecordingReader::~RecordingReader() = default;
+
+bool RecordingReader::next(ArmSample& sample) {
+  if (m_impl->done) return false;
+  std::string_view line;
+  int number = 0;
+  bool terminated = false;
+  if (!m_impl->lines.next(line, number, terminated)) {
+    m_impl->done = true;
+    return false;
+  }
+  try {
+    m_impl->parser.parseRow(line, number, sample);
+  } catch (const RecordingError&) {
+    // A session killed while writing leaves its last line cut short: drop that line alone, when
+    // the header and at least one row came before it whole.
+    if (terminated || m_impl->completeLines < 2) throw;
+    m_impl->done = true;
+    m_warnings.push_back("line " + std::to_string(number) +
+                         " was cut short (the recording was interrupted) and is ignored");
+    return false;
+  }
+  m_impl->completeLines += terminated;
+  ++m_rows;
+  return true;
+}
+
+std::uint64_t RecordingReader::bytesRead() const {
+  return m_impl->lines.bytesRead();
+}
+std::uint64_t RecordingReader::fileSize() const {
+  return m_impl->lines.size();
+}
+
+Recording readRecording(const fs::path& csvPath) {
+  RecordingReader reader(csvPath);
+  Recording rec;
+  rec.meta = reader.meta();
+  // After the first rows, reserve for the whole file at their bytes per row (plus a margin), so
+  // the vector is not regrown and copied while the peak memory is at its highest.
+  ArmSample s;
+  while (reader.next(s)) {
+    rec.samples.push_back(std::move(s));
+    if (rec.samples.size() == 1000 && reader.fileSize() > 0) {
+      const double perRow = static_cast<double>(reader.bytesRead()) / 1000.0;
+      rec.samples.reserve(static_cast<std::size_t>(1.02 * reader.fileSize() / perRow) + 16);
+    }
+  }
+  rec.warnings = reader.warnings();
+  return rec;
+}
+
+}  // namespace armtrack
