@@ -828,9 +828,14 @@ class ArmFilter final : public JointEstimator {
   }
 
   // Seeds for a window fit at the latest sample: the running state, and the single-sample
-  // start pose there (rates from the gyroscopes).
-  std::vector<Vec15> fitSeeds(const ArmSample& last) const {
+  // start pose there (rates from the gyroscopes). When the window holds no optical data but an
+  // optical fix set the heading, only the running state: the fit cannot see the heading, and
+  // the single-sample pose would bring the start-up prior's heading back.
+  std::vector<Vec15> fitSeeds(const ArmSample& last, const std::vector<ArmSample>& w) const {
     std::vector<Vec15> seeds{m_x.template head<kBase>()};
+    bool optical = false;
+    for (const ArmSample& r : w) optical = optical || r.elbow || r.wrist || r.camWrist || r.camElbow;
+    if (!optical && std::isfinite(m_lastOpticalT)) return seeds;
     const InitialPose pose = initialPose(m_p, last);
     Vec15 x = Vec15::Zero();
     x.template segment<5>(5) = pose.thd;
@@ -845,7 +850,7 @@ class ArmFilter final : public JointEstimator {
     std::vector<Vec15> states;
     const std::vector<ArmSample> w = recentSince(since, &states);
     if (w.size() < 2) return false;
-    const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back()));
+    const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back(), w));
     if (!fit.ok || !(fit.rms < kGoodFitRms)) return false;
     if (!(fit.rms < kRefitGain * trajectoryRms(m_p, w, states))) return false;
     takeFit(fit, w);
@@ -891,7 +896,7 @@ class ArmFilter final : public JointEstimator {
     ++m_counters.recoveries;
     m_badSince.reset();
     const std::vector<ArmSample> w = recentSince(m_t - m_p.fitWindowSeconds);
-    const std::vector<Vec15> seeds = fitSeeds(last);
+    const std::vector<Vec15> seeds = fitSeeds(last, w);
     initialise(last);  // fresh covariance, start-up noise and iterations, a new start-up fit
     if (w.size() >= 2) {
       const WindowFitResult fit = fitWindow(m_p, w, seeds);

@@ -127,7 +127,11 @@ std::optional<Implausible> SampleGate::checkImu(int slot, const ImuReading& r) {
     m_havePrevious[slot] = true;
   }
   const double g = r.gyr.cwiseAbs().maxCoeff(), a = r.acc.cwiseAbs().maxCoeff();
-  if (g > m_limits.gyroRange || a > m_limits.accelRange) return Implausible::BeyondRange;
+  // A full-scale reading converted to SI units may land an ulp or two beyond the range: that is
+  // saturation, not a value from beyond it.
+  constexpr double kRounding = 1.0 + 1e-9;
+  if (g > kRounding * m_limits.gyroRange || a > kRounding * m_limits.accelRange)
+    return Implausible::BeyondRange;
   const double f = m_limits.saturationFraction;
   if (g >= f * m_limits.gyroRange || a >= f * m_limits.accelRange) return Implausible::Saturated;
   if (r.acc.isZero(0.0)) return Implausible::AllZero;

@@ -78,9 +78,22 @@ TEST_F(CliTest, SimulateThenEstimateRoundTrip) {
   for (const auto& s : recording.samples) imuRows += s.hasImu();
   const auto lines = readLines(angles);
   ASSERT_FALSE(lines.empty());
-  EXPECT_EQ(lines[0], "t,th0,th1,th2,th4,th5");
+  EXPECT_EQ(lines[0], "t,th0,th1,th2,th4,th5,sd_th0,sd_th1,sd_th2,sd_th4,sd_th5,status");
   EXPECT_EQ(lines.size() - 1, imuRows);
   EXPECT_EQ(lines[1].substr(0, 2), "0,");
+  // Every row: 12 numbers, positive standard deviations, status 2 on the first row (the start)
+  // and 0 (fused) on nearly all others.
+  std::size_t fused = 0;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    std::vector<double> v;
+    std::istringstream row(lines[i]);
+    for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 12u) << lines[i];
+    for (int j = 6; j < 11; ++j) EXPECT_GT(v[j], 0.0) << lines[i];
+    if (i == 1) EXPECT_EQ(v[11], 2.0) << lines[i];
+    fused += v[11] == 0.0;
+  }
+  EXPECT_GE(fused, lines.size() - 3);
 
   // The printed table: one row per joint, RMSE in the third-to-last column.
   int tableRows = 0;
@@ -113,8 +126,84 @@ TEST_F(CliTest, NoKinectPrintsHeadingNote) {
                        "from IMUs alone"),
             std::string::npos)
       << r.out;
-  EXPECT_NE(r.out.find("first 10 s"), std::string::npos);
-  EXPECT_NE(r.out.find("last 10 s"), std::string::npos);
+  // A 3 s recording: one window, after the start-up second, inside the data (it used to read
+  // "first 10 s (1.0-11.0 s)" and "last 10 s (-0.0-10.0 s)").
+  EXPECT_NE(r.out.find("| first 2.0 s (1.0-3.0 s) |"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("last"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("-0.0"), std::string::npos) << r.out;
+}
+
+// Issue 9: one absurd but finite IMU row used to stop every later estimate while estimate
+// exited 0 with a table that looked fine. Now the row is refused, reported with its time, and
+// every row still gets an estimate.
+TEST_F(CliTest, AFiniteSpikeIsRefusedReportedAndEveryRowEstimated) {
+  const fs::path rec = simulated(6.0);
+  const fs::path spiked = path("spiked.csv");
+  std::vector<std::string> lines = readLines(rec);
+  ASSERT_GT(lines.size(), 3000u);
+  // Row 3001 (t = 3 s): every upper-arm value replaced by 6e36.
+  std::vector<std::string> header;
+  {
+    std::istringstream h(lines[0]);
+    for (std::string c; std::getline(h, c, ',');) header.push_back(c);
+  }
+  std::vector<std::string> cells;
+  {
+    std::istringstream row(lines[3001]);
+    for (std::string c; std::getline(row, c, ',');) cells.push_back(c);
+  }
+  ASSERT_EQ(cells.size(), header.size());
+  int replaced = 0;
+  for (std::size_t c = 0; c < header.size(); ++c)
+    if (header[c].starts_with("ua_") && !cells[c].empty()) cells[c] = "6e36", ++replaced;
+  ASSERT_EQ(replaced, 6);
+  std::string joined;
+  for (std::size_t c = 0; c < cells.size(); ++c) joined += (c ? "," : "") + cells[c];
+  lines[3001] = joined;
+  {
+    std::ofstream out(spiked);
+    for (const std::string& l : lines) out << l << "\n";
+  }
+  fs::copy_file(armtrack::sidecarPath(rec), armtrack::sidecarPath(spiked));
+  const fs::path angles = path("angles.csv");
+  const CliResult r = cli({"estimate", spiked.string(), "--out", angles.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("refused 1 implausible reading (beyond the sensor's range 1: upper-arm "
+                       "IMU 1) at 3.000 s"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.err.find("got no estimate"), std::string::npos) << r.err;
+  EXPECT_EQ(readLines(angles).size(), lines.size());  // one estimate per row, plus the header
+  // The errors stay small after the spike (the table's RMSE column).
+  std::istringstream table(r.out);
+  int tableRows = 0;
+  for (std::string line; std::getline(table, line);) {
+    if (!line.starts_with("| th")) continue;
+    ++tableRows;
+    const auto c2 = line.rfind('|', line.rfind('|') - 1);
+    const auto c1 = line.rfind('|', c2 - 1);
+    EXPECT_LE(std::stod(line.substr(c1 + 1, c2 - c1 - 1)), 1.0) << line;
+  }
+  EXPECT_EQ(tableRows, 5) << r.out;
+}
+
+// Issue 9 item 12: Kinect-only recordings no longer print a webcam line, and a recording shorter
+// than the start-up second says why it has no statistics.
+TEST_F(CliTest, MessagesFitTheRecording) {
+  const CliResult r = cli({"estimate", simulated(6.0).string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("webcam"), std::string::npos) << r.err;
+  const fs::path shortRec = path("short.csv");
+  ASSERT_EQ(cli({"simulate", "--trajectory", "multi-joint", "--duration", "0.8", "--out",
+                 shortRec.string()})
+                .code,
+            0);
+  const CliResult s = cli({"estimate", shortRec.string()});
+  ASSERT_EQ(s.code, 0) << s.err;
+  EXPECT_EQ(s.err.find("no true angles in the recording"), std::string::npos) << s.err;
+  EXPECT_NE(s.err.find("every estimate with true angles lies in the first 1 s"),
+            std::string::npos)
+      << s.err;
 }
 
 TEST_F(CliTest, MethodBAndUkfAccepted) {

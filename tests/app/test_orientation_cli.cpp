@@ -136,7 +136,7 @@ TEST_F(OrientationCliTest, NonFiniteSensorCellsRejectTheRowNotTheFile) {
   EXPECT_NE(r.err.find("3 not finite"), std::string::npos) << r.err;
   // A time that is not a number still cannot be placed: that is an error with line and column.
   std::ofstream(in, std::ios::app) << "nan,0,0,0,0,0,9.81\n";
-  const CliResult bad = cli({"orientation", in.string(), "--out", out.string()});
+  const CliResult bad = cli({"orientation", in.string(), "--out", out.string(), "--overwrite"});
   EXPECT_EQ(bad.code, 1);
   EXPECT_NE(bad.err.find(":1002:1:"), std::string::npos) << bad.err;
 }

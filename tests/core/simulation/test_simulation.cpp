@@ -236,7 +236,8 @@ TEST(Trajectory, WheelRejectsUnreachable) {
 TEST(Trajectory, Factory) {
   const std::vector<std::string> names = trajectoryNames();
   ASSERT_EQ(names,
-            (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration"}));
+            (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration",
+                                      "reaching"}));
   TrajectoryOptions opts;
   for (const std::string& n : names) EXPECT_NE(makeTrajectory(n, opts), nullptr);
 
@@ -642,3 +643,27 @@ TEST(SensorStream, FiniteStreamEndsAndRecordingRefusesInfinity) {
 
 }  // namespace
 }  // namespace armtrack
+
+// The reaching trajectory keeps to its peak rate and acceleration, reaches one of them on its
+// fastest joint, and its rates and accelerations are the derivatives of its angles.
+TEST(Trajectory, ReachingKeepsToItsPeaksAndIsSmooth) {
+  const double peakRate = 420 * kDeg, peakAccel = 4000 * kDeg;
+  const ReachingTrajectory traj(5, peakRate, peakAccel, 20.0);
+  double maxRate = 0.0, maxAccel = 0.0;
+  const double h = 1e-5;
+  for (double t = 0.0; t < 20.0; t += 1e-3) {
+    const JointMotion m = traj.at(t);
+    maxRate = std::max(maxRate, m.thd.cwiseAbs().maxCoeff());
+    maxAccel = std::max(maxAccel, m.thdd.cwiseAbs().maxCoeff());
+    const JointVector fdRate = (traj.at(t + h).th - traj.at(t - h).th) / (2 * h);
+    const JointVector fdAccel = (traj.at(t + h).thd - traj.at(t - h).thd) / (2 * h);
+    ASSERT_LT((fdRate - m.thd).cwiseAbs().maxCoeff(), 1e-4) << "t = " << t;
+    ASSERT_LT((fdAccel - m.thdd).cwiseAbs().maxCoeff(), 2e-3) << "t = " << t;
+  }
+  EXPECT_LE(maxRate, peakRate * 1.0001);
+  EXPECT_LE(maxAccel, peakAccel * 1.0001);
+  EXPECT_TRUE(maxRate > 0.99 * peakRate || maxAccel > 0.99 * peakAccel)
+      << maxRate / kDeg << " deg/s, " << maxAccel / kDeg << " deg/s^2";
+  EXPECT_THROW(ReachingTrajectory(1, 0.0, peakAccel), std::invalid_argument);
+  EXPECT_THROW(ReachingTrajectory(1, peakRate, std::nan("")), std::invalid_argument);
+}
