@@ -8,6 +8,7 @@
 #include <cmath>
 #include <ctime>
 
+#include "core/session/EstimatorMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
 #include "core/sync/TimeSync.h"
 
@@ -64,6 +65,23 @@ bool validPayload(StreamRole role, const SensorPayload& p) {
     }
   }
   return false;
+}
+
+/// The stream each sensor block of a row comes from.
+StreamRole roleOf(SensorBlock b) {
+  switch (b) {
+    case SensorBlock::UpperArm:
+      return StreamRole::UpperArmImu;
+    case SensorBlock::Forearm:
+      return StreamRole::ForearmImu;
+    case SensorBlock::Elbow:
+    case SensorBlock::Wrist:
+      return StreamRole::Optical;
+    case SensorBlock::CamWrist:
+    case SensorBlock::CamElbow:
+      return StreamRole::Camera;
+  }
+  return StreamRole::UpperArmImu;
 }
 
 double threadCpuSeconds() {
@@ -303,19 +321,39 @@ void Session::workerLoop() {
   double rowOldestArrival = std::numeric_limits<double>::infinity();
   double nextStats = 0.0;
   std::uint64_t reportedRejects = 0;
+  // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
+  std::array<std::string, kNumSensorBlocks> blockStreams;
+  for (int b = 0; b < kNumSensorBlocks; ++b)
+    for (const Stream& s : m_streams)
+      if (s.info.role == roleOf(static_cast<SensorBlock>(b)))
+        blockStreams[static_cast<std::size_t>(b)] =
+            m_devices[static_cast<std::size_t>(s.device)].label.toStdString() + " " + s.info.name;
+  EstimatorMessages estimatorMessages(blockStreams, m_params.refusalQuietSeconds,
+                                      m_params.refusalSummarySeconds);
+  std::vector<std::string> notes;  // messages made under no lock, told by publish()
 
   auto processRow = [&](ArmSample row, double oldestArrival) {
     ++rows;
     row.t -= m_startTime * scale;  // session time: 0 at start()
     if (filter) {
       const UpdateResult r = filter->update(row);
+      estimatorMessages.update(filter->counters(), row.t, notes);
+      // Rows predicted through refused readings and recovered rows are estimates too: the GUI
+      // shows them with their status and (grown) uncertainty.
       if (hasEstimate(r) && row.hasImu()) {
         const JointEstimate e = filter->estimate();
         row.estimate = e.th;
         ++estimates;
         const double lat = devices::hostNow() - oldestArrival / scale;
         latency.add(lat);
-        fresh.push_back({row.t, e.th, row.trueAngles, lat});
+        EstimateRow out;
+        out.t = row.t;
+        out.th = e.th;
+        out.truth = row.trueAngles;
+        out.latency = lat;
+        out.thStd = e.thStd;
+        out.status = r;
+        fresh.push_back(std::move(out));
       }
     }
     if (m_writer) {
@@ -339,6 +377,14 @@ void Session::workerLoop() {
     }
   };
   auto publish = [&](bool final) {
+    auto tellNotes = [&] {
+      for (const std::string& n : notes) {
+        logEvent(n);
+        emit problem(QString::fromStdString(n));
+      }
+      notes.clear();
+    };
+    tellNotes();
     if (!fresh.empty()) {
       std::lock_guard lock(m_resultMutex);
       for (EstimateRow& r : fresh) {
@@ -355,7 +401,7 @@ void Session::workerLoop() {
     if (!final && now < nextStats) return;
     nextStats = now + 0.1;
     std::uint64_t totalRejects = 0;
-    std::lock_guard lock(m_statsMutex);
+    std::unique_lock lock(m_statsMutex);
     for (std::size_t i = 0; i < m_streams.size(); ++i) {
       StreamStats& st = m_stats.streams[i];
       st.received = received[i];
@@ -374,10 +420,12 @@ void Session::workerLoop() {
     if (filter) m_stats.estimator = filter->counters();
     m_stats.workerCpuSeconds = threadCpuSeconds();
     if (totalRejects > reportedRejects) {
-      m_events.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
-                         " sample(s) with NaN/infinite values or the wrong kind of data");
+      notes.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
+                      " sample(s) with NaN/infinite values or the wrong kind of data");
       reportedRejects = totalRejects;
     }
+    lock.unlock();
+    tellNotes();  // through logEvent, so maxEvents holds
   };
 
   for (;;) {
@@ -417,6 +465,7 @@ void Session::workerLoop() {
   // Shutdown: everything received is processed.
   sync.flush(sink);
   if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
+  estimatorMessages.finish(notes);
   publish(true);
   {
     std::lock_guard lock(m_recMutex);
