@@ -1,12 +1,18 @@
 #include "core/session/Session.h"
 
+#include <fcntl.h>
 #include <pthread.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <QCoreApplication>
 #include <QMetaObject>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <ctime>
+#include <system_error>
 
 #include "core/session/EstimatorMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
@@ -82,6 +88,31 @@ StreamRole roleOf(SensorBlock b) {
       return StreamRole::Camera;
   }
   return StreamRole::UpperArmImu;
+}
+
+/// Creates path empty, failing if it exists (O_EXCL): a recording that appears between a check
+/// and the writer's open is never replaced. Returns an empty string or why not.
+std::string claimName(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd >= 0) {
+    ::close(fd);
+    return {};
+  }
+  if (errno == EEXIST)
+    return path.string() +
+           ": exists; allow overwriting (--overwrite) to replace it, or choose "
+           "another file name";
+  return path.string() + ": cannot create the file: " + std::generic_category().message(errno);
+}
+
+/// Removes the empty file claimName() made, unless a writer has it (locked) or wrote into it.
+void removeUnusedClaim(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  struct stat st {};
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &st) == 0 && st.st_size == 0)
+    ::unlink(path.c_str());
+  ::close(fd);
 }
 
 double threadCpuSeconds() {
@@ -210,9 +241,25 @@ QString Session::start() {
     m_params.estimator = p;
   }
   if (!m_params.recordingPath.empty()) {
+    // RecordingWriter replaces an existing file; without overwrite the session never lets it.
+    // A directory is left to the writer, which refuses it with its own message.
+    const std::filesystem::path& csv = m_params.recordingPath;
+    bool claimed = false;
+    if (!m_params.overwrite && !std::filesystem::is_directory(csv)) {
+      std::error_code ec;
+      if (std::filesystem::exists(sidecarPath(csv), ec))
+        return QStringLiteral(
+                   "cannot record: %1: exists; allow overwriting (--overwrite) to "
+                   "replace the recording, or choose another file name")
+            .arg(QString::fromStdString(sidecarPath(csv).string()));
+      if (const std::string why = claimName(csv); !why.empty())
+        return QStringLiteral("cannot record: %1").arg(QString::fromStdString(why));
+      claimed = true;
+    }
     try {
-      m_writer = std::make_unique<RecordingWriter>(m_params.recordingPath, m_params.meta, columns);
+      m_writer = std::make_unique<RecordingWriter>(csv, m_params.meta, columns);
     } catch (const RecordingError& e) {
+      if (claimed) removeUnusedClaim(csv);
       return QStringLiteral("cannot record: %1").arg(QString::fromStdString(e.what()));
     }
   }
@@ -518,16 +565,10 @@ void Session::recorderLoop() {
       }
     }
     local.clear();
-    {
-      std::lock_guard lock(m_statsMutex);
-      m_stats.recordedRows += written;
-    }
     const double now = devices::hostNow();
     if (closed) {
       attempt([&] { m_writer->close(); });
-      break;
-    }
-    if (now >= nextSync) {
+    } else if (now >= nextSync) {
       attempt([&] { m_writer->sync(); });
       nextSync = now + m_params.syncInterval;
       nextFlush = now + m_params.flushInterval;
@@ -535,6 +576,14 @@ void Session::recorderLoop() {
       attempt([&] { m_writer->flush(); });
       nextFlush = now + m_params.flushInterval;
     }
+    {
+      // What reached the file, not what was handed to the writer: rows a full disk keeps in the
+      // writer's buffer are not recorded.
+      std::lock_guard lock(m_statsMutex);
+      m_stats.rowsToRecord += written;
+      m_stats.recordedRows = m_writer->rowsWritten();
+    }
+    if (closed) break;
   }
 }
 

@@ -9,9 +9,13 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <memory>
 #include <numbers>
 #include <thread>
+#include <utility>
 
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/SampleGate.h"
@@ -88,6 +92,7 @@ class SessionTest : public ::testing::Test {
   static void expectComplete(const SessionRun& r) {
     EXPECT_EQ(r.stats.inputOverflow, 0u);
     EXPECT_EQ(r.stats.recordedRows, r.rec.samples.size());
+    EXPECT_EQ(r.stats.rowsToRecord, r.stats.recordedRows);
     EXPECT_EQ(r.stats.recorderError, "");
     std::uint64_t upper = 0, forearm = 0, kinect = 0;
     for (const ArmSample& s : r.rec.samples) {
@@ -405,6 +410,59 @@ TEST_F(SessionTest, RefusesAmbiguousOrIncompleteSetups) {
                      &why),
       nullptr)
       << why.toStdString();
+}
+
+// A session never replaces a recording (CSV or sidecar) unless asked to.
+TEST_F(SessionTest, NeverReplacesARecordingUnlessAskedTo) {
+  devices::DevicePlugin* plugin = test::loadPlugin(QStringLiteral("virtual-arm"));
+  ASSERT_NE(plugin, nullptr);
+  const fs::path csv = fs::path(dir_.path().toStdString()) / "earlier.csv";
+  std::ofstream(csv) << "an earlier recording\n";
+  auto startOn = [&](const fs::path& path, bool overwrite) {
+    SessionParams p;
+    p.recordingPath = path;
+    p.overwrite = overwrite;
+    auto s = std::make_unique<Session>(p);
+    QString why;
+    s->addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why),
+                 "u");
+    const QString refusal = s->start();
+    return std::make_pair(std::move(s), refusal);
+  };
+  auto textOf = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  {
+    auto [s, why] = startOn(csv, false);
+    EXPECT_NE(why.indexOf(QStringLiteral("earlier.csv: exists; allow overwriting")), -1)
+        << why.toStdString();
+    EXPECT_FALSE(s->running());
+  }
+  EXPECT_EQ(textOf(csv), "an earlier recording\n");
+  EXPECT_FALSE(fs::exists(sidecarPath(csv)));
+  // A sidecar alone is a recording too; refusing it creates no CSV.
+  const fs::path lone = fs::path(dir_.path().toStdString()) / "lone.csv";
+  std::ofstream(sidecarPath(lone)) << "{}\n";
+  {
+    auto [s, why] = startOn(lone, false);
+    EXPECT_NE(why.indexOf(QStringLiteral("lone.json: exists")), -1) << why.toStdString();
+  }
+  EXPECT_FALSE(fs::exists(lone));
+  // A new name is claimed and recorded into; with overwrite the earlier file is replaced.
+  for (const auto& [path, overwrite] :
+       {std::make_pair(fs::path(dir_.path().toStdString()) / "new.csv", false),
+        std::make_pair(csv, true)}) {
+    auto [s, why] = startOn(path, overwrite);
+    ASSERT_TRUE(why.isEmpty()) << why.toStdString();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    s->stop();
+    const SessionStats st = s->stats();
+    const Recording rec = readRecording(path);
+    EXPECT_GT(rec.samples.size(), 100u);
+    EXPECT_EQ(st.recordedRows, rec.samples.size());
+    EXPECT_EQ(st.rowsToRecord, st.recordedRows);
+  }
 }
 
 // The estimator's messages without threads: a long run of refusals is told once, summed up every
