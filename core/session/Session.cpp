@@ -601,8 +601,16 @@ void Session::stopDevices() {
         },
         Qt::BlockingQueuedConnection);
     d.thread->quit();
-    if (!d.thread->wait(10000)) logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
-    delete d.thread;
+    if (d.thread->wait(10000)) {
+      delete d.thread;
+    } else {
+      // Destroying a QThread that still runs aborts the program: leave it to end on its own and
+      // delete it then (deleteLater is safe to call twice).
+      logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
+      QThread* t = d.thread;
+      connect(t, &QThread::finished, t, &QObject::deleteLater);
+      if (t->isFinished()) t->deleteLater();
+    }
     d.thread = nullptr;
     disconnect(dev, nullptr, this, nullptr);
   }
