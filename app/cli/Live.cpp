@@ -1,16 +1,12 @@
 #include "app/cli/Live.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
 #include <sys/resource.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <QCoreApplication>
 #include <QSettings>
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -18,7 +14,6 @@
 #include <fstream>
 #include <memory>
 #include <optional>
-#include <system_error>
 #include <thread>
 
 #include "app/cli/Args.h"
@@ -116,17 +111,6 @@ std::uint64_t rowsInRecording(const std::string& path) {
   return reader.rows();
 }
 
-/// Removes the empty file made to claim a recording's name, unless a writer has it (locked) or
-/// wrote into it since.
-void removeUnusedPlaceholder(const std::string& path) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return;
-  struct stat st {};
-  if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &st) == 0 && st.st_size == 0)
-    ::unlink(path.c_str());
-  ::close(fd);
-}
-
 struct LiveOptions {
   std::vector<std::string> devices;
   double duration = 0.0;  // 0 = until Ctrl-C
@@ -220,6 +204,9 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   params.estimate = !a.flag("--no-estimate");
   params.latencyWindow = a.positive("--latency-window", params.latencyWindow);
   params.recordingPath = o.out;
+  // The session claims the name itself (O_EXCL) unless --overwrite, so a recording that appears
+  // between the check above and the start is never replaced.
+  params.overwrite = overwrite;
 
   QtApp qt;
   app::PluginRegistry registry;
@@ -247,24 +234,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
                                                                                   ? QString::number(&spec - o.devices.data() + 1)
                                                                                   : QStringLiteral("1")));
   }
-  // Without --overwrite, claim the name now (O_EXCL), so a recording that appeared since the
-  // check above is not replaced; the session's writer then locks and fills this file.
-  bool placeholder = false;
-  if (!o.out.empty() && !overwrite) {
-    const int fd = ::open(o.out.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (fd < 0) {
-      err << "armtrack-cli: error: " << o.out << ": "
-          << (errno == EEXIST
-                  ? "exists; pass --overwrite to replace it, or choose another file name"
-                  : "cannot create the file: " + std::generic_category().message(errno))
-          << "\n";
-      return 1;
-    }
-    ::close(fd);
-    placeholder = true;
-  }
   if (const QString why = session.start(); !why.isEmpty()) {
-    if (placeholder) removeUnusedPlaceholder(o.out);
     err << "armtrack-cli: error: " << why.toStdString() << "\n";
     return 1;
   }
@@ -360,7 +330,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       return 1;
     }
     out << "recorded " << *onDisk << " rows in " << o.out << "\n";
-    const std::uint64_t handed = s.recordedRows;
+    const std::uint64_t handed = s.rowsToRecord;
     if (*onDisk < handed) {
       err << "armtrack-cli: error: the recording is incomplete: " << handed - *onDisk << " of "
           << handed << " rows were lost"

@@ -1,13 +1,20 @@
 #include "core/session/Session.h"
 
+#include <fcntl.h>
 #include <pthread.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <QCoreApplication>
 #include <QMetaObject>
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <ctime>
+#include <system_error>
 
+#include "core/session/EstimatorMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
 #include "core/sync/TimeSync.h"
 
@@ -64,6 +71,48 @@ bool validPayload(StreamRole role, const SensorPayload& p) {
     }
   }
   return false;
+}
+
+/// The stream each sensor block of a row comes from.
+StreamRole roleOf(SensorBlock b) {
+  switch (b) {
+    case SensorBlock::UpperArm:
+      return StreamRole::UpperArmImu;
+    case SensorBlock::Forearm:
+      return StreamRole::ForearmImu;
+    case SensorBlock::Elbow:
+    case SensorBlock::Wrist:
+      return StreamRole::Optical;
+    case SensorBlock::CamWrist:
+    case SensorBlock::CamElbow:
+      return StreamRole::Camera;
+  }
+  return StreamRole::UpperArmImu;
+}
+
+/// Creates path empty, failing if it exists (O_EXCL): a recording that appears between a check
+/// and the writer's open is never replaced. Returns an empty string or why not.
+std::string claimName(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  if (fd >= 0) {
+    ::close(fd);
+    return {};
+  }
+  if (errno == EEXIST)
+    return path.string() +
+           ": exists; allow overwriting (--overwrite) to replace it, or choose "
+           "another file name";
+  return path.string() + ": cannot create the file: " + std::generic_category().message(errno);
+}
+
+/// Removes the empty file claimName() made, unless a writer has it (locked) or wrote into it.
+void removeUnusedClaim(const std::filesystem::path& path) {
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return;
+  struct stat st {};
+  if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &st) == 0 && st.st_size == 0)
+    ::unlink(path.c_str());
+  ::close(fd);
 }
 
 double threadCpuSeconds() {
@@ -192,9 +241,25 @@ QString Session::start() {
     m_params.estimator = p;
   }
   if (!m_params.recordingPath.empty()) {
+    // RecordingWriter replaces an existing file; without overwrite the session never lets it.
+    // A directory is left to the writer, which refuses it with its own message.
+    const std::filesystem::path& csv = m_params.recordingPath;
+    bool claimed = false;
+    if (!m_params.overwrite && !std::filesystem::is_directory(csv)) {
+      std::error_code ec;
+      if (std::filesystem::exists(sidecarPath(csv), ec))
+        return QStringLiteral(
+                   "cannot record: %1: exists; allow overwriting (--overwrite) to "
+                   "replace the recording, or choose another file name")
+            .arg(QString::fromStdString(sidecarPath(csv).string()));
+      if (const std::string why = claimName(csv); !why.empty())
+        return QStringLiteral("cannot record: %1").arg(QString::fromStdString(why));
+      claimed = true;
+    }
     try {
-      m_writer = std::make_unique<RecordingWriter>(m_params.recordingPath, m_params.meta, columns);
+      m_writer = std::make_unique<RecordingWriter>(csv, m_params.meta, columns);
     } catch (const RecordingError& e) {
+      if (claimed) removeUnusedClaim(csv);
       return QStringLiteral("cannot record: %1").arg(QString::fromStdString(e.what()));
     }
   }
@@ -303,19 +368,39 @@ void Session::workerLoop() {
   double rowOldestArrival = std::numeric_limits<double>::infinity();
   double nextStats = 0.0;
   std::uint64_t reportedRejects = 0;
+  // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
+  std::array<std::string, kNumSensorBlocks> blockStreams;
+  for (int b = 0; b < kNumSensorBlocks; ++b)
+    for (const Stream& s : m_streams)
+      if (s.info.role == roleOf(static_cast<SensorBlock>(b)))
+        blockStreams[static_cast<std::size_t>(b)] =
+            m_devices[static_cast<std::size_t>(s.device)].label.toStdString() + " " + s.info.name;
+  EstimatorMessages estimatorMessages(blockStreams, m_params.refusalQuietSeconds,
+                                      m_params.refusalSummarySeconds);
+  std::vector<std::string> notes;  // messages made under no lock, told by publish()
 
   auto processRow = [&](ArmSample row, double oldestArrival) {
     ++rows;
     row.t -= m_startTime * scale;  // session time: 0 at start()
     if (filter) {
       const UpdateResult r = filter->update(row);
+      estimatorMessages.update(filter->counters(), row.t, notes);
+      // Rows predicted through refused readings and recovered rows are estimates too: the GUI
+      // shows them with their status and (grown) uncertainty.
       if (hasEstimate(r) && row.hasImu()) {
         const JointEstimate e = filter->estimate();
         row.estimate = e.th;
         ++estimates;
         const double lat = devices::hostNow() - oldestArrival / scale;
         latency.add(lat);
-        fresh.push_back({row.t, e.th, row.trueAngles, lat});
+        EstimateRow out;
+        out.t = row.t;
+        out.th = e.th;
+        out.truth = row.trueAngles;
+        out.latency = lat;
+        out.thStd = e.thStd;
+        out.status = r;
+        fresh.push_back(std::move(out));
       }
     }
     if (m_writer) {
@@ -339,6 +424,14 @@ void Session::workerLoop() {
     }
   };
   auto publish = [&](bool final) {
+    auto tellNotes = [&] {
+      for (const std::string& n : notes) {
+        logEvent(n);
+        emit problem(QString::fromStdString(n));
+      }
+      notes.clear();
+    };
+    tellNotes();
     if (!fresh.empty()) {
       std::lock_guard lock(m_resultMutex);
       for (EstimateRow& r : fresh) {
@@ -355,7 +448,7 @@ void Session::workerLoop() {
     if (!final && now < nextStats) return;
     nextStats = now + 0.1;
     std::uint64_t totalRejects = 0;
-    std::lock_guard lock(m_statsMutex);
+    std::unique_lock lock(m_statsMutex);
     for (std::size_t i = 0; i < m_streams.size(); ++i) {
       StreamStats& st = m_stats.streams[i];
       st.received = received[i];
@@ -374,10 +467,12 @@ void Session::workerLoop() {
     if (filter) m_stats.estimator = filter->counters();
     m_stats.workerCpuSeconds = threadCpuSeconds();
     if (totalRejects > reportedRejects) {
-      m_events.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
-                         " sample(s) with NaN/infinite values or the wrong kind of data");
+      notes.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
+                      " sample(s) with NaN/infinite values or the wrong kind of data");
       reportedRejects = totalRejects;
     }
+    lock.unlock();
+    tellNotes();  // through logEvent, so maxEvents holds
   };
 
   for (;;) {
@@ -417,6 +512,7 @@ void Session::workerLoop() {
   // Shutdown: everything received is processed.
   sync.flush(sink);
   if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
+  estimatorMessages.finish(notes);
   publish(true);
   {
     std::lock_guard lock(m_recMutex);
@@ -469,16 +565,10 @@ void Session::recorderLoop() {
       }
     }
     local.clear();
-    {
-      std::lock_guard lock(m_statsMutex);
-      m_stats.recordedRows += written;
-    }
     const double now = devices::hostNow();
     if (closed) {
       attempt([&] { m_writer->close(); });
-      break;
-    }
-    if (now >= nextSync) {
+    } else if (now >= nextSync) {
       attempt([&] { m_writer->sync(); });
       nextSync = now + m_params.syncInterval;
       nextFlush = now + m_params.flushInterval;
@@ -486,6 +576,14 @@ void Session::recorderLoop() {
       attempt([&] { m_writer->flush(); });
       nextFlush = now + m_params.flushInterval;
     }
+    {
+      // What reached the file, not what was handed to the writer: rows a full disk keeps in the
+      // writer's buffer are not recorded.
+      std::lock_guard lock(m_statsMutex);
+      m_stats.rowsToRecord += written;
+      m_stats.recordedRows = m_writer->rowsWritten();
+    }
+    if (closed) break;
   }
 }
 
@@ -503,8 +601,16 @@ void Session::stopDevices() {
         },
         Qt::BlockingQueuedConnection);
     d.thread->quit();
-    if (!d.thread->wait(10000)) logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
-    delete d.thread;
+    if (d.thread->wait(10000)) {
+      delete d.thread;
+    } else {
+      // Destroying a QThread that still runs aborts the program: leave it to end on its own and
+      // delete it then (deleteLater is safe to call twice).
+      logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
+      QThread* t = d.thread;
+      connect(t, &QThread::finished, t, &QObject::deleteLater);
+      if (t->isFinished()) t->deleteLater();
+    }
     d.thread = nullptr;
     disconnect(dev, nullptr, this, nullptr);
   }

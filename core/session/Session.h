@@ -33,6 +33,9 @@ struct SessionParams {
   EstimatorParams estimator;
   bool estimate = true;                  ///< run the estimator (off: record raw data only)
   std::filesystem::path recordingPath;   ///< CSV to record into; empty = no recording
+  /// Replace a recording (CSV or sidecar) that already exists at recordingPath. Off (default):
+  /// start() refuses, and claims the name atomically so a file appearing meanwhile is not lost.
+  bool overwrite = false;
   double latencyWindow = 0.010;          ///< s the synchroniser waits for late samples
   double mergeWindow = 0.5e-3;           ///< s within which samples share one row
   double workerPeriod = 0.002;           ///< s between synchroniser polls
@@ -42,14 +45,24 @@ struct SessionParams {
   double flushInterval = 0.5;            ///< s between recorder flushes
   double syncInterval = 5.0;             ///< s between fsyncs of the recording
   std::size_t maxEvents = 1000;          ///< session messages kept until taken
+  /// s of session time without a refused reading after which the estimator's refusals are
+  /// summed up in one message (the first refusal is told at once).
+  double refusalQuietSeconds = 0.5;
+  /// s between summaries while refusals go on.
+  double refusalSummarySeconds = 5.0;
 };
 
-/// One estimate, for the GUI and `live`.
+/// One estimate, for the GUI and `live`. Every row with IMU data gets one once the estimator has
+/// started, including rows whose readings were all refused (status Predicted) and rows where it
+/// re-initialised after losing the arm (status Recovered: the angles may jump there).
 struct EstimateRow {
   double t = 0.0;                        ///< synchronised time (s since the session started)
   JointVector th = JointVector::Zero();  ///< rad
   std::optional<JointVector> truth;      ///< rad, simulated devices
   double latency = 0.0;                  ///< s from the oldest sample's arrival to the estimate
+  JointVector thStd = JointVector::Zero();  ///< 1-sigma uncertainty of th (rad)
+  /// How the estimate came about: Accepted, Initialised, Predicted or Recovered.
+  UpdateResult status = UpdateResult::Accepted;
 };
 
 /// Latencies in 0.1 ms bins up to 1 s.
@@ -92,7 +105,10 @@ struct SessionStats {
   std::uint64_t inputOverflow = 0;   ///< samples lost because the input queue was full
   std::uint64_t rows = 0;            ///< rows built from synchronised samples
   std::uint64_t estimates = 0;       ///< estimates made
-  std::uint64_t recordedRows = 0;    ///< rows the recorder wrote
+  std::uint64_t rowsToRecord = 0;    ///< rows the recorder was given
+  /// Rows that reached the file (RecordingWriter::rowsWritten(): written, whether or not yet
+  /// forced to disk). Below rowsToRecord while rows are buffered, or after a write failure.
+  std::uint64_t recordedRows = 0;
   std::uint64_t recorderWaits = 0;   ///< times the worker waited for a full recorder queue
   std::uint64_t resultsOverwritten = 0;  ///< GUI rows overwritten before being taken
   std::size_t maxInputQueued = 0;    ///< most samples ever waiting for the worker
@@ -132,7 +148,8 @@ class Session : public QObject {
   SessionStats stats() const;
   /// Moves the estimates made since the last call into out (appended); returns how many.
   std::size_t takeResults(std::vector<EstimateRow>& out);
-  /// Moves the session messages (device states, problems, recorder failures) into out.
+  /// Moves the session messages (device states, problems, recorder failures, readings the
+  /// estimator refused, its recoveries and restarts) into out.
   std::size_t takeEvents(std::vector<std::string>& out);
 
  signals:

@@ -30,6 +30,9 @@ QString VirtualArmPlugin::optionsHelp() const {
       "restart-clock=off             after coming back, its IMU clock restarts from 0\n"
       "stall=START+SECONDS           the link holds samples, then delivers them in a burst\n"
       "jump=AT:SECONDS               the IMU clock steps (negative: goes backwards)\n"
+      "spike=STREAM@T[:VALUE]        one sample of absurd but finite values (default 1e6)\n"
+      "saturate=STREAM@START+SECONDS IMU readings at full scale (2000 deg/s, 16 g)\n"
+      "zeros=STREAM@START+SECONDS    readings of exactly zero\n"
       "corrupt=0                     probability that an IMU sample carries NaN\n"
       "drift=0                       IMU clock rate error, ppm");
 }
@@ -55,6 +58,9 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.faults.restartClock = o.flag(QStringLiteral("restart-clock"), false);
   const QString stall = o.text(QStringLiteral("stall"));
   const QString jump = o.text(QStringLiteral("jump"));
+  const QString spike = o.text(QStringLiteral("spike"));
+  const QString saturate = o.text(QStringLiteral("saturate"));
+  const QString zeros = o.text(QStringLiteral("zeros"));
   p.faults.corruptProbability = o.number(QStringLiteral("corrupt"), 0.0, 0.0, 1.0);
   p.faults.driftPpm = o.number(QStringLiteral("drift"), 0.0, -1000.0, 1000.0);
   QStringList problems;
@@ -81,6 +87,9 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
     p.faults.disappear = parseWindows(disappear.toStdString());
     p.faults.stalls = parseWindows(stall.toStdString());
     p.faults.jumps = parseJumps(jump.toStdString());
+    p.faults.spikes = parseSpikes(spike.toStdString());
+    p.faults.saturations = parseStreamWindows(saturate.toStdString(), "saturation");
+    p.faults.zeros = parseStreamWindows(zeros.toStdString(), "zeros window");
   } catch (const std::invalid_argument& e) {
     problems << QString::fromStdString(e.what());
   }

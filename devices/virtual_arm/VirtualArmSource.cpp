@@ -4,6 +4,8 @@
 #include <limits>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
+#include <variant>
 
 namespace armtrack::devices::virtualarm {
 namespace {
@@ -50,8 +52,9 @@ std::string seconds(double s) {
 }  // namespace
 
 bool Faults::any() const {
-  return !dropouts.empty() || !disappear.empty() || !stalls.empty() || !jumps.empty() ||
-         corruptProbability > 0.0 || driftPpm != 0.0;
+  return !dropouts.empty() || !spikes.empty() || !saturations.empty() || !zeros.empty() ||
+         !disappear.empty() || !stalls.empty() || !jumps.empty() || corruptProbability > 0.0 ||
+         driftPpm != 0.0;
 }
 
 std::vector<Window> parseWindows(const std::string& text) {
@@ -60,13 +63,37 @@ std::vector<Window> parseWindows(const std::string& text) {
   return out;
 }
 
-std::vector<Dropout> parseDropouts(const std::string& text) {
-  std::vector<Dropout> out;
+std::vector<StreamWindow> parseStreamWindows(const std::string& text, const std::string& what) {
+  std::vector<StreamWindow> out;
   for (const std::string& part : split(text, '|')) {
     const auto at = part.find('@');
     if (at == std::string::npos)
-      throw std::invalid_argument("'" + part + "' is not a valid dropout: write STREAM@START+SECONDS");
+      throw std::invalid_argument("'" + part + "' is not a valid " + what +
+                                  ": write STREAM@START+SECONDS");
     out.push_back({part.substr(0, at), window(part.substr(at + 1))});
+  }
+  return out;
+}
+
+std::vector<Dropout> parseDropouts(const std::string& text) {
+  return parseStreamWindows(text, "dropout");
+}
+
+std::vector<Spike> parseSpikes(const std::string& text) {
+  std::vector<Spike> out;
+  for (const std::string& part : split(text, '|')) {
+    const auto at = part.find('@');
+    if (at == std::string::npos || at == 0)
+      throw std::invalid_argument("'" + part + "' is not a valid spike: write STREAM@TIME or " +
+                                  "STREAM@TIME:VALUE");
+    const auto colon = part.find(':', at + 1);
+    Spike s;
+    s.stream = part.substr(0, at);
+    s.at = number(
+        part.substr(at + 1, colon == std::string::npos ? std::string::npos : colon - at - 1), part);
+    if (colon != std::string::npos) s.value = number(part.substr(colon + 1), part);
+    if (s.at < 0.0) throw std::invalid_argument("'" + part + "': the time must be >= 0");
+    out.push_back(s);
   }
   return out;
 }
@@ -104,19 +131,31 @@ VirtualArmSource::VirtualArmSource(const VirtualArmParams& params)
     m_streams.push_back({"truth", ArmSlot::Truth, std::max(s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
                                                            s.forearm.enabled ? s.forearm.rateHz : 0.0)});
   if (m_streams.empty()) throw std::invalid_argument("the virtual arm needs at least one sensor");
-  for (const Dropout& d : m_p.faults.dropouts) {
-    bool known = false;
-    for (const VirtualStream& v : m_streams) known = known || v.name == d.stream;
-    if (!known) {
-      std::string names;
-      for (const VirtualStream& v : m_streams) names += (names.empty() ? "" : ", ") + v.name;
-      throw std::invalid_argument("dropout of '" + d.stream +
-                                  "', which this virtual arm does not have (it has " + names + ")");
+  // Every fault names a stream this arm has (and saturation one of its IMUs).
+  auto checkStream = [&](const std::string& stream, const std::string& what, bool imuOnly) {
+    std::string names;
+    for (const VirtualStream& v : m_streams) {
+      const bool imu = v.slot == ArmSlot::UpperArmImu || v.slot == ArmSlot::ForearmImu;
+      if (v.slot == ArmSlot::Truth && what != "dropout") continue;
+      if (imuOnly && !imu) continue;
+      if (v.name == stream) return;
+      names += (names.empty() ? "" : ", ") + v.name;
     }
-  }
+    throw std::invalid_argument(
+        what + " of '" + stream + "', which this virtual arm does not have " +
+        (names.empty() ? std::string("(it has no stream for it)") : "(it has " + names + ")"));
+  };
+  for (const Dropout& d : m_p.faults.dropouts) checkStream(d.stream, "dropout", false);
+  for (const Spike& s : m_p.faults.spikes) checkStream(s.stream, "spike", false);
+  for (const StreamWindow& w : m_p.faults.saturations) checkStream(w.stream, "saturation", true);
+  for (const StreamWindow& w : m_p.faults.zeros) checkStream(w.stream, "zeros", false);
   m_dropped.assign(m_streams.size(), 0);
   m_corrupted.assign(m_streams.size(), 0);
+  m_injected.assign(m_streams.size(), 0);
   m_inDropout.assign(m_streams.size(), false);
+  m_inSaturation.assign(m_streams.size(), false);
+  m_inZeros.assign(m_streams.size(), false);
+  m_spikeDone.assign(m_p.faults.spikes.size(), false);
 }
 
 VirtualArmSource::~VirtualArmSource() = default;
@@ -188,6 +227,7 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
       if (slot != ArmSlot::Truth) ++m_dropped[i];
       return;
     }
+    injectValues(i, t, payload, events);
     if (auto* imu = std::get_if<ImuReading>(&payload); imu && m_p.faults.corruptProbability > 0.0) {
       if (std::uniform_real_distribution<double>(0.0, 1.0)(m_rng) < m_p.faults.corruptProbability) {
         imu->acc.x() = std::numeric_limits<double>::quiet_NaN();
@@ -208,6 +248,68 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
   if (row.camWrist || row.camElbow)
     deliver(ArmSlot::Camera, t, MarkerPixels{row.camWrist, row.camElbow});
   if (row.trueAngles) deliver(ArmSlot::Truth, imuT, TruthAngles{*row.trueAngles});
+}
+
+void VirtualArmSource::injectValues(std::size_t i, double t, SensorPayload& payload,
+                                    std::vector<SourceEvent>& events) {
+  const std::string& name = m_streams[i].name;
+  const int k = static_cast<int>(i);
+  auto fill = [&payload](double v) {
+    std::visit(
+        [v](auto& p) {
+          using P = std::decay_t<decltype(p)>;
+          if constexpr (std::is_same_v<P, ImuReading>) {
+            p.gyr.setConstant(v);
+            p.acc.setConstant(v);
+          } else if constexpr (std::is_same_v<P, OpticalPositions>) {
+            if (p.elbow) p.elbow->setConstant(v);
+            if (p.wrist) p.wrist->setConstant(v);
+          } else if constexpr (std::is_same_v<P, MarkerPixels>) {
+            if (p.wrist) p.wrist->setConstant(v);
+            if (p.elbow) p.elbow->setConstant(v);
+          }
+        },
+        payload);
+  };
+  auto during = [&](const std::vector<StreamWindow>& windows) {
+    for (const StreamWindow& w : windows)
+      if (w.stream == name && w.window.contains(t)) return true;
+    return false;
+  };
+  auto edge = [&](bool now, std::vector<bool>& state, const std::string& from,
+                  const std::string& until) {
+    if (now == state[i]) return;
+    state[i] = now;
+    events.push_back(
+        {SourceEventKind::Injected, t, k,
+         "virtual arm: " + name + (now ? from : until) + seconds(t) + (now ? " (injected)" : "")});
+  };
+  bool replaced = false;
+  const bool zeros = during(m_p.faults.zeros);
+  edge(zeros, m_inZeros, " reads all zeros from ", " reads again after zeros at ");
+  if (zeros) {
+    fill(0.0);
+    replaced = true;
+  }
+  const bool saturated = during(m_p.faults.saturations);
+  edge(saturated, m_inSaturation, " saturated at full scale from ", " no longer saturated at ");
+  if (auto* imu = std::get_if<ImuReading>(&payload); imu && saturated) {
+    imu->gyr.setConstant(kGyroFullScale);
+    imu->acc.setConstant(kAccelFullScale);
+    replaced = true;
+  }
+  for (std::size_t s = 0; s < m_p.faults.spikes.size(); ++s) {
+    const Spike& spike = m_p.faults.spikes[s];
+    if (m_spikeDone[s] || spike.stream != name || t < spike.at) continue;
+    m_spikeDone[s] = true;
+    fill(spike.value);
+    replaced = true;
+    std::ostringstream text;
+    text << "virtual arm: " << name << " spike of " << spike.value << " at " << seconds(t)
+         << " (injected)";
+    events.push_back({SourceEventKind::Injected, t, k, text.str()});
+  }
+  if (replaced) ++m_injected[i];
 }
 
 void VirtualArmSource::advance(double t, std::vector<VirtualSample>& out,

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <random>
 #include <string>
 #include <vector>
@@ -22,11 +23,26 @@ struct Window {
   double end() const { return start + duration; }
 };
 
-/// One stream goes silent for a while (a marker occluded, a sensor's radio fading).
-struct Dropout {
+/// Something happens to one stream for a while: it goes silent (a marker occluded, a sensor's
+/// radio fading), saturates or reads all zeros.
+struct StreamWindow {
   std::string stream;  ///< "upper", "forearm", "kinect" or "webcam"
   Window window;
 };
+using Dropout = StreamWindow;
+
+/// One sample of a stream carries absurd but finite values (a packet that passed its checksum
+/// with garbage in it; NGIMU's float maximum 3.4e38).
+struct Spike {
+  std::string stream;  ///< "upper", "forearm", "kinect" or "webcam"
+  double at = 0.0;     ///< s: the first sample at or after this simulated time
+  double value = 1e6;  ///< put in every value of the sample (rad/s, m/s^2, m or px)
+};
+
+/// Full scale of the simulated IMUs, the widest usual setting: 2000 deg/s (rad/s) and 16 g
+/// (m/s^2). A saturated reading sits at +full scale on every axis.
+inline constexpr double kGyroFullScale = 2000.0 * std::numbers::pi / 180.0;
+inline constexpr double kAccelFullScale = 16.0 * 9.80665;
 
 /// The device clock steps by delta (s) at simulated time at (a reset, a resync gone wrong).
 struct ClockJump {
@@ -36,6 +52,9 @@ struct ClockJump {
 
 struct Faults {
   std::vector<Dropout> dropouts;
+  std::vector<Spike> spikes;              ///< single samples of absurd values
+  std::vector<StreamWindow> saturations;  ///< IMU readings at full scale for a while
+  std::vector<StreamWindow> zeros;        ///< readings of exactly zero for a while
   std::vector<Window> disappear;  ///< the whole device goes away and comes back
   bool restartClock = false;      ///< after coming back, the IMU clock restarts from 0
   std::vector<Window> stalls;     ///< the link holds everything, then delivers it in one burst
@@ -50,6 +69,11 @@ struct Faults {
 std::vector<Window> parseWindows(const std::string& text);
 /// "kinect@10+2|upper@30+1" -> dropouts.
 std::vector<Dropout> parseDropouts(const std::string& text);
+/// "upper@10+0.2|forearm@30+1" -> stream windows (saturations, zeros); what names the fault in
+/// messages ("saturation").
+std::vector<StreamWindow> parseStreamWindows(const std::string& text, const std::string& what);
+/// "upper@10|forearm@30:3.4e38" -> spikes (value 1e6 unless given after ':').
+std::vector<Spike> parseSpikes(const std::string& text);
 /// "25:-0.5|40:2" -> clock jumps.
 std::vector<ClockJump> parseJumps(const std::string& text);
 
@@ -74,8 +98,17 @@ struct VirtualSample {
   SensorPayload payload;
 };
 
-enum class SourceEventKind { DropoutStart, DropoutEnd, LinkLost, LinkBack, StallStart, StallEnd,
-                             ClockJump, Finished };
+enum class SourceEventKind {
+  DropoutStart,
+  DropoutEnd,
+  LinkLost,
+  LinkBack,
+  StallStart,
+  StallEnd,
+  ClockJump,
+  Injected,
+  Finished
+};
 
 struct SourceEvent {
   SourceEventKind kind = SourceEventKind::LinkLost;
@@ -107,19 +140,27 @@ class VirtualArmSource {
   std::uint64_t corrupted(int stream) const {
     return m_corrupted.at(static_cast<std::size_t>(stream));
   }
+  /// Samples of the stream replaced by a spike, saturation or zeros.
+  std::uint64_t injected(int stream) const {
+    return m_injected.at(static_cast<std::size_t>(stream));
+  }
 
  private:
   int streamIndex(ArmSlot slot) const;
   double imuClock(double t) const;
   void emitRow(const ArmSample& row, std::vector<VirtualSample>& out,
                std::vector<SourceEvent>& events);
+  /// Applies the spikes, saturations and zeros due for stream i at time t to its payload.
+  void injectValues(std::size_t i, double t, SensorPayload& payload,
+                    std::vector<SourceEvent>& events);
 
   VirtualArmParams m_p;
   std::unique_ptr<Trajectory> m_trajectory;
   std::unique_ptr<SensorStream> m_stream;
   std::vector<VirtualStream> m_streams;
-  std::vector<std::uint64_t> m_dropped, m_corrupted;
-  std::vector<bool> m_inDropout;
+  std::vector<std::uint64_t> m_dropped, m_corrupted, m_injected;
+  std::vector<bool> m_inDropout, m_inSaturation, m_inZeros;
+  std::vector<bool> m_spikeDone;      // per spike
   std::vector<VirtualSample> m_held;  // samples held by a stall
   bool m_linkUp = true, m_stalled = false, m_finished = false;
   double m_clockBase = 0.0;    // simulated time at which the IMU clock reads 0

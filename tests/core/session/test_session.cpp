@@ -7,13 +7,20 @@
 #include <QTemporaryDir>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
+#include <memory>
 #include <numbers>
 #include <thread>
+#include <utility>
 
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/SampleGate.h"
 #include "core/io/Recording.h"
+#include "core/session/EstimatorMessages.h"
 #include "core/session/Session.h"
 #include "devices/api/Options.h"
 #include "tests/support/LoadPlugin.h"
@@ -85,6 +92,7 @@ class SessionTest : public ::testing::Test {
   static void expectComplete(const SessionRun& r) {
     EXPECT_EQ(r.stats.inputOverflow, 0u);
     EXPECT_EQ(r.stats.recordedRows, r.rec.samples.size());
+    EXPECT_EQ(r.stats.rowsToRecord, r.stats.recordedRows);
     EXPECT_EQ(r.stats.recorderError, "");
     std::uint64_t upper = 0, forearm = 0, kinect = 0;
     for (const ArmSample& s : r.rec.samples) {
@@ -193,6 +201,8 @@ TEST_F(SessionTest, ImuDeviceDisappearsAndComesBackWithARestartedClock) {
   expectComplete(r);
   EXPECT_TRUE(mentions(r.events, "link lost at 3 s"));
   EXPECT_TRUE(mentions(r.events, "its clock restarted from 0"));
+  EXPECT_GE(r.stats.estimator.restarts, 1u);
+  EXPECT_TRUE(mentions(r.events, "estimator: restarted after a gap in the data at "));
   auto imu = [](const ArmSample& s) { return s.upperArm.has_value(); };
   EXPECT_EQ(rowsWith(r.rec, 3.2, 4.3, imu), 0u);
   EXPECT_GT(rowsWith(r.rec, 5.0, 8.5, imu), 3000u);
@@ -239,6 +249,112 @@ TEST_F(SessionTest, CorruptSamplesAreRejectedCountedAndReported) {
   for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(e(j), 2.0 * kDeg) << "joint " << j;
 }
 
+// Issue 9, acceptance 2 through the live session: a spike, a 200 ms saturated burst and 200 ms
+// of zeros sent by a device are refused by the estimator, reported in the session's messages,
+// predicted through (every row with IMU data still gets an estimate, in the recording and in the
+// results buffer), and the error against the truth is back under 1 deg RMS within 2 s.
+TEST_F(SessionTest, ImplausibleImuReadingsAreRefusedReportedAndRecoveredFrom) {
+  const SessionRun r = run({QStringLiteral("sensors=upper+forearm+kinect,spike=upper@2,"
+                                           "saturate=upper@4.2+0.2|forearm@4.2+0.2,"
+                                           "zeros=upper@6.8+0.2|forearm@6.8+0.2")},
+                           9.6);
+  expectComplete(r);
+  EXPECT_EQ(r.stats.lost(), 0u);  // finite values pass the session; the estimator judges them
+  EXPECT_TRUE(mentions(r.events, "upper spike of 1e+06 at 2"));
+  EXPECT_TRUE(mentions(r.events, "upper saturated at full scale from 4.2"));
+  EXPECT_TRUE(mentions(r.events, "forearm reads all zeros from 6.8"));
+
+  // Every row with IMU data has an estimate, in the file and in the GUI buffer.
+  auto imu = [](const ArmSample& s) { return s.hasImu(); };
+  auto est = [](const ArmSample& s) { return s.estimate.has_value(); };
+  const std::size_t imuRows = rowsWith(r.rec, -1e9, 1e9, imu);
+  EXPECT_EQ(rowsWith(r.rec, -1e9, 1e9, est), imuRows);
+  EXPECT_EQ(r.stats.estimates, imuRows);
+  EXPECT_EQ(r.results.size(), imuRows);
+
+  // Counted: 1 spike, 2 x 200 saturated, 2 x 200 zero readings (IMUs at 1 kHz).
+  const GateCounters& g = r.stats.estimator.implausible;
+  EXPECT_EQ(g.byReason(Implausible::BeyondRange), 1u);
+  EXPECT_NEAR(static_cast<double>(g.byBlock(SensorBlock::UpperArm)), 401.0, 4.0);
+  EXPECT_NEAR(static_cast<double>(g.byBlock(SensorBlock::Forearm)), 400.0, 4.0);
+  EXPECT_NEAR(
+      static_cast<double>(g.byReason(Implausible::Saturated) + g.byReason(Implausible::AllZero) +
+                          g.byReason(Implausible::Stuck)),
+      800.0, 8.0);
+
+  // Reported: once as they start, summed up when they stop; not once per reading.
+  std::size_t estimatorMessages = 0;
+  for (const std::string& e : r.events) estimatorMessages += e.rfind("estimator", 0) == 0;
+  EXPECT_TRUE(mentions(r.events,
+                       "refusing implausible readings from the upper-arm IMU (arm1 upper)"
+                       ": beyond the sensor's range at 2."));
+  EXPECT_TRUE(mentions(r.events,
+                       "estimator (arm1 upper): refused 1 implausible reading (beyond "
+                       "the sensor's range 1: upper-arm IMU 1) at 2."));
+  EXPECT_TRUE(mentions(r.events,
+                       "from the upper-arm IMU (arm1 upper): saturated; forearm IMU "
+                       "(arm1 forearm): saturated at 4.2"));
+  EXPECT_TRUE(mentions(r.events, "estimator (arm1 upper, arm1 forearm): refused "));
+  EXPECT_TRUE(mentions(r.events, "refusals stopped"));
+  EXPECT_LE(estimatorMessages, 12u);
+
+  // Rows predicted through the bursts reach the GUI with their status and a grown uncertainty.
+  std::size_t predicted = 0;
+  double stdAccepted = 0.0, stdPredicted = 0.0;
+  std::size_t accepted = 0;
+  for (const EstimateRow& e : r.results) {
+    ASSERT_TRUE(e.th.allFinite() && e.thStd.allFinite()) << e.t;
+    if (e.status == UpdateResult::Predicted) {
+      ++predicted;
+      stdPredicted = std::max(stdPredicted, e.thStd.maxCoeff());
+    } else if (e.status == UpdateResult::Accepted && e.t > 1.0) {
+      ++accepted;
+      stdAccepted += e.thStd.maxCoeff();
+    }
+  }
+  EXPECT_GT(predicted, 300u);
+  ASSERT_GT(accepted, 0u);
+  EXPECT_GT(stdAccepted / static_cast<double>(accepted), 0.0);
+  EXPECT_GT(stdPredicted, stdAccepted / static_cast<double>(accepted));
+
+  // Back under 1 deg RMS within 2 s of each fault's end, before the next one.
+  const std::vector<std::pair<double, double>> windows = {{4.0, 4.2}, {6.4, 6.8}, {9.0, 9.5}};
+  for (const auto& [from, to] : windows) {
+    const JointVector e = rmse(r.rec, from, to);
+    std::printf("[ measured ] RMSE over [%.1f, %.1f) s (deg): %.3f %.3f %.3f %.3f %.3f\n", from, to,
+                e(0) / kDeg, e(1) / kDeg, e(2) / kDeg, e(3) / kDeg, e(4) / kDeg);
+    for (int j = 0; j < kNumJoints; ++j)
+      EXPECT_LT(e(j), 1.0 * kDeg) << "joint " << j << " " << from;
+  }
+}
+
+// Issue 9, item 2 live: NGIMU packets carrying 3.4e38 (the float maximum) are finite, so they
+// pass the session's checks; the estimator must refuse and count them and go on.
+TEST_F(SessionTest, NgimuFloatMaximumIsRefusedCountedAndReported) {
+  const SessionRun r =
+      run({QStringLiteral("sensors=upper+forearm+kinect,spike=forearm@1.5:3.4e38")}, 3.0);
+  expectComplete(r);
+  EXPECT_EQ(streamOf(r.stats, "forearm").rejected, 0u);
+  const GateCounters& g = r.stats.estimator.implausible;
+  EXPECT_EQ(g.total(), 1u);
+  EXPECT_EQ(
+      g.refused[static_cast<int>(SensorBlock::Forearm)][static_cast<int>(Implausible::BeyondRange)],
+      1u);
+  EXPECT_TRUE(
+      mentions(r.events, "refusing implausible readings from the forearm IMU (arm1 forearm)"));
+  EXPECT_TRUE(mentions(r.events,
+                       "refused 1 implausible reading (beyond the sensor's range 1: "
+                       "forearm IMU 1)"));
+  // The recording keeps what the device sent; every IMU row still has an estimate.
+  auto spiked = [](const ArmSample& s) { return s.forearm && s.forearm->gyr.x() > 1e38; };
+  EXPECT_EQ(rowsWith(r.rec, -1e9, 1e9, spiked), 1u);
+  auto imu = [](const ArmSample& s) { return s.hasImu(); };
+  auto est = [](const ArmSample& s) { return s.estimate.has_value(); };
+  EXPECT_EQ(rowsWith(r.rec, -1e9, 1e9, est), rowsWith(r.rec, -1e9, 1e9, imu));
+  EXPECT_EQ(r.results.size(), r.stats.estimates);
+  EXPECT_GT(rowsWith(r.rec, 1.6, 2.9, est), 1200u);
+}
+
 TEST_F(SessionTest, DriftingImuClockIsEstimated) {
   const SessionRun r = run({QStringLiteral("sensors=upper+forearm+kinect,drift=500")}, 8.0);
   expectComplete(r);
@@ -276,6 +392,121 @@ TEST_F(SessionTest, RefusesAmbiguousOrIncompleteSetups) {
   EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("dropout=elbow@1+1")), &why),
             nullptr);
   EXPECT_NE(why.indexOf(QStringLiteral("does not have")), -1);
+  // The value faults: a stream the arm has, saturation on an IMU only, well-formed times.
+  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("saturate=kinect@1+1")), &why),
+            nullptr);
+  EXPECT_NE(why.indexOf(QStringLiteral("saturation of 'kinect'")), -1) << why.toStdString();
+  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("spike=upper")), &why), nullptr);
+  EXPECT_NE(why.indexOf(QStringLiteral("write STREAM@TIME")), -1) << why.toStdString();
+  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("zeros=upper@1")), &why),
+            nullptr);
+  EXPECT_NE(why.indexOf(QStringLiteral("START+SECONDS")), -1) << why.toStdString();
+  EXPECT_EQ(plugin->create(devices::Options::parse(QStringLiteral("spike=upper@1:1e999")), &why),
+            nullptr);
+  EXPECT_NE(why.indexOf(QStringLiteral("not a number")), -1) << why.toStdString();
+  EXPECT_NE(
+      plugin->create(devices::Options::parse(QStringLiteral(
+                         "spike=upper@1|kinect@2:3.4e38,saturate=forearm@1+0.2,zeros=kinect@1+1")),
+                     &why),
+      nullptr)
+      << why.toStdString();
+}
+
+// A session never replaces a recording (CSV or sidecar) unless asked to.
+TEST_F(SessionTest, NeverReplacesARecordingUnlessAskedTo) {
+  devices::DevicePlugin* plugin = test::loadPlugin(QStringLiteral("virtual-arm"));
+  ASSERT_NE(plugin, nullptr);
+  const fs::path csv = fs::path(dir_.path().toStdString()) / "earlier.csv";
+  std::ofstream(csv) << "an earlier recording\n";
+  auto startOn = [&](const fs::path& path, bool overwrite) {
+    SessionParams p;
+    p.recordingPath = path;
+    p.overwrite = overwrite;
+    auto s = std::make_unique<Session>(p);
+    QString why;
+    s->addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why),
+                 "u");
+    const QString refusal = s->start();
+    return std::make_pair(std::move(s), refusal);
+  };
+  auto textOf = [](const fs::path& p) {
+    std::ifstream in(p);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  {
+    auto [s, why] = startOn(csv, false);
+    EXPECT_NE(why.indexOf(QStringLiteral("earlier.csv: exists; allow overwriting")), -1)
+        << why.toStdString();
+    EXPECT_FALSE(s->running());
+  }
+  EXPECT_EQ(textOf(csv), "an earlier recording\n");
+  EXPECT_FALSE(fs::exists(sidecarPath(csv)));
+  // A sidecar alone is a recording too; refusing it creates no CSV.
+  const fs::path lone = fs::path(dir_.path().toStdString()) / "lone.csv";
+  std::ofstream(sidecarPath(lone)) << "{}\n";
+  {
+    auto [s, why] = startOn(lone, false);
+    EXPECT_NE(why.indexOf(QStringLiteral("lone.json: exists")), -1) << why.toStdString();
+  }
+  EXPECT_FALSE(fs::exists(lone));
+  // A new name is claimed and recorded into; with overwrite the earlier file is replaced.
+  for (const auto& [path, overwrite] :
+       {std::make_pair(fs::path(dir_.path().toStdString()) / "new.csv", false),
+        std::make_pair(csv, true)}) {
+    auto [s, why] = startOn(path, overwrite);
+    ASSERT_TRUE(why.isEmpty()) << why.toStdString();
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    s->stop();
+    const SessionStats st = s->stats();
+    const Recording rec = readRecording(path);
+    EXPECT_GT(rec.samples.size(), 100u);
+    EXPECT_EQ(st.recordedRows, rec.samples.size());
+    EXPECT_EQ(st.rowsToRecord, st.recordedRows);
+  }
+}
+
+// The estimator's messages without threads: a long run of refusals is told once, summed up every
+// 5 s and when it stops; recoveries and restarts at most once a second, none lost.
+TEST(EstimatorMessagesTest, RefusalsAreSummedUpAndRecoveriesThrottledWithoutLosingAny) {
+  EstimatorMessages m({"imu upper", "imu forearm", "kin optical", "kin optical", "", ""}, 0.5, 5.0);
+  EstimatorCounters c;
+  std::vector<std::string> out;
+  auto& upperSaturated = c.implausible.refused[static_cast<int>(SensorBlock::UpperArm)]
+                                              [static_cast<int>(Implausible::Saturated)];
+  for (int i = 0; i <= 12000; ++i) {
+    const double t = i * 1e-3;
+    if (t >= 1.0 && t < 8.0) {  // 7 s of saturated upper-arm readings at 1 kHz
+      if (c.implausible.total() == 0) c.implausible.firstT = t;
+      ++upperSaturated;
+      c.implausible.lastT = t;
+      ++c.implausible.samplesWithRefusal;
+    }
+    if (i == 9000 || i == 9100 || i == 9200 || i == 10500) ++c.recoveries;
+    if (i == 11500) ++c.restarts;
+    m.update(c, t, out);
+  }
+  m.finish(out);
+  ASSERT_EQ(out.size(), 7u);
+  EXPECT_EQ(out[0],
+            "estimator: refusing implausible readings from the upper-arm IMU (imu upper): "
+            "saturated at 1.000 s; they are not used, counted and summed up when they stop");
+  EXPECT_EQ(out[1],
+            "estimator (imu upper): refused 5001 implausible readings (saturated 5001: "
+            "upper-arm IMU 5001) between 1.000 s and 6.000 s; still refusing");
+  EXPECT_EQ(out[2],
+            "estimator (imu upper): refused 1999 implausible readings (saturated 1999: "
+            "upper-arm IMU 1999) between 6.001 s and 7.999 s; refusals stopped");
+  EXPECT_EQ(out[3],
+            "estimator: lost the arm and re-initialised from the recent data at 9.000 s "
+            "(1 in this session); the angles may jump there without the arm having moved");
+  EXPECT_EQ(out[4],
+            "estimator: lost the arm and re-initialised from the recent data 2 times "
+            "between 9.100 s and 9.200 s (3 in this session); the angles may jump there "
+            "without the arm having moved");
+  EXPECT_EQ(out[5],
+            "estimator: lost the arm and re-initialised from the recent data at 10.500 s "
+            "(4 in this session); the angles may jump there without the arm having moved");
+  EXPECT_EQ(out[6], "estimator: restarted after a gap in the data at 11.500 s (1 in this session)");
 }
 
 }  // namespace
