@@ -7,6 +7,7 @@
 #include "core/calibration/Calibrator.h"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -16,12 +17,14 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 
 #include "core/calibration/CalibrationCosts.h"
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/SampleGate.h"
 #include "core/kinematics/Side.h"
 
 namespace armtrack {
@@ -301,6 +304,42 @@ Eigen::Matrix3d mountingRotation(double strapAngle, double referenceStrapAngle,
 
 namespace {
 
+/// Ceres reports a failed evaluation through glog, LOG(WARNING) with every parameter value (about
+/// 60 lines), whatever Solver::Options::logging_type says; glog writes that to the process's
+/// stderr even before InitGoogleLogging. A library has no business writing there, so glog's
+/// threshold is raised to FATAL while a calibration runs and put back when the last one ends.
+/// FLAGS_minloglevel is process-wide: other glog users are quiet for that time too.
+class QuietGlog {
+ public:
+  QuietGlog() {
+    const std::lock_guard lock(mutex());
+    if (depth()++ == 0) {
+      saved() = FLAGS_minloglevel;
+      FLAGS_minloglevel = google::GLOG_FATAL;
+    }
+  }
+  ~QuietGlog() {
+    const std::lock_guard lock(mutex());
+    if (--depth() == 0) FLAGS_minloglevel = saved();
+  }
+  QuietGlog(const QuietGlog&) = delete;
+  QuietGlog& operator=(const QuietGlog&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& depth() {
+    static int d = 0;
+    return d;
+  }
+  static int& saved() {
+    static int s = 0;
+    return s;
+  }
+};
+
 /// The recording on its right-arm twin (core/kinematics/Side.h), where everything is fitted.
 struct Prepared {
   std::vector<ArmSample> samples;
@@ -309,6 +348,7 @@ struct Prepared {
   ArmGeometry nominal;
   Vec3 up = Vec3::Zero(), gUp = Vec3::Zero();
   double tFirst = 0.0, tLast = 0.0;  ///< s, first and last IMU time
+  GateCounters implausible;          ///< what the plausibility gate refused
 };
 
 // 0. The recording on the right-arm twin; throws when it cannot be used.
@@ -319,9 +359,13 @@ Prepared prepare(const Recording& recording, const CalibrationOptions& options) 
   in.up = in.left ? mirrorPoint(recording.meta.up) : recording.meta.up;
   in.gUp = recording.meta.g * in.up;
   in.samples.reserve(recording.samples.size());
+  // Plausibility at the door: an absurd but finite reading (1e20 rad/s), a saturated burst or
+  // all-zero rows would otherwise pull the whole fit (one such row gave l3 = l6 = 50 mm).
+  SampleGate gate(PlausibilityLimits::forGeometry(in.nominal.l3, in.nominal.l6));
   bool hasUpper = false, hasForearm = false, hasOptical = false;
   double tFirst = std::numeric_limits<double>::infinity(), tLast = -tFirst;
-  for (const ArmSample& s : recording.samples) {
+  for (const ArmSample& raw : recording.samples) {
+    const ArmSample s = gate.check(raw);
     in.samples.push_back(in.left ? mirrorSample(s) : s);
     hasUpper |= s.upperArm.has_value();
     hasForearm |= s.forearm.has_value();
@@ -331,12 +375,17 @@ Prepared prepare(const Recording& recording, const CalibrationOptions& options) 
       tLast = std::max(tLast, s.t);
     }
   }
-  if (!hasUpper || !hasForearm)
-    throw std::invalid_argument("calibration needs both the upper-arm and the forearm IMU");
+  in.implausible = gate.counters();
+  const std::string refused =
+      in.implausible.total() > 0 ? " (" + in.implausible.summary() + ")" : std::string();
+  if (!hasUpper || !hasForearm) {
+    throw std::invalid_argument("calibration needs both the upper-arm and the forearm IMU" +
+                                refused);
+  }
   if (!(tLast - tFirst >= kMinDuration)) {
     throw std::invalid_argument(
-        "calibration needs at least 10 s of IMU data (the protocol takes "
-        "about a minute)");
+        "calibration needs at least 10 s of IMU data (the protocol takes about a minute)" +
+        refused);
   }
   in.tFirst = tFirst;
   in.tLast = tLast;
@@ -688,8 +737,15 @@ class CalibrationFit {
     m_solverOptions.max_num_iterations = maxIterations;
     ceres::Solve(m_solverOptions, &m_problem, &m_summary);
     m_iterations += static_cast<int>(m_summary.iterations.size()) - 1;
-    if (!m_summary.IsSolutionUsable())
-      throw std::runtime_error("calibration failed: " + m_summary.message);
+    if (m_summary.IsSolutionUsable()) return;
+    std::string why = m_summary.message;
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    if (why.find("evaluation failed") != std::string::npos) {
+      throw std::runtime_error(
+          "calibration failed: the model could not be evaluated on the data (the solver: " + why +
+          "); the recording holds readings the fit cannot use");
+    }
+    throw std::runtime_error("calibration failed: " + why);
   }
 
   /// Without optical data the filter's heading wanders (tens of degrees over a minute with a
@@ -745,8 +801,12 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
   const CalibrationProgress say = [&](const std::string& line) {
     if (progress) progress(line);
   };
+  const QuietGlog quiet;
   CalibrationResult result;
   const Prepared in = prepare(recording, options);
+  result.implausible = in.implausible;
+  if (in.implausible.total() > 0)
+    say("calibrate: " + in.implausible.summary() + "; they take no part in the fit");
   const std::array<Vec3, 2> biasGuess = guessGyroBias(in, options, result, say);
   CalibrationFit fit(in, biasGuess, options, say);
   fit.start(firstTrajectory(in, biasGuess, options, say));
@@ -754,6 +814,14 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
   fit.solve(result);
   result.trajectory = fit.trajectory();
   result.calibration = fit.calibration(recording.meta.side);
+  // A fit no real arm can have (e.g. segment lengths pulled to their bounds) is refused.
+  if (const std::string problem = calibrationProblem(result.calibration); !problem.empty()) {
+    throw std::runtime_error(
+        "the fitted calibration is impossible: " + problem +
+        ". The recording does not determine the calibration: redo the calibration protocol "
+        "(docs/calibration.md), start pose held still and every movement made, and calibrate "
+        "again");
+  }
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   char line[200];
