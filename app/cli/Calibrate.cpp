@@ -1,13 +1,19 @@
 #include "app/cli/Calibrate.h"
 
+#include <stdlib.h>
+#include <unistd.h>
+
 #include <Eigen/Geometry>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/CsvOutput.h"
 #include "app/cli/Text.h"
 #include "core/calibration/Calibrator.h"
 #include "core/simulation/Trajectory.h"
@@ -50,6 +56,25 @@ double rotationDeg(const Eigen::Matrix3d& r) {
   return Eigen::AngleAxisd(r).angle() / kDeg;
 }
 
+/// Refuses an output that could not be written, before the solve (tens of seconds): a directory
+/// or a missing folder (checkOutputPath; whether an existing file may be replaced is the
+/// dispatcher's --overwrite check) and a folder in which no file can be created (read-only,
+/// no permission), found by creating and removing a probe file there as the writer will.
+void checkWritable(const fs::path& target) {
+  checkOutputPath(target, /*overwrite=*/true);
+  const fs::path folder = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::string probe = (folder / ".armtrack-calibrate-probe-XXXXXX").string();
+  errno = 0;
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) {
+    const int e = errno;
+    throw std::runtime_error(target.string() + ": cannot write the calibration there (" +
+                             std::strerror(e) + "); choose another --out");
+  }
+  ::close(fd);
+  ::unlink(probe.c_str());
+}
+
 }  // namespace
 
 int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -82,12 +107,13 @@ int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, st
 
   std::error_code ec;
   if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
+  checkWritable(outPath);
   const Recording rec = readRecording(input);
   for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
   CalibrationResult r;
   try {
     r = calibrate(rec, opt, [&](const std::string& line) { err << line << "\n"; });
-  } catch (const std::invalid_argument& e) {
+  } catch (const std::exception& e) {  // unusable recording, failed solve, impossible result
     throw std::runtime_error(input.string() + ": " + e.what());
   }
   for (const std::string& w : r.warnings) err << "warning: " << w << "\n";

@@ -138,7 +138,35 @@ ImuCalibration mirrorImuCalibration(const ImuCalibration& c) {
   return m;
 }
 
+std::string calibrationProblem(const Calibration& c) {
+  const std::pair<const char*, const ImuCalibration*> imus[] = {{"upperArm", &c.upperArm},
+                                                                {"forearm", &c.forearm}};
+  for (const auto& [key, imu] : imus) {
+    if (!imu->rotation.allFinite() || !imu->gyroBias.allFinite())
+      return std::string("\"") + key + "\" holds a value that is not a finite number";
+    const double e = (imu->rotation.transpose() * imu->rotation - Eigen::Matrix3d::Identity())
+                         .cwiseAbs()
+                         .maxCoeff();
+    if (e > MetaLimits::kRotationTolerance || imu->rotation.determinant() < 0.0)
+      return std::string("\"") + key + ".rotation\" is not a rotation";
+  }
+  RecordingMeta meta;  // the limits of a sidecar's geometry; the rest are defaults
+  meta.geometry = c.geometry;
+  return metaProblem(meta);
+}
+
+namespace {
+
+/// What to do about a calibration outside physical limits.
+constexpr const char* kRedo =
+    ": no real arm has this; redo the calibration protocol (docs/calibration.md) and calibrate "
+    "again";
+
+}  // namespace
+
 void writeCalibration(const fs::path& path, const Calibration& c) {
+  if (const std::string problem = calibrationProblem(c); !problem.empty())
+    fail(path, "refusing to write an impossible calibration: " + problem + kRedo);
   const ArmGeometry& g = c.geometry;
   for (double v : {g.l3, g.l6, g.lu3, g.thu4, g.lu5, g.lf6, g.thf7, g.lf8}) {
     if (!std::isfinite(v)) fail(path, "cannot write a non-finite geometry value");
@@ -235,6 +263,8 @@ Calibration readCalibration(const fs::path& path) {
   if (j.contains("fromStartPose"))
     c.fromStartPose = strings(path, j["fromStartPose"], "fromStartPose");
   if (j.contains("heldFixed")) c.heldFixed = strings(path, j["heldFixed"], "heldFixed");
+  if (const std::string problem = calibrationProblem(c); !problem.empty())
+    fail(path, "an impossible calibration: " + problem + kRedo);
   return c;
 }
 

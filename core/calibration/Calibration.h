@@ -71,10 +71,19 @@ void applyCalibration(const Calibration& c, EstimatorParams& params);
 /// the gyroscope bias, an axial vector, maps as b -> -D b.
 ImuCalibration mirrorImuCalibration(const ImuCalibration& c);
 
+/// The first value of the calibration that no real arm and IMU mounting can have, as a message
+/// that starts with its key in quotes (e.g. "\"geometry.l3\" is 0.05 m: ..."): a non-finite or
+/// non-rotation IMU correction, or a geometry outside the sidecar limits (MetaLimits and
+/// metaProblem in core/io/Recording.h: l3, l6 0.1-0.6 m, strap distances within the segment +
+/// 0.1 m, ...). Empty when every value is possible. Any thread.
+std::string calibrationProblem(const Calibration& c);
+
 /// Writes the calibration as pretty-printed JSON (docs/calibration.md), via a temporary file
-/// renamed into place. Throws CalibrationError.
+/// renamed into place. Throws CalibrationError, also when calibrationProblem() finds a value no
+/// real arm has (nothing is written then).
 void writeCalibration(const std::filesystem::path& path, const Calibration& c);
-/// Reads a calibration file. Throws CalibrationError naming the file and what is wrong.
+/// Reads a calibration file. Throws CalibrationError naming the file and what is wrong, also
+/// when calibrationProblem() finds a value no real arm has.
 Calibration readCalibration(const std::filesystem::path& path);
 
 }  // namespace armtrack

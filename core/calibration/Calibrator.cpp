@@ -7,21 +7,24 @@
 #include "core/calibration/Calibrator.h"
 
 #include <ceres/ceres.h>
-#include <ceres/normal_prior.h>
-#include <ceres/rotation.h>
+#include <glog/logging.h>
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <stdexcept>
 
+#include "core/calibration/CalibrationCosts.h"
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/SampleGate.h"
 #include "core/kinematics/Side.h"
 
 namespace armtrack {
@@ -32,182 +35,19 @@ constexpr double kMinDuration = 10.0;  // s
 // a stiff one keeps the solver's damped steps from drifting along them (rad).
 constexpr double kGaugeStd = 0.01 * std::numbers::pi / 180.0;
 
-using Vec3 = Eigen::Vector3d;
-template <typename T>
-using Vec5T = Eigen::Matrix<T, 5, 1>;
-
-// ---------------------------------------------------------------------------------------------
-// The uniform cubic B-spline of the joint trajectory.
-
-struct SplineGrid {
-  double t0 = 0.0, dt = 0.04;
-  int segments = 1;
-  int controlPoints() const { return segments + 3; }
-};
-
-/// Basis weights at time t: th = sum_i w[i] c[first + i], and likewise for rates (bd) and
-/// accelerations (bdd).
-struct SplineWeights {
-  int first = 0;
-  double b[4], bd[4], bdd[4];
-};
-
-SplineWeights splineWeights(const SplineGrid& g, double t) {
-  const double s = (t - g.t0) / g.dt;
-  int j = static_cast<int>(std::floor(s));
-  j = std::clamp(j, 0, g.segments - 1);
-  const double u = s - j;
-  SplineWeights w;
-  w.first = j;
-  const double u2 = u * u, u3 = u2 * u, v = 1.0 - u;
-  w.b[0] = v * v * v / 6.0;
-  w.b[1] = (3.0 * u3 - 6.0 * u2 + 4.0) / 6.0;
-  w.b[2] = (-3.0 * u3 + 3.0 * u2 + 3.0 * u + 1.0) / 6.0;
-  w.b[3] = u3 / 6.0;
-  const double i1 = 1.0 / g.dt, i2 = i1 * i1;
-  w.bd[0] = -0.5 * v * v * i1;
-  w.bd[1] = (1.5 * u2 - 2.0 * u) * i1;
-  w.bd[2] = (-1.5 * u2 + u + 0.5) * i1;
-  w.bd[3] = 0.5 * u2 * i1;
-  w.bdd[0] = v * i2;
-  w.bdd[1] = (3.0 * u - 2.0) * i2;
-  w.bdd[2] = (1.0 - 3.0 * u) * i2;
-  w.bdd[3] = u * i2;
-  return w;
-}
-
-template <typename T>
-void evalSpline(const SplineWeights& w, const T* const c[4], Vec5T<T>& th, Vec5T<T>& thd,
-                Vec5T<T>& thdd) {
-  for (int j = 0; j < kNumJoints; ++j) {
-    th(j) = w.b[0] * c[0][j] + w.b[1] * c[1][j] + w.b[2] * c[2][j] + w.b[3] * c[3][j];
-    thd(j) = w.bd[0] * c[0][j] + w.bd[1] * c[1][j] + w.bd[2] * c[2][j] + w.bd[3] * c[3][j];
-    thdd(j) = w.bdd[0] * c[0][j] + w.bdd[1] * c[1][j] + w.bdd[2] * c[2][j] + w.bdd[3] * c[3][j];
-  }
-}
-
-// ---------------------------------------------------------------------------------------------
-// Residuals.
-
-/// Predicted sensor reading from a model-frame vector: R^T v with R = exp([tx, 0, tz]).
-template <typename T>
-Eigen::Matrix<T, 3, 1> toSensor(const Eigen::Matrix<T, 3, 1>& v, const T& tx, const T& tz) {
-  const T negTilt[3] = {-tx, T(0), -tz};
-  Eigen::Matrix<T, 3, 1> out;
-  ceres::AngleAxisRotatePoint(negTilt, v.data(), out.data());
-  return out;
-}
-
-/// One binned reading of one IMU.
-struct ImuBin {
-  double t = 0.0;
-  Vec3 gyr = Vec3::Zero(), acc = Vec3::Zero();
-  int count = 0;
-};
-
-struct ImuCost {
-  ImuCost(const SplineWeights& w, const ImuBin& bin, const ArmGeometry& nominal, const Vec3& gUp,
-          double gyroStd, double accelStd, bool forearm)
-      : m_w(w), m_bin(bin), m_nominal(nominal), m_gUp(gUp), m_forearm(forearm) {
-    const double n = std::sqrt(static_cast<double>(bin.count));
-    m_gyroWeight = n / gyroStd;
-    m_accelWeight = n / accelStd;
-  }
-
-  /// Parameters: four control points (5 each), mounting (5), bias (3), segments (2).
-  template <typename T>
-  bool operator()(const T* c0, const T* c1, const T* c2, const T* c3, const T* mount, const T* bias,
-                  const T* seg, T* r) const {
-    const T* const c[4] = {c0, c1, c2, c3};
-    Vec5T<T> th, thd, thdd;
-    evalSpline(m_w, c, th, thd, thdd);
-    ArmGeometryT<T> geo = geometryAs<T>(m_nominal);
-    geo.l3 = seg[0];
-    geo.l6 = seg[1];
-    const FrameState<T> f3 = shoulderKinematics<T>(th, thd, thdd, m_gUp);
-    FrameState<T> imu;
-    if (m_forearm) {
-      geo.lf6 = mount[0];
-      geo.lf8 = mount[1];
-      geo.thf7 = mount[2];
-      imu = forearmImuKinematics<T>(f3, th, thd, thdd, geo);
-    } else {
-      geo.lu3 = mount[0];
-      geo.lu5 = mount[1];
-      geo.thu4 = mount[2];
-      imu = upperImuKinematics<T>(f3, geo);
-    }
-    const Eigen::Matrix<T, 3, 1> acc = imu.up + imu.accel;
-    const Eigen::Matrix<T, 3, 1> gyrS = toSensor<T>(imu.omega, mount[3], mount[4]);
-    const Eigen::Matrix<T, 3, 1> accS = toSensor<T>(acc, mount[3], mount[4]);
-    for (int i = 0; i < 3; ++i) {
-      r[i] = (gyrS(i) + bias[i] - m_bin.gyr(i)) * m_gyroWeight;
-      r[3 + i] = (accS(i) - m_bin.acc(i)) * m_accelWeight;
-    }
-    return true;
-  }
-
-  SplineWeights m_w;
-  ImuBin m_bin;
-  ArmGeometry m_nominal;
-  Vec3 m_gUp;
-  bool m_forearm;
-  double m_gyroWeight = 1.0, m_accelWeight = 1.0;
-};
-
-struct PositionCost {
-  PositionCost(const SplineWeights& w, const Vec3& measured, bool wrist, const ArmGeometry& nominal,
-               double std)
-      : m_w(w), m_measured(measured), m_wrist(wrist), m_nominal(nominal), m_weight(1.0 / std) {}
-
-  template <typename T>
-  bool operator()(const T* c0, const T* c1, const T* c2, const T* c3, const T* seg, T* r) const {
-    const T* const c[4] = {c0, c1, c2, c3};
-    Vec5T<T> th, thd, thdd;
-    evalSpline(m_w, c, th, thd, thdd);
-    ArmGeometryT<T> geo = geometryAs<T>(m_nominal);
-    geo.l3 = seg[0];
-    geo.l6 = seg[1];
-    Eigen::Matrix<T, 3, 1> elbow, wrist;
-    armPositions<T>(th, geo, elbow, wrist);
-    const Eigen::Matrix<T, 3, 1>& p = m_wrist ? wrist : elbow;
-    for (int i = 0; i < 3; ++i) r[i] = (p(i) - m_measured(i)) * m_weight;
-    return true;
-  }
-
-  SplineWeights m_w;
-  Vec3 m_measured;
-  bool m_wrist;
-  ArmGeometry m_nominal;
-  double m_weight;
-};
-
-/// d . (th(t) - target) / std: the start-pose prior along one direction.
-struct StartPoseCost {
-  StartPoseCost(const SplineWeights& w, const JointVector& direction, const JointVector& target,
-                double std)
-      : m_w(w), m_direction(direction), m_target(target), m_weight(1.0 / std) {}
-
-  template <typename T>
-  bool operator()(const T* c0, const T* c1, const T* c2, const T* c3, T* r) const {
-    const T* const c[4] = {c0, c1, c2, c3};
-    Vec5T<T> th, thd, thdd;
-    evalSpline(m_w, c, th, thd, thdd);
-    T s(0);
-    for (int j = 0; j < kNumJoints; ++j) s += m_direction(j) * (th(j) - m_target(j));
-    r[0] = s * m_weight;
-    return true;
-  }
-
-  SplineWeights m_w;
-  JointVector m_direction, m_target;
-  double m_weight;
-};
-
-ceres::CostFunction* normalPrior(const Eigen::VectorXd& mean, const Eigen::VectorXd& std) {
-  const Eigen::MatrixXd a = std.cwiseInverse().asDiagonal();
-  return new ceres::NormalPrior(a, mean);
-}
+using calib::evalSpline;
+using calib::fitSpline;
+using calib::ImuBin;
+using calib::ImuCost;
+using calib::normalPrior;
+using calib::PositionCost;
+using calib::SplineGrid;
+using calib::splineWeights;
+using calib::SplineWeights;
+using calib::StartPoseCost;
+using calib::toSensor;
+using calib::Vec3;
+using calib::Vec5T;
 
 // ---------------------------------------------------------------------------------------------
 // Preparation.
@@ -268,61 +108,6 @@ StillStats stillStats(const std::vector<ArmSample>& samples, bool forearm, doubl
   const Vec3 var = (sumSq / st.count - st.mean.cwiseProduct(st.mean)).cwiseMax(0.0);
   st.maxStd = std::sqrt(var.maxCoeff());
   return st;
-}
-
-/// Least-squares fit of the spline to the filter's angles (unwrapped), with a light second-
-/// difference penalty so knots without data stay put.
-std::vector<double> fitSpline(const SplineGrid& grid, const std::vector<JointEstimate>& est,
-                              const JointVector& fallback) {
-  const int k = grid.controlPoints();
-  std::vector<Eigen::Triplet<double>> trip;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(k, kNumJoints);
-  JointVector prev = JointVector::Zero(), offset = JointVector::Zero();
-  bool first = true;
-  for (const JointEstimate& e : est) {
-    JointVector th = e.th;
-    if (!th.allFinite()) continue;
-    if (first) {
-      first = false;
-    } else {
-      for (int j = 0; j < kNumJoints; ++j) {
-        const double d = th(j) + offset(j) - prev(j);
-        offset(j) -= 2.0 * std::numbers::pi * std::round(d / (2.0 * std::numbers::pi));
-      }
-    }
-    th += offset;
-    prev = th;
-    const SplineWeights w = splineWeights(grid, e.t);
-    for (int a = 0; a < 4; ++a) {
-      for (int b = 0; b < 4; ++b) trip.emplace_back(w.first + a, w.first + b, w.b[a] * w.b[b]);
-      rhs.row(w.first + a) += w.b[a] * th.transpose();
-    }
-  }
-  // Second differences of the control points, weighted lightly, plus a tiny pull to fallback.
-  const double smooth = 1e-3, ridge = 1e-9;
-  for (int i = 0; i + 2 < k; ++i) {
-    const int idx[3] = {i, i + 1, i + 2};
-    const double c[3] = {1.0, -2.0, 1.0};
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) trip.emplace_back(idx[a], idx[b], smooth * c[a] * c[b]);
-  }
-  for (int i = 0; i < k; ++i) {
-    trip.emplace_back(i, i, ridge);
-    rhs.row(i) += ridge * fallback.transpose();
-  }
-  Eigen::SparseMatrix<double> ata(k, k);
-  ata.setFromTriplets(trip.begin(), trip.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(ata);
-  std::vector<double> ctrl(static_cast<std::size_t>(k) * kNumJoints);
-  if (solver.info() != Eigen::Success) {
-    for (int i = 0; i < k; ++i)
-      for (int j = 0; j < kNumJoints; ++j) ctrl[5 * i + j] = fallback(j);
-    return ctrl;
-  }
-  const Eigen::MatrixXd x = solver.solve(rhs);
-  for (int i = 0; i < k; ++i)
-    for (int j = 0; j < kNumJoints; ++j) ctrl[5 * i + j] = x(i, j);
-  return ctrl;
 }
 
 class ProgressCallback final : public ceres::IterationCallback {
@@ -517,25 +302,71 @@ Eigen::Matrix3d mountingRotation(double strapAngle, double referenceStrapAngle,
          residual;
 }
 
-CalibrationResult calibrate(const Recording& recording, const CalibrationOptions& options,
-                            const CalibrationProgress& progress) {
-  const auto wallStart = std::chrono::steady_clock::now();
-  auto say = [&](const std::string& line) {
-    if (progress) progress(line);
-  };
-  CalibrationResult result;
-  const bool left = recording.meta.side == Side::Left;
-  const ArmGeometry nominal = recording.meta.geometry;
-  const Vec3 up = left ? mirrorPoint(recording.meta.up) : recording.meta.up;
-  const Vec3 gUp = recording.meta.g * up;
+namespace {
 
-  // Everything is fitted on the right-arm twin (core/kinematics/Side.h).
+/// Ceres reports a failed evaluation through glog, LOG(WARNING) with every parameter value (about
+/// 60 lines), whatever Solver::Options::logging_type says; glog writes that to the process's
+/// stderr even before InitGoogleLogging. A library has no business writing there, so glog's
+/// threshold is raised to FATAL while a calibration runs and put back when the last one ends.
+/// FLAGS_minloglevel is process-wide: other glog users are quiet for that time too.
+class QuietGlog {
+ public:
+  QuietGlog() {
+    const std::lock_guard lock(mutex());
+    if (depth()++ == 0) {
+      saved() = FLAGS_minloglevel;
+      FLAGS_minloglevel = google::GLOG_FATAL;
+    }
+  }
+  ~QuietGlog() {
+    const std::lock_guard lock(mutex());
+    if (--depth() == 0) FLAGS_minloglevel = saved();
+  }
+  QuietGlog(const QuietGlog&) = delete;
+  QuietGlog& operator=(const QuietGlog&) = delete;
+
+ private:
+  static std::mutex& mutex() {
+    static std::mutex m;
+    return m;
+  }
+  static int& depth() {
+    static int d = 0;
+    return d;
+  }
+  static int& saved() {
+    static int s = 0;
+    return s;
+  }
+};
+
+/// The recording on its right-arm twin (core/kinematics/Side.h), where everything is fitted.
+struct Prepared {
   std::vector<ArmSample> samples;
-  samples.reserve(recording.samples.size());
+  bool left = false;
+  bool optical = false;  ///< optical positions present and wanted
+  ArmGeometry nominal;
+  Vec3 up = Vec3::Zero(), gUp = Vec3::Zero();
+  double tFirst = 0.0, tLast = 0.0;  ///< s, first and last IMU time
+  GateCounters implausible;          ///< what the plausibility gate refused
+};
+
+// 0. The recording on the right-arm twin; throws when it cannot be used.
+Prepared prepare(const Recording& recording, const CalibrationOptions& options) {
+  Prepared in;
+  in.left = recording.meta.side == Side::Left;
+  in.nominal = recording.meta.geometry;
+  in.up = in.left ? mirrorPoint(recording.meta.up) : recording.meta.up;
+  in.gUp = recording.meta.g * in.up;
+  in.samples.reserve(recording.samples.size());
+  // Plausibility at the door: an absurd but finite reading (1e20 rad/s), a saturated burst or
+  // all-zero rows would otherwise pull the whole fit (one such row gave l3 = l6 = 50 mm).
+  SampleGate gate(PlausibilityLimits::forGeometry(in.nominal.l3, in.nominal.l6));
   bool hasUpper = false, hasForearm = false, hasOptical = false;
   double tFirst = std::numeric_limits<double>::infinity(), tLast = -tFirst;
-  for (const ArmSample& s : recording.samples) {
-    samples.push_back(left ? mirrorSample(s) : s);
+  for (const ArmSample& raw : recording.samples) {
+    const ArmSample s = gate.check(raw);
+    in.samples.push_back(in.left ? mirrorSample(s) : s);
     hasUpper |= s.upperArm.has_value();
     hasForearm |= s.forearm.has_value();
     hasOptical |= s.elbow.has_value() || s.wrist.has_value();
@@ -544,20 +375,31 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
       tLast = std::max(tLast, s.t);
     }
   }
-  if (!hasUpper || !hasForearm)
-    throw std::invalid_argument("calibration needs both the upper-arm and the forearm IMU");
+  in.implausible = gate.counters();
+  const std::string refused =
+      in.implausible.total() > 0 ? " (" + in.implausible.summary() + ")" : std::string();
+  if (!hasUpper || !hasForearm) {
+    throw std::invalid_argument("calibration needs both the upper-arm and the forearm IMU" +
+                                refused);
+  }
   if (!(tLast - tFirst >= kMinDuration)) {
     throw std::invalid_argument(
-        "calibration needs at least 10 s of IMU data (the protocol takes "
-        "about a minute)");
+        "calibration needs at least 10 s of IMU data (the protocol takes about a minute)" +
+        refused);
   }
-  const bool optical = hasOptical && options.useOptical;
+  in.tFirst = tFirst;
+  in.tLast = tLast;
+  in.optical = hasOptical && options.useOptical;
+  return in;
+}
 
-  // 1. Still start: first gyroscope-bias guess.
-  const double stillEnd = tFirst + options.startStillSeconds;
-  Vec3 biasGuess[2];
+// 1. Still start: first gyroscope-bias guess per IMU (upper arm, forearm).
+std::array<Vec3, 2> guessGyroBias(const Prepared& in, const CalibrationOptions& options,
+                                  CalibrationResult& result, const CalibrationProgress& say) {
+  const double stillEnd = in.tFirst + options.startStillSeconds;
+  std::array<Vec3, 2> biasGuess;
   for (int imu = 0; imu < 2; ++imu) {
-    const StillStats st = stillStats(samples, imu == 1, tFirst, stillEnd);
+    const StillStats st = stillStats(in.samples, imu == 1, in.tFirst, stillEnd);
     const char* name = imu == 0 ? "upper-arm" : "forearm";
     // Noise alone gives the per-reading std; a moving arm gives tens of deg/s.
     const double limit = 3.0 * options.gyroStd + 2.0 * kDeg;
@@ -572,78 +414,273 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
       biasGuess[imu] = st.mean;
     }
   }
-  {
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "calibrate: start-pose gyro bias guess upper [%.3f %.3f %.3f], forearm "
-                  "[%.3f %.3f %.3f] deg/s",
-                  biasGuess[0].x() / kDeg, biasGuess[0].y() / kDeg, biasGuess[0].z() / kDeg,
-                  biasGuess[1].x() / kDeg, biasGuess[1].y() / kDeg, biasGuess[1].z() / kDeg);
-    say(line);
-  }
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "calibrate: start-pose gyro bias guess upper [%.3f %.3f %.3f], forearm "
+                "[%.3f %.3f %.3f] deg/s",
+                biasGuess[0].x() / kDeg, biasGuess[0].y() / kDeg, biasGuess[0].z() / kDeg,
+                biasGuess[1].x() / kDeg, biasGuess[1].y() / kDeg, biasGuess[1].z() / kDeg);
+  say(line);
+  return biasGuess;
+}
 
-  // 2. First trajectory from the EKF with the nominal mounting and the bias guess.
-  std::vector<ArmSample> corrected = samples;
+// 2. First trajectory from the EKF with the nominal mounting and the bias guess.
+std::vector<JointEstimate> firstTrajectory(const Prepared& in, const std::array<Vec3, 2>& biasGuess,
+                                           const CalibrationOptions& options,
+                                           const CalibrationProgress& say) {
+  std::vector<ArmSample> corrected = in.samples;
   for (ArmSample& s : corrected) {
     if (s.upperArm) s.upperArm->gyr -= biasGuess[0];
     if (s.forearm) s.forearm->gyr -= biasGuess[1];
   }
   EstimatorParams ekf;
-  ekf.geometry = nominal;
-  ekf.gUp = gUp;
+  ekf.geometry = in.nominal;
+  ekf.gUp = in.gUp;
   ekf.side = Side::Right;
-  ekf.useOptical = optical;
+  ekf.useOptical = in.optical;
   ekf.jointAccelVariance = options.initialFilterJointAccelStd * options.initialFilterJointAccelStd;
-  const BatchResult first = estimateSamples(corrected, ekf);
-  corrected.clear();
-  corrected.shrink_to_fit();
+  BatchResult first = estimateSamples(corrected, ekf);
   if (first.estimates.empty())
     throw std::invalid_argument("the joint-angle filter produced no estimate for the recording");
   say("calibrate: first trajectory from the EKF (" + std::to_string(first.estimates.size()) +
       " estimates)");
+  return std::move(first.estimates);
+}
 
-  SplineGrid grid;
-  grid.t0 = tFirst;
-  grid.dt = options.knotSpacing;
-  grid.segments = std::max(1, static_cast<int>(std::ceil((tLast - tFirst) / grid.dt)));
-  std::vector<double> ctrl = fitSpline(grid, first.estimates, options.startPose);
-  const int nCtrl = grid.controlPoints();
-  const double tPrior = tFirst + 0.5 * options.startStillSeconds;
-  const SplineWeights priorWeights = splineWeights(grid, tPrior);
-  auto thOf = [](const std::vector<double>& cp, const SplineWeights& w) {
-    const double* const c[4] = {cp.data() + 5 * w.first, cp.data() + 5 * (w.first + 1),
-                                cp.data() + 5 * (w.first + 2), cp.data() + 5 * (w.first + 3)};
-    Vec5T<double> th, thd, thdd;
-    evalSpline(w, c, th, thd, thdd);
-    return JointVector(th);
-  };
-  auto thAt = [&](const SplineWeights& w) { return thOf(ctrl, w); };
-  {
-    const JointVector th = thAt(priorWeights);
+/// Steps 3 to 5: the Ceres problem (parameter blocks, priors, data), its solution and the
+/// calibration it gives. The parameter blocks are members, so their addresses stay fixed.
+class CalibrationFit {
+ public:
+  CalibrationFit(const Prepared& in, const std::array<Vec3, 2>& biasGuess,
+                 const CalibrationOptions& options, const CalibrationProgress& say)
+      : m_in(in), m_options(options), m_say(say), m_problem(problemOptions()) {
+    const ArmGeometry& nominal = in.nominal;
+    m_grid.t0 = in.tFirst;
+    m_grid.dt = options.knotSpacing;
+    m_grid.segments = std::max(1, static_cast<int>(std::ceil((in.tLast - in.tFirst) / m_grid.dt)));
+    m_priorWeights = splineWeights(m_grid, in.tFirst + 0.5 * options.startStillSeconds);
+    // 3. Parameter blocks.
+    m_mountUa = {nominal.lu3, nominal.lu5, nominal.thu4, 0.0, 0.0};
+    m_mountFa = {nominal.lf6, nominal.lf8, nominal.thf7, 0.0, 0.0};
+    m_biasUa = {biasGuess[0].x(), biasGuess[0].y(), biasGuess[0].z()};
+    m_biasFa = {biasGuess[1].x(), biasGuess[1].y(), biasGuess[1].z()};
+    m_seg = {nominal.l3, nominal.l6};
+    const double binSeconds = 1.0 / options.residualRateHz;
+    m_bins[0] = binImu(in.samples, false, in.tFirst, binSeconds, biasGuess[0]);
+    m_bins[1] = binImu(in.samples, true, in.tFirst, binSeconds, biasGuess[1]);
+    if (in.optical) {
+      for (const ArmSample& s : in.samples) {
+        if (s.t < in.tFirst || s.t > in.tLast) continue;
+        if (s.elbow && s.elbow->allFinite()) m_points.push_back({s.t, *s.elbow, false});
+        if (s.wrist && s.wrist->allFinite()) m_points.push_back({s.t, *s.wrist, true});
+      }
+    }
+  }
+
+  std::size_t imuBins() const { return m_bins[0].size() + m_bins[1].size(); }
+  std::size_t opticalPoints() const { return m_points.size(); }
+
+  /// The spline fitted to the filter's trajectory, then put on the start pose.
+  void start(const std::vector<JointEstimate>& first) {
+    m_ctrl = fitSpline(m_grid, first, m_options.startPose);
+    const JointVector th = thAt(m_priorWeights);
     char line[200];
     std::snprintf(line, sizeof line,
                   "calibrate: the filter's start pose [%.1f %.1f %.1f %.1f %.1f] deg", th(0) / kDeg,
                   th(1) / kDeg, th(2) / kDeg, th(3) / kDeg, th(4) / kDeg);
-    say(line);
+    m_say(line);
+    alignGauges();
   }
 
-  // 3. Parameter blocks.
-  double mountUa[5] = {nominal.lu3, nominal.lu5, nominal.thu4, 0.0, 0.0};
-  double mountFa[5] = {nominal.lf6, nominal.lf8, nominal.thf7, 0.0, 0.0};
-  double biasUa[3] = {biasGuess[0].x(), biasGuess[0].y(), biasGuess[0].z()};
-  double biasFa[3] = {biasGuess[1].x(), biasGuess[1].y(), biasGuess[1].z()};
-  double seg[2] = {nominal.l3, nominal.l6};
+  /// Priors first (they bring in the calibration blocks): the start pose at the middle of the
+  /// still start, along pronation (th5 + thf7 is a gauge) and, without optical data, along the
+  /// heading about the vertical; weak priors on the calibration; the bounds.
+  void addPriors() {
+    const ArmGeometry& nominal = m_in.nominal;
+    std::vector<JointVector> directions;
+    directions.push_back(JointVector::Unit(4));
+    if (!m_in.optical) directions.push_back(headingDirection(m_options.startPose, m_in.up));
+    for (const JointVector& d : directions) {
+      auto* cost = new ceres::AutoDiffCostFunction<StartPoseCost, 1, 5, 5, 5, 5>(
+          new StartPoseCost(m_priorWeights, d, m_options.startPose, kGaugeStd));
+      m_problem.AddResidualBlock(cost, nullptr, ctrlBlocks(m_priorWeights));
+    }
+    Eigen::VectorXd mean(5), std(5);
+    const double L = m_options.lengthPriorStd, A = m_options.strapAnglePriorStd,
+                 R = m_options.tiltPriorStd;
+    mean << nominal.lu3, nominal.lu5, nominal.thu4, 0.0, 0.0;
+    std << L, L, A, R, R;
+    m_problem.AddResidualBlock(normalPrior(mean, std), nullptr, m_mountUa.data());
+    // thf7: no real prior, the start pose fixes it (1e3 rad is only numerical safety).
+    mean << nominal.lf6, nominal.lf8, nominal.thf7, 0.0, 0.0;
+    std << L, L, 1e3, R, R;
+    m_problem.AddResidualBlock(normalPrior(mean, std), nullptr, m_mountFa.data());
+    const Eigen::VectorXd b0 = Eigen::VectorXd::Zero(3);
+    const Eigen::VectorXd bs = Eigen::VectorXd::Constant(3, m_options.biasPriorStd);
+    m_problem.AddResidualBlock(normalPrior(b0, bs), nullptr, m_biasUa.data());
+    m_problem.AddResidualBlock(normalPrior(b0, bs), nullptr, m_biasFa.data());
+    Eigen::VectorXd sm(2), ss(2);
+    sm << nominal.l3, nominal.l6;
+    ss << L, L;
+    m_problem.AddResidualBlock(normalPrior(sm, ss), nullptr, m_seg.data());
 
-  // The gauges, moved exactly instead of by the solver (whose damped steps barely move along a
-  // direction that only one prior term sees): pronation th5 and the strap angle thf7 only appear
-  // as th5 + thf7, and without optical data turning the whole trajectory about the vertical
-  // changes no reading. Both are put where the start pose says.
-  auto alignGauges = [&](bool report) {
+    for (double* m : {m_mountUa.data(), m_mountFa.data()}) {
+      m_problem.SetParameterLowerBound(m, 0, 0.0);
+      m_problem.SetParameterLowerBound(m, 1, 0.0);
+    }
+    if (fitSegments()) {
+      m_problem.SetParameterLowerBound(m_seg.data(), 0, 0.05);
+      m_problem.SetParameterLowerBound(m_seg.data(), 1, 0.05);
+    } else {
+      m_problem.SetParameterBlockConstant(m_seg.data());
+    }
+  }
+
+  // 4. Solve: in stages without optical data, then over everything, then the polish after the
+  // gauges are put back on the start pose.
+  void solve(CalibrationResult& result) {
+    ProgressCallback callback(m_say);
+    m_solverOptions.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
+    m_solverOptions.num_threads = std::max(1, m_options.threads);
+    m_solverOptions.function_tolerance = 1e-6;
+    m_solverOptions.parameter_tolerance = 1e-9;
+    m_solverOptions.logging_type = ceres::SILENT;
+    m_solverOptions.minimizer_progress_to_stdout = false;
+    m_solverOptions.callbacks.push_back(&callback);
+    if (!m_in.optical && m_options.stageSeconds > 0.0) solveInStages();
+    addDataUpTo(std::numeric_limits<double>::infinity());
+    m_say("calibrate: solving, " + std::to_string(m_grid.controlPoints()) + " knots, " +
+          std::to_string(imuBins()) + " IMU bins, " + std::to_string(opticalPoints()) +
+          " optical points");
+    solveOnce(m_options.maxIterations);
+    alignGauges();
+    solveOnce(m_options.polishIterations);
+    m_solverOptions.callbacks.clear();
+    result.iterations = m_iterations;
+    result.converged = m_summary.termination_type == ceres::CONVERGENCE;
+    result.initialCost = m_summary.initial_cost;
+    result.finalCost = m_summary.final_cost;
+    if (!result.converged)
+      result.warnings.push_back("the solver stopped before converging: " + m_summary.message);
+    result.imuBins = imuBins();
+    result.opticalPoints = opticalPoints();
+    result.rmsUpperGyro = rmsOf(m_problem, m_upperBlocks, 0, 6, 3);
+    result.rmsUpperAcc = rmsOf(m_problem, m_upperBlocks, 3, 6, 3);
+    result.rmsForearmGyro = rmsOf(m_problem, m_forearmBlocks, 0, 6, 3);
+    result.rmsForearmAcc = rmsOf(m_problem, m_forearmBlocks, 3, 6, 3);
+    result.rmsPosition = rmsOf(m_problem, m_positionBlocks, 0, 3, 3);
+  }
+
+  /// The fitted joint trajectory at residualRateHz, in the recording's time.
+  std::vector<JointEstimate> trajectory() const {
+    std::vector<JointEstimate> out;
+    const double binSeconds = 1.0 / m_options.residualRateHz;
+    for (double t = m_in.tFirst; t <= m_in.tLast; t += binSeconds) {
+      const SplineWeights w = splineWeights(m_grid, t);
+      Vec5T<double> th, thd, thdd;
+      evalAt(m_ctrl, w, th, thd, thdd);
+      JointEstimate e;
+      e.t = t;
+      for (int j = 0; j < kNumJoints; ++j) e.th(j) = wrapAngle(th(j));
+      e.thd = thd;
+      e.thdd = thdd;
+      out.push_back(e);
+    }
+    return out;
+  }
+
+  // 5. The calibration, in the real sensors' axes.
+  Calibration calibration(Side side) const {
+    Calibration c;
+    c.side = side;
+    c.geometry = m_in.nominal;
+    c.geometry.lu3 = m_mountUa[0];
+    c.geometry.lu5 = m_mountUa[1];
+    c.geometry.thu4 = wrapAngle(m_mountUa[2]);
+    c.geometry.lf6 = m_mountFa[0];
+    c.geometry.lf8 = m_mountFa[1];
+    c.geometry.thf7 = wrapAngle(m_mountFa[2]);
+    c.geometry.l3 = m_seg[0];
+    c.geometry.l6 = m_seg[1];
+    auto tilt = [](const std::array<double, 5>& m) {
+      const Vec3 v(m[3], 0.0, m[4]);
+      const double a = v.norm();
+      return a < 1e-300 ? Eigen::Matrix3d::Identity()
+                        : Eigen::AngleAxisd(a, v / a).toRotationMatrix();
+    };
+    c.upperArm.rotation = tilt(m_mountUa);
+    c.upperArm.gyroBias = Vec3(m_biasUa[0], m_biasUa[1], m_biasUa[2]);
+    c.forearm.rotation = tilt(m_mountFa);
+    c.forearm.gyroBias = Vec3(m_biasFa[0], m_biasFa[1], m_biasFa[2]);
+    if (m_in.left) {
+      c.upperArm = mirrorImuCalibration(c.upperArm);
+      c.forearm = mirrorImuCalibration(c.forearm);
+    }
+    c.opticalUsed = m_in.optical;
+    c.headingFromStartPoseOnly = !m_in.optical;
+    c.estimated = {"lu3",
+                   "lu5",
+                   "thu4",
+                   "upperArm.rotation",
+                   "upperArm.gyroBias",
+                   "lf6",
+                   "lf8",
+                   "forearm.rotation",
+                   "forearm.gyroBias"};
+    c.fromStartPose = {"thf7"};
+    if (!m_in.optical) c.fromStartPose.push_back("heading");
+    if (fitSegments()) {
+      c.estimated.push_back("l3");
+      c.estimated.push_back("l6");
+    } else {
+      c.heldFixed = {"l3", "l6"};
+    }
+    return c;
+  }
+
+ private:
+  struct Point {
+    double t;
+    Vec3 p;
+    bool wrist;
+  };
+
+  static ceres::Problem::Options problemOptions() {
+    ceres::Problem::Options popt;
+    popt.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+    return popt;
+  }
+
+  bool fitSegments() const { return m_in.optical && m_options.estimateSegmentLengths; }
+
+  static void evalAt(const std::vector<double>& cp, const SplineWeights& w, Vec5T<double>& th,
+                     Vec5T<double>& thd, Vec5T<double>& thdd) {
+    const double* const c[4] = {cp.data() + 5 * w.first, cp.data() + 5 * (w.first + 1),
+                                cp.data() + 5 * (w.first + 2), cp.data() + 5 * (w.first + 3)};
+    evalSpline(w, c, th, thd, thdd);
+  }
+  JointVector thAt(const SplineWeights& w) const {
+    Vec5T<double> th, thd, thdd;
+    evalAt(m_ctrl, w, th, thd, thdd);
+    return JointVector(th);
+  }
+  double* ctrlAt(int i) { return m_ctrl.data() + 5 * i; }
+  std::vector<double*> ctrlBlocks(const SplineWeights& w) {
+    return std::vector<double*>{ctrlAt(w.first), ctrlAt(w.first + 1), ctrlAt(w.first + 2),
+                                ctrlAt(w.first + 3)};
+  }
+
+  /// The gauges, moved exactly instead of by the solver (whose damped steps barely move along a
+  /// direction that only one prior term sees): pronation th5 and the strap angle thf7 only appear
+  /// as th5 + thf7, and without optical data turning the whole trajectory about the vertical
+  /// changes no reading. Both are put where the start pose says.
+  void alignGauges() {
+    const JointVector& pose = m_options.startPose;
     double alpha = 0.0;
-    if (!optical) {
-      const JointVector th = thAt(priorWeights);
-      const JointVector d = headingDirection(options.startPose, up);
-      auto f = [&](double a) { return d.dot(turnAboutVertical(th, a, up) - options.startPose); };
+    if (!m_in.optical) {
+      const JointVector th = thAt(m_priorWeights);
+      const JointVector d = headingDirection(pose, m_in.up);
+      auto f = [&](double a) { return d.dot(turnAboutVertical(th, a, m_in.up) - pose); };
       double a0 = 0.0, a1 = 0.02, f0 = f(a0), f1 = f(a1);
       for (int it = 0; it < 30 && std::abs(f1) > 1e-10 && f1 != f0; ++it) {
         const double a2 = a1 - f1 * (a1 - a0) / (f1 - f0);
@@ -654,245 +691,137 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
       }
       if (std::isfinite(a1) && std::abs(f1) < 1e-6) {
         alpha = a1;
-        turnKnots(ctrl, 0, alpha, up);
+        turnKnots(m_ctrl, 0, alpha, m_in.up);
       }
     }
-    const double dth5 = thAt(priorWeights)(4) - options.startPose(4);
-    for (int i = 0; i < nCtrl; ++i) ctrl[5 * i + 4] -= dth5;
-    mountFa[2] += dth5;
-    if (report) {
-      char line[160];
-      std::snprintf(
-          line, sizeof line,
-          "calibrate: to the start pose: turned %.2f deg about the vertical, th5 %.2f deg",
-          alpha / kDeg, -dth5 / kDeg);
-      say(line);
-    }
-  };
-  alignGauges(true);
-
-  ceres::Problem::Options popt;
-  popt.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-  ceres::Problem problem(popt);
-  auto ctrlAt = [&](int i) { return ctrl.data() + 5 * i; };
-  auto ctrlBlocks = [&](const SplineWeights& w) {
-    return std::vector<double*>{ctrlAt(w.first), ctrlAt(w.first + 1), ctrlAt(w.first + 2),
-                                ctrlAt(w.first + 3)};
-  };
-
-  // Priors first (they bring in the calibration blocks): the start pose at the middle of the
-  // still start, along pronation (th5 + thf7 is a gauge) and, without optical data, along the
-  // heading about the vertical; weak priors on the calibration.
-  {
-    std::vector<JointVector> directions;
-    directions.push_back(JointVector::Unit(4));
-    if (!optical) directions.push_back(headingDirection(options.startPose, up));
-    for (const JointVector& d : directions) {
-      auto* cost = new ceres::AutoDiffCostFunction<StartPoseCost, 1, 5, 5, 5, 5>(
-          new StartPoseCost(priorWeights, d, options.startPose, kGaugeStd));
-      problem.AddResidualBlock(cost, nullptr, ctrlBlocks(priorWeights));
-    }
-    Eigen::VectorXd mean(5), std(5);
-    const double L = options.lengthPriorStd, A = options.strapAnglePriorStd,
-                 R = options.tiltPriorStd;
-    mean << nominal.lu3, nominal.lu5, nominal.thu4, 0.0, 0.0;
-    std << L, L, A, R, R;
-    problem.AddResidualBlock(normalPrior(mean, std), nullptr, mountUa);
-    // thf7: no real prior, the start pose fixes it (1e3 rad is only numerical safety).
-    mean << nominal.lf6, nominal.lf8, nominal.thf7, 0.0, 0.0;
-    std << L, L, 1e3, R, R;
-    problem.AddResidualBlock(normalPrior(mean, std), nullptr, mountFa);
-    const Eigen::VectorXd b0 = Eigen::VectorXd::Zero(3);
-    const Eigen::VectorXd bs = Eigen::VectorXd::Constant(3, options.biasPriorStd);
-    problem.AddResidualBlock(normalPrior(b0, bs), nullptr, biasUa);
-    problem.AddResidualBlock(normalPrior(b0, bs), nullptr, biasFa);
-    Eigen::VectorXd sm(2), ss(2);
-    sm << nominal.l3, nominal.l6;
-    ss << L, L;
-    problem.AddResidualBlock(normalPrior(sm, ss), nullptr, seg);
-  }
-  for (double* m : {mountUa, mountFa}) {
-    problem.SetParameterLowerBound(m, 0, 0.0);
-    problem.SetParameterLowerBound(m, 1, 0.0);
-  }
-  const bool fitSegments = optical && options.estimateSegmentLengths;
-  if (fitSegments) {
-    problem.SetParameterLowerBound(seg, 0, 0.05);
-    problem.SetParameterLowerBound(seg, 1, 0.05);
-  } else {
-    problem.SetParameterBlockConstant(seg);
+    const double dth5 = thAt(m_priorWeights)(4) - pose(4);
+    for (int i = 0; i < m_grid.controlPoints(); ++i) m_ctrl[5 * i + 4] -= dth5;
+    m_mountFa[2] += dth5;
+    char line[160];
+    std::snprintf(line, sizeof line,
+                  "calibrate: to the start pose: turned %.2f deg about the vertical, th5 %.2f deg",
+                  alpha / kDeg, -dth5 / kDeg);
+    m_say(line);
   }
 
-  // The data, added in time order up to a horizon.
-  const double binSeconds = 1.0 / options.residualRateHz;
-  const std::vector<ImuBin> bins[2] = {binImu(samples, false, tFirst, binSeconds, biasGuess[0]),
-                                       binImu(samples, true, tFirst, binSeconds, biasGuess[1])};
-  struct Point {
-    double t;
-    Vec3 p;
-    bool wrist;
-  };
-  std::vector<Point> points;
-  if (optical) {
-    for (const ArmSample& s : samples) {
-      if (s.t < tFirst || s.t > tLast) continue;
-      if (s.elbow && s.elbow->allFinite()) points.push_back({s.t, *s.elbow, false});
-      if (s.wrist && s.wrist->allFinite()) points.push_back({s.t, *s.wrist, true});
-    }
-  }
-  std::vector<ceres::ResidualBlockId> upperBlocks, forearmBlocks, positionBlocks;
-  std::size_t nextBin[2] = {0, 0}, nextPoint = 0;
-  auto addDataUpTo = [&](double horizon) {
+  /// The data, added in time order up to a horizon (s).
+  void addDataUpTo(double horizon) {
     for (int imu = 0; imu < 2; ++imu) {
       const bool fa = imu == 1;
-      for (; nextBin[imu] < bins[imu].size() && bins[imu][nextBin[imu]].t <= horizon;
-           ++nextBin[imu]) {
-        const ImuBin& bin = bins[imu][nextBin[imu]];
-        const SplineWeights w = splineWeights(grid, bin.t);
+      for (; m_nextBin[imu] < m_bins[imu].size() && m_bins[imu][m_nextBin[imu]].t <= horizon;
+           ++m_nextBin[imu]) {
+        const ImuBin& bin = m_bins[imu][m_nextBin[imu]];
+        const SplineWeights w = splineWeights(m_grid, bin.t);
         auto* cost = new ceres::AutoDiffCostFunction<ImuCost, 6, 5, 5, 5, 5, 5, 3, 2>(
-            new ImuCost(w, bin, nominal, gUp, options.gyroStd, options.accelStd, fa));
+            new ImuCost(w, bin, m_in.nominal, m_in.gUp, m_options.gyroStd, m_options.accelStd, fa));
         std::vector<double*> blocks = ctrlBlocks(w);
-        blocks.push_back(fa ? mountFa : mountUa);
-        blocks.push_back(fa ? biasFa : biasUa);
-        blocks.push_back(seg);
-        (fa ? forearmBlocks : upperBlocks)
-            .push_back(problem.AddResidualBlock(cost, nullptr, blocks));
+        blocks.push_back(fa ? m_mountFa.data() : m_mountUa.data());
+        blocks.push_back(fa ? m_biasFa.data() : m_biasUa.data());
+        blocks.push_back(m_seg.data());
+        (fa ? m_forearmBlocks : m_upperBlocks)
+            .push_back(m_problem.AddResidualBlock(cost, nullptr, blocks));
       }
     }
-    for (; nextPoint < points.size() && points[nextPoint].t <= horizon; ++nextPoint) {
-      const Point& pt = points[nextPoint];
-      const SplineWeights w = splineWeights(grid, pt.t);
+    for (; m_nextPoint < m_points.size() && m_points[m_nextPoint].t <= horizon; ++m_nextPoint) {
+      const Point& pt = m_points[m_nextPoint];
+      const SplineWeights w = splineWeights(m_grid, pt.t);
       auto* cost = new ceres::AutoDiffCostFunction<PositionCost, 3, 5, 5, 5, 5, 2>(
-          new PositionCost(w, pt.p, pt.wrist, nominal, options.positionStd));
+          new PositionCost(w, pt.p, pt.wrist, m_in.nominal, m_options.positionStd));
       std::vector<double*> blocks = ctrlBlocks(w);
-      blocks.push_back(seg);
-      positionBlocks.push_back(problem.AddResidualBlock(cost, nullptr, blocks));
+      blocks.push_back(m_seg.data());
+      m_positionBlocks.push_back(m_problem.AddResidualBlock(cost, nullptr, blocks));
     }
-  };
-  result.imuBins = bins[0].size() + bins[1].size();
-  result.opticalPoints = points.size();
+  }
 
-  // 4. Solve.
-  ceres::Solver::Options sopt;
-  sopt.linear_solver_type = ceres::SPARSE_NORMAL_CHOLESKY;
-  sopt.num_threads = std::max(1, options.threads);
-  sopt.function_tolerance = 1e-6;
-  sopt.parameter_tolerance = 1e-9;
-  sopt.logging_type = ceres::SILENT;
-  sopt.minimizer_progress_to_stdout = false;
-  ProgressCallback callback(progress);
-  sopt.callbacks.push_back(&callback);
-  int iterations = 0;
-  ceres::Solver::Summary summary;
-  auto solve = [&](int maxIterations) {
-    sopt.max_num_iterations = maxIterations;
-    ceres::Solve(sopt, &problem, &summary);
-    iterations += static_cast<int>(summary.iterations.size()) - 1;
-    if (!summary.IsSolutionUsable())
-      throw std::runtime_error("calibration failed: " + summary.message);
-  };
+  void solveOnce(int maxIterations) {
+    m_solverOptions.max_num_iterations = maxIterations;
+    ceres::Solve(m_solverOptions, &m_problem, &m_summary);
+    m_iterations += static_cast<int>(m_summary.iterations.size()) - 1;
+    if (m_summary.IsSolutionUsable()) return;
+    std::string why = m_summary.message;
+    std::replace(why.begin(), why.end(), '\n', ' ');
+    if (why.find("evaluation failed") != std::string::npos) {
+      throw std::runtime_error(
+          "calibration failed: the model could not be evaluated on the data (the solver: " + why +
+          "); the recording holds readings the fit cannot use");
+    }
+    throw std::runtime_error("calibration failed: " + why);
+  }
 
-  if (!optical && options.stageSeconds > 0.0) {
-    // Without optical data the filter's heading wanders (tens of degrees over a minute with a
-    // wrong mounting), and the solver cannot turn a long stretch of trajectory back about the
-    // vertical: that is a curved valley of the cost. So the data enter in stages. The first
-    // stage starts from the filter; each later one from the solved trajectory continued by
-    // integrating the gyroscopes with the calibration found so far (dead reckoning).
-    double horizon = tPrior + options.stageSeconds;
+  /// Without optical data the filter's heading wanders (tens of degrees over a minute with a
+  /// wrong mounting), and the solver cannot turn a long stretch of trajectory back about the
+  /// vertical: that is a curved valley of the cost. So the data enter in stages. The first
+  /// stage starts from the filter; each later one from the solved trajectory continued by
+  /// integrating the gyroscopes with the calibration found so far (dead reckoning).
+  void solveInStages() {
+    const double tFirst = m_in.tFirst, tLast = m_in.tLast;
+    double horizon = tFirst + 0.5 * m_options.startStillSeconds + m_options.stageSeconds;
     addDataUpTo(horizon);
-    say("calibrate: stage 1, data up to " +
-        std::to_string(static_cast<int>(std::round(horizon - tFirst))) + " s");
-    solve(options.stageIterations);
+    m_say("calibrate: stage 1, data up to " +
+          std::to_string(static_cast<int>(std::round(horizon - tFirst))) + " s");
+    solveOnce(m_options.stageIterations);
     for (int stage = 2; horizon < tLast; ++stage) {
-      const double next = std::min(horizon + options.stageSeconds, tLast);
-      const DeadReckoning dr{grid, bins, nominal, gUp, mountUa, mountFa, biasUa, biasFa, seg};
-      dr.extend(ctrl, horizon, next + 3.0 * grid.dt);
+      const double next = std::min(horizon + m_options.stageSeconds, tLast);
+      const DeadReckoning dr{m_grid,          m_bins,           m_in.nominal,
+                             m_in.gUp,        m_mountUa.data(), m_mountFa.data(),
+                             m_biasUa.data(), m_biasFa.data(),  m_seg.data()};
+      dr.extend(m_ctrl, horizon, next + 3.0 * m_grid.dt);
       addDataUpTo(next);
-      say("calibrate: stage " + std::to_string(stage) + ", data up to " +
-          std::to_string(static_cast<int>(std::round(next - tFirst))) + " s");
-      solve(options.stageIterations);
+      m_say("calibrate: stage " + std::to_string(stage) + ", data up to " +
+            std::to_string(static_cast<int>(std::round(next - tFirst))) + " s");
+      solveOnce(m_options.stageIterations);
       horizon = next;
     }
   }
-  addDataUpTo(std::numeric_limits<double>::infinity());
-  say("calibrate: solving, " + std::to_string(nCtrl) + " knots, " + std::to_string(result.imuBins) +
-      " IMU bins, " + std::to_string(result.opticalPoints) + " optical points");
-  solve(options.maxIterations);
-  alignGauges(true);
-  solve(options.polishIterations);
-  result.iterations = iterations;
-  result.converged = summary.termination_type == ceres::CONVERGENCE;
-  result.initialCost = summary.initial_cost;
-  result.finalCost = summary.final_cost;
-  if (!result.converged)
-    result.warnings.push_back("the solver stopped before converging: " + summary.message);
 
-  result.rmsUpperGyro = rmsOf(problem, upperBlocks, 0, 6, 3);
-  result.rmsUpperAcc = rmsOf(problem, upperBlocks, 3, 6, 3);
-  result.rmsForearmGyro = rmsOf(problem, forearmBlocks, 0, 6, 3);
-  result.rmsForearmAcc = rmsOf(problem, forearmBlocks, 3, 6, 3);
-  result.rmsPosition = rmsOf(problem, positionBlocks, 0, 3, 3);
+  const Prepared& m_in;
+  const CalibrationOptions& m_options;
+  const CalibrationProgress& m_say;
+  SplineGrid m_grid;
+  SplineWeights m_priorWeights;
+  std::vector<double> m_ctrl;
+  std::array<double, 5> m_mountUa{}, m_mountFa{};
+  std::array<double, 3> m_biasUa{}, m_biasFa{};
+  std::array<double, 2> m_seg{};
+  std::vector<ImuBin> m_bins[2];
+  std::vector<Point> m_points;
+  ceres::Problem m_problem;
+  ceres::Solver::Options m_solverOptions;
+  ceres::Solver::Summary m_summary;
+  int m_iterations = 0;
+  std::vector<ceres::ResidualBlockId> m_upperBlocks, m_forearmBlocks, m_positionBlocks;
+  std::size_t m_nextBin[2] = {0, 0}, m_nextPoint = 0;
+};
 
-  for (double t = tFirst; t <= tLast; t += binSeconds) {
-    const SplineWeights w = splineWeights(grid, t);
-    const double* const c[4] = {ctrlAt(w.first), ctrlAt(w.first + 1), ctrlAt(w.first + 2),
-                                ctrlAt(w.first + 3)};
-    Vec5T<double> th, thd, thdd;
-    evalSpline(w, c, th, thd, thdd);
-    JointEstimate e;
-    e.t = t;
-    for (int j = 0; j < kNumJoints; ++j) e.th(j) = wrapAngle(th(j));
-    e.thd = thd;
-    e.thdd = thdd;
-    result.trajectory.push_back(e);
-  }
+}  // namespace
 
-  // 5. The calibration, in the real sensors' axes.
-  Calibration& c = result.calibration;
-  c.side = recording.meta.side;
-  c.geometry = nominal;
-  c.geometry.lu3 = mountUa[0];
-  c.geometry.lu5 = mountUa[1];
-  c.geometry.thu4 = wrapAngle(mountUa[2]);
-  c.geometry.lf6 = mountFa[0];
-  c.geometry.lf8 = mountFa[1];
-  c.geometry.thf7 = wrapAngle(mountFa[2]);
-  c.geometry.l3 = seg[0];
-  c.geometry.l6 = seg[1];
-  auto tilt = [](const double* m) {
-    const Vec3 v(m[3], 0.0, m[4]);
-    const double a = v.norm();
-    return a < 1e-300 ? Eigen::Matrix3d::Identity()
-                      : Eigen::AngleAxisd(a, v / a).toRotationMatrix();
+CalibrationResult calibrate(const Recording& recording, const CalibrationOptions& options,
+                            const CalibrationProgress& progress) {
+  const auto wallStart = std::chrono::steady_clock::now();
+  const CalibrationProgress say = [&](const std::string& line) {
+    if (progress) progress(line);
   };
-  c.upperArm.rotation = tilt(mountUa);
-  c.upperArm.gyroBias = Vec3(biasUa[0], biasUa[1], biasUa[2]);
-  c.forearm.rotation = tilt(mountFa);
-  c.forearm.gyroBias = Vec3(biasFa[0], biasFa[1], biasFa[2]);
-  if (left) {
-    c.upperArm = mirrorImuCalibration(c.upperArm);
-    c.forearm = mirrorImuCalibration(c.forearm);
+  const QuietGlog quiet;
+  CalibrationResult result;
+  const Prepared in = prepare(recording, options);
+  result.implausible = in.implausible;
+  if (in.implausible.total() > 0)
+    say("calibrate: " + in.implausible.summary() + "; they take no part in the fit");
+  const std::array<Vec3, 2> biasGuess = guessGyroBias(in, options, result, say);
+  CalibrationFit fit(in, biasGuess, options, say);
+  fit.start(firstTrajectory(in, biasGuess, options, say));
+  fit.addPriors();
+  fit.solve(result);
+  result.trajectory = fit.trajectory();
+  result.calibration = fit.calibration(recording.meta.side);
+  // A fit no real arm can have (e.g. segment lengths pulled to their bounds) is refused.
+  if (const std::string problem = calibrationProblem(result.calibration); !problem.empty()) {
+    throw std::runtime_error(
+        "the fitted calibration is impossible: " + problem +
+        ". The recording does not determine the calibration: redo the calibration protocol "
+        "(docs/calibration.md), start pose held still and every movement made, and calibrate "
+        "again");
   }
-  c.opticalUsed = optical;
-  c.headingFromStartPoseOnly = !optical;
-  c.estimated = {"lu3",
-                 "lu5",
-                 "thu4",
-                 "upperArm.rotation",
-                 "upperArm.gyroBias",
-                 "lf6",
-                 "lf8",
-                 "forearm.rotation",
-                 "forearm.gyroBias"};
-  c.fromStartPose = {"thf7"};
-  if (!optical) c.fromStartPose.push_back("heading");
-  if (fitSegments) {
-    c.estimated.push_back("l3");
-    c.estimated.push_back("l6");
-  } else {
-    c.heldFixed = {"l3", "l6"};
-  }
-
   result.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   char line[200];

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/calibration/Calibration.h"
+#include "core/estimation/SampleGate.h"
 #include "core/io/Recording.h"
 
 namespace armtrack {
@@ -60,6 +61,9 @@ struct CalibrationResult {
   /// accelerometer, forearm gyro, forearm accelerometer, optical positions.
   double rmsUpperGyro = 0, rmsUpperAcc = 0, rmsForearmGyro = 0, rmsForearmAcc = 0, rmsPosition = 0;
   std::size_t imuBins = 0, opticalPoints = 0;  ///< residual epochs used
+  /// Sensor blocks refused by the plausibility gate (core/estimation/SampleGate.h, limits from
+  /// the sidecar's segment lengths) before anything else: they took no part in the fit.
+  GateCounters implausible;
   /// The fitted joint trajectory at residualRateHz over the recording (th, thd, thdd; thStd is
   /// zero), in the recording's time.
   std::vector<JointEstimate> trajectory;
@@ -71,9 +75,16 @@ using CalibrationProgress = std::function<void(const std::string& line)>;
 
 /// Estimates the calibration from a recording made with the protocol of docs/calibration.md.
 /// The recording's sidecar geometry is the starting point; a left arm is mirrored onto its
-/// right-arm twin for the fit and the result is given in the real sensors' axes. Throws
-/// std::invalid_argument when the recording cannot be used (no upper-arm or forearm IMU, shorter
-/// than 10 s).
+/// right-arm twin for the fit and the result is given in the real sensors' axes. Every sample
+/// first passes the plausibility gate (SampleGate with PlausibilityLimits::forGeometry of the
+/// sidecar's l3 and l6): implausible sensor blocks are dropped, counted in
+/// CalibrationResult::implausible and reported through progress. Ceres and glog write nothing to
+/// the process's output while it runs (glog's threshold is raised to FATAL for that time).
+/// Throws std::invalid_argument when the recording cannot be used (no upper-arm or forearm IMU,
+/// shorter than 10 s) and std::runtime_error, with a one-line message, when the solver fails
+/// (e.g. the model cannot be evaluated on the data) or the fitted calibration is outside
+/// physical limits (calibrationProblem, core/calibration/Calibration.h): such a result is never
+/// returned.
 CalibrationResult calibrate(const Recording& recording, const CalibrationOptions& options = {},
                             const CalibrationProgress& progress = {});
 

@@ -254,6 +254,42 @@ TEST_F(CalibrationFile, ErrorsNameTheFileAndTheProblem) {
   EXPECT_EQ(ok.side, Side::Right);
 }
 
+// A geometry no real arm has (MetaLimits, core/io/Recording.h) is never written, and a file that
+// holds one is refused, naming the file, the value and what to do (issue 9 item 2).
+TEST_F(CalibrationFile, RefusesAGeometryOutsidePhysicalLimits) {
+  auto expectRefused = [](const auto& action, const fs::path& p, const std::string& key) {
+    try {
+      action();
+      ADD_FAILURE() << "no exception for " << key;
+    } catch (const CalibrationError& e) {
+      const std::string msg = e.what();
+      EXPECT_EQ(msg.rfind(p.string() + ": ", 0), 0u) << msg;
+      EXPECT_NE(msg.find("\"" + key + "\""), std::string::npos) << msg;
+      EXPECT_NE(msg.find("redo the calibration protocol"), std::string::npos) << msg;
+    }
+  };
+  Calibration c;
+  c.geometry.l3 = c.geometry.l6 = 0.05;  // what calibrate wrote after one spike row (issue 9)
+  c.geometry.lf6 = 0.0;
+  const fs::path p = m_dir / "impossible.json";
+  expectRefused([&] { writeCalibration(p, c); }, p, "geometry.l3");
+  EXPECT_FALSE(fs::exists(p));
+
+  const std::string head = "{\"format\": \"armtrack-calibration\", \"version\": 1, ";
+  const fs::path shortArm =
+      write("short.json", head +
+                              "\"geometry\": {\"l3\": 0.05, \"l6\": 0.05, "
+                              "\"lu3\": 0.11, \"thu4\": 1.57, \"lu5\": 0.02, "
+                              "\"lf6\": 0.0, \"thf7\": 1.57, \"lf8\": 0.01}}");
+  expectRefused([&] { readCalibration(shortArm); }, shortArm, "geometry.l3");
+  // The upper-arm IMU 0.2 m beyond the elbow.
+  const fs::path offArm = write("off.json", head +
+                                                "\"geometry\": {\"l3\": 0.3, \"l6\": 0.25, "
+                                                "\"lu3\": 0.6, \"thu4\": 1.57, \"lu5\": 0.02, "
+                                                "\"lf6\": 0.2, \"thf7\": 1.57, \"lf8\": 0.01}}");
+  expectRefused([&] { readCalibration(offArm); }, offArm, "geometry.lu3");
+}
+
 TEST(CalibrationProtocol, StartsAndEndsInTheStartPoseWithConsistentDerivatives) {
   const CalibrationProtocolTrajectory traj;
   EXPECT_EQ(CalibrationProtocolTrajectory::startPose(), protocolStartPose());
