@@ -157,6 +157,17 @@ void printStats(std::ostream& out, const session::SessionStats& s, double cpuPer
                 s.latency.quantile(0.99) * 1e3, s.latency.max() * 1e3, cpuPercent, rssMb,
                 s.maxInputQueued);
   out << line;
+  const EstimatorCounters& e = s.estimator;
+  if (e.implausible.total() > 0 || e.recoveries > 0 || e.restarts > 0) {
+    std::snprintf(line, sizeof line,
+                  "  estimator: predicted through refused readings %llu  recoveries %llu  "
+                  "restarts %llu\n",
+                  static_cast<unsigned long long>(e.coasted),
+                  static_cast<unsigned long long>(e.recoveries),
+                  static_cast<unsigned long long>(e.restarts));
+    out << line;
+    if (e.implausible.total() > 0) out << "  estimator: " << e.implausible.summary() << "\n";
+  }
   out.flush();
 }
 

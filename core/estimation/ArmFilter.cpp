@@ -663,7 +663,7 @@ class ArmFilter final : public JointEstimator {
     if (llt.info() != Eigen::Success) return false;
     const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
     const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
-    if (!isOptical(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
+    if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
     dx.noalias() += w.transpose() * sr;
     const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
     p.noalias() -= v.transpose().lazyProduct(v);
@@ -802,6 +802,14 @@ class ArmFilter final : public JointEstimator {
   void beforeOpticalUpdate() {
     const Vec u = headingAngles(m_x);
     m_P += headingShortfall(u) * u * u.transpose();
+  }
+
+  // Rows the consistency watch reads: the gyroscopes, which every model predicts exactly, and
+  // the accelerometers only where the model includes body acceleration (Method A); Methods B
+  // and C leave it out on purpose, so their accelerometer innovations are large in any motion.
+  bool watched(int block) const {
+    if (block == kUaGyr || block == kFaGyr) return true;
+    return (block == kUaAcc || block == kFaAcc) && m_p.model == MeasurementModel::AccelGyro;
   }
 
   // The recent past, for the window fit: fused readings only, in the right-arm frame.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 
 namespace armtrack {
 namespace {
@@ -131,6 +132,34 @@ class SampleCost final : public ceres::CostFunction {
   std::vector<Pixel> m_pixels;
 };
 
+// Holds the heading of the angles at the window's end (the constant coefficients) at an
+// anchor's: (h . (th - anchor)) / 0.5 deg, h the unit heading direction at the anchor.
+class HeadingAnchor final : public ceres::CostFunction {
+ public:
+  HeadingAnchor(const JointVector& anchor, const Eigen::Vector3d& up)
+      : m_anchor(anchor), m_h(headingDirection(anchor, up)) {
+    set_num_residuals(1);
+    for (int j = 0; j < kNumJoints; ++j) mutable_parameter_block_sizes()->push_back(kCoeffs);
+  }
+  bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override {
+    constexpr double kSigma = 0.5 * std::numbers::pi / 180.0;
+    double r = 0.0;
+    for (int j = 0; j < kNumJoints; ++j) r += m_h(j) * wrapAngle(params[j][0] - m_anchor(j));
+    residuals[0] = r / kSigma;
+    if (jacobians) {
+      for (int j = 0; j < kNumJoints; ++j) {
+        if (!jacobians[j]) continue;
+        for (int k = 0; k < kCoeffs; ++k) jacobians[j][k] = 0.0;
+        jacobians[j][0] = m_h(j) / kSigma;
+      }
+    }
+    return true;
+  }
+
+ private:
+  JointVector m_anchor, m_h;
+};
+
 double spanOf(const std::vector<ArmSample>& window) {
   return std::max(window.back().t - window.front().t, 1e-3);
 }
@@ -204,7 +233,8 @@ std::array<std::array<double, kCoeffs>, kNumJoints> coeffsOf(const EstimatorPara
 }  // namespace
 
 WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
-                          const std::vector<Vec15>& seeds, int maxImuSamples) {
+                          const std::vector<Vec15>& seeds,
+                          const std::optional<JointVector>& headingAnchor, int maxImuSamples) {
   WindowFitResult best;
   if (window.empty() || seeds.empty()) return best;
   best.tEnd = window.back().t;
@@ -214,6 +244,12 @@ WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSa
     ceres::Problem problem;
     const int rows = buildProblem(problem, params, window, maxImuSamples, coeffs);
     if (rows == 0) return best;
+    if (headingAnchor) {
+      std::vector<double*> blocks;
+      for (auto& c : coeffs) blocks.push_back(c.data());
+      problem.AddResidualBlock(new HeadingAnchor(*headingAnchor, params.gUp.normalized()),
+                               nullptr, blocks);
+    }
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
     opt.max_num_iterations = 30;

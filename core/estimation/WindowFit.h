@@ -6,6 +6,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
 #include "core/ArmSample.h"
@@ -31,8 +32,12 @@ struct WindowFitResult {
 /// from the seed with the lowest cost is returned. Inactive joints stay at params.fixedAngles.
 /// IMU samples are thinned to at most maxImuSamples, spread evenly. The heading about the
 /// vertical is not observable without optical data and stays near the seed's.
+/// With headingAnchor (angles, rad), the heading of the fitted angles at the window's end is held
+/// at the anchor's (a residual of 0.5 deg along the heading direction at the anchor): for windows
+/// without optical data, where nothing else fixes it.
 WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
                           const std::vector<Eigen::Matrix<double, 15, 1>>& seeds,
+                          const std::optional<JointVector>& headingAnchor = std::nullopt,
                           int maxImuSamples = 60);
 
 /// Whitened residual RMS of a filter's own states over the window (states[i] belongs to

@@ -90,6 +90,10 @@ RunError runSegment(const SegmentCase& c, const StudySetup& setup) {
   p.adaptiveProcessNoise = false;  // the paper's fixed Table 5 noise, as the study reproduces it
   // The paper's simulated sensors have no full scale: a 3 Hz swing reaches 18 g at the strap.
   p.plausibility.gyroRange = p.plausibility.accelRange = 1e6;
+  // The paper's filter as it stands: no window fit or recovery (Method C's model error would
+  // read as a lost arm).
+  p.fitWindowSeconds = 0.0;
+  p.lostNis = std::numeric_limits<double>::infinity();
   p.filter = c.filter;
   p.model = c.model;
   p.geometry = c.geometry;

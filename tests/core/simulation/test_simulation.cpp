@@ -641,9 +641,6 @@ TEST(SensorStream, FiniteStreamEndsAndRecordingRefusesInfinity) {
   EXPECT_THROW(SensorStream(traj, p), std::invalid_argument);
 }
 
-}  // namespace
-}  // namespace armtrack
-
 // The reaching trajectory keeps to its peak rate and acceleration, reaches one of them on its
 // fastest joint, and its rates and accelerations are the derivatives of its angles.
 TEST(Trajectory, ReachingKeepsToItsPeaksAndIsSmooth) {
@@ -667,3 +664,6 @@ TEST(Trajectory, ReachingKeepsToItsPeaksAndIsSmooth) {
   EXPECT_THROW(ReachingTrajectory(1, 0.0, peakAccel), std::invalid_argument);
   EXPECT_THROW(ReachingTrajectory(1, peakRate, std::nan("")), std::invalid_argument);
 }
+
+}  // namespace
+}  // namespace armtrack
