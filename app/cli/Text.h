@@ -8,6 +8,8 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/Strings.h"
+
 namespace armtrack::cli {
 
 /// s between double quotes, for naming values in messages.
@@ -15,27 +17,6 @@ inline std::string inQuotes(std::string_view s) {
   return "\"" + std::string(s) + "\"";
 }
 
-/// A cell of an input file between double quotes for a message: bytes outside printable ASCII as
-/// \xNN (a NUL would otherwise cut the message short), at most 40 bytes shown.
-inline std::string quotedCell(std::string_view s) {
-  constexpr std::size_t kShown = 40;
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out = "\"";
-  for (std::size_t i = 0; i < s.size() && i < kShown; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 0x20 || c > 0x7e) {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  out += '"';
-  if (s.size() > kShown)
-    out += " (" + std::to_string(s.size()) + " bytes, first " + std::to_string(kShown) + " shown)";
-  return out;
-}
 
 /// The shortest decimal form of v that reads back to the same double (std::to_chars).
 inline std::string shortest(double v) {

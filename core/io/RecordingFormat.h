@@ -9,6 +9,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "core/Strings.h"
 #include "core/io/AtomicFile.h"
 #include "core/io/Recording.h"
 
@@ -66,27 +67,6 @@ inline std::string inQuotes(std::string_view s) {
   return "\"" + std::string(s) + "\"";
 }
 
-/// A cell or column name from a file, quoted for a message: bytes outside printable ASCII as
-/// \xNN (a NUL would otherwise cut the message short), and at most 40 bytes of it shown.
-inline std::string quotedCell(std::string_view s) {
-  constexpr std::size_t kShown = 40;
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out = "\"";
-  for (std::size_t i = 0; i < s.size() && i < kShown; ++i) {
-    const auto c = static_cast<unsigned char>(s[i]);
-    if (c < 0x20 || c > 0x7e) {
-      out += "\\x";
-      out += kHex[c >> 4];
-      out += kHex[c & 15];
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  out += '"';
-  if (s.size() > kShown)
-    out += " (" + std::to_string(s.size()) + " bytes, first " + std::to_string(kShown) + " shown)";
-  return out;
-}
 
 inline std::string formatDouble(double v) {
   char buf[32];
