@@ -23,6 +23,7 @@
 namespace armtrack {
 
 inline constexpr double kDeg = std::numbers::pi / 180.0;  ///< one degree in rad
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
 
 enum class FilterKind { Ekf, Ukf };
 
@@ -57,6 +58,9 @@ struct EstimatorParams {
   /// raise the process noise above jointAccelVariance while the arm moves fast, so fast human
   /// movement (600 deg/s, 6,000 deg/s^2) is tracked without tuning, and it falls back to
   /// jointAccelVariance when the arm slows down. Off reproduces the paper's fixed noise.
+  /// Method A only: matching assumes the measurement model explains the readings, and the
+  /// inclinometer models (B, C) leave body acceleration out of it on purpose, so their large
+  /// accelerometer innovations would be taken for process noise and make the state chase them.
   bool adaptiveProcessNoise = true;
   double adaptationTime = 0.05;  ///< s, averaging time of the matched noise
   /// Ceiling of the matched noise, (rad/s^2)^2 per reference step: (1000 deg/s^2)^2, several
@@ -68,14 +72,21 @@ struct EstimatorParams {
   /// Random-walk variance rate along the unobservable heading direction (rad^2/s): keeps the
   /// filter willing to accept optical heading corrections (docs/estimator.md, "Heading").
   double headingVarianceRate = (1.0 * kDeg) * (1.0 * kDeg);
+  /// Heading matching (s): the turn about the vertical that the optical data ask for, averaged
+  /// over this time, sets the least heading variance before each optical update, so a heading
+  /// error left by a fast movement is corrected in a few frames and shows in the standard
+  /// deviation (docs/estimator.md, "Heading"). 0 turns it off.
+  double headingMatchTime = 0.1;
 
   double gyroVariance = 0.1 * kDeg * kDeg;  ///< (rad/s)^2, Table 5: 0.1 (deg/s)^2
   double accelVariance = 1e-2;              ///< (m/s^2)^2, Table 5
   double positionVariance = 1e-4;           ///< m^2, Table 5 (Kinect)
 
   /// Method B: stationary variance (m/s^2)^2 and correlation time (s) of the body-acceleration
-  /// GM-1 states (Sabatini 2006).
-  double bodyAccelVariance = 1.0;
+  /// GM-1 states (Sabatini 2006). (10 m/s^2)^2: a forearm swung at 1 Hz through 90 deg sees
+  /// about 50 m/s^2, a fast reach 30; at 1 (m/s^2)^2 the states cannot follow and a two-IMU arm
+  /// lands 15 deg off at the elbow. The one-segment study of the paper's Table 6 uses 1.
+  double bodyAccelVariance = 100.0;
   double bodyAccelCorrelationTime = 0.1;
 
   bool useOptical = true;  ///< fuse Kinect elbow/wrist positions when a sample carries them
@@ -110,6 +121,28 @@ struct EstimatorParams {
   /// studies estimate th0 only).
   std::array<bool, kNumJoints> activeJoints{true, true, true, true, true};
   JointVector fixedAngles = JointVector::Zero();  ///< rad
+  /// Anatomical limits (rad, joint angles th0..th4): beyond what any arm can reach, wider than
+  /// the normal ranges of motion (ClinicalAngles) so they never touch a real movement. An estimate
+  /// outside is projected back onto the nearest limit with the covariance's correlations (the
+  /// joints it is coupled to move with it; the covariance is kept). This rules out the mirrored
+  /// Euler branch of the shoulder and an elbow bent backwards, where an inclinometer model under
+  /// body acceleration would otherwise settle. Infinite bounds leave a joint free. Defaults, in
+  /// clinical terms: abduction from -100 deg (the arm swung across the body), internal rotation
+  /// -120 to 110 deg, elbow flexion -20 to 170 deg, pronation -130 to 130 deg; flexion free.
+  /// The other Euler branch of a shoulder pose, (th0 + 180, 180 - th1, th2 + 180) deg, then lies
+  /// outside unless the internal rotation is beyond about +-60 deg.
+  JointVector jointLower = defaultJointLower();
+  JointVector jointUpper = defaultJointUpper();
+  static JointVector defaultJointLower() {
+    JointVector v;
+    v << -kInf, -100.0 * kDeg, -110.0 * kDeg, -170.0 * kDeg, -130.0 * kDeg;
+    return v;
+  }
+  static JointVector defaultJointUpper() {
+    JointVector v;
+    v << kInf, kInf, 120.0 * kDeg, 20.0 * kDeg, 130.0 * kDeg;
+    return v;
+  }
 
   /// Start-up: initial standard deviations after the gravity/optical initialisation.
   double initialAngleStd = 45.0 * kDeg;        ///< rad, start pose from gravity alone
@@ -170,6 +203,7 @@ struct EstimatorCounters {
   std::uint64_t coasted = 0;  ///< rows whose readings were all refused, predicted through
   std::uint64_t recoveries = 0;     ///< re-initialisations after the arm was lost
   std::uint64_t startupRefits = 0;  ///< start-up states replaced by the window fit
+  std::uint64_t limitedStates = 0;  ///< estimates projected back into the anatomical range
   std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused (Kinect)
   std::uint64_t cameraUpdates = 0;      ///< marker pixels fused (webcam)
   std::uint64_t rejectedOutliers = 0;   ///< pixels and positions dropped by the innovation gate
