@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/kinematics/ArmModel.h"
+#include "core/kinematics/Side.h"
 
 namespace armtrack {
 
@@ -28,5 +29,21 @@ struct ArmSample {
 
   bool hasImu() const { return upperArm.has_value() || forearm.has_value(); }
 };
+
+/// An IMU reading mapped between a left-arm sensor and its right-arm twin (core/kinematics/Side.h).
+/// The twin of a sensor frame is its mirror image with the z axis reversed (so it stays
+/// right-handed): polar vectors (specific force) flip z, axial vectors (angular velocity) flip x
+/// and y.
+inline ImuReading mirrorImu(const ImuReading& r) {
+  ImuReading m;
+  m.acc = {r.acc.x(), r.acc.y(), -r.acc.z()};
+  m.gyr = {-r.gyr.x(), -r.gyr.y(), r.gyr.z()};
+  return m;
+}
+
+/// Maps a whole sample (IMUs and optical positions; true joint angles are the same on both
+/// sides). An involution: applying it twice gives the sample back exactly. Camera pixels are
+/// left as they are (the camera model handles the side itself).
+ArmSample mirrorSample(const ArmSample& s);
 
 }  // namespace armtrack

@@ -21,6 +21,7 @@
 #include "app/plugins/PluginRegistry.h"
 #include "core/io/Recording.h"
 #include "core/session/Session.h"
+#include "devices/api/DeviceThread.h"
 #include "devices/api/Options.h"
 
 namespace armtrack::cli {
@@ -241,9 +242,9 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       err << "armtrack-cli: error: " << why.toStdString() << "\n";
       return 1;
     }
-    session.addDevice(std::move(device), QStringLiteral("%1#%2").arg(name).arg(o.devices.size() > 1
-                                                                                  ? QString::number(&spec - o.devices.data() + 1)
-                                                                                  : QStringLiteral("1")));
+    const QString label = QStringLiteral("%1#%2").arg(name).arg(
+        o.devices.size() > 1 ? QString::number(&spec - o.devices.data() + 1) : QStringLiteral("1"));
+    session.addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);
   }
   if (const QString why = session.start(); !why.isEmpty()) {
     err << "armtrack-cli: error: " << why.toStdString() << "\n";
@@ -254,7 +255,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   const auto oldTerm = std::signal(SIGTERM, onInterrupt);
   const auto oldHup = std::signal(SIGHUP, onInterrupt);  // a closed terminal ends it cleanly too
 
-  const double start = devices::hostNow();
+  const double start = hostNow();
   const double cpu0 = processCpuSeconds();
   double nextStats = start + o.statsInterval, nextAngles = start + 1.0;
   double rssAtMinute = 0.0, cpuAtMinute = 0.0, minuteTime = 0.0;
@@ -267,11 +268,11 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       for (const std::string& e : events) err << "  " << e << "\n";
   };
   while (!g_interrupted) {
-    const double now = devices::hostNow();
+    const double now = hostNow();
     if (o.duration > 0.0 && now - start >= o.duration) break;
     const session::SessionStats st = session.stats();
     const bool allEnded = std::all_of(st.deviceStates.begin(), st.deviceStates.end(), [](auto s) {
-      return s == devices::DeviceState::Disconnected || s == devices::DeviceState::Error;
+      return s == DeviceState::Disconnected || s == DeviceState::Error;
     });
     if (allEnded && now - start > 1.0) {
       out << "every device has ended; stopping\n";
@@ -302,7 +303,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       nextStats = now + o.statsInterval;
     }
   }
-  const double end = devices::hostNow();
+  const double end = hostNow();
   const double cpu = processCpuSeconds();
   const double rss = residentMegabytes();
   session.stop();

@@ -17,13 +17,4 @@ std::string sideName(Side side) {
   return side == Side::Left ? "left" : "right";
 }
 
-ArmSample mirrorSample(const ArmSample& s) {
-  ArmSample m = s;
-  if (s.upperArm) m.upperArm = mirrorImu(*s.upperArm);
-  if (s.forearm) m.forearm = mirrorImu(*s.forearm);
-  if (s.elbow) m.elbow = mirrorPoint(*s.elbow);
-  if (s.wrist) m.wrist = mirrorPoint(*s.wrist);
-  return m;
-}
-
 }  // namespace armtrack

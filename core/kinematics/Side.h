@@ -1,13 +1,12 @@
 // Left and right arms. The model (docs/arm-model.md) is written for the right arm; a left arm is
 // its mirror image through the body's sagittal plane. Left-arm data are mapped onto a virtual
 // right arm, estimated there, and the joint angles come back unchanged: mirroring keeps flexion,
-// abduction, rotation, elbow flexion and pronation what they are.
+// abduction, rotation, elbow flexion and pronation what they are. The mirror of a whole sample
+// (mirrorImu, mirrorSample) is in core/ArmSample.h, which builds on this header.
 #pragma once
 
 #include <Eigen/Core>
 #include <string>
-
-#include "core/ArmSample.h"
 
 namespace armtrack {
 
@@ -23,20 +22,5 @@ std::string sideName(Side side);
 inline Eigen::Vector3d mirrorPoint(const Eigen::Vector3d& p) {
   return {p.x(), p.y(), -p.z()};
 }
-
-/// An IMU reading mapped between a left-arm sensor and its right-arm twin. The twin of a sensor
-/// frame is its mirror image with the z axis reversed (so it stays right-handed): polar vectors
-/// (specific force) flip z, axial vectors (angular velocity) flip x and y.
-inline ImuReading mirrorImu(const ImuReading& r) {
-  ImuReading m;
-  m.acc = {r.acc.x(), r.acc.y(), -r.acc.z()};
-  m.gyr = {-r.gyr.x(), -r.gyr.y(), r.gyr.z()};
-  return m;
-}
-
-/// Maps a whole sample (IMUs and optical positions; true joint angles are the same on both
-/// sides). An involution: applying it twice gives the sample back exactly. Camera pixels are
-/// left as they are (the camera model handles the side itself).
-ArmSample mirrorSample(const ArmSample& s);
 
 }  // namespace armtrack

@@ -7,7 +7,6 @@
 #include <unistd.h>
 
 #include <QCoreApplication>
-#include <QMetaObject>
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -16,62 +15,12 @@
 
 #include "core/session/EstimatorMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
+#include "core/sync/SensorPayload.h"
 #include "core/sync/TimeSync.h"
 
 namespace armtrack::session {
 
-using devices::DeviceSample;
-using devices::DeviceState;
-using devices::StreamRole;
-
 namespace {
-
-ArmSlot slotOf(StreamRole role) {
-  switch (role) {
-    case StreamRole::UpperArmImu:
-      return ArmSlot::UpperArmImu;
-    case StreamRole::ForearmImu:
-      return ArmSlot::ForearmImu;
-    case StreamRole::Optical:
-      return ArmSlot::Optical;
-    case StreamRole::Camera:
-      return ArmSlot::Camera;
-    case StreamRole::Truth:
-      return ArmSlot::Truth;
-  }
-  return ArmSlot::UpperArmImu;
-}
-
-bool finiteOpt3(const std::optional<Eigen::Vector3d>& v) {
-  return !v || v->allFinite();
-}
-bool finiteOpt2(const std::optional<Eigen::Vector2d>& v) {
-  return !v || v->allFinite();
-}
-
-/// True when the payload is what the role promises and every value in it is finite.
-bool validPayload(StreamRole role, const SensorPayload& p) {
-  switch (role) {
-    case StreamRole::UpperArmImu:
-    case StreamRole::ForearmImu: {
-      const auto* r = std::get_if<ImuReading>(&p);
-      return r && r->gyr.allFinite() && r->acc.allFinite();
-    }
-    case StreamRole::Optical: {
-      const auto* o = std::get_if<OpticalPositions>(&p);
-      return o && finiteOpt3(o->elbow) && finiteOpt3(o->wrist);
-    }
-    case StreamRole::Camera: {
-      const auto* m = std::get_if<MarkerPixels>(&p);
-      return m && finiteOpt2(m->wrist) && finiteOpt2(m->elbow);
-    }
-    case StreamRole::Truth: {
-      const auto* t = std::get_if<TruthAngles>(&p);
-      return t && t->th.allFinite();
-    }
-  }
-  return false;
-}
 
 /// The stream each sensor block of a row comes from.
 StreamRole roleOf(SensorBlock b) {
@@ -160,7 +109,31 @@ Session::~Session() {
   stop();
 }
 
-int Session::addDevice(std::unique_ptr<devices::Device> device, const QString& label) {
+/// One device's way into the session: samples to the worker's queue, states and problems to the
+/// session's messages and signals. Called in the device's thread.
+class Session::DeviceInput final : public SampleInput {
+ public:
+  DeviceInput(Session& session, int index, std::string label)
+      : m_session(session), m_index(index), m_label(std::move(label)) {}
+
+  void samplesArrived(const SampleBatch& batch) override { m_session.onSamples(m_index, batch); }
+  void stateChanged(DeviceState state, const std::string& reason) override {
+    m_session.logEvent(m_label + ": " + toString(state) +
+                       (reason.empty() ? std::string() : " (" + reason + ")"));
+    emit m_session.deviceStateChanged(m_index, state, QString::fromStdString(reason));
+  }
+  void problemReported(const std::string& message) override {
+    m_session.logEvent(m_label + ": " + message);
+    emit m_session.problem(QString::fromStdString(m_label + ": " + message));
+  }
+
+ private:
+  Session& m_session;
+  const int m_index;
+  const std::string m_label;
+};
+
+int Session::addDevice(std::unique_ptr<SampleSource> device, const QString& label) {
   DeviceEntry e;
   e.firstStream = static_cast<int>(m_streams.size());
   const int index = static_cast<int>(m_devices.size());
@@ -188,7 +161,7 @@ QString Session::start() {
     for (std::size_t j = i + 1; j < m_streams.size(); ++j)
       if (m_streams[i].info.role == m_streams[j].info.role)
         return QStringLiteral("two streams provide the %1 (%2 and %3); keep one")
-            .arg(QString::fromLatin1(devices::toString(m_streams[i].info.role)),
+            .arg(QString::fromLatin1(toString(m_streams[i].info.role)),
                  m_devices[static_cast<std::size_t>(m_streams[i].device)].label,
                  m_devices[static_cast<std::size_t>(m_streams[j].device)].label);
   bool imu = false;
@@ -275,42 +248,21 @@ QString Session::start() {
   for (const DeviceEntry& d : m_devices) m_stats.deviceLabels.push_back(d.label.toStdString());
   m_inputClosed = m_recClosed = false;
   m_input.reserve(4096);
-  m_startTime = devices::hostNow();
+  m_startTime = hostNow();
   m_worker = std::thread([this] { workerLoop(); });
   if (m_writer) m_recorder = std::thread([this] { recorderLoop(); });
 
   for (std::size_t i = 0; i < m_devices.size(); ++i) {
     DeviceEntry& d = m_devices[i];
-    devices::Device* dev = d.device.get();
-    const int index = static_cast<int>(i);
-    const std::string label = d.label.toStdString();
-    connect(dev, &devices::Device::samplesReady, this,
-            [this, index](const devices::SampleBatch& b) { onSamples(index, b); },
-            Qt::DirectConnection);
-    connect(dev, &devices::Device::stateChanged, this,
-            [this, index, label](DeviceState s, const QString& reason) {
-              logEvent(label + ": " + devices::toString(s) +
-                       (reason.isEmpty() ? std::string() : " (" + reason.toStdString() + ")"));
-              emit deviceStateChanged(index, s, reason);
-            },
-            Qt::DirectConnection);
-    connect(dev, &devices::Device::problem, this,
-            [this, label](const QString& message) {
-              logEvent(label + ": " + message.toStdString());
-              emit problem(QString::fromStdString(label) + QStringLiteral(": ") + message);
-            },
-            Qt::DirectConnection);
-    d.thread = new QThread;
-    d.thread->setObjectName(QStringLiteral("device ") + d.label);
-    dev->moveToThread(d.thread);
-    d.thread->start();
-    QMetaObject::invokeMethod(dev, &devices::Device::start, Qt::QueuedConnection);
+    d.input = std::make_unique<DeviceInput>(*this, static_cast<int>(i), d.label.toStdString());
+    d.device->start(*d.input);
+    d.started = true;
   }
   m_running = true;
   return {};
 }
 
-void Session::onSamples(int device, const devices::SampleBatch& batch) {
+void Session::onSamples(int device, const SampleBatch& batch) {
   const int first = m_devices[static_cast<std::size_t>(device)].firstStream;
   const int count = static_cast<int>(m_devices[static_cast<std::size_t>(device)].device->streams().size());
   bool wake = false;
@@ -340,12 +292,12 @@ void Session::onSamples(int device, const devices::SampleBatch& batch) {
 void Session::workerLoop() {
   pthread_setname_np(pthread_self(), "armtrack-worker");
   std::vector<ClockParams> clocks;
-  std::vector<ArmSlot> slotOfStream;
+  std::vector<StreamRole> roleOfStream;
   for (const Stream& s : m_streams) {
     ClockParams c;
     c.wrapPeriod = s.info.wrapPeriod;
     clocks.push_back(c);
-    slotOfStream.push_back(slotOf(s.info.role));
+    roleOfStream.push_back(s.info.role);
   }
   // A replay at N x runs the session's clocks N times faster, so device time stays the
   // recording's time; latencies are reported in real seconds.
@@ -354,7 +306,7 @@ void Session::workerLoop() {
   SyncParams sp;
   sp.latencyWindow = window;
   TimeSync<SensorPayload> sync(sp, clocks);
-  ArmSampleAssembler assembler(slotOfStream, m_params.mergeWindow);
+  ArmSampleAssembler assembler(roleOfStream, m_params.mergeWindow);
   std::unique_ptr<JointEstimator> filter;
   if (m_params.estimate) filter = makeEstimator(m_params.estimator);
 
@@ -391,7 +343,7 @@ void Session::workerLoop() {
         const JointEstimate e = filter->estimate();
         row.estimate = e.th;
         ++estimates;
-        const double lat = devices::hostNow() - oldestArrival / scale;
+        const double lat = hostNow() - oldestArrival / scale;
         latency.add(lat);
         EstimateRow out;
         out.t = row.t;
@@ -444,7 +396,7 @@ void Session::workerLoop() {
       }
       fresh.clear();
     }
-    const double now = devices::hostNow();
+    const double now = hostNow();
     if (!final && now < nextStats) return;
     nextStats = now + 0.1;
     std::uint64_t totalRejects = 0;
@@ -499,7 +451,7 @@ void Session::workerLoop() {
     }
     local.clear();
     if (closed) break;
-    const double now = devices::hostNow() * scale;
+    const double now = hostNow() * scale;
     sync.poll(now, sink);
     // The open row cannot grow any more once the synchroniser has released everything up to a
     // merge window past it: complete it now rather than when the next sample arrives.
@@ -524,8 +476,8 @@ void Session::workerLoop() {
 void Session::recorderLoop() {
   pthread_setname_np(pthread_self(), "armtrack-record");
   std::deque<ArmSample> local;
-  double nextFlush = devices::hostNow() + m_params.flushInterval;
-  double nextSync = devices::hostNow() + m_params.syncInterval;
+  double nextFlush = hostNow() + m_params.flushInterval;
+  double nextSync = hostNow() + m_params.syncInterval;
   std::string lastError;
   auto attempt = [&](auto&& step) {
     try {
@@ -565,7 +517,7 @@ void Session::recorderLoop() {
       }
     }
     local.clear();
-    const double now = devices::hostNow();
+    const double now = hostNow();
     if (closed) {
       attempt([&] { m_writer->close(); });
     } else if (now >= nextSync) {
@@ -588,31 +540,11 @@ void Session::recorderLoop() {
 }
 
 void Session::stopDevices() {
-  QThread* home = thread();
   for (DeviceEntry& d : m_devices) {
-    if (!d.thread) continue;
-    devices::Device* dev = d.device.get();
-    // Stop in the device's own thread, then hand the object back so it can be destroyed here.
-    QMetaObject::invokeMethod(
-        dev,
-        [dev, home] {
-          dev->stop();
-          dev->moveToThread(home);
-        },
-        Qt::BlockingQueuedConnection);
-    d.thread->quit();
-    if (d.thread->wait(10000)) {
-      delete d.thread;
-    } else {
-      // Destroying a QThread that still runs aborts the program: leave it to end on its own and
-      // delete it then (deleteLater is safe to call twice).
-      logEvent(d.label.toStdString() + ": its thread did not end in 10 s");
-      QThread* t = d.thread;
-      connect(t, &QThread::finished, t, &QObject::deleteLater);
-      if (t->isFinished()) t->deleteLater();
-    }
-    d.thread = nullptr;
-    disconnect(dev, nullptr, this, nullptr);
+    if (!d.started) continue;
+    if (const std::string why = d.device->stop(); !why.empty())
+      logEvent(d.label.toStdString() + ": " + why);
+    d.started = false;
   }
 }
 
@@ -636,11 +568,11 @@ SessionStats Session::stats() const {
     std::lock_guard lock(m_statsMutex);
     s = m_stats;
   }
-  s.elapsed = devices::hostNow() - m_startTime;
+  s.elapsed = hostNow() - m_startTime;
   for (std::size_t i = 0; i < m_streams.size(); ++i) {
     const Stream& st = m_streams[i];
-    const devices::DeviceHealth h = m_devices[static_cast<std::size_t>(st.device)].device->health();
-    const devices::StreamHealth& sh = h.streams[static_cast<std::size_t>(st.index)];
+    const DeviceHealth h = m_devices[static_cast<std::size_t>(st.device)].device->health();
+    const StreamHealth& sh = h.streams[static_cast<std::size_t>(st.index)];
     if (i < s.streams.size()) {
       s.streams[i].rateHz = sh.rateHz;
       s.streams[i].published = sh.samples;

@@ -1,11 +1,11 @@
 // The live session pipeline: device threads -> time synchroniser -> estimator worker -> recorder,
-// and a results buffer the GUI drains on a timer. Qt Core only (no widgets).
-// See docs/session.md.
+// and a results buffer the GUI drains on a timer. Qt Core only (no widgets). Devices come in as
+// core SampleSources (core/devices/SampleSource.h); devices/api/DeviceThread adapts a plugin's
+// Device to one. See docs/session.md and docs/architecture.md.
 #pragma once
 
 #include <QObject>
 #include <QString>
-#include <QThread>
 #include <array>
 #include <atomic>
 #include <condition_variable>
@@ -19,9 +19,9 @@
 #include <thread>
 #include <vector>
 
+#include "core/devices/SampleSource.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
-#include "devices/api/Device.h"
 
 namespace armtrack::session {
 
@@ -85,7 +85,7 @@ class LatencyHistogram {
 struct StreamStats {
   std::string device;  ///< device label
   std::string stream;  ///< stream name
-  devices::StreamRole role = devices::StreamRole::UpperArmImu;
+  StreamRole role = StreamRole::UpperArmImu;
   double rateHz = 0.0;           ///< measured by the device
   std::uint64_t published = 0;   ///< samples the device emitted
   std::uint64_t received = 0;    ///< samples the worker took from the device
@@ -100,7 +100,7 @@ struct StreamStats {
 struct SessionStats {
   double elapsed = 0.0;  ///< s since start()
   std::vector<StreamStats> streams;
-  std::vector<devices::DeviceState> deviceStates;
+  std::vector<DeviceState> deviceStates;
   std::vector<std::string> deviceLabels;
   std::uint64_t inputOverflow = 0;   ///< samples lost because the input queue was full
   std::uint64_t rows = 0;            ///< rows built from synchronised samples
@@ -130,8 +130,9 @@ class Session : public QObject {
   explicit Session(SessionParams params, QObject* parent = nullptr);
   ~Session() override;  ///< stops
 
-  /// Adds a device before start(); returns its index. The session owns it.
-  int addDevice(std::unique_ptr<devices::Device> device, const QString& label);
+  /// Adds a device before start(); returns its index. The session owns it. A plugin's Device
+  /// comes wrapped in a devices::DeviceThread, which runs it in a thread of its own.
+  int addDevice(std::unique_ptr<SampleSource> device, const QString& label);
 
   /// Checks the set-up (one stream per role, a camera model for pixels), opens the recording and
   /// starts every thread. Returns an empty string, or what is wrong and what to do (nothing is
@@ -154,24 +155,26 @@ class Session : public QObject {
 
  signals:
   /// Emitted from the device's thread.
-  void deviceStateChanged(int device, armtrack::devices::DeviceState state, const QString& reason);
+  void deviceStateChanged(int device, armtrack::DeviceState state, const QString& reason);
   /// A problem worth showing the user. Emitted from any of the session's threads.
   void problem(const QString& message);
 
  private:
+  class DeviceInput;  // the input port of one device (Session.cpp)
   struct Stream {
     int device = 0;
     int index = 0;  ///< within the device
-    devices::StreamInfo info;
+    StreamInfo info;
   };
   struct DeviceEntry {
-    std::unique_ptr<devices::Device> device;
+    std::unique_ptr<SampleInput> input;  // declared first: outlives the device using it
+    std::unique_ptr<SampleSource> device;
     QString label;
-    QThread* thread = nullptr;
+    bool started = false;
     int firstStream = 0;
   };
 
-  void onSamples(int device, const devices::SampleBatch& batch);
+  void onSamples(int device, const SampleBatch& batch);
   void logEvent(const std::string& text);
   void workerLoop();
   void recorderLoop();
@@ -187,7 +190,7 @@ class Session : public QObject {
   // devices -> worker
   std::mutex m_inputMutex;
   std::condition_variable m_inputCv;
-  std::vector<devices::DeviceSample> m_input;  // stream index is global here
+  std::vector<DeviceSample> m_input;  // stream index is global here
   bool m_inputClosed = false;
 
   // worker -> recorder

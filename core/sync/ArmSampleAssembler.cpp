@@ -4,64 +4,65 @@
 
 namespace armtrack {
 
-ArmSampleAssembler::ArmSampleAssembler(std::vector<ArmSlot> slotOfDevice, double mergeWindow)
-    : m_slots(std::move(slotOfDevice)), m_window(mergeWindow) {}
+ArmSampleAssembler::ArmSampleAssembler(std::vector<StreamRole> roleOfDevice, double mergeWindow)
+    : m_roles(std::move(roleOfDevice)), m_window(mergeWindow) {}
 
-bool ArmSampleAssembler::slotFilled(ArmSlot slot) const {
+bool ArmSampleAssembler::slotFilled(StreamRole slot) const {
   const ArmSample& r = *m_row;
   switch (slot) {
-    case ArmSlot::UpperArmImu:
+    case StreamRole::UpperArmImu:
       return r.upperArm.has_value();
-    case ArmSlot::ForearmImu:
+    case StreamRole::ForearmImu:
       return r.forearm.has_value();
-    case ArmSlot::Optical:
+    case StreamRole::Optical:
       return r.elbow.has_value() || r.wrist.has_value();
-    case ArmSlot::Camera:
+    case StreamRole::Camera:
       return r.camWrist.has_value() || r.camElbow.has_value();
-    case ArmSlot::Truth:
+    case StreamRole::Truth:
       return r.trueAngles.has_value();
   }
   return false;
 }
 
-void ArmSampleAssembler::fill(ArmSlot slot, const SensorPayload& payload) {
+void ArmSampleAssembler::fill(StreamRole slot, const SensorPayload& payload) {
   ArmSample& r = *m_row;
   switch (slot) {
-    case ArmSlot::UpperArmImu:
+    case StreamRole::UpperArmImu:
       r.upperArm = std::get<ImuReading>(payload);
       break;
-    case ArmSlot::ForearmImu:
+    case StreamRole::ForearmImu:
       r.forearm = std::get<ImuReading>(payload);
       break;
-    case ArmSlot::Optical: {
+    case StreamRole::Optical: {
       const auto& o = std::get<OpticalPositions>(payload);
       r.elbow = o.elbow;
       r.wrist = o.wrist;
       break;
     }
-    case ArmSlot::Camera: {
+    case StreamRole::Camera: {
       const auto& m = std::get<MarkerPixels>(payload);
       r.camWrist = m.wrist;
       r.camElbow = m.elbow;
       break;
     }
-    case ArmSlot::Truth:
+    case StreamRole::Truth:
       r.trueAngles = std::get<TruthAngles>(payload).th;
       break;
   }
 }
 
 std::optional<ArmSample> ArmSampleAssembler::add(const SensorEvent& event) {
-  if (event.device < 0 || static_cast<std::size_t>(event.device) >= m_slots.size()) {
+  if (event.device < 0 || static_cast<std::size_t>(event.device) >= m_roles.size()) {
     ++m_mismatched;
     return std::nullopt;
   }
-  const ArmSlot slot = m_slots[static_cast<std::size_t>(event.device)];
-  const bool imu = slot == ArmSlot::UpperArmImu || slot == ArmSlot::ForearmImu;
-  const bool ok = imu                       ? std::holds_alternative<ImuReading>(event.payload)
-                  : slot == ArmSlot::Optical ? std::holds_alternative<OpticalPositions>(event.payload)
-                  : slot == ArmSlot::Camera  ? std::holds_alternative<MarkerPixels>(event.payload)
-                                             : std::holds_alternative<TruthAngles>(event.payload);
+  const StreamRole slot = m_roles[static_cast<std::size_t>(event.device)];
+  const bool imu = slot == StreamRole::UpperArmImu || slot == StreamRole::ForearmImu;
+  const bool ok = imu ? std::holds_alternative<ImuReading>(event.payload)
+                  : slot == StreamRole::Optical
+                      ? std::holds_alternative<OpticalPositions>(event.payload)
+                  : slot == StreamRole::Camera ? std::holds_alternative<MarkerPixels>(event.payload)
+                                               : std::holds_alternative<TruthAngles>(event.payload);
   if (!ok) {
     ++m_mismatched;
     return std::nullopt;

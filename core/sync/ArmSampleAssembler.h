@@ -2,38 +2,16 @@
 // devices: events close together in time share one row.
 #pragma once
 
-#include <Eigen/Core>
+#include <cstdint>
 #include <optional>
-#include <variant>
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/sync/SensorPayload.h"
 #include "core/sync/TimeSync.h"
 
 namespace armtrack {
 
-/// What a device contributes to a row.
-enum class ArmSlot { UpperArmImu, ForearmImu, Optical, Camera, Truth };
-
-/// Kinect (or external tracker) positions in the shoulder frame (m).
-struct OpticalPositions {
-  std::optional<Eigen::Vector3d> elbow;
-  std::optional<Eigen::Vector3d> wrist;
-};
-
-/// Webcam marker pixels (u, v).
-struct MarkerPixels {
-  std::optional<Eigen::Vector2d> wrist;
-  std::optional<Eigen::Vector2d> elbow;
-};
-
-/// The true joint angles (rad) of a simulated arm, for end-to-end accuracy checks.
-struct TruthAngles {
-  JointVector th = JointVector::Zero();
-};
-
-/// Payload of a sensor event: an IMU reading, optical positions, marker pixels or simulated truth.
-using SensorPayload = std::variant<ImuReading, OpticalPositions, MarkerPixels, TruthAngles>;
 using SensorEvent = SyncEvent<SensorPayload>;
 
 /// Groups events into rows: an event joins the open row when it is within mergeWindow seconds of
@@ -42,8 +20,8 @@ using SensorEvent = SyncEvent<SensorPayload>;
 /// the events are. Not thread-safe.
 class ArmSampleAssembler {
  public:
-  /// slotOfDevice[d] is the slot of device d. mergeWindow in s, default 0.5 ms.
-  explicit ArmSampleAssembler(std::vector<ArmSlot> slotOfDevice, double mergeWindow = 0.5e-3);
+  /// roleOfDevice[d] is the role of device d. mergeWindow in s, default 0.5 ms.
+  explicit ArmSampleAssembler(std::vector<StreamRole> roleOfDevice, double mergeWindow = 0.5e-3);
 
   /// Adds one event; returns the row it completed, if any. An event whose payload does not fit
   /// its device's slot (e.g. pixels from an IMU device) or whose device is unknown is counted in
@@ -59,10 +37,10 @@ class ArmSampleAssembler {
   std::uint64_t mismatched() const { return m_mismatched; }
 
  private:
-  bool slotFilled(ArmSlot slot) const;
-  void fill(ArmSlot slot, const SensorPayload& payload);
+  bool slotFilled(StreamRole slot) const;
+  void fill(StreamRole slot, const SensorPayload& payload);
 
-  std::vector<ArmSlot> m_slots;
+  std::vector<StreamRole> m_roles;
   double m_window;
   std::optional<ArmSample> m_row;
   std::uint64_t m_mismatched = 0;

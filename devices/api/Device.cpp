@@ -1,44 +1,8 @@
 #include "devices/api/Device.h"
 
 #include <algorithm>
-#include <chrono>
 
 namespace armtrack::devices {
-
-double hostNow() {
-  using namespace std::chrono;
-  return duration<double>(steady_clock::now().time_since_epoch()).count();
-}
-
-const char* toString(DeviceState state) {
-  switch (state) {
-    case DeviceState::Disconnected:
-      return "disconnected";
-    case DeviceState::Connecting:
-      return "connecting";
-    case DeviceState::Streaming:
-      return "streaming";
-    case DeviceState::Error:
-      return "error";
-  }
-  return "?";
-}
-
-const char* toString(StreamRole role) {
-  switch (role) {
-    case StreamRole::UpperArmImu:
-      return "upper-arm IMU";
-    case StreamRole::ForearmImu:
-      return "forearm IMU";
-    case StreamRole::Optical:
-      return "optical positions";
-    case StreamRole::Camera:
-      return "camera markers";
-    case StreamRole::Truth:
-      return "true angles";
-  }
-  return "?";
-}
 
 Device::Device(std::vector<StreamInfo> streams, QObject* parent)
     : QObject(parent), m_streams(std::move(streams)) {

@@ -1,5 +1,7 @@
 // The device plugin interface: what every sensor source (real or virtual) gives the session.
-// Depends on core types and Qt Core only; no widgets. See docs/devices/plugins.md.
+// Depends on core types and Qt Core only; no widgets. See docs/devices/plugins.md. The stream
+// types (StreamRole, StreamInfo, DeviceSample, health) are core's (core/devices/Stream.h); the
+// session drives a device through DeviceThread (devices/api/DeviceThread.h).
 #pragma once
 
 #include <QObject>
@@ -14,78 +16,14 @@
 #include <string>
 #include <vector>
 
-#include "core/io/Recording.h"
-#include "core/sync/ArmSampleAssembler.h"
+#include "core/devices/Stream.h"
 
 namespace armtrack::devices {
 
 /// Version of this interface. A plugin built against another version is refused by the loader.
 inline constexpr int kDeviceApiVersion = 1;
 
-/// Seconds on the host's monotonic clock (std::chrono::steady_clock), shared by every device and
-/// the session. Any thread.
-double hostNow();
-
-enum class DeviceState {
-  Disconnected,  ///< not started, or stopped
-  Connecting,    ///< opening, or waiting for a device that went away to come back
-  Streaming,     ///< samples are flowing
-  Error,         ///< cannot go on without the user (bad port, bad file); see the reason
-};
-/// "disconnected", "connecting", "streaming", "error".
-const char* toString(DeviceState state);
-
-/// What one stream of a device measures; the session maps streams to the estimator's inputs.
-enum class StreamRole {
-  UpperArmImu,  ///< ImuReading in the upper-arm sensor's axes
-  ForearmImu,   ///< ImuReading in the forearm sensor's axes
-  Optical,      ///< OpticalPositions in the shoulder frame (m)
-  Camera,       ///< MarkerPixels in the camera image (pixels)
-  Truth,        ///< TruthAngles of a simulated arm (rad)
-};
-const char* toString(StreamRole role);
-
-/// A stream: one clock, one kind of payload.
-struct StreamInfo {
-  std::string name;  ///< e.g. "upper-arm IMU"
-  StreamRole role = StreamRole::UpperArmImu;
-  double nominalRateHz = 0.0;  ///< Hz, 0 when unknown
-  double wrapPeriod = 0.0;     ///< s after which the device timestamp wraps; 0 = never
-  /// The camera model of a Camera stream (intrinsics and pose in the shoulder frame), when the
-  /// device knows it (a calibration file, a simulation). The estimator needs it for pixels.
-  std::optional<CameraParams> camera;
-};
-
-/// One timestamped sample in SI units.
-struct DeviceSample {
-  int stream = 0;            ///< index into Device::streams()
-  double deviceTime = 0.0;   ///< s on the device's own clock (may wrap, see StreamInfo)
-  double arrivalTime = 0.0;  ///< s on hostNow() when the bytes arrived
-  SensorPayload payload;     ///< must match the stream's role
-};
-using SampleBatch = std::vector<DeviceSample>;
-
-/// Health of one stream, counted since start().
-struct StreamHealth {
-  double rateHz = 0.0;        ///< samples per second over the last second
-  std::uint64_t samples = 0;  ///< samples published
-  std::uint64_t dropped = 0;  ///< samples the device says it lost (sequence gaps, dropouts)
-  std::uint64_t corrupt = 0;  ///< packets or frames rejected as malformed
-  /// Samples that arrived after a newer one (UDP reorders): not published, since device time
-  /// must not go back, and not counted as dropped either: they were not lost on the link.
-  /// Added in a way that keeps the plugin interface (kDeviceApiVersion 1): a field at the end
-  /// and a non-virtual counting function.
-  std::uint64_t reordered = 0;
-};
-
-struct DeviceHealth {
-  std::vector<StreamHealth> streams;     ///< one per Device::streams() entry
-  std::optional<double> batteryPercent;  ///< 0-100 where the device tells
-  std::uint64_t reconnects = 0;          ///< times the device came back after going away
-  std::string lastProblem;               ///< newest reported problem, empty if none
-};
-
-/// A sensor source. It lives in its own thread (the session moves it there): start() and stop()
+/// A sensor source. It lives in its own thread (DeviceThread moves it there): start() and stop()
 /// are called in that thread (queued), and samplesReady() is emitted from it. state() and health()
 /// may be called from any thread. Objects a device creates for its work (timers, ports, sockets)
 /// are created in start() or are children of the device, so they live in its thread.
@@ -109,10 +47,10 @@ class Device : public QObject {
   virtual void stop() = 0;
 
  signals:
-  void stateChanged(armtrack::devices::DeviceState state, const QString& reason);
+  void stateChanged(armtrack::DeviceState state, const QString& reason);
   /// Samples in arrival order. Emitted from the device thread; a receiver connected directly
   /// must be thread-safe.
-  void samplesReady(const armtrack::devices::SampleBatch& batch);
+  void samplesReady(const armtrack::SampleBatch& batch);
   /// A problem the session should report but that does not stop the device (a corrupt packet,
   /// a dropout, a sequence gap).
   void problem(const QString& message);
@@ -127,7 +65,8 @@ class Device : public QObject {
   void countDropped(int stream, std::uint64_t n);
   void countCorrupt(int stream, std::uint64_t n);
   /// n samples counted as dropped arrived after all, overtaken by newer ones (and were not
-  /// published): moves them from dropped to reordered.
+  /// published): moves them from dropped to reordered. Non-virtual, like StreamHealth::reordered
+  /// at the end of its struct, so kDeviceApiVersion 1 still holds.
   void countReordered(int stream, std::uint64_t n);
   void countReconnect();
   void setBattery(std::optional<double> percent);
@@ -168,5 +107,5 @@ class DevicePlugin {
 
 #define ARMTRACK_DEVICE_PLUGIN_IID "org.armtrack.DevicePlugin/1"
 Q_DECLARE_INTERFACE(armtrack::devices::DevicePlugin, ARMTRACK_DEVICE_PLUGIN_IID)
-Q_DECLARE_METATYPE(armtrack::devices::DeviceState)
-Q_DECLARE_METATYPE(armtrack::devices::SampleBatch)
+Q_DECLARE_METATYPE(armtrack::DeviceState)
+Q_DECLARE_METATYPE(armtrack::SampleBatch)

@@ -41,7 +41,7 @@ class ReplayDevice final : public Device {
   std::filesystem::path m_file;
   double m_speed;
   bool m_loop;
-  std::vector<int> m_streamOf;  // ArmSlot -> stream index, -1 when absent
+  std::vector<int> m_streamOf;  // StreamRole -> stream index, -1 when absent
   QTimer* m_timer = nullptr;
   std::unique_ptr<RecordingReader> m_reader;
   ArmSample m_pending;  // the next row to publish

@@ -27,24 +27,8 @@ std::vector<StreamInfo> VirtualArmDevice::describe(const VirtualArmSource& sourc
     StreamInfo s;
     s.name = v.name;
     s.nominalRateHz = v.rateHz;
-    switch (v.slot) {
-      case ArmSlot::UpperArmImu:
-        s.role = StreamRole::UpperArmImu;
-        break;
-      case ArmSlot::ForearmImu:
-        s.role = StreamRole::ForearmImu;
-        break;
-      case ArmSlot::Optical:
-        s.role = StreamRole::Optical;
-        break;
-      case ArmSlot::Camera:
-        s.role = StreamRole::Camera;
-        s.camera = source.meta().camera;
-        break;
-      case ArmSlot::Truth:
-        s.role = StreamRole::Truth;
-        break;
-    }
+    s.role = v.role;
+    if (v.role == StreamRole::Camera) s.camera = source.meta().camera;
     out.push_back(std::move(s));
   }
   return out;

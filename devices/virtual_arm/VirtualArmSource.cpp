@@ -123,20 +123,22 @@ VirtualArmSource::VirtualArmSource(const VirtualArmParams& params)
   SimulationParams sim = s;
   sim.includeTruth = m_p.truth;
   m_stream = std::make_unique<SensorStream>(*m_trajectory, sim);
-  if (s.upperArm.enabled) m_streams.push_back({"upper", ArmSlot::UpperArmImu, s.upperArm.rateHz});
-  if (s.forearm.enabled) m_streams.push_back({"forearm", ArmSlot::ForearmImu, s.forearm.rateHz});
-  if (s.kinect.enabled) m_streams.push_back({"kinect", ArmSlot::Optical, s.kinect.rateHz});
-  if (s.webcam.enabled) m_streams.push_back({"webcam", ArmSlot::Camera, s.webcam.rateHz});
+  if (s.upperArm.enabled)
+    m_streams.push_back({"upper", StreamRole::UpperArmImu, s.upperArm.rateHz});
+  if (s.forearm.enabled) m_streams.push_back({"forearm", StreamRole::ForearmImu, s.forearm.rateHz});
+  if (s.kinect.enabled) m_streams.push_back({"kinect", StreamRole::Optical, s.kinect.rateHz});
+  if (s.webcam.enabled) m_streams.push_back({"webcam", StreamRole::Camera, s.webcam.rateHz});
   if (m_p.truth && (s.upperArm.enabled || s.forearm.enabled))
-    m_streams.push_back({"truth", ArmSlot::Truth, std::max(s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
-                                                           s.forearm.enabled ? s.forearm.rateHz : 0.0)});
+    m_streams.push_back({"truth", StreamRole::Truth,
+                         std::max(s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
+                                  s.forearm.enabled ? s.forearm.rateHz : 0.0)});
   if (m_streams.empty()) throw std::invalid_argument("the virtual arm needs at least one sensor");
   // Every fault names a stream this arm has (and saturation one of its IMUs).
   auto checkStream = [&](const std::string& stream, const std::string& what, bool imuOnly) {
     std::string names;
     for (const VirtualStream& v : m_streams) {
-      const bool imu = v.slot == ArmSlot::UpperArmImu || v.slot == ArmSlot::ForearmImu;
-      if (v.slot == ArmSlot::Truth && what != "dropout") continue;
+      const bool imu = v.role == StreamRole::UpperArmImu || v.role == StreamRole::ForearmImu;
+      if (v.role == StreamRole::Truth && what != "dropout") continue;
       if (imuOnly && !imu) continue;
       if (v.name == stream) return;
       names += (names.empty() ? "" : ", ") + v.name;
@@ -160,9 +162,9 @@ VirtualArmSource::VirtualArmSource(const VirtualArmParams& params)
 
 VirtualArmSource::~VirtualArmSource() = default;
 
-int VirtualArmSource::streamIndex(ArmSlot slot) const {
+int VirtualArmSource::streamIndex(StreamRole role) const {
   for (std::size_t i = 0; i < m_streams.size(); ++i)
-    if (m_streams[i].slot == slot) return static_cast<int>(i);
+    if (m_streams[i].role == role) return static_cast<int>(i);
   return -1;
 }
 
@@ -208,8 +210,8 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
                       "virtual arm: link stalled at " + seconds(t) + " (injected)"});
   m_stalled = stalled;
 
-  auto deliver = [&](ArmSlot slot, double deviceTime, SensorPayload payload) {
-    const int k = streamIndex(slot);
+  auto deliver = [&](StreamRole role, double deviceTime, SensorPayload payload) {
+    const int k = streamIndex(role);
     if (k < 0) return;
     const auto i = static_cast<std::size_t>(k);
     bool dropping = false;
@@ -224,7 +226,7 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
                             (dropping ? " (injected)" : "")});
     }
     if (gone || dropping) {
-      if (slot != ArmSlot::Truth) ++m_dropped[i];
+      if (role != StreamRole::Truth) ++m_dropped[i];
       return;
     }
     injectValues(i, t, payload, events);
@@ -242,12 +244,13 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
   };
 
   const double imuT = imuClock(t);
-  if (row.upperArm) deliver(ArmSlot::UpperArmImu, imuT, *row.upperArm);
-  if (row.forearm) deliver(ArmSlot::ForearmImu, imuT, *row.forearm);
-  if (row.elbow || row.wrist) deliver(ArmSlot::Optical, t, OpticalPositions{row.elbow, row.wrist});
+  if (row.upperArm) deliver(StreamRole::UpperArmImu, imuT, *row.upperArm);
+  if (row.forearm) deliver(StreamRole::ForearmImu, imuT, *row.forearm);
+  if (row.elbow || row.wrist)
+    deliver(StreamRole::Optical, t, OpticalPositions{row.elbow, row.wrist});
   if (row.camWrist || row.camElbow)
-    deliver(ArmSlot::Camera, t, MarkerPixels{row.camWrist, row.camElbow});
-  if (row.trueAngles) deliver(ArmSlot::Truth, imuT, TruthAngles{*row.trueAngles});
+    deliver(StreamRole::Camera, t, MarkerPixels{row.camWrist, row.camElbow});
+  if (row.trueAngles) deliver(StreamRole::Truth, imuT, TruthAngles{*row.trueAngles});
 }
 
 void VirtualArmSource::injectValues(std::size_t i, double t, SensorPayload& payload,

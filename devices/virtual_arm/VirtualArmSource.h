@@ -11,7 +11,7 @@
 
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
-#include "core/sync/ArmSampleAssembler.h"
+#include "core/sync/SensorPayload.h"
 
 namespace armtrack::devices::virtualarm {
 
@@ -88,7 +88,7 @@ struct VirtualArmParams {
 /// One stream of the virtual arm.
 struct VirtualStream {
   std::string name;  ///< "upper", "forearm", "kinect", "webcam", "truth"
-  ArmSlot slot = ArmSlot::UpperArmImu;
+  StreamRole role = StreamRole::UpperArmImu;
   double rateHz = 0.0;
 };
 
@@ -146,7 +146,7 @@ class VirtualArmSource {
   }
 
  private:
-  int streamIndex(ArmSlot slot) const;
+  int streamIndex(StreamRole role) const;
   double imuClock(double t) const;
   void emitRow(const ArmSample& row, std::vector<VirtualSample>& out,
                std::vector<SourceEvent>& events);

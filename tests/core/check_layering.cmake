@@ -1,32 +1,60 @@
-# Fails when a file under ROOT (core/) includes a Qt or VTK header, or an OpenCV header outside
-# ROOT/camera/*.cpp: OpenCV is a private dependency of the camera model and stays out of headers.
-# The exception is ROOT/session/, the Qt Core service that runs the pipeline: Qt Core there, but
-# never widgets, GUI or VTK.
-file(GLOB_RECURSE sources "${ROOT}/*.h" "${ROOT}/*.cpp")
+# The layer rule of docs/architecture.md, checked on the sources' #include lines. ROOT is the
+# source tree. Fails (FATAL_ERROR, listing every offending line) when
+# - a file under core/, outside the service folders, includes a Qt or VTK header, or an OpenCV
+#   header outside core/camera/*.cpp (OpenCV is private to the camera model, never in a header),
+#   or a header of a core service (core/session/);
+# - a core service (core/session/) includes widgets, Qt Charts or VTK (Qt Core, Sql and Gui are
+#   allowed there);
+# - anything under core/ includes a header of devices/, app/ or ui/ (an upward arrow);
+# - anything under devices/ includes a header of app/ or ui/, or widgets;
+# - a file under core/ or devices/ includes with a "../" path, which would hide such an arrow.
+set(include_re "^[ \t]*#[ \t]*include[ \t]*[<\"]")
+set(widgets_re "${include_re}(QtWidgets|QtCharts|Q[A-Za-z]*(Widget|Dialog|Chart)|QApplication|QMainWindow|QMessageBox|vtk)")
+set(services "session")
+
 set(offenders "")
-foreach(f IN LISTS sources)
-  file(RELATIVE_PATH rel "${ROOT}" "${f}")
-  if(rel MATCHES "^session/")
-    file(STRINGS "${f}" hits REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](QtWidgets|QtGui|QWidget|QApplication|QGuiApplication|vtk)")
+# check(<file> <regex> <why>): appends every line of file matching regex to offenders.
+function(check file regex why)
+  file(STRINGS "${file}" hits REGEX "${regex}")
+  foreach(hit IN LISTS hits)
+    string(STRIP "${hit}" hit)
+    list(APPEND offenders "${file}: ${hit}  (${why})")
+  endforeach()
+  set(offenders "${offenders}" PARENT_SCOPE)
+endfunction()
+
+file(GLOB_RECURSE core_files "${ROOT}/core/*.h" "${ROOT}/core/*.cpp")
+file(GLOB_RECURSE device_files "${ROOT}/devices/*.h" "${ROOT}/devices/*.cpp")
+list(LENGTH core_files n_core)
+list(LENGTH device_files n_devices)
+if(n_core EQUAL 0 OR n_devices EQUAL 0)
+  message(FATAL_ERROR "no sources found under ${ROOT}/core or ${ROOT}/devices")
+endif()
+
+string(JOIN "|" services_alt ${services})
+foreach(f IN LISTS core_files)
+  file(RELATIVE_PATH rel "${ROOT}/core" "${f}")
+  if(rel MATCHES "^(${services_alt})/")
+    check("${f}" "${widgets_re}" "a core service uses Qt Core, Sql and Gui, never widgets or VTK")
   else()
-    file(STRINGS "${f}" hits REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](Q[A-Za-z]|vtk)")
-  endif()
-  if(hits)
-    list(APPEND offenders "${f}: ${hits}")
-  endif()
-  if(NOT rel MATCHES "^camera/.*\\.cpp$")
-    file(STRINGS "${f}" hits REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]opencv")
-    if(hits)
-      list(APPEND offenders "${f}: ${hits}")
+    check("${f}" "${include_re}(Q[A-Za-z]|vtk)" "core science is Qt- and VTK-free")
+    check("${f}" "${include_re}core/(${services_alt})/" "core science must not use a Qt service")
+    if(NOT rel MATCHES "^camera/.*\\.cpp$")
+      check("${f}" "${include_re}opencv" "OpenCV only in core/camera/*.cpp")
     endif()
   endif()
+  check("${f}" "${include_re}(devices|app|ui)/" "core/ must not include a higher layer")
+  check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
 endforeach()
-list(LENGTH sources n)
-if(n EQUAL 0)
-  message(FATAL_ERROR "no sources found under ${ROOT}")
-endif()
+
+foreach(f IN LISTS device_files)
+  check("${f}" "${include_re}(app|ui)/" "devices/ must not include app/ or ui/")
+  check("${f}" "${widgets_re}" "a device never opens a widget or dialog")
+  check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
+endforeach()
+
 if(offenders)
-  message(FATAL_ERROR "core/ must not include Qt or VTK, and OpenCV only in camera/*.cpp:\n"
-                      "${offenders}")
+  list(JOIN offenders "\n" text)
+  message(FATAL_ERROR "layer rule broken (docs/architecture.md):\n${text}")
 endif()
-message(STATUS "checked ${n} core files: no Qt or VTK, OpenCV only in camera/*.cpp")
+message(STATUS "checked ${n_core} core and ${n_devices} device files: the layers point one way")

@@ -17,9 +17,6 @@ namespace armtrack::test {
 
 struct DeviceHarness {
   using Device = devices::Device;
-  using DeviceSample = devices::DeviceSample;
-  using DeviceState = devices::DeviceState;
-  using SampleBatch = devices::SampleBatch;
 
   std::unique_ptr<Device> device;
   QThread thread;

@@ -1,12 +1,16 @@
-// Loads one device plugin from the build tree (ARMTRACK_PLUGIN_DIR) for a test.
+// Loads one device plugin from the build tree (ARMTRACK_PLUGIN_DIR) for a test, and hosts its
+// devices in a thread for a session.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <QPluginLoader>
 #include <QString>
+#include <memory>
+#include <utility>
 
 #include "devices/api/Device.h"
+#include "devices/api/DeviceThread.h"
 
 namespace armtrack::test {
 
@@ -24,6 +28,13 @@ inline devices::DevicePlugin* loadPlugin(const QString& name) {
   auto* plugin = qobject_cast<devices::DevicePlugin*>(instance);
   if (!plugin) ADD_FAILURE() << file.toStdString() << " is not a device plugin";
   return plugin;
+}
+
+/// The device in the thread that will host it, ready for Session::addDevice() (as armtrack-cli
+/// live adds its devices).
+inline std::unique_ptr<SampleSource> hosted(std::unique_ptr<devices::Device> device,
+                                            const QString& name = QStringLiteral("test")) {
+  return std::make_unique<devices::DeviceThread>(std::move(device), name);
 }
 
 }  // namespace armtrack::test

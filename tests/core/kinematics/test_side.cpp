@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/ArmSample.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
 #include "core/kinematics/Side.h"

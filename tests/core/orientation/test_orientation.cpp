@@ -58,22 +58,20 @@ std::vector<std::vector<double>> readCsv(const std::string& path, std::size_t co
 }
 
 // Inclination RMSE (deg) of the filter with default parameters over the trial's movement samples.
+// A trial file (tests/data/broad/README.md, unpacked by the build) has one row per sample:
+// t, gyr xyz, acc xyz, the reference quaternion (w, x, y, z) and the movement flag.
 double broadInclinationRmse(const std::string& trial) {
-  const std::string dir = ARMTRACK_SHARED_DIR "/data/broad/";
-  const auto imu = readCsv(dir + trial + ".csv", 7);
-  const auto truth = readCsv(dir + trial + ".truth.csv", 6);
-  EXPECT_EQ(imu.size(), truth.size());
-  EXPECT_GT(imu.size(), 1000u);
+  const auto rows = readCsv(ARMTRACK_BROAD_DIR "/" + trial + ".csv", 12);
+  EXPECT_GT(rows.size(), 1000u);
   OrientationFilter filter;
   double sumSq = 0.0;
   std::size_t count = 0;
-  for (std::size_t i = 0; i < imu.size() && i < truth.size(); ++i) {
-    const auto& r = imu[i];
-    const double dt = i == 0 ? imu[1][0] - imu[0][0] : r[0] - imu[i - 1][0];
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& r = rows[i];
+    const double dt = i == 0 ? rows[1][0] - rows[0][0] : r[0] - rows[i - 1][0];
     filter.update({r[1], r[2], r[3]}, {r[4], r[5], r[6]}, dt);
-    const auto& q = truth[i];
-    if (q[5] != 1.0 || !std::isfinite(q[1] + q[2] + q[3] + q[4])) continue;
-    const double err = inclinationError(filter.orientation(), {q[1], q[2], q[3], q[4]});
+    if (r[11] != 1.0 || !std::isfinite(r[7] + r[8] + r[9] + r[10])) continue;
+    const double err = inclinationError(filter.orientation(), {r[7], r[8], r[9], r[10]});
     sumSq += err * err;
     ++count;
   }

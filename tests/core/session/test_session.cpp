@@ -29,7 +29,6 @@ namespace armtrack::session {
 namespace {
 
 namespace fs = std::filesystem;
-using devices::StreamRole;
 
 struct SessionRun {
   SessionStats stats;
@@ -69,7 +68,8 @@ class SessionTest : public ::testing::Test {
         ADD_FAILURE() << why.toStdString();
         return {};
       }
-      session.addDevice(std::move(device), QStringLiteral("arm") + QString::number(specs.size()));
+      const QString label = QStringLiteral("arm") + QString::number(specs.size());
+      session.addDevice(test::hosted(std::move(device), label), label);
     }
     const QString why = session.start();
     EXPECT_TRUE(why.isEmpty()) << why.toStdString();
@@ -369,20 +369,28 @@ TEST_F(SessionTest, RefusesAmbiguousOrIncompleteSetups) {
   QString why;
   {
     Session s(SessionParams{});
-    s.addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why), "a");
-    s.addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why), "b");
+    s.addDevice(test::hosted(
+                    plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why)),
+                "a");
+    s.addDevice(test::hosted(
+                    plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why)),
+                "b");
     EXPECT_NE(s.start().indexOf(QStringLiteral("two streams provide the upper-arm IMU")), -1);
   }
   {
     Session s(SessionParams{});
-    s.addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=kinect")), &why), "k");
+    s.addDevice(test::hosted(plugin->create(
+                    devices::Options::parse(QStringLiteral("sensors=kinect")), &why)),
+                "k");
     EXPECT_NE(s.start().indexOf(QStringLiteral("no IMU")), -1);
   }
   {
     SessionParams p;
     p.recordingPath = "/nonexistent-folder/x.csv";
     Session s(p);
-    s.addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why), "u");
+    s.addDevice(test::hosted(
+                    plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why)),
+                "u");
     EXPECT_NE(s.start().indexOf(QStringLiteral("cannot record")), -1);
     EXPECT_FALSE(s.running());
   }
@@ -424,7 +432,8 @@ TEST_F(SessionTest, NeverReplacesARecordingUnlessAskedTo) {
     p.overwrite = overwrite;
     auto s = std::make_unique<Session>(p);
     QString why;
-    s->addDevice(plugin->create(devices::Options::parse(QStringLiteral("sensors=upper")), &why),
+    s->addDevice(test::hosted(plugin->create(
+                     devices::Options::parse(QStringLiteral("sensors=upper")), &why)),
                  "u");
     const QString refusal = s->start();
     return std::make_pair(std::move(s), refusal);

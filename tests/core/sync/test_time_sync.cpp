@@ -626,7 +626,7 @@ TEST(SequenceTracker, CountsLossesReorderingAndDuplicates) {
 }
 
 TEST(TimeSyncAssembler, MergesCloseEventsIntoRows) {
-  ArmSampleAssembler rows({ArmSlot::UpperArmImu, ArmSlot::ForearmImu, ArmSlot::Optical});
+  ArmSampleAssembler rows({StreamRole::UpperArmImu, StreamRole::ForearmImu, StreamRole::Optical});
   auto ev = [](int device, double t, SensorPayload p) {
     SensorEvent e;
     e.device = device;

@@ -4,8 +4,8 @@
 
 #include "devices/api/Options.h"
 
+using armtrack::StreamRole;
 using armtrack::devices::Options;
-using armtrack::devices::StreamRole;
 
 TEST(Options, ParseSplitsPairsAndBareKeysAreOn) {
   const QVariantMap m = Options::parse(QStringLiteral("rate=1000, port=/dev/rfcomm0,truth,=x"));

@@ -47,13 +47,13 @@ TEST(Replay, FourTimesFasterKeepsEverySampleAndItsTiming) {
   session::SessionParams params;
   params.recordingPath = fs::path(dir.path().toStdString()) / "replayed.csv";
   session::Session s(params);
-  s.addDevice(std::move(device), QStringLiteral("replay"));
+  s.addDevice(test::hosted(std::move(device), QStringLiteral("replay")), QStringLiteral("replay"));
   ASSERT_TRUE(s.start().isEmpty());
   std::this_thread::sleep_for(std::chrono::milliseconds(2300));  // 8 s at 4x, plus margin
   s.stop();
   const session::SessionStats st = s.stats();
   EXPECT_EQ(st.lost(), 0u);
-  EXPECT_EQ(st.deviceStates[0], devices::DeviceState::Disconnected);
+  EXPECT_EQ(st.deviceStates[0], DeviceState::Disconnected);
 
   const Recording replayed = readRecording(params.recordingPath);
   std::vector<const ArmSample*> a, b;
@@ -120,9 +120,9 @@ namespace {
 
 // A replay device run in this thread's event loop until it leaves Streaming (or `seconds` pass).
 struct Played {
-  std::vector<devices::DeviceSample> samples;
+  std::vector<DeviceSample> samples;
   QStringList problems;
-  devices::DeviceState state = devices::DeviceState::Disconnected;
+  DeviceState state = DeviceState::Disconnected;
   QString reason;
 };
 
@@ -133,23 +133,22 @@ Played play(const QString& options, double seconds) {
       test::loadPlugin(QStringLiteral("replay"))->create(devices::Options::parse(options), &why);
   EXPECT_NE(device, nullptr) << why.toStdString();
   if (!device) return out;
-  QObject::connect(device.get(), &devices::Device::samplesReady,
-                   [&](const devices::SampleBatch& b) {
-                     out.samples.insert(out.samples.end(), b.begin(), b.end());
-                   });
+  QObject::connect(device.get(), &devices::Device::samplesReady, [&](const SampleBatch& b) {
+    out.samples.insert(out.samples.end(), b.begin(), b.end());
+  });
   QObject::connect(device.get(), &devices::Device::problem,
                    [&](const QString& m) { out.problems << m; });
   QObject::connect(device.get(), &devices::Device::stateChanged,
-                   [&](devices::DeviceState st, const QString& r) {
+                   [&](DeviceState st, const QString& r) {
                      out.state = st;
                      out.reason = r;
                    });
   device->start();
   const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end && (out.state == devices::DeviceState::Streaming ||
-                                                    out.state == devices::DeviceState::Connecting))
+  while (std::chrono::steady_clock::now() < end &&
+         (out.state == DeviceState::Streaming || out.state == DeviceState::Connecting))
     QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-  const devices::DeviceState last = out.state;
+  const DeviceState last = out.state;
   const QString lastReason = out.reason;
   device->stop();
   out.state = last;  // as it was before stop()
@@ -185,7 +184,7 @@ TEST(Replay, BadRowMidFilePlaysTheRowsBeforeItThenStopsWithTheLine) {
 
   const Played r =
       play(QStringLiteral("speed=20,file=") + QString::fromStdString(path.string()), 5.0);
-  EXPECT_EQ(r.state, devices::DeviceState::Error);
+  EXPECT_EQ(r.state, DeviceState::Error);
   EXPECT_TRUE(r.reason.contains(QStringLiteral("broken.csv:12002:1"))) << r.reason.toStdString();
   EXPECT_TRUE(r.reason.contains(QStringLiteral("rows before it were played")))
       << r.reason.toStdString();
@@ -194,7 +193,7 @@ TEST(Replay, BadRowMidFilePlaysTheRowsBeforeItThenStopsWithTheLine) {
       std::count_if(rec.samples.begin(), rec.samples.begin() + 11999,
                     [](const ArmSample& x) { return x.upperArm.has_value(); }));
   std::vector<double> upper;
-  for (const devices::DeviceSample& s : r.samples)
+  for (const DeviceSample& s : r.samples)
     if (std::holds_alternative<ImuReading>(s.payload) && s.stream == 0)
       upper.push_back(s.deviceTime);
   EXPECT_EQ(upper.size(), before);
@@ -208,10 +207,10 @@ TEST(Replay, LoopPlaysAgainWithDeviceTimeMovingOn) {
   writeRecording(path, rec);  // no sidecar problems: writeRecording writes one
   const Played r =
       play(QStringLiteral("speed=10,loop=1,file=") + QString::fromStdString(path.string()), 0.4);
-  EXPECT_EQ(r.state, devices::DeviceState::Streaming) << r.reason.toStdString();  // still looping
+  EXPECT_EQ(r.state, DeviceState::Streaming) << r.reason.toStdString();  // still looping
   EXPECT_TRUE(r.problems.isEmpty()) << r.problems.join(u'\n').toStdString();
   std::vector<double> upper;
-  for (const devices::DeviceSample& s : r.samples)
+  for (const DeviceSample& s : r.samples)
     if (s.stream == 0) upper.push_back(s.deviceTime);
   std::size_t rows = 0;
   for (const ArmSample& x : rec.samples) rows += x.upperArm.has_value();
