@@ -89,7 +89,6 @@ PreparedSeries prepareSeries(const AngleSeries& series, const MotionParams& para
     for (int a = 0; a < kNumClinicalAngles; ++a) raw(r, a) = series.angle[i][a];
   }
   smoothWithDerivative(p.t, raw, params.smoothing, p.angle, p.rate);
-  p.rawAngle = std::move(raw);
   p.segments = splitAtGaps(p.t, params.smoothing.maxGapSeconds);
   p.weight = sampleWeights(p.t, p.segments);
   return p;

@@ -42,7 +42,6 @@ struct MotionParams {
 /// A validated, smoothed series ready for metrics. Build it with prepareSeries().
 struct PreparedSeries {
   std::vector<double> t;              ///< s, strictly increasing, finite
-  Eigen::MatrixXd rawAngle;           ///< rad, as given (kept rows); rows = samples
   Eigen::MatrixXd angle;              ///< rad, smoothed; rows = samples, 5 columns
   Eigen::MatrixXd rate;               ///< rad/s, derivative of the local fit
   std::vector<double> weight;         ///< s each sample stands for (sampleWeights())

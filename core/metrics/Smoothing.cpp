@@ -19,6 +19,28 @@ std::vector<Segment> splitAtGaps(const std::vector<double>& t, double maxGapSeco
   return segments;
 }
 
+void fitWindow(const std::vector<double>& t, const Eigen::MatrixXd& values, std::size_t lo,
+               std::size_t hi, double tc, double h, int maxOrder, Eigen::RowVectorXd& value,
+               Eigen::RowVectorXd& rate) {
+  const Eigen::Index k = values.cols();
+  const int order = std::min(maxOrder, static_cast<int>(hi - lo) - 1);
+  // Polynomial in u = (t_j - tc) / h, which keeps the normal equations well scaled.
+  using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+  Small normal = Small::Zero(order + 1, order + 1);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(order + 1, k);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> basis(order + 1);
+  for (std::size_t j = lo; j < hi; ++j) {
+    const double u = (t[j] - tc) / h;
+    basis(0) = 1.0;
+    for (int d = 1; d <= order; ++d) basis(d) = basis(d - 1) * u;
+    normal.noalias() += basis * basis.transpose();
+    rhs.noalias() += basis * values.row(static_cast<Eigen::Index>(j));
+  }
+  const Eigen::MatrixXd coef = normal.ldlt().solve(rhs);
+  value = coef.row(0);
+  rate = order >= 1 ? Eigen::RowVectorXd(coef.row(1) / h) : Eigen::RowVectorXd::Zero(k);
+}
+
 void smoothWithDerivative(const std::vector<double>& t, const Eigen::MatrixXd& values,
                           const SmoothingParams& params, Eigen::MatrixXd& smoothed,
                           Eigen::MatrixXd& derivative) {
@@ -33,22 +55,10 @@ void smoothWithDerivative(const std::vector<double>& t, const Eigen::MatrixXd& v
       while (hi < seg.end && t[hi] - t[i] <= h) ++hi;
       const std::size_t m = hi - lo;
       if (m < 2) continue;  // lone sample: value as measured, rate unknown (0)
-      const int order = std::min(params.polynomialOrder, static_cast<int>(m) - 1);
-      // Polynomial in u = (t_j - t_i) / h, which keeps the normal equations well scaled.
-      using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
-      Small normal = Small::Zero(order + 1, order + 1);
-      Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(order + 1, k);
-      Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1> basis(order + 1);
-      for (std::size_t j = lo; j < hi; ++j) {
-        const double u = (t[j] - t[i]) / h;
-        basis(0) = 1.0;
-        for (int d = 1; d <= order; ++d) basis(d) = basis(d - 1) * u;
-        normal.noalias() += basis * basis.transpose();
-        rhs.noalias() += basis * values.row(static_cast<Eigen::Index>(j));
-      }
-      const Eigen::MatrixXd coef = normal.ldlt().solve(rhs);
-      smoothed.row(static_cast<Eigen::Index>(i)) = coef.row(0);
-      derivative.row(static_cast<Eigen::Index>(i)) = coef.row(1) / h;
+      Eigen::RowVectorXd value, rate;
+      fitWindow(t, values, lo, hi, t[i], h, params.polynomialOrder, value, rate);
+      smoothed.row(static_cast<Eigen::Index>(i)) = value;
+      derivative.row(static_cast<Eigen::Index>(i)) = rate;
     }
   }
 }
@@ -64,18 +74,6 @@ std::vector<double> sampleWeights(const std::vector<double>& t,
     }
   }
   return w;
-}
-
-Eigen::RowVectorXd interpolateRow(const std::vector<double>& t, const Eigen::MatrixXd& values,
-                                  double tq) {
-  const auto it = std::upper_bound(t.begin(), t.end(), tq);
-  if (it == t.begin()) return values.row(0);
-  if (it == t.end()) return values.row(values.rows() - 1);
-  const auto b = static_cast<Eigen::Index>(it - t.begin());
-  const Eigen::Index a = b - 1;
-  const double f = (tq - t[static_cast<std::size_t>(a)]) /
-                   (t[static_cast<std::size_t>(b)] - t[static_cast<std::size_t>(a)]);
-  return (1.0 - f) * values.row(a) + f * values.row(b);
 }
 
 }  // namespace armtrack

@@ -42,13 +42,16 @@ void smoothWithDerivative(const std::vector<double>& t, const Eigen::MatrixXd& v
                           const SmoothingParams& params, Eigen::MatrixXd& smoothed,
                           Eigen::MatrixXd& derivative);
 
+/// Fits the polynomial (degree up to maxOrder, at most samples - 1) to samples [lo, hi) of the
+/// columns of `values` around time tc with scale h (s), and gives its value and derivative (per
+/// second) at tc. Needs hi - lo >= 2.
+void fitWindow(const std::vector<double>& t, const Eigen::MatrixXd& values, std::size_t lo,
+               std::size_t hi, double tc, double h, int maxOrder, Eigen::RowVectorXd& value,
+               Eigen::RowVectorXd& rate);
+
 /// Time each sample stands for (s): half the step to each neighbour inside its segment, so the
 /// weights of a segment add up to its span and a lone sample weighs 0.
 std::vector<double> sampleWeights(const std::vector<double>& t,
                                   const std::vector<Segment>& segments);
-
-/// Linear interpolation of the columns of `values` at time tq inside [t.front(), t.back()].
-Eigen::RowVectorXd interpolateRow(const std::vector<double>& t, const Eigen::MatrixXd& values,
-                                  double tq);
 
 }  // namespace armtrack

@@ -104,24 +104,25 @@ SmoothnessValue ldljFromSpeed(const std::vector<double>& speed, double fs) {
   return ldljFromVelocity(v, fs);
 }
 
-PathSmoothness pathSmoothness(const std::vector<double>& t, const Eigen::MatrixXd& positions,
-                              const PathSmoothnessParams& params) {
+UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::MatrixXd& positions,
+                                const PathSmoothnessParams& params) {
   if (static_cast<Eigen::Index>(t.size()) != positions.rows()) {
-    throw std::invalid_argument("pathSmoothness: times and positions differ in length");
+    throw std::invalid_argument("path smoothness: times and positions differ in length");
   }
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!std::isfinite(t[i]) || (i > 0 && !(t[i] > t[i - 1]))) {
       throw std::invalid_argument(
-          "pathSmoothness: times must be finite and increase strictly (row " + std::to_string(i) +
+          "path smoothness: times must be finite and increase strictly (row " + std::to_string(i) +
           ")");
     }
   }
-  PathSmoothness out;
-  if (!positions.allFinite()) {
-    out.sparc = out.ldlj = fail(SmoothnessStatus::NonFinite);
-    return out;
+  if (!(params.smoothing.halfWindowSeconds > 0 && params.smoothing.polynomialOrder >= 1 &&
+        params.smoothing.polynomialOrder <= 3 && std::isfinite(params.resampleHz) &&
+        params.resampleHz >= 0)) {
+    throw std::invalid_argument("path smoothness: window > 0, order 1-3, resample rate >= 0");
   }
-  if (t.size() < 4) return out;  // TooShort
+  UniformVelocity out;
+  if (t.size() < 2) return out;
   std::vector<double> steps(t.size() - 1);
   for (std::size_t i = 1; i < t.size(); ++i) steps[i - 1] = t[i] - t[i - 1];
   std::vector<double> sorted = steps;
@@ -136,29 +137,54 @@ PathSmoothness pathSmoothness(const std::vector<double>& t, const Eigen::MatrixX
       ++count;
     }
   }
-  const double fs = params.resampleHz > 0 ? params.resampleHz : static_cast<double>(count) / sum;
-  out.sampleRateHz = fs;
-
-  SmoothingParams smoothing = params.smoothing;
-  smoothing.maxGapSeconds = std::max(smoothing.maxGapSeconds, t.back() - t.front());
-  Eigen::MatrixXd smoothed, velocity;
-  smoothWithDerivative(t, positions, smoothing, smoothed, velocity);
-
-  const auto m = static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * fs + 1e-9)) + 1;
-  Eigen::MatrixXd uniform(m, positions.cols());
+  out.sampleRateHz = params.resampleHz > 0 ? params.resampleHz : static_cast<double>(count) / sum;
+  out.t0 = t.front();
+  // The local fit evaluated at each uniform time directly (no interpolation of a rate): the
+  // velocity stays smooth enough for the second differences of the jerk.
+  const double h = params.smoothing.halfWindowSeconds;
+  const auto m =
+      static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * out.sampleRateHz + 1e-9)) + 1;
+  out.velocity = Eigen::MatrixXd::Zero(m, positions.cols());
+  Eigen::RowVectorXd value, rate;
   for (Eigen::Index k = 0; k < m; ++k) {
-    uniform.row(k) = interpolateRow(t, velocity, t.front() + static_cast<double>(k) / fs);
+    const double tq = out.t0 + static_cast<double>(k) / out.sampleRateHz;
+    const auto lo =
+        static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), tq - h) - t.begin());
+    const auto hi =
+        static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), tq + h) - t.begin());
+    if (hi < lo + 2) continue;  // inside a gap: no estimate, counted as still
+    fitWindow(t, positions, lo, hi, tq, h, params.smoothing.polynomialOrder, value, rate);
+    out.velocity.row(k) = rate;
   }
-  std::vector<double> speed(static_cast<std::size_t>(m));
-  for (Eigen::Index k = 0; k < m; ++k) speed[static_cast<std::size_t>(k)] = uniform.row(k).norm();
-  out.peakSpeedMPerS = m > 0 ? *std::max_element(speed.begin(), speed.end()) : 0.0;
+  return out;
+}
+
+PathSmoothness velocitySmoothness(const Eigen::MatrixXd& velocity, double sampleRateHz,
+                                  const PathSmoothnessParams& params) {
+  PathSmoothness out;
+  out.sampleRateHz = sampleRateHz;
+  if (!velocity.allFinite()) {
+    out.sparc = out.ldlj = fail(SmoothnessStatus::NonFinite);
+    return out;
+  }
+  if (velocity.rows() < 4) return out;  // TooShort
+  std::vector<double> speed(static_cast<std::size_t>(velocity.rows()));
+  for (Eigen::Index k = 0; k < velocity.rows(); ++k)
+    speed[static_cast<std::size_t>(k)] = velocity.row(k).norm();
+  out.peakSpeedMPerS = *std::max_element(speed.begin(), speed.end());
   if (out.peakSpeedMPerS < params.minPeakSpeedMPerS) {
     out.sparc = out.ldlj = fail(SmoothnessStatus::NoMovement);
     return out;
   }
-  out.sparc = sparc(speed, fs, params.sparc);
-  out.ldlj = ldljFromVelocity(uniform, fs);
+  out.sparc = sparc(speed, sampleRateHz, params.sparc);
+  out.ldlj = ldljFromVelocity(velocity, sampleRateHz);
   return out;
+}
+
+PathSmoothness pathSmoothness(const std::vector<double>& t, const Eigen::MatrixXd& positions,
+                              const PathSmoothnessParams& params) {
+  const UniformVelocity v = uniformVelocity(t, positions, params);
+  return velocitySmoothness(v.velocity, v.sampleRateHz, params);
 }
 
 Eigen::MatrixXd wristPath(const std::vector<ClinicalRow>& anglesRad, const ArmGeometry& geometry) {

@@ -61,8 +61,9 @@ struct PathSmoothness {
 };
 
 struct PathSmoothnessParams {
-  /// Differentiation of the positions (local quadratic fit). A narrower window than for the
-  /// joint angles keeps the speed's spectrum intact up to the 10 Hz cut-off.
+  /// Differentiation of the positions (local cubic fit, 0.03 s half-width). Narrower than for
+  /// the joint angles, so the speed's spectrum stays intact up to the 10 Hz cut-off; the gap
+  /// length is not used here.
   SmoothingParams smoothing{.halfWindowSeconds = 0.03, .polynomialOrder = 3, .maxGapSeconds = 0.25};
   SparcParams sparc;
   /// Uniform rate the velocity is resampled to (Hz); 0 = the inverse of the mean time step,
@@ -73,11 +74,26 @@ struct PathSmoothnessParams {
   double minPeakSpeedMPerS = 1e-3;
 };
 
-/// SPARC and LDLJ of a path: positions (rows = samples, any dimension, metres) at times t (s,
-/// strictly increasing, finite), differentiated by local quadratic fits and resampled to a
-/// uniform rate. Throws std::invalid_argument when sizes differ or times do not increase
-/// strictly; non-finite positions give status NonFinite. A path with a gap longer than
-/// smoothing.maxGapSeconds is measured as if the gap were not there: split it first.
+/// Velocity of a path on a uniform time grid: positions (rows = samples, any dimension, m) at
+/// times t (s, strictly increasing, finite); at each grid time t0 + k / sampleRateHz the local
+/// polynomial of params.smoothing is fitted to the samples within +-halfWindowSeconds and
+/// differentiated. A grid time with fewer than two samples in reach (a gap) gets velocity 0.
+struct UniformVelocity {
+  double t0 = 0;             ///< s, time of row 0
+  double sampleRateHz = 0;   ///< grid rate
+  Eigen::MatrixXd velocity;  ///< m/s, rows = grid times
+};
+/// Throws std::invalid_argument when sizes differ, times do not increase strictly, or a
+/// parameter is out of range.
+UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::MatrixXd& positions,
+                                const PathSmoothnessParams& params = {});
+
+/// SPARC (of the speed) and LDLJ (jerk-vector form) of a uniformly sampled velocity.
+PathSmoothness velocitySmoothness(const Eigen::MatrixXd& velocity, double sampleRateHz,
+                                  const PathSmoothnessParams& params = {});
+
+/// uniformVelocity() then velocitySmoothness(): the smoothness of one movement's path.
+/// Non-finite positions give status NonFinite; fewer than 4 grid samples TooShort.
 PathSmoothness pathSmoothness(const std::vector<double>& t, const Eigen::MatrixXd& positions,
                               const PathSmoothnessParams& params = {});
 
