@@ -163,6 +163,11 @@ TEST(Repetitions, NoiseFreePeakRateMatchesMinimumJerk) {
         << i;
     EXPECT_NEAR(r.repetitions[i].excursionRad * kRadToDeg, trueRom, 0.3) << i;
   }
+  const PreparedSeries p = prepareSeries(truth);
+  const IntervalMetrics m = intervalMetrics(p, 0, p.size());
+  const auto rest = asArray(e.rest), top = asArray(e.top);
+  for (int a = 0; a < kNumClinicalAngles; ++a)
+    EXPECT_NEAR(m.angle[a].romRad * kRadToDeg, std::abs(top[a] - rest[a]), 0.3) << a;
 }
 
 TEST(Repetitions, SessionRangeIsWithinOneDegreeOfTheTrueAngles) {
