@@ -47,10 +47,12 @@ PreparedSeries prepareSeries(const AngleSeries& series, const MotionParams& para
   }
   if (!positiveFinite(params.smoothing.halfWindowSeconds) ||
       !positiveFinite(params.smoothing.maxGapSeconds) || params.smoothing.polynomialOrder < 1 ||
+      (params.smoothing.maxSamplesPerFit != 0 && params.smoothing.maxSamplesPerFit < 4) ||
       params.smoothing.polynomialOrder > 3 ||
       !(std::isfinite(params.movingThresholdRadPerS) && params.movingThresholdRadPerS >= 0)) {
     throw std::invalid_argument(
         "clinical metrics: smoothing window and gap must be positive, the polynomial order 1-3, "
+        "samples per fit 0 or at least 4, "
         "the moving threshold non-negative, all finite");
   }
   PreparedSeries p;

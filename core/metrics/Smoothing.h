@@ -18,6 +18,10 @@ struct SmoothingParams {
   /// Degree of the local polynomial, 1-3. A cubic gives the same smoothed value as a quadratic
   /// in a symmetric window but a far less attenuated derivative. Default 3.
   int polynomialOrder = 3;
+  /// A window holding more samples than this is thinned evenly (every 2nd, 3rd... sample), which
+  /// bounds the cost at high rates: 100 samples keeps every sample up to 330 Hz with the default
+  /// window and every 4th at 1 kHz. 0 = no limit.
+  int maxSamplesPerFit = 100;
   /// A step between consecutive time stamps longer than this (s) is a gap: no fit reaches across
   /// it and the time inside it counts neither as moving nor as resting. Default 0.25 s.
   double maxGapSeconds = 0.25;
@@ -42,12 +46,19 @@ void smoothWithDerivative(const std::vector<double>& t, const Eigen::MatrixXd& v
                           const SmoothingParams& params, Eigen::MatrixXd& smoothed,
                           Eigen::MatrixXd& derivative);
 
-/// Fits the polynomial (degree up to maxOrder, at most samples - 1) to samples [lo, hi) of the
-/// columns of `values` around time tc with scale h (s), and gives its value and derivative (per
-/// second) at tc. Needs hi - lo >= 2.
-void fitWindow(const std::vector<double>& t, const Eigen::MatrixXd& values, std::size_t lo,
-               std::size_t hi, double tc, double h, int maxOrder, Eigen::RowVectorXd& value,
-               Eigen::RowVectorXd& rate);
+/// Weights of a local polynomial fit: the fitted value at tc is sum valueWeight[q] *
+/// y[index[q]], its derivative (per second) sum rateWeight[q] * y[index[q]]. Reused between
+/// calls to avoid allocating per sample.
+struct LocalFit {
+  std::vector<std::size_t> index;
+  std::vector<double> valueWeight, rateWeight;
+};
+
+/// Weights of the least-squares polynomial (degree up to maxOrder, at most samples - 1) through
+/// samples [lo, hi) of t around time tc, with u = (t - tc) / h. More than maxSamples samples
+/// (when maxSamples > 0) are thinned evenly. Needs hi > lo.
+void localFitWeights(const std::vector<double>& t, std::size_t lo, std::size_t hi, double tc,
+                     double h, int maxOrder, int maxSamples, LocalFit& fit);
 
 /// Time each sample stands for (s): half the step to each neighbour inside its segment, so the
 /// weights of a segment add up to its span and a lone sample weighs 0.

@@ -117,9 +117,11 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
     }
   }
   if (!(params.smoothing.halfWindowSeconds > 0 && params.smoothing.polynomialOrder >= 1 &&
-        params.smoothing.polynomialOrder <= 3 && std::isfinite(params.resampleHz) &&
-        params.resampleHz >= 0)) {
-    throw std::invalid_argument("path smoothness: window > 0, order 1-3, resample rate >= 0");
+        params.smoothing.polynomialOrder <= 3 &&
+        (params.smoothing.maxSamplesPerFit == 0 || params.smoothing.maxSamplesPerFit >= 4) &&
+        std::isfinite(params.resampleHz) && params.resampleHz >= 0)) {
+    throw std::invalid_argument(
+        "path smoothness: window > 0, order 1-3, samples per fit 0 or >= 4, resample rate >= 0");
   }
   UniformVelocity out;
   if (t.size() < 2) return out;
@@ -145,7 +147,9 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
   const auto m =
       static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * out.sampleRateHz + 1e-9)) + 1;
   out.velocity = Eigen::MatrixXd::Zero(m, positions.cols());
-  Eigen::RowVectorXd value, rate;
+  LocalFit fit;
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = positions;
+  Eigen::RowVectorXd rate(positions.cols());
   for (Eigen::Index k = 0; k < m; ++k) {
     const double tq = out.t0 + static_cast<double>(k) / out.sampleRateHz;
     const auto lo =
@@ -153,7 +157,11 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
     const auto hi =
         static_cast<std::size_t>(std::upper_bound(t.begin(), t.end(), tq + h) - t.begin());
     if (hi < lo + 2) continue;  // inside a gap: no estimate, counted as still
-    fitWindow(t, positions, lo, hi, tq, h, params.smoothing.polynomialOrder, value, rate);
+    localFitWeights(t, lo, hi, tq, h, params.smoothing.polynomialOrder,
+                    params.smoothing.maxSamplesPerFit, fit);
+    rate.setZero();
+    for (std::size_t q = 0; q < fit.index.size(); ++q)
+      rate.noalias() += fit.rateWeight[q] * rows.row(static_cast<Eigen::Index>(fit.index[q]));
     out.velocity.row(k) = rate;
   }
   return out;
@@ -188,10 +196,14 @@ PathSmoothness pathSmoothness(const std::vector<double>& t, const Eigen::MatrixX
 }
 
 Eigen::MatrixXd wristPath(const std::vector<ClinicalRow>& anglesRad, const ArmGeometry& geometry) {
+  // armPositions() is the closed-form chain of forwardKinematics() (eq. 11) without the 4x4
+  // products; test_smoothness checks the two agree.
+  const ArmGeometryT<double> geo = geometryAs<double>(geometry);
   Eigen::MatrixXd out(static_cast<Eigen::Index>(anglesRad.size()), 3);
+  Eigen::Vector3d elbow, wrist;
   for (std::size_t i = 0; i < anglesRad.size(); ++i) {
-    out.row(static_cast<Eigen::Index>(i)) =
-        forwardKinematics(geometry, jointsFromClinical(anglesRad[i])).wrist.transpose();
+    armPositions<double>(jointsFromClinical(anglesRad[i]), geo, elbow, wrist);
+    out.row(static_cast<Eigen::Index>(i)) = wrist.transpose();
   }
   return out;
 }

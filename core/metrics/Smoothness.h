@@ -64,7 +64,10 @@ struct PathSmoothnessParams {
   /// Differentiation of the positions (local cubic fit, 0.03 s half-width). Narrower than for
   /// the joint angles, so the speed's spectrum stays intact up to the 10 Hz cut-off; the gap
   /// length is not used here.
-  SmoothingParams smoothing{.halfWindowSeconds = 0.03, .polynomialOrder = 3, .maxGapSeconds = 0.25};
+  SmoothingParams smoothing{.halfWindowSeconds = 0.03,
+                            .polynomialOrder = 3,
+                            .maxSamplesPerFit = 100,
+                            .maxGapSeconds = 0.25};
   SparcParams sparc;
   /// Uniform rate the velocity is resampled to (Hz); 0 = the inverse of the mean time step,
   /// counting only steps up to twice the median (so a gap does not lower the rate).

@@ -215,6 +215,11 @@ TEST(Smoothness, WristPathFollowsTheArmModel) {
   EXPECT_NEAR(w(1, 1), geo.l3 + geo.l6, 1e-12);
   EXPECT_NEAR(w(2, 0), geo.l3, 1e-12);
   EXPECT_NEAR(w(2, 1), geo.l6, 1e-12);
+  // Any posture: the same wrist as the DH chain of forwardKinematics().
+  const ClinicalRow any{0.4, 0.3, -0.5, 1.1, 0.7};
+  const Eigen::MatrixXd one = wristPath({any}, geo);
+  EXPECT_TRUE(one.row(0).transpose().isApprox(forwardKinematics(geo, jointsFromClinical(any)).wrist,
+                                              1e-12));
 }
 
 // ---- Hostile input ----------------------------------------------------------------------------
