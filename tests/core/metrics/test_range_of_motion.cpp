@@ -79,6 +79,22 @@ TEST(RangeOfMotion, NonUniformTimeStampsGiveTheSameValues) {
                  0.015);
 }
 
+TEST(RangeOfMotion, DenseSamplingIsThinnedWithoutLosingAccuracy) {
+  // 1 kHz: 301 samples per window, thinned to every 4th (maxSamplesPerFit = 100).
+  const double f = 0.5, seconds = 10.0;
+  const PreparedSeries p = prepareSeries(sinusoid(1000, seconds, f, kAmp, kOffset, 0.0002, 9));
+  expectAnalytic(intervalMetrics(p, 0, p.size()), f, seconds, p.params.movingThresholdRadPerS,
+                 0.004);
+  MotionParams unthinned;
+  unthinned.smoothing.maxSamplesPerFit = 0;
+  const PreparedSeries q =
+      prepareSeries(sinusoid(1000, seconds, f, kAmp, kOffset, 0.0002, 9), unthinned);
+  EXPECT_LT((p.rate - q.rate).cwiseAbs().maxCoeff(), 1e-3);
+  MotionParams tooFew;
+  tooFew.smoothing.maxSamplesPerFit = 3;
+  EXPECT_THROW(prepareSeries(sinusoid(100, 1, f, kAmp, kOffset), tooFew), std::invalid_argument);
+}
+
 TEST(RangeOfMotion, HigherThresholdShortensMovementTime) {
   MotionParams params;
   params.movingThresholdRadPerS = 1.5;  // below A w for angle 0 (pi), above it for angle 2
