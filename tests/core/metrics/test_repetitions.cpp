@@ -349,6 +349,25 @@ TEST(SessionMetrics, HostileSeriesGiveClearErrors) {
   EXPECT_EQ(m.samples, 1u);
   EXPECT_EQ(m.session.angle[0].romRad, 0.0);
   EXPECT_EQ(m.sparc.status, SmoothnessStatus::TooShort);
+
+  AngleSeries back;
+  back.t = {0.0, 0.02, 0.01};
+  back.angle.assign(3, ClinicalRow{0, 0, 0, 0, 0});
+  EXPECT_THROW(computeSessionMetrics(back), std::invalid_argument);
+
+  // Constant angles with a NaN row: defined zeros, the row counted, smoothness "no movement".
+  AngleSeries still;
+  for (int i = 0; i < 300; ++i) {
+    still.t.push_back(i * 0.01);
+    still.angle.push_back({0.2, 0.1, 0.0, 0.5, 0.0});
+  }
+  still.angle[10][3] = std::numeric_limits<double>::quiet_NaN();
+  const SessionMetrics c = computeSessionMetrics(still);
+  EXPECT_EQ(c.rejectedNonFinite, 1u);
+  EXPECT_TRUE(c.repetitions.repetitions.empty());
+  EXPECT_NEAR(c.session.angle[3].romRad, 0.0, 1e-12);
+  EXPECT_EQ(c.sparc.status, SmoothnessStatus::NoMovement);
+  EXPECT_EQ(c.ldlj.status, SmoothnessStatus::NoMovement);
 }
 
 TEST(NormativeRanges, AaosValuesAndSpans) {
