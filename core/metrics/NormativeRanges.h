@@ -1,0 +1,37 @@
+// Normative active ranges of motion of the five clinical angles, with their published source
+// (docs/metrics.md), for comparing a patient's range of motion in reports.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "core/metrics/RangeOfMotion.h"
+
+namespace armtrack {
+
+/// Normal limits of one clinical angle on its signed axis (rad): the motion in the negative
+/// direction (extension, adduction, external rotation, supination) as a negative limit.
+struct NormativeRange {
+  int angle = 0;                 ///< index in clinicalAngleInfo() order
+  std::optional<double> minRad;  ///< limit of the negative direction; empty = not in source
+  double maxRad = 0;             ///< limit of the positive direction
+  std::string_view source;       ///< short citation
+  std::string_view note;         ///< what the values mean, and what is missing
+};
+
+/// AAOS values (American Academy of Orthopaedic Surgeons, "Joint Motion: Method of Measuring and
+/// Recording", 1965), as tabulated by Norkin & White, "Measurement of Joint Motion: A Guide to
+/// Goniometry", Table A.1: shoulder flexion 180 / extension 60, abduction 180, internal
+/// (medial) rotation 70 / external (lateral) rotation 90, elbow flexion 150 / extension 0,
+/// pronation 80 / supination 80 degrees. Adduction is not in that table (minRad empty).
+const std::array<NormativeRange, kNumClinicalAngles>& aaosNormativeRanges();
+
+/// The AAOS range's span (rad): maxRad - minRad, or maxRad when the source gives no negative
+/// limit.
+double normativeSpanRad(const NormativeRange& r);
+
+/// A patient's range of motion as a fraction of the normative span (1 = the full normal range).
+double fractionOfNormativeSpan(const NormativeRange& r, double romRad);
+
+}  // namespace armtrack
