@@ -2,7 +2,11 @@
 
 #include <zstd.h>
 
+#include <algorithm>
 #include <array>
+#include <charconv>
+#include <climits>
+#include <cmath>
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -89,6 +93,7 @@ class Reader {
     return words;
   }
   std::uint32_t u32() { return planes<std::uint32_t>(1)[0]; }
+  std::uint8_t u8() { return planes<std::uint8_t>(1)[0]; }
   bool atEnd() const { return m_pos == m_data.size(); }
 
  private:
@@ -99,6 +104,126 @@ class Reader {
   std::size_t m_pos = 0;
 };
 
+// A column is stored in one of two modes, whichever suits its values:
+//  - kBinary: each 64-bit pattern XORed with the previous one, as byte planes. Always exact.
+//  - kDecimal: every value as its shortest decimal k * 10^e (k at most 13 digits, |e| <= 127),
+//    stored as byte planes of e and of k (see decimalColumn). Chosen when every value of the
+//    column is such a short decimal (a 16-bit sensor, a file written with 7 digits), where it
+//    takes a few bytes a value instead of the ~6.5 of a double's noisy mantissa. Exact because
+//    the shortest decimal reads back to the same double.
+enum ColumnMode : std::uint8_t { kBinary = 0, kDecimal = 1 };
+constexpr int kNoExponent = 1000;
+constexpr std::int64_t kLongDigits = 10'000'000'000'000;  // 14 significant digits
+
+std::uint64_t zigzag(std::int64_t d) {
+  return (static_cast<std::uint64_t>(d) << 1) ^ static_cast<std::uint64_t>(d >> 63);
+}
+std::int64_t unzigzag(std::uint64_t z) {
+  return static_cast<std::int64_t>(z >> 1) ^ -static_cast<std::int64_t>(z & 1);
+}
+
+// v as (integer significand, decimal exponent) from its shortest round-trip form.
+bool shortestDecimal(double v, std::int64_t& digits, int& exponent) {
+  if (v == 0.0 && std::signbit(v)) return false;  // -0 has no integer significand
+  char buf[40];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
+  if (r.ec != std::errc()) return false;
+  // "-d.ddddde-xx": collect the digits, then the exponent.
+  std::int64_t k = 0;
+  int fraction = 0;
+  bool inFraction = false;
+  const char* p = buf;
+  const bool negative = *p == '-';
+  if (negative) ++p;
+  for (; p < r.ptr && *p != 'e'; ++p) {
+    if (*p == '.') {
+      inFraction = true;
+      continue;
+    }
+    k = k * 10 + (*p - '0');  // at most 17 digits: fits
+    if (inFraction) ++fraction;
+  }
+  int e = 0;
+  if (p < r.ptr) std::from_chars(p + 1 + (p[1] == '+' ? 1 : 0), r.ptr, e);
+  digits = negative ? -k : k;
+  exponent = e - fraction;
+  return true;
+}
+
+// Per value: its decimal exponent (a byte), and its significand as the zig-zag difference from
+// the previous value's when both have the same exponent (a slowly changing signal), else whole.
+bool decimalColumn(const std::vector<double>& values, std::vector<std::uint8_t>& exponents,
+                   std::vector<std::uint64_t>& steps) {
+  exponents.resize(values.size());
+  steps.resize(values.size());
+  std::int64_t prevDigits = 0;
+  int prevExp = kNoExponent;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    std::int64_t digits = 0;
+    int exp = 0;
+    if (!shortestDecimal(values[i], digits, exp)) return false;
+    if (digits >= kLongDigits || digits <= -kLongDigits) return false;  // full precision
+    if (exp < -127 || exp > 127) return false;
+    exponents[i] = static_cast<std::uint8_t>(static_cast<std::int8_t>(exp));
+    steps[i] = zigzag(exp == prevExp ? digits - prevDigits : digits);
+    prevDigits = digits;
+    prevExp = exp;
+  }
+  return true;
+}
+
+void appendColumn(std::string& raw, const std::vector<double>& values) {
+  std::vector<std::uint8_t> exponents;
+  std::vector<std::uint64_t> words;
+  if (!values.empty() && decimalColumn(values, exponents, words)) {
+    raw.push_back(static_cast<char>(kDecimal));
+    appendPlanes(raw, exponents);
+    appendPlanes(raw, words);
+    return;
+  }
+  raw.push_back(static_cast<char>(kBinary));
+  words.resize(values.size());
+  std::uint64_t prev = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const auto bits = std::bit_cast<std::uint64_t>(values[i]);
+    words[i] = bits ^ prev;
+    prev = bits;
+  }
+  appendPlanes(raw, words);
+}
+
+std::vector<double> readColumn(Reader& in, std::size_t count) {
+  const std::uint8_t mode = in.u8();
+  std::vector<double> values(count);
+  if (mode == kBinary) {
+    std::uint64_t prev = 0;
+    const auto words = in.planes<std::uint64_t>(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      prev ^= words[i];
+      values[i] = std::bit_cast<double>(prev);
+    }
+    return values;
+  }
+  if (mode != kDecimal) throw std::runtime_error("unknown column mode " + std::to_string(mode));
+  const auto exponents = in.planes<std::uint8_t>(count);
+  const auto words = in.planes<std::uint64_t>(count);
+  std::int64_t k = 0;
+  int prevExp = kNoExponent;
+  char buf[48];
+  for (std::size_t i = 0; i < count; ++i) {
+    const int exponent = static_cast<std::int8_t>(exponents[i]);
+    const std::int64_t step = unzigzag(words[i]);
+    k = exponent == prevExp ? k + step : step;
+    prevExp = exponent;
+    auto r = std::to_chars(buf, buf + 24, k);
+    *r.ptr++ = 'e';
+    r = std::to_chars(r.ptr, buf + sizeof buf, exponent);
+    const auto parsed = std::from_chars(buf, r.ptr, values[i]);
+    if (parsed.ec != std::errc()) throw std::runtime_error("decimal value out of range");
+  }
+  return values;
+}
+
 }  // namespace
 
 std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
@@ -108,30 +233,24 @@ std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
   appendPlanes(raw, std::vector<std::uint32_t>{kMagic});
   appendPlanes(raw, std::vector<std::uint32_t>{static_cast<std::uint32_t>(n)});
   std::vector<std::uint16_t> presence(n);
-  std::vector<std::uint64_t> times(n);
-  std::uint64_t prevT = 0;
+  std::vector<double> times(n);
   for (std::size_t i = 0; i < n; ++i) {
     presence[i] = presenceOf(samples[i]);
-    const auto bits = std::bit_cast<std::uint64_t>(samples[i].t);
-    times[i] = bits ^ prevT;
-    prevT = bits;
+    times[i] = samples[i].t;
   }
   appendPlanes(raw, presence);
-  appendPlanes(raw, times);
-  std::vector<std::uint64_t> column;
+  appendColumn(raw, times);
+  std::vector<double> column;
   double v[6];
   for (int g = 0; g < kGroups; ++g) {
     for (int c = 0; c < kGroupSize[g]; ++c) {
       column.clear();
-      std::uint64_t prev = 0;
       for (std::size_t i = 0; i < n; ++i) {
         if (!(presence[i] & (1u << g))) continue;
         valuesOf(samples[i], g, v);
-        const auto bits = std::bit_cast<std::uint64_t>(v[c]);
-        column.push_back(bits ^ prev);
-        prev = bits;
+        column.push_back(v[c]);
       }
-      appendPlanes(raw, column);
+      appendColumn(raw, column);
     }
   }
   std::string frame(ZSTD_compressBound(raw.size()), '\0');
@@ -148,7 +267,7 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
   if (size == ZSTD_CONTENTSIZE_UNKNOWN) throw std::runtime_error("zstd frame without its size");
   // Header + presence + time + at most every value of every row: a bound that a forged size
   // field cannot push past.
-  const std::uint64_t bound = 8 + expectedRows * (2 + 8 + 8 * 32);
+  const std::uint64_t bound = 8 + 33 + expectedRows * (2 + 9 * 33);
   if (size > bound)
     throw std::runtime_error("zstd frame claims " + std::to_string(size) + " bytes for " +
                              std::to_string(expectedRows) + " rows");
@@ -165,28 +284,22 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
     throw std::runtime_error("holds " + std::to_string(n) + " rows, the index says " +
                              std::to_string(expectedRows));
   const auto presence = in.planes<std::uint16_t>(n);
-  const auto times = in.planes<std::uint64_t>(n);
+  const auto times = readColumn(in, n);
   std::vector<ArmSample> samples(n);
-  std::uint64_t prevT = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (presence[i] >> kGroups) throw std::runtime_error("unknown sensor group in a row");
-    prevT ^= times[i];
-    samples[i].t = std::bit_cast<double>(prevT);
+    samples[i].t = times[i];
   }
   for (int g = 0; g < kGroups; ++g) {
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i) count += (presence[i] >> g) & 1u;
-    std::vector<std::vector<std::uint64_t>> cols;
-    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(in.planes<std::uint64_t>(count));
-    std::array<std::uint64_t, 6> prev{};
+    std::vector<std::vector<double>> cols;
+    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(readColumn(in, count));
     std::size_t k = 0;
     double v[6];
     for (std::size_t i = 0; i < n; ++i) {
       if (!((presence[i] >> g) & 1u)) continue;
-      for (int c = 0; c < kGroupSize[g]; ++c) {
-        prev[c] ^= cols[c][k];
-        v[c] = std::bit_cast<double>(prev[c]);
-      }
+      for (int c = 0; c < kGroupSize[g]; ++c) v[c] = cols[c][k];
       setValues(samples[i], g, v);
       ++k;
     }

@@ -5,6 +5,8 @@
 
 #include <QElapsedTimer>
 #include <bit>
+#include <charconv>
+#include <cmath>
 #include <csignal>
 #include <cstring>
 #include <sys/wait.h>
@@ -77,6 +79,26 @@ TEST(ChunkCodec, RoundTripIsBitExact) {
   EXPECT_TRUE(ChunkCodec::decode(ChunkCodec::encode({}), 0).empty());
 }
 
+// Short decimals (a 16-bit sensor, a file written with 7 digits) take the decimal column mode;
+// it must give back the very same doubles, including the awkward ones.
+TEST(ChunkCodec, ShortDecimalsAreExactAndSmall) {
+  std::vector<ArmSample> samples(1000);
+  const double awkward[] = {0.1, -0.3, 1e-7, 123456.7, 9.850261, -0.0031956, 5e-300, 0.0, 1.7e300};
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    samples[i].t = 0.0035 * static_cast<double>(i);
+    const double x = std::round(1000.0 * std::sin(0.01 * static_cast<double>(i))) * 0.001064651;
+    const double q = std::stod(std::to_string(x).substr(0, 9));  // a 7-digit decimal
+    samples[i].upperArm = ImuReading{Eigen::Vector3d(q, -q, 0.0), Eigen::Vector3d(9.81, q, 1e-3)};
+    samples[i].wrist = Eigen::Vector3d::Constant(awkward[i % 9]);
+  }
+  const std::string frame = ChunkCodec::encode(samples);
+  expectSameSamples(ChunkCodec::decode(frame, samples.size()), samples);
+  // 1000 rows of 10 values: far below the 8 bytes a value of the binary mode.
+  EXPECT_LT(frame.size(), 1000u * 10u * 3u) << frame.size();
+  samples[5].wrist->x() = -0.0;  // no decimal significand: the column falls back to binary
+  expectSameSamples(ChunkCodec::decode(ChunkCodec::encode(samples), samples.size()), samples);
+}
+
 TEST(ChunkCodec, DamagedFramesAreRefused) {
   const auto samples = awkwardSamples();
   const std::string frame = ChunkCodec::encode(samples);
@@ -125,6 +147,45 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
     EXPECT_NE(std::string(e.what()).find("chunk 1 is missing"), std::string::npos) << e.what();
   }
   EXPECT_THROW(f.store->exportRecording(id, f.file("out.csv")), StorageError);
+}
+
+// Real sensor data: the BROAD trials (CC-BY-4.0, shared/data/broad) hold one IMU at 286 Hz with
+// 7 significant digits. Stored as an upper-arm IMU; skipped when the trials are not at hand.
+TEST(StoredRecording, CompressionOfARealImuRecording) {
+  const std::filesystem::path broad =
+      std::filesystem::path(ARMTRACK_SHARED_DIR) / "data/broad/07_undisturbed_fast_rotation_B.csv";
+  if (!std::filesystem::exists(broad)) GTEST_SKIP() << broad << " not found";
+  std::ifstream in(broad);
+  std::string line;
+  std::getline(in, line);
+  Recording rec;
+  while (std::getline(in, line)) {
+    double v[7];
+    const char* p = line.data();
+    const char* end = line.data() + line.size();
+    for (double& x : v) {
+      p = std::from_chars(p, end, x).ptr;
+      if (p < end) ++p;
+    }
+    ArmSample s;
+    s.t = v[0];
+    s.upperArm = ImuReading{Eigen::Vector3d(v[1], v[2], v[3]), Eigen::Vector3d(v[4], v[5], v[6])};
+    rec.samples.push_back(s);
+  }
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  const auto csv = f.file("broad.csv");
+  writeRecording(csv, rec);
+  const qint64 id = f.store->importRecording(csv, "P1");
+  const SessionInfo s = f.store->session(id);
+  expectSameSamples(f.store->readRecording(id).samples, readRecording(csv).samples);
+  const double csvBytes = static_cast<double>(std::filesystem::file_size(csv));
+  const double ratio = static_cast<double>(s.storedBytes) / csvBytes;
+  std::printf("[ figures  ] BROAD trial 07 (%lld rows, %.0f s): CSV %.0f bytes, chunks %lld bytes, "
+              "ratio %.3f (1:%.2f)\n",
+              static_cast<long long>(s.sampleRows), s.durationS, csvBytes,
+              static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio);
+  EXPECT_LT(ratio, 0.40);  // measured 0.318: see docs/storage.md, "Size"
 }
 
 // The acceptance figure: 60 s at 1 kHz, two IMUs with Table 5 noise, Kinect at 30 Hz and the true
