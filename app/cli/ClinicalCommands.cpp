@@ -55,20 +55,10 @@ KEY is a clinical angle such as shoulder_flexion or elbow_flexion.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
-std::vector<OptionSpec> withDb(std::vector<OptionSpec> specs) {
-  specs.insert(specs.end(), kDbOptions.begin(), kDbOptions.end());
-  return specs;
-}
-
 // The subcommand (first word) and the words after it; help when there is none.
 std::pair<std::string, std::vector<std::string>> split(const std::vector<std::string>& args) {
   if (args.empty() || args[0].starts_with("-")) return {"", args};
   return {args[0], std::vector<std::string>(args.begin() + 1, args.end())};
-}
-
-void printJson(std::ostream& out, const QJsonValue& v) {
-  const QJsonDocument doc = v.isArray() ? QJsonDocument(v.toArray()) : QJsonDocument(v.toObject());
-  out << doc.toJson(QJsonDocument::Indented).toStdString();
 }
 
 int dbInit(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
@@ -145,14 +135,19 @@ int userList(const std::vector<std::string>& rest, std::ostream& out, std::ostre
     if (!a.flag("--json")) out << ss(u.name) << "\t" << ss(storage::roleName(u.role)) << "\n";
     list.append(QJsonObject{{"name", u.name}, {"role", storage::roleName(u.role)}});
   }
-  if (a.flag("--json")) printJson(out, list);
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
   return 0;
 }
 
 int patientAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("patient add", rest,
-               withDb({{"--code", true}, {"--name", true}, {"--birth", true}, {"--sex", true},
-                       {"--side", true}, {"--diagnosis", true}, {"--notes", true}}));
+               withDb({{"--code", true},
+                       {"--name", true},
+                       {"--birth", true},
+                       {"--sex", true},
+                       {"--side", true},
+                       {"--diagnosis", true},
+                       {"--notes", true}}));
   if (a.help()) return out << kPatientHelp, 0;
   storage::Patient p;
   p.code = qs(a.required("--code"));
@@ -177,18 +172,25 @@ int patientList(const std::vector<std::string>& rest, std::ostream& out, std::os
     if (!a.flag("--json"))
       out << ss(p.code) << "\t" << ss(p.name) << "\t" << ss(p.birthDate) << "\t" << ss(p.sex)
           << "\t" << ss(p.affectedSide) << "\n";
-    list.append(QJsonObject{{"code", p.code}, {"name", p.name}, {"birth", p.birthDate},
-                            {"sex", p.sex}, {"side", p.affectedSide},
+    list.append(QJsonObject{{"code", p.code},
+                            {"name", p.name},
+                            {"birth", p.birthDate},
+                            {"sex", p.sex},
+                            {"side", p.affectedSide},
                             {"diagnosis", p.diagnosis}});
   }
-  if (a.flag("--json")) printJson(out, list);
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
   return 0;
 }
 
 int protocolAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("protocol add", rest,
-               withDb({{"--name", true}, {"--angle", true}, {"--target-min", true},
-                       {"--target-max", true}, {"--reps", true}, {"--side", true}}));
+               withDb({{"--name", true},
+                       {"--angle", true},
+                       {"--target-min", true},
+                       {"--target-max", true},
+                       {"--reps", true},
+                       {"--side", true}}));
   if (a.help()) return out << kProtocolHelp, 0;
   storage::Protocol p;
   p.name = qs(a.required("--name"));
@@ -214,11 +216,14 @@ int protocolList(const std::vector<std::string>& rest, std::ostream& out, std::o
     if (!a.flag("--json"))
       out << ss(p.name) << "\t" << ss(p.angleKey) << "\t" << p.targetMinDeg << "\t"
           << p.targetMaxDeg << "\t" << p.repetitions << "\t" << ss(p.side) << "\n";
-    list.append(QJsonObject{{"name", p.name}, {"angle", p.angleKey},
-                            {"target_min_deg", p.targetMinDeg}, {"target_max_deg", p.targetMaxDeg},
-                            {"repetitions", p.repetitions}, {"side", p.side}});
+    list.append(QJsonObject{{"name", p.name},
+                            {"angle", p.angleKey},
+                            {"target_min_deg", p.targetMinDeg},
+                            {"target_max_deg", p.targetMaxDeg},
+                            {"repetitions", p.repetitions},
+                            {"side", p.side}});
   }
-  if (a.flag("--json")) printJson(out, list);
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
   return 0;
 }
 

@@ -2,7 +2,9 @@
 #pragma once
 
 #include <QCoreApplication>
+#include <QJsonDocument>
 #include <memory>
+#include <ostream>
 #include <string>
 
 #include "app/cli/Args.h"
@@ -10,8 +12,12 @@
 
 namespace armtrack::cli {
 
-/// The options every database command accepts (besides its own).
-inline const std::vector<OptionSpec> kDbOptions{{"--db", true}, {"--user", true}};
+/// specs plus the options every database command accepts (--db, --user).
+inline std::vector<OptionSpec> withDb(std::vector<OptionSpec> specs) {
+  specs.push_back({"--db", true});
+  specs.push_back({"--user", true});
+  return specs;
+}
 
 /// An open database with its signed-in store, and the QCoreApplication Qt Sql needs to load its
 /// driver when the caller has none.
@@ -32,8 +38,17 @@ class ClinicalContext {
 /// std::runtime_error saying how to give it otherwise. what names the account, for the prompt.
 std::string passwordFromUser(const std::string& what);
 
+/// Writes doc indented, for --json.
+inline void printJson(std::ostream& out, const QJsonDocument& doc) {
+  out << doc.toJson(QJsonDocument::Indented).toStdString();
+}
+
 /// QString from a std::string and back.
-inline QString qs(const std::string& s) { return QString::fromStdString(s); }
-inline std::string ss(const QString& s) { return s.toStdString(); }
+inline QString qs(const std::string& s) {
+  return QString::fromStdString(s);
+}
+inline std::string ss(const QString& s) {
+  return s.toStdString();
+}
 
 }  // namespace armtrack::cli

@@ -12,7 +12,8 @@ namespace armtrack::cli {
 
 namespace {
 
-constexpr std::string_view kSessionHelp = R"(Usage: armtrack-cli session <import|list|show> [options]
+constexpr std::string_view kSessionHelp =
+    R"(Usage: armtrack-cli session <import|list|show> [options]
 
   session import REC.csv --patient CODE [--protocol NAME]
                             store a recording (CSV + sidecar) losslessly as a complete session;
@@ -24,7 +25,8 @@ constexpr std::string_view kSessionHelp = R"(Usage: armtrack-cli session <import
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
-constexpr std::string_view kExportHelp = R"(Usage: armtrack-cli export ID --format recording --out PATH [--overwrite]
+constexpr std::string_view kExportHelp =
+    R"(Usage: armtrack-cli export ID --format recording --out PATH [--overwrite]
 
 Writes session ID in the open recording format (PATH and its sidecar), bit for bit as it was
 imported or recorded. Every export is written to the audit log. (The csv, mot and bids formats are
@@ -38,11 +40,6 @@ constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --
 The audit log: who created, changed, viewed or exported what, and when (administrators only).
 --db URL as for every database command (password: ARMTRACK_PASSWORD).
 )";
-
-std::vector<OptionSpec> withDb(std::vector<OptionSpec> specs) {
-  specs.insert(specs.end(), kDbOptions.begin(), kDbOptions.end());
-  return specs;
-}
 
 qint64 sessionId(const Args& a) {
   const std::string text = a.single("session id");
@@ -67,18 +64,14 @@ QJsonObject sessionJson(const storage::SessionInfo& s) {
                      {"notes", s.notes}};
 }
 
-void printJson(std::ostream& out, const QJsonDocument& doc) {
-  out << doc.toJson(QJsonDocument::Indented).toStdString();
-}
-
 int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session import", rest, withDb({{"--patient", true}, {"--protocol", true}}));
   if (a.help()) return out << kSessionHelp, 0;
   const std::string csv = a.single("recording");
   const std::string patient = a.required("--patient");
   ClinicalContext c(a, {}, true);
-  const qint64 id = c.store().importRecording(csv, qs(patient),
-                                              qs(a.value("--protocol").value_or("")));
+  const qint64 id =
+      c.store().importRecording(csv, qs(patient), qs(a.value("--protocol").value_or("")));
   const storage::SessionInfo s = c.store().session(id);
   err << "session import: " << s.sampleRows << " rows in " << s.chunks << " chunks, "
       << s.storedBytes << " bytes stored\n";
@@ -114,10 +107,10 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
     return 0;
   }
   out << "session " << s.id << "\npatient: " << ss(s.patientCode) << "\nstatus: " << ss(s.status)
-      << "\nstarted: " << ss(s.startedAt) << "\nduration: " << s.durationS << " s\nsamples: "
-      << s.imuSamples << " (rows " << s.sampleRows << ", " << s.chunks << " chunks, "
-      << s.storedBytes << " bytes)\nprotocol: " << ss(s.protocolName) << "\nnotes: "
-      << ss(s.notes) << "\n";
+      << "\nstarted: " << ss(s.startedAt) << "\nduration: " << s.durationS
+      << " s\nsamples: " << s.imuSamples << " (rows " << s.sampleRows << ", " << s.chunks
+      << " chunks, " << s.storedBytes << " bytes)\nprotocol: " << ss(s.protocolName)
+      << "\nnotes: " << ss(s.notes) << "\n";
   return 0;
 }
 
@@ -159,10 +152,13 @@ int auditCommand(const std::vector<std::string>& args, std::ostream& out, std::o
   QJsonArray list;
   for (const storage::AuditEntry& e : c.store().auditLog()) {
     if (!a.flag("--json"))
-      out << ss(e.at) << "\t" << ss(e.userName) << "\t" << ss(e.action) << "\t"
-          << ss(e.objectType) << "\t" << ss(e.objectId) << "\t" << ss(e.detail) << "\n";
-    list.append(QJsonObject{{"at", e.at}, {"user", e.userName}, {"action", e.action},
-                            {"object_type", e.objectType}, {"object_id", e.objectId},
+      out << ss(e.at) << "\t" << ss(e.userName) << "\t" << ss(e.action) << "\t" << ss(e.objectType)
+          << "\t" << ss(e.objectId) << "\t" << ss(e.detail) << "\n";
+    list.append(QJsonObject{{"at", e.at},
+                            {"user", e.userName},
+                            {"action", e.action},
+                            {"object_type", e.objectType},
+                            {"object_id", e.objectId},
                             {"detail", e.detail}});
   }
   if (a.flag("--json")) printJson(out, QJsonDocument(list));

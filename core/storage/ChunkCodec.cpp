@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <climits>
 #include <cmath>
-#include <bit>
 #include <cstring>
 #include <stdexcept>
 
@@ -41,14 +41,32 @@ void valuesOf(const ArmSample& s, int g, double* v) {
     for (int i = 0; i < vec.size(); ++i) v[offset + i] = vec[i];
   };
   switch (g) {
-    case 0: put(s.upperArm->gyr, 0); put(s.upperArm->acc, 3); break;
-    case 1: put(s.forearm->gyr, 0); put(s.forearm->acc, 3); break;
-    case 2: put(*s.elbow, 0); break;
-    case 3: put(*s.wrist, 0); break;
-    case 4: put(*s.camWrist, 0); break;
-    case 5: put(*s.camElbow, 0); break;
-    case 6: put(*s.trueAngles, 0); break;
-    default: put(*s.estimate, 0); break;
+    case 0:
+      put(s.upperArm->gyr, 0);
+      put(s.upperArm->acc, 3);
+      break;
+    case 1:
+      put(s.forearm->gyr, 0);
+      put(s.forearm->acc, 3);
+      break;
+    case 2:
+      put(*s.elbow, 0);
+      break;
+    case 3:
+      put(*s.wrist, 0);
+      break;
+    case 4:
+      put(*s.camWrist, 0);
+      break;
+    case 5:
+      put(*s.camElbow, 0);
+      break;
+    case 6:
+      put(*s.trueAngles, 0);
+      break;
+    default:
+      put(*s.estimate, 0);
+      break;
   }
 }
 
@@ -57,14 +75,40 @@ void setValues(ArmSample& s, int g, const double* v) {
     for (int i = 0; i < vec.size(); ++i) vec[i] = v[offset + i];
   };
   switch (g) {
-    case 0: s.upperArm.emplace(); get(s.upperArm->gyr, 0); get(s.upperArm->acc, 3); break;
-    case 1: s.forearm.emplace(); get(s.forearm->gyr, 0); get(s.forearm->acc, 3); break;
-    case 2: s.elbow.emplace(); get(*s.elbow, 0); break;
-    case 3: s.wrist.emplace(); get(*s.wrist, 0); break;
-    case 4: s.camWrist.emplace(); get(*s.camWrist, 0); break;
-    case 5: s.camElbow.emplace(); get(*s.camElbow, 0); break;
-    case 6: s.trueAngles.emplace(); get(*s.trueAngles, 0); break;
-    default: s.estimate.emplace(); get(*s.estimate, 0); break;
+    case 0:
+      s.upperArm.emplace();
+      get(s.upperArm->gyr, 0);
+      get(s.upperArm->acc, 3);
+      break;
+    case 1:
+      s.forearm.emplace();
+      get(s.forearm->gyr, 0);
+      get(s.forearm->acc, 3);
+      break;
+    case 2:
+      s.elbow.emplace();
+      get(*s.elbow, 0);
+      break;
+    case 3:
+      s.wrist.emplace();
+      get(*s.wrist, 0);
+      break;
+    case 4:
+      s.camWrist.emplace();
+      get(*s.camWrist, 0);
+      break;
+    case 5:
+      s.camElbow.emplace();
+      get(*s.camElbow, 0);
+      break;
+    case 6:
+      s.trueAngles.emplace();
+      get(*s.trueAngles, 0);
+      break;
+    default:
+      s.estimate.emplace();
+      get(*s.estimate, 0);
+      break;
   }
 }
 

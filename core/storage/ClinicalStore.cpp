@@ -14,10 +14,12 @@ namespace {
 
 using Kind = StorageError::Kind;
 
-constexpr int kFreeAttempts = 3;     // wrong passwords before sign-in slows down
+constexpr int kFreeAttempts = 3;  // wrong passwords before sign-in slows down
 constexpr int kMaxWaitSeconds = 300;
 
-std::string text(const QString& s) { return s.toStdString(); }
+std::string text(const QString& s) {
+  return s.toStdString();
+}
 
 User userFrom(const QSqlQuery& q) {
   User u;
@@ -61,13 +63,14 @@ const QString kPatientColumns =
 const QString kProtocolColumns =
     "id, name, angle_key, target_min_deg, target_max_deg, repetitions, side";
 
-QVariant nullable(const QString& s) { return s.isEmpty() ? QVariant() : QVariant(s); }
+QVariant nullable(const QString& s) {
+  return s.isEmpty() ? QVariant() : QVariant(s);
+}
 
 void checkPatient(const Patient& p) {
   if (p.code.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a patient needs a code");
   if (p.name.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a patient needs a name");
-  if (!p.birthDate.isEmpty() &&
-      !QDate::fromString(p.birthDate, Qt::ISODate).isValid())
+  if (!p.birthDate.isEmpty() && !QDate::fromString(p.birthDate, Qt::ISODate).isValid())
     throw StorageError(Kind::Usage, "birth date must be YYYY-MM-DD");
   if (!p.sex.isEmpty() && p.sex != "f" && p.sex != "m" && p.sex != "x")
     throw StorageError(Kind::Usage, "sex must be f, m or x");
@@ -92,9 +95,12 @@ void checkProtocol(const Protocol& p) {
 
 QString roleName(Role role) {
   switch (role) {
-    case Role::Admin: return "admin";
-    case Role::Therapist: return "therapist";
-    case Role::Home: return "home";
+    case Role::Admin:
+      return "admin";
+    case Role::Therapist:
+      return "therapist";
+    case Role::Home:
+      return "home";
   }
   return "home";
 }
@@ -111,28 +117,33 @@ ClinicalStore::ClinicalStore(Database& db) : m_db(db) {
 }
 
 void ClinicalStore::initialise(const QString& adminName, const std::string& password) {
-  if (adminName.trimmed().isEmpty()) throw StorageError(Kind::Usage, "the administrator needs a name");
+  if (adminName.trimmed().isEmpty())
+    throw StorageError(Kind::Usage, "the administrator needs a name");
   if (password.empty()) throw StorageError(Kind::Usage, "the administrator needs a password");
   QSqlQuery q = m_db.exec("SELECT count(*) FROM users");
   const bool any = q.next() && q.value(0).toLongLong() > 0;
   q.finish();
   if (any)
-    throw StorageError(Kind::Exists, "the database already has accounts; sign in as an "
-                                     "administrator and use 'user add'");
+    throw StorageError(Kind::Exists,
+                       "the database already has accounts; sign in as an "
+                       "administrator and use 'user add'");
   const QString hash = QString::fromStdString(PasswordHash::hash(password));
   m_db.transaction([&] {
     m_db.insert("INSERT INTO users (name, role, password_hash, created_at) VALUES (?, ?, ?, ?)",
                 {adminName, "admin", hash, utcNow()});
-    m_db.exec("INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
-              "VALUES (?, ?, 'create', 'database', ?)",
-              {utcNow(), adminName, m_db.url().display()});
+    m_db.exec(
+        "INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
+        "VALUES (?, ?, 'create', 'database', ?)",
+        {utcNow(), adminName, m_db.url().display()});
   });
 }
 
 const User& ClinicalStore::signIn(const QString& name, const std::string& password) {
   const std::string refused = "wrong user name or password for '" + text(name) + "'";
-  QSqlQuery q = m_db.exec("SELECT " + kUserColumns + ", password_hash, last_failed_at FROM users "
-                          "WHERE name = ?", {name});
+  QSqlQuery q = m_db.exec("SELECT " + kUserColumns +
+                              ", password_hash, last_failed_at FROM users "
+                              "WHERE name = ?",
+                          {name});
   if (!q.next()) {
     PasswordHash::verify("", password);  // no early answer for an unknown name
     throw StorageError(Kind::Authentication, refused);
@@ -145,15 +156,19 @@ const User& ClinicalStore::signIn(const QString& name, const std::string& passwo
     const int wait = std::min(kMaxWaitSeconds, 1 << std::min(u.failedAttempts - kFreeAttempts, 9));
     const qint64 since = lastFailed.secsTo(QDateTime::currentDateTimeUtc());
     if (since < wait)
-      throw StorageError(Kind::Authentication,
-                         "too many wrong passwords for '" + text(name) + "': try again in " +
-                             std::to_string(wait - since) + " s");
+      throw StorageError(Kind::Authentication, "too many wrong passwords for '" + text(name) +
+                                                   "': try again in " +
+                                                   std::to_string(wait - since) + " s");
   }
   if (!PasswordHash::verify(hash, password)) {
-    m_db.exec("UPDATE users SET failed_attempts = failed_attempts + 1, last_failed_at = ? "
-              "WHERE id = ?", {utcNow(), u.id});
-    m_db.exec("INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
-              "VALUES (?, ?, 'sign-in-failed', 'user', ?)", {utcNow(), name, name});
+    m_db.exec(
+        "UPDATE users SET failed_attempts = failed_attempts + 1, last_failed_at = ? "
+        "WHERE id = ?",
+        {utcNow(), u.id});
+    m_db.exec(
+        "INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
+        "VALUES (?, ?, 'sign-in-failed', 'user', ?)",
+        {utcNow(), name, name});
     throw StorageError(Kind::Authentication, refused);
   }
   if (u.failedAttempts != 0) {
@@ -175,7 +190,9 @@ void ClinicalStore::require(bool allowed, const QString& what) const {
                                                 roleName(user().role) + ") may not " + what));
 }
 
-bool ClinicalStore::isStaff() const { return user().role != Role::Home; }
+bool ClinicalStore::isStaff() const {
+  return user().role != Role::Home;
+}
 
 qint64 ClinicalStore::addUser(const QString& name, Role role, const std::string& password,
                               const QString& patientCode) {
@@ -193,8 +210,10 @@ qint64 ClinicalStore::addUser(const QString& name, Role role, const std::string&
   const QString hash = QString::fromStdString(PasswordHash::hash(password));
   qint64 id = 0;
   m_db.transaction([&] {
-    id = m_db.insert("INSERT INTO users (name, role, password_hash, patient_id, created_at) "
-                     "VALUES (?, ?, ?, ?, ?)", {name, roleName(role), hash, patientId, utcNow()});
+    id = m_db.insert(
+        "INSERT INTO users (name, role, password_hash, patient_id, created_at) "
+        "VALUES (?, ?, ?, ?, ?)",
+        {name, roleName(role), hash, patientId, utcNow()});
     audit("create", "user", name, "role " + roleName(role));
   });
   return id;
@@ -213,7 +232,8 @@ void ClinicalStore::setPassword(const QString& name, const std::string& password
   if (password.empty()) throw StorageError(Kind::Usage, "an account needs a password");
   const QString hash = QString::fromStdString(PasswordHash::hash(password));
   if (m_db.exec("UPDATE users SET password_hash = ?, failed_attempts = 0 WHERE name = ?",
-                {hash, name}).numRowsAffected() == 0)
+                {hash, name})
+          .numRowsAffected() == 0)
     throw StorageError(Kind::NotFound, text("no account '" + name + "'"));
   audit("update", "user", name, "password");
 }
@@ -231,8 +251,8 @@ qint64 ClinicalStore::visiblePatientId(const QString& code) {
   const bool found = q.next();
   const qint64 id = found ? q.value(0).toLongLong() : 0;
   if (!found || (user().role == Role::Home && user().patientId != id))
-    throw StorageError(Kind::NotFound, text("unknown patient '" + code +
-                                            "': check the code with 'patient list'"));
+    throw StorageError(Kind::NotFound,
+                       text("unknown patient '" + code + "': check the code with 'patient list'"));
   return id;
 }
 
@@ -274,11 +294,11 @@ void ClinicalStore::updatePatient(const Patient& p) {
   checkPatient(p);
   const qint64 id = visiblePatientId(p.code);
   m_db.transaction([&] {
-    m_db.exec("UPDATE patients SET name = ?, birth_date = ?, sex = ?, affected_side = ?, "
-              "diagnosis = ?, segment_lengths_json = ?, notes = ? WHERE id = ?",
-              {p.name, nullable(p.birthDate), nullable(p.sex), nullable(p.affectedSide),
-               p.diagnosis, p.segmentLengthsJson.isEmpty() ? "{}" : p.segmentLengthsJson, p.notes,
-               id});
+    m_db.exec(
+        "UPDATE patients SET name = ?, birth_date = ?, sex = ?, affected_side = ?, "
+        "diagnosis = ?, segment_lengths_json = ?, notes = ? WHERE id = ?",
+        {p.name, nullable(p.birthDate), nullable(p.sex), nullable(p.affectedSide), p.diagnosis,
+         p.segmentLengthsJson.isEmpty() ? "{}" : p.segmentLengthsJson, p.notes, id});
     audit("update", "patient", p.code);
   });
 }
@@ -299,9 +319,10 @@ qint64 ClinicalStore::addProtocol(const Protocol& p) {
   checkProtocol(p);
   qint64 id = 0;
   m_db.transaction([&] {
-    id = m_db.insert("INSERT INTO protocols (name, angle_key, target_min_deg, target_max_deg, "
-                     "repetitions, side) VALUES (?, ?, ?, ?, ?, ?)",
-                     {p.name, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side});
+    id = m_db.insert(
+        "INSERT INTO protocols (name, angle_key, target_min_deg, target_max_deg, "
+        "repetitions, side) VALUES (?, ?, ?, ?, ?, ?)",
+        {p.name, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side});
     audit("create", "protocol", p.name);
   });
   return id;
@@ -353,8 +374,9 @@ void ClinicalStore::removeProtocol(const QString& name) {
 std::vector<AuditEntry> ClinicalStore::auditLog() {
   require(user().role == Role::Admin, "read the audit log");
   std::vector<AuditEntry> log;
-  QSqlQuery q = m_db.exec("SELECT id, at, user_name, action, object_type, object_id, detail "
-                          "FROM audit_log ORDER BY id");
+  QSqlQuery q = m_db.exec(
+      "SELECT id, at, user_name, action, object_type, object_id, detail "
+      "FROM audit_log ORDER BY id");
   while (q.next())
     log.push_back({q.value(0).toLongLong(), q.value(1).toString(), q.value(2).toString(),
                    q.value(3).toString(), q.value(4).toString(), q.value(5).toString(),
@@ -362,11 +384,12 @@ std::vector<AuditEntry> ClinicalStore::auditLog() {
   return log;
 }
 
-void ClinicalStore::audit(const QString& action, const QString& objectType,
-                          const QString& objectId, const QString& detail) {
-  m_db.exec("INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
-            "VALUES (?, ?, ?, ?, ?, ?)",
-            {utcNow(), user().name, action, objectType, objectId, detail});
+void ClinicalStore::audit(const QString& action, const QString& objectType, const QString& objectId,
+                          const QString& detail) {
+  m_db.exec(
+      "INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
+      "VALUES (?, ?, ?, ?, ?, ?)",
+      {utcNow(), user().name, action, objectType, objectId, detail});
 }
 
 }  // namespace armtrack::storage

@@ -95,8 +95,8 @@ class ClinicalStore {
  private:
   void require(bool allowed, const QString& what) const;
   bool isStaff() const;
-  qint64 visiblePatientId(const QString& code);    // NotFound for invisible ones
-  SessionInfo visibleSession(qint64 sessionId);     // NotFound for invisible ones
+  qint64 visiblePatientId(const QString& code);  // NotFound for invisible ones
+  SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones
   std::optional<qint64> protocolId(const QString& name);
   int markDeadRecordingsInterrupted();
 

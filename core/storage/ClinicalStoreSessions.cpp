@@ -1,10 +1,10 @@
 // Sessions, their recordings (compressed chunks), estimates and metrics of ClinicalStore.
+#include <unistd.h>
 #include <QFile>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <cerrno>
 #include <csignal>
-#include <unistd.h>
 
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
@@ -15,11 +15,13 @@ namespace {
 
 using Kind = StorageError::Kind;
 
-constexpr double kChunkSeconds = 1.0;     // a chunk spans about this much time
+constexpr double kChunkSeconds = 1.0;            // a chunk spans about this much time
 constexpr std::size_t kMaxChunkRows = 1u << 16;  // and never more rows than this
 const QString kCodec = "atc1-zstd";
 
-std::string text(const QString& s) { return s.toStdString(); }
+std::string text(const QString& s) {
+  return s.toStdString();
+}
 
 int maskOf(const RecordingColumns& c) {
   return (c.upperArm ? 1 : 0) | (c.forearm ? 2 : 0) | (c.elbow ? 4 : 0) | (c.wrist ? 8 : 0) |
@@ -62,9 +64,9 @@ RecordingMeta metaFromText(const QString& json, qint64 sessionId) {
   try {
     return readSidecar(path.toStdString());
   } catch (const RecordingError& e) {
-    throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) +
-                                          ": its stored calibration (sidecar) is unreadable: " +
-                                          e.message());
+    throw StorageError(Kind::Corrupt,
+                       "session " + std::to_string(sessionId) +
+                           ": its stored calibration (sidecar) is unreadable: " + e.message());
   }
 }
 
@@ -78,8 +80,9 @@ bool processAlive(qint64 pid) {
 int ClinicalStore::markDeadRecordingsInterrupted() {
   const QString host = QSysInfo::machineHostName();
   std::vector<qint64> dead;
-  QSqlQuery q = m_db.exec("SELECT id, recorder_host, recorder_pid FROM sessions "
-                          "WHERE status = 'recording'");
+  QSqlQuery q = m_db.exec(
+      "SELECT id, recorder_host, recorder_pid FROM sessions "
+      "WHERE status = 'recording'");
   while (q.next())
     if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
       dead.push_back(q.value(0).toLongLong());
@@ -87,9 +90,10 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
   for (qint64 id : dead) {
     m_db.transaction([&] {
       m_db.exec("UPDATE sessions SET status = 'interrupted' WHERE id = ?", {id});
-      m_db.exec("INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
-                "VALUES (?, 'system', 'update', 'session', ?, 'recorder died: interrupted')",
-                {utcNow(), QString::number(id)});
+      m_db.exec(
+          "INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
+          "VALUES (?, 'system', 'update', 'session', ?, 'recorder died: interrupted')",
+          {utcNow(), QString::number(id)});
     });
   }
   return static_cast<int>(dead.size());
@@ -126,8 +130,10 @@ void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> sam
   qint64 imu = 0;
   for (const ArmSample& a : samples) imu += a.hasImu() ? 1 : 0;
   m_db.transaction([&] {
-    QSqlQuery last = m_db.exec("SELECT seq, t_last FROM recording_chunks WHERE session_id = ? "
-                               "ORDER BY seq DESC LIMIT 1", {sessionId});
+    QSqlQuery last = m_db.exec(
+        "SELECT seq, t_last FROM recording_chunks WHERE session_id = ? "
+        "ORDER BY seq DESC LIMIT 1",
+        {sessionId});
     int seq = 0;
     if (last.next()) {
       seq = last.value(0).toInt() + 1;
@@ -135,15 +141,16 @@ void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> sam
         throw StorageError(Kind::Usage, "a chunk may not start before the previous one ends");
     }
     last.finish();
-    m_db.exec("INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
-              "data) VALUES (?, ?, ?, ?, ?, ?, ?)",
-              {sessionId, seq, samples.front().t, samples.back().t,
-               static_cast<qint64>(samples.size()), kCodec,
-               QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
-    m_db.exec("UPDATE sessions SET sample_rows = sample_rows + ?, imu_samples = imu_samples + ?, "
-              "duration_s = ? - (SELECT t_first FROM recording_chunks WHERE session_id = ? AND "
-              "seq = 0) WHERE id = ?",
-              {static_cast<qint64>(samples.size()), imu, samples.back().t, sessionId, sessionId});
+    m_db.exec(
+        "INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
+        "data) VALUES (?, ?, ?, ?, ?, ?, ?)",
+        {sessionId, seq, samples.front().t, samples.back().t, static_cast<qint64>(samples.size()),
+         kCodec, QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
+    m_db.exec(
+        "UPDATE sessions SET sample_rows = sample_rows + ?, imu_samples = imu_samples + ?, "
+        "duration_s = ? - (SELECT t_first FROM recording_chunks WHERE session_id = ? AND "
+        "seq = 0) WHERE id = ?",
+        {static_cast<qint64>(samples.size()), imu, samples.back().t, sessionId, sessionId});
   });
 }
 
@@ -159,8 +166,8 @@ qint64 ClinicalStore::importRecording(const std::filesystem::path& csv, const QS
                                       const QString& protocolName) {
   visiblePatientId(patientCode);  // refuse before reading a large file
   RecordingReader reader(csv);    // throws RecordingError naming file:line:column
-  const qint64 id = beginSession(patientCode, protocolName, sidecarText(reader.meta()),
-                                 maskOf(reader.columns()));
+  const qint64 id =
+      beginSession(patientCode, protocolName, sidecarText(reader.meta()), maskOf(reader.columns()));
   std::vector<ArmSample> chunk;
   ArmSample sample;
   while (reader.next(sample)) {
@@ -204,8 +211,10 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
   s.sampleRows = q.value(13).toLongLong();
   s.imuSamples = q.value(14).toLongLong();
   q.finish();
-  QSqlQuery c = m_db.exec("SELECT count(*), coalesce(sum(length(data)), 0) FROM recording_chunks "
-                          "WHERE session_id = ?", {sessionId});
+  QSqlQuery c = m_db.exec(
+      "SELECT count(*), coalesce(sum(length(data)), 0) FROM recording_chunks "
+      "WHERE session_id = ?",
+      {sessionId});
   if (c.next()) {
     s.chunks = c.value(0).toLongLong();
     s.storedBytes = c.value(1).toLongLong();
@@ -225,7 +234,9 @@ std::vector<SessionInfo> ClinicalStore::listSessions(const QString& patientCode)
   return sessions;
 }
 
-SessionInfo ClinicalStore::session(qint64 sessionId) { return visibleSession(sessionId); }
+SessionInfo ClinicalStore::session(qint64 sessionId) {
+  return visibleSession(sessionId);
+}
 
 void ClinicalStore::updateSessionNotes(qint64 sessionId, const QString& notes) {
   require(isStaff(), "change session notes");
@@ -250,24 +261,26 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
   Recording rec;
   rec.meta = metaFromText(s.calibrationJson, sessionId);
   rec.samples.reserve(static_cast<std::size_t>(s.sampleRows));
-  QSqlQuery q = m_db.exec("SELECT seq, row_count, codec, data FROM recording_chunks "
-                          "WHERE session_id = ? ORDER BY seq", {sessionId});
+  QSqlQuery q = m_db.exec(
+      "SELECT seq, row_count, codec, data FROM recording_chunks "
+      "WHERE session_id = ? ORDER BY seq",
+      {sessionId});
   int expectedSeq = 0;
   while (q.next()) {
     const int seq = q.value(0).toInt();
-    const std::string where = "session " + std::to_string(sessionId) + ", chunk " +
-                              std::to_string(seq) + ": ";
+    const std::string where =
+        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(seq) + ": ";
     if (seq != expectedSeq)
-      throw StorageError(Kind::Corrupt, where + "chunk " + std::to_string(expectedSeq) +
-                                            " is missing");
+      throw StorageError(Kind::Corrupt,
+                         where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
     if (q.value(2).toString() != kCodec)
-      throw StorageError(Kind::Corrupt, where + "unknown codec '" + text(q.value(2).toString()) +
-                                            "'");
+      throw StorageError(Kind::Corrupt,
+                         where + "unknown codec '" + text(q.value(2).toString()) + "'");
     const QByteArray blob = q.value(3).toByteArray();
     try {
-      auto samples = ChunkCodec::decode(std::string(blob.constData(), blob.size()),
-                                        q.value(1).toULongLong());
+      auto samples =
+          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong());
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
@@ -293,16 +306,17 @@ void ClinicalStore::exportRecording(qint64 sessionId, const std::filesystem::pat
   audit("export", "session", QString::number(sessionId), "recording");
 }
 
-int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson,
-                                 const QString& codec, const QByteArray& data) {
+int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
+                                 const QByteArray& data) {
   require(isStaff(), "store estimates");
   visibleSession(sessionId);
   int version = 0;
   m_db.transaction([&] {
     version = estimateVersions(sessionId) + 1;
-    m_db.exec("INSERT INTO estimates (session_id, version, created_at, params_json, codec, data) "
-              "VALUES (?, ?, ?, ?, ?, ?)",
-              {sessionId, version, utcNow(), paramsJson, codec, data});
+    m_db.exec(
+        "INSERT INTO estimates (session_id, version, created_at, params_json, codec, data) "
+        "VALUES (?, ?, ?, ?, ?, ?)",
+        {sessionId, version, utcNow(), paramsJson, codec, data});
   });
   return version;
 }
@@ -324,17 +338,20 @@ int ClinicalStore::saveMetrics(qint64 sessionId, const QString& perAngleJson,
                             {sessionId});
     version = (q.next() ? q.value(0).toInt() : 0) + 1;
     q.finish();
-    m_db.exec("INSERT INTO metrics (session_id, version, created_at, per_angle_json, "
-              "per_repetition_json) VALUES (?, ?, ?, ?, ?)",
-              {sessionId, version, utcNow(), perAngleJson, perRepetitionJson});
+    m_db.exec(
+        "INSERT INTO metrics (session_id, version, created_at, per_angle_json, "
+        "per_repetition_json) VALUES (?, ?, ?, ?, ?)",
+        {sessionId, version, utcNow(), perAngleJson, perRepetitionJson});
   });
   return version;
 }
 
 std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 sessionId) {
   visibleSession(sessionId);
-  QSqlQuery q = m_db.exec("SELECT per_angle_json, per_repetition_json FROM metrics WHERE "
-                          "session_id = ? ORDER BY version DESC LIMIT 1", {sessionId});
+  QSqlQuery q = m_db.exec(
+      "SELECT per_angle_json, per_repetition_json FROM metrics WHERE "
+      "session_id = ? ORDER BY version DESC LIMIT 1",
+      {sessionId});
   if (!q.next()) return std::nullopt;
   return std::make_pair(q.value(0).toString(), q.value(1).toString());
 }

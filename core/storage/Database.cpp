@@ -63,19 +63,19 @@ Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
   m_version = readVersion();
   const int latest = latestSchemaVersion();
   if (m_version > latest)
-    throw StorageError(Kind::NewerSchema,
-                       ("database '" + url.display() + "' has schema version " +
-                        QString::number(m_version) + ", newer than this ArmTrack knows (" +
-                        QString::number(latest) +
-                        "); update ArmTrack, or open a backup made by this version")
-                           .toStdString());
+    throw StorageError(
+        Kind::NewerSchema,
+        ("database '" + url.display() + "' has schema version " + QString::number(m_version) +
+         ", newer than this ArmTrack knows (" + QString::number(latest) +
+         "); update ArmTrack, or open a backup made by this version")
+            .toStdString());
   if (m_version < latest && m_version > 0 && !options.migrate)
-    throw StorageError(Kind::OlderSchema,
-                       ("database '" + url.display() + "' has schema version " +
-                        QString::number(m_version) + "; this ArmTrack needs " +
-                        QString::number(latest) +
-                        ": back it up (db backup) and run 'armtrack-cli db migrate'")
-                           .toStdString());
+    throw StorageError(
+        Kind::OlderSchema,
+        ("database '" + url.display() + "' has schema version " + QString::number(m_version) +
+         "; this ArmTrack needs " + QString::number(latest) +
+         ": back it up (db backup) and run 'armtrack-cli db migrate'")
+            .toStdString());
   if (m_version == 0 && !options.create)
     fail(Kind::Corrupt, "is not an ArmTrack database",
          "it has no schema_version table; create one with 'armtrack-cli db init'");
@@ -100,7 +100,8 @@ void Database::checkFileBeforeOpening(bool create) {
                                            .toStdString());
   }
   if (info.isDir())
-    throw StorageError(Kind::Usage, ("'" + path + "' is a folder, not a database file").toStdString());
+    throw StorageError(Kind::Usage,
+                       ("'" + path + "' is a folder, not a database file").toStdString());
   if (info.size() == 0) {
     if (create) return;
     fail(Kind::Corrupt, "is empty", "create the database with 'armtrack-cli db init'");
@@ -130,8 +131,9 @@ void Database::checkFileBeforeOpening(bool create) {
 }
 
 int Database::readVersion() {
-  QSqlQuery q = exec("SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = "
-                     "'schema_version'");
+  QSqlQuery q = exec(
+      "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = "
+      "'schema_version'");
   if (!q.next() || q.value(0).toInt() == 0) {
     QSqlQuery any = exec("SELECT count(*) FROM sqlite_master");
     if (any.next() && any.value(0).toInt() > 0)
@@ -153,7 +155,9 @@ void Database::applyStep(const MigrationStep& step) {
   ++m_applied;
 }
 
-QString Database::integrityCheck() { return runIntegrityCheck(m_db); }
+QString Database::integrityCheck() {
+  return runIntegrityCheck(m_db);
+}
 
 void Database::backup(const QString& outPath) {
   if (QFileInfo::exists(outPath))
@@ -175,8 +179,8 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
   }
   if (!q.exec()) {
     const QString text = q.lastError().text();
-    const Kind kind = text.contains("UNIQUE constraint", Qt::CaseInsensitive) ? Kind::Exists
-                                                                              : Kind::Io;
+    const Kind kind =
+        text.contains("UNIQUE constraint", Qt::CaseInsensitive) ? Kind::Exists : Kind::Io;
     fail(kind, "refused a statement", text);
   }
   return q;

@@ -8,7 +8,7 @@
 namespace armtrack::storage {
 
 enum class Role { Admin, Therapist, Home };
-QString roleName(Role role);             ///< "admin", "therapist", "home"
+QString roleName(Role role);  ///< "admin", "therapist", "home"
 std::optional<Role> parseRole(const QString& name);
 
 struct User {
@@ -21,7 +21,7 @@ struct User {
 
 struct Patient {
   qint64 id = 0;
-  QString code;          ///< unique, what the clinic calls the patient in files and logs
+  QString code;  ///< unique, what the clinic calls the patient in files and logs
   QString name;
   QString birthDate;     ///< YYYY-MM-DD
   QString sex;           ///< "f", "m" or "x"
@@ -58,10 +58,10 @@ struct SessionInfo {
   QString calibrationJson = "{}";  ///< the recording's sidecar (arm geometry, gravity, camera)
   QString filterJson = "{}";
   QString notes;
-  QString status;          ///< kStatusRecording, kStatusComplete or kStatusInterrupted
-  int columnsMask = 0;     ///< the recording format's column groups (bit order of ChunkCodec)
-  qint64 sampleRows = 0;   ///< rows stored
-  qint64 imuSamples = 0;   ///< rows that carry an IMU reading
+  QString status;         ///< kStatusRecording, kStatusComplete or kStatusInterrupted
+  int columnsMask = 0;    ///< the recording format's column groups (bit order of ChunkCodec)
+  qint64 sampleRows = 0;  ///< rows stored
+  qint64 imuSamples = 0;  ///< rows that carry an IMU reading
   qint64 chunks = 0;
   qint64 storedBytes = 0;  ///< compressed chunk bytes
 };

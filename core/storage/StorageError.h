@@ -12,16 +12,16 @@ namespace armtrack::storage {
 class StorageError : public std::runtime_error {
  public:
   enum class Kind {
-    Usage,          ///< a bad argument: unknown role, malformed URL, empty name
-    NotFound,       ///< no such database file, patient, session, user or protocol
-    Exists,         ///< a unique name or code already taken
-    Unsupported,    ///< e.g. a PostgreSQL URL before that engine is wired in
-    Corrupt,        ///< not a database, failed integrity check, damaged chunk
-    NewerSchema,    ///< written by a newer ArmTrack
-    OlderSchema,    ///< needs `db migrate`
-    Authentication, ///< wrong user name or password, or throttled after repeated failures
-    AccessDenied,   ///< the signed-in account may not do this
-    Io,             ///< the engine refused a statement, the disk is full, the file is locked
+    Usage,           ///< a bad argument: unknown role, malformed URL, empty name
+    NotFound,        ///< no such database file, patient, session, user or protocol
+    Exists,          ///< a unique name or code already taken
+    Unsupported,     ///< e.g. a PostgreSQL URL before that engine is wired in
+    Corrupt,         ///< not a database, failed integrity check, damaged chunk
+    NewerSchema,     ///< written by a newer ArmTrack
+    OlderSchema,     ///< needs `db migrate`
+    Authentication,  ///< wrong user name or password, or throttled after repeated failures
+    AccessDenied,    ///< the signed-in account may not do this
+    Io,              ///< the engine refused a statement, the disk is full, the file is locked
   };
 
   StorageError(Kind kind, const std::string& message) : std::runtime_error(message), m_kind(kind) {}

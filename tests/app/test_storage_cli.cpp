@@ -177,8 +177,10 @@ TEST_F(StorageCli, ClearErrors) {
   EXPECT_NE(err.str().find("not a SQLite database"), std::string::npos) << err.str();
   EXPECT_EQ(bytesOf(garbage), before);
   std::ostringstream out2, err2;
-  EXPECT_EQ(runCli({"patient", "list", "--db", "postgresql://me@localhost/armtrack", "--user",
-                    "boss"}, out2, err2), 1);
+  EXPECT_EQ(
+      runCli({"patient", "list", "--db", "postgresql://me@localhost/armtrack", "--user", "boss"},
+             out2, err2),
+      1);
   EXPECT_NE(err2.str().find("not yet supported"), std::string::npos) << err2.str();
 }
 
@@ -191,7 +193,9 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   Result r = run({"user", "add", "home1", "--role", "home", "--patient", "P01"});
   ASSERT_EQ(r.code, 0) << r.err;
 
-  auto home = [&](std::vector<std::string> args) { return run(std::move(args), "home1", "home-pass"); };
+  auto home = [&](std::vector<std::string> args) {
+    return run(std::move(args), "home1", "home-pass");
+  };
   r = home({"patient", "list", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
   const QJsonArray visible = QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).array();
@@ -232,7 +236,8 @@ TEST_F(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
     p.waitForFinished();
     const Result list = run({"session", "list", "--patient", "P02", "--json"});
     ASSERT_EQ(list.code, 0) << list.err;
-    for (const QJsonValue v : QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array()) {
+    for (const QJsonValue v :
+         QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array()) {
       const QJsonObject s = v.toObject();
       if (s["status"].toString() == "interrupted" && s["rows"].toInteger() > 0) killedMidway = true;
       EXPECT_NE(s["status"].toString(), "recording");

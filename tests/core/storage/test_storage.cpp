@@ -60,8 +60,7 @@ TEST(DatabaseUrl, PathsAndPostgres) {
   expectError([] { DatabaseUrl::parse("postgresql://h"); }, Kind::Usage);
   expectError([] { DatabaseUrl::parse("mysql://h/db"); }, Kind::Usage);
   expectError([] { DatabaseUrl::parse(""); }, Kind::Usage);
-  const StorageError e = expectError(
-      [&] { Database db(pg, {true, true}); }, Kind::Unsupported);
+  const StorageError e = expectError([&] { Database db(pg, {true, true}); }, Kind::Unsupported);
   EXPECT_NE(std::string(e.what()).find("not yet supported"), std::string::npos);
   EXPECT_TRUE(DatabaseUrl::defaultLocation().path.endsWith("/armtrack.db"));
 }
@@ -77,9 +76,12 @@ TEST(Database, CreatesWalWithForeignKeysAndCurrentSchema) {
   ASSERT_TRUE(fk.next());
   EXPECT_EQ(fk.value(0).toInt(), 1);
   // A foreign key is enforced: a session for a patient that does not exist is refused.
-  expectError([&] {
-    f.db->exec("INSERT INTO sessions (patient_id, started_at, status) VALUES (999, 'x', 'complete')");
-  }, Kind::Io);
+  expectError(
+      [&] {
+        f.db->exec(
+            "INSERT INTO sessions (patient_id, started_at, status) VALUES (999, 'x', 'complete')");
+      },
+      Kind::Io);
 }
 
 TEST(Database, MissingFileIsNotCreatedWithoutInit) {
@@ -101,8 +103,11 @@ TEST(Database, GarbageFileIsRefusedAndLeftUntouched) {
     ASSERT_TRUE(out.open(QIODevice::WriteOnly));
     out.write(garbage.data(), static_cast<qint64>(garbage.size()));
   }
-  const StorageError e =
-      expectError([&] { Database db(DatabaseUrl::parse(path), {true, true}); }, Kind::Corrupt);
+  const StorageError e = expectError(
+      [&] {
+        Database db(DatabaseUrl::parse(path), {true, true});
+      },
+      Kind::Corrupt);
   EXPECT_NE(std::string(e.what()).find(path.toStdString()), std::string::npos) << e.what();
   EXPECT_EQ(fileBytes(path.toStdString()), garbage);
   EXPECT_FALSE(QFile::exists(path + "-wal"));
@@ -110,7 +115,8 @@ TEST(Database, GarbageFileIsRefusedAndLeftUntouched) {
 
 TEST(Database, DamagedPagesFailTheIntegrityCheckAndAreLeftUntouched) {
   Fixture f;
-  for (int i = 0; i < 40; ++i) f.store->addPatient(makePatient(QString("P%1").arg(i, 3, 10, QChar('0'))));
+  for (int i = 0; i < 40; ++i)
+    f.store->addPatient(makePatient(QString("P%1").arg(i, 3, 10, QChar('0'))));
   f.db->exec("PRAGMA wal_checkpoint(TRUNCATE)");
   f.close();
   // Overwrite the middle of the file (past the 100-byte header, inside b-tree pages).
@@ -132,9 +138,11 @@ TEST(Database, NewerSchemaIsRefused) {
   Fixture f;
   f.close();
   rawSql(f.path, {"UPDATE schema_version SET version = 99"});
-  const StorageError e =
-      expectError([&] { Database db(DatabaseUrl::parse(f.path), {false, true}); },
-                  Kind::NewerSchema);
+  const StorageError e = expectError(
+      [&] {
+        Database db(DatabaseUrl::parse(f.path), {false, true});
+      },
+      Kind::NewerSchema);
   EXPECT_NE(std::string(e.what()).find("newer"), std::string::npos);
 }
 
@@ -163,56 +171,70 @@ TEST(Database, BackupIsACompleteDatabase) {
 TEST(Migration, FromVersion1KeepsEveryRowAndAddsTheNewColumns) {
   QTemporaryDir dir;
   const QString path = dir.filePath("v1.db");
-  rawSql(path, {
-      "CREATE TABLE schema_version (version INTEGER NOT NULL)",
-      "INSERT INTO schema_version VALUES (1)",
-      "CREATE TABLE patients (id INTEGER PRIMARY KEY, code TEXT NOT NULL UNIQUE, name TEXT NOT "
-      "NULL, birth_date TEXT, sex TEXT CHECK (sex IN ('f', 'm', 'x')), affected_side TEXT CHECK "
-      "(affected_side IN ('left', 'right', 'both', 'none')), diagnosis TEXT NOT NULL DEFAULT '', "
-      "segment_lengths_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', "
-      "created_at TEXT NOT NULL)",
-      "CREATE TABLE users (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, role TEXT NOT NULL "
-      "CHECK (role IN ('admin', 'therapist', 'home')), password_hash TEXT NOT NULL, patient_id "
-      "BIGINT REFERENCES patients (id), created_at TEXT NOT NULL, CHECK ((role = 'home') = "
-      "(patient_id IS NOT NULL)))",
-      "CREATE TABLE protocols (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, angle_key TEXT "
-      "NOT NULL, target_min_deg DOUBLE PRECISION NOT NULL, target_max_deg DOUBLE PRECISION NOT "
-      "NULL, repetitions INTEGER NOT NULL CHECK (repetitions >= 0), side TEXT CHECK (side IN "
-      "('left', 'right', 'either')))",
-      "CREATE TABLE sessions (id INTEGER PRIMARY KEY, patient_id BIGINT NOT NULL REFERENCES "
-      "patients (id), therapist_id BIGINT REFERENCES users (id), protocol_id BIGINT REFERENCES "
-      "protocols (id), started_at TEXT NOT NULL, duration_s DOUBLE PRECISION NOT NULL DEFAULT 0, "
-      "devices_json TEXT NOT NULL DEFAULT '{}', calibration_json TEXT NOT NULL DEFAULT '{}', "
-      "filter_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', status TEXT NOT "
-      "NULL CHECK (status IN ('complete', 'interrupted', 'recording')), columns_mask INTEGER NOT "
-      "NULL DEFAULT 0, sample_rows BIGINT NOT NULL DEFAULT 0, imu_samples BIGINT NOT NULL DEFAULT "
-      "0, recorder_host TEXT, recorder_pid BIGINT)",
-      "CREATE INDEX sessions_by_patient ON sessions (patient_id, started_at)",
-      "CREATE TABLE recording_chunks (session_id BIGINT NOT NULL REFERENCES sessions (id) ON "
-      "DELETE CASCADE, seq INTEGER NOT NULL, t_first DOUBLE PRECISION NOT NULL, t_last DOUBLE "
-      "PRECISION NOT NULL, row_count INTEGER NOT NULL, codec TEXT NOT NULL, data BLOB NOT NULL, "
-      "PRIMARY KEY (session_id, seq))",
-      "CREATE TABLE estimates (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
-      "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
-      "params_json TEXT NOT NULL DEFAULT '{}', codec TEXT NOT NULL, data BLOB NOT NULL, UNIQUE "
-      "(session_id, version))",
-      "CREATE TABLE metrics (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
-      "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
-      "per_angle_json TEXT NOT NULL DEFAULT '{}', per_repetition_json TEXT NOT NULL DEFAULT '[]', "
-      "UNIQUE (session_id, version))",
-      "CREATE TABLE audit_log (id INTEGER PRIMARY KEY, at TEXT NOT NULL, user_name TEXT NOT NULL, "
-      "action TEXT NOT NULL, object_type TEXT NOT NULL, object_id TEXT NOT NULL, detail TEXT NOT "
-      "NULL DEFAULT '')",
-      "INSERT INTO patients (code, name, birth_date, sex, affected_side, created_at) VALUES "
-      "('OLD1', 'Old Patient', '1950-01-31', 'm', 'left', '2025-01-01T00:00:00.000Z')",
-      QString("INSERT INTO users (name, role, password_hash, created_at) VALUES ('admin', 'admin', "
+  rawSql(
+      path,
+      {
+          "CREATE TABLE schema_version (version INTEGER NOT NULL)",
+          "INSERT INTO schema_version VALUES (1)",
+          "CREATE TABLE patients (id INTEGER PRIMARY KEY, code TEXT NOT NULL UNIQUE, name TEXT NOT "
+          "NULL, birth_date TEXT, sex TEXT CHECK (sex IN ('f', 'm', 'x')), affected_side TEXT "
+          "CHECK "
+          "(affected_side IN ('left', 'right', 'both', 'none')), diagnosis TEXT NOT NULL DEFAULT "
+          "'', "
+          "segment_lengths_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', "
+          "created_at TEXT NOT NULL)",
+          "CREATE TABLE users (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, role TEXT NOT "
+          "NULL "
+          "CHECK (role IN ('admin', 'therapist', 'home')), password_hash TEXT NOT NULL, patient_id "
+          "BIGINT REFERENCES patients (id), created_at TEXT NOT NULL, CHECK ((role = 'home') = "
+          "(patient_id IS NOT NULL)))",
+          "CREATE TABLE protocols (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, angle_key "
+          "TEXT "
+          "NOT NULL, target_min_deg DOUBLE PRECISION NOT NULL, target_max_deg DOUBLE PRECISION NOT "
+          "NULL, repetitions INTEGER NOT NULL CHECK (repetitions >= 0), side TEXT CHECK (side IN "
+          "('left', 'right', 'either')))",
+          "CREATE TABLE sessions (id INTEGER PRIMARY KEY, patient_id BIGINT NOT NULL REFERENCES "
+          "patients (id), therapist_id BIGINT REFERENCES users (id), protocol_id BIGINT REFERENCES "
+          "protocols (id), started_at TEXT NOT NULL, duration_s DOUBLE PRECISION NOT NULL DEFAULT "
+          "0, "
+          "devices_json TEXT NOT NULL DEFAULT '{}', calibration_json TEXT NOT NULL DEFAULT '{}', "
+          "filter_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', status TEXT NOT "
+          "NULL CHECK (status IN ('complete', 'interrupted', 'recording')), columns_mask INTEGER "
+          "NOT "
+          "NULL DEFAULT 0, sample_rows BIGINT NOT NULL DEFAULT 0, imu_samples BIGINT NOT NULL "
+          "DEFAULT "
+          "0, recorder_host TEXT, recorder_pid BIGINT)",
+          "CREATE INDEX sessions_by_patient ON sessions (patient_id, started_at)",
+          "CREATE TABLE recording_chunks (session_id BIGINT NOT NULL REFERENCES sessions (id) ON "
+          "DELETE CASCADE, seq INTEGER NOT NULL, t_first DOUBLE PRECISION NOT NULL, t_last DOUBLE "
+          "PRECISION NOT NULL, row_count INTEGER NOT NULL, codec TEXT NOT NULL, data BLOB NOT "
+          "NULL, "
+          "PRIMARY KEY (session_id, seq))",
+          "CREATE TABLE estimates (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
+          "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
+          "params_json TEXT NOT NULL DEFAULT '{}', codec TEXT NOT NULL, data BLOB NOT NULL, UNIQUE "
+          "(session_id, version))",
+          "CREATE TABLE metrics (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
+          "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
+          "per_angle_json TEXT NOT NULL DEFAULT '{}', per_repetition_json TEXT NOT NULL DEFAULT "
+          "'[]', "
+          "UNIQUE (session_id, version))",
+          "CREATE TABLE audit_log (id INTEGER PRIMARY KEY, at TEXT NOT NULL, user_name TEXT NOT "
+          "NULL, "
+          "action TEXT NOT NULL, object_type TEXT NOT NULL, object_id TEXT NOT NULL, detail TEXT "
+          "NOT "
+          "NULL DEFAULT '')",
+          "INSERT INTO patients (code, name, birth_date, sex, affected_side, created_at) VALUES "
+          "('OLD1', 'Old Patient', '1950-01-31', 'm', 'left', '2025-01-01T00:00:00.000Z')",
+          QString(
+              "INSERT INTO users (name, role, password_hash, created_at) VALUES ('admin', 'admin', "
               "'%1', '2025-01-01T00:00:00.000Z')")
-          .arg(QString::fromStdString(PasswordHash::hash(kAdminPassword))),
-      "INSERT INTO sessions (patient_id, started_at, status, notes) VALUES (1, "
-      "'2025-01-02T10:00:00.000Z', 'complete', 'first visit')",
-      "INSERT INTO metrics (session_id, version, created_at, per_angle_json) VALUES (1, 1, "
-      "'2025-01-02T10:05:00.000Z', '{\"elbow_flexion\":{\"rom_deg\":91.5}}')",
-  });
+              .arg(QString::fromStdString(PasswordHash::hash(kAdminPassword))),
+          "INSERT INTO sessions (patient_id, started_at, status, notes) VALUES (1, "
+          "'2025-01-02T10:00:00.000Z', 'complete', 'first visit')",
+          "INSERT INTO metrics (session_id, version, created_at, per_angle_json) VALUES (1, 1, "
+          "'2025-01-02T10:05:00.000Z', '{\"elbow_flexion\":{\"rom_deg\":91.5}}')",
+      });
 
   // Without migrate the older schema is refused with what to do.
   const StorageError e =
@@ -320,13 +342,13 @@ TEST(SignIn, WrongPasswordAndThrottling) {
   ClinicalStore fresh(*f.db);
   const StorageError unknown =
       expectError([&] { fresh.signIn("nobody", "x"); }, Kind::Authentication);
-  const StorageError wrong =
-      expectError([&] { fresh.signIn("admin", "x"); }, Kind::Authentication);
+  const StorageError wrong = expectError([&] { fresh.signIn("admin", "x"); }, Kind::Authentication);
   EXPECT_EQ(std::string(wrong.what()).find("nobody"), std::string::npos);
   EXPECT_NE(std::string(wrong.what()).find("wrong user name or password"), std::string::npos);
   expectError([&] { fresh.signIn("admin", "y"); }, Kind::Authentication);
   fresh.signIn("admin", kAdminPassword);  // two failures: still free, and the count resets
-  for (int i = 0; i < 3; ++i) expectError([&] { fresh.signIn("admin", "z"); }, Kind::Authentication);
+  for (int i = 0; i < 3; ++i)
+    expectError([&] { fresh.signIn("admin", "z"); }, Kind::Authentication);
   const StorageError slow =
       expectError([&] { fresh.signIn("admin", kAdminPassword); }, Kind::Authentication);
   EXPECT_NE(std::string(slow.what()).find("try again in"), std::string::npos) << slow.what();

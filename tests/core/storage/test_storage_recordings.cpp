@@ -3,14 +3,14 @@
 // killed mid-session leaves a clean database and an interrupted session.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <QElapsedTimer>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstring>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include "core/estimation/ArmFilter.h"
 #include "core/storage/ChunkCodec.h"
@@ -23,7 +23,9 @@ using Kind = StorageError::Kind;
 
 namespace {
 
-bool sameBits(double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); }
+bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
 
 template <typename V>
 bool sameOpt(const std::optional<V>& a, const std::optional<V>& b) {
@@ -36,7 +38,8 @@ bool sameOpt(const std::optional<V>& a, const std::optional<V>& b) {
 
 bool sameImu(const std::optional<ImuReading>& a, const std::optional<ImuReading>& b) {
   if (a.has_value() != b.has_value()) return false;
-  return !a || (sameOpt<Eigen::Vector3d>(a->gyr, b->gyr) && sameOpt<Eigen::Vector3d>(a->acc, b->acc));
+  return !a ||
+         (sameOpt<Eigen::Vector3d>(a->gyr, b->gyr) && sameOpt<Eigen::Vector3d>(a->acc, b->acc));
 }
 
 void expectSameSamples(const std::vector<ArmSample>& a, const std::vector<ArmSample>& b) {
@@ -127,15 +130,18 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
   simulateTo(f.file("rec.csv"), 3.0, 200.0);
   const qint64 id = f.store->importRecording(f.file("rec.csv"), "P1");
   ASSERT_GE(f.store->session(id).chunks, 3);
-  f.db->exec("UPDATE recording_chunks SET data = substr(data, 1, 20) WHERE session_id = ? AND "
-             "seq = 1", {id});
+  f.db->exec(
+      "UPDATE recording_chunks SET data = substr(data, 1, 20) WHERE session_id = ? AND "
+      "seq = 1",
+      {id});
   try {
     f.store->readRecording(id);
     FAIL() << "a truncated chunk was accepted";
   } catch (const StorageError& e) {
     EXPECT_EQ(e.kind(), Kind::Corrupt);
     EXPECT_NE(std::string(e.what()).find("session " + std::to_string(id) + ", chunk 1"),
-              std::string::npos) << e.what();
+              std::string::npos)
+        << e.what();
   }
   f.db->exec("UPDATE recording_chunks SET data = ? WHERE session_id = ? AND seq = 2",
              {QByteArray("\x28\xb5\x2f\xfd garbage after a zstd magic"), id});
@@ -181,10 +187,11 @@ TEST(StoredRecording, CompressionOfARealImuRecording) {
   expectSameSamples(f.store->readRecording(id).samples, readRecording(csv).samples);
   const double csvBytes = static_cast<double>(std::filesystem::file_size(csv));
   const double ratio = static_cast<double>(s.storedBytes) / csvBytes;
-  std::printf("[ figures  ] BROAD trial 07 (%lld rows, %.0f s): CSV %.0f bytes, chunks %lld bytes, "
-              "ratio %.3f (1:%.2f)\n",
-              static_cast<long long>(s.sampleRows), s.durationS, csvBytes,
-              static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio);
+  std::printf(
+      "[ figures  ] BROAD trial 07 (%lld rows, %.0f s): CSV %.0f bytes, chunks %lld bytes, "
+      "ratio %.3f (1:%.2f)\n",
+      static_cast<long long>(s.sampleRows), s.durationS, csvBytes,
+      static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio);
   EXPECT_LT(ratio, 0.40);  // measured 0.318: see docs/storage.md, "Size"
 }
 
@@ -229,10 +236,10 @@ TEST(StoredRecording, LosslessRoundTripAndCompressionRatio) {
       ASSERT_TRUE(sameBits(ea.estimates[i].th[j], eb.estimates[i].th[j])) << i;
 
   const double ratio = static_cast<double>(s.storedBytes) / csvBytes;
-  std::printf("[ figures  ] 60 s at 1 kHz, 2 IMUs + Kinect + truth: CSV %.0f bytes, chunks %lld "
-              "bytes, ratio %.3f (1:%.2f); import %.2f s (%.0fx real time)\n",
-              csvBytes, static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio, importS,
-              60.0 / importS);
+  std::printf(
+      "[ figures  ] 60 s at 1 kHz, 2 IMUs + Kinect + truth: CSV %.0f bytes, chunks %lld "
+      "bytes, ratio %.3f (1:%.2f); import %.2f s (%.0fx real time)\n",
+      csvBytes, static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio, importS, 60.0 / importS);
   EXPECT_LT(ratio, 0.40);
 }
 
@@ -256,8 +263,10 @@ TEST(StoredRecording, KilledRecorderLeavesAnInterruptedSessionAndACleanFile) {
       store.appendChunk(id, all.subspan(0, 500));
       store.appendChunk(id, all.subspan(500, 500));
       db.exec("BEGIN");
-      db.exec("INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
-              "data) VALUES (?, 2, 2, 3, 1, 'atc1-zstd', x'00')", {id});
+      db.exec(
+          "INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
+          "data) VALUES (?, 2, 2, 3, 1, 'atc1-zstd', x'00')",
+          {id});
       ::raise(SIGKILL);
     } catch (...) {
     }
