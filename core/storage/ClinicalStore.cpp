@@ -2,10 +2,10 @@
 #include "core/storage/ClinicalStore.h"
 
 #include <QDateTime>
-#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 
+#include "core/kinematics/ClinicalAngles.h"
 #include "core/storage/PasswordHash.h"
 
 namespace armtrack::storage {
@@ -81,8 +81,12 @@ void checkPatient(const Patient& p) {
 
 void checkProtocol(const Protocol& p) {
   if (p.name.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a protocol needs a name");
-  if (!QRegularExpression("^[a-z_]+$").match(p.angleKey).hasMatch())
-    throw StorageError(Kind::Usage, "the protocol's angle must be a key such as shoulder_flexion");
+  QStringList keys;
+  for (const ClinicalAngleInfo& a : clinicalAngleInfo())
+    keys << QString::fromUtf8(a.key.data(), static_cast<qsizetype>(a.key.size()));
+  if (!keys.contains(p.angleKey))
+    throw StorageError(Kind::Usage, text("unknown clinical angle '" + p.angleKey +
+                                         "'; valid keys: " + keys.join(", ")));
   if (!std::isfinite(p.targetMinDeg) || !std::isfinite(p.targetMaxDeg) ||
       p.targetMinDeg > p.targetMaxDeg)
     throw StorageError(Kind::Usage, "the target range needs finite min <= max (deg)");

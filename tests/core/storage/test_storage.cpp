@@ -297,6 +297,10 @@ TEST(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   pr.side = "right";
   f.store->addProtocol(pr);
   expectError([&] { f.store->addProtocol(pr); }, Kind::Exists);
+  Protocol wrongAngle = pr;
+  wrongAngle.name = "other";
+  wrongAngle.angleKey = "knee_flexion";
+  expectError([&] { f.store->addProtocol(wrongAngle); }, Kind::Usage);
   pr.repetitions = 12;
   f.store->updateProtocol(pr);
   EXPECT_EQ(f.store->protocol("elbow reps").repetitions, 12);
