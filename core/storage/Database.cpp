@@ -178,7 +178,14 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
       q.addBindValue(b);
   }
   if (!q.exec()) {
-    const QString text = q.lastError().text();
+    QString text = q.lastError().text();
+    if (text.contains("database is locked", Qt::CaseInsensitive))
+      text +=
+          " (another program has been writing to it for more than 5 s; try again, or close "
+          "the other program)";
+    if (text.contains("disk is full", Qt::CaseInsensitive) ||
+        text.contains("disk I/O error", Qt::CaseInsensitive))
+      text += " (free some space: what was committed before is intact)";
     const Kind kind =
         text.contains("UNIQUE constraint", Qt::CaseInsensitive) ? Kind::Exists : Kind::Io;
     fail(kind, "refused a statement", text);

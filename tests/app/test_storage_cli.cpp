@@ -214,6 +214,43 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   EXPECT_EQ(home({"session", "list", "--patient", "P02"}).err.find("Name P02"), std::string::npos);
 }
 
+// A version-1 file (the v2 columns dropped again) is refused until `db migrate`, then works.
+TEST_F(StorageCli, OlderSchemaNeedsDbMigrate) {
+  addPatients();
+  {
+    QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "cli-v1");
+    db.setDatabaseName(QString::fromStdString(m_db));
+    ASSERT_TRUE(db.open());
+    for (const char* sql :
+         {"ALTER TABLE users DROP COLUMN failed_attempts",
+          "ALTER TABLE users DROP COLUMN last_failed_at", "UPDATE schema_version SET version = 1"})
+      ASSERT_TRUE(QSqlQuery(db).exec(sql)) << sql;
+    db.close();
+  }
+  QSqlDatabase::removeDatabase("cli-v1");
+  Result r = run({"patient", "list"});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("db migrate"), std::string::npos) << r.err;
+  r = run({"db", "migrate"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("1 step(s) applied"), std::string::npos) << r.out;
+  r = run({"patient", "list"});
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("P02"), std::string::npos);
+}
+
+// Without --db the records are armtrack.db in the application data folder.
+TEST_F(StorageCli, DefaultLocationIsTheAppDataFolder) {
+  const std::string data = path("xdg");
+  ::setenv("XDG_DATA_HOME", data.c_str(), 1);
+  std::ostringstream out, err;
+  ::setenv("ARMTRACK_PASSWORD", kAdminPass, 1);
+  const int code = runCli({"db", "init", "--admin", "boss"}, out, err);
+  ::unsetenv("XDG_DATA_HOME");
+  EXPECT_EQ(code, 0) << err.str();
+  EXPECT_TRUE(fs::exists(data + "/ArmTrack/ArmTrack/armtrack.db")) << err.str();
+}
+
 // A real process killed with SIGKILL while it imports: the file checks clean afterwards and the
 // session is interrupted with the chunks committed before the kill.
 TEST_F(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
