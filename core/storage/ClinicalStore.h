@@ -58,6 +58,12 @@ class ClinicalStore {
   void updateProtocol(const Protocol& protocol);  ///< by name
   void removeProtocol(const QString& name);
 
+  // Home programmes (assign/remove: administrators and therapists; read: as the patient).
+  void assignProtocol(const QString& patientCode, const QString& protocolName, int sessionsPerWeek,
+                      const QString& notes = {});
+  void unassignProtocol(const QString& patientCode, const QString& protocolName);
+  std::vector<ProgrammeItem> programme(const QString& patientCode);
+
   // Sessions and recordings (ClinicalStoreSessions.cpp).
   /// Starts a session in status "recording" owned by this process. calibrationJson is the
   /// recording's sidecar text.

@@ -41,6 +41,13 @@ struct Protocol {
   QString side = "either";  ///< "left", "right" or "either"
 };
 
+/// One protocol of a patient's home programme.
+struct ProgrammeItem {
+  QString protocolName;
+  int sessionsPerWeek = 0;
+  QString notes;
+};
+
 /// Status of a session's recording.
 inline constexpr const char* kStatusRecording = "recording";
 inline constexpr const char* kStatusComplete = "complete";

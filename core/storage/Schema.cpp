@@ -112,6 +112,18 @@ const std::vector<MigrationStep>& migrationSteps() {
            "ALTER TABLE users ADD COLUMN failed_attempts INTEGER NOT NULL DEFAULT 0",
            "ALTER TABLE users ADD COLUMN last_failed_at TEXT",
        }},
+      {3,
+       "home programmes: the protocols a patient is to practise, and how often",
+       {
+           "CREATE TABLE programmes ("
+           " id {id},"
+           " patient_id BIGINT NOT NULL REFERENCES patients (id) ON DELETE CASCADE,"
+           " protocol_id BIGINT NOT NULL REFERENCES protocols (id) ON DELETE CASCADE,"
+           " sessions_per_week INTEGER NOT NULL DEFAULT 0 CHECK (sessions_per_week >= 0),"
+           " notes TEXT NOT NULL DEFAULT '',"
+           " created_at TEXT NOT NULL,"
+           " UNIQUE (patient_id, protocol_id))",
+       }},
   };
   return steps;
 }

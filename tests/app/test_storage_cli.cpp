@@ -214,16 +214,17 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   EXPECT_EQ(home({"session", "list", "--patient", "P02"}).err.find("Name P02"), std::string::npos);
 }
 
-// A version-1 file (the v2 columns dropped again) is refused until `db migrate`, then works.
+// A version-1 file (the later columns and tables dropped again) is refused until `db migrate`, then
+// works.
 TEST_F(StorageCli, OlderSchemaNeedsDbMigrate) {
   addPatients();
   {
     QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "cli-v1");
     db.setDatabaseName(QString::fromStdString(m_db));
     ASSERT_TRUE(db.open());
-    for (const char* sql :
-         {"ALTER TABLE users DROP COLUMN failed_attempts",
-          "ALTER TABLE users DROP COLUMN last_failed_at", "UPDATE schema_version SET version = 1"})
+    for (const char* sql : {"ALTER TABLE users DROP COLUMN failed_attempts",
+                            "ALTER TABLE users DROP COLUMN last_failed_at", "DROP TABLE programmes",
+                            "UPDATE schema_version SET version = 1"})
       ASSERT_TRUE(QSqlQuery(db).exec(sql)) << sql;
     db.close();
   }
@@ -233,7 +234,7 @@ TEST_F(StorageCli, OlderSchemaNeedsDbMigrate) {
   EXPECT_NE(r.err.find("db migrate"), std::string::npos) << r.err;
   r = run({"db", "migrate"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("1 step(s) applied"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("2 step(s) applied"), std::string::npos) << r.out;
   r = run({"patient", "list"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("P02"), std::string::npos);
@@ -255,33 +256,51 @@ TEST_F(StorageCli, DefaultLocationIsTheAppDataFolder) {
 // session is interrupted with the chunks committed before the kill.
 TEST_F(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
   addPatients();
-  const std::string csv = simulate("long.csv", 30.0);
-  int delayMs = 150;
-  bool killedMidway = false;
-  for (int attempt = 0; attempt < 8 && !killedMidway; ++attempt) {
-    QProcess p;
-    p.start(ARMTRACK_CLI, {"session", "import", QString::fromStdString(csv), "--patient", "P02",
-                           "--db", QString::fromStdString(m_db), "--user", "boss"});
-    ASSERT_TRUE(p.waitForStarted());
-    QThread::msleep(delayMs);
-    if (p.state() != QProcess::Running) {  // finished first: be quicker next time
-      p.waitForFinished();
-      delayMs = delayMs * 2 / 3;
-      continue;
+  const std::string csv = simulate("long.csv", 60.0);
+  QProcess p;
+  p.start(ARMTRACK_CLI, {"session", "import", QString::fromStdString(csv), "--patient", "P02",
+                         "--db", QString::fromStdString(m_db), "--user", "boss"});
+  ASSERT_TRUE(p.waitForStarted());
+  // Watch the file from a second connection (WAL lets it read while the importer writes) and
+  // kill the importer as soon as it has committed its first chunks.
+  qint64 rowsBeforeKill = 0;
+  {
+    QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "cli-watch");
+    db.setDatabaseName(QString::fromStdString(m_db));
+    ASSERT_TRUE(db.open());
+    for (int i = 0; i < 6000 && p.state() == QProcess::Running; ++i) {
+      QSqlQuery q(db);
+      if (q.exec("SELECT coalesce(sum(sample_rows), 0) FROM sessions") && q.next() &&
+          q.value(0).toLongLong() > 2000) {
+        rowsBeforeKill = q.value(0).toLongLong();
+        break;
+      }
+      q.finish();
+      QThread::msleep(5);
     }
-    p.kill();  // SIGKILL
-    p.waitForFinished();
-    const Result list = run({"session", "list", "--patient", "P02", "--json"});
-    ASSERT_EQ(list.code, 0) << list.err;
-    for (const QJsonValue v :
-         QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array()) {
-      const QJsonObject s = v.toObject();
-      if (s["status"].toString() == "interrupted" && s["rows"].toInteger() > 0) killedMidway = true;
-      EXPECT_NE(s["status"].toString(), "recording");
-    }
-    if (!killedMidway) delayMs = delayMs * 3 / 2;
+    db.close();
   }
-  EXPECT_TRUE(killedMidway) << "never caught the import midway";
+  QSqlDatabase::removeDatabase("cli-watch");
+  ASSERT_EQ(p.state(), QProcess::Running) << "the import ended before it could be killed";
+  p.kill();  // SIGKILL
+  p.waitForFinished();
+  ASSERT_GT(rowsBeforeKill, 0);
+
+  const Result list = run({"session", "list", "--patient", "P02", "--json"});
+  ASSERT_EQ(list.code, 0) << list.err;
+  const QJsonArray sessions = QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array();
+  ASSERT_EQ(sessions.size(), 1);
+  const QJsonObject s = sessions[0].toObject();
+  EXPECT_EQ(s["status"].toString(), "interrupted");
+  EXPECT_GE(s["rows"].toInteger(), rowsBeforeKill);  // everything committed is kept
+  EXPECT_LT(s["rows"].toInteger(), 61201);           // and the session is not passed off as whole
   const Result check = run({"db", "check"});
   EXPECT_EQ(check.code, 0) << check.err;
+  // What was kept reads back, and exports.
+  EXPECT_EQ(run({"export", std::to_string(s["id"].toInteger()), "--format", "recording", "--out",
+                 path("partial.csv")})
+                .code,
+            0);
+  EXPECT_EQ(static_cast<qint64>(armtrack::readRecording(path("partial.csv")).samples.size()),
+            s["rows"].toInteger());
 }

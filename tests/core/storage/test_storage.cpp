@@ -317,6 +317,14 @@ TEST(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   f.store->removeUser("thera");
   EXPECT_EQ(f.store->listUsers().size(), 2u);
 
+  f.store->assignProtocol("P1", "elbow reps", 3, "mornings");
+  f.store->assignProtocol("P1", "elbow reps", 4);  // replaces
+  ASSERT_EQ(f.store->programme("P1").size(), 1u);
+  EXPECT_EQ(f.store->programme("P1")[0].sessionsPerWeek, 4);
+  f.store->unassignProtocol("P1", "elbow reps");
+  EXPECT_TRUE(f.store->programme("P1").empty());
+  expectError([&] { f.store->unassignProtocol("P1", "elbow reps"); }, Kind::NotFound);
+  f.store->assignProtocol("P1", "elbow reps", 2);
   const qint64 s = f.store->beginSession("P1", "elbow reps", "{}", 0);
   f.store->finishSession(s);
   EXPECT_EQ(f.store->session(s).protocolName, "elbow reps");
@@ -329,6 +337,7 @@ TEST(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   EXPECT_EQ(f.store->estimateVersions(s), 1);
   f.store->removeProtocol("elbow reps");
   EXPECT_EQ(f.store->session(s).protocolName, "");
+  EXPECT_TRUE(f.store->programme("P1").empty());  // cascaded with the protocol
   f.store->removeSession(s);
   expectError([&] { f.store->session(s); }, Kind::NotFound);
   QSqlQuery left = f.db->exec("SELECT count(*) FROM metrics");
@@ -372,8 +381,20 @@ TEST(AccessControl, HomeAccountSeesOnlyItsPatient) {
   f.store->finishSession(mine);
   f.store->finishSession(other);
 
+  Protocol pr;
+  pr.name = "reach";
+  pr.angleKey = "shoulder_flexion";
+  pr.targetMaxDeg = 90;
+  f.store->addProtocol(pr);
+  f.store->assignProtocol("MINE", "reach", 5);
+  f.store->assignProtocol("OTHER", "reach", 2);
+
   ClinicalStore home(*f.db);
   home.signIn("home", "h-pass");
+  ASSERT_EQ(home.programme("MINE").size(), 1u);
+  EXPECT_EQ(home.programme("MINE")[0].sessionsPerWeek, 5);
+  expectError([&] { home.programme("OTHER"); }, Kind::NotFound);
+  expectError([&] { home.assignProtocol("MINE", "reach", 9); }, Kind::AccessDenied);
   ASSERT_EQ(home.listPatients().size(), 1u);
   EXPECT_EQ(home.listPatients()[0].code, "MINE");
   EXPECT_EQ(home.listSessions("MINE").size(), 1u);
