@@ -41,6 +41,8 @@ constexpr std::string_view kPatientHelp = R"(Usage: armtrack-cli patient <add|li
   patient add --code CODE --name NAME [--birth YYYY-MM-DD] [--sex f|m|x]
               [--side left|right|both|none] [--diagnosis TEXT] [--notes TEXT]
   patient list [--json]      (a home account sees only its own patient)
+  patient programme CODE [--json]
+                             the patient's home programme (protocols and sessions per week)
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -50,6 +52,8 @@ constexpr std::string_view kProtocolHelp = R"(Usage: armtrack-cli protocol <add|
   protocol add --name NAME --angle KEY --target-min DEG --target-max DEG --reps N
                [--side left|right|either]
   protocol list [--json]
+  protocol assign NAME --patient CODE [--per-week N] [--notes TEXT]
+                             put the protocol in the patient's home programme
 
 KEY is a clinical angle such as shoulder_flexion or elbow_flexion.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
@@ -183,6 +187,37 @@ int patientList(const std::vector<std::string>& rest, std::ostream& out, std::os
   return 0;
 }
 
+int patientProgramme(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("patient programme", rest, withDb({{"--json", false}}));
+  if (a.help()) return out << kPatientHelp, 0;
+  const std::string code = a.single("patient code");
+  ClinicalContext c(a, {}, true);
+  QJsonArray list;
+  for (const storage::ProgrammeItem& item : c.store().programme(qs(code))) {
+    if (!a.flag("--json"))
+      out << ss(item.protocolName) << "\t" << item.sessionsPerWeek << "/week\t" << ss(item.notes)
+          << "\n";
+    list.append(QJsonObject{{"protocol", item.protocolName},
+                            {"sessions_per_week", item.sessionsPerWeek},
+                            {"notes", item.notes}});
+  }
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  return 0;
+}
+
+int protocolAssign(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("protocol assign", rest,
+               withDb({{"--patient", true}, {"--per-week", true}, {"--notes", true}}));
+  if (a.help()) return out << kProtocolHelp, 0;
+  const std::string name = a.single("protocol name");
+  const std::string patient = a.required("--patient");
+  const auto perWeek = static_cast<int>(a.integer("--per-week", 0));
+  ClinicalContext c(a, {}, true);
+  c.store().assignProtocol(qs(patient), qs(name), perWeek, qs(a.value("--notes").value_or("")));
+  err << "protocol assign: " << name << " to " << patient << "\n";
+  return 0;
+}
+
 int protocolAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("protocol add", rest,
                withDb({{"--name", true},
@@ -256,14 +291,14 @@ int userCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 }
 
 int patientCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{{"add", patientAdd},
-                                                             {"list", patientList}};
+  static const std::vector<std::pair<std::string, Fn>> table{
+      {"add", patientAdd}, {"list", patientList}, {"programme", patientProgramme}};
   return dispatchSub("patient", kPatientHelp, args, out, err, table);
 }
 
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{{"add", protocolAdd},
-                                                             {"list", protocolList}};
+  static const std::vector<std::pair<std::string, Fn>> table{
+      {"add", protocolAdd}, {"list", protocolList}, {"assign", protocolAssign}};
   return dispatchSub("protocol", kProtocolHelp, args, out, err, table);
 }
 

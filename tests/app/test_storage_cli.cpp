@@ -193,6 +193,12 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   Result r = run({"user", "add", "home1", "--role", "home", "--patient", "P01"});
   ASSERT_EQ(r.code, 0) << r.err;
 
+  ASSERT_EQ(run({"protocol", "add", "--name", "reach", "--angle", "shoulder_flexion",
+                 "--target-min", "0", "--target-max", "90", "--reps", "10"})
+                .code,
+            0);
+  ASSERT_EQ(run({"protocol", "assign", "reach", "--patient", "P01", "--per-week", "5"}).code, 0);
+  ASSERT_EQ(run({"protocol", "assign", "reach", "--patient", "P02", "--per-week", "2"}).code, 0);
   auto home = [&](std::vector<std::string> args) {
     return run(std::move(args), "home1", "home-pass");
   };
@@ -211,6 +217,11 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   EXPECT_EQ(home({"patient", "add", "--code", "P03", "--name", "x"}).code, 1);
   EXPECT_EQ(home({"user", "add", "evil", "--role", "admin"}).code, 1);
   EXPECT_EQ(home({"audit"}).code, 1);
+  r = home({"patient", "programme", "P01", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("\"sessions_per_week\": 5"), std::string::npos) << r.out;
+  EXPECT_EQ(home({"patient", "programme", "P02"}).code, 1);
+  EXPECT_EQ(home({"protocol", "assign", "reach", "--patient", "P01", "--per-week", "9"}).code, 1);
   EXPECT_EQ(home({"session", "list", "--patient", "P02"}).err.find("Name P02"), std::string::npos);
 }
 
