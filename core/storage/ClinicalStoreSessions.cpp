@@ -168,17 +168,34 @@ qint64 ClinicalStore::importRecording(const std::filesystem::path& csv, const QS
   RecordingReader reader(csv);    // throws RecordingError naming file:line:column
   const qint64 id =
       beginSession(patientCode, protocolName, sidecarText(reader.meta()), maskOf(reader.columns()));
-  std::vector<ArmSample> chunk;
-  ArmSample sample;
-  while (reader.next(sample)) {
-    if (!chunk.empty() &&
-        (sample.t - chunk.front().t >= kChunkSeconds || chunk.size() >= kMaxChunkRows)) {
-      appendChunk(id, chunk);
-      chunk.clear();
+  try {
+    std::vector<ArmSample> chunk;
+    ArmSample sample;
+    while (reader.next(sample)) {
+      if (!chunk.empty() &&
+          (sample.t - chunk.front().t >= kChunkSeconds || chunk.size() >= kMaxChunkRows)) {
+        appendChunk(id, chunk);
+        chunk.clear();
+      }
+      chunk.push_back(sample);
     }
-    chunk.push_back(sample);
+    appendChunk(id, chunk);
+  } catch (...) {
+    // An import is all or nothing: a malformed row or a full disk leaves no partial session. If
+    // even the removal fails, the session is at least not left "recording".
+    try {
+      m_db.transaction([&] {
+        m_db.exec("DELETE FROM sessions WHERE id = ?", {id});
+        audit("delete", "session", QString::number(id), "import failed");
+      });
+    } catch (...) {
+      try {
+        finishSession(id, kStatusInterrupted);
+      } catch (...) {
+      }
+    }
+    throw;
   }
-  appendChunk(id, chunk);
   finishSession(id, kStatusComplete);
   return id;
 }

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <QElapsedTimer>
+#include <QSqlQuery>
 #include <bit>
 #include <charconv>
 #include <cmath>
@@ -193,6 +194,46 @@ TEST(StoredRecording, CompressionOfARealImuRecording) {
       static_cast<long long>(s.sampleRows), s.durationS, csvBytes,
       static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio);
   EXPECT_LT(ratio, 0.40);  // measured 0.318: see docs/storage.md, "Size"
+}
+
+// A failed import (a malformed row, a full disk) leaves no partial session and the rest intact.
+TEST(StoredRecording, FailedImportsLeaveNothingBehind) {
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  const auto good = f.file("good.csv");
+  simulateTo(good, 2.0, 200.0);
+  const qint64 kept = f.store->importRecording(good, "P1");
+
+  // A row in the middle that is not a number.
+  std::string text = fileBytes(good);
+  const std::size_t mid = text.find('\n', text.size() / 2) + 1;
+  text.insert(mid, "1.5,abc\n");
+  const auto bad = f.file("bad.csv");
+  std::ofstream(bad, std::ios::binary) << text;
+  std::filesystem::copy_file(sidecarPath(good), sidecarPath(bad));
+  EXPECT_THROW(f.store->importRecording(bad, "P1"), RecordingError);
+  EXPECT_EQ(f.store->listSessions("P1").size(), 1u);
+
+  // A full disk, made by capping the file's pages just above what it holds.
+  const auto big = f.file("big.csv");
+  simulateTo(big, 20.0);
+  QSqlQuery pages = f.db->exec("PRAGMA page_count");
+  ASSERT_TRUE(pages.next());
+  const qint64 cap = pages.value(0).toLongLong() + 20;
+  pages.finish();
+  f.db->exec(QString("PRAGMA max_page_count = %1").arg(cap));
+  try {
+    f.store->importRecording(big, "P1");
+    FAIL() << "a 20 s recording fitted in 20 free pages";
+  } catch (const StorageError& e) {
+    EXPECT_NE(std::string(e.what()).find("full"), std::string::npos) << e.what();
+  }
+  f.db->exec("PRAGMA max_page_count = 1073741823");
+  const auto sessions = f.store->listSessions("P1");
+  ASSERT_EQ(sessions.size(), 1u);
+  EXPECT_EQ(sessions[0].id, kept);
+  EXPECT_EQ(f.db->integrityCheck(), "ok");
+  expectSameSamples(f.store->readRecording(kept).samples, readRecording(good).samples);
 }
 
 // The acceptance figure: 60 s at 1 kHz, two IMUs with Table 5 noise, Kinect at 30 Hz and the true
