@@ -12,9 +12,10 @@ namespace armtrack::storage {
 
 /// Encodes and decodes one recording chunk (docs/storage.md, "Recording chunks"). Every double is
 /// kept bit for bit: the decoded samples equal the encoded ones exactly. The layout before
-/// compression is columnar (time, then each sensor value across the rows that have it), each value
-/// XORed with the previous one of its column and split into byte planes, which is what lets zstd
-/// find the repeated sign, exponent and leading mantissa bytes. Stateless; any thread.
+/// compression is columnar (time, then each sensor value across the rows that have it); a column
+/// of short decimals is kept as decimal exponents and significand steps, any other as 64-bit
+/// patterns XORed with the previous one; all as byte planes, which is what lets zstd find the
+/// repeated bytes. Stateless; any thread.
 class ChunkCodec {
  public:
   /// zstd level: 3 compresses as well as 12 on these data (the noise in the low mantissa bits is
