@@ -257,7 +257,11 @@ std::vector<double> readColumn(Reader& in, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) {
     const int exponent = static_cast<std::int8_t>(exponents[i]);
     const std::int64_t step = unzigzag(words[i]);
-    k = exponent == prevExp ? k + step : step;
+    // Wrapping addition: a forged step must not be undefined behaviour (from_chars then refuses
+    // or yields some double; the row count and sizes were already checked).
+    k = exponent == prevExp ? static_cast<std::int64_t>(static_cast<std::uint64_t>(k) +
+                                                        static_cast<std::uint64_t>(step))
+                            : step;
     prevExp = exponent;
     auto r = std::to_chars(buf, buf + 24, k);
     *r.ptr++ = 'e';
