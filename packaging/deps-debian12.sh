@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev nlohmann-json3-dev libopencv-dev libopencv-contrib-dev libceres-dev
-  qt6-base-dev qt6-serialport-dev libfreenect-dev libfreenect-bin
+  qt6-base-dev qt6-serialport-dev libqt6sql6-sqlite libfreenect-dev libfreenect-bin
+  libzstd-dev libsodium-dev
   libgtest-dev googletest libbenchmark-dev
   clang libclang-rt-14-dev
 )

@@ -17,6 +17,7 @@
 #include "app/cli/Camera.h"
 #include "app/cli/Live.h"
 #include "app/cli/Calibrate.h"
+#include "app/cli/Clinical.h"
 #include "app/cli/Cli.h"
 #include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
@@ -58,6 +59,13 @@ Commands:
   live       run a live session; --stats prints rates, losses and latency
   camera-calibrate  camera intrinsics from chessboard images (docs/devices/webcam.md)
   camera-register   camera pose in the shoulder frame from an ArUco board image
+  db         create, check, migrate or back up the clinical records (docs/storage.md)
+  user       add or list accounts (administrators)
+  patient    add or list patients
+  protocol   add or list exercise protocols
+  session    import a recording into the records, list or show sessions
+  export     write a stored session in the open recording format
+  audit      who viewed, changed or exported what (administrators)
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
 See docs/cli.md for details.
@@ -476,6 +484,13 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (cmd == "live") return liveCommand(rest, out, err);
     if (cmd == "camera-calibrate") return cameraCalibrateCommand(rest, out, err);
     if (cmd == "camera-register") return cameraRegisterCommand(rest, out, err);
+    if (cmd == "db") return dbCommand(rest, out, err);
+    if (cmd == "user") return userCommand(rest, out, err);
+    if (cmd == "patient") return patientCommand(rest, out, err);
+    if (cmd == "protocol") return protocolCommand(rest, out, err);
+    if (cmd == "session") return sessionCommand(rest, out, err);
+    if (cmd == "export") return exportCommand(rest, out, err);
+    if (cmd == "audit") return auditCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

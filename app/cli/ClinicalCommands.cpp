@@ -1,0 +1,305 @@
+// armtrack-cli db, user, patient and protocol: the records' administration (docs/cli.md).
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <cstdlib>
+
+#include "app/cli/Clinical.h"
+#include "app/cli/ClinicalContext.h"
+
+namespace armtrack::cli {
+
+namespace {
+
+using storage::Database;
+
+constexpr std::string_view kDbHelp = R"(Usage: armtrack-cli db <init|check|migrate|backup> [options]
+
+  db init --admin NAME      create the database and its first administrator (password from
+                            ARMTRACK_PASSWORD or a prompt)
+  db check --user NAME      integrity check and schema version
+  db migrate --user NAME    bring an older schema up to date (administrators; back up first)
+  db backup --out FILE --user NAME
+                            a consistent copy while others keep working (SQLite: VACUUM INTO)
+
+Every subcommand takes --db URL: a path, sqlite:PATH, or postgresql://user@host:port/dbname
+(not yet supported). Default: armtrack.db in the application data folder.
+)";
+
+constexpr std::string_view kUserHelp = R"(Usage: armtrack-cli user <add|list> [options]
+
+  user add NAME --role admin|therapist|home [--patient CODE] --user ADMIN
+                            a new account; its password comes from ARMTRACK_NEW_PASSWORD (or a
+                            prompt); a home account needs its patient
+  user list [--json] --user ADMIN
+
+--db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
+)";
+
+constexpr std::string_view kPatientHelp = R"(Usage: armtrack-cli patient <add|list> [options]
+
+  patient add --code CODE --name NAME [--birth YYYY-MM-DD] [--sex f|m|x]
+              [--side left|right|both|none] [--diagnosis TEXT] [--notes TEXT]
+  patient list [--json]      (a home account sees only its own patient)
+  patient programme CODE [--json]
+                             the patient's home programme (protocols and sessions per week)
+
+--db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
+)";
+
+constexpr std::string_view kProtocolHelp = R"(Usage: armtrack-cli protocol <add|list> [options]
+
+  protocol add --name NAME --angle KEY --target-min DEG --target-max DEG --reps N
+               [--side left|right|either]
+  protocol list [--json]
+  protocol assign NAME --patient CODE [--per-week N] [--notes TEXT]
+                             put the protocol in the patient's home programme
+
+KEY is a clinical angle such as shoulder_flexion or elbow_flexion.
+--db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
+)";
+
+// The subcommand (first word) and the words after it; help when there is none.
+std::pair<std::string, std::vector<std::string>> split(const std::vector<std::string>& args) {
+  if (args.empty() || args[0].starts_with("-")) return {"", args};
+  return {args[0], std::vector<std::string>(args.begin() + 1, args.end())};
+}
+
+int dbInit(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("db init", rest, withDb({{"--admin", true}}));
+  if (a.help()) return out << kDbHelp, 0;
+  const std::string admin = a.required("--admin");
+  const std::string password = passwordFromUser("the new administrator '" + admin + "'");
+  if (password.empty()) a.fail("the administrator's password is empty");
+  ClinicalContext c(a, {.create = true, .migrate = false}, false);
+  c.store().initialise(qs(admin), password);
+  err << "db init: created " << ss(c.db().url().display()) << " (schema version "
+      << c.db().schemaVersion() << ") with administrator '" << admin << "'\n";
+  return 0;
+}
+
+int dbCheck(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("db check", rest, withDb({}));
+  if (a.help()) return out << kDbHelp, 0;
+  ClinicalContext c(a, {}, true);
+  const QString verdict = c.db().integrityCheck();
+  if (verdict != "ok") throw std::runtime_error("integrity check failed: " + ss(verdict));
+  out << "ok: " << ss(c.db().url().display()) << ", schema version " << c.db().schemaVersion()
+      << ", " << c.store().interruptedOnOpen() << " interrupted recording(s) marked\n";
+  return 0;
+}
+
+int dbMigrate(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("db migrate", rest, withDb({}));
+  if (a.help()) return out << kDbHelp, 0;
+  ClinicalContext c(a, {.create = false, .migrate = true}, true);
+  if (c.store().user().role != storage::Role::Admin)
+    throw std::runtime_error("only administrators migrate the database");
+  c.store().audit("migrate", "database", c.db().url().display(),
+                  QString("%1 step(s)").arg(c.db().migrationsApplied()));
+  out << "schema version " << c.db().schemaVersion() << " (" << c.db().migrationsApplied()
+      << " step(s) applied)\n";
+  return 0;
+}
+
+int dbBackup(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("db backup", rest, withDb({{"--out", true}}));
+  if (a.help()) return out << kDbHelp, 0;
+  const std::string target = a.required("--out");
+  ClinicalContext c(a, {}, true);
+  c.db().backup(qs(target));
+  c.store().audit("backup", "database", c.db().url().display(), qs(target));
+  err << "db backup: wrote " << target << "\n";
+  return 0;
+}
+
+int userAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("user add", rest, withDb({{"--role", true}, {"--patient", true}}));
+  if (a.help()) return out << kUserHelp, 0;
+  const std::string name = a.single("account name");
+  const auto role = storage::parseRole(qs(a.required("--role")));
+  if (!role) a.fail("--role: must be admin, therapist or home");
+  ClinicalContext c(a, {}, true);
+  std::string password;
+  if (const char* env = std::getenv("ARMTRACK_NEW_PASSWORD"))
+    password = env;
+  else
+    password = passwordFromUser("the new account '" + name + "' (ARMTRACK_NEW_PASSWORD)");
+  c.store().addUser(qs(name), *role, password, qs(a.value("--patient").value_or("")));
+  err << "user add: " << name << " (" << ss(storage::roleName(*role)) << ")\n";
+  return 0;
+}
+
+int userList(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("user list", rest, withDb({{"--json", false}}));
+  if (a.help()) return out << kUserHelp, 0;
+  ClinicalContext c(a, {}, true);
+  QJsonArray list;
+  for (const storage::User& u : c.store().listUsers()) {
+    if (!a.flag("--json")) out << ss(u.name) << "\t" << ss(storage::roleName(u.role)) << "\n";
+    list.append(QJsonObject{{"name", u.name}, {"role", storage::roleName(u.role)}});
+  }
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  return 0;
+}
+
+int patientAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("patient add", rest,
+               withDb({{"--code", true},
+                       {"--name", true},
+                       {"--birth", true},
+                       {"--sex", true},
+                       {"--side", true},
+                       {"--diagnosis", true},
+                       {"--notes", true}}));
+  if (a.help()) return out << kPatientHelp, 0;
+  storage::Patient p;
+  p.code = qs(a.required("--code"));
+  p.name = qs(a.required("--name"));
+  p.birthDate = qs(a.value("--birth").value_or(""));
+  p.sex = qs(a.value("--sex").value_or(""));
+  p.affectedSide = qs(a.value("--side").value_or(""));
+  p.diagnosis = qs(a.value("--diagnosis").value_or(""));
+  p.notes = qs(a.value("--notes").value_or(""));
+  ClinicalContext c(a, {}, true);
+  c.store().addPatient(p);
+  err << "patient add: " << ss(p.code) << "\n";
+  return 0;
+}
+
+int patientList(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("patient list", rest, withDb({{"--json", false}}));
+  if (a.help()) return out << kPatientHelp, 0;
+  ClinicalContext c(a, {}, true);
+  QJsonArray list;
+  for (const storage::Patient& p : c.store().listPatients()) {
+    if (!a.flag("--json"))
+      out << ss(p.code) << "\t" << ss(p.name) << "\t" << ss(p.birthDate) << "\t" << ss(p.sex)
+          << "\t" << ss(p.affectedSide) << "\n";
+    list.append(QJsonObject{{"code", p.code},
+                            {"name", p.name},
+                            {"birth", p.birthDate},
+                            {"sex", p.sex},
+                            {"side", p.affectedSide},
+                            {"diagnosis", p.diagnosis}});
+  }
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  return 0;
+}
+
+int patientProgramme(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("patient programme", rest, withDb({{"--json", false}}));
+  if (a.help()) return out << kPatientHelp, 0;
+  const std::string code = a.single("patient code");
+  ClinicalContext c(a, {}, true);
+  QJsonArray list;
+  for (const storage::ProgrammeItem& item : c.store().programme(qs(code))) {
+    if (!a.flag("--json"))
+      out << ss(item.protocolName) << "\t" << item.sessionsPerWeek << "/week\t" << ss(item.notes)
+          << "\n";
+    list.append(QJsonObject{{"protocol", item.protocolName},
+                            {"sessions_per_week", item.sessionsPerWeek},
+                            {"notes", item.notes}});
+  }
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  return 0;
+}
+
+int protocolAssign(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("protocol assign", rest,
+               withDb({{"--patient", true}, {"--per-week", true}, {"--notes", true}}));
+  if (a.help()) return out << kProtocolHelp, 0;
+  const std::string name = a.single("protocol name");
+  const std::string patient = a.required("--patient");
+  const auto perWeek = static_cast<int>(a.integer("--per-week", 0));
+  ClinicalContext c(a, {}, true);
+  c.store().assignProtocol(qs(patient), qs(name), perWeek, qs(a.value("--notes").value_or("")));
+  err << "protocol assign: " << name << " to " << patient << "\n";
+  return 0;
+}
+
+int protocolAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("protocol add", rest,
+               withDb({{"--name", true},
+                       {"--angle", true},
+                       {"--target-min", true},
+                       {"--target-max", true},
+                       {"--reps", true},
+                       {"--side", true}}));
+  if (a.help()) return out << kProtocolHelp, 0;
+  storage::Protocol p;
+  p.name = qs(a.required("--name"));
+  p.angleKey = qs(a.required("--angle"));
+  p.targetMinDeg = a.number("--target-min").value_or(0);
+  p.targetMaxDeg = a.number("--target-max").value_or(0);
+  if (!a.number("--target-min") || !a.number("--target-max"))
+    a.fail("--target-min and --target-max are required (deg)");
+  p.repetitions = static_cast<int>(a.integer("--reps", 0));
+  p.side = qs(a.value("--side").value_or("either"));
+  ClinicalContext c(a, {}, true);
+  c.store().addProtocol(p);
+  err << "protocol add: " << ss(p.name) << "\n";
+  return 0;
+}
+
+int protocolList(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
+  const Args a("protocol list", rest, withDb({{"--json", false}}));
+  if (a.help()) return out << kProtocolHelp, 0;
+  ClinicalContext c(a, {}, true);
+  QJsonArray list;
+  for (const storage::Protocol& p : c.store().listProtocols()) {
+    if (!a.flag("--json"))
+      out << ss(p.name) << "\t" << ss(p.angleKey) << "\t" << p.targetMinDeg << "\t"
+          << p.targetMaxDeg << "\t" << p.repetitions << "\t" << ss(p.side) << "\n";
+    list.append(QJsonObject{{"name", p.name},
+                            {"angle", p.angleKey},
+                            {"target_min_deg", p.targetMinDeg},
+                            {"target_max_deg", p.targetMaxDeg},
+                            {"repetitions", p.repetitions},
+                            {"side", p.side}});
+  }
+  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  return 0;
+}
+
+template <typename Table>
+int dispatchSub(const char* command, std::string_view help, const std::vector<std::string>& args,
+                std::ostream& out, std::ostream& err, const Table& table) {
+  const auto [sub, rest] = split(args);
+  if (sub.empty()) {
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) return out << help, 0;
+    throw UsageError(command, "missing subcommand");
+  }
+  for (const auto& [name, fn] : table)
+    if (sub == name) return fn(rest, out, err);
+  throw UsageError(command, "unknown subcommand '" + sub + "'");
+}
+
+using Fn = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+
+}  // namespace
+
+int dbCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  static const std::vector<std::pair<std::string, Fn>> table{
+      {"init", dbInit}, {"check", dbCheck}, {"migrate", dbMigrate}, {"backup", dbBackup}};
+  return dispatchSub("db", kDbHelp, args, out, err, table);
+}
+
+int userCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  static const std::vector<std::pair<std::string, Fn>> table{{"add", userAdd}, {"list", userList}};
+  return dispatchSub("user", kUserHelp, args, out, err, table);
+}
+
+int patientCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  static const std::vector<std::pair<std::string, Fn>> table{
+      {"add", patientAdd}, {"list", patientList}, {"programme", patientProgramme}};
+  return dispatchSub("patient", kPatientHelp, args, out, err, table);
+}
+
+int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  static const std::vector<std::pair<std::string, Fn>> table{
+      {"add", protocolAdd}, {"list", protocolList}, {"assign", protocolAssign}};
+  return dispatchSub("protocol", kProtocolHelp, args, out, err, table);
+}
+
+}  // namespace armtrack::cli

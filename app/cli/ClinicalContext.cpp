@@ -1,0 +1,51 @@
+#include "app/cli/ClinicalContext.h"
+
+#include <termios.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <iostream>
+#include <stdexcept>
+
+namespace armtrack::cli {
+
+ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options options, bool signIn) {
+  if (!QCoreApplication::instance()) {
+    static int argc = 1;
+    static char name[] = "armtrack-cli";
+    static char* argv[] = {name, nullptr};
+    m_app = std::make_unique<QCoreApplication>(argc, argv);
+  }
+  // The default database lives in ~/.local/share/ArmTrack/ArmTrack/armtrack.db on Linux.
+  QCoreApplication::setOrganizationName("ArmTrack");
+  QCoreApplication::setApplicationName("ArmTrack");
+  std::string user;
+  if (signIn) user = a.required("--user");  // a usage error before any file is touched
+  const auto url = a.value("--db") ? storage::DatabaseUrl::parse(qs(*a.value("--db")))
+                                   : storage::DatabaseUrl::defaultLocation();
+  m_db = std::make_unique<storage::Database>(url, options);
+  m_store = std::make_unique<storage::ClinicalStore>(*m_db);
+  if (signIn) m_store->signIn(qs(user), passwordFromUser("account '" + user + "'"));
+}
+
+std::string passwordFromUser(const std::string& what) {
+  if (const char* env = std::getenv("ARMTRACK_PASSWORD")) return env;
+  if (!::isatty(STDIN_FILENO))
+    throw std::runtime_error("no password for " + what +
+                             ": set ARMTRACK_PASSWORD or run on a terminal to be asked");
+  std::cerr << "password for " << what << ": " << std::flush;
+  termios old{};
+  const bool hide = ::tcgetattr(STDIN_FILENO, &old) == 0;
+  if (hide) {
+    termios quiet = old;
+    quiet.c_lflag &= ~static_cast<tcflag_t>(ECHO);
+    ::tcsetattr(STDIN_FILENO, TCSANOW, &quiet);
+  }
+  std::string password;
+  std::getline(std::cin, password);
+  if (hide) ::tcsetattr(STDIN_FILENO, TCSANOW, &old);
+  std::cerr << "\n";
+  return password;
+}
+
+}  // namespace armtrack::cli

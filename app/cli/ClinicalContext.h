@@ -1,0 +1,54 @@
+// Internal to the clinical-records commands: opening the database and signing in.
+#pragma once
+
+#include <QCoreApplication>
+#include <QJsonDocument>
+#include <memory>
+#include <ostream>
+#include <string>
+
+#include "app/cli/Args.h"
+#include "core/storage/ClinicalStore.h"
+
+namespace armtrack::cli {
+
+/// specs plus the options every database command accepts (--db, --user).
+inline std::vector<OptionSpec> withDb(std::vector<OptionSpec> specs) {
+  specs.push_back({"--db", true});
+  specs.push_back({"--user", true});
+  return specs;
+}
+
+/// An open database with its signed-in store, and the QCoreApplication Qt Sql needs to load its
+/// driver when the caller has none.
+class ClinicalContext {
+ public:
+  /// Opens --db with options; with signIn, signs in as --user (password: passwordFromUser()).
+  ClinicalContext(const Args& a, storage::Database::Options options, bool signIn);
+  storage::Database& db() { return *m_db; }
+  storage::ClinicalStore& store() { return *m_store; }
+
+ private:
+  std::unique_ptr<QCoreApplication> m_app;
+  std::unique_ptr<storage::Database> m_db;
+  std::unique_ptr<storage::ClinicalStore> m_store;
+};
+
+/// ARMTRACK_PASSWORD, else a prompt on the terminal (echo off) when standard input is one; throws
+/// std::runtime_error saying how to give it otherwise. what names the account, for the prompt.
+std::string passwordFromUser(const std::string& what);
+
+/// Writes doc indented, for --json.
+inline void printJson(std::ostream& out, const QJsonDocument& doc) {
+  out << doc.toJson(QJsonDocument::Indented).toStdString();
+}
+
+/// QString from a std::string and back.
+inline QString qs(const std::string& s) {
+  return QString::fromStdString(s);
+}
+inline std::string ss(const QString& s) {
+  return s.toStdString();
+}
+
+}  // namespace armtrack::cli

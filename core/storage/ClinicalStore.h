@@ -1,0 +1,114 @@
+// The clinical records service: signed-in access to users, patients, protocols, sessions and
+// their recordings, with access control and the audit log (docs/storage.md).
+#pragma once
+
+#include <QString>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/ArmSample.h"
+#include "core/io/Recording.h"
+#include "core/storage/Database.h"
+#include "core/storage/Records.h"
+
+namespace armtrack::storage {
+
+/// Every read and write of the records goes through here, as the signed-in user. Access rules:
+/// administrators may do everything; therapists everything but managing accounts and reading the
+/// audit log; a home account sees and records only its own patient (another patient is reported
+/// as not found, so its existence does not leak). Exports and changes are written to the audit
+/// log. Throws StorageError. Same thread as the Database.
+class ClinicalStore {
+ public:
+  /// Wraps an open database. Sessions left in "recording" by a process of this host that no
+  /// longer runs are marked "interrupted" here (see interruptedOnOpen()).
+  explicit ClinicalStore(Database& db);
+
+  /// Creates the first administrator of an empty database; refused when any account exists.
+  void initialise(const QString& adminName, const std::string& password);
+  /// Signs in. After 3 consecutive wrong passwords each attempt must wait 2^(n-3) s (at most
+  /// 300 s) after the last failure; an early attempt is refused without checking the password.
+  /// Throws StorageError(Authentication) with the same text for an unknown name and a wrong
+  /// password.
+  const User& signIn(const QString& name, const std::string& password);
+  const User& user() const;
+  int interruptedOnOpen() const { return m_interruptedOnOpen; }
+
+  // Accounts (administrators).
+  qint64 addUser(const QString& name, Role role, const std::string& password,
+                 const QString& patientCode = {});
+  std::vector<User> listUsers();
+  void setPassword(const QString& name, const std::string& password);
+  void removeUser(const QString& name);
+
+  // Patients (create/update: administrators and therapists; delete: administrators).
+  qint64 addPatient(const Patient& patient);
+  std::vector<Patient> listPatients();
+  Patient patient(const QString& code);
+  void updatePatient(const Patient& patient);  ///< by code
+  void removePatient(const QString& code);     ///< with its sessions
+
+  // Protocols (everyone reads; administrators and therapists write).
+  qint64 addProtocol(const Protocol& protocol);
+  std::vector<Protocol> listProtocols();
+  Protocol protocol(const QString& name);
+  void updateProtocol(const Protocol& protocol);  ///< by name
+  void removeProtocol(const QString& name);
+
+  // Home programmes (assign/remove: administrators and therapists; read: as the patient).
+  void assignProtocol(const QString& patientCode, const QString& protocolName, int sessionsPerWeek,
+                      const QString& notes = {});
+  void unassignProtocol(const QString& patientCode, const QString& protocolName);
+  std::vector<ProgrammeItem> programme(const QString& patientCode);
+
+  // Sessions and recordings (ClinicalStoreSessions.cpp).
+  /// Starts a session in status "recording" owned by this process. calibrationJson is the
+  /// recording's sidecar text.
+  qint64 beginSession(const QString& patientCode, const QString& protocolName,
+                      const QString& calibrationJson, int columnsMask);
+  /// Stores samples as the session's next chunk in one transaction (a chunk is ~1 s).
+  void appendChunk(qint64 sessionId, std::span<const ArmSample> samples);
+  void finishSession(qint64 sessionId, const QString& status = kStatusComplete);
+  /// Reads a recording file (CSV and sidecar) into a new complete session, ~1 s per chunk.
+  qint64 importRecording(const std::filesystem::path& csv, const QString& patientCode,
+                         const QString& protocolName = {});
+  std::vector<SessionInfo> listSessions(const QString& patientCode);
+  SessionInfo session(qint64 sessionId);
+  void updateSessionNotes(qint64 sessionId, const QString& notes);
+  void removeSession(qint64 sessionId);
+  /// The stored recording. Throws StorageError(Corrupt) naming the session and chunk when a
+  /// chunk cannot be decoded.
+  Recording readRecording(qint64 sessionId);
+  /// Writes the stored recording in the open format (CSV + sidecar) and audits the export.
+  void exportRecording(qint64 sessionId, const std::filesystem::path& csv);
+
+  // Estimates and metrics: each save is a new version; earlier ones stay as history.
+  int saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
+                    const QByteArray& data);
+  int saveMetrics(qint64 sessionId, const QString& perAngleJson, const QString& perRepetitionJson);
+  /// The newest metrics (per-angle JSON, per-repetition JSON), if any.
+  std::optional<std::pair<QString, QString>> latestMetrics(qint64 sessionId);
+  int estimateVersions(qint64 sessionId);
+
+  // Audit log (administrators read it).
+  std::vector<AuditEntry> auditLog();
+  void audit(const QString& action, const QString& objectType, const QString& objectId,
+             const QString& detail = {});
+
+ private:
+  void require(bool allowed, const QString& what) const;
+  bool isStaff() const;
+  qint64 visiblePatientId(const QString& code);  // NotFound for invisible ones
+  SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones
+  std::optional<qint64> protocolId(const QString& name);
+  int markDeadRecordingsInterrupted();
+
+  Database& m_db;
+  std::optional<User> m_user;
+  int m_interruptedOnOpen = 0;
+};
+
+}  // namespace armtrack::storage

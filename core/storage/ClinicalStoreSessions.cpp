@@ -1,0 +1,376 @@
+// Sessions, their recordings (compressed chunks), estimates and metrics of ClinicalStore.
+#include <unistd.h>
+#include <QFile>
+#include <QSysInfo>
+#include <QTemporaryDir>
+#include <cerrno>
+#include <csignal>
+
+#include "core/storage/ChunkCodec.h"
+#include "core/storage/ClinicalStore.h"
+
+namespace armtrack::storage {
+
+namespace {
+
+using Kind = StorageError::Kind;
+
+constexpr double kChunkSeconds = 1.0;            // a chunk spans about this much time
+constexpr std::size_t kMaxChunkRows = 1u << 16;  // and never more rows than this
+const QString kCodec = "atc1-zstd";
+
+std::string text(const QString& s) {
+  return s.toStdString();
+}
+
+int maskOf(const RecordingColumns& c) {
+  return (c.upperArm ? 1 : 0) | (c.forearm ? 2 : 0) | (c.elbow ? 4 : 0) | (c.wrist ? 8 : 0) |
+         (c.camWrist ? 16 : 0) | (c.camElbow ? 32 : 0) | (c.truth ? 64 : 0) |
+         (c.estimate ? 128 : 0);
+}
+
+RecordingColumns columnsOf(int m) {
+  RecordingColumns c;
+  c.upperArm = m & 1;
+  c.forearm = m & 2;
+  c.elbow = m & 4;
+  c.wrist = m & 8;
+  c.camWrist = m & 16;
+  c.camElbow = m & 32;
+  c.truth = m & 64;
+  c.estimate = m & 128;
+  return c;
+}
+
+// The sidecar of meta as JSON text, written by core/io itself so the two never disagree.
+QString sidecarText(const RecordingMeta& meta) {
+  QTemporaryDir dir;
+  if (!dir.isValid()) throw StorageError(Kind::Io, "cannot create a temporary folder");
+  const std::string path = dir.filePath("meta.json").toStdString();
+  writeSidecar(path, meta);
+  QFile f(QString::fromStdString(path));
+  if (!f.open(QIODevice::ReadOnly)) throw StorageError(Kind::Io, "cannot read back the sidecar");
+  return QString::fromUtf8(f.readAll());
+}
+
+RecordingMeta metaFromText(const QString& json, qint64 sessionId) {
+  QTemporaryDir dir;
+  if (!dir.isValid()) throw StorageError(Kind::Io, "cannot create a temporary folder");
+  const QString path = dir.filePath("meta.json");
+  QFile f(path);
+  if (!f.open(QIODevice::WriteOnly) || f.write(json.toUtf8()) < 0)
+    throw StorageError(Kind::Io, "cannot write a temporary sidecar");
+  f.close();
+  try {
+    return readSidecar(path.toStdString());
+  } catch (const RecordingError& e) {
+    throw StorageError(Kind::Corrupt,
+                       "session " + std::to_string(sessionId) +
+                           ": its stored calibration (sidecar) is unreadable: " + e.message());
+  }
+}
+
+bool processAlive(qint64 pid) {
+  if (pid <= 0) return false;
+  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
+}
+
+}  // namespace
+
+int ClinicalStore::markDeadRecordingsInterrupted() {
+  const QString host = QSysInfo::machineHostName();
+  std::vector<qint64> dead;
+  QSqlQuery q = m_db.exec(
+      "SELECT id, recorder_host, recorder_pid FROM sessions "
+      "WHERE status = 'recording'");
+  while (q.next())
+    if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
+      dead.push_back(q.value(0).toLongLong());
+  q.finish();
+  for (qint64 id : dead) {
+    m_db.transaction([&] {
+      m_db.exec("UPDATE sessions SET status = 'interrupted' WHERE id = ?", {id});
+      m_db.exec(
+          "INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
+          "VALUES (?, 'system', 'update', 'session', ?, 'recorder died: interrupted')",
+          {utcNow(), QString::number(id)});
+    });
+  }
+  return static_cast<int>(dead.size());
+}
+
+qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& protocolName,
+                                   const QString& calibrationJson, int columnsMask) {
+  const qint64 patientId = visiblePatientId(patientCode);
+  const std::optional<qint64> protocol = protocolId(protocolName);
+  qint64 id = 0;
+  m_db.transaction([&] {
+    id = m_db.insert(
+        "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, "
+        "calibration_json, status, columns_mask, recorder_host, recorder_pid) "
+        "VALUES (?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
+        {patientId, isStaff() ? QVariant(user().id) : QVariant(),
+         protocol ? QVariant(*protocol) : QVariant(), utcNow(), calibrationJson, columnsMask,
+         QSysInfo::machineHostName(), static_cast<qint64>(::getpid())});
+    audit("create", "session", QString::number(id), "patient " + patientCode);
+  });
+  return id;
+}
+
+void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> samples) {
+  if (samples.empty()) return;
+  const SessionInfo s = visibleSession(sessionId);
+  if (s.status != kStatusRecording)
+    throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " +
+                                        text(s.status) + ", not recording");
+  for (std::size_t i = 1; i < samples.size(); ++i)
+    if (!(samples[i].t >= samples[i - 1].t))
+      throw StorageError(Kind::Usage, "samples must be in time order");
+  const std::string frame = ChunkCodec::encode(samples);
+  qint64 imu = 0;
+  for (const ArmSample& a : samples) imu += a.hasImu() ? 1 : 0;
+  m_db.transaction([&] {
+    QSqlQuery last = m_db.exec(
+        "SELECT seq, t_last FROM recording_chunks WHERE session_id = ? "
+        "ORDER BY seq DESC LIMIT 1",
+        {sessionId});
+    int seq = 0;
+    if (last.next()) {
+      seq = last.value(0).toInt() + 1;
+      if (samples.front().t < last.value(1).toDouble())
+        throw StorageError(Kind::Usage, "a chunk may not start before the previous one ends");
+    }
+    last.finish();
+    m_db.exec(
+        "INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
+        "data) VALUES (?, ?, ?, ?, ?, ?, ?)",
+        {sessionId, seq, samples.front().t, samples.back().t, static_cast<qint64>(samples.size()),
+         kCodec, QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
+    m_db.exec(
+        "UPDATE sessions SET sample_rows = sample_rows + ?, imu_samples = imu_samples + ?, "
+        "duration_s = ? - (SELECT t_first FROM recording_chunks WHERE session_id = ? AND "
+        "seq = 0) WHERE id = ?",
+        {static_cast<qint64>(samples.size()), imu, samples.back().t, sessionId, sessionId});
+  });
+}
+
+void ClinicalStore::finishSession(qint64 sessionId, const QString& status) {
+  visibleSession(sessionId);
+  if (status != kStatusComplete && status != kStatusInterrupted)
+    throw StorageError(Kind::Usage, "a session finishes as complete or interrupted");
+  m_db.exec("UPDATE sessions SET status = ?, recorder_pid = NULL WHERE id = ?",
+            {status, sessionId});
+}
+
+qint64 ClinicalStore::importRecording(const std::filesystem::path& csv, const QString& patientCode,
+                                      const QString& protocolName) {
+  visiblePatientId(patientCode);  // refuse before reading a large file
+  RecordingReader reader(csv);    // throws RecordingError naming file:line:column
+  const qint64 id =
+      beginSession(patientCode, protocolName, sidecarText(reader.meta()), maskOf(reader.columns()));
+  try {
+    std::vector<ArmSample> chunk;
+    ArmSample sample;
+    while (reader.next(sample)) {
+      if (!chunk.empty() &&
+          (sample.t - chunk.front().t >= kChunkSeconds || chunk.size() >= kMaxChunkRows)) {
+        appendChunk(id, chunk);
+        chunk.clear();
+      }
+      chunk.push_back(sample);
+    }
+    appendChunk(id, chunk);
+  } catch (...) {
+    // An import is all or nothing: a malformed row or a full disk leaves no partial session. If
+    // even the removal fails, the session is at least not left "recording".
+    try {
+      m_db.transaction([&] {
+        m_db.exec("DELETE FROM sessions WHERE id = ?", {id});
+        audit("delete", "session", QString::number(id), "import failed");
+      });
+    } catch (...) {
+      try {
+        finishSession(id, kStatusInterrupted);
+      } catch (...) {
+      }
+    }
+    throw;
+  }
+  finishSession(id, kStatusComplete);
+  return id;
+}
+
+SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
+  QSqlQuery q = m_db.exec(
+      "SELECT s.id, s.patient_id, p.code, s.therapist_id, pr.name, s.started_at, s.duration_s, "
+      "s.devices_json, s.calibration_json, s.filter_json, s.notes, s.status, s.columns_mask, "
+      "s.sample_rows, s.imu_samples FROM sessions s JOIN patients p ON p.id = s.patient_id "
+      "LEFT JOIN protocols pr ON pr.id = s.protocol_id WHERE s.id = ?",
+      {sessionId});
+  const bool found = q.next();
+  if (!found || (user().role == Role::Home && user().patientId != q.value(1).toLongLong()))
+    throw StorageError(Kind::NotFound, "unknown session " + std::to_string(sessionId) +
+                                           ": see 'session list --patient CODE'");
+  SessionInfo s;
+  s.id = q.value(0).toLongLong();
+  s.patientId = q.value(1).toLongLong();
+  s.patientCode = q.value(2).toString();
+  if (!q.value(3).isNull()) s.therapistId = q.value(3).toLongLong();
+  s.protocolName = q.value(4).toString();
+  s.startedAt = q.value(5).toString();
+  s.durationS = q.value(6).toDouble();
+  s.devicesJson = q.value(7).toString();
+  s.calibrationJson = q.value(8).toString();
+  s.filterJson = q.value(9).toString();
+  s.notes = q.value(10).toString();
+  s.status = q.value(11).toString();
+  s.columnsMask = q.value(12).toInt();
+  s.sampleRows = q.value(13).toLongLong();
+  s.imuSamples = q.value(14).toLongLong();
+  q.finish();
+  QSqlQuery c = m_db.exec(
+      "SELECT count(*), coalesce(sum(length(data)), 0) FROM recording_chunks "
+      "WHERE session_id = ?",
+      {sessionId});
+  if (c.next()) {
+    s.chunks = c.value(0).toLongLong();
+    s.storedBytes = c.value(1).toLongLong();
+  }
+  return s;
+}
+
+std::vector<SessionInfo> ClinicalStore::listSessions(const QString& patientCode) {
+  const qint64 patientId = visiblePatientId(patientCode);
+  std::vector<qint64> ids;
+  QSqlQuery q = m_db.exec("SELECT id FROM sessions WHERE patient_id = ? ORDER BY started_at, id",
+                          {patientId});
+  while (q.next()) ids.push_back(q.value(0).toLongLong());
+  q.finish();
+  std::vector<SessionInfo> sessions;
+  for (qint64 id : ids) sessions.push_back(visibleSession(id));
+  return sessions;
+}
+
+SessionInfo ClinicalStore::session(qint64 sessionId) {
+  return visibleSession(sessionId);
+}
+
+void ClinicalStore::updateSessionNotes(qint64 sessionId, const QString& notes) {
+  require(isStaff(), "change session notes");
+  visibleSession(sessionId);
+  m_db.transaction([&] {
+    m_db.exec("UPDATE sessions SET notes = ? WHERE id = ?", {notes, sessionId});
+    audit("update", "session", QString::number(sessionId), "notes");
+  });
+}
+
+void ClinicalStore::removeSession(qint64 sessionId) {
+  require(user().role == Role::Admin, "remove sessions");
+  visibleSession(sessionId);
+  m_db.transaction([&] {
+    m_db.exec("DELETE FROM sessions WHERE id = ?", {sessionId});
+    audit("delete", "session", QString::number(sessionId));
+  });
+}
+
+Recording ClinicalStore::readRecording(qint64 sessionId) {
+  const SessionInfo s = visibleSession(sessionId);
+  Recording rec;
+  rec.meta = metaFromText(s.calibrationJson, sessionId);
+  rec.samples.reserve(static_cast<std::size_t>(s.sampleRows));
+  QSqlQuery q = m_db.exec(
+      "SELECT seq, row_count, codec, data FROM recording_chunks "
+      "WHERE session_id = ? ORDER BY seq",
+      {sessionId});
+  int expectedSeq = 0;
+  while (q.next()) {
+    const int seq = q.value(0).toInt();
+    const std::string where =
+        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(seq) + ": ";
+    if (seq != expectedSeq)
+      throw StorageError(Kind::Corrupt,
+                         where + "chunk " + std::to_string(expectedSeq) + " is missing");
+    ++expectedSeq;
+    if (q.value(2).toString() != kCodec)
+      throw StorageError(Kind::Corrupt,
+                         where + "unknown codec '" + text(q.value(2).toString()) + "'");
+    const QByteArray blob = q.value(3).toByteArray();
+    try {
+      auto samples =
+          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong());
+      if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
+        throw std::runtime_error("starts before the previous chunk ends");
+      rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
+    } catch (const std::runtime_error& e) {
+      throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
+    }
+  }
+  if (static_cast<qint64>(rec.samples.size()) != s.sampleRows)
+    throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
+                                          std::to_string(rec.samples.size()) + " rows, " +
+                                          "the session says " + std::to_string(s.sampleRows));
+  return rec;
+}
+
+void ClinicalStore::exportRecording(qint64 sessionId, const std::filesystem::path& csv) {
+  const SessionInfo s = visibleSession(sessionId);
+  const Recording rec = readRecording(sessionId);
+  {
+    RecordingWriter writer(csv, rec.meta, columnsOf(s.columnsMask));
+    for (const ArmSample& sample : rec.samples) writer.append(sample);
+    writer.close();
+  }
+  audit("export", "session", QString::number(sessionId), "recording");
+}
+
+int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
+                                 const QByteArray& data) {
+  require(isStaff(), "store estimates");
+  visibleSession(sessionId);
+  int version = 0;
+  m_db.transaction([&] {
+    version = estimateVersions(sessionId) + 1;
+    m_db.exec(
+        "INSERT INTO estimates (session_id, version, created_at, params_json, codec, data) "
+        "VALUES (?, ?, ?, ?, ?, ?)",
+        {sessionId, version, utcNow(), paramsJson, codec, data});
+  });
+  return version;
+}
+
+int ClinicalStore::estimateVersions(qint64 sessionId) {
+  visibleSession(sessionId);
+  QSqlQuery q = m_db.exec("SELECT coalesce(max(version), 0) FROM estimates WHERE session_id = ?",
+                          {sessionId});
+  return q.next() ? q.value(0).toInt() : 0;
+}
+
+int ClinicalStore::saveMetrics(qint64 sessionId, const QString& perAngleJson,
+                               const QString& perRepetitionJson) {
+  require(isStaff(), "store metrics");
+  visibleSession(sessionId);
+  int version = 0;
+  m_db.transaction([&] {
+    QSqlQuery q = m_db.exec("SELECT coalesce(max(version), 0) FROM metrics WHERE session_id = ?",
+                            {sessionId});
+    version = (q.next() ? q.value(0).toInt() : 0) + 1;
+    q.finish();
+    m_db.exec(
+        "INSERT INTO metrics (session_id, version, created_at, per_angle_json, "
+        "per_repetition_json) VALUES (?, ?, ?, ?, ?)",
+        {sessionId, version, utcNow(), perAngleJson, perRepetitionJson});
+  });
+  return version;
+}
+
+std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 sessionId) {
+  visibleSession(sessionId);
+  QSqlQuery q = m_db.exec(
+      "SELECT per_angle_json, per_repetition_json FROM metrics WHERE "
+      "session_id = ? ORDER BY version DESC LIMIT 1",
+      {sessionId});
+  if (!q.next()) return std::nullopt;
+  return std::make_pair(q.value(0).toString(), q.value(1).toString());
+}
+
+}  // namespace armtrack::storage

@@ -1,0 +1,224 @@
+#include "core/storage/Database.h"
+
+#include <QAtomicInt>
+#include <QDateTime>
+#include <QFile>
+#include <QFileInfo>
+#include <QSqlError>
+#include <QSqlRecord>
+
+namespace armtrack::storage {
+
+namespace {
+
+using Kind = StorageError::Kind;
+
+QString nextConnectionName() {
+  static QAtomicInt counter;
+  return QStringLiteral("armtrack-storage-%1").arg(counter.fetchAndAddRelaxed(1));
+}
+
+// Runs PRAGMA integrity_check on an open connection; "ok" or the problems, one a line.
+QString runIntegrityCheck(QSqlDatabase& db) {
+  QSqlQuery q(db);
+  if (!q.exec("PRAGMA integrity_check")) return q.lastError().text();
+  QStringList problems;
+  while (q.next()) problems << q.value(0).toString();
+  return problems.join('\n');
+}
+
+}  // namespace
+
+QString utcNow() {
+  return QDateTime::currentDateTimeUtc().toString(Qt::ISODateWithMs);
+}
+
+Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
+  m_dialect.engine = url.engine;
+  if (url.engine == DatabaseUrl::Engine::Postgres)
+    throw StorageError(Kind::Unsupported,
+                       ("PostgreSQL (" + url.display() +
+                        ") is not yet supported by this build; use a SQLite file for now "
+                        "(--db PATH or --db sqlite:PATH)")
+                           .toStdString());
+  checkFileBeforeOpening(options.create);
+
+  m_connection = nextConnectionName();
+  m_db = QSqlDatabase::addDatabase("QSQLITE", m_connection);
+  if (!m_db.isValid())
+    fail(Kind::Io, "the Qt SQLite driver is not installed", "install libqt6sql6-sqlite");
+  m_db.setDatabaseName(url.path);
+  m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
+  if (!m_db.open()) fail(Kind::Io, "cannot open", m_db.lastError().text());
+  exec("PRAGMA foreign_keys = ON");
+  // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
+  // (only a power cut may lose the last transactions), at one fsync per checkpoint.
+  {
+    QSqlQuery wal = exec("PRAGMA journal_mode = WAL");
+    if (!wal.next() || wal.value(0).toString().toLower() != "wal")
+      fail(Kind::Io, "cannot switch to write-ahead logging", "is the folder writable?");
+  }
+  exec("PRAGMA synchronous = NORMAL");
+
+  m_version = readVersion();
+  const int latest = latestSchemaVersion();
+  if (m_version > latest)
+    throw StorageError(
+        Kind::NewerSchema,
+        ("database '" + url.display() + "' has schema version " + QString::number(m_version) +
+         ", newer than this ArmTrack knows (" + QString::number(latest) +
+         "); update ArmTrack, or open a backup made by this version")
+            .toStdString());
+  if (m_version < latest && m_version > 0 && !options.migrate)
+    throw StorageError(
+        Kind::OlderSchema,
+        ("database '" + url.display() + "' has schema version " + QString::number(m_version) +
+         "; this ArmTrack needs " + QString::number(latest) +
+         ": back it up (db backup) and run 'armtrack-cli db migrate'")
+            .toStdString());
+  if (m_version == 0 && !options.create)
+    fail(Kind::Corrupt, "is not an ArmTrack database",
+         "it has no schema_version table; create one with 'armtrack-cli db init'");
+  for (const MigrationStep& step : migrationSteps())
+    if (step.toVersion > m_version) applyStep(step);
+}
+
+Database::~Database() {
+  m_db.close();
+  m_db = QSqlDatabase();
+  if (!m_connection.isEmpty()) QSqlDatabase::removeDatabase(m_connection);
+}
+
+void Database::checkFileBeforeOpening(bool create) {
+  const QString& path = m_url.path;
+  const QFileInfo info(path);
+  if (!info.exists()) {
+    if (create) return;
+    throw StorageError(Kind::NotFound, ("no database at '" + path +
+                                        "': create one with 'armtrack-cli db init --db " + path +
+                                        " --admin NAME', or check --db")
+                                           .toStdString());
+  }
+  if (info.isDir())
+    throw StorageError(Kind::Usage,
+                       ("'" + path + "' is a folder, not a database file").toStdString());
+  if (info.size() == 0) {
+    if (create) return;
+    fail(Kind::Corrupt, "is empty", "create the database with 'armtrack-cli db init'");
+  }
+  QFile f(path);
+  if (!f.open(QIODevice::ReadOnly))
+    throw StorageError(Kind::Io, ("cannot read '" + path + "': " + f.errorString()).toStdString());
+  const QByteArray header = f.read(16);
+  f.close();
+  if (header != QByteArray("SQLite format 3\0", 16))
+    fail(Kind::Corrupt, "is not a SQLite database (it may be damaged or another kind of file)",
+         "it was left untouched; restore a backup or pass another --db");
+  // The check runs on a read-only connection so a damaged file is never written to.
+  const QString name = nextConnectionName();
+  QString verdict;
+  {
+    QSqlDatabase ro = QSqlDatabase::addDatabase("QSQLITE", name);
+    ro.setDatabaseName(path);
+    ro.setConnectOptions("QSQLITE_OPEN_READONLY;QSQLITE_BUSY_TIMEOUT=5000");
+    verdict = ro.open() ? runIntegrityCheck(ro) : ro.lastError().text();
+    ro.close();
+  }
+  QSqlDatabase::removeDatabase(name);
+  if (verdict != "ok")
+    fail(Kind::Corrupt, "failed its integrity check",
+         verdict.left(400) + "\nit was left untouched; restore a backup (db backup)");
+}
+
+int Database::readVersion() {
+  QSqlQuery q = exec(
+      "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = "
+      "'schema_version'");
+  if (!q.next() || q.value(0).toInt() == 0) {
+    QSqlQuery any = exec("SELECT count(*) FROM sqlite_master");
+    if (any.next() && any.value(0).toInt() > 0)
+      fail(Kind::Corrupt, "is a SQLite database but not ArmTrack's",
+           "it has tables but no schema_version; pass another --db");
+    return 0;
+  }
+  QSqlQuery v = exec("SELECT max(version) FROM schema_version");
+  return v.next() ? v.value(0).toInt() : 0;
+}
+
+void Database::applyStep(const MigrationStep& step) {
+  transaction([&] {
+    for (const QString& s : step.statements) exec(m_dialect.expand(s));
+    exec("DELETE FROM schema_version");
+    exec("INSERT INTO schema_version (version) VALUES (?)", {step.toVersion});
+  });
+  m_version = step.toVersion;
+  ++m_applied;
+}
+
+QString Database::integrityCheck() {
+  return runIntegrityCheck(m_db);
+}
+
+void Database::backup(const QString& outPath) {
+  if (QFileInfo::exists(outPath))
+    throw StorageError(Kind::Exists,
+                       ("'" + outPath + "' exists; a backup never replaces a file").toStdString());
+  exec("VACUUM INTO ?", {outPath});
+}
+
+QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
+  QSqlQuery q(m_db);
+  q.setForwardOnly(true);
+  if (!q.prepare(sql)) fail(Kind::Io, "refused a statement", q.lastError().text());
+  for (const QVariant& b : binds) {
+    // An empty QString() would bind as NULL; text columns mean "" by it.
+    if (b.typeId() == QMetaType::QString && b.toString().isNull())
+      q.addBindValue(QString(""));
+    else
+      q.addBindValue(b);
+  }
+  if (!q.exec()) {
+    QString text = q.lastError().text();
+    if (text.contains("database is locked", Qt::CaseInsensitive))
+      text +=
+          " (another program has been writing to it for more than 5 s; try again, or close "
+          "the other program)";
+    if (text.contains("disk is full", Qt::CaseInsensitive) ||
+        text.contains("disk I/O error", Qt::CaseInsensitive))
+      text += " (free some space: what was committed before is intact)";
+    const Kind kind =
+        text.contains("UNIQUE constraint", Qt::CaseInsensitive) ? Kind::Exists : Kind::Io;
+    fail(kind, "refused a statement", text);
+  }
+  return q;
+}
+
+qint64 Database::insert(const QString& sql, const QVariantList& binds) {
+  QSqlQuery q = exec(sql, binds);
+  const QVariant id = q.lastInsertId();
+  if (!id.isValid()) fail(Kind::Io, "gave no id for a new row", sql.section(' ', 0, 2));
+  return id.toLongLong();
+}
+
+void Database::transaction(const std::function<void()>& body) {
+  if (!m_db.transaction()) fail(Kind::Io, "cannot start a transaction", m_db.lastError().text());
+  try {
+    body();
+  } catch (...) {
+    m_db.rollback();
+    throw;
+  }
+  if (!m_db.commit()) {
+    const QString why = m_db.lastError().text();
+    m_db.rollback();
+    fail(Kind::Io, "cannot commit", why);
+  }
+}
+
+void Database::fail(StorageError::Kind kind, const QString& what, const QString& detail) {
+  throw StorageError(kind, ("database '" + m_url.display() + "' " + what +
+                            (detail.isEmpty() ? QString() : ": " + detail))
+                               .toStdString());
+}
+
+}  // namespace armtrack::storage

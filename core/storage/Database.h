@@ -1,0 +1,71 @@
+// One open connection to the clinical records: opening checks, schema version, migrations,
+// backup, and small query helpers that turn engine errors into StorageError.
+#pragma once
+
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QString>
+#include <QVariant>
+#include <functional>
+
+#include "core/storage/DatabaseUrl.h"
+#include "core/storage/Schema.h"
+#include "core/storage/StorageError.h"
+
+namespace armtrack::storage {
+
+/// A connection, opened with every check of docs/storage.md ("Opening a database"). Not
+/// copyable; use from the thread that opened it (a Qt Sql rule).
+class Database {
+ public:
+  struct Options {
+    bool create = false;   ///< create the file and the schema when there is none
+    bool migrate = false;  ///< bring an older schema up to date (otherwise refused)
+  };
+
+  /// Opens url. Throws StorageError: Unsupported (PostgreSQL for now), NotFound (no file and not
+  /// create), Corrupt (not SQLite, or integrity_check fails: the file is left untouched),
+  /// NewerSchema, OlderSchema (unless migrate), Io.
+  Database(const DatabaseUrl& url, Options options);
+  ~Database();
+  Database(const Database&) = delete;
+  Database& operator=(const Database&) = delete;
+
+  const DatabaseUrl& url() const { return m_url; }
+  const SqlDialect& dialect() const { return m_dialect; }
+  int schemaVersion() const { return m_version; }
+  /// The migration steps applied while opening (0 when the schema was current).
+  int migrationsApplied() const { return m_applied; }
+
+  /// Runs PRAGMA integrity_check (SQLite) and returns "ok" or the problems found.
+  QString integrityCheck();
+  /// A consistent copy of the whole database into a new file (SQLite: VACUUM INTO), while others
+  /// may keep writing. Throws StorageError(Exists) when outPath exists.
+  void backup(const QString& outPath);
+
+  /// Prepares and runs sql with positional (?) bindings. Throws StorageError(Io) naming the
+  /// database and the engine's message (never the bound values: they may be patient data).
+  QSqlQuery exec(const QString& sql, const QVariantList& binds = {});
+  /// exec for an INSERT into a table with an {id} key; returns the new id.
+  qint64 insert(const QString& sql, const QVariantList& binds);
+  /// Runs body in a transaction: committed when body returns, rolled back when it throws.
+  void transaction(const std::function<void()>& body);
+
+ private:
+  void checkFileBeforeOpening(bool create);
+  int readVersion();
+  void applyStep(const MigrationStep& step);
+  [[noreturn]] void fail(StorageError::Kind kind, const QString& what, const QString& detail);
+
+  DatabaseUrl m_url;
+  SqlDialect m_dialect;
+  QString m_connection;
+  QSqlDatabase m_db;
+  int m_version = 0;
+  int m_applied = 0;
+};
+
+/// Now as ISO 8601 UTC text with milliseconds, the form every time column holds.
+QString utcNow();
+
+}  // namespace armtrack::storage

@@ -1,0 +1,86 @@
+// The rows of the clinical records as plain values (docs/storage.md, "Schema").
+#pragma once
+
+#include <QString>
+#include <cstdint>
+#include <optional>
+
+namespace armtrack::storage {
+
+enum class Role { Admin, Therapist, Home };
+QString roleName(Role role);  ///< "admin", "therapist", "home"
+std::optional<Role> parseRole(const QString& name);
+
+struct User {
+  qint64 id = 0;
+  QString name;
+  Role role = Role::Therapist;
+  std::optional<qint64> patientId;  ///< home accounts only: the one patient they may see
+  int failedAttempts = 0;           ///< consecutive wrong passwords
+};
+
+struct Patient {
+  qint64 id = 0;
+  QString code;  ///< unique, what the clinic calls the patient in files and logs
+  QString name;
+  QString birthDate;     ///< YYYY-MM-DD
+  QString sex;           ///< "f", "m" or "x"
+  QString affectedSide;  ///< "left", "right", "both" or "none"
+  QString diagnosis;
+  QString segmentLengthsJson = "{}";  ///< measured lengths, e.g. {"upper_arm_m": 0.30}
+  QString notes;
+};
+
+struct Protocol {
+  qint64 id = 0;
+  QString name;             ///< unique
+  QString angleKey;         ///< the primary clinical angle, e.g. "shoulder_flexion"
+  double targetMinDeg = 0;  ///< deg
+  double targetMaxDeg = 0;  ///< deg
+  int repetitions = 0;
+  QString side = "either";  ///< "left", "right" or "either"
+};
+
+/// One protocol of a patient's home programme.
+struct ProgrammeItem {
+  QString protocolName;
+  int sessionsPerWeek = 0;
+  QString notes;
+};
+
+/// Status of a session's recording.
+inline constexpr const char* kStatusRecording = "recording";
+inline constexpr const char* kStatusComplete = "complete";
+inline constexpr const char* kStatusInterrupted = "interrupted";
+
+struct SessionInfo {
+  qint64 id = 0;
+  qint64 patientId = 0;
+  QString patientCode;
+  std::optional<qint64> therapistId;
+  QString protocolName;  ///< "" without a protocol
+  QString startedAt;     ///< ISO 8601 UTC
+  double durationS = 0;  ///< s, from the first to the last stored sample
+  QString devicesJson = "{}";
+  QString calibrationJson = "{}";  ///< the recording's sidecar (arm geometry, gravity, camera)
+  QString filterJson = "{}";
+  QString notes;
+  QString status;         ///< kStatusRecording, kStatusComplete or kStatusInterrupted
+  int columnsMask = 0;    ///< the recording format's column groups (bit order of ChunkCodec)
+  qint64 sampleRows = 0;  ///< rows stored
+  qint64 imuSamples = 0;  ///< rows that carry an IMU reading
+  qint64 chunks = 0;
+  qint64 storedBytes = 0;  ///< compressed chunk bytes
+};
+
+struct AuditEntry {
+  qint64 id = 0;
+  QString at;  ///< ISO 8601 UTC
+  QString userName;
+  QString action;      ///< e.g. "export", "create", "update", "delete", "view", "sign-in-failed"
+  QString objectType;  ///< "patient", "session", "user", "protocol", "database"
+  QString objectId;    ///< the code, id or name
+  QString detail;      ///< never patient data beyond identifiers
+};
+
+}  // namespace armtrack::storage
