@@ -156,12 +156,12 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
   EXPECT_THROW(f.store->exportRecording(id, f.file("out.csv")), StorageError);
 }
 
-// Real sensor data: the BROAD trials (CC-BY-4.0, shared/data/broad) hold one IMU at 286 Hz with
-// 7 significant digits. Stored as an upper-arm IMU; skipped when the trials are not at hand.
+// Real sensor data: the BROAD trials (CC-BY-4.0, tests/data/broad, unpacked by the build) hold
+// one IMU at 286 Hz with 7 significant digits. Stored as an upper-arm IMU.
 TEST(StoredRecording, CompressionOfARealImuRecording) {
   const std::filesystem::path broad =
-      std::filesystem::path(ARMTRACK_SHARED_DIR) / "data/broad/07_undisturbed_fast_rotation_B.csv";
-  if (!std::filesystem::exists(broad)) GTEST_SKIP() << broad << " not found";
+      std::filesystem::path(ARMTRACK_BROAD_DIR) / "07_undisturbed_fast_rotation_B.csv";
+  ASSERT_TRUE(std::filesystem::exists(broad)) << broad << " not found";
   std::ifstream in(broad);
   std::string line;
   std::getline(in, line);
