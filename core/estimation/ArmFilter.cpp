@@ -320,6 +320,7 @@ class ArmFilter final : public JointEstimator {
     const double tPrior = m_t, floorPrior = m_headingFloor;
     predict(s.t - m_t);
     m_t = s.t;
+    m_prior.reset();
     BlockList blocks = gather(clean);
     const Vec xBefore = m_x;
     const Mat pBefore = m_P;
@@ -443,9 +444,8 @@ class ArmFilter final : public JointEstimator {
     const bool anyPosition = m_p.positionGate > 0.0 && (b.has(kElbow) || b.has(kWrist));
     if (!anyCamera && !anyPosition) return true;
     const bool startup = m_t - m_t0 < m_p.startupSeconds;
-    Eigen::Matrix<double, kModelRows, 1> all;
-    Eigen::Matrix<double, kModelRows, kBase> allJac;
-    predictBaseWithJacobian(m_p, m_x.template head<kBase>(), all, allJac);
+    const Eigen::Matrix<double, kModelRows, 1>& all = priorPrediction().readings;
+    const Eigen::Matrix<double, kModelRows, kBase>& allJac = priorPrediction().jacobian;
     for (int i = b.count - 1; i >= 0; --i) {
       const int blk = b.block[i];
       if (blk == kElbow || blk == kWrist) {
@@ -819,6 +819,21 @@ class ArmFilter final : public JointEstimator {
     m_P += headingShortfall(u) * u * u.transpose();
   }
 
+  // The six blocks' predicted readings and their Jacobian at the predicted state, which the
+  // optical gate and heading matching both read before the update: computed once per sample.
+  struct Prediction {
+    Eigen::Matrix<double, kModelRows, 1> readings;
+    Eigen::Matrix<double, kModelRows, kBase> jacobian;
+  };
+  const Prediction& priorPrediction() {
+    if (!m_prior) {
+      m_prior.emplace();
+      predictBaseWithJacobian(m_p, m_x.template head<kBase>(), m_prior->readings,
+                              m_prior->jacobian);
+    }
+    return *m_prior;
+  }
+
   // Heading matching (covariance matching along the one direction the IMUs cannot see): the
   // turn about the vertical that the optical rows ask for at the predicted state, by weighted
   // least squares, less what their noise alone would give, averaged over headingMatchTime, is
@@ -831,9 +846,8 @@ class ArmFilter final : public JointEstimator {
     if (!(m_p.headingMatchTime > 0.0)) return true;
     const Vec u = headingAngles(m_x);
     const Vec15 u15 = u.template head<kBase>();
-    Eigen::Matrix<double, kModelRows, 1> all;
-    Eigen::Matrix<double, kModelRows, kBase> allJac;
-    predictBaseWithJacobian(m_p, m_x.template head<kBase>(), all, allJac);
+    const Eigen::Matrix<double, kModelRows, 1>& all = priorPrediction().readings;
+    const Eigen::Matrix<double, kModelRows, kBase>& allJac = priorPrediction().jacobian;
     double info = 0.0, score = 0.0;
     for (int i = 0; i < b.count; ++i) {
       const int blk = b.block[i];
@@ -1079,6 +1093,7 @@ class ArmFilter final : public JointEstimator {
   double m_turnNoise = 0.0;     // ... and of its variance from optical noise alone (rad^2)
   double m_lastMatchT = -std::numeric_limits<double>::infinity();
   static constexpr double kMaxHeadingMatch = (60.0 * kDeg) * (60.0 * kDeg);
+  std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
