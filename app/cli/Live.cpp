@@ -17,10 +17,12 @@
 #include <thread>
 
 #include "app/cli/Args.h"
+#include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/io/Recording.h"
 #include "core/session/Session.h"
+#include "core/storage/DatabaseRecordingSink.h"
 #include "devices/api/DeviceThread.h"
 #include "devices/api/Options.h"
 
@@ -38,6 +40,8 @@ constexpr const char* kRecordHelp =
     R"(usage: armtrack-cli record --device NAME[:OPTIONS] [--device ...] --duration S --out FILE.csv
                           [--plugins DIR] [--filter ekf|ukf] [--no-estimate] [--side right|left]
                           [--latency-window S] [--quiet] [--overwrite]
+       armtrack-cli record --device ... --duration S --db URL --user NAME --patient CODE
+                          [--protocol NAME] [other options as above]
 
 Runs a live session and records it in the open format (docs/recording-format.md): the raw
 samples in time order, the angles estimated live (est_th*) and, with the virtual arm, the true
@@ -48,6 +52,12 @@ the session early and keeps everything recorded so far. An existing FILE.csv (or
 only replaced with --overwrite, and a file another recording is being written to never is.
 The row count printed is what the file holds; if rows could not be written (a full disk), the
 number lost is printed and the exit status is 1.
+
+With --db the session is recorded straight into the clinical records (docs/storage.md) as a new
+session of patient CODE, committed about every second: if the process is killed, the session
+keeps all but the last second and is marked interrupted the next time the database is opened.
+The password of NAME comes from ARMTRACK_PASSWORD (or a prompt on a terminal). The first line
+printed is "session ID", the new session's id.
 )";
 
 constexpr const char* kLiveHelp =
@@ -125,7 +135,8 @@ struct LiveOptions {
 const std::vector<OptionSpec> kSessionOptions = {
     {"--device", true}, {"--duration", true},       {"--out", true},    {"--plugins", true},
     {"--filter", true}, {"--no-estimate", false},   {"--side", true},   {"--latency-window", true},
-    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false}, {"--overwrite", false}};
+    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false}, {"--overwrite", false},
+    {"--db", true},     {"--user", true},           {"--patient", true}, {"--protocol", true}};
 
 /// recorded: the rows to report as recorded (the session's count unless given).
 void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent, double rssMb,
@@ -185,7 +196,14 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   if (o.devices.empty()) a.fail("--device is required (armtrack-cli devices lists them)");
   if (record && !a.value("--duration")) a.fail("--duration is required");
   o.duration = record ? a.positive("--duration", 0.0) : a.nonNegative("--duration", 0.0);
-  o.out = record ? a.required("--out") : a.value("--out").value_or("");
+  const bool toDb = a.value("--db").has_value();
+  if (!toDb)
+    for (const char* option : {"--user", "--patient", "--protocol"})
+      if (a.value(option)) a.fail(std::string(option) + ": only applies with record --db");
+  if (toDb && !record) a.fail("--db: only record writes into the clinical records");
+  if (toDb && a.value("--out"))
+    a.fail("--out and --db: record into a file or into the clinical records, not both");
+  o.out = record && !toDb ? a.required("--out") : a.value("--out").value_or("");
   o.stats = a.flag("--stats");
   o.statsInterval = a.positive("--stats-interval", 10.0);
   o.quiet = a.flag("--quiet");
@@ -219,6 +237,31 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   // The session claims the name itself (O_EXCL) unless --overwrite, so a recording that appears
   // between the check above and the start is never replaced.
   params.overwrite = overwrite;
+
+  // Recording into the clinical records: sign in and check the patient before any device starts.
+  std::unique_ptr<ClinicalContext> records;
+  qint64 sessionId = 0;
+  if (toDb) {
+    if (overwrite) a.fail("--overwrite: only applies with --out");
+    const QString patient = qs(a.required("--patient"));
+    const QString protocol = qs(a.value("--protocol").value_or(""));
+    records = std::make_unique<ClinicalContext>(a, storage::Database::Options{}, true);
+    records->store().patient(patient);  // StorageError(NotFound) names it
+    if (!protocol.isEmpty()) records->store().protocol(protocol);
+    const storage::DatabaseUrl url = records->db().url();
+    params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
+    params.openSink = [&records, &sessionId, &out, url, patient, protocol](
+                          const RecordingMeta& meta,
+                          const RecordingColumns& columns) -> std::unique_ptr<RecordingSink> {
+      try {
+        sessionId = records->store().beginRecording(patient, protocol, meta, columns);
+      } catch (const storage::StorageError& e) {
+        throw RecordingError(ss(url.display()), 0, 0, e.what());
+      }
+      out << "session " << sessionId << "\n" << std::flush;
+      return std::make_unique<storage::DatabaseRecordingSink>(url, sessionId, columns);
+    };
+  }
 
   QtApp qt;
   app::PluginRegistry registry;
@@ -316,7 +359,25 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   // handed: rows that a full disk kept from the file are counted as lost.
   std::optional<std::uint64_t> onDisk;
   std::string unreadable;
-  if (!o.out.empty()) {
+  std::string where = o.out;
+  bool finishFailed = false;
+  if (toDb) {
+    // Complete, also after Ctrl-C (the user ended it); if the status cannot be written the
+    // session stays "recording" and is marked interrupted when the database is next opened.
+    where = "session " + std::to_string(sessionId);
+    try {
+      records->store().finishSession(sessionId, QString::fromLatin1(storage::kStatusComplete));
+    } catch (const std::exception& e) {
+      err << "armtrack-cli: error: cannot mark " << where << " complete: " << e.what()
+          << "; it will be marked interrupted when the database is next opened\n";
+      finishFailed = true;
+    }
+    try {
+      onDisk = static_cast<std::uint64_t>(records->store().session(sessionId).sampleRows);
+    } catch (const std::exception& e) {
+      unreadable = e.what();
+    }
+  } else if (!o.out.empty()) {
     try {
       onDisk = rowsInRecording(o.out);
     } catch (const std::exception& e) {
@@ -336,12 +397,12 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       out << line;
     }
   }
-  if (!o.out.empty()) {
+  if (!where.empty()) {
     if (!onDisk) {
       err << "armtrack-cli: error: the recording cannot be read back: " << unreadable << "\n";
       return 1;
     }
-    out << "recorded " << *onDisk << " rows in " << o.out << "\n";
+    out << "recorded " << *onDisk << " rows in " << where << "\n";
     const std::uint64_t handed = s.rowsToRecord;
     if (*onDisk < handed) {
       err << "armtrack-cli: error: the recording is incomplete: " << handed - *onDisk << " of "
@@ -349,6 +410,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
           << (s.recorderError.empty() ? std::string() : " (" + s.recorderError + ")") << "\n";
       return 1;
     }
+    if (finishFailed) return 1;
     if (!s.recorderError.empty())
       err << "note: writing the recording failed for a while (" << s.recorderError
           << ") and then went on; no row was lost\n";

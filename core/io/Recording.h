@@ -44,7 +44,7 @@ struct Recording {
 };
 
 /// A malformed recording. what() reads "<file>:<line>:<column>: <message>" (line and column are
-/// 1-based; 0 where they do not apply).
+/// 1-based; 0 where they do not apply, and then left out of what()).
 class RecordingError : public std::runtime_error {
  public:
   RecordingError(std::string file, int line, int column, const std::string& message);
@@ -122,29 +122,50 @@ void writeRecording(const std::filesystem::path& csvPath, const Recording& recor
 /// another, is refused with a message saying so, before it changes the file or its sidecar. Only
 /// then is the sidecar written (all or nothing) and the CSV emptied. A CSV the constructor
 /// created is removed again if a later step fails. One thread at a time.
-class RecordingWriter {
+/// Where a live session's rows go: a recording file (RecordingWriter) or the clinical records
+/// (core/storage's DatabaseRecordingSink). Used from one thread, the session's recorder.
+class RecordingSink {
+ public:
+  virtual ~RecordingSink() = default;
+  /// Takes one row. Throws RecordingError for a row that cannot be kept (non-finite, out of time
+  /// order, a sensor the columns do not hold); the sink stays usable.
+  virtual void append(const ArmSample& sample) = 0;
+  /// Hands what is buffered to the storage, as far as the sink's unit of writing allows.
+  /// Throws RecordingError when the storage fails; the rows stay buffered for the next call.
+  virtual void flush() = 0;
+  /// Everything appended made durable (fsync, a committed transaction). Throws as flush().
+  virtual void sync() = 0;
+  /// sync() and release the storage. Further calls throw.
+  virtual void close() = 0;
+  /// Rows appended.
+  virtual std::uint64_t rows() const = 0;
+  /// Rows the storage has accepted; rows() - rowsWritten() are still buffered.
+  virtual std::uint64_t rowsWritten() const = 0;
+};
+
+class RecordingWriter : public RecordingSink {
  public:
   RecordingWriter(const std::filesystem::path& csvPath, const RecordingMeta& meta,
                   const RecordingColumns& columns);
-  ~RecordingWriter();  ///< closes (and syncs) without throwing
+  ~RecordingWriter() override;  ///< closes (and syncs) without throwing
   RecordingWriter(const RecordingWriter&) = delete;
   RecordingWriter& operator=(const RecordingWriter&) = delete;
 
   /// Buffers one row. Throws for a non-finite value, a time before the previous row's, or a
   /// sensor the columns do not hold; the row is then not written and the writer stays usable.
-  void append(const ArmSample& sample);
+  void append(const ArmSample& sample) override;
   /// Writes the buffered rows to the file (no fsync).
-  void flush();
+  void flush() override;
   /// flush() and force the file to disk (fsync).
-  void sync();
+  void sync() override;
   /// sync() and close. Further calls throw.
-  void close();
+  void close() override;
 
   /// Rows appended (buffered or written).
-  std::uint64_t rows() const { return m_rows; }
+  std::uint64_t rows() const override { return m_rows; }
   /// Rows whose every byte the operating system has accepted (write(); fsync is another matter).
   /// rows() - rowsWritten() rows are still buffered, e.g. while the disk is full.
-  std::uint64_t rowsWritten() const;
+  std::uint64_t rowsWritten() const override;
   const std::filesystem::path& path() const { return m_path; }
 
  private:

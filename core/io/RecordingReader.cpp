@@ -18,8 +18,9 @@ namespace fs = std::filesystem;
 using namespace recording_detail;
 
 RecordingError::RecordingError(std::string file, int line, int column, const std::string& message)
-    : std::runtime_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-                         message),
+    : std::runtime_error(file + (line > 0 ? ":" + std::to_string(line) : std::string()) +
+                         (line > 0 && column > 0 ? ":" + std::to_string(column) : std::string()) +
+                         ": " + message),
       m_file(std::move(file)),
       m_line(line),
       m_column(column),

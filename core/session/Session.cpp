@@ -213,7 +213,15 @@ QString Session::start() {
     p.side = e.side;
     m_params.estimator = p;
   }
-  if (!m_params.recordingPath.empty()) {
+  if (m_params.openSink && !m_params.recordingPath.empty())
+    return QStringLiteral("record into a file or a database, not both");
+  if (m_params.openSink) {
+    try {
+      m_writer = m_params.openSink(m_params.meta, columns);
+    } catch (const RecordingError& e) {
+      return QStringLiteral("cannot record: %1").arg(QString::fromStdString(e.what()));
+    }
+  } else if (!m_params.recordingPath.empty()) {
     // RecordingWriter replaces an existing file; without overwrite the session never lets it.
     // A directory is left to the writer, which refuses it with its own message.
     const std::filesystem::path& csv = m_params.recordingPath;

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -36,6 +37,11 @@ struct SessionParams {
   /// Replace a recording (CSV or sidecar) that already exists at recordingPath. Off (default):
   /// start() refuses, and claims the name atomically so a file appearing meanwhile is not lost.
   bool overwrite = false;
+  /// Where to record instead of recordingPath, e.g. the clinical records: called by start() (on
+  /// its thread) with the recording's metadata and columns. The sink is then used from the
+  /// recorder's thread only. A RecordingError it throws fails start() with its message.
+  std::function<std::unique_ptr<RecordingSink>(const RecordingMeta&, const RecordingColumns&)>
+      openSink;
   double latencyWindow = 0.010;          ///< s the synchroniser waits for late samples
   double mergeWindow = 0.5e-3;           ///< s within which samples share one row
   double workerPeriod = 0.002;           ///< s between synchroniser polls
@@ -198,7 +204,7 @@ class Session : public QObject {
   std::condition_variable m_recCv, m_recSpaceCv;
   std::deque<ArmSample> m_recQueue;
   bool m_recClosed = false;
-  std::unique_ptr<RecordingWriter> m_writer;
+  std::unique_ptr<RecordingSink> m_writer;
 
   // worker -> GUI
   mutable std::mutex m_resultMutex;

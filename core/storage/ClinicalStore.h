@@ -69,6 +69,10 @@ class ClinicalStore {
   /// recording's sidecar text.
   qint64 beginSession(const QString& patientCode, const QString& protocolName,
                       const QString& calibrationJson, int columnsMask);
+  /// beginSession for a recording with this sidecar and these columns (a live session recording
+  /// into the records, see DatabaseRecordingSink).
+  qint64 beginRecording(const QString& patientCode, const QString& protocolName,
+                        const RecordingMeta& meta, const RecordingColumns& columns);
   /// Stores samples as the session's next chunk in one transaction (a chunk is ~1 s).
   void appendChunk(qint64 sessionId, std::span<const ArmSample> samples);
   void finishSession(qint64 sessionId, const QString& status = kStatusComplete);

@@ -8,6 +8,7 @@
 
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
+#include "core/storage/RecordingChunks.h"
 
 namespace armtrack::storage {
 
@@ -17,7 +18,6 @@ using Kind = StorageError::Kind;
 
 constexpr double kChunkSeconds = 1.0;            // a chunk spans about this much time
 constexpr std::size_t kMaxChunkRows = 1u << 16;  // and never more rows than this
-const QString kCodec = "atc1-zstd";
 
 std::string text(const QString& s) {
   return s.toStdString();
@@ -117,41 +117,18 @@ qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& pr
   return id;
 }
 
+qint64 ClinicalStore::beginRecording(const QString& patientCode, const QString& protocolName,
+                                     const RecordingMeta& meta, const RecordingColumns& columns) {
+  return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns));
+}
+
 void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> samples) {
   if (samples.empty()) return;
   const SessionInfo s = visibleSession(sessionId);
   if (s.status != kStatusRecording)
     throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " +
                                         text(s.status) + ", not recording");
-  for (std::size_t i = 1; i < samples.size(); ++i)
-    if (!(samples[i].t >= samples[i - 1].t))
-      throw StorageError(Kind::Usage, "samples must be in time order");
-  const std::string frame = ChunkCodec::encode(samples);
-  qint64 imu = 0;
-  for (const ArmSample& a : samples) imu += a.hasImu() ? 1 : 0;
-  m_db.transaction([&] {
-    QSqlQuery last = m_db.exec(
-        "SELECT seq, t_last FROM recording_chunks WHERE session_id = ? "
-        "ORDER BY seq DESC LIMIT 1",
-        {sessionId});
-    int seq = 0;
-    if (last.next()) {
-      seq = last.value(0).toInt() + 1;
-      if (samples.front().t < last.value(1).toDouble())
-        throw StorageError(Kind::Usage, "a chunk may not start before the previous one ends");
-    }
-    last.finish();
-    m_db.exec(
-        "INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
-        "data) VALUES (?, ?, ?, ?, ?, ?, ?)",
-        {sessionId, seq, samples.front().t, samples.back().t, static_cast<qint64>(samples.size()),
-         kCodec, QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
-    m_db.exec(
-        "UPDATE sessions SET sample_rows = sample_rows + ?, imu_samples = imu_samples + ?, "
-        "duration_s = ? - (SELECT t_first FROM recording_chunks WHERE session_id = ? AND "
-        "seq = 0) WHERE id = ?",
-        {static_cast<qint64>(samples.size()), imu, samples.back().t, sessionId, sessionId});
-  });
+  writeChunk(m_db, sessionId, samples);
 }
 
 void ClinicalStore::finishSession(qint64 sessionId, const QString& status) {
@@ -291,7 +268,7 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
       throw StorageError(Kind::Corrupt,
                          where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
-    if (q.value(2).toString() != kCodec)
+    if (q.value(2).toString() != kChunkCodecName)
       throw StorageError(Kind::Corrupt,
                          where + "unknown codec '" + text(q.value(2).toString()) + "'");
     const QByteArray blob = q.value(3).toByteArray();

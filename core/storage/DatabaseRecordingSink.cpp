@@ -1,0 +1,114 @@
+#include "core/storage/DatabaseRecordingSink.h"
+
+#include <unistd.h>
+
+#include <QSysInfo>
+#include <cmath>
+#include <limits>
+
+#include "core/storage/Database.h"
+#include "core/storage/RecordingChunks.h"
+#include "core/storage/Records.h"
+
+namespace armtrack::storage {
+
+namespace {
+
+bool finite(const ImuReading& r) {
+  return r.gyr.allFinite() && r.acc.allFinite();
+}
+
+}  // namespace
+
+DatabaseRecordingSink::DatabaseRecordingSink(DatabaseUrl url, qint64 sessionId,
+                                             const RecordingColumns& columns, double chunkSeconds)
+    : m_url(std::move(url)),
+      m_sessionId(sessionId),
+      m_columns(columns),
+      m_chunkSeconds(chunkSeconds),
+      m_prevT(-std::numeric_limits<double>::infinity()) {}
+
+DatabaseRecordingSink::~DatabaseRecordingSink() {
+  if (m_closed) return;
+  try {
+    commit(true);
+  } catch (...) {
+  }
+}
+
+void DatabaseRecordingSink::fail(const std::string& what) const {
+  throw RecordingError(m_url.display().toStdString() + " session " + std::to_string(m_sessionId),
+                       0, 0, what);
+}
+
+void DatabaseRecordingSink::append(const ArmSample& s) {
+  if (m_closed) fail("the recording is closed");
+  if (!std::isfinite(s.t)) fail("row " + std::to_string(m_rows + 1) + ": non-finite time");
+  if (s.t < m_prevT)
+    fail("row " + std::to_string(m_rows + 1) + ": time goes back from " + std::to_string(m_prevT) +
+         " to " + std::to_string(s.t) + " s");
+  const bool present[] = {s.upperArm.has_value(), s.forearm.has_value(), s.elbow.has_value(),
+                          s.wrist.has_value(),    s.camWrist.has_value(), s.camElbow.has_value(),
+                          s.trueAngles.has_value(), s.estimate.has_value()};
+  const bool allowed[] = {m_columns.upperArm, m_columns.forearm,  m_columns.elbow,
+                          m_columns.wrist,    m_columns.camWrist, m_columns.camElbow,
+                          m_columns.truth,    m_columns.estimate};
+  for (int i = 0; i < 8; ++i)
+    if (present[i] && !allowed[i])
+      fail("row " + std::to_string(m_rows + 1) + ": a sensor the recording has no column for");
+  const bool ok = (!s.upperArm || finite(*s.upperArm)) && (!s.forearm || finite(*s.forearm)) &&
+                  (!s.elbow || s.elbow->allFinite()) && (!s.wrist || s.wrist->allFinite()) &&
+                  (!s.camWrist || s.camWrist->allFinite()) &&
+                  (!s.camElbow || s.camElbow->allFinite()) &&
+                  (!s.trueAngles || s.trueAngles->allFinite()) &&
+                  (!s.estimate || s.estimate->allFinite());
+  if (!ok) fail("row " + std::to_string(m_rows + 1) + ": non-finite value");
+  m_buffer.push_back(s);
+  m_prevT = s.t;
+  ++m_rows;
+}
+
+void DatabaseRecordingSink::commit(bool all) {
+  if (m_buffer.empty()) return;
+  if (!all && m_buffer.back().t - m_buffer.front().t < m_chunkSeconds) return;
+  try {
+    if (!m_db) {
+      auto db = std::make_unique<Database>(m_url, Database::Options{});
+      QSqlQuery q = db->exec(
+          "SELECT status, recorder_host, recorder_pid FROM sessions WHERE id = ?", {m_sessionId});
+      if (!q.next()) fail("the session does not exist (was it removed?)");
+      if (q.value(0).toString() != kStatusRecording ||
+          q.value(1).toString() != QSysInfo::machineHostName() ||
+          q.value(2).toLongLong() != static_cast<qint64>(::getpid()))
+        fail("the session is not being recorded by this process; start a new session");
+      q.finish();
+      m_db = std::move(db);
+    }
+    writeChunk(*m_db, m_sessionId, m_buffer);
+  } catch (const StorageError& e) {
+    // The rows stay buffered: the next flush tries again (after space is freed, a server is
+    // back), so a passing failure loses nothing.
+    fail(std::string("cannot store the recording: ") + e.what());
+  }
+  m_rowsWritten += m_buffer.size();
+  m_buffer.clear();
+}
+
+void DatabaseRecordingSink::flush() {
+  if (m_closed) fail("the recording is closed");
+  commit(false);
+}
+
+void DatabaseRecordingSink::sync() {
+  if (m_closed) fail("the recording is closed");
+  commit(true);
+}
+
+void DatabaseRecordingSink::close() {
+  if (m_closed) fail("the recording is closed");
+  commit(true);
+  m_db.reset();
+  m_closed = true;
+}
+
+}  // namespace armtrack::storage
