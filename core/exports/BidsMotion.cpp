@@ -30,20 +30,21 @@ struct Channel {
 struct System {
   std::string label, trackingSystemName;
   std::vector<Channel> channels;
-  std::vector<std::size_t> rows;                              // indices into the source
-  std::function<double(std::size_t)> time;                    // s
+  std::vector<std::size_t> rows;                                // indices into the source
+  std::function<double(std::size_t)> time;                      // s
   std::function<void(std::size_t, std::vector<double>&)> fill;  // one value per channel; NaN = n/a
   int angleDecimals = -1;  // >= 0: fixed decimals (deg); otherwise shortest round-trip form
 };
 
-std::string sideWord(Side side) { return side == Side::Left ? "Left" : "Right"; }
+std::string sideWord(Side side) {
+  return side == Side::Left ? "Left" : "Right";
+}
 
-void addXyz(System& s, const std::string& prefix, const std::string& type,
-            const std::string& point, const std::string& units, const std::string& frame,
-            const std::string& what) {
+void addXyz(System& s, const std::string& prefix, const std::string& type, const std::string& point,
+            const std::string& units, const std::string& frame, const std::string& what) {
   for (const char* axis : {"x", "y", "z"})
-    s.channels.push_back({prefix + "_" + axis, axis, type, point, units, frame,
-                          what + ", " + axis + " axis"});
+    s.channels.push_back(
+        {prefix + "_" + axis, axis, type, point, units, frame, what + ", " + axis + " axis"});
 }
 
 System imuSystem(const Recording& rec, Side side) {
@@ -107,14 +108,12 @@ System angleSystem(const AngleSeries& series, Side side, std::size_t& skipped) {
   s.trackingSystemName = "ArmTrack estimated joint angles";
   s.angleDecimals = 6;
   const std::string sw = sideWord(side);
-  const char* points[kNumClinicalAngles] = {"Shoulder", "Shoulder", "Shoulder", "Elbow",
-                                            "Forearm"};
+  const char* points[kNumClinicalAngles] = {"Shoulder", "Shoulder", "Shoulder", "Elbow", "Forearm"};
   const auto& info = clinicalAngleInfo();
   for (int a = 0; a < kNumClinicalAngles; ++a)
-    s.channels.push_back({std::string(info[a].key), "n/a", "JNTANG", sw + points[a], "deg",
-                          "n/a",
-                          std::string(info[a].name) + ", positive = " +
-                              std::string(info[a].positive)});
+    s.channels.push_back(
+        {std::string(info[a].key), "n/a", "JNTANG", sw + points[a], "deg", "n/a",
+         std::string(info[a].name) + ", positive = " + std::string(info[a].positive)});
   for (std::size_t i = 0; i < series.t.size(); ++i) {
     if (std::isfinite(series.t[i]))
       s.rows.push_back(i);
@@ -128,7 +127,9 @@ System angleSystem(const AngleSeries& series, Side side, std::size_t& skipped) {
   return s;
 }
 
-std::string tsvCell(const std::string& s) { return s.empty() ? "n/a" : s; }
+std::string tsvCell(const std::string& s) {
+  return s.empty() ? "n/a" : s;
+}
 
 // Removes the folders this export created (deepest first), after a failure.
 struct CreatedDirs {
@@ -168,11 +169,10 @@ std::string bidsLabel(const std::string& text) {
 }
 
 BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recording,
-                                 const AngleSeries* angles, Side side,
-                                 const BidsOptions& options) {
-  for (const auto& [what, label] : {std::pair<const char*, const std::string*>{"subject",
-                                                                               &options.subject},
-                                    {"task", &options.task}}) {
+                                 const AngleSeries* angles, Side side, const BidsOptions& options) {
+  for (const auto& [what, label] :
+       {std::pair<const char*, const std::string*>{"subject", &options.subject},
+        {"task", &options.task}}) {
     if (label->empty() || bidsLabel(*label) != *label)
       throw std::invalid_argument(std::string("BIDS ") + what + " label \"" + *label +
                                   "\" must be letters and digits only");
@@ -181,9 +181,8 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     throw std::invalid_argument("BIDS session label \"" + options.session +
                                 "\" must be letters and digits only");
   if (angles && angles->angle.size() != angles->t.size())
-    throw std::invalid_argument("BIDS export: " + std::to_string(angles->t.size()) +
-                                " times but " + std::to_string(angles->angle.size()) +
-                                " angle rows");
+    throw std::invalid_argument("BIDS export: " + std::to_string(angles->t.size()) + " times but " +
+                                std::to_string(angles->angle.size()) + " angle rows");
 
   BidsExportResult result;
   std::vector<System> systems;
@@ -270,8 +269,8 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     std::map<std::string, int> typeCount{{"LATENCY", 1}};
     std::set<std::string> points;
     for (const Channel& c : s.channels) {
-      ch += c.name + "\t" + c.component + "\t" + c.type + "\t" + c.trackedPoint + "\t" +
-            c.units + "\t" + tsvCell(c.referenceFrame) + "\t" + c.description + "\n";
+      ch += c.name + "\t" + c.component + "\t" + c.type + "\t" + c.trackedPoint + "\t" + c.units +
+            "\t" + tsvCell(c.referenceFrame) + "\t" + c.description + "\n";
       ++typeCount[c.type];
       points.insert(c.trackedPoint);
     }

@@ -63,12 +63,11 @@ CsvExportResult writeClinicalCsv(const fs::path& anglesCsv, const AngleSeries& s
                                  const SessionMetrics& metrics,
                                  const std::vector<ClinicalRow>* sdRad) {
   if (series.angle.size() != series.t.size())
-    throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) +
-                                " times but " + std::to_string(series.angle.size()) +
-                                " angle rows");
+    throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) + " times but " +
+                                std::to_string(series.angle.size()) + " angle rows");
   if (sdRad && sdRad->size() != series.t.size())
-    throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) +
-                                " times but " + std::to_string(sdRad->size()) + " sd rows");
+    throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) + " times but " +
+                                std::to_string(sdRad->size()) + " sd rows");
   CsvExportResult result;
   result.anglesCsv = anglesCsv;
   result.metricsCsv = metricsCsvPath(anglesCsv);

@@ -50,8 +50,8 @@ std::filesystem::path metricsCsvPath(const std::filesystem::path& anglesCsv);
 /// time is not finite is skipped; a non-finite angle or sd is written as an empty cell.
 /// Throws std::invalid_argument when sdRad or the angle column does not match series.t in length,
 /// ExportError when no row has a finite time or a file cannot be written.
-CsvExportResult writeClinicalCsv(const std::filesystem::path& anglesCsv,
-                                 const AngleSeries& series, const SessionMetrics& metrics,
+CsvExportResult writeClinicalCsv(const std::filesystem::path& anglesCsv, const AngleSeries& series,
+                                 const SessionMetrics& metrics,
                                  const std::vector<ClinicalRow>* sdRad = nullptr);
 
 // ---------------------------------------------------------------- OpenSim .mot
@@ -101,8 +101,8 @@ std::string bidsLabel(const std::string& text);
 struct BidsTrackingSystemFiles {
   std::string label;  ///< tracksys-<label>: "imu", "optical" or "angles"
   std::filesystem::path motionTsv, channelsTsv, channelsJson, motionJson;
-  std::size_t rows = 0;      ///< rows of motion.tsv
-  std::size_t channels = 0;  ///< columns of motion.tsv = rows of channels.tsv
+  std::size_t rows = 0;           ///< rows of motion.tsv
+  std::size_t channels = 0;       ///< columns of motion.tsv = rows of channels.tsv
   std::size_t missingValues = 0;  ///< cells written as n/a
 };
 

@@ -85,7 +85,7 @@ inline std::vector<std::string> split(const std::string& s, char sep) {
 /// A known movement: every joint a sinusoid around a mid-range posture (rad, Hz).
 inline SinusoidTrajectory knownMovement() {
   SinusoidTrajectory tr;
-  tr.offset << 0.6, 0.4, -0.2, -0.9, 0.3;       // flexion, abduction, -IR, -elbow, -pronation
+  tr.offset << 0.6, 0.4, -0.2, -0.9, 0.3;  // flexion, abduction, -IR, -elbow, -pronation
   tr.amplitude << 0.5, 0.3, 0.35, 0.6, 0.5;
   tr.frequency << 0.5, 0.5, 0.4, 0.5, 0.3;
   tr.phase << 0.0, 1.0, 0.5, 2.0, 0.3;

@@ -21,8 +21,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // The restricted keywords of the specification's channels.tsv (motion.md).
 const std::set<std::string> kTypes{"ACCEL", "ANGACCEL", "GYRO", "JNTANG", "LATENCY",
                                    "MAGN",  "MISC",     "ORNT", "POS",    "VEL"};
-const std::set<std::string> kComponents{"x", "y", "z", "quat_x", "quat_y", "quat_z", "quat_w",
-                                        "n/a"};
+const std::set<std::string> kComponents{"x",      "y",      "z",      "quat_x",
+                                        "quat_y", "quat_z", "quat_w", "n/a"};
 
 struct Channels {
   std::vector<std::string> header;
@@ -79,7 +79,7 @@ std::vector<std::vector<double>> checkSystem(const BidsTrackingSystemFiles& f,
   EXPECT_EQ(ch.rows.front()[4], "s");
 
   const json j = json::parse(readText(f.motionJson));
-  EXPECT_TRUE(j.at("SamplingFrequency").is_number());  // REQUIRED
+  EXPECT_TRUE(j.at("SamplingFrequency").is_number());   // REQUIRED
   EXPECT_TRUE(j.at("TrackingSystemName").is_string());  // REQUIRED
   EXPECT_EQ(j.at("TaskName"), task);                    // REQUIRED
   EXPECT_EQ(j.at("MotionChannelCount"), ch.rows.size());
@@ -154,9 +154,9 @@ TEST(BidsMotion, OneFileSetPerTrackingSystemWithTheSpecificationsColumnsAndField
 
   // Units and types as stored.
   const Channels ic = readChannels(r.systems[0].channelsTsv);
-  EXPECT_EQ(ic.rows[1], (std::vector<std::string>{"upperarm_gyro_x", "x", "GYRO", "RightUpperArm",
-                                                  "rad/s", "sensor",
-                                                  "upper-arm IMU angular velocity, x axis"}));
+  EXPECT_EQ(ic.rows[1],
+            (std::vector<std::string>{"upperarm_gyro_x", "x", "GYRO", "RightUpperArm", "rad/s",
+                                      "sensor", "upper-arm IMU angular velocity, x axis"}));
   EXPECT_EQ(ic.rows[4][2], "ACCEL");
   EXPECT_EQ(ic.rows[4][4], "m/s^2");
   const Channels ac = readChannels(r.systems[2].channelsTsv);
@@ -229,8 +229,7 @@ TEST(BidsMotion, IrregularTimesGoToTheLatencyChannelAndBothRates) {
   for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_NEAR(rows[i][0], s.t[i] - 2.0, 1e-6);
   const json j = json::parse(readText(r.systems[0].motionJson));
   EXPECT_NEAR(j.at("SamplingFrequency").get<double>(), 50.0, 2.0);  // median interval
-  EXPECT_NEAR(j.at("SamplingFrequencyEffective").get<double>(), 499 / (s.t.back() - s.t[0]),
-              1e-9);
+  EXPECT_NEAR(j.at("SamplingFrequencyEffective").get<double>(), 499 / (s.t.back() - s.t[0]), 1e-9);
   EXPECT_NEAR(j.at("RecordingDuration").get<double>(), 9.98, 1e-9);
   EXPECT_EQ(readChannels(r.systems[0].channelsTsv).rows[1][3], "LeftShoulder");
 }
@@ -298,9 +297,21 @@ TEST(BidsMotion, HostileInputAndUnwritableFoldersLeaveNothingBehind) {
     writeBidsMotion(dir / "file", nullptr, &two, Side::Right, options());
     FAIL() << "no error";
   } catch (const ExportError& e) {
-    EXPECT_NE(std::string(e.what()).find((dir / "file").string()), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find((dir / "file").string()), std::string::npos) << e.what();
   }
+  // Folders made, then no file can be created in them (a file name longer than the system
+  // allows, while each folder name is not): the folders this export made are removed again.
+  BidsOptions longNames = options();
+  longNames.subject = std::string(120, 'S');
+  longNames.task = std::string(120, 'T');
+  const auto before = listing(dir.path());
+  try {
+    writeBidsMotion(dir / "new", nullptr, &two, Side::Right, longNames);
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_NE(std::string(e.what()).find("tracksys-angles"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(listing(dir.path()), before);
   // The last file of the set cannot be created (a folder has its name): no file of the set and
   // no temporary file is left, and an existing dataset_description.json is not touched.
   const fs::path motionDir = dir / "root" / "sub-P001" / "ses-20261125" / "motion";

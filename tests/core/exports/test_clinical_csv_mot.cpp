@@ -250,11 +250,11 @@ TEST(OpenSimMot, PosesOfPlainMeaningGetOpenSimsSigns) {
     double expectedDeg;
   };
   const Pose poses[] = {
-      {0, 30, 0, 30},    // arm swung forward 30 deg: arm_flex +30
-      {1, 40, 1, -40},   // arm lifted sideways 40 deg (abduction): arm_add -40
-      {2, -25, 2, 25},   // -th2: forearm turned toward the trunk (internal): arm_rot +25
-      {3, -90, 3, 90},   // -th4: elbow bent 90 deg: elbow_flex +90
-      {4, -60, 4, 60},   // -th5: thumb turned inward (pronation): pro_sup +60
+      {0, 30, 0, 30},   // arm swung forward 30 deg: arm_flex +30
+      {1, 40, 1, -40},  // arm lifted sideways 40 deg (abduction): arm_add -40
+      {2, -25, 2, 25},  // -th2: forearm turned toward the trunk (internal): arm_rot +25
+      {3, -90, 3, 90},  // -th4: elbow bent 90 deg: elbow_flex +90
+      {4, -60, 4, 60},  // -th5: thumb turned inward (pronation): pro_sup +60
   };
   for (const Pose& p : poses) {
     JointVector th = JointVector::Zero();
@@ -268,8 +268,7 @@ TEST(OpenSimMot, PosesOfPlainMeaningGetOpenSimsSigns) {
 }
 
 TEST(OpenSimMot, LeftArmUsesLeftCoordinateNames) {
-  const AngleSeries series =
-      truthSeries(simulatedSession(knownMovement(), 1.0, 50.0, Side::Left));
+  const AngleSeries series = truthSeries(simulatedSession(knownMovement(), 1.0, 50.0, Side::Left));
   TempDir dir;
   writeOpenSimMot(dir / "l.mot", series, Side::Left, {"left_session"});
   const MotFile m = readMot(dir / "l.mot");
