@@ -1,5 +1,6 @@
 #include "core/exports/ExportFiles.h"
 
+#include <algorithm>
 #include <charconv>
 #include <system_error>
 
@@ -77,7 +78,11 @@ void FileSet::commit() {
 void appendFixed(std::string& out, double v, int decimals) {
   char buf[400];  // room for the largest double in fixed notation
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed, decimals);
-  out.append(buf, r.ptr);
+  // A value that rounds to zero is written "0.000000", not "-0.000000".
+  char* begin = buf;
+  if (*begin == '-' && std::all_of(begin + 1, r.ptr, [](char c) { return c == '0' || c == '.'; }))
+    ++begin;
+  out.append(begin, r.ptr);
 }
 
 void appendShortest(std::string& out, double v) {

@@ -160,6 +160,10 @@ TEST(ClinicalCsv, NonFiniteTimesAreSkippedAndNonFiniteAnglesLeftEmpty) {
   const auto lines = readLines(dir / "a.csv");
   ASSERT_EQ(lines.size(), 4u);
   EXPECT_EQ(lines[2], "0.020000,,11.459156,,22.918312,28.647890");
+  // No "-0.000000" for a negative value that rounds to zero.
+  AngleSeries tiny{{0.0, 0.01}, {ClinicalRow{-1e-12, -0.0, 0, 0, 0}, ClinicalRow{}}};
+  writeClinicalCsv(dir / "z.csv", tiny, metrics);
+  EXPECT_EQ(readLines(dir / "z.csv")[1], "0.000000,0.000000,0.000000,0.000000,0.000000,0.000000");
 }
 
 TEST(ClinicalCsv, EmptySeriesIsRefusedAndWritesNothing) {
