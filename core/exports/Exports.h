@@ -67,6 +67,10 @@ ClinicalRow openSimCoordinatesDeg(const ClinicalRow& clinicalRad);
 
 struct MotOptions {
   std::string name = "armtrack_clinical_angles";  ///< first header line (the storage's name)
+  /// Added to pro_sup (deg). ArmTrack's pronation is 0 with the thumb forward; a model whose
+  /// pro_sup is 0 in full supination (the ISB convention) needs 90. docs/exports.md explains why
+  /// the default is 0.
+  double proSupOffsetDeg = 0.0;
 };
 
 struct MotExportResult {

@@ -30,6 +30,8 @@ MotExportResult writeOpenSimMot(const fs::path& motPath, const AngleSeries& seri
                                 " angle rows");
   if (options.name.empty() || options.name.find_first_of("\r\n") != std::string::npos)
     throw std::invalid_argument("OpenSim export: the name must be one non-empty line");
+  if (!std::isfinite(options.proSupOffsetDeg))
+    throw std::invalid_argument("OpenSim export: the pro_sup offset must be finite");
 
   MotExportResult result;
   std::vector<std::size_t> keep;
@@ -67,7 +69,9 @@ MotExportResult writeOpenSimMot(const fs::path& motPath, const AngleSeries& seri
   out += '\n';
   for (std::size_t i : keep) {
     appendFixed(out, series.t[i], 6);
-    for (double v : openSimCoordinatesDeg(series.angle[i])) {
+    ClinicalRow q = openSimCoordinatesDeg(series.angle[i]);
+    q[4] += options.proSupOffsetDeg;
+    for (double v : q) {
       out += '\t';
       appendFixed(out, v, 6);
     }

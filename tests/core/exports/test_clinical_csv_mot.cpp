@@ -274,12 +274,17 @@ TEST(OpenSimMot, PosesOfPlainMeaningGetOpenSimsSigns) {
 TEST(OpenSimMot, LeftArmUsesLeftCoordinateNames) {
   const AngleSeries series = truthSeries(simulatedSession(knownMovement(), 1.0, 50.0, Side::Left));
   TempDir dir;
-  writeOpenSimMot(dir / "l.mot", series, Side::Left, {"left_session"});
+  MotOptions o;
+  o.name = "left_session";
+  o.proSupOffsetDeg = 90;  // a model whose pro_sup is 0 in full supination
+  writeOpenSimMot(dir / "l.mot", series, Side::Left, o);
   const MotFile m = readMot(dir / "l.mot");
   EXPECT_EQ(m.name, "left_session");
   EXPECT_EQ(m.labels, (std::vector<std::string>{"time", "arm_flex_l", "arm_add_l", "arm_rot_l",
                                                 "elbow_flex_l", "pro_sup_l"}));
-  EXPECT_EQ(m.rows.size(), series.t.size());
+  ASSERT_EQ(m.rows.size(), series.t.size());
+  for (std::size_t i = 0; i < m.rows.size(); ++i)
+    EXPECT_NEAR(m.rows[i][5], series.angle[i][4] * kRadToDeg + 90, 2e-6);
 }
 
 TEST(OpenSimMot, NonFiniteRowsAreLeftOutAndCounted) {
@@ -311,6 +316,7 @@ TEST(OpenSimMot, HostileInputIsRefusedWithoutWritingAnything) {
   EXPECT_THROW(writeOpenSimMot(p, mismatched, Side::Right), std::invalid_argument);
   AngleSeries one{{0.0}, {ClinicalRow{}}};
   EXPECT_THROW(writeOpenSimMot(p, one, Side::Right, {"two\nlines"}), std::invalid_argument);
+  EXPECT_THROW(writeOpenSimMot(p, one, Side::Right, {"n", kNaN}), std::invalid_argument);
   EXPECT_TRUE(listing(dir.path()).empty());
   const fs::path missing = dir / "no" / "such" / "folder" / "x.mot";
   try {
