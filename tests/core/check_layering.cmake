@@ -8,6 +8,8 @@
 # - anything under core/ includes a header of devices/, app/ or ui/ (an upward arrow);
 # - anything under devices/ includes a header of app/ or ui/, or widgets;
 # - a file under core/ or devices/ includes with a "../" path, which would hide such an arrow.
+# core/exports (export writers, target armtrack_exports) is science for this rule: Qt-free, and it
+# must not include a service header, so the CLI, the services and the GUI can all link it.
 set(include_re "^[ \t]*#[ \t]*include[ \t]*[<\"]")
 set(widgets_re "${include_re}(QtWidgets|QtCharts|Q[A-Za-z]*(Widget|Dialog|Chart)|QApplication|QMainWindow|QMessageBox|vtk)")
 set(services "session" "storage")

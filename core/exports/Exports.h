@@ -1,0 +1,135 @@
+// Export writers for a session's estimated angles and raw sensor data (docs/exports.md): clinical
+// CSV (angles in degrees and a metrics table), OpenSim motion files (.mot) and BIDS motion files.
+// They take plain data, not the database, and write every file all or nothing: each goes to a
+// hidden temporary file beside its target (core/io/AtomicFile.h) and is renamed into place only
+// once all files of the export are complete. Qt-free. Any thread; one export per target at a time.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/io/Recording.h"
+#include "core/kinematics/Side.h"
+#include "core/metrics/ClinicalMetrics.h"
+#include "core/metrics/RangeOfMotion.h"
+
+namespace armtrack {
+
+/// An export that could not be written. what() starts with the path concerned; path() is that
+/// path (empty when the problem is the input, e.g. an empty series). Nothing of the export is left
+/// on disk when this is thrown before the files are renamed into place (see docs/exports.md).
+class ExportError : public std::runtime_error {
+ public:
+  ExportError(std::filesystem::path path, const std::string& message);
+  const std::filesystem::path& path() const { return m_path; }
+
+ private:
+  std::filesystem::path m_path;
+};
+
+// ---------------------------------------------------------------- clinical CSV
+
+/// What a CSV export wrote.
+struct CsvExportResult {
+  std::filesystem::path anglesCsv;   ///< time + five angles (deg) (+ their sd)
+  std::filesystem::path metricsCsv;  ///< session and per-repetition metrics
+  std::size_t rows = 0;              ///< angle rows written
+  std::size_t skippedRows = 0;       ///< rows dropped for a non-finite time
+  std::size_t emptyCells = 0;        ///< non-finite angles or sd written as empty cells
+};
+
+/// The metrics file written beside an angles CSV: "<stem>_metrics.csv" in the same folder.
+std::filesystem::path metricsCsvPath(const std::filesystem::path& anglesCsv);
+
+/// Writes the angles CSV at anglesCsv and the metrics CSV at metricsCsvPath(anglesCsv).
+/// series: times (s) and angles (rad) in clinicalAngleInfo() order; sdRad: optional per-row
+/// standard deviations (rad), same shape as series.angle (nullptr = no sd columns). A row whose
+/// time is not finite is skipped; a non-finite angle or sd is written as an empty cell.
+/// Throws std::invalid_argument when sdRad or the angle column does not match series.t in length,
+/// ExportError when no row has a finite time or a file cannot be written.
+CsvExportResult writeClinicalCsv(const std::filesystem::path& anglesCsv, const AngleSeries& series,
+                                 const SessionMetrics& metrics,
+                                 const std::vector<ClinicalRow>* sdRad = nullptr);
+
+// ---------------------------------------------------------------- OpenSim .mot
+
+/// OpenSim coordinate names, in clinicalAngleInfo() order, for one side: arm_flex, arm_add,
+/// arm_rot, elbow_flex, pro_sup with the suffix _r or _l (the Rajagopal et al. 2015 full-body
+/// model's upper limb, after Holzbaur et al. 2005).
+std::vector<std::string> openSimCoordinateNames(Side side);
+
+/// OpenSim coordinate values (deg) of one row of clinical angles (rad): flexion, -abduction,
+/// internal rotation, elbow flexion, pronation (docs/exports.md explains each sign).
+ClinicalRow openSimCoordinatesDeg(const ClinicalRow& clinicalRad);
+
+struct MotOptions {
+  std::string name = "armtrack_clinical_angles";  ///< first header line (the storage's name)
+  /// Added to pro_sup (deg). ArmTrack's pronation is 0 with the thumb forward; a model whose
+  /// pro_sup is 0 in full supination (the ISB convention) needs 90. docs/exports.md explains why
+  /// the default is 0.
+  double proSupOffsetDeg = 0.0;
+};
+
+struct MotExportResult {
+  std::size_t rows = 0;         ///< data rows written (nRows)
+  std::size_t skippedRows = 0;  ///< rows with a non-finite time or angle, left out
+};
+
+/// Writes an OpenSim motion file: the name line, version=1, nRows, nColumns (time included),
+/// inDegrees=yes, endheader, then the tab-separated labels (time and the coordinates of
+/// openSimCoordinateNames(side)) and one row per sample. Rows with any non-finite value are left
+/// out (OpenSim cannot use them). Throws std::invalid_argument for mismatched lengths, ExportError
+/// when no usable row is left, when the kept times do not increase strictly (naming the row), or
+/// when the file cannot be written.
+MotExportResult writeOpenSimMot(const std::filesystem::path& motPath, const AngleSeries& series,
+                                Side side, const MotOptions& options = {});
+
+// ---------------------------------------------------------------- BIDS motion
+
+struct BidsOptions {
+  std::string subject;            ///< sub-<label>; letters and digits only (see bidsLabel())
+  std::string session;            ///< ses-<label>; empty = no session level
+  std::string task = "armtrack";  ///< task-<label>
+  std::string taskName;           ///< TaskName field; empty = the task label
+  std::string taskDescription;    ///< TaskDescription field; empty = left out
+};
+
+/// A BIDS label from any text: its ASCII letters and digits, in order ("P-001" -> "P001").
+/// Throws std::invalid_argument when none is left.
+std::string bidsLabel(const std::string& text);
+
+/// One tracking system's file set.
+struct BidsTrackingSystemFiles {
+  std::string label;  ///< tracksys-<label>: "imu", "optical" or "angles"
+  std::filesystem::path motionTsv, channelsTsv, channelsJson, motionJson;
+  std::size_t rows = 0;           ///< rows of motion.tsv
+  std::size_t channels = 0;       ///< columns of motion.tsv = rows of channels.tsv
+  std::size_t missingValues = 0;  ///< cells written as n/a
+};
+
+struct BidsExportResult {
+  std::filesystem::path motionDir;  ///< <root>/sub-<s>[/ses-<s>]/motion
+  std::vector<BidsTrackingSystemFiles> systems;
+  std::size_t skippedAngleRows = 0;  ///< angle rows dropped for a non-finite time
+  /// What was left out and why, e.g. a tracking system with a single sample (no rate).
+  std::vector<std::string> notes;
+};
+
+/// Writes BIDS motion files (BIDS 1.9, motion modality) under root: one file set per tracking
+/// system present: "imu" (both IMUs' gyroscopes and accelerometers, sensor axes, SI units),
+/// "optical" (elbow and wrist positions in the shoulder frame, m) when the recording holds any,
+/// and "angles" (the five clinical angles, JNTANG, deg) when angles is given and not empty.
+/// Each motion.tsv starts with a LATENCY channel (s from that system's first sample), because
+/// sample times need not be regular; SamplingFrequency is the nominal rate (the median interval's
+/// inverse) and SamplingFrequencyEffective the mean rate. A missing or non-finite value is "n/a".
+/// root/dataset_description.json is written when absent. recording may be nullptr (angles only);
+/// angles may be nullptr (raw data only). Throws std::invalid_argument for a bad label or
+/// mismatched angle lengths, ExportError when there is nothing to export or a file cannot be
+/// written.
+BidsExportResult writeBidsMotion(const std::filesystem::path& root, const Recording* recording,
+                                 const AngleSeries* angles, Side side, const BidsOptions& options);
+
+}  // namespace armtrack

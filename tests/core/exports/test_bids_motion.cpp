@@ -1,0 +1,335 @@
+// BIDS motion export (BIDS 1.9, motion modality) of a simulated session: one file set per
+// tracking system, the required columns and fields, row and channel counts that agree, and values
+// read back against the simulation they came from (docs/exports.md).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "core/exports/Exports.h"
+#include "tests/core/exports/ExportTestSupport.h"
+
+namespace armtrack {
+namespace {
+
+using namespace exporttest;
+using nlohmann::json;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The restricted keywords of the specification's channels.tsv (motion.md).
+const std::set<std::string> kTypes{"ACCEL", "ANGACCEL", "GYRO", "JNTANG", "LATENCY",
+                                   "MAGN",  "MISC",     "ORNT", "POS",    "VEL"};
+const std::set<std::string> kComponents{"x",      "y",      "z",      "quat_x",
+                                        "quat_y", "quat_z", "quat_w", "n/a"};
+
+struct Channels {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+Channels readChannels(const fs::path& p) {
+  const auto lines = readLines(p);
+  Channels c;
+  c.header = split(lines.at(0), '\t');
+  for (std::size_t i = 1; i < lines.size(); ++i) c.rows.push_back(split(lines[i], '\t'));
+  return c;
+}
+
+/// motion.tsv: no header, every cell a number or n/a; throws on anything else.
+std::vector<std::vector<double>> readMotion(const fs::path& p) {
+  std::vector<std::vector<double>> rows;
+  for (const auto& line : readLines(p)) {
+    std::vector<double> row;
+    for (const auto& cell : split(line, '\t')) {
+      if (cell == "n/a") {
+        row.push_back(kNaN);
+        continue;
+      }
+      std::size_t used = 0;
+      row.push_back(std::stod(cell, &used));
+      if (used != cell.size()) throw std::runtime_error("not a number: " + cell);
+    }
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+/// Checks one tracking system's files against the specification's rules and returns the parsed
+/// motion rows.
+std::vector<std::vector<double>> checkSystem(const BidsTrackingSystemFiles& f,
+                                             const std::string& task) {
+  SCOPED_TRACE(f.label);
+  const Channels ch = readChannels(f.channelsTsv);
+  // The REQUIRED columns, first and in this order.
+  EXPECT_GE(ch.header.size(), 5u);
+  EXPECT_EQ(std::vector<std::string>(ch.header.begin(), ch.header.begin() + 5),
+            (std::vector<std::string>{"name", "component", "type", "tracked_point", "units"}));
+  std::map<std::string, int> typeCount;
+  std::set<std::string> points;
+  for (const auto& r : ch.rows) {
+    EXPECT_EQ(r.size(), ch.header.size());
+    EXPECT_TRUE(kTypes.count(r[2])) << r[2];
+    EXPECT_TRUE(kComponents.count(r[1])) << r[1];
+    ++typeCount[r[2]];
+    if (r[2] != "LATENCY") points.insert(r[3]);
+  }
+  EXPECT_EQ(ch.rows.front()[2], "LATENCY");
+  EXPECT_EQ(ch.rows.front()[4], "s");
+
+  const json j = json::parse(readText(f.motionJson));
+  EXPECT_TRUE(j.at("SamplingFrequency").is_number());   // REQUIRED
+  EXPECT_TRUE(j.at("TrackingSystemName").is_string());  // REQUIRED
+  EXPECT_EQ(j.at("TaskName"), task);                    // REQUIRED
+  EXPECT_EQ(j.at("MotionChannelCount"), ch.rows.size());
+  for (const auto& [type, n] : typeCount) EXPECT_EQ(j.at(type + "ChannelCount"), n) << type;
+  EXPECT_EQ(j.at("TrackedPointsCount"), points.size());
+
+  const auto rows = readMotion(f.motionTsv);
+  EXPECT_EQ(rows.size(), f.rows);
+  for (const auto& r : rows) EXPECT_EQ(r.size(), ch.rows.size());  // columns = channel rows
+  EXPECT_EQ(f.channels, ch.rows.size());
+  EXPECT_EQ(rows.front().front(), 0.0);  // latency from the first sample
+  return rows;
+}
+
+BidsOptions options() {
+  BidsOptions o;
+  o.subject = "P001";
+  o.session = "20261125";
+  o.task = "flexion";
+  o.taskDescription = "shoulder flexion repetitions";
+  return o;
+}
+
+TEST(BidsMotion, OneFileSetPerTrackingSystemWithTheSpecificationsColumnsAndFields) {
+  const SinusoidTrajectory tr = knownMovement();
+  const Recording rec = simulatedSession(tr, 5.0, 200.0);
+  const AngleSeries angles = truthSeries(rec);
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), &rec, &angles, Side::Right, options());
+
+  EXPECT_EQ(r.motionDir, dir / "sub-P001" / "ses-20261125" / "motion");
+  ASSERT_EQ(r.systems.size(), 3u);
+  EXPECT_EQ(r.systems[0].label, "imu");
+  EXPECT_EQ(r.systems[1].label, "optical");
+  EXPECT_EQ(r.systems[2].label, "angles");
+  EXPECT_EQ(r.systems[0].motionTsv.filename(),
+            "sub-P001_ses-20261125_task-flexion_tracksys-imu_motion.tsv");
+  EXPECT_EQ(r.systems[1].channelsTsv.filename(),
+            "sub-P001_ses-20261125_task-flexion_tracksys-optical_channels.tsv");
+  EXPECT_EQ(r.systems[2].motionJson.filename(),
+            "sub-P001_ses-20261125_task-flexion_tracksys-angles_motion.json");
+  const json d = json::parse(readText(dir / "dataset_description.json"));
+  EXPECT_EQ(d.at("BIDSVersion"), "1.9.0");
+  EXPECT_TRUE(d.at("Name").is_string());
+
+  std::size_t imuRows = 0, opticalRows = 0;
+  for (const ArmSample& s : rec.samples) {
+    imuRows += s.hasImu();
+    opticalRows += s.elbow.has_value();
+  }
+  EXPECT_EQ(imuRows, 1001u);
+  EXPECT_EQ(opticalRows, 151u);
+  EXPECT_EQ(r.systems[0].rows, imuRows);
+  EXPECT_EQ(r.systems[1].rows, opticalRows);
+  EXPECT_EQ(r.systems[2].rows, angles.t.size());
+  EXPECT_EQ(r.systems[0].channels, 13u);  // latency + 2 IMUs x (3 gyro + 3 accel)
+  EXPECT_EQ(r.systems[1].channels, 7u);   // latency + elbow and wrist x 3
+  EXPECT_EQ(r.systems[2].channels, 6u);   // latency + 5 angles
+
+  for (const auto& f : r.systems) checkSystem(f, "flexion");
+  const json imu = json::parse(readText(r.systems[0].motionJson));
+  EXPECT_EQ(imu.at("SamplingFrequency"), 200.0);
+  EXPECT_NEAR(imu.at("SamplingFrequencyEffective").get<double>(), 200.0, 1e-6);
+  EXPECT_EQ(imu.at("GYROChannelCount"), 6);
+  EXPECT_EQ(imu.at("ACCELChannelCount"), 6);
+  EXPECT_EQ(imu.at("TaskDescription"), "shoulder flexion repetitions");
+  const json optical = json::parse(readText(r.systems[1].motionJson));
+  EXPECT_EQ(optical.at("SamplingFrequency"), 30.0);
+  EXPECT_EQ(optical.at("POSChannelCount"), 6);
+  const json ang = json::parse(readText(r.systems[2].motionJson));
+  EXPECT_EQ(ang.at("JNTANGChannelCount"), 5);
+
+  // Units and types as stored.
+  const Channels ic = readChannels(r.systems[0].channelsTsv);
+  EXPECT_EQ(ic.rows[1],
+            (std::vector<std::string>{"upperarm_gyro_x", "x", "GYRO", "RightUpperArm", "rad/s",
+                                      "sensor", "upper-arm IMU angular velocity, x axis"}));
+  EXPECT_EQ(ic.rows[4][2], "ACCEL");
+  EXPECT_EQ(ic.rows[4][4], "m/s^2");
+  const Channels ac = readChannels(r.systems[2].channelsTsv);
+  for (std::size_t k = 1; k < ac.rows.size(); ++k) {
+    EXPECT_EQ(ac.rows[k][2], "JNTANG");
+    EXPECT_EQ(ac.rows[k][4], "deg");
+    EXPECT_EQ(ac.rows[k][0], clinicalAngleInfo()[k - 1].key);
+  }
+  const Channels oc = readChannels(r.systems[1].channelsTsv);
+  EXPECT_EQ(oc.rows[4][3], "RightWrist");
+  EXPECT_EQ(oc.rows[4][4], "m");
+  // Frames named in channels.tsv are described in channels.json.
+  const json ocj = json::parse(readText(r.systems[1].channelsJson));
+  EXPECT_TRUE(ocj.at("reference_frame").at("Levels").contains("shoulder"));
+}
+
+TEST(BidsMotion, ValuesAreTheSimulatedOnes) {
+  const SinusoidTrajectory tr = knownMovement();
+  const Recording rec = simulatedSession(tr, 3.0, 100.0);
+  const AngleSeries angles = truthSeries(rec);
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), &rec, &angles, Side::Right, options());
+
+  // Raw channels read back exactly (shortest round-trip form).
+  const auto imu = readMotion(r.systems[0].motionTsv);
+  const auto opt = readMotion(r.systems[1].motionTsv);
+  std::size_t i = 0, o = 0;
+  for (const ArmSample& s : rec.samples) {
+    if (s.hasImu()) {
+      const auto& row = imu.at(i++);
+      EXPECT_NEAR(row[0], s.t, 1e-6);  // the first IMU sample is at t = 0
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(row[1 + k], s.upperArm->gyr(k));
+        EXPECT_EQ(row[4 + k], s.upperArm->acc(k));
+        EXPECT_EQ(row[7 + k], s.forearm->gyr(k));
+        EXPECT_EQ(row[10 + k], s.forearm->acc(k));
+      }
+    }
+    if (s.elbow) {
+      const auto& row = opt.at(o++);
+      for (int k = 0; k < 3; ++k) {
+        EXPECT_EQ(row[1 + k], (*s.elbow)(k));
+        EXPECT_EQ(row[4 + k], (*s.wrist)(k));
+      }
+    }
+  }
+  // Joint angles: the true clinical angles in degrees.
+  const auto ang = readMotion(r.systems[2].motionTsv);
+  ASSERT_EQ(ang.size(), angles.t.size());
+  for (std::size_t k = 0; k < ang.size(); ++k) {
+    const auto truth = trueClinicalDeg(tr, angles.t[k]);
+    EXPECT_NEAR(ang[k][0], angles.t[k] - angles.t[0], 1e-6);
+    for (int a = 0; a < 5; ++a) EXPECT_NEAR(ang[k][1 + a], truth[a], 2e-6);
+  }
+}
+
+TEST(BidsMotion, IrregularTimesGoToTheLatencyChannelAndBothRates) {
+  // Angles at about 50 Hz with jittered times starting at 2 s.
+  AngleSeries s;
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.004, 0.004);
+  for (int i = 0; i < 500; ++i) {
+    s.t.push_back(2.0 + i * 0.02 + (i > 0 && i < 499 ? jitter(rng) : 0.0));
+    s.angle.push_back(ClinicalRow{0.1 * i / 500, 0, 0, 0.5, 0});
+  }
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), nullptr, &s, Side::Left, options());
+  ASSERT_EQ(r.systems.size(), 1u);
+  const auto rows = checkSystem(r.systems[0], "flexion");
+  for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_NEAR(rows[i][0], s.t[i] - 2.0, 1e-6);
+  const json j = json::parse(readText(r.systems[0].motionJson));
+  EXPECT_NEAR(j.at("SamplingFrequency").get<double>(), 50.0, 2.0);  // median interval
+  EXPECT_NEAR(j.at("SamplingFrequencyEffective").get<double>(), 499 / (s.t.back() - s.t[0]), 1e-9);
+  EXPECT_NEAR(j.at("RecordingDuration").get<double>(), 9.98, 1e-9);
+  EXPECT_EQ(readChannels(r.systems[0].channelsTsv).rows[1][3], "LeftShoulder");
+}
+
+TEST(BidsMotion, MissingValuesAreNaAndRowsWithoutTimeAreDropped) {
+  AngleSeries s;
+  for (int i = 0; i < 6; ++i) {
+    s.t.push_back(i * 0.01);
+    s.angle.push_back(ClinicalRow{0.1, 0.2, 0.3, 0.4, 0.5});
+  }
+  s.angle[2][1] = kNaN;
+  s.angle[3][4] = INFINITY;
+  s.t[4] = kNaN;
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), nullptr, &s, Side::Right, options());
+  EXPECT_EQ(r.skippedAngleRows, 1u);
+  ASSERT_EQ(r.systems.size(), 1u);
+  EXPECT_EQ(r.systems[0].rows, 5u);
+  EXPECT_EQ(r.systems[0].missingValues, 2u);
+  const auto lines = readLines(r.systems[0].motionTsv);
+  EXPECT_EQ(lines[2], "0.020000\t5.729578\tn/a\t17.188734\t22.918312\t28.647890");
+  EXPECT_EQ(split(lines[3], '\t')[5], "n/a");
+  checkSystem(r.systems[0], "flexion");
+}
+
+TEST(BidsMotion, MissingSensorsAreNaInTheirSystemsRows) {
+  // The forearm IMU runs at half the upper arm's rate: rows with only the upper arm carry n/a in
+  // the forearm's columns.
+  SimulationParams p = defaultSimulation();
+  p.duration = 1.0;
+  p.upperArm.rateHz = 100;
+  p.forearm.rateHz = 50;
+  p.kinect.enabled = false;
+  const Recording rec = simulateRecording(knownMovement(), p);
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), &rec, nullptr, Side::Right, options());
+  ASSERT_EQ(r.systems.size(), 1u);  // no optical data, no angles
+  EXPECT_EQ(r.systems[0].rows, 101u);
+  EXPECT_EQ(r.systems[0].missingValues, 50u * 6);
+  const auto rows = checkSystem(r.systems[0], "flexion");
+  EXPECT_TRUE(std::isnan(rows[1][7]));
+  EXPECT_FALSE(std::isnan(rows[2][7]));
+}
+
+TEST(BidsMotion, HostileInputAndUnwritableFoldersLeaveNothingBehind) {
+  TempDir dir;
+  AngleSeries one{{0.0}, {ClinicalRow{}}};
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, &one, Side::Right, options()), ExportError);
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, nullptr, Side::Right, options()), ExportError);
+  AngleSeries empty;
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, &empty, Side::Right, options()), ExportError);
+  BidsOptions bad = options();
+  bad.subject = "P-001";
+  AngleSeries two{{0.0, 0.1}, {ClinicalRow{}, ClinicalRow{}}};
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, &two, Side::Right, bad), std::invalid_argument);
+  EXPECT_EQ(bidsLabel("P-001 a"), "P001a");
+  EXPECT_THROW(bidsLabel("--"), std::invalid_argument);
+  AngleSeries back{{0.0, 0.2, 0.1}, {ClinicalRow{}, ClinicalRow{}, ClinicalRow{}}};
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, &back, Side::Right, options()), ExportError);
+  EXPECT_TRUE(listing(dir.path()).empty());
+
+  // A root that is a file: the error names the folder it could not create.
+  { std::ofstream(dir / "file") << "x"; }
+  try {
+    writeBidsMotion(dir / "file", nullptr, &two, Side::Right, options());
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_NE(std::string(e.what()).find((dir / "file").string()), std::string::npos) << e.what();
+  }
+  // Folders made, then no file can be created in them (a file name longer than the system
+  // allows, while each folder name is not): the folders this export made are removed again.
+  BidsOptions longNames = options();
+  longNames.subject = std::string(120, 'S');
+  longNames.task = std::string(120, 'T');
+  const auto before = listing(dir.path());
+  try {
+    writeBidsMotion(dir / "new", nullptr, &two, Side::Right, longNames);
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_NE(std::string(e.what()).find("tracksys-angles"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(listing(dir.path()), before);
+  // The last file of the set cannot be created (a folder has its name): no file of the set and
+  // no temporary file is left, and an existing dataset_description.json is not touched.
+  const fs::path motionDir = dir / "root" / "sub-P001" / "ses-20261125" / "motion";
+  const fs::path blocked =
+      motionDir / "sub-P001_ses-20261125_task-flexion_tracksys-angles_motion.tsv";
+  fs::create_directories(blocked);
+  { std::ofstream(dir / "root" / "dataset_description.json") << "{}"; }
+  const Recording rec = simulatedSession(knownMovement(), 0.5, 50.0);
+  try {
+    writeBidsMotion(dir / "root", &rec, &two, Side::Right, options());
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_EQ(e.path(), blocked);
+  }
+  fs::remove(blocked);
+  EXPECT_TRUE(fs::is_empty(motionDir));
+  EXPECT_EQ(readText(dir / "root" / "dataset_description.json"), "{}");
+}
+
+}  // namespace
+}  // namespace armtrack
