@@ -1,0 +1,275 @@
+#include "core/reports/Charts.h"
+
+#include <QFontMetricsF>
+#include <QPainterPath>
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+
+namespace armtrack::reports {
+namespace {
+
+const QColor kLine(30, 80, 200);        // the patient's data
+const QColor kBand(120, 200, 120, 90);  // protocol target
+const QColor kNormal(150, 150, 150, 80);
+const QColor kGrid(225, 225, 225);
+
+/// Data area of a chart inside its outer rect, with the mapping from data to device units.
+struct Frame {
+  QRectF plot;
+  double xlo = 0, xhi = 1, ylo = 0, yhi = 1;
+  double px(double x) const { return plot.left() + (x - xlo) / (xhi - xlo) * plot.width(); }
+  double py(double y) const { return plot.bottom() - (y - ylo) / (yhi - ylo) * plot.height(); }
+};
+
+QString number(double v) {
+  if (std::abs(v) < 1e-9) v = 0;
+  return QString::number(v, 'g', 6);
+}
+
+/// Title, grid, frame, ticks and their labels, axis titles.
+void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString& title,
+              const std::vector<double>& xTicks, const std::function<QString(double)>& xLabel,
+              const QString& xTitle, const std::vector<double>& yTicks, const QString& yTitle) {
+  QPainter& p = w.painter();
+  const QFontMetricsF fm(w.fonts().small, w.device());
+  p.save();
+  p.setFont(w.fonts().smallBold);
+  p.setPen(Qt::black);
+  p.drawText(QRectF(f.plot.left(), outer.top(), f.plot.width(), fm.height()),
+             Qt::AlignLeft | Qt::AlignVCenter, title);
+  p.setFont(w.fonts().small);
+  p.setPen(QPen(kGrid, w.mm(0.15)));
+  for (double y : yTicks) p.drawLine(QPointF(f.plot.left(), f.py(y)), QPointF(f.plot.right(), f.py(y)));
+  p.setPen(QPen(Qt::black, w.mm(0.2)));
+  p.drawRect(f.plot);
+  const double tick = w.mm(1.0);
+  for (double y : yTicks) {
+    p.drawLine(QPointF(f.plot.left() - tick, f.py(y)), QPointF(f.plot.left(), f.py(y)));
+    p.drawText(QRectF(outer.left(), f.py(y) - fm.height() / 2, f.plot.left() - outer.left() - tick * 1.5,
+                      fm.height()),
+               Qt::AlignRight | Qt::AlignVCenter, number(y));
+  }
+  for (double x : xTicks) {
+    p.drawLine(QPointF(f.px(x), f.plot.bottom()), QPointF(f.px(x), f.plot.bottom() + tick));
+    const QString label = xLabel(x);
+    const double lw = fm.horizontalAdvance(label) + w.mm(1);
+    p.drawText(QRectF(f.px(x) - lw / 2, f.plot.bottom() + tick, lw, fm.height()),
+               Qt::AlignHCenter | Qt::AlignTop, label);
+  }
+  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + tick + fm.height(), f.plot.width(), fm.height()),
+             Qt::AlignRight | Qt::AlignTop, xTitle);
+  // The y unit above the tick labels, horizontal so it reads (and extracts) as text.
+  p.drawText(QRectF(outer.left(), outer.top(), f.plot.left() - outer.left(), fm.height()),
+             Qt::AlignLeft | Qt::AlignVCenter, yTitle);
+  p.restore();
+}
+
+Frame frameIn(PageWriter& w, const QRectF& r) {
+  const QFontMetricsF fm(w.fonts().small, w.device());
+  Frame f;
+  f.plot = QRectF(r.left() + w.mm(14), r.top() + fm.height() + w.mm(1.5), r.width() - w.mm(16),
+                  r.height() - 3 * fm.height() - w.mm(3));
+  return f;
+}
+
+}  // namespace
+
+std::vector<double> niceTicks(double lo, double hi, int target) {
+  std::vector<double> ticks;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || target < 1) return ticks;
+  const double raw = (hi - lo) / target;
+  const double mag = std::pow(10.0, std::floor(std::log10(raw)));
+  // The candidate step nearest to the raw one (on a log scale).
+  double step = mag;
+  for (double m : {1.0, 2.0, 2.5, 5.0, 10.0})
+    if (std::abs(std::log(m * mag / raw)) < std::abs(std::log(step / raw))) step = m * mag;
+  const double first = std::ceil(lo / step - 1e-9);
+  for (double k = first; k * step <= hi + step * 1e-9; k += 1) ticks.push_back(k * step + 0.0);
+  return ticks;
+}
+
+void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
+                  const std::vector<double>& tS, const std::vector<double>& yDeg,
+                  const std::optional<Band>& band) {
+  Frame f = frameIn(w, r);
+  const std::size_t n = std::min(tS.size(), yDeg.size());
+  double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(yDeg[i])) {
+      ylo = std::min(ylo, yDeg[i]);
+      yhi = std::max(yhi, yDeg[i]);
+    }
+  if (band) {
+    ylo = std::min(ylo, band->loDeg);
+    yhi = std::max(yhi, band->hiDeg);
+  }
+  if (!std::isfinite(ylo)) ylo = 0, yhi = 1;
+  const double mid = (ylo + yhi) / 2, half = std::max((yhi - ylo) / 2, 5.0) * 1.1;
+  f.ylo = mid - half;
+  f.yhi = mid + half;
+  f.xlo = 0;
+  f.xhi = n > 0 && tS[n - 1] > tS[0] ? tS[n - 1] - tS[0] : 1.0;
+  const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
+  const std::vector<double> xTicks = niceTicks(f.xlo, f.xhi, 8);
+
+  QPainter& p = w.painter();
+  p.save();
+  if (band) {
+    const QRectF b(f.plot.left(), f.py(band->hiDeg), f.plot.width(),
+                   f.py(band->loDeg) - f.py(band->hiDeg));
+    p.fillRect(b.intersected(f.plot), kBand);
+  }
+  drawAxes(w, f, r, title, xTicks, number, QStringLiteral("time (s)"), yTicks,
+           QStringLiteral("deg"));
+  if (band) {
+    p.setFont(w.fonts().small);
+    p.setPen(QColor(40, 110, 40));
+    p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
+               Qt::AlignRight | Qt::AlignVCenter, band->label);
+  }
+  // Min and max per column of about 0.25 mm keep every peak while bounding the path's size.
+  const int columns = std::max(1, static_cast<int>(f.plot.width() / w.mm(0.25)));
+  QPainterPath path;
+  bool open = false;
+  auto add = [&](double t, double y) {
+    const QPointF pt(f.px(t), f.py(y));
+    if (open) path.lineTo(pt);
+    else path.moveTo(pt);
+    open = true;
+  };
+  std::size_t i = 0;
+  while (i < n) {
+    if (!std::isfinite(yDeg[i]) || !std::isfinite(tS[i])) {
+      open = false;
+      ++i;
+      continue;
+    }
+    const double t = tS[i] - tS[0];
+    const int col = static_cast<int>(t / (f.xhi - f.xlo) * columns);
+    std::size_t j = i, jmin = i, jmax = i;
+    while (j < n && std::isfinite(yDeg[j]) && std::isfinite(tS[j]) &&
+           static_cast<int>((tS[j] - tS[0]) / (f.xhi - f.xlo) * columns) == col) {
+      if (yDeg[j] < yDeg[jmin]) jmin = j;
+      if (yDeg[j] > yDeg[jmax]) jmax = j;
+      ++j;
+    }
+    const std::size_t a = std::min(jmin, jmax), b = std::max(jmin, jmax);
+    add(tS[a] - tS[0], yDeg[a]);
+    if (b != a) add(tS[b] - tS[0], yDeg[b]);
+    i = j;
+  }
+  p.setClipRect(f.plot);
+  p.setPen(QPen(kLine, w.mm(0.3), Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+  p.setBrush(Qt::NoBrush);
+  p.drawPath(path);
+  p.restore();
+}
+
+double normativeBarsHeight(const PageWriter& w, std::size_t n) {
+  return w.mm(7.5) * static_cast<double>(n) + w.mm(10);
+}
+
+void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<NormativeBar>& bars) {
+  QPainter& p = w.painter();
+  const QFontMetricsF fm(w.fonts().small, w.device());
+  double lo = -100, hi = 190;
+  for (const NormativeBar& b : bars) {
+    lo = std::min({lo, b.minDeg, b.normalLoDeg.value_or(0.0)});
+    hi = std::max({hi, b.maxDeg, b.normalHiDeg});
+  }
+  Frame f;
+  f.plot = QRectF(r.left() + w.mm(42), r.top(), r.width() - w.mm(42 + 52), w.mm(7.5) * bars.size());
+  f.xlo = lo;
+  f.xhi = hi;
+  p.save();
+  p.setFont(w.fonts().small);
+  const std::vector<double> ticks = niceTicks(lo, hi, 8);
+  p.setPen(QPen(kGrid, w.mm(0.15)));
+  for (double x : ticks) p.drawLine(QPointF(f.px(x), f.plot.top()), QPointF(f.px(x), f.plot.bottom()));
+  p.setPen(QPen(Qt::black, w.mm(0.25)));
+  p.drawLine(QPointF(f.px(0), f.plot.top()), QPointF(f.px(0), f.plot.bottom()));
+  for (std::size_t i = 0; i < bars.size(); ++i) {
+    const NormativeBar& b = bars[i];
+    const double top = f.plot.top() + w.mm(7.5) * i;
+    const QRectF row(f.plot.left(), top + w.mm(1), f.plot.width(), w.mm(5.5));
+    const double nlo = b.normalLoDeg.value_or(0.0);
+    p.fillRect(QRectF(f.px(nlo), row.top(), f.px(b.normalHiDeg) - f.px(nlo), row.height()), kNormal);
+    const QRectF patient(f.px(b.minDeg), row.top() + w.mm(1.5),
+                         std::max(f.px(b.maxDeg) - f.px(b.minDeg), w.mm(0.4)), w.mm(2.5));
+    p.fillRect(patient, kLine);
+    p.setPen(Qt::black);
+    p.drawText(QRectF(r.left(), row.top(), w.mm(40), row.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, b.name);
+    p.drawText(QRectF(f.plot.right() + w.mm(2), row.top(), w.mm(50), row.height()),
+               Qt::AlignLeft | Qt::AlignVCenter, b.caption);
+  }
+  p.setPen(QPen(Qt::black, w.mm(0.2)));
+  p.drawLine(QPointF(f.plot.left(), f.plot.bottom()), QPointF(f.plot.right(), f.plot.bottom()));
+  for (double x : ticks) {
+    p.drawLine(QPointF(f.px(x), f.plot.bottom()), QPointF(f.px(x), f.plot.bottom() + w.mm(1)));
+    const QString label = number(x);
+    p.drawText(QRectF(f.px(x) - w.mm(6), f.plot.bottom() + w.mm(1), w.mm(12), fm.height()),
+               Qt::AlignHCenter | Qt::AlignTop, label);
+  }
+  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + w.mm(1) + fm.height(), f.plot.width(),
+                    fm.height()),
+             Qt::AlignRight | Qt::AlignTop, QStringLiteral("angle (deg)"));
+  p.restore();
+}
+
+void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
+                   const std::vector<QDateTime>& when, const std::vector<std::optional<double>>& romDeg,
+                   double normalSpanDeg) {
+  Frame f = frameIn(w, r);
+  const std::size_t n = std::min(when.size(), romDeg.size());
+  // Days since the first session, so the x axis is proportional to time.
+  const QDateTime origin = n > 0 ? when.front() : QDateTime::currentDateTimeUtc();
+  auto day = [&](const QDateTime& t) { return origin.msecsTo(t) / 86400000.0; };
+  double last = 0, top = normalSpanDeg;
+  for (std::size_t i = 0; i < n; ++i) {
+    last = std::max(last, day(when[i]));
+    if (romDeg[i]) top = std::max(top, *romDeg[i]);
+  }
+  f.xlo = -0.5;
+  f.xhi = std::max(last, 1.0) + 0.5;
+  f.ylo = 0;
+  f.yhi = top * 1.1 + 1;
+  std::vector<double> xTicks;
+  for (double d : niceTicks(0, f.xhi, 5))
+    if (std::abs(d - std::round(d)) < 1e-9) xTicks.push_back(d);
+  const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
+  QPainter& p = w.painter();
+  p.save();
+  p.fillRect(QRectF(f.plot.left(), f.py(normalSpanDeg), f.plot.width(),
+                    f.plot.bottom() - f.py(normalSpanDeg)),
+             kNormal);
+  const QDate first = origin.date();
+  drawAxes(w, f, r, title, xTicks,
+           [&](double d) { return first.addDays(static_cast<qint64>(std::lround(d))).toString(Qt::ISODate); },
+           QStringLiteral("date"), yTicks, QStringLiteral("ROM (deg)"));
+  p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
+  p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)), QPointF(f.plot.right(), f.py(normalSpanDeg)));
+  p.setFont(w.fonts().small);
+  p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
+             Qt::AlignRight | Qt::AlignVCenter,
+             QStringLiteral("shaded: AAOS normal range of motion, 0-%1 deg").arg(normalSpanDeg, 0, 'f', 0));
+  QPainterPath path;
+  bool open = false;
+  p.setPen(QPen(kLine, w.mm(0.35)));
+  p.setBrush(kLine);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!romDeg[i]) continue;
+    const QPointF pt(f.px(day(when[i])), f.py(*romDeg[i]));
+    if (open) path.lineTo(pt);
+    else path.moveTo(pt);
+    open = true;
+    p.drawEllipse(pt, w.mm(0.8), w.mm(0.8));
+  }
+  p.setBrush(Qt::NoBrush);
+  p.drawPath(path);
+  p.restore();
+}
+
+}  // namespace armtrack::reports

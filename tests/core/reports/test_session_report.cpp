@@ -1,0 +1,255 @@
+// The session report, read back as a reader would: the text through pdftotext (every section,
+// the patient on every page, page numbers, the printed ranges against the metrics and the
+// simulated truth) and the pages through pdftoppm (not blank, plots drawn).
+#include <QFile>
+#include <iostream>
+#include <QRegularExpression>
+#include <cmath>
+
+#include "ReportTestSupport.h"
+#include "core/reports/Reports.h"
+
+namespace armtrack::reports {
+namespace {
+
+using namespace test;
+
+const QStringList kSections = {"Session report",
+                               "Patient and session",
+                               "Devices and calibration",
+                               "Metrics per clinical angle",
+                               "Joint angles over time",
+                               "Repetitions",
+                               "Comparison with normative ranges",
+                               "Comparison with earlier sessions",
+                               "Therapist's notes"};
+
+class SessionReport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ensureGuiApp();
+    if (!havePdfTools()) GTEST_SKIP() << "pdftotext/pdftoppm (poppler-utils) not installed";
+    ASSERT_TRUE(dir.isValid());
+    // ARMTRACK_KEEP_REPORTS=1 keeps the PDFs and PNGs to look at (the folder is printed).
+    if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
+      dir.setAutoRemove(false);
+      std::cout << "reports kept in " << dir.path().toStdString() << std::endl;
+    }
+  }
+  QString path(const QString& name) const { return dir.filePath(name); }
+  QTemporaryDir dir;
+};
+
+/// The numbers on the line of the metrics table that starts with `name`.
+std::vector<double> metricsRow(const QString& page, const QString& name) {
+  const int from = page.indexOf("Metrics per clinical angle");
+  const int to = page.indexOf("samples used", from);
+  if (from < 0 || to < 0) return {};
+  for (const QString& line : page.mid(from, to - from).split('\n')) {
+    const QString l = line.trimmed();
+    if (!l.startsWith(name)) continue;
+    std::vector<double> v;
+    for (const QString& tok : l.mid(name.size()).split(' ', Qt::SkipEmptyParts)) v.push_back(tok.toDouble());
+    return v;
+  }
+  return {};
+}
+
+TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
+  const SimulatedSession sim = simulateSession({110, 120, 115, 118, 60});
+  const SessionReportData d = sessionData(sim);
+  const QString pdf = path("session.pdf");
+  const int pages = writeSessionReport(d, pdf);
+  ASSERT_GE(pages, 2);
+  const QStringList text = pageTexts(pdf);
+  ASSERT_EQ(text.size(), pages);
+  const QString all = text.join('\n');
+  for (const QString& s : kSections) EXPECT_TRUE(all.contains(s)) << "missing section " << s.toStdString();
+  for (int i = 0; i < pages; ++i) {
+    SCOPED_TRACE(i + 1);
+    EXPECT_TRUE(text[i].contains("Anna Example"));
+    EXPECT_TRUE(text[i].contains("2026-11-20"));
+    EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(pages)));
+  }
+  for (const QString& s : {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm",
+                           "upper_arm_m", "Frozen shoulder", "Continue the programme twice a week."})
+    EXPECT_TRUE(all.contains(s)) << s;
+  EXPECT_TRUE(all.contains(QRegularExpression("Duration\\s+\\d+\\.\\d s"))) << "duration";
+
+  // Each angle's row: min, max, ROM, peak and mean velocity as the metrics give them, in degrees.
+  for (int a = 0; a < kNumClinicalAngles; ++a) {
+    const QString name = QString::fromUtf8(clinicalAngleInfo()[a].name.data());
+    SCOPED_TRACE(name.toStdString());
+    EXPECT_GE(all.count(name), 3) << "table, plot and bar name the angle";
+    const AngleMetricsDeg m = inDegrees(sim.metrics.session.angle[a]);
+    std::vector<double> row;
+    for (const QString& page : text)
+      if (row.empty()) row = metricsRow(page, name);
+    ASSERT_EQ(row.size(), 6u);
+    EXPECT_NEAR(row[0], m.minDeg, 0.051);
+    EXPECT_NEAR(row[1], m.maxDeg, 0.051);
+    EXPECT_NEAR(row[2], m.romDeg, 0.051);
+    EXPECT_NEAR(row[3], m.peakVelocityDegPerS, 0.051);
+    // Independent truth: the printed range is that of the simulated trajectory.
+    EXPECT_NEAR(row[2], sim.trueRomDeg[a], 1.0);
+  }
+  // Five repetitions, one of them partial (60 deg against a 100+ deg reference).
+  EXPECT_TRUE(all.contains("5 repetitions counted on Shoulder flexion: 4 full, 1 partial"));
+  EXPECT_TRUE(all.contains("AAOS"));
+  EXPECT_TRUE(all.contains("this session"));
+  EXPECT_TRUE(all.contains("Change since last"));
+  EXPECT_TRUE(all.contains("Other side"));
+  EXPECT_TRUE(all.contains("shaded: protocol target 10.0 to 120.0 deg"));
+}
+
+TEST_F(SessionReport, PagesRenderNotBlankWithPlotsDrawn) {
+  const SimulatedSession sim = simulateSession({110, 120, 115, 118, 60});
+  const QString pdf = path("session.pdf");
+  const int pages = writeSessionReport(sessionData(sim), pdf);
+  const std::vector<QImage> images = renderPages(pdf, dir.path());
+  ASSERT_EQ(static_cast<int>(images.size()), pages);
+  const QStringList text = pageTexts(pdf);
+  bool sawPlots = false, sawBand = false;
+  for (int i = 0; i < pages; ++i) {
+    SCOPED_TRACE(i + 1);
+    const QImage& img = images[i];
+    ASSERT_FALSE(img.isNull());
+    // A4 at 60 dpi: 8.27 x 11.69 in.
+    EXPECT_NEAR(img.width(), 496, 2);
+    EXPECT_NEAR(img.height(), 702, 2);
+    EXPECT_GT(inkFraction(img), 0.01) << "page looks blank";
+    if (text[i].contains("Joint angles over time") || text[i].contains("Elbow flexion (deg)")) {
+      // The angle curves span most of the plot width (the text width is 174 of 210 mm).
+      const BlueInk b = blueInk(img);
+      EXPECT_GT(b.count, 300);
+      EXPECT_GT(b.maxX - b.minX, 0.6 * img.width());
+      sawPlots = true;
+      qint64 green = 0;
+      for (int y = 0; y < img.height(); ++y)
+        for (int x = 0; x < img.width(); ++x) {
+          const QRgb c = img.pixel(x, y);
+          if (qGreen(c) > qRed(c) + 15 && qGreen(c) > qBlue(c) + 15) ++green;
+        }
+      if (green > 2000) sawBand = true;  // the shaded target band of shoulder flexion
+    }
+  }
+  EXPECT_TRUE(sawPlots);
+  EXPECT_TRUE(sawBand);
+}
+
+TEST_F(SessionReport, NoRepetitionsNoNotesNoEarlierSessions) {
+  // A still arm: nothing to count.
+  SimulatedSession sim = simulateSession({});
+  SessionReportData d = sessionData(sim);
+  d.session.notes.clear();
+  d.earlierSessions.clear();
+  d.otherSide.reset();
+  d.protocol.reset();
+  d.session.protocolName.clear();
+  d.session.devicesJson = "{}";
+  const QString pdf = path("still.pdf");
+  writeSessionReport(d, pdf);
+  const QString all = pageTexts(pdf).join('\n');
+  for (const QString& s : kSections) EXPECT_TRUE(all.contains(s)) << s.toStdString();
+  EXPECT_TRUE(all.contains("No repetitions were detected (0 repetitions)."));
+  EXPECT_TRUE(all.contains("No notes."));
+  EXPECT_TRUE(all.contains("No earlier sessions to compare with."));
+  EXPECT_TRUE(all.contains("No devices were recorded"));
+  EXPECT_FALSE(all.contains("shaded: protocol target"));
+}
+
+TEST_F(SessionReport, LongNotesFlowOntoFurtherPagesWithNothingLost) {
+  const SimulatedSession sim = simulateSession({110, 120});
+  SessionReportData d = sessionData(sim);
+  const int shortPages = writeSessionReport(d, path("short.pdf"));
+  QStringList words;
+  for (int i = 1; i <= 2500; ++i) words << QString("w%1").arg(i, 4, 10, QLatin1Char('0'));
+  QString notes;
+  for (int i = 0; i < words.size(); ++i) notes += words[i] + ((i + 1) % 100 == 0 ? "\n" : " ");
+  d.session.notes = notes;
+  const QString pdf = path("long.pdf");
+  const int pages = writeSessionReport(d, pdf);
+  EXPECT_GE(pages, shortPages + 2);
+  const QStringList text = pageTexts(pdf);
+  ASSERT_EQ(text.size(), pages);
+  const QString all = text.join('\n');
+  // Every word once, none clipped at a page end.
+  const QRegularExpression word("\\bw(\\d{4})\\b");
+  std::vector<int> seen(2501, 0);
+  for (auto it = word.globalMatch(all); it.hasNext();) ++seen[it.next().captured(1).toInt()];
+  for (int i = 1; i <= 2500; ++i) ASSERT_EQ(seen[i], 1) << "word " << i;
+  EXPECT_TRUE(text.back().contains(QString("Page %1 of %1").arg(pages)));
+  EXPECT_TRUE(text.back().contains("Anna Example"));
+  const std::vector<QImage> images = renderPages(pdf, dir.path());
+  ASSERT_EQ(static_cast<int>(images.size()), pages);
+  for (const QImage& img : images) EXPECT_GT(inkFraction(img), 0.01);
+}
+
+TEST_F(SessionReport, NonLatinNamesAreSearchableText) {
+  const SimulatedSession sim = simulateSession({110, 120});
+  for (const QString& name : {QString::fromUtf8("Łukasz Żółć"), QString::fromUtf8("李雷"),
+                              QString::fromUtf8("Ирина Петрова")}) {
+    SCOPED_TRACE(name.toStdString());
+    SessionReportData d = sessionData(sim);
+    d.patient.name = name;
+    d.therapistName = QString::fromUtf8("Zoë Ångström");
+    const QString pdf = path("names.pdf");
+    const int pages = writeSessionReport(d, pdf);
+    const QStringList text = pageTexts(pdf);
+    ASSERT_EQ(text.size(), pages);
+    for (const QString& page : text) EXPECT_TRUE(page.contains(name));
+    EXPECT_TRUE(text.join('\n').contains(QString::fromUtf8("Zoë Ångström")));
+  }
+}
+
+TEST_F(SessionReport, UnwritablePathNamesItAndLeavesNoFile) {
+  const SimulatedSession sim = simulateSession({110});
+  const SessionReportData d = sessionData(sim);
+  QFile plain(path("plain.txt"));
+  ASSERT_TRUE(plain.open(QIODevice::WriteOnly));
+  plain.write("x");
+  plain.close();
+  for (const QString& bad : {path("missing-folder/report.pdf"), path("plain.txt/report.pdf")}) {
+    SCOPED_TRACE(bad.toStdString());
+    try {
+      writeSessionReport(d, bad);
+      ADD_FAILURE() << "no error";
+    } catch (const ReportError& e) {
+      EXPECT_NE(std::string(e.what()).find(bad.toStdString()), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(QFile::exists(bad));
+  }
+  EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files | QDir::Dirs | QDir::NoDotAndDotDot),
+            QStringList{"plain.txt"});
+}
+
+TEST_F(SessionReport, ReplacesAnEarlierFileWhole) {
+  const SimulatedSession sim = simulateSession({110});
+  const QString pdf = path("again.pdf");
+  QFile old(pdf);
+  ASSERT_TRUE(old.open(QIODevice::WriteOnly));
+  old.write(QByteArray(5'000'000, 'x'));  // larger than the report: a leftover tail would show
+  old.close();
+  writeSessionReport(sessionData(sim), pdf);
+  QFile f(pdf);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  const QByteArray bytes = f.readAll();
+  EXPECT_TRUE(bytes.startsWith("%PDF-"));
+  EXPECT_TRUE(bytes.trimmed().endsWith("%%EOF"));
+  EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files), QStringList{"again.pdf"});
+}
+
+TEST_F(SessionReport, RefusesAnEmptySession) {
+  SessionReportData d;
+  d.session.id = 99;
+  try {
+    writeSessionReport(d, path("empty.pdf"));
+    FAIL() << "no error";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("session 99"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(QFile::exists(path("empty.pdf")));
+}
+
+}  // namespace
+}  // namespace armtrack::reports
