@@ -12,7 +12,8 @@ namespace {
 
 const QColor kLine(30, 80, 200);        // the patient's data
 const QColor kBand(120, 200, 120, 90);  // protocol target
-const QColor kNormal(150, 150, 150, 80);
+const QColor kNormal(150, 150, 150, 80);      // normal range, bars
+const QColor kNormalSpan(150, 150, 150, 45);  // normal range of motion behind a ROM line
 const QColor kGrid(225, 225, 225);
 
 /// Data area of a chart inside its outer rect, with the mapping from data to device units.
@@ -45,6 +46,7 @@ void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString&
   p.setPen(QPen(Qt::black, w.mm(0.2)));
   p.drawRect(f.plot);
   const double tick = w.mm(1.0);
+  const double labelTop = fm.height() * 0.5 + w.mm(0.3);
   for (double y : yTicks) {
     p.drawLine(QPointF(f.plot.left() - tick, f.py(y)), QPointF(f.plot.left(), f.py(y)));
     p.drawText(QRectF(outer.left(), f.py(y) - fm.height() / 2, f.plot.left() - outer.left() - tick * 1.5,
@@ -55,10 +57,11 @@ void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString&
     p.drawLine(QPointF(f.px(x), f.plot.bottom()), QPointF(f.px(x), f.plot.bottom() + tick));
     const QString label = xLabel(x);
     const double lw = fm.horizontalAdvance(label) + w.mm(1);
-    p.drawText(QRectF(f.px(x) - lw / 2, f.plot.bottom() + tick, lw, fm.height()),
+    p.drawText(QRectF(f.px(x) - lw / 2, f.plot.bottom() + labelTop, lw, fm.height()),
                Qt::AlignHCenter | Qt::AlignTop, label);
   }
-  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + tick + fm.height(), f.plot.width(), fm.height()),
+  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + labelTop + fm.height(), f.plot.width(),
+                    fm.height()),
              Qt::AlignRight | Qt::AlignTop, xTitle);
   // The y unit above the tick labels, horizontal so it reads (and extracts) as text.
   p.drawText(QRectF(outer.left(), outer.top(), f.plot.left() - outer.left(), fm.height()),
@@ -69,8 +72,10 @@ void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString&
 Frame frameIn(PageWriter& w, const QRectF& r) {
   const QFontMetricsF fm(w.fonts().small, w.device());
   Frame f;
+  // Title row above; below: tick labels (starting half a line down, clear of the lowest y
+  // label) and the axis title.
   f.plot = QRectF(r.left() + w.mm(14), r.top() + fm.height() + w.mm(1.5), r.width() - w.mm(16),
-                  r.height() - 3 * fm.height() - w.mm(3));
+                  r.height() - 3.5 * fm.height() - w.mm(2.5));
   return f;
 }
 
@@ -244,11 +249,11 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   p.save();
   p.fillRect(QRectF(f.plot.left(), f.py(normalSpanDeg), f.plot.width(),
                     f.plot.bottom() - f.py(normalSpanDeg)),
-             kNormal);
+             kNormalSpan);
   const QDate first = origin.date();
   drawAxes(w, f, r, title, xTicks,
            [&](double d) { return first.addDays(static_cast<qint64>(std::lround(d))).toString(Qt::ISODate); },
-           QStringLiteral("date"), yTicks, QStringLiteral("ROM (deg)"));
+           QStringLiteral("date"), yTicks, QStringLiteral("deg"));
   p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
   p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)), QPointF(f.plot.right(), f.py(normalSpanDeg)));
   p.setFont(w.fonts().small);
@@ -269,6 +274,10 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   }
   p.setBrush(Qt::NoBrush);
   p.drawPath(path);
+  if (!open) {
+    p.setPen(Qt::black);
+    p.drawText(f.plot, Qt::AlignCenter, QStringLiteral("not measured in this period"));
+  }
   p.restore();
 }
 

@@ -159,11 +159,16 @@ void PageWriter::keyValues(const std::vector<std::pair<QString, QString>>& items
   table(t);
 }
 
+const QFont& PageWriter::cellFont(const Table& t, bool bold) const {
+  if (t.small) return bold ? m_fonts.smallBold : m_fonts.small;
+  return bold ? m_fonts.bold : m_fonts.body;
+}
+
 double PageWriter::rowHeight(const Table& t, const QStringList& cells, bool header) const {
   double h = 0;
   for (int c = 0; c < cells.size() && c < static_cast<int>(t.widths.size()); ++c) {
     const bool bold = header || (c < static_cast<int>(t.boldColumns.size()) && t.boldColumns[c]);
-    const QFontMetricsF fm(bold ? m_fonts.bold : m_fonts.body, &m_writer);
+    const QFontMetricsF fm(cellFont(t, bold), &m_writer);
     const double w = t.widths[c] * textWidth() - 2 * mm(kCellPadMm);
     const QRectF r = fm.boundingRect(QRectF(0, 0, w, 1e7), Qt::TextWordWrap | Qt::AlignLeft,
                                      cells[c]);
@@ -179,7 +184,7 @@ void PageWriter::drawRow(const Table& t, const QStringList& cells, bool header, 
     const double w = t.widths[c] * textWidth();
     const bool bold = header || (c < static_cast<int>(t.boldColumns.size()) && t.boldColumns[c]);
     const bool right = c < static_cast<int>(t.rightAligned.size()) ? t.rightAligned[c] : c > 0;
-    m_painter.setFont(bold ? m_fonts.bold : m_fonts.body);
+    m_painter.setFont(cellFont(t, bold));
     m_painter.setPen(Qt::black);
     const QRectF cell(x + mm(kCellPadMm), m_y + mm(kCellPadMm) * 0.6, w - 2 * mm(kCellPadMm),
                       height - mm(kCellPadMm) * 0.6);

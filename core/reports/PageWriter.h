@@ -28,6 +28,7 @@ struct Table {
   std::vector<bool> rightAligned;    ///< per column; default: all but the first
   std::vector<bool> boldColumns;     ///< per column; default none
   bool rules = true;                 ///< thin lines between rows
+  bool small = false;                ///< the small font, for tables with many columns
 };
 
 class PageWriter {
@@ -66,6 +67,7 @@ class PageWriter {
 
  private:
   void startPage();
+  const QFont& cellFont(const Table& t, bool bold) const;
   double rowHeight(const Table& t, const QStringList& cells, bool header) const;
   void drawRow(const Table& t, const QStringList& cells, bool header, double height);
 

@@ -49,7 +49,7 @@ void draw(PageWriter& w, const ProgressReportData& d, const std::vector<Progress
       std::vector<std::optional<double>> rom;
       for (const ProgressSession& s : sessions) rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
       const QRectF r = w.reserve(w.mm(44));
-      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)), angleName(a) + QStringLiteral(": range of motion"),
+      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)), angleName(a) + QStringLiteral(": range of motion (deg)"),
                     when, rom, normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
     const std::string_view source = ranges[0].source;
@@ -60,13 +60,14 @@ void draw(PageWriter& w, const ProgressReportData& d, const std::vector<Progress
 
   w.heading(QStringLiteral("Sessions"));
   Table t;
-  t.header = {QStringLiteral("Date"), QStringLiteral("Session"), QStringLiteral("Protocol"),
+  t.small = true;
+  t.header = {QStringLiteral("Date"), QStringLiteral("Id"), QStringLiteral("Protocol"),
               QStringLiteral("Duration"), QStringLiteral("Reps")};
-  t.widths = {0.12, 0.08, 0.13, 0.1, 0.07};
+  t.widths = {0.11, 0.06, 0.15, 0.1, 0.06};
   t.rightAligned = {false, true, false, true, true};
   for (int a = 0; a < kNumClinicalAngles; ++a) {
     t.header << angleName(a) + QStringLiteral(" ROM");
-    t.widths.push_back(0.1);
+    t.widths.push_back(0.104);
     t.rightAligned.push_back(true);
   }
   for (const ProgressSession& s : sessions) {

@@ -43,9 +43,11 @@ inline void ensureGuiApp() {
   new QGuiApplication(argc, argv);  // lives until the process ends
 }
 
-inline bool havePdfTools() {
-  return !QStandardPaths::findExecutable(QStringLiteral("pdftotext")).isEmpty() &&
-         !QStandardPaths::findExecutable(QStringLiteral("pdftoppm")).isEmpty();
+/// The first of the poppler-utils tools the tests need that is not on PATH, or "".
+inline std::string missingPdfTool() {
+  for (const char* tool : {"pdftotext", "pdftoppm"})
+    if (QStandardPaths::findExecutable(QString::fromLatin1(tool)).isEmpty()) return tool;
+  return {};
 }
 
 /// Runs a program; fails the test (and returns "") on a non-zero exit.
