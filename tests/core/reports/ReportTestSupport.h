@@ -36,7 +36,9 @@ namespace armtrack::reports::test {
 /// A QGuiApplication on the offscreen platform, made once per process (fonts need it).
 inline void ensureGuiApp() {
   if (QCoreApplication::instance()) return;
-  qputenv("QT_QPA_PLATFORM", "offscreen");
+  // Offscreen, unless a test asked for an offscreen configuration of its own (screen DPI).
+  if (!qEnvironmentVariable("QT_QPA_PLATFORM").startsWith(QStringLiteral("offscreen")))
+    qputenv("QT_QPA_PLATFORM", "offscreen");
   static int argc = 1;
   static char name[] = "test_reports";
   static char* argv[] = {name, nullptr};

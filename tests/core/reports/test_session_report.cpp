@@ -94,8 +94,23 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
     // Independent truth: the printed range is that of the simulated trajectory.
     EXPECT_NEAR(row[2], sim.trueRomDeg[a], 1.0);
   }
-  // Five repetitions, one of them partial (60 deg against a 100+ deg reference).
+  // Five repetitions, one of them partial (60 deg against a 100+ deg reference); each row of the
+  // table as the metrics give it.
   EXPECT_TRUE(all.contains("5 repetitions counted on Shoulder flexion: 4 full, 1 partial"));
+  ASSERT_EQ(sim.metrics.repetitions.repetitions.size(), 5u);
+  for (std::size_t i = 0; i < 5; ++i) {
+    const Repetition& rep = sim.metrics.repetitions.repetitions[i];
+    const QString row = QString("%1 +%2 +%3 +%4 +%5 +%6")
+                            .arg(i + 1)
+                            .arg(rep.startS - sim.series.t.front(), 0, 'f', 2)
+                            .arg(rep.endS - sim.series.t.front(), 0, 'f', 2)
+                            .arg(rep.excursionRad * kRadToDeg, 0, 'f', 1)
+                            .arg(inDegrees(rep.metrics.angle[0]).peakVelocityDegPerS, 0, 'f', 1)
+                            .arg(rep.partial ? "yes" : "no");
+    EXPECT_TRUE(all.contains(QRegularExpression("\\n" + row + "\\n"))) << row;
+    // The truth: each excursion is its simulated peak minus the 10 deg rest.
+    EXPECT_NEAR(rep.excursionRad * kRadToDeg, sim.peaksDeg[i] - 10, 1.0);
+  }
   EXPECT_TRUE(all.contains("AAOS"));
   EXPECT_TRUE(all.contains("this session"));
   EXPECT_TRUE(all.contains("Change since last"));
@@ -136,6 +151,49 @@ TEST_F(SessionReport, PagesRenderNotBlankWithPlotsDrawn) {
   }
   EXPECT_TRUE(sawPlots);
   EXPECT_TRUE(sawBand);
+}
+
+// The layout comes from the PDF writer's resolution, never the screen's: a report written by a
+// process with a doubled device pixel ratio and font DPI (a high-DPI desktop) has the same pages
+// and text as one written with the defaults. Each is written by a child run of this test.
+TEST_F(SessionReport, SameLayoutOnAHighDpiScreen) {
+  const QString out = qEnvironmentVariable("ARMTRACK_REPORT_CHILD_OUT");
+  if (!out.isEmpty()) {
+    writeSessionReport(sessionData(simulateSession({110, 120, 60})), out);
+    return;
+  }
+  auto write = [&](const QString& name, bool highDpi) {
+    QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+    env.insert("ARMTRACK_REPORT_CHILD_OUT", path(name));
+    env.remove("ARMTRACK_KEEP_REPORTS");
+    if (highDpi) {
+      // A 4K screen at 192 dpi with a device pixel ratio of 2 (the offscreen platform's own
+      // configuration), and Qt's scale factor on top.
+      QFile config(path("hidpi.json"));
+      EXPECT_TRUE(config.open(QIODevice::WriteOnly));
+      config.write(R"({"screens": [{"name": "hidpi", "x": 0, "y": 0, "width": 3840,
+                       "height": 2160, "logicalDpi": 192, "logicalBaseDpi": 96, "dpr": 2}]})");
+      config.close();
+      env.insert("QT_QPA_PLATFORM", "offscreen:configfile=" + path("hidpi.json"));
+      env.insert("QT_SCALE_FACTOR", "2");
+      env.insert("QT_FONT_DPI", "192");
+    }
+    QProcess child;
+    child.setProcessEnvironment(env);
+    child.start(QCoreApplication::applicationFilePath(),
+                {"--gtest_filter=SessionReport.SameLayoutOnAHighDpiScreen"});
+    EXPECT_TRUE(child.waitForFinished(120000));
+    EXPECT_EQ(child.exitCode(), 0) << child.readAllStandardOutput().toStdString();
+    return pageTexts(path(name));
+  };
+  const QStringList normal = write("normal.pdf", false);
+  const QStringList high = write("high.pdf", true);
+  ASSERT_GE(normal.size(), 2);
+  EXPECT_EQ(high, normal);
+  const QString bbox = QString::fromUtf8(run("pdftotext", {"-bbox", path("high.pdf"), "-"}));
+  const QString bboxNormal = QString::fromUtf8(run("pdftotext", {"-bbox", path("normal.pdf"), "-"}));
+  EXPECT_EQ(bbox, bboxNormal) << "word positions differ";
+  EXPECT_TRUE(bbox.contains("width=\"595.") ) << "A4 is 595 x 842 pt";
 }
 
 TEST_F(SessionReport, NoRepetitionsNoNotesNoEarlierSessions) {
