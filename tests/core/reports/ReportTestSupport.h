@@ -36,13 +36,17 @@ namespace armtrack::reports::test {
 /// A QGuiApplication on the offscreen platform, made once per process (fonts need it).
 inline void ensureGuiApp() {
   if (QCoreApplication::instance()) return;
+  static int argc0 = 1;
+  static char name0[] = "test_reports";
+  static char* argv0[] = {name0, nullptr};
   // Offscreen, unless a test asked for an offscreen configuration of its own (screen DPI).
   if (!qEnvironmentVariable("QT_QPA_PLATFORM").startsWith(QStringLiteral("offscreen")))
     qputenv("QT_QPA_PLATFORM", "offscreen");
-  static int argc = 1;
-  static char name[] = "test_reports";
-  static char* argv[] = {name, nullptr};
-  new QGuiApplication(argc, argv);  // lives until the process ends
+  if (qEnvironmentVariableIsSet("ARMTRACK_REPORT_CORE_APP")) {  // a child run without Qt Gui
+    new QCoreApplication(argc0, argv0);
+    return;
+  }
+  new QGuiApplication(argc0, argv0);  // lives until the process ends
 }
 
 /// The first of the poppler-utils tools the tests need that is not on PATH, or "".

@@ -298,6 +298,32 @@ TEST_F(SessionReport, ReplacesAnEarlierFileWhole) {
   EXPECT_EQ(QDir(dir.path()).entryList(QDir::Files), QStringList{"again.pdf"});
 }
 
+// Fonts need a QGuiApplication: a program with only a QCoreApplication (the CLI's default) gets
+// a clear error, not a crash. Checked in a child run of this test that makes a QCoreApplication.
+TEST_F(SessionReport, RefusesWithoutAGuiApplication) {
+  if (qEnvironmentVariableIsSet("ARMTRACK_REPORT_CORE_APP")) {
+    ASSERT_EQ(qobject_cast<QGuiApplication*>(QCoreApplication::instance()), nullptr);
+    try {
+      writeSessionReport(sessionData(simulateSession({110})), path("core.pdf"));
+      FAIL() << "no error";
+    } catch (const ReportError& e) {
+      EXPECT_NE(std::string(e.what()).find("QGuiApplication"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(QFile::exists(path("core.pdf")));
+    return;
+  }
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert("ARMTRACK_REPORT_CORE_APP", "1");
+  QProcess child;
+  child.setProcessEnvironment(env);
+  child.start(QCoreApplication::applicationFilePath(),
+              {"--gtest_filter=SessionReport.RefusesWithoutAGuiApplication"});
+  ASSERT_TRUE(child.waitForFinished(120000));
+  const QString out = QString::fromUtf8(child.readAllStandardOutput());
+  EXPECT_EQ(child.exitCode(), 0) << out;
+  EXPECT_TRUE(out.contains("[  PASSED  ] 1 test")) << out;
+}
+
 TEST_F(SessionReport, RefusesAnEmptySession) {
   SessionReportData d;
   d.session.id = 99;
