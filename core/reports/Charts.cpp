@@ -114,8 +114,20 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
   const double mid = (ylo + yhi) / 2, half = std::max((yhi - ylo) / 2, 5.0) * 1.1;
   f.ylo = mid - half;
   f.yhi = mid + half;
+  // Time from the first finite sample; the median step between finite samples.
+  std::vector<double> finiteT;
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::isfinite(tS[i])) finiteT.push_back(tS[i]);
+  const double t0 = finiteT.empty() ? 0.0 : finiteT.front();
+  std::vector<double> steps;
+  for (std::size_t i = 1; i < finiteT.size(); ++i) steps.push_back(finiteT[i] - finiteT[i - 1]);
+  double medianStep = std::numeric_limits<double>::infinity();
+  if (!steps.empty()) {
+    std::nth_element(steps.begin(), steps.begin() + steps.size() / 2, steps.end());
+    medianStep = steps[steps.size() / 2];
+  }
   f.xlo = 0;
-  f.xhi = n > 0 && tS[n - 1] > tS[0] ? tS[n - 1] - tS[0] : 1.0;
+  f.xhi = finiteT.size() > 1 && finiteT.back() > t0 ? finiteT.back() - t0 : 1.0;
   const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
   const std::vector<double> xTicks = niceTicks(f.xlo, f.xhi, 8);
 
@@ -134,35 +146,37 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
     p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
                Qt::AlignRight | Qt::AlignVCenter, band->label);
   }
-  // Min and max per column of about 0.25 mm keep every peak while bounding the path's size.
+  // Min and max per column of about 0.25 mm keep every peak while bounding the path's size. The
+  // line breaks at a non-finite value and across a gap: a step over 10 times the median step.
   const int columns = std::max(1, static_cast<int>(f.plot.width() / w.mm(0.25)));
+  const double maxStep = 10.0 * medianStep;
   QPainterPath path;
   bool open = false;
-  auto add = [&](double t, double y) {
-    const QPointF pt(f.px(t), f.py(y));
+  auto add = [&](std::size_t k) {
+    const QPointF pt(f.px(tS[k] - t0), f.py(yDeg[k]));
     if (open) path.lineTo(pt);
     else path.moveTo(pt);
     open = true;
   };
+  auto usable = [&](std::size_t k) { return std::isfinite(yDeg[k]) && std::isfinite(tS[k]); };
+  auto column = [&](std::size_t k) { return static_cast<int>((tS[k] - t0) / (f.xhi - f.xlo) * columns); };
   std::size_t i = 0;
   while (i < n) {
-    if (!std::isfinite(yDeg[i]) || !std::isfinite(tS[i])) {
+    if (!usable(i)) {
       open = false;
       ++i;
       continue;
     }
-    const double t = tS[i] - tS[0];
-    const int col = static_cast<int>(t / (f.xhi - f.xlo) * columns);
-    std::size_t j = i, jmin = i, jmax = i;
-    while (j < n && std::isfinite(yDeg[j]) && std::isfinite(tS[j]) &&
-           static_cast<int>((tS[j] - tS[0]) / (f.xhi - f.xlo) * columns) == col) {
+    const int col = column(i);
+    std::size_t j = i + 1, jmin = i, jmax = i;
+    while (j < n && usable(j) && column(j) == col && tS[j] - tS[j - 1] <= maxStep) {
       if (yDeg[j] < yDeg[jmin]) jmin = j;
       if (yDeg[j] > yDeg[jmax]) jmax = j;
       ++j;
     }
-    const std::size_t a = std::min(jmin, jmax), b = std::max(jmin, jmax);
-    add(tS[a] - tS[0], yDeg[a]);
-    if (b != a) add(tS[b] - tS[0], yDeg[b]);
+    add(std::min(jmin, jmax));
+    if (jmin != jmax) add(std::max(jmin, jmax));
+    if (j < n && usable(j) && tS[j] - tS[j - 1] > maxStep) open = false;  // a gap follows
     i = j;
   }
   p.setClipRect(f.plot);

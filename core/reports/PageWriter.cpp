@@ -62,14 +62,21 @@ void PageWriter::startPage() {
   m_painter.setPen(QPen(QColor(90, 90, 90), mm(0.2)));
   m_painter.setFont(m_fonts.small);
   const QRectF head(m_left, mm(kHeadTopMm), textWidth(), mm(6));
-  m_painter.drawText(head, Qt::AlignLeft | Qt::AlignVCenter, m_runningHead);
-  m_painter.drawText(head, Qt::AlignRight | Qt::AlignVCenter, QStringLiteral("ArmTrack"));
+  const QFontMetricsF fm(m_fonts.small, &m_writer);
+  const QString brand = QStringLiteral("ArmTrack");
+  // An absurdly long name is cut with an ellipsis rather than run into the brand.
+  const double room = textWidth() - fm.horizontalAdvance(brand) - mm(5);
+  m_painter.drawText(head, Qt::AlignLeft | Qt::AlignVCenter,
+                     fm.elidedText(m_runningHead, Qt::ElideMiddle, room));
+  m_painter.drawText(head, Qt::AlignRight | Qt::AlignVCenter, brand);
   m_painter.drawLine(QPointF(m_left, mm(kHeadTopMm + 7)), QPointF(m_right, mm(kHeadTopMm + 7)));
   m_painter.drawLine(QPointF(m_left, mm(kFootMm - 1.5)), QPointF(m_right, mm(kFootMm - 1.5)));
   const QRectF foot(m_left, mm(kFootMm), textWidth(), mm(6));
-  m_painter.drawText(foot, Qt::AlignLeft | Qt::AlignVCenter, m_footer);
   const QString number = m_total > 0 ? QStringLiteral("Page %1 of %2").arg(m_page).arg(m_total)
                                      : QStringLiteral("Page %1").arg(m_page);
+  m_painter.drawText(foot, Qt::AlignLeft | Qt::AlignVCenter,
+                     fm.elidedText(m_footer, Qt::ElideMiddle,
+                                   textWidth() - fm.horizontalAdvance(number) - mm(5)));
   m_painter.drawText(foot, Qt::AlignRight | Qt::AlignVCenter, number);
   m_painter.restore();
 }

@@ -2,6 +2,8 @@
 // the patient on every page, page numbers, the printed ranges against the metrics and the
 // simulated truth) and the pages through pdftoppm (not blank, plots drawn).
 #include <QFile>
+#include <QFileInfo>
+#include <limits>
 #include <iostream>
 #include <QRegularExpression>
 #include <cmath>
@@ -190,8 +192,14 @@ TEST_F(SessionReport, SameLayoutOnAHighDpiScreen) {
   const QStringList high = write("high.pdf", true);
   ASSERT_GE(normal.size(), 2);
   EXPECT_EQ(high, normal);
-  const QString bbox = QString::fromUtf8(run("pdftotext", {"-bbox", path("high.pdf"), "-"}));
-  const QString bboxNormal = QString::fromUtf8(run("pdftotext", {"-bbox", path("normal.pdf"), "-"}));
+  // Every word with its box, from <body> on (the head holds the PDF's creation time).
+  auto words = [&](const QString& name) {
+    const QString html = QString::fromUtf8(run("pdftotext", {"-bbox", path(name), "-"}));
+    return html.mid(html.indexOf("<body>"));
+  };
+  const QString bbox = words("high.pdf");
+  const QString bboxNormal = words("normal.pdf");
+  EXPECT_GT(bbox.count("<word "), 500);
   EXPECT_EQ(bbox, bboxNormal) << "word positions differ";
   EXPECT_TRUE(bbox.contains("width=\"595.") ) << "A4 is 595 x 842 pt";
 }
@@ -242,6 +250,84 @@ TEST_F(SessionReport, LongNotesFlowOntoFurtherPagesWithNothingLost) {
   const std::vector<QImage> images = renderPages(pdf, dir.path());
   ASSERT_EQ(static_cast<int>(images.size()), pages);
   for (const QImage& img : images) EXPECT_GT(inkFraction(img), 0.01);
+}
+
+// A long session with a gap and rows of NaN (dropped by the metrics, breaks in the plot): the
+// plots are reduced to about two points per 0.25 mm, so the file stays small, and the report
+// still states what was dropped.
+TEST_F(SessionReport, LongSessionWithGapsAndNaNsStaysSmall) {
+  SimulatedSession sim = simulateSession(std::vector<double>(200, 115.0));
+  AngleSeries& s = sim.series;
+  ASSERT_GT(s.t.size(), 80000u);
+  for (std::size_t i = 5000; i < 5010; ++i) s.angle[i][2] = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 20000; i < s.t.size(); ++i) s.t[i] += 30.0;  // a 30 s gap
+  ClinicalMetricsParams params;
+  params.repetitions.primaryAngle = 0;
+  sim.metrics = computeSessionMetrics(s, params);
+  ASSERT_EQ(sim.metrics.rejectedNonFinite, 10u);
+  ASSERT_EQ(sim.metrics.gaps, 1u);
+  SessionReportData d = sessionData(sim);
+  const QString pdf = path("long-session.pdf");
+  writeSessionReport(d, pdf);
+  EXPECT_LT(QFileInfo(pdf).size(), 1'500'000) << "plots not reduced";
+  const QString all = pageTexts(pdf).join('\n');
+  EXPECT_TRUE(all.contains(QString("%1 samples used, 10 rows rejected (not finite), 1 gaps")
+                               .arg(sim.metrics.samples)));
+  EXPECT_TRUE(all.contains("200 repetitions counted on Shoulder flexion"));
+  EXPECT_TRUE(all.contains(QRegularExpression("\\n200 +\\d")));  // the last row of the table
+  const std::vector<QImage> images = renderPages(pdf, dir.path());
+  for (const QImage& img : images) EXPECT_GT(inkFraction(img), 0.01);
+  // The plots break across the gap: no line in the plots' columns at its middle, lines at a time
+  // with data. Plots span 32 to 190 mm from the page's left edge (PageWriter, Charts).
+  const double span = s.t.back() - s.t.front();
+  const double gapMiddle = s.t[20000] - 15.0 - s.t.front();
+  auto blueInColumn = [&](const QImage& img, double tRel) {
+    const int x = static_cast<int>(std::lround((32.0 + 158.0 * tRel / span) * 60 / 25.4));
+    int count = 0;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int y = 0; y < img.height(); ++y) {
+        const QRgb c = img.pixel(x + dx, y);
+        if (qBlue(c) > 150 && qBlue(c) - qRed(c) > 60) ++count;
+      }
+    return count;
+  };
+  ASSERT_GE(images.size(), 2u);
+  EXPECT_GT(blueInColumn(images[1], 100.0), 20) << "plots with data at 100 s";
+  EXPECT_EQ(blueInColumn(images[1], gapMiddle), 0) << "a line drawn across the gap";
+}
+
+// Many earlier sessions: the comparison table runs onto a second page and repeats its header.
+TEST_F(SessionReport, LongTablesRepeatTheirHeader) {
+  SessionReportData d = sessionData(simulateSession({110, 120}));
+  d.earlierSessions.clear();
+  for (int i = 0; i < 90; ++i) {
+    RomSnapshot r;
+    r.date = QDate(2024, 1, 1).addDays(7 * i).toString(Qt::ISODate);
+    r.sessionId = 1000 + i;
+    r.romRad = {1.0 + 0.01 * i, 0.5, 0.4, 1.2, 0.9};
+    d.earlierSessions.push_back(r);
+  }
+  d.session.devicesJson = "{not json";
+  const QString pdf = path("many.pdf");
+  writeSessionReport(d, pdf);
+  const QStringList text = pageTexts(pdf);
+  const QString all = text.join('\n');
+  for (int i = 0; i < 90; ++i) EXPECT_TRUE(all.contains(QString("(#%1)").arg(1000 + i))) << i;
+  int pagesWithHeader = 0;
+  for (const QString& page : text)
+    if (page.contains(QRegularExpression("\\nSession +Shoulder +Shoulder +Shoulder +Elbow"))) ++pagesWithHeader;
+  EXPECT_GE(pagesWithHeader, 2);  // 90 rows do not fit on one page
+  EXPECT_TRUE(all.contains("(not valid JSON"));
+}
+
+TEST_F(SessionReport, AVeryLongNameIsCutInTheRunningHeadNotOverprinted) {
+  SessionReportData d = sessionData(simulateSession({110}));
+  d.patient.name = QString("Maximilian ").repeated(20).trimmed();
+  const QString pdf = path("longname.pdf");
+  writeSessionReport(d, pdf);
+  const QStringList text = pageTexts(pdf);
+  EXPECT_TRUE(text.join('\n').contains(QString::fromUtf8("…")));
+  for (const QString& page : text) EXPECT_TRUE(page.contains("ArmTrack"));
 }
 
 TEST_F(SessionReport, NonLatinNamesAreSearchableText) {
