@@ -10,8 +10,8 @@
 namespace armtrack::reports {
 namespace {
 
-const QColor kLine(30, 80, 200);        // the patient's data
-const QColor kBand(120, 200, 120, 90);  // protocol target
+const QColor kLine(30, 80, 200);              // the patient's data
+const QColor kBand(120, 200, 120, 90);        // protocol target
 const QColor kNormal(150, 150, 150, 80);      // normal range, bars
 const QColor kNormalSpan(150, 150, 150, 45);  // normal range of motion behind a ROM line
 const QColor kGrid(225, 225, 225);
@@ -42,15 +42,16 @@ void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString&
              Qt::AlignLeft | Qt::AlignVCenter, title);
   p.setFont(w.fonts().small);
   p.setPen(QPen(kGrid, w.mm(0.15)));
-  for (double y : yTicks) p.drawLine(QPointF(f.plot.left(), f.py(y)), QPointF(f.plot.right(), f.py(y)));
+  for (double y : yTicks)
+    p.drawLine(QPointF(f.plot.left(), f.py(y)), QPointF(f.plot.right(), f.py(y)));
   p.setPen(QPen(Qt::black, w.mm(0.2)));
   p.drawRect(f.plot);
   const double tick = w.mm(1.0);
   const double labelTop = fm.height() * 0.5 + w.mm(0.3);
   for (double y : yTicks) {
     p.drawLine(QPointF(f.plot.left() - tick, f.py(y)), QPointF(f.plot.left(), f.py(y)));
-    p.drawText(QRectF(outer.left(), f.py(y) - fm.height() / 2, f.plot.left() - outer.left() - tick * 1.5,
-                      fm.height()),
+    p.drawText(QRectF(outer.left(), f.py(y) - fm.height() / 2,
+                      f.plot.left() - outer.left() - tick * 1.5, fm.height()),
                Qt::AlignRight | Qt::AlignVCenter, number(y));
   }
   for (double x : xTicks) {
@@ -60,9 +61,9 @@ void drawAxes(PageWriter& w, const Frame& f, const QRectF& outer, const QString&
     p.drawText(QRectF(f.px(x) - lw / 2, f.plot.bottom() + labelTop, lw, fm.height()),
                Qt::AlignHCenter | Qt::AlignTop, label);
   }
-  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + labelTop + fm.height(), f.plot.width(),
-                    fm.height()),
-             Qt::AlignRight | Qt::AlignTop, xTitle);
+  p.drawText(
+      QRectF(f.plot.left(), f.plot.bottom() + labelTop + fm.height(), f.plot.width(), fm.height()),
+      Qt::AlignRight | Qt::AlignTop, xTitle);
   // The y unit above the tick labels, horizontal so it reads (and extracts) as text.
   p.drawText(QRectF(outer.left(), outer.top(), f.plot.left() - outer.left(), fm.height()),
              Qt::AlignLeft | Qt::AlignVCenter, yTitle);
@@ -154,12 +155,16 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
   bool open = false;
   auto add = [&](std::size_t k) {
     const QPointF pt(f.px(tS[k] - t0), f.py(yDeg[k]));
-    if (open) path.lineTo(pt);
-    else path.moveTo(pt);
+    if (open)
+      path.lineTo(pt);
+    else
+      path.moveTo(pt);
     open = true;
   };
   auto usable = [&](std::size_t k) { return std::isfinite(yDeg[k]) && std::isfinite(tS[k]); };
-  auto column = [&](std::size_t k) { return static_cast<int>((tS[k] - t0) / (f.xhi - f.xlo) * columns); };
+  auto column = [&](std::size_t k) {
+    return static_cast<int>((tS[k] - t0) / (f.xhi - f.xlo) * columns);
+  };
   std::size_t i = 0;
   while (i < n) {
     if (!usable(i)) {
@@ -206,7 +211,8 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
   p.setFont(w.fonts().small);
   const std::vector<double> ticks = niceTicks(lo, hi, 8);
   p.setPen(QPen(kGrid, w.mm(0.15)));
-  for (double x : ticks) p.drawLine(QPointF(f.px(x), f.plot.top()), QPointF(f.px(x), f.plot.bottom()));
+  for (double x : ticks)
+    p.drawLine(QPointF(f.px(x), f.plot.top()), QPointF(f.px(x), f.plot.bottom()));
   p.setPen(QPen(Qt::black, w.mm(0.25)));
   p.drawLine(QPointF(f.px(0), f.plot.top()), QPointF(f.px(0), f.plot.bottom()));
   for (std::size_t i = 0; i < bars.size(); ++i) {
@@ -214,7 +220,8 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
     const double top = f.plot.top() + w.mm(7.5) * i;
     const QRectF row(f.plot.left(), top + w.mm(1), f.plot.width(), w.mm(5.5));
     const double nlo = b.normalLoDeg.value_or(0.0);
-    p.fillRect(QRectF(f.px(nlo), row.top(), f.px(b.normalHiDeg) - f.px(nlo), row.height()), kNormal);
+    p.fillRect(QRectF(f.px(nlo), row.top(), f.px(b.normalHiDeg) - f.px(nlo), row.height()),
+               kNormal);
     const QRectF patient(f.px(b.minDeg), row.top() + w.mm(1.5),
                          std::max(f.px(b.maxDeg) - f.px(b.minDeg), w.mm(0.4)), w.mm(2.5));
     p.fillRect(patient, kLine);
@@ -232,15 +239,15 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
     p.drawText(QRectF(f.px(x) - w.mm(6), f.plot.bottom() + w.mm(1), w.mm(12), fm.height()),
                Qt::AlignHCenter | Qt::AlignTop, label);
   }
-  p.drawText(QRectF(f.plot.left(), f.plot.bottom() + w.mm(1) + fm.height(), f.plot.width(),
-                    fm.height()),
-             Qt::AlignRight | Qt::AlignTop, QStringLiteral("angle (deg)"));
+  p.drawText(
+      QRectF(f.plot.left(), f.plot.bottom() + w.mm(1) + fm.height(), f.plot.width(), fm.height()),
+      Qt::AlignRight | Qt::AlignTop, QStringLiteral("angle (deg)"));
   p.restore();
 }
 
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
-                   const std::vector<QDateTime>& when, const std::vector<std::optional<double>>& romDeg,
-                   double normalSpanDeg) {
+                   const std::vector<QDateTime>& when,
+                   const std::vector<std::optional<double>>& romDeg, double normalSpanDeg) {
   Frame f = frameIn(w, r);
   const std::size_t n = std::min(when.size(), romDeg.size());
   // Days since the first session, so the x axis is proportional to time.
@@ -265,15 +272,20 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
                     f.plot.bottom() - f.py(normalSpanDeg)),
              kNormalSpan);
   const QDate first = origin.date();
-  drawAxes(w, f, r, title, xTicks,
-           [&](double d) { return first.addDays(static_cast<qint64>(std::lround(d))).toString(Qt::ISODate); },
-           QStringLiteral("date"), yTicks, QStringLiteral("deg"));
+  drawAxes(
+      w, f, r, title, xTicks,
+      [&](double d) {
+        return first.addDays(static_cast<qint64>(std::lround(d))).toString(Qt::ISODate);
+      },
+      QStringLiteral("date"), yTicks, QStringLiteral("deg"));
   p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
-  p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)), QPointF(f.plot.right(), f.py(normalSpanDeg)));
+  p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)),
+             QPointF(f.plot.right(), f.py(normalSpanDeg)));
   p.setFont(w.fonts().small);
   p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
              Qt::AlignRight | Qt::AlignVCenter,
-             QStringLiteral("shaded: AAOS normal range of motion, 0-%1 deg").arg(normalSpanDeg, 0, 'f', 0));
+             QStringLiteral("shaded: AAOS normal range of motion, 0-%1 deg")
+                 .arg(normalSpanDeg, 0, 'f', 0));
   QPainterPath path;
   bool open = false;
   p.setPen(QPen(kLine, w.mm(0.35)));
@@ -281,8 +293,10 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   for (std::size_t i = 0; i < n; ++i) {
     if (!romDeg[i]) continue;
     const QPointF pt(f.px(day(when[i])), f.py(*romDeg[i]));
-    if (open) path.lineTo(pt);
-    else path.moveTo(pt);
+    if (open)
+      path.lineTo(pt);
+    else
+      path.moveTo(pt);
     open = true;
     p.drawEllipse(pt, w.mm(0.8), w.mm(0.8));
   }

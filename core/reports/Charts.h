@@ -34,8 +34,8 @@ struct NormativeBar {
   QString name;
   std::optional<double> normalLoDeg;  ///< empty: the source gives no limit in this direction
   double normalHiDeg = 0;
-  double minDeg = 0, maxDeg = 0;      ///< the patient's range this session
-  QString caption;                    ///< printed right of the bar
+  double minDeg = 0, maxDeg = 0;  ///< the patient's range this session
+  QString caption;                ///< printed right of the bar
 };
 
 /// One row per angle: the normal range shaded grey, the patient's range as a bar over it, on a
@@ -48,7 +48,7 @@ double normativeBarsHeight(const PageWriter& w, std::size_t n);
 /// Range of motion (deg) against date in rect r; the normal span (0 to normalSpanDeg) shaded and
 /// its limit dashed. Points with no value are skipped.
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
-                   const std::vector<QDateTime>& when, const std::vector<std::optional<double>>& romDeg,
-                   double normalSpanDeg);
+                   const std::vector<QDateTime>& when,
+                   const std::vector<std::optional<double>>& romDeg, double normalSpanDeg);
 
 }  // namespace armtrack::reports

@@ -74,9 +74,9 @@ void PageWriter::startPage() {
   const QRectF foot(m_left, mm(kFootMm), textWidth(), mm(6));
   const QString number = m_total > 0 ? QStringLiteral("Page %1 of %2").arg(m_page).arg(m_total)
                                      : QStringLiteral("Page %1").arg(m_page);
-  m_painter.drawText(foot, Qt::AlignLeft | Qt::AlignVCenter,
-                     fm.elidedText(m_footer, Qt::ElideMiddle,
-                                   textWidth() - fm.horizontalAdvance(number) - mm(5)));
+  m_painter.drawText(
+      foot, Qt::AlignLeft | Qt::AlignVCenter,
+      fm.elidedText(m_footer, Qt::ElideMiddle, textWidth() - fm.horizontalAdvance(number) - mm(5)));
   m_painter.drawText(foot, Qt::AlignRight | Qt::AlignVCenter, number);
   m_painter.restore();
 }
@@ -152,15 +152,18 @@ void PageWriter::paragraph(const QString& text, const QFont& f) {
 
 void PageWriter::keyValues(const std::vector<std::pair<QString, QString>>& items, bool twoPerRow) {
   Table t;
-  t.widths = twoPerRow ? std::vector<double>{0.19, 0.31, 0.19, 0.31} : std::vector<double>{0.19, 0.81};
+  t.widths =
+      twoPerRow ? std::vector<double>{0.19, 0.31, 0.19, 0.31} : std::vector<double>{0.19, 0.81};
   t.rightAligned = std::vector<bool>(t.widths.size(), false);
-  t.boldColumns = twoPerRow ? std::vector<bool>{true, false, true, false} : std::vector<bool>{true, false};
+  t.boldColumns =
+      twoPerRow ? std::vector<bool>{true, false, true, false} : std::vector<bool>{true, false};
   t.rules = false;
   const std::size_t step = twoPerRow ? 2 : 1;
   for (std::size_t i = 0; i < items.size(); i += step) {
     QStringList row{items[i].first, items[i].second};
-    if (twoPerRow) row << (i + 1 < items.size() ? items[i + 1].first : QString())
-                       << (i + 1 < items.size() ? items[i + 1].second : QString());
+    if (twoPerRow)
+      row << (i + 1 < items.size() ? items[i + 1].first : QString())
+          << (i + 1 < items.size() ? items[i + 1].second : QString());
     t.rows.push_back(row);
   }
   table(t);
@@ -177,8 +180,8 @@ double PageWriter::rowHeight(const Table& t, const QStringList& cells, bool head
     const bool bold = header || (c < static_cast<int>(t.boldColumns.size()) && t.boldColumns[c]);
     const QFontMetricsF fm(cellFont(t, bold), &m_writer);
     const double w = t.widths[c] * textWidth() - 2 * mm(kCellPadMm);
-    const QRectF r = fm.boundingRect(QRectF(0, 0, w, 1e7), Qt::TextWordWrap | Qt::AlignLeft,
-                                     cells[c]);
+    const QRectF r =
+        fm.boundingRect(QRectF(0, 0, w, 1e7), Qt::TextWordWrap | Qt::AlignLeft, cells[c]);
     h = std::max(h, r.height());
   }
   return h + 2 * mm(kCellPadMm) * 0.6;
@@ -195,8 +198,8 @@ void PageWriter::drawRow(const Table& t, const QStringList& cells, bool header, 
     m_painter.setPen(Qt::black);
     const QRectF cell(x + mm(kCellPadMm), m_y + mm(kCellPadMm) * 0.6, w - 2 * mm(kCellPadMm),
                       height - mm(kCellPadMm) * 0.6);
-    m_painter.drawText(cell, Qt::TextWordWrap | Qt::AlignTop | (right ? Qt::AlignRight : Qt::AlignLeft),
-                       cells[c]);
+    m_painter.drawText(
+        cell, Qt::TextWordWrap | Qt::AlignTop | (right ? Qt::AlignRight : Qt::AlignLeft), cells[c]);
     x += w;
   }
   m_y += height;

@@ -22,13 +22,13 @@ struct Fonts {
 /// A table drawn by PageWriter::table(): column widths as fractions of the text width; cells wrap
 /// at word boundaries; the header row is repeated after a page break.
 struct Table {
-  QStringList header;                ///< empty = no header row
+  QStringList header;  ///< empty = no header row
   std::vector<QStringList> rows;
-  std::vector<double> widths;        ///< fractions of the text width, one per column
-  std::vector<bool> rightAligned;    ///< per column; default: all but the first
-  std::vector<bool> boldColumns;     ///< per column; default none
-  bool rules = true;                 ///< thin lines between rows
-  bool small = false;                ///< the small font, for tables with many columns
+  std::vector<double> widths;      ///< fractions of the text width, one per column
+  std::vector<bool> rightAligned;  ///< per column; default: all but the first
+  std::vector<bool> boldColumns;   ///< per column; default none
+  bool rules = true;               ///< thin lines between rows
+  bool small = false;              ///< the small font, for tables with many columns
 };
 
 class PageWriter {

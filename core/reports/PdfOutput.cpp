@@ -54,12 +54,12 @@ int writePdf(const QString& pdfPath, const QString& documentTitle, const QString
 
   QSaveFile file(pdfPath);
   if (!file.open(QIODevice::WriteOnly))
-    throw ReportError("cannot write the report to '" + text(pdfPath) + "': " +
-                      text(file.errorString()) + "; choose a folder you may write to");
+    throw ReportError("cannot write the report to '" + text(pdfPath) +
+                      "': " + text(file.errorString()) + "; choose a folder you may write to");
   const int written = render(&file, documentTitle, runningHead, footer, total, draw);
   if (file.error() != QFileDevice::NoError || !file.commit())
-    throw ReportError("cannot write the report to '" + text(pdfPath) + "': " +
-                      text(file.errorString()) + " (nothing was written)");
+    throw ReportError("cannot write the report to '" + text(pdfPath) +
+                      "': " + text(file.errorString()) + " (nothing was written)");
   return written;
 }
 

@@ -24,7 +24,8 @@ std::optional<double> deg(const std::optional<double>& rad) {
   return rad ? std::optional<double>(*rad * kRadToDeg) : std::nullopt;
 }
 
-void draw(PageWriter& w, const ProgressReportData& d, const std::vector<ProgressSession>& sessions) {
+void draw(PageWriter& w, const ProgressReportData& d,
+          const std::vector<ProgressSession>& sessions) {
   w.title(QStringLiteral("Progress report"));
   w.heading(QStringLiteral("Patient and period"));
   const storage::Patient& p = d.patient;
@@ -39,18 +40,21 @@ void draw(PageWriter& w, const ProgressReportData& d, const std::vector<Progress
 
   w.heading(QStringLiteral("Range of motion over time"), 50);
   if (sessions.empty()) {
-    w.paragraph(QStringLiteral("No sessions between %1 and %2.").arg(orDash(d.fromDate), orDash(d.toDate)),
-                w.fonts().body);
+    w.paragraph(
+        QStringLiteral("No sessions between %1 and %2.").arg(orDash(d.fromDate), orDash(d.toDate)),
+        w.fonts().body);
   } else {
     std::vector<QDateTime> when;
     for (const ProgressSession& s : sessions) when.push_back(parseIso(s.startedAt));
     const auto& ranges = aaosNormativeRanges();
     for (int a = 0; a < kNumClinicalAngles; ++a) {
       std::vector<std::optional<double>> rom;
-      for (const ProgressSession& s : sessions) rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
+      for (const ProgressSession& s : sessions)
+        rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
       const QRectF r = w.reserve(w.mm(44));
-      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)), angleName(a) + QStringLiteral(": range of motion (deg)"),
-                    when, rom, normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
+      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
+                    angleName(a) + QStringLiteral(": range of motion (deg)"), when, rom,
+                    normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
     const std::string_view source = ranges[0].source;
     w.paragraph(QStringLiteral("Normal ranges: %1.")
@@ -78,23 +82,27 @@ void draw(PageWriter& w, const ProgressReportData& d, const std::vector<Progress
     t.rows.push_back(row);
   }
   w.table(t);
-  w.paragraph(QStringLiteral("ROM in degrees (maximum minus minimum over the session)."), w.fonts().small);
+  w.paragraph(QStringLiteral("ROM in degrees (maximum minus minimum over the session)."),
+              w.fonts().small);
 }
 
 }  // namespace
 
 int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
   std::vector<ProgressSession> sessions = d.sessions;
-  std::stable_sort(sessions.begin(), sessions.end(), [](const ProgressSession& a, const ProgressSession& b) {
-    return parseIso(a.startedAt) < parseIso(b.startedAt);
-  });
+  std::stable_sort(sessions.begin(), sessions.end(),
+                   [](const ProgressSession& a, const ProgressSession& b) {
+                     return parseIso(a.startedAt) < parseIso(b.startedAt);
+                   });
   const QString period = QStringLiteral("%1 to %2").arg(orDash(d.fromDate), orDash(d.toDate));
-  const QString head = QStringLiteral("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
+  const QString head =
+      QStringLiteral("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
   const QDateTime at = d.generatedAt.isValid() ? d.generatedAt : QDateTime::currentDateTimeUtc();
   const QString footer = QStringLiteral("%1 - progress report - generated %2")
-                             .arg(orDash(d.patient.name), at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
-  return writePdf(pdfPath, QStringLiteral("Progress report: %1, %2").arg(d.patient.name, period), head, footer,
-                  [&](PageWriter& w) { draw(w, d, sessions); });
+                             .arg(orDash(d.patient.name),
+                                  at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  return writePdf(pdfPath, QStringLiteral("Progress report: %1, %2").arg(d.patient.name, period),
+                  head, footer, [&](PageWriter& w) { draw(w, d, sessions); });
 }
 
 }  // namespace armtrack::reports

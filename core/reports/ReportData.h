@@ -18,8 +18,8 @@ namespace armtrack::reports {
 /// Range of motion of the five clinical angles at one point in time (one session), in the order
 /// of clinicalAngleInfo(). An empty value is drawn as "-" (angle not measured).
 struct RomSnapshot {
-  QString date;                      ///< YYYY-MM-DD or ISO 8601; shown as its date part
-  std::optional<qint64> sessionId;   ///< the session it comes from, when known
+  QString date;                     ///< YYYY-MM-DD or ISO 8601; shown as its date part
+  std::optional<qint64> sessionId;  ///< the session it comes from, when known
   std::array<std::optional<double>, kNumClinicalAngles> romRad{};  ///< rad, max - min
 };
 
@@ -33,8 +33,8 @@ struct SessionReportData {
   /// The arm measured ("left"/"right"); "" = the calibration JSON's "side", else the patient's
   /// affected side.
   QString side;
-  AngleSeries angles;       ///< the session's clinical angles (rad) over time (s)
-  SessionMetrics metrics;   ///< computeSessionMetrics(angles, ...)
+  AngleSeries angles;      ///< the session's clinical angles (rad) over time (s)
+  SessionMetrics metrics;  ///< computeSessionMetrics(angles, ...)
   /// Earlier sessions of the same patient, oldest first (the current one is added by the report).
   std::vector<RomSnapshot> earlierSessions;
   /// The other side's latest range of motion, when it was measured.
@@ -46,9 +46,9 @@ struct SessionReportData {
 /// One session of a progress report.
 struct ProgressSession {
   qint64 id = 0;
-  QString startedAt;     ///< ISO 8601 UTC (storage::SessionInfo::startedAt)
-  QString protocolName;  ///< "" without a protocol
-  double durationS = 0;  ///< s
+  QString startedAt;               ///< ISO 8601 UTC (storage::SessionInfo::startedAt)
+  QString protocolName;            ///< "" without a protocol
+  double durationS = 0;            ///< s
   std::optional<int> repetitions;  ///< full + partial repetitions, when computed
   std::array<std::optional<double>, kNumClinicalAngles> romRad{};  ///< rad
 };
@@ -56,8 +56,8 @@ struct ProgressSession {
 /// A patient's range of motion over a date range.
 struct ProgressReportData {
   storage::Patient patient;
-  QString fromDate, toDate;  ///< YYYY-MM-DD, as asked for (inclusive)
-  QString therapistName;     ///< "" = not named
+  QString fromDate, toDate;               ///< YYYY-MM-DD, as asked for (inclusive)
+  QString therapistName;                  ///< "" = not named
   std::vector<ProgressSession> sessions;  ///< any order; the report sorts them by startedAt
   QDateTime generatedAt;                  ///< invalid = now (UTC)
 };

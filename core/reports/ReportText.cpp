@@ -68,14 +68,16 @@ QString formatDate(const QString& iso) {
 
 QString formatDateTime(const QString& iso) {
   const QDateTime t = parseIso(iso);
-  return t.isValid() ? t.toString(QStringLiteral("yyyy-MM-dd HH:mm")) + QStringLiteral(" UTC") : iso;
+  return t.isValid() ? t.toString(QStringLiteral("yyyy-MM-dd HH:mm")) + QStringLiteral(" UTC")
+                     : iso;
 }
 
 QString formatDuration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return QStringLiteral("-");
   if (seconds < 60) return QString::number(seconds, 'f', 1) + QStringLiteral(" s");
   const long long s = std::llround(seconds);
-  if (s < 3600) return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+  if (s < 3600)
+    return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
   return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
@@ -86,7 +88,9 @@ QStringList summariseJson(const QString& json, int maxLines) {
   QJsonParseError error;
   const QJsonDocument doc = QJsonDocument::fromJson(trimmed.toUtf8(), &error);
   if (doc.isNull())
-    return {QStringLiteral("(not valid JSON: %1 at offset %2)").arg(error.errorString()).arg(error.offset)};
+    return {QStringLiteral("(not valid JSON: %1 at offset %2)")
+                .arg(error.errorString())
+                .arg(error.offset)};
   QStringList out;
   flatten(doc.isObject() ? QJsonValue(doc.object()) : QJsonValue(doc.array()), QString(), out);
   if (out.size() > maxLines) {

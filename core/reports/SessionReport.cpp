@@ -37,11 +37,13 @@ QString measuredSide(const SessionReportData& d) {
 }
 
 QString protocolText(const SessionReportData& d) {
-  if (!d.protocol) return d.session.protocolName.isEmpty() ? QStringLiteral("none") : d.session.protocolName;
+  if (!d.protocol)
+    return d.session.protocolName.isEmpty() ? QStringLiteral("none") : d.session.protocolName;
   const storage::Protocol& p = *d.protocol;
   const std::optional<int> a = angleIndex(p.angleKey);
   return QStringLiteral("%1: %2, target %3 to %4 deg, %5 repetitions")
-      .arg(p.name, a ? angleName(*a) : p.angleKey, formatDeg(p.targetMinDeg), formatDeg(p.targetMaxDeg))
+      .arg(p.name, a ? angleName(*a) : p.angleKey, formatDeg(p.targetMinDeg),
+           formatDeg(p.targetMaxDeg))
       .arg(p.repetitions);
 }
 
@@ -72,10 +74,12 @@ void devices(PageWriter& w, const SessionReportData& d) {
   const QStringList dev = summariseJson(d.session.devicesJson);
   const QStringList cal = summariseJson(d.session.calibrationJson, 30);
   w.paragraph(QStringLiteral("Devices"), w.fonts().bold);
-  w.paragraph(dev.isEmpty() ? QStringLiteral("No devices were recorded for this session.") : dev.join('\n'),
-              w.fonts().small);
+  w.paragraph(
+      dev.isEmpty() ? QStringLiteral("No devices were recorded for this session.") : dev.join('\n'),
+      w.fonts().small);
   w.paragraph(QStringLiteral("Calibration"), w.fonts().bold);
-  w.paragraph(cal.isEmpty() ? QStringLiteral("No calibration was recorded for this session.") : cal.join('\n'),
+  w.paragraph(cal.isEmpty() ? QStringLiteral("No calibration was recorded for this session.")
+                            : cal.join('\n'),
               w.fonts().small);
 }
 
@@ -87,9 +91,13 @@ QString smoothness(const char* name, const SmoothnessValue& v) {
 void metricsTable(PageWriter& w, const SessionReportData& d) {
   w.heading(QStringLiteral("Metrics per clinical angle"));
   Table t;
-  t.header = {QStringLiteral("Angle"), QStringLiteral("Min (deg)"), QStringLiteral("Max (deg)"),
-              QStringLiteral("ROM (deg)"), QStringLiteral("Peak velocity (deg/s)"),
-              QStringLiteral("Mean velocity (deg/s)"), QStringLiteral("Moving time (s)")};
+  t.header = {QStringLiteral("Angle"),
+              QStringLiteral("Min (deg)"),
+              QStringLiteral("Max (deg)"),
+              QStringLiteral("ROM (deg)"),
+              QStringLiteral("Peak velocity (deg/s)"),
+              QStringLiteral("Mean velocity (deg/s)"),
+              QStringLiteral("Moving time (s)")};
   t.widths = {0.28, 0.11, 0.11, 0.11, 0.14, 0.14, 0.11};
   for (int i = 0; i < kNumClinicalAngles; ++i) {
     const AngleMetricsDeg m = inDegrees(d.metrics.session.angle[static_cast<std::size_t>(i)]);
@@ -113,12 +121,14 @@ void plots(PageWriter& w, const SessionReportData& d) {
   const std::size_t n = std::min(d.angles.t.size(), d.angles.angle.size());
   for (int a = 0; a < kNumClinicalAngles; ++a) {
     std::vector<double> y(n);
-    for (std::size_t i = 0; i < n; ++i) y[i] = d.angles.angle[i][static_cast<std::size_t>(a)] * kRadToDeg;
+    for (std::size_t i = 0; i < n; ++i)
+      y[i] = d.angles.angle[i][static_cast<std::size_t>(a)] * kRadToDeg;
     std::optional<Band> band;
     if (target && *target == a)
-      band = Band{d.protocol->targetMinDeg, d.protocol->targetMaxDeg,
-                  QStringLiteral("shaded: protocol target %1 to %2 deg")
-                      .arg(formatDeg(d.protocol->targetMinDeg), formatDeg(d.protocol->targetMaxDeg))};
+      band =
+          Band{d.protocol->targetMinDeg, d.protocol->targetMaxDeg,
+               QStringLiteral("shaded: protocol target %1 to %2 deg")
+                   .arg(formatDeg(d.protocol->targetMinDeg), formatDeg(d.protocol->targetMaxDeg))};
     const QRectF r = w.reserve(w.mm(44));
     drawTimePlot(w, r.adjusted(0, 0, 0, -w.mm(2)), angleName(a) + QStringLiteral(" (deg)"),
                  d.angles.t, y, band);
@@ -135,7 +145,8 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
   }
   const QString primary = angleName(r.primaryAngle);
   w.paragraph(QStringLiteral("%1 repetitions counted on %2: %3 full, %4 partial (judged against a "
-                             "reference range of %5 deg); %6 cut by the start or end of the recording and not counted.")
+                             "reference range of %5 deg); %6 cut by the start or end of the "
+                             "recording and not counted.")
                   .arg(count)
                   .arg(primary)
                   .arg(r.fullCount)
@@ -144,17 +155,21 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
                   .arg(r.truncated),
               w.fonts().body);
   Table t;
-  t.header = {QStringLiteral("#"), QStringLiteral("Start (s)"), QStringLiteral("End (s)"),
+  t.header = {QStringLiteral("#"),
+              QStringLiteral("Start (s)"),
+              QStringLiteral("End (s)"),
               QStringLiteral("ROM of %1 (deg)").arg(primary.toLower()),
-              QStringLiteral("Peak velocity (deg/s)"), QStringLiteral("Partial")};
+              QStringLiteral("Peak velocity (deg/s)"),
+              QStringLiteral("Partial")};
   t.widths = {0.08, 0.14, 0.14, 0.26, 0.22, 0.16};
   const double t0 = d.angles.t.empty() ? 0 : d.angles.t.front();
   for (std::size_t i = 0; i < count; ++i) {
     const Repetition& rep = r.repetitions[i];
-    const AngleMetricsDeg m = inDegrees(rep.metrics.angle[static_cast<std::size_t>(r.primaryAngle)]);
+    const AngleMetricsDeg m =
+        inDegrees(rep.metrics.angle[static_cast<std::size_t>(r.primaryAngle)]);
     t.rows.push_back({QString::number(i + 1), QString::number(rep.startS - t0, 'f', 2),
-                      QString::number(rep.endS - t0, 'f', 2), formatDeg(rep.excursionRad * kRadToDeg),
-                      formatDeg(m.peakVelocityDegPerS),
+                      QString::number(rep.endS - t0, 'f', 2),
+                      formatDeg(rep.excursionRad * kRadToDeg), formatDeg(m.peakVelocityDegPerS),
                       rep.partial ? QStringLiteral("yes") : QStringLiteral("no")});
   }
   w.table(t);
@@ -173,9 +188,10 @@ void normative(PageWriter& w, const SessionReportData& d) {
     b.normalHiDeg = n.maxRad * kRadToDeg;
     b.minDeg = m.minRad * kRadToDeg;
     b.maxDeg = m.maxRad * kRadToDeg;
-    b.caption = QStringLiteral("ROM %1 of %2 deg (%3 %)")
-                    .arg(formatDeg(m.romRad * kRadToDeg), formatDeg(normativeSpanRad(n) * kRadToDeg))
-                    .arg(std::lround(100 * fractionOfNormativeSpan(n, m.romRad)));
+    b.caption =
+        QStringLiteral("ROM %1 of %2 deg (%3 %)")
+            .arg(formatDeg(m.romRad * kRadToDeg), formatDeg(normativeSpanRad(n) * kRadToDeg))
+            .arg(std::lround(100 * fractionOfNormativeSpan(n, m.romRad)));
     bars.push_back(b);
   }
   const QRectF r = w.reserve(normativeBarsHeight(w, bars.size()));
@@ -206,11 +222,13 @@ void earlier(PageWriter& w, const SessionReportData& d) {
     t.rows.push_back(cells);
   };
   for (const RomSnapshot& s : d.earlierSessions)
-    row(formatDate(s.date) + (s.sessionId ? QStringLiteral(" (#%1)").arg(*s.sessionId) : QString()), s);
+    row(formatDate(s.date) + (s.sessionId ? QStringLiteral(" (#%1)").arg(*s.sessionId) : QString()),
+        s);
   RomSnapshot now;
   now.date = d.session.startedAt;
   for (int a = 0; a < kNumClinicalAngles; ++a)
-    now.romRad[static_cast<std::size_t>(a)] = d.metrics.session.angle[static_cast<std::size_t>(a)].romRad;
+    now.romRad[static_cast<std::size_t>(a)] =
+        d.metrics.session.angle[static_cast<std::size_t>(a)].romRad;
   row(formatDate(now.date) + QStringLiteral(" this session"), now);
   if (!d.earlierSessions.empty()) {
     QStringList cells{QStringLiteral("Change since last")};
@@ -225,7 +243,8 @@ void earlier(PageWriter& w, const SessionReportData& d) {
     }
     t.rows.push_back(cells);
   }
-  if (d.otherSide) row(QStringLiteral("Other side, ") + formatDate(d.otherSide->date), *d.otherSide);
+  if (d.otherSide)
+    row(QStringLiteral("Other side, ") + formatDate(d.otherSide->date), *d.otherSide);
   w.table(t);
   if (d.earlierSessions.empty())
     w.paragraph(QStringLiteral("No earlier sessions to compare with."), w.fonts().small);
@@ -233,8 +252,10 @@ void earlier(PageWriter& w, const SessionReportData& d) {
 
 void notes(PageWriter& w, const SessionReportData& d) {
   w.heading(QStringLiteral("Therapist's notes"), 10);
-  if (d.session.notes.trimmed().isEmpty()) w.paragraph(QStringLiteral("No notes."), w.fonts().body);
-  else w.paragraph(d.session.notes, w.fonts().body);
+  if (d.session.notes.trimmed().isEmpty())
+    w.paragraph(QStringLiteral("No notes."), w.fonts().body);
+  else
+    w.paragraph(d.session.notes, w.fonts().body);
 }
 
 }  // namespace
@@ -244,12 +265,14 @@ int writeSessionReport(const SessionReportData& d, const QString& pdfPath) {
     throw ReportError("session " + std::to_string(d.session.id) +
                       ": no clinical angles or metrics to report; estimate the session first");
   const QString date = formatDate(d.session.startedAt);
-  const QString head = QStringLiteral("%1 (%2), session of %3").arg(orDash(d.patient.name), d.patient.code, date);
+  const QString head =
+      QStringLiteral("%1 (%2), session of %3").arg(orDash(d.patient.name), d.patient.code, date);
   const QDateTime at = d.generatedAt.isValid() ? d.generatedAt : QDateTime::currentDateTimeUtc();
   const QString footer = QStringLiteral("%1 - session report - generated %2")
-                             .arg(orDash(d.patient.name), at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
-  return writePdf(pdfPath, QStringLiteral("Session report: %1, %2").arg(d.patient.name, date), head, footer,
-                  [&](PageWriter& w) {
+                             .arg(orDash(d.patient.name),
+                                  at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  return writePdf(pdfPath, QStringLiteral("Session report: %1, %2").arg(d.patient.name, date), head,
+                  footer, [&](PageWriter& w) {
                     w.title(QStringLiteral("Session report"));
                     details(w, d);
                     devices(w, d);

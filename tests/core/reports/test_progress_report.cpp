@@ -17,7 +17,8 @@ class ProgressReport : public ::testing::Test {
   void SetUp() override {
     ensureGuiApp();
     if (const std::string tool = missingPdfTool(); !tool.empty())
-      GTEST_SKIP() << tool << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
+      GTEST_SKIP() << tool
+                   << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
     ASSERT_TRUE(dir.isValid());
     // ARMTRACK_KEEP_REPORTS=1 keeps the PDFs and PNGs to look at (the folder is printed).
     if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
@@ -61,19 +62,21 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
   const QStringList text = pageTexts(pdf);
   ASSERT_EQ(text.size(), pages);
   const QString all = text.join('\n');
-  for (const char* s : {"Progress report", "Patient and period", "Range of motion over time", "Sessions",
-                        "2026-10-01", "2026-11-30", "AAOS"})
+  for (const char* s : {"Progress report", "Patient and period", "Range of motion over time",
+                        "Sessions", "2026-10-01", "2026-11-30", "AAOS"})
     EXPECT_TRUE(all.contains(s)) << s;
   for (int i = 0; i < pages; ++i) {
     EXPECT_TRUE(text[i].contains(QString::fromUtf8("Łukasz Żółć")));
     EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(pages)));
   }
   for (int a = 0; a < kNumClinicalAngles; ++a)
-    EXPECT_TRUE(all.contains(QString::fromUtf8(clinicalAngleInfo()[a].name.data()) + ": range of motion (deg)"));
+    EXPECT_TRUE(all.contains(QString::fromUtf8(clinicalAngleInfo()[a].name.data()) +
+                             ": range of motion (deg)"));
   // The table lists the sessions in date order with their ROM in degrees.
   int last = -1;
   for (const char* row : {"2026-10-02", "2026-10-16", "2026-11-01", "2026-11-20"}) {
-    const int at = all.indexOf(QRegularExpression(QString("%1\\s+1\\d\\d\\s+Flexion 120").arg(row)));
+    const int at =
+        all.indexOf(QRegularExpression(QString("%1\\s+1\\d\\d\\s+Flexion 120").arg(row)));
     EXPECT_GT(at, last) << row;
     last = at;
   }

@@ -3,10 +3,10 @@
 // simulated truth) and the pages through pdftoppm (not blank, plots drawn).
 #include <QFile>
 #include <QFileInfo>
-#include <limits>
-#include <iostream>
 #include <QRegularExpression>
 #include <cmath>
+#include <iostream>
+#include <limits>
 
 #include "ReportTestSupport.h"
 #include "core/reports/Reports.h"
@@ -31,7 +31,8 @@ class SessionReport : public ::testing::Test {
   void SetUp() override {
     ensureGuiApp();
     if (const std::string tool = missingPdfTool(); !tool.empty())
-      GTEST_SKIP() << tool << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
+      GTEST_SKIP() << tool
+                   << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
     ASSERT_TRUE(dir.isValid());
     // ARMTRACK_KEEP_REPORTS=1 keeps the PDFs and PNGs to look at (the folder is printed).
     if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
@@ -52,7 +53,8 @@ std::vector<double> metricsRow(const QString& page, const QString& name) {
     const QString l = line.trimmed();
     if (!l.startsWith(name)) continue;
     std::vector<double> v;
-    for (const QString& tok : l.mid(name.size()).split(' ', Qt::SkipEmptyParts)) v.push_back(tok.toDouble());
+    for (const QString& tok : l.mid(name.size()).split(' ', Qt::SkipEmptyParts))
+      v.push_back(tok.toDouble());
     return v;
   }
   return {};
@@ -67,15 +69,17 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
   const QStringList text = pageTexts(pdf);
   ASSERT_EQ(text.size(), pages);
   const QString all = text.join('\n');
-  for (const QString& s : kSections) EXPECT_TRUE(all.contains(s)) << "missing section " << s.toStdString();
+  for (const QString& s : kSections)
+    EXPECT_TRUE(all.contains(s)) << "missing section " << s.toStdString();
   for (int i = 0; i < pages; ++i) {
     SCOPED_TRACE(i + 1);
     EXPECT_TRUE(text[i].contains("Anna Example"));
     EXPECT_TRUE(text[i].contains("2026-11-20"));
     EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(pages)));
   }
-  for (const QString& s : {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm",
-                           "upper_arm_m", "Frozen shoulder", "Continue the programme twice a week."})
+  for (const QString& s :
+       {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm", "upper_arm_m",
+        "Frozen shoulder", "Continue the programme twice a week."})
     EXPECT_TRUE(all.contains(s)) << s;
   EXPECT_TRUE(all.contains(QRegularExpression("Duration\\s+\\d+\\.\\d s"))) << "duration";
 
@@ -203,7 +207,7 @@ TEST_F(SessionReport, SameLayoutOnAHighDpiScreen) {
   const QString bboxNormal = words("normal.pdf");
   EXPECT_GT(bbox.count("<word "), 500);
   EXPECT_EQ(bbox, bboxNormal) << "word positions differ";
-  EXPECT_TRUE(bbox.contains("width=\"595.") ) << "A4 is 595 x 842 pt";
+  EXPECT_TRUE(bbox.contains("width=\"595.")) << "A4 is 595 x 842 pt";
 }
 
 TEST_F(SessionReport, NoRepetitionsNoNotesNoEarlierSessions) {
@@ -261,7 +265,8 @@ TEST_F(SessionReport, LongSessionWithGapsAndNaNsStaysSmall) {
   SimulatedSession sim = simulateSession(std::vector<double>(200, 115.0));
   AngleSeries& s = sim.series;
   ASSERT_GT(s.t.size(), 80000u);
-  for (std::size_t i = 5000; i < 5010; ++i) s.angle[i][2] = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 5000; i < 5010; ++i)
+    s.angle[i][2] = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 20000; i < s.t.size(); ++i) s.t[i] += 30.0;  // a 30 s gap
   ClinicalMetricsParams params;
   params.repetitions.primaryAngle = 0;
@@ -273,8 +278,8 @@ TEST_F(SessionReport, LongSessionWithGapsAndNaNsStaysSmall) {
   writeSessionReport(d, pdf);
   EXPECT_LT(QFileInfo(pdf).size(), 1'500'000) << "plots not reduced";
   const QString all = pageTexts(pdf).join('\n');
-  EXPECT_TRUE(all.contains(QString("%1 samples used, 10 rows rejected (not finite), 1 gaps")
-                               .arg(sim.metrics.samples)));
+  EXPECT_TRUE(all.contains(
+      QString("%1 samples used, 10 rows rejected (not finite), 1 gaps").arg(sim.metrics.samples)));
   EXPECT_TRUE(all.contains("200 repetitions counted on Shoulder flexion"));
   EXPECT_TRUE(all.contains(QRegularExpression("\\n200 +\\d")));  // the last row of the table
   const std::vector<QImage> images = renderPages(pdf, dir.path());
@@ -317,7 +322,8 @@ TEST_F(SessionReport, LongTablesRepeatTheirHeader) {
   for (int i = 0; i < 90; ++i) EXPECT_TRUE(all.contains(QString("(#%1)").arg(1000 + i))) << i;
   int pagesWithHeader = 0;
   for (const QString& page : text)
-    if (page.contains(QRegularExpression("\\nSession +Shoulder +Shoulder +Shoulder +Elbow"))) ++pagesWithHeader;
+    if (page.contains(QRegularExpression("\\nSession +Shoulder +Shoulder +Shoulder +Elbow")))
+      ++pagesWithHeader;
   EXPECT_GE(pagesWithHeader, 2);  // 90 rows do not fit on one page
   EXPECT_TRUE(all.contains("(not valid JSON"));
 }
