@@ -98,7 +98,7 @@ std::vector<double> niceTicks(double lo, double hi, int target) {
 
 void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                   const std::vector<double>& tS, const std::vector<double>& yDeg,
-                  const std::optional<Band>& band) {
+                  const std::optional<Band>& band, const std::vector<TimeMark>& marks) {
   Frame f = frameIn(w, r);
   const std::size_t n = std::min(tS.size(), yDeg.size());
   double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
@@ -115,6 +115,7 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
   const double mid = (ylo + yhi) / 2, half = std::max((yhi - ylo) / 2, 5.0) * 1.1;
   f.ylo = mid - half;
   f.yhi = mid + half;
+  if (!marks.empty()) f.yhi += 0.25 * half;  // headroom for the marks above the curve
   // Time from the first finite sample; the median step between finite samples.
   std::vector<double> finiteT;
   for (std::size_t i = 0; i < n; ++i)
@@ -146,6 +147,25 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
     p.setPen(QColor(40, 110, 40));
     p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
                Qt::AlignRight | Qt::AlignVCenter, band->label);
+  }
+  if (!marks.empty()) {
+    const QFontMetricsF fm(w.fonts().small, w.device());
+    p.setFont(w.fonts().small);
+    p.setPen(QColor(60, 60, 60));
+    double lastRight = -std::numeric_limits<double>::infinity();
+    for (const TimeMark& m : marks) {
+      const double x = f.px(m.tS - t0);
+      const double width = fm.horizontalAdvance(m.label) + w.mm(1);
+      if (x - width / 2 < lastRight || x < f.plot.left() || x > f.plot.right()) continue;
+      p.drawText(QRectF(x - width / 2, f.plot.top() + w.mm(0.3), width, fm.height()),
+                 Qt::AlignHCenter | Qt::AlignTop, m.label);
+      lastRight = x + width / 2;
+    }
+    // Legend on the axis-title row, left of "time (s)".
+    p.drawText(QRectF(f.plot.left(), f.plot.bottom() + fm.height() * 1.5 + w.mm(0.3),
+                      f.plot.width() * 0.75, fm.height()),
+               Qt::AlignLeft | Qt::AlignTop,
+               QStringLiteral("numbers: repetitions at their peaks (p = partial)"));
   }
   // Min and max per column of about 0.25 mm keep every peak while bounding the path's size. The
   // line breaks at a non-finite value and across a gap: a step over 10 times the median step.

@@ -23,12 +23,19 @@ struct Band {
   QString label;
 };
 
+/// A label at a time on a time plot, e.g. a repetition's number at its peak.
+struct TimeMark {
+  double tS = 0;  ///< s, on the same clock as the plot's times
+  QString label;
+};
+
 /// One clinical angle (deg) against time (s from the first sample) in rect r, with a shaded
-/// band when given. Non-finite values break the line. Long series are reduced to the minimum
-/// and maximum per horizontal step, so peaks are kept.
+/// band when given and marks along the top edge (a mark too close to the previous one is left
+/// out). Non-finite values break the line. Long series are reduced to the minimum and maximum
+/// per horizontal step, so peaks are kept.
 void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                   const std::vector<double>& tS, const std::vector<double>& yDeg,
-                  const std::optional<Band>& band);
+                  const std::optional<Band>& band, const std::vector<TimeMark>& marks = {});
 
 struct NormativeBar {
   QString name;

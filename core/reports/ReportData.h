@@ -62,4 +62,11 @@ struct ProgressReportData {
   QDateTime generatedAt;                  ///< invalid = now (UTC)
 };
 
+/// The five ranges of motion of computed metrics, for earlierSessions or otherSide.
+RomSnapshot romSnapshot(const QString& date, std::optional<qint64> sessionId,
+                        const SessionMetrics& metrics);
+
+/// A progress-report row from a stored session and its metrics (repetitions: full + partial).
+ProgressSession progressSession(const storage::SessionInfo& session, const SessionMetrics& metrics);
+
 }  // namespace armtrack::reports

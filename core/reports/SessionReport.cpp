@@ -130,8 +130,17 @@ void plots(PageWriter& w, const SessionReportData& d) {
                QStringLiteral("shaded: protocol target %1 to %2 deg")
                    .arg(formatDeg(d.protocol->targetMinDeg), formatDeg(d.protocol->targetMaxDeg))};
     const QRectF r = w.reserve(w.mm(44));
-    drawTimePlot(w, r.adjusted(0, 0, 0, -w.mm(2)), angleName(a) + QStringLiteral(" (deg)"),
-                 d.angles.t, y, band);
+    // The repetitions' numbers at their peaks on the angle they were counted on ("p": partial).
+    std::vector<TimeMark> marks;
+    const QString title = angleName(a) + QStringLiteral(" (deg)");
+    const RepetitionResult& reps = d.metrics.repetitions;
+    if (a == reps.primaryAngle && !reps.repetitions.empty()) {
+      for (std::size_t k = 0; k < reps.repetitions.size(); ++k)
+        marks.push_back({reps.repetitions[k].peakS,
+                         QString::number(k + 1) +
+                             (reps.repetitions[k].partial ? QStringLiteral("p") : QString())});
+    }
+    drawTimePlot(w, r.adjusted(0, 0, 0, -w.mm(2)), title, d.angles.t, y, band, marks);
   }
 }
 

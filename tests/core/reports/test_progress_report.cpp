@@ -91,6 +91,39 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
   EXPECT_GT(b.count, 100) << "the ROM lines";
 }
 
+// Three simulated sessions of growing range, turned into rows by progressSession(): the table
+// shows each session's shoulder-flexion ROM as the metrics give it, within 1 deg of the truth.
+TEST_F(ProgressReport, FromSimulatedSessions) {
+  ProgressReportData d = progressData();
+  d.sessions.clear();
+  const double peaks[3] = {70, 95, 125};
+  std::vector<double> romDeg;
+  for (int i = 0; i < 3; ++i) {
+    const SimulatedSession sim = simulateSession({peaks[i], peaks[i] - 5});
+    storage::SessionInfo info;
+    info.id = 200 + i;
+    info.startedAt = QString("2026-11-%1T08:00:00Z").arg(3 + 7 * i, 2, 10, QLatin1Char('0'));
+    info.protocolName = "Flexion 120";
+    const ProgressSession row = progressSession(info, sim.metrics);
+    ASSERT_TRUE(row.romRad[0].has_value());
+    EXPECT_EQ(row.repetitions, 2);
+    EXPECT_DOUBLE_EQ(row.durationS, sim.metrics.durationS);
+    romDeg.push_back(*row.romRad[0] * kRadToDeg);
+    EXPECT_NEAR(romDeg.back(), peaks[i] - 10, 1.0);
+    d.sessions.push_back(row);
+  }
+  const QString pdf = dir.filePath("simulated.pdf");
+  writeProgressReport(d, pdf);
+  const QString all = pageTexts(pdf).join('\n');
+  for (int i = 0; i < 3; ++i) {
+    const QString row = QString("2026-11-%1\\s+%2\\s+Flexion 120\\s+\\S+ s\\s+2\\s+%3\\s")
+                            .arg(3 + 7 * i, 2, 10, QLatin1Char('0'))
+                            .arg(200 + i)
+                            .arg(QRegularExpression::escape(QString::number(romDeg[i], 'f', 1)));
+    EXPECT_TRUE(all.contains(QRegularExpression(row))) << row;
+  }
+}
+
 TEST_F(ProgressReport, NoSessionsSaysSo) {
   ProgressReportData d = progressData();
   d.sessions.clear();

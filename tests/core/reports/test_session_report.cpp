@@ -122,6 +122,9 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
   EXPECT_TRUE(all.contains("Change since last"));
   EXPECT_TRUE(all.contains("Other side"));
   EXPECT_TRUE(all.contains("shaded: protocol target 10.0 to 120.0 deg"));
+  // The counted angle's plot numbers the repetitions; the partial fifth is "5p".
+  EXPECT_TRUE(all.contains("numbers: repetitions at their peaks (p = partial)"));
+  EXPECT_TRUE(all.contains(QRegularExpression("\\b4\\s+5p\\b")));
 }
 
 TEST_F(SessionReport, PagesRenderNotBlankWithPlotsDrawn) {
@@ -229,6 +232,7 @@ TEST_F(SessionReport, NoRepetitionsNoNotesNoEarlierSessions) {
   EXPECT_TRUE(all.contains("No earlier sessions to compare with."));
   EXPECT_TRUE(all.contains("No devices were recorded"));
   EXPECT_FALSE(all.contains("shaded: protocol target"));
+  EXPECT_FALSE(all.contains("numbers: repetitions at their peaks"));
 }
 
 TEST_F(SessionReport, LongNotesFlowOntoFurtherPagesWithNothingLost) {
