@@ -1,0 +1,66 @@
+#include "core/reports/PdfOutput.h"
+
+#include <QBuffer>
+#include <QGuiApplication>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPdfWriter>
+#include <QSaveFile>
+
+#include "core/reports/Reports.h"
+
+namespace armtrack::reports {
+namespace {
+
+// 300 dots per inch: the PDF's coordinates are in these units (text stays vector); the screen's
+// DPI never enters.
+constexpr int kResolution = 300;
+
+std::string text(const QString& s) {
+  return s.toStdString();
+}
+
+int render(QIODevice* device, const QString& documentTitle, const QString& runningHead,
+           const QString& footer, int totalPages, const std::function<void(PageWriter&)>& draw) {
+  QPdfWriter writer(device);
+  writer.setPageLayout(QPageLayout(QPageSize(QPageSize::A4), QPageLayout::Portrait,
+                                   QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter));
+  writer.setResolution(kResolution);
+  writer.setTitle(documentTitle);
+  writer.setCreator(QStringLiteral("ArmTrack"));
+  QPainter painter;
+  if (!painter.begin(&writer)) throw ReportError("cannot start drawing the PDF");
+  painter.setRenderHint(QPainter::Antialiasing);
+  PageWriter pages(writer, painter, runningHead, footer, totalPages);
+  draw(pages);
+  const int n = pages.pageNumber();
+  painter.end();
+  return n;
+}
+
+}  // namespace
+
+int writePdf(const QString& pdfPath, const QString& documentTitle, const QString& runningHead,
+             const QString& footer, const std::function<void(PageWriter&)>& draw) {
+  if (!qobject_cast<QGuiApplication*>(QCoreApplication::instance()))
+    throw ReportError(
+        "PDF reports need a QGuiApplication for their fonts; create one first (without a display "
+        "use the offscreen platform: QT_QPA_PLATFORM=offscreen)");
+  if (pdfPath.isEmpty()) throw ReportError("no output path given for the PDF report");
+  // First pass into memory: the number of pages for the footers.
+  QBuffer scratch;
+  scratch.open(QIODevice::WriteOnly);
+  const int total = render(&scratch, documentTitle, runningHead, footer, 0, draw);
+
+  QSaveFile file(pdfPath);
+  if (!file.open(QIODevice::WriteOnly))
+    throw ReportError("cannot write the report to '" + text(pdfPath) +
+                      "': " + text(file.errorString()) + "; choose a folder you may write to");
+  const int written = render(&file, documentTitle, runningHead, footer, total, draw);
+  if (file.error() != QFileDevice::NoError || !file.commit())
+    throw ReportError("cannot write the report to '" + text(pdfPath) +
+                      "': " + text(file.errorString()) + " (nothing was written)");
+  return written;
+}
+
+}  // namespace armtrack::reports

@@ -1,0 +1,108 @@
+// The progress report (docs/reports.md, "Progress report").
+#include <algorithm>
+
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/metrics/NormativeRanges.h"
+#include "core/reports/Charts.h"
+#include "core/reports/PdfOutput.h"
+#include "core/reports/ReportText.h"
+#include "core/reports/Reports.h"
+
+namespace armtrack::reports {
+namespace {
+
+QString angleName(int i) {
+  const auto name = clinicalAngleInfo()[static_cast<std::size_t>(i)].name;
+  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+}
+
+QString orDash(const QString& s) {
+  return s.trimmed().isEmpty() ? QStringLiteral("-") : s;
+}
+
+std::optional<double> deg(const std::optional<double>& rad) {
+  return rad ? std::optional<double>(*rad * kRadToDeg) : std::nullopt;
+}
+
+void draw(PageWriter& w, const ProgressReportData& d,
+          const std::vector<ProgressSession>& sessions) {
+  w.title(QStringLiteral("Progress report"));
+  w.heading(QStringLiteral("Patient and period"));
+  const storage::Patient& p = d.patient;
+  w.keyValues({{QStringLiteral("Name"), orDash(p.name)},
+               {QStringLiteral("Patient code"), orDash(p.code)},
+               {QStringLiteral("Date of birth"), orDash(p.birthDate)},
+               {QStringLiteral("Affected side"), orDash(p.affectedSide)},
+               {QStringLiteral("From"), orDash(d.fromDate)},
+               {QStringLiteral("To"), orDash(d.toDate)},
+               {QStringLiteral("Therapist"), orDash(d.therapistName)},
+               {QStringLiteral("Sessions"), QString::number(sessions.size())}});
+
+  w.heading(QStringLiteral("Range of motion over time"), 50);
+  if (sessions.empty()) {
+    w.paragraph(
+        QStringLiteral("No sessions between %1 and %2.").arg(orDash(d.fromDate), orDash(d.toDate)),
+        w.fonts().body);
+  } else {
+    std::vector<QDateTime> when;
+    for (const ProgressSession& s : sessions) when.push_back(parseIso(s.startedAt));
+    const auto& ranges = aaosNormativeRanges();
+    for (int a = 0; a < kNumClinicalAngles; ++a) {
+      std::vector<std::optional<double>> rom;
+      for (const ProgressSession& s : sessions)
+        rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
+      const QRectF r = w.reserve(w.mm(44));
+      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
+                    angleName(a) + QStringLiteral(": range of motion (deg)"), when, rom,
+                    normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
+    }
+    const std::string_view source = ranges[0].source;
+    w.paragraph(QStringLiteral("Normal ranges: %1.")
+                    .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size()))),
+                w.fonts().small);
+  }
+
+  w.heading(QStringLiteral("Sessions"));
+  Table t;
+  t.small = true;
+  t.header = {QStringLiteral("Date"), QStringLiteral("Id"), QStringLiteral("Protocol"),
+              QStringLiteral("Duration"), QStringLiteral("Reps")};
+  t.widths = {0.11, 0.06, 0.15, 0.1, 0.06};
+  t.rightAligned = {false, true, false, true, true};
+  for (int a = 0; a < kNumClinicalAngles; ++a) {
+    t.header << angleName(a) + QStringLiteral(" ROM");
+    t.widths.push_back(0.104);
+    t.rightAligned.push_back(true);
+  }
+  for (const ProgressSession& s : sessions) {
+    QStringList row{formatDate(s.startedAt), QString::number(s.id), orDash(s.protocolName),
+                    formatDuration(s.durationS),
+                    s.repetitions ? QString::number(*s.repetitions) : QStringLiteral("-")};
+    for (const auto& rom : s.romRad) row << formatDeg(deg(rom));
+    t.rows.push_back(row);
+  }
+  w.table(t);
+  w.paragraph(QStringLiteral("ROM in degrees (maximum minus minimum over the session)."),
+              w.fonts().small);
+}
+
+}  // namespace
+
+int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
+  std::vector<ProgressSession> sessions = d.sessions;
+  std::stable_sort(sessions.begin(), sessions.end(),
+                   [](const ProgressSession& a, const ProgressSession& b) {
+                     return parseIso(a.startedAt) < parseIso(b.startedAt);
+                   });
+  const QString period = QStringLiteral("%1 to %2").arg(orDash(d.fromDate), orDash(d.toDate));
+  const QString head =
+      QStringLiteral("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
+  const QDateTime at = d.generatedAt.isValid() ? d.generatedAt : QDateTime::currentDateTimeUtc();
+  const QString footer = QStringLiteral("%1 - progress report - generated %2")
+                             .arg(orDash(d.patient.name),
+                                  at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  return writePdf(pdfPath, QStringLiteral("Progress report: %1, %2").arg(d.patient.name, period),
+                  head, footer, [&](PageWriter& w) { draw(w, d, sessions); });
+}
+
+}  // namespace armtrack::reports
