@@ -342,4 +342,16 @@ std::optional<StoredAnalysis> latestAnalysis(ClinicalStore& store, qint64 sessio
   return storedAnalysis(store, sessionId, 0);
 }
 
+std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessionId) {
+  const auto m = store.latestMetrics(sessionId);
+  if (!m) return std::nullopt;
+  const std::optional<QJsonObject> angles = parseObject(m->first);
+  const std::optional<QJsonObject> summary = parseObject(m->second);
+  if (!angles || !summary)
+    throw StorageError(Kind::Corrupt, sessionText(sessionId) +
+                                          ": its stored metrics are not JSON objects (run "
+                                          "'session reestimate')");
+  return merged(*summary, *angles);
+}
+
 }  // namespace armtrack::storage

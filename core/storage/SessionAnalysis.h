@@ -73,7 +73,14 @@ struct StoredAnalysis {
 /// StorageError(Corrupt) naming the session and version when the blob or its parameters cannot
 /// be decoded; NotFound as ClinicalStore::session.
 std::optional<StoredAnalysis> latestAnalysis(ClinicalStore& store, qint64 sessionId);
-/// The same for a given version (1, 2, ...): nothing when there is no such version.
+/// The same for a given version (1, 2, ...; 0 = the newest): nothing when there is no such
+/// version.
 std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version);
+
+/// Only the newest metrics JSON (docs/storage.md, "Metrics"), without decoding any estimates:
+/// what `session show` prints. Nothing when the session was never analysed. Throws
+/// StorageError(Corrupt) when the stored JSON is not an object; NotFound as
+/// ClinicalStore::session.
+std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessionId);
 
 }  // namespace armtrack::storage
