@@ -128,8 +128,7 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
   return 0;
 }
 
-int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out,
-                      std::ostream& err) {
+int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session reestimate", rest, withDb({{"--filter", true}, {"--no-optical", false}}));
   if (a.help()) return out << kSessionHelp, 0;
   const qint64 id = sessionId(a);

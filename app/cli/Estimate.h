@@ -14,11 +14,11 @@ namespace armtrack::cli {
 // The engine lives in core/estimation/RecordingEstimator.h; these names keep the CLI's callers
 // and tests as they were.
 using armtrack::EstimateOptions;
-using armtrack::EstimateStats;
-using armtrack::WindowError;
 using armtrack::EstimateProgress;
-using armtrack::kProgressRows;
+using armtrack::EstimateStats;
 using armtrack::kEstimateHeader;
+using armtrack::kProgressRows;
+using armtrack::WindowError;
 
 /// Filter parameters: geometry and gravity from the sidecar, the rest from options.
 EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& options);

@@ -54,8 +54,7 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
   bool started = false;
   double tStart = 0.0;  // time of the latest (re)start
   int nextPercent = 10;
-  std::size_t nextRow =
-      callbacks.progress ? n / 10 : std::numeric_limits<std::size_t>::max();
+  std::size_t nextRow = callbacks.progress ? n / 10 : std::numeric_limits<std::size_t>::max();
 
   EstimateRow row;
   for (std::size_t i = 0; i < n; ++i) {

@@ -44,10 +44,10 @@ inline constexpr double kStartupSeconds = 1.0;
 
 /// One output row of the estimator.
 struct EstimateRow {
-  double t = 0;                            ///< s, the sample's time
-  JointVector th = JointVector::Zero();    ///< DH joint angles (rad)
-  JointVector sd = JointVector::Zero();    ///< their standard deviations (rad)
-  int status = kStatusFused;               ///< kStatus*
+  double t = 0;                          ///< s, the sample's time
+  JointVector th = JointVector::Zero();  ///< DH joint angles (rad)
+  JointVector sd = JointVector::Zero();  ///< their standard deviations (rad)
+  int status = kStatusFused;             ///< kStatus*
 };
 
 /// Per-joint RMSE of the estimates whose time lies in [from, to].
@@ -74,8 +74,8 @@ struct EstimateStats {
   JointVector rmseDeg = JointVector::Zero();
   JointVector peakDeg = JointVector::Zero();
   std::size_t truthRows = 0;  ///< estimates that had true angles, start-up seconds included
-  WindowError firstWindow;  ///< the first 10 s after start-up (shorter for a short recording)
-  WindowError lastWindow;   ///< the last 10 s after the first window (may be empty)
+  WindowError firstWindow;    ///< the first 10 s after start-up (shorter for a short recording)
+  WindowError lastWindow;     ///< the last 10 s after the first window (may be empty)
 };
 
 /// Receives each output row, in time order, on the calling thread.

@@ -12,10 +12,10 @@ namespace armtrack::storage {
 
 /// The estimator's output rows as columns (the columns of kEstimateHeader).
 struct EstimateColumns {
-  std::vector<double> t;         ///< s
-  std::vector<JointVector> th;   ///< DH joint angles (rad)
-  std::vector<JointVector> sd;   ///< their standard deviations (rad)
-  std::vector<int> status;       ///< kStatus* of core/estimation/RecordingEstimator.h (0-3)
+  std::vector<double> t;        ///< s
+  std::vector<JointVector> th;  ///< DH joint angles (rad)
+  std::vector<JointVector> sd;  ///< their standard deviations (rad)
+  std::vector<int> status;      ///< kStatus* of core/estimation/RecordingEstimator.h (0-3)
   std::size_t size() const { return t.size(); }
 };
 

@@ -42,8 +42,8 @@ EstimateOptions parseFilterSettings(const QString& json, qint64 sessionId, bool&
   const QJsonObject f = doc.object();
   fromSession = !f.isEmpty();
   const auto bad = [&](const char* key, const std::string& why) {
-    return StorageError(Kind::Usage, sessionText(sessionId) + ": stored filter setting \"" + key +
-                                         "\" " + why);
+    return StorageError(Kind::Usage,
+                        sessionText(sessionId) + ": stored filter setting \"" + key + "\" " + why);
   };
   if (f.contains("filter")) {
     const QString k = f.value("filter").toString().toLower();
@@ -71,7 +71,8 @@ EstimateOptions parseFilterSettings(const QString& json, qint64 sessionId, bool&
   }
   if (f.contains("joint_accel_std_deg")) {
     const double s = f.value("joint_accel_std_deg").toDouble(-1.0);
-    if (!(s > 0) || !std::isfinite(s)) throw bad("joint_accel_std_deg", "must be a positive number");
+    if (!(s > 0) || !std::isfinite(s))
+      throw bad("joint_accel_std_deg", "must be a positive number");
     o.jointAccelStdDeg = s;
   }
   return o;
@@ -108,12 +109,9 @@ QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
   QJsonArray list;
   for (std::size_t i = 0; i < r.repetitions.size(); ++i) {
     const Repetition& rep = r.repetitions[i];
-    QJsonObject o{{"start_s", rep.startS},
-                  {"peak_s", rep.peakS},
-                  {"end_s", rep.endS},
-                  {"excursion_deg", rep.excursionRad * kRadToDeg},
-                  {"partial", rep.partial},
-                  {"angles", anglesJson(rep.metrics)}};
+    QJsonObject o{{"start_s", rep.startS},  {"peak_s", rep.peakS},
+                  {"end_s", rep.endS},      {"excursion_deg", rep.excursionRad * kRadToDeg},
+                  {"partial", rep.partial}, {"angles", anglesJson(rep.metrics)}};
     if (i < m.repetitionSmoothness.size()) {
       putSmoothness(o, "sparc", m.repetitionSmoothness[i].sparc);
       putSmoothness(o, "ldlj", m.repetitionSmoothness[i].ldlj);
@@ -171,7 +169,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   if (store.user().role == Role::Home)
     throw StorageError(Kind::AccessDenied,
                        "a home account may not analyse sessions: ask your therapist to run "
-                       "'session reestimate " + std::to_string(sessionId) + "'");
+                       "'session reestimate " +
+                           std::to_string(sessionId) + "'");
   AnalysisResult result;
   bool fromSession = false;
   result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);
@@ -203,8 +202,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   if (rows.size() < 2)
     throw StorageError(Kind::Usage, sessionText(sessionId) + ": " +
                                         std::to_string(result.stats.imuRows) +
-                                        " rows with IMU data gave " +
-                                        std::to_string(rows.size()) +
+                                        " rows with IMU data gave " + std::to_string(rows.size()) +
                                         " estimates; at least 2 are needed for metrics");
 
   // The metrics leave out the filter's settling time after each (re)start or recovery, as the
@@ -298,8 +296,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   return result;
 }
 
-std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId,
-                                             int version) {
+std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version) {
   const std::optional<EstimateRecord> rec = store.estimates(sessionId, version);
   if (!rec) return std::nullopt;
   const std::string where =

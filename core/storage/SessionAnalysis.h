@@ -56,9 +56,9 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
 /// One stored version of a session's analysis, decoded.
 struct StoredAnalysis {
   qint64 sessionId = 0;
-  int version = 0;      ///< the estimates' version
-  QString createdAt;    ///< ISO 8601 UTC
-  QString paramsJson;   ///< how the estimates were made (docs/storage.md)
+  int version = 0;                  ///< the estimates' version
+  QString createdAt;                ///< ISO 8601 UTC
+  QString paramsJson;               ///< how the estimates were made (docs/storage.md)
   std::vector<double> t;            ///< s, one per output row
   std::vector<JointVector> joints;  ///< DH joint angles (rad)
   std::vector<JointVector> sd;      ///< their standard deviations (rad)

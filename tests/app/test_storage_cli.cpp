@@ -240,8 +240,7 @@ TEST_F(StorageCli, ImportStoresMetricsAndReestimateAddsAVersion) {
   ASSERT_EQ(imp.code, 0) << imp.err;
   const std::string id = imp.out.substr(0, imp.out.find('\n'));
   EXPECT_EQ(imp.out, id + "\n");
-  EXPECT_NE(imp.err.find("session import: estimates and metrics version 1 (EKF"),
-            std::string::npos)
+  EXPECT_NE(imp.err.find("session import: estimates and metrics version 1 (EKF"), std::string::npos)
       << imp.err;
   EXPECT_NE(imp.err.find("on elbow_flexion"), std::string::npos) << imp.err;
   EXPECT_EQ(imp.err.find("progress:"), std::string::npos) << imp.err;  // a short recording

@@ -48,12 +48,11 @@ class Exercise final : public Trajectory {
     const double holds[] = {0.4, 0.8, 0.3, 0.6, 0.5};
     const double pauses[] = {0.8, 1.5, 1.0, 0.6, 1.2};
     for (std::size_t r = 0; r < peakDeg.size(); ++r) {
-      const double f = (peakDeg[r] - rest.shoulderFlexion) /
-                       (top.shoulderFlexion - rest.shoulderFlexion);
+      const double f =
+          (peakDeg[r] - rest.shoulderFlexion) / (top.shoulderFlexion - rest.shoulderFlexion);
       const auto a = asArray(rest), b = asArray(top);
-      ClinicalAngles c{a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]),
-                       a[2] + f * (b[2] - a[2]), a[3] + f * (b[3] - a[3]),
-                       a[4] + f * (b[4] - a[4])};
+      ClinicalAngles c{a[0] + f * (b[0] - a[0]), a[1] + f * (b[1] - a[1]), a[2] + f * (b[2] - a[2]),
+                       a[3] + f * (b[3] - a[3]), a[4] + f * (b[4] - a[4])};
       const double rise = rises[r % 5];
       m_path.add(t + rise, fromClinical(c));
       m_path.hold(holds[r % 5]);
@@ -132,8 +131,8 @@ void expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
     ADD_FAILURE() << "no StorageError";
   } catch (const StorageError& e) {
     EXPECT_EQ(e.kind(), kind) << e.what();
-    if (!mustSay.empty()) EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos)
-        << e.what();
+    if (!mustSay.empty())
+      EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
   }
 }
 
@@ -179,7 +178,8 @@ TEST(SessionAnalysis, ExerciseFromTheDatabaseMatchesTheTruth) {
   EXPECT_EQ(m["estimate_version"].toInt(), 1);
   const QJsonObject params = QJsonDocument::fromJson(a->paramsJson.toUtf8()).object();
   EXPECT_EQ(params["filter"].toString(), "ekf");
-  EXPECT_EQ(params["method"].toString(), QString::fromStdString(methodName(MeasurementModel::AccelGyro)));
+  EXPECT_EQ(params["method"].toString(),
+            QString::fromStdString(methodName(MeasurementModel::AccelGyro)));
   EXPECT_TRUE(params["optical_used"].toBool());
   EXPECT_FALSE(params["library_version"].toString().isEmpty());
 
@@ -265,8 +265,8 @@ TEST(SessionAnalysis, WithoutProtocolCountsOnTheAngleThatMovesMost) {
 TEST(EstimateCodec, RoundTripIsBitExactAndDamageIsRefused) {
   EstimateColumns c;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const double values[] = {0.0, -0.0, 1e-300, 3.141592653589793, -2.5, 1e300, nan,
-                           std::numeric_limits<double>::infinity()};
+  const double values[] = {0.0,  -0.0,  1e-300, 3.141592653589793,
+                           -2.5, 1e300, nan,    std::numeric_limits<double>::infinity()};
   for (int i = 0; i < 40; ++i) {
     c.t.push_back(0.001 * i);
     JointVector th, sd;
