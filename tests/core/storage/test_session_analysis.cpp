@@ -410,6 +410,23 @@ TEST(SessionAnalysis, CancelStoresNothingAndNoImuIsAClearError) {
   EXPECT_EQ(f.store->estimateVersions(id), 0);
   EXPECT_FALSE(latestAnalysis(*f.store, id).has_value());
 
+  // Cancelled half-way (from the progress callback, as a GUI's button would between two reports):
+  // the run stops early and stores nothing.
+  simulateTo(f.file("long.csv"), 4.0);
+  const qint64 longer = f.store->importRecording(f.file("long.csv"), "P1");
+  cancel = false;
+  int last = -1;
+  options.progress = [&](int p) {
+    last = p;
+    if (p >= 40) cancel = true;
+  };
+  const AnalysisResult r = analyseSession(*f.store, longer, options);
+  EXPECT_TRUE(r.cancelled);
+  EXPECT_LT(last, 100);
+  EXPECT_GT(r.stats.estimates, 0u);
+  EXPECT_LT(r.stats.estimates, 3000u);
+  EXPECT_EQ(f.store->estimateVersions(longer), 0);
+
   // A recording of Kinect rows only: nothing to estimate from.
   Recording rec = simulateTo(f.file("b.csv"), 1.0);
   std::vector<ArmSample> optical;
