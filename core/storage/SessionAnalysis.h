@@ -49,7 +49,9 @@ struct AnalysisResult {
 /// or, without a protocol, on the angle with the largest range of motion.
 /// Throws StorageError: NotFound (no such session, or another patient's for a home account),
 /// AccessDenied (home accounts do not analyse), Usage (no IMU rows to estimate from, an unknown
-/// filter setting), Corrupt (as readRecording). Same thread as the store.
+/// filter setting), Corrupt (as readRecording). Same thread as the store: Qt Sql connections
+/// belong to the thread that opened them, so a GUI that analyses off its thread opens its own
+/// Database and ClinicalStore (signed in as the same user) in that worker thread.
 AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                               const AnalysisOptions& options = {});
 
