@@ -7,20 +7,31 @@
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
+#include "app/cli/Text.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::cli {
 
 namespace {
 
 constexpr std::string_view kSessionHelp =
-    R"(Usage: armtrack-cli session <import|list|show> [options]
+    R"(Usage: armtrack-cli session <import|reestimate|list|show> [options]
 
   session import REC.csv --patient CODE [--protocol NAME]
-                            store a recording (CSV + sidecar) losslessly as a complete session;
+                            store a recording (CSV + sidecar) losslessly as a complete session,
+                            estimate its joint angles and store them with its clinical metrics;
                             prints the new session id
+  session reestimate ID [--filter ekf|ukf] [--no-optical]
+                            estimate the stored recording again (the session's filter settings,
+                            else the defaults, with these overrides) and store the estimates and
+                            metrics as a new version; earlier versions are kept. Prints the
+                            version
   session list --patient CODE [--json]
   session show ID [--json]  id, patient, status (complete, interrupted or recording), duration_s,
-                            samples (rows with IMU data), rows, chunks, stored_bytes
+                            samples (rows with IMU data), rows, chunks, stored_bytes, and the
+                            newest metrics: per clinical angle, repetitions, sparc, ldlj,
+                            estimate_version (docs/cli.md)
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -64,6 +75,31 @@ QJsonObject sessionJson(const storage::SessionInfo& s) {
                      {"notes", s.notes}};
 }
 
+// Estimates the session and stores its metrics, reporting on err; returns the new version.
+int analyse(storage::ClinicalStore& store, qint64 id, const storage::AnalysisOptions& base,
+            const std::string& command, std::ostream& err) {
+  storage::AnalysisOptions options = base;
+  const bool reporting = store.session(id).sampleRows > static_cast<qint64>(kProgressRows);
+  int nextPercent = 10;
+  options.progress = [&](int p) {
+    for (; reporting && p >= nextPercent && nextPercent <= 100; nextPercent += 10)
+      err << "progress: " << nextPercent << "%\n";
+  };
+  const storage::AnalysisResult r = storage::analyseSession(store, id, options);
+  const QJsonObject& m = r.metricsJson;
+  const QJsonObject reps = m["repetitions"].toObject();
+  err << command << ": estimates and metrics version " << r.estimateVersion << " ("
+      << (r.settings.filter == FilterKind::Ekf ? "EKF" : "UKF") << ", method "
+      << methodName(r.settings.model) << ", "
+      << (r.stats.opticalUsed ? "optical fused" : "no optical data fused") << ", "
+      << r.settingsSource.toStdString() << " settings): " << reps["count"].toInt()
+      << " repetitions (" << reps["partial"].toInt() << " partial) on "
+      << ss(reps["primary_angle"].toString()) << ", SPARC "
+      << (m["sparc"].isDouble() ? fixed(m["sparc"].toDouble(), 2) : std::string("-")) << ", LDLJ "
+      << (m["ldlj"].isDouble() ? fixed(m["ldlj"].toDouble(), 2) : std::string("-")) << "\n";
+  return r.estimateVersion;
+}
+
 int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session import", rest, withDb({{"--patient", true}, {"--protocol", true}}));
   if (a.help()) return out << kSessionHelp, 0;
@@ -75,7 +111,39 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
   const storage::SessionInfo s = c.store().session(id);
   err << "session import: " << s.sampleRows << " rows in " << s.chunks << " chunks, "
       << s.storedBytes << " bytes stored\n";
+  // The recording is stored whatever happens next: its id is printed even when it cannot be
+  // analysed, with what to do about it.
+  if (c.store().user().role == storage::Role::Home) {
+    err << "session import: not analysed (a home account does not estimate sessions); a "
+           "therapist can run 'session reestimate "
+        << id << "'\n";
+  } else {
+    try {
+      analyse(c.store(), id, {}, "session import", err);
+    } catch (const storage::StorageError& e) {
+      err << "warning: session " << id << " is stored but not analysed: " << e.what() << "\n";
+    }
+  }
   out << id << "\n";
+  return 0;
+}
+
+int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("session reestimate", rest, withDb({{"--filter", true}, {"--no-optical", false}}));
+  if (a.help()) return out << kSessionHelp, 0;
+  const qint64 id = sessionId(a);
+  storage::AnalysisOptions options;
+  if (const auto f = a.value("--filter")) {
+    if (*f == "ekf")
+      options.filter = FilterKind::Ekf;
+    else if (*f == "ukf")
+      options.filter = FilterKind::Ukf;
+    else
+      a.fail("--filter: expected ekf or ukf, got " + inQuotes(*f));
+  }
+  options.noOptical = a.flag("--no-optical");
+  ClinicalContext c(a, {}, true);
+  out << analyse(c.store(), id, options, "session reestimate", err) << "\n";
   return 0;
 }
 
@@ -95,15 +163,55 @@ int sessionList(const std::vector<std::string>& rest, std::ostream& out, std::os
   return 0;
 }
 
+// The metrics fields of `session show --json` (null when the session was never analysed).
+void addMetrics(QJsonObject& o, const std::optional<QJsonObject>& m) {
+  const auto field = [&](const char* key) { return m ? m->value(key) : QJsonValue(); };
+  o.insert("metrics", m ? m->value("angles") : QJsonValue());
+  o.insert("repetitions", field("repetitions"));
+  o.insert("sparc", field("sparc"));
+  o.insert("ldlj", field("ldlj"));
+  o.insert("estimate_version", field("estimate_version"));
+}
+
+// The metrics as a Markdown table and a few lines.
+void printMetrics(std::ostream& out, const QJsonObject& m) {
+  out << "\nmetrics (estimates version " << m["estimate_version"].toInt() << "):\n\n"
+      << "| angle | min (deg) | max (deg) | ROM (deg) | peak velocity (deg/s) | mean velocity "
+         "(deg/s) | movement time (s) |\n|---|---:|---:|---:|---:|---:|---:|\n";
+  const QJsonObject angles = m["angles"].toObject();
+  const auto cell = [](const QJsonValue& v, int decimals) {
+    return v.isDouble() ? fixed(v.toDouble(), decimals) : std::string("-");
+  };
+  for (const ClinicalAngleInfo& info : clinicalAngleInfo()) {
+    const QJsonObject a = angles[QString::fromUtf8(info.key.data(), info.key.size())].toObject();
+    out << "| " << info.name << " | " << cell(a["min_deg"], 1) << " | " << cell(a["max_deg"], 1)
+        << " | " << cell(a["rom_deg"], 1) << " | " << cell(a["peak_velocity_deg_s"], 1) << " | "
+        << cell(a["mean_velocity_deg_s"], 1) << " | " << cell(a["movement_time_s"], 2) << " |\n";
+  }
+  const QJsonObject reps = m["repetitions"].toObject();
+  out << "\nrepetitions: " << reps["count"].toInt() << " (" << reps["partial"].toInt()
+      << " partial) on " << ss(reps["primary_angle"].toString()) << "\n";
+  for (const QJsonValue& v : reps["list"].toArray()) {
+    const QJsonObject r = v.toObject();
+    out << "  " << fixed(r["start_s"].toDouble(), 2) << "-" << fixed(r["end_s"].toDouble(), 2)
+        << " s: " << fixed(r["excursion_deg"].toDouble(), 1) << " deg"
+        << (r["partial"].toBool() ? " (partial)" : "") << "\n";
+  }
+  out << "SPARC: " << cell(m["sparc"], 2) << "\nLDLJ: " << cell(m["ldlj"], 2) << "\n";
+}
+
 int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
   const Args a("session show", rest, withDb({{"--json", false}}));
   if (a.help()) return out << kSessionHelp, 0;
   const qint64 id = sessionId(a);
   ClinicalContext c(a, {}, true);
   const storage::SessionInfo s = c.store().session(id);
+  const std::optional<QJsonObject> metrics = storage::latestMetricsJson(c.store(), id);
   c.store().audit("view", "session", QString::number(id));
   if (a.flag("--json")) {
-    printJson(out, QJsonDocument(sessionJson(s)));
+    QJsonObject o = sessionJson(s);
+    addMetrics(o, metrics);
+    printJson(out, QJsonDocument(o));
     return 0;
   }
   out << "session " << s.id << "\npatient: " << ss(s.patientCode) << "\nstatus: " << ss(s.status)
@@ -111,6 +219,10 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
       << " s\nsamples: " << s.imuSamples << " (rows " << s.sampleRows << ", " << s.chunks
       << " chunks, " << s.storedBytes << " bytes)\nprotocol: " << ss(s.protocolName)
       << "\nnotes: " << ss(s.notes) << "\n";
+  if (metrics)
+    printMetrics(out, *metrics);
+  else
+    out << "\nmetrics: none (not analysed; see 'session reestimate')\n";
   return 0;
 }
 
@@ -122,6 +234,7 @@ int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std:
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (sub == "--help" || sub == "-h") return out << kSessionHelp, 0;
   if (sub == "import") return sessionImport(rest, out, err);
+  if (sub == "reestimate") return sessionReestimate(rest, out, err);
   if (sub == "list") return sessionList(rest, out, err);
   if (sub == "show") return sessionShow(rest, out, err);
   throw UsageError("session", "unknown subcommand '" + sub + "'");

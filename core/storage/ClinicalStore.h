@@ -96,6 +96,8 @@ class ClinicalStore {
   /// The newest metrics (per-angle JSON, per-repetition JSON), if any.
   std::optional<std::pair<QString, QString>> latestMetrics(qint64 sessionId);
   int estimateVersions(qint64 sessionId);
+  /// One stored version of the estimates (0 = the newest), if there is one.
+  std::optional<EstimateRecord> estimates(qint64 sessionId, int version = 0);
 
   // Audit log (administrators read it).
   std::vector<AuditEntry> auditLog();

@@ -350,4 +350,24 @@ std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 s
   return std::make_pair(q.value(0).toString(), q.value(1).toString());
 }
 
+std::optional<EstimateRecord> ClinicalStore::estimates(qint64 sessionId, int version) {
+  visibleSession(sessionId);
+  QSqlQuery q = version > 0 ? m_db.exec(
+                                  "SELECT version, created_at, params_json, codec, data FROM "
+                                  "estimates WHERE session_id = ? AND version = ?",
+                                  {sessionId, version})
+                            : m_db.exec(
+                                  "SELECT version, created_at, params_json, codec, data FROM "
+                                  "estimates WHERE session_id = ? ORDER BY version DESC LIMIT 1",
+                                  {sessionId});
+  if (!q.next()) return std::nullopt;
+  EstimateRecord e;
+  e.version = q.value(0).toInt();
+  e.createdAt = q.value(1).toString();
+  e.paramsJson = q.value(2).toString();
+  e.codec = q.value(3).toString();
+  e.data = q.value(4).toByteArray();
+  return e;
+}
+
 }  // namespace armtrack::storage

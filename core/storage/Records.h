@@ -1,6 +1,7 @@
 // The rows of the clinical records as plain values (docs/storage.md, "Schema").
 #pragma once
 
+#include <QByteArray>
 #include <QString>
 #include <cstdint>
 #include <optional>
@@ -71,6 +72,15 @@ struct SessionInfo {
   qint64 imuSamples = 0;  ///< rows that carry an IMU reading
   qint64 chunks = 0;
   qint64 storedBytes = 0;  ///< compressed chunk bytes
+};
+
+/// One stored version of a session's estimates (docs/storage.md, "Estimates").
+struct EstimateRecord {
+  int version = 0;     ///< 1, 2, ... per session
+  QString createdAt;   ///< ISO 8601 UTC
+  QString paramsJson;  ///< how they were made (filter, method, optical, library version, rows)
+  QString codec;       ///< e.g. "est-f64-zstd-v1"
+  QByteArray data;     ///< the blob
 };
 
 struct AuditEntry {

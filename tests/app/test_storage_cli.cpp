@@ -19,6 +19,7 @@
 
 #include "app/cli/Cli.h"
 #include "core/io/Recording.h"
+#include "core/kinematics/ClinicalAngles.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 
@@ -223,6 +224,128 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   EXPECT_EQ(home({"patient", "programme", "P02"}).code, 1);
   EXPECT_EQ(home({"protocol", "assign", "reach", "--patient", "P01", "--per-week", "9"}).code, 1);
   EXPECT_EQ(home({"session", "list", "--patient", "P02"}).err.find("Name P02"), std::string::npos);
+}
+
+// Import estimates the session and stores its metrics; show prints them (JSON and table);
+// reestimate adds a version and keeps the earlier one. The ranges are checked against the
+// recording's true angles.
+TEST_F(StorageCli, ImportStoresMetricsAndReestimateAddsAVersion) {
+  addPatients();
+  ASSERT_EQ(run({"protocol", "add", "--name", "reach", "--angle", "elbow_flexion", "--target-min",
+                 "20", "--target-max", "110", "--reps", "8"})
+                .code,
+            0);
+  const std::string csv = simulate("rec.csv", 6.0);
+  const Result imp = run({"session", "import", csv, "--patient", "P01", "--protocol", "reach"});
+  ASSERT_EQ(imp.code, 0) << imp.err;
+  const std::string id = imp.out.substr(0, imp.out.find('\n'));
+  EXPECT_EQ(imp.out, id + "\n");
+  EXPECT_NE(imp.err.find("session import: estimates and metrics version 1 (EKF"), std::string::npos)
+      << imp.err;
+  EXPECT_NE(imp.err.find("on elbow_flexion"), std::string::npos) << imp.err;
+  EXPECT_EQ(imp.err.find("progress:"), std::string::npos) << imp.err;  // a short recording
+
+  Result show = run({"session", "show", id, "--json"});
+  ASSERT_EQ(show.code, 0) << show.err;
+  QJsonObject s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  EXPECT_EQ(s["status"].toString(), "complete");
+  EXPECT_EQ(s["samples"].toInteger(), 6001);
+  EXPECT_EQ(s["estimate_version"].toInt(), 1);
+  EXPECT_TRUE(s["sparc"].isDouble() || s["sparc"].isNull());
+  EXPECT_TRUE(s.contains("ldlj"));
+  const QJsonObject reps = s["repetitions"].toObject();
+  EXPECT_EQ(reps["primary_angle"].toString(), "elbow_flexion");
+  EXPECT_EQ(reps["count"].toInt(), reps["list"].toArray().size());
+
+  // Each angle's range against the true angles after the filter's first second (which the
+  // metrics leave out): within 2 deg.
+  const armtrack::Recording rec = armtrack::readRecording(csv);
+  const QJsonObject metrics = s["metrics"].toObject();
+  ASSERT_EQ(metrics.size(), 5);
+  for (int k = 0; k < 5; ++k) {
+    const std::string_view key = armtrack::clinicalAngleInfo()[k].key;
+    double lo = 1e9, hi = -1e9;
+    for (const armtrack::ArmSample& x : rec.samples) {
+      if (!x.trueAngles || x.t < 1.0) continue;
+      const double v = armtrack::asArray(armtrack::toClinical(*x.trueAngles))[k];
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+    const QJsonObject one = metrics[QString::fromUtf8(key.data(), key.size())].toObject();
+    for (const char* f : {"min_deg", "max_deg", "rom_deg", "peak_velocity_deg_s",
+                          "mean_velocity_deg_s", "movement_time_s"})
+      EXPECT_TRUE(one[f].isDouble()) << key << " " << f;
+    EXPECT_NEAR(one["rom_deg"].toDouble(), hi - lo, 2.0) << key;
+    EXPECT_NEAR(one["max_deg"].toDouble(), hi, 2.0) << key;
+  }
+
+  show = run({"session", "show", id});
+  ASSERT_EQ(show.code, 0) << show.err;
+  EXPECT_NE(show.out.find("metrics (estimates version 1)"), std::string::npos) << show.out;
+  EXPECT_NE(show.out.find("| Elbow flexion | "), std::string::npos) << show.out;
+  EXPECT_NE(show.out.find("repetitions: "), std::string::npos) << show.out;
+
+  const Result re = run({"session", "reestimate", id, "--filter", "ukf", "--no-optical"});
+  ASSERT_EQ(re.code, 0) << re.err;
+  EXPECT_EQ(re.out, "2\n");
+  EXPECT_NE(re.err.find("version 2 (UKF"), std::string::npos) << re.err;
+  EXPECT_NE(re.err.find("no optical data fused"), std::string::npos) << re.err;
+  show = run({"session", "show", id, "--json"});
+  s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  EXPECT_EQ(s["estimate_version"].toInt(), 2);
+  {
+    QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "cli-versions");
+    db.setDatabaseName(QString::fromStdString(m_db));
+    ASSERT_TRUE(db.open());
+    QSqlQuery q(db);
+    ASSERT_TRUE(q.exec("SELECT version, params_json, codec FROM estimates ORDER BY version"));
+    ASSERT_TRUE(q.next());
+    EXPECT_EQ(q.value(0).toInt(), 1);
+    EXPECT_NE(q.value(1).toString().indexOf("\"filter\":\"ekf\""), -1);
+    EXPECT_EQ(q.value(2).toString(), "est-f64-zstd-v1");
+    ASSERT_TRUE(q.next());
+    EXPECT_NE(q.value(1).toString().indexOf("\"optical\":false"), -1);
+    EXPECT_FALSE(q.next());
+    q.finish();
+    db.close();
+  }
+  QSqlDatabase::removeDatabase("cli-versions");
+
+  EXPECT_EQ(run({"session", "reestimate", id, "--filter", "kalman"}).code, 2);
+  EXPECT_EQ(run({"session", "reestimate", "999"}).code, 1);
+  EXPECT_EQ(run({"session", "reestimate"}).code, 2);
+}
+
+// A home account may read its own session's metrics but analyses nothing, and another patient's
+// session is unknown to it.
+TEST_F(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
+  addPatients();
+  const std::string csv = simulate("rec.csv", 2.0);
+  const std::string mine = importFor("P01", csv);
+  const std::string other = importFor("P02", csv);
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  ASSERT_EQ(run({"user", "add", "home1", "--role", "home", "--patient", "P01"}).code, 0);
+  auto home = [&](std::vector<std::string> args) {
+    return run(std::move(args), "home1", "home-pass");
+  };
+  Result r = home({"session", "show", mine, "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(QJsonDocument::fromJson(QByteArray::fromStdString(r.out))["estimate_version"].toInt(),
+            1);
+  r = home({"session", "reestimate", other});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("unknown session"), std::string::npos) << r.err;
+  r = home({"session", "reestimate", mine});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("home account"), std::string::npos) << r.err;
+  r = home({"session", "import", csv, "--patient", "P01"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("not analysed"), std::string::npos) << r.err;
+  const std::string homeId = r.out.substr(0, r.out.find('\n'));
+  r = run({"session", "show", homeId, "--json"});
+  EXPECT_TRUE(QJsonDocument::fromJson(QByteArray::fromStdString(r.out))["metrics"].isNull());
+  r = run({"session", "show", homeId});
+  EXPECT_NE(r.out.find("metrics: none"), std::string::npos) << r.out;
 }
 
 // A version-1 file (the later columns and tables dropped again) is refused until `db migrate`, then

@@ -1,0 +1,102 @@
+// Offline estimation of a whole recording: the loop behind `armtrack-cli estimate`, the storage
+// service's session analysis and (later) the GUI's re-estimation. It runs the joint-angle filter
+// sample by sample, hands every output row to a sink, and collects error statistics against the
+// recording's true angles when it has them. Qt-free.
+#pragma once
+
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <optional>
+
+#include "core/estimation/ArmFilter.h"
+#include "core/io/Recording.h"
+
+namespace armtrack {
+
+/// Choices on top of a recording's sidecar (what `estimate` takes on its command line and a
+/// session stores as its filter settings).
+struct EstimateOptions {
+  FilterKind filter = FilterKind::Ekf;
+  MeasurementModel model = MeasurementModel::AccelGyro;
+  bool useOptical = true;  ///< fuse Kinect positions
+  bool useCamera = true;   ///< fuse webcam marker pixels (when the sidecar has a camera)
+  std::optional<double> jointAccelStdDeg;  ///< deg/s^2; empty keeps the library default
+};
+
+/// Filter parameters: geometry, gravity, side and camera from the sidecar, the rest from options.
+EstimatorParams estimatorParamsFor(const RecordingMeta& meta, const EstimateOptions& options);
+
+/// The columns of one output row: time, the five angles (rad), their standard deviations (rad)
+/// and a status (kStatus* below). Also the header of `estimate --out`.
+inline constexpr const char* kEstimateHeader =
+    "t,th0,th1,th2,th4,th5,sd_th0,sd_th1,sd_th2,sd_th4,sd_th5,status";
+/// Status of an output row: 0 the readings were fused; 1 every reading of the row was refused as
+/// implausible and the estimate is a prediction; 2 the filter (re)started here; 3 the filter had
+/// lost the arm (or its start-up guess was poor) and re-initialised from the recent window. At 2
+/// and 3 the angles may jump without the arm having moved.
+inline constexpr int kStatusFused = 0, kStatusPredicted = 1, kStatusRestarted = 2,
+                     kStatusRecovered = 3;
+
+/// After a (re)start (status 2) or a recovery (status 3) the filter settles for about this long
+/// (s): the error statistics leave these rows out, and so do the clinical metrics of a session.
+inline constexpr double kStartupSeconds = 1.0;
+
+/// One output row of the estimator.
+struct EstimateRow {
+  double t = 0;                          ///< s, the sample's time
+  JointVector th = JointVector::Zero();  ///< DH joint angles (rad)
+  JointVector sd = JointVector::Zero();  ///< their standard deviations (rad)
+  int status = kStatusFused;             ///< kStatus*
+};
+
+/// Per-joint RMSE of the estimates whose time lies in [from, to].
+struct WindowError {
+  double from = 0.0, to = 0.0;  ///< s
+  std::size_t count = 0;
+  JointVector rmseDeg = JointVector::Zero();
+};
+
+struct EstimateStats {
+  std::size_t rows = 0;       ///< samples in the recording
+  std::size_t estimates = 0;  ///< output rows: samples that carry IMU data and got an estimate
+  std::size_t imuRows = 0;    ///< samples that carry IMU data (of those offered)
+  std::size_t predicted = 0;  ///< output rows whose readings were all refused (predictions)
+  double tFirst = 0.0;        ///< time of the first estimate (s)
+  double tLast = 0.0;         ///< time of the last estimate (s)
+  EstimatorCounters counters;
+  bool opticalUsed = false;  ///< some optical position or marker pixel was fused
+  bool cancelled = false;    ///< the cancel flag stopped the run; the rest is partial
+
+  /// Errors against the recording's true angles, leaving out the first second after each
+  /// (re)start of the filter. truthCount is 0 when the recording has no truth.
+  std::size_t truthCount = 0;
+  JointVector rmseDeg = JointVector::Zero();
+  JointVector peakDeg = JointVector::Zero();
+  std::size_t truthRows = 0;  ///< estimates that had true angles, start-up seconds included
+  WindowError firstWindow;    ///< the first 10 s after start-up (shorter for a short recording)
+  WindowError lastWindow;     ///< the last 10 s after the first window (may be empty)
+};
+
+/// Receives each output row, in time order, on the calling thread.
+using EstimateSink = std::function<void(const EstimateRow&)>;
+/// Called with 10, 20, ..., 100 (percent of the recording's rows done).
+using EstimateProgress = std::function<void(int percent)>;
+/// The CLI reports progress only for recordings of more rows than this.
+inline constexpr std::size_t kProgressRows = 100000;
+
+struct EstimateCallbacks {
+  EstimateSink row;           ///< may be empty (statistics only)
+  EstimateProgress progress;  ///< may be empty
+  /// Checked every 1024 rows; when it reads true the run stops and returns with
+  /// EstimateStats::cancelled set. May be set from another thread. May be null.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+/// Runs the filter sample by sample. Each sample that carries IMU data and gets an estimate yields
+/// one output row and, when it carries true angles, one error sample. Deterministic: the same
+/// recording and params give bit-identical rows. Any thread (one call per thread).
+EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
+                                const EstimateCallbacks& callbacks = {});
+
+}  // namespace armtrack

@@ -1,0 +1,143 @@
+#include "core/storage/EstimateCodec.h"
+
+#include <zstd.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <memory>
+#include <stdexcept>
+
+namespace armtrack::storage {
+
+namespace {
+
+constexpr std::uint32_t kMagic = 0x31455441;  // "ATE1" little-endian
+constexpr std::uint32_t kColumns = 12;        // t, 5 angles, 5 standard deviations, status
+constexpr std::size_t kDoubleColumns = 11;
+constexpr std::size_t kHeaderBytes = 16;
+constexpr int kMaxStatus = 3;
+
+void putU32(std::string& out, std::uint32_t v) {
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+}
+void putU64(std::string& out, std::uint64_t v) {
+  for (int i = 0; i < 8; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
+}
+std::uint64_t getLe(const std::string& in, std::size_t at, int bytes) {
+  std::uint64_t v = 0;
+  for (int i = 0; i < bytes; ++i)
+    v |= static_cast<std::uint64_t>(static_cast<unsigned char>(in[at + i])) << (8 * i);
+  return v;
+}
+
+// Column c (0 = t, 1-5 angles, 6-10 standard deviations) of row r.
+double valueOf(const EstimateColumns& e, std::size_t c, std::size_t r) {
+  if (c == 0) return e.t[r];
+  if (c <= 5) return e.th[r](static_cast<int>(c - 1));
+  return e.sd[r](static_cast<int>(c - 6));
+}
+double& slotOf(EstimateColumns& e, std::size_t c, std::size_t r) {
+  if (c == 0) return e.t[r];
+  if (c <= 5) return e.th[r](static_cast<int>(c - 1));
+  return e.sd[r](static_cast<int>(c - 6));
+}
+
+}  // namespace
+
+std::string EstimateCodec::encode(const EstimateColumns& e, int level) {
+  const std::size_t n = e.t.size();
+  if (e.th.size() != n || e.sd.size() != n || e.status.size() != n)
+    throw std::invalid_argument("estimate columns of different lengths");
+  std::string raw;
+  raw.reserve(kHeaderBytes + n * (8 * kDoubleColumns + 1));
+  putU32(raw, kMagic);
+  putU32(raw, kColumns);
+  putU64(raw, n);
+  std::vector<std::uint64_t> bits(n);
+  for (std::size_t c = 0; c < kDoubleColumns; ++c) {
+    std::uint64_t previous = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      const std::uint64_t b = std::bit_cast<std::uint64_t>(valueOf(e, c, r));
+      bits[r] = b ^ previous;
+      previous = b;
+    }
+    for (int plane = 0; plane < 8; ++plane)
+      for (std::size_t r = 0; r < n; ++r)
+        raw.push_back(static_cast<char>((bits[r] >> (8 * plane)) & 0xff));
+  }
+  for (int s : e.status) {
+    if (s < 0 || s > kMaxStatus)
+      throw std::invalid_argument("estimate status " + std::to_string(s) + " outside 0-3");
+    raw.push_back(static_cast<char>(s));
+  }
+  // With zstd's content checksum, so a damaged blob is refused rather than decoded to other
+  // numbers.
+  std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> cctx(ZSTD_createCCtx(), &ZSTD_freeCCtx);
+  if (!cctx) throw std::runtime_error("zstd: out of memory");
+  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_compressionLevel, level);
+  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_checksumFlag, 1);
+  std::string frame(ZSTD_compressBound(raw.size()), '\0');
+  const std::size_t size =
+      ZSTD_compress2(cctx.get(), frame.data(), frame.size(), raw.data(), raw.size());
+  if (ZSTD_isError(size))
+    throw std::runtime_error(std::string("zstd compression failed: ") + ZSTD_getErrorName(size));
+  frame.resize(size);
+  return frame;
+}
+
+EstimateColumns EstimateCodec::decode(const std::string& blob, std::uint64_t expectedRows) {
+  const unsigned long long size = ZSTD_getFrameContentSize(blob.data(), blob.size());
+  if (size == ZSTD_CONTENTSIZE_ERROR) throw std::runtime_error("not a zstd frame");
+  if (size == ZSTD_CONTENTSIZE_UNKNOWN) throw std::runtime_error("zstd frame without its size");
+  const std::uint64_t expectedSize = kHeaderBytes + expectedRows * (8 * kDoubleColumns + 1);
+  if (size != expectedSize)
+    throw std::runtime_error("zstd frame holds " + std::to_string(size) + " bytes, " +
+                             std::to_string(expectedRows) + " rows need " +
+                             std::to_string(expectedSize));
+  std::string raw(size, '\0');
+  const std::size_t got = ZSTD_decompress(raw.data(), raw.size(), blob.data(), blob.size());
+  if (ZSTD_isError(got))
+    throw std::runtime_error(std::string("damaged zstd frame: ") + ZSTD_getErrorName(got));
+  if (got != size) throw std::runtime_error("zstd frame shorter than it claims");
+  if (getLe(raw, 0, 4) != kMagic)
+    throw std::runtime_error("not an ArmTrack estimate blob (bad magic number)");
+  if (getLe(raw, 4, 4) != kColumns)
+    throw std::runtime_error("estimate blob with " + std::to_string(getLe(raw, 4, 4)) +
+                             " columns, expected 12");
+  const std::uint64_t n = getLe(raw, 8, 8);
+  if (n != expectedRows)
+    throw std::runtime_error("estimate blob holds " + std::to_string(n) + " rows, expected " +
+                             std::to_string(expectedRows));
+
+  EstimateColumns e;
+  e.t.resize(n);
+  e.th.assign(n, JointVector::Zero());
+  e.sd.assign(n, JointVector::Zero());
+  e.status.resize(n);
+  const unsigned char* p = reinterpret_cast<const unsigned char*>(raw.data()) + kHeaderBytes;
+  for (std::size_t c = 0; c < kDoubleColumns; ++c) {
+    std::uint64_t previous = 0;
+    for (std::size_t r = 0; r < n; ++r) {
+      std::uint64_t b = 0;
+      for (int plane = 0; plane < 8; ++plane)
+        b |= static_cast<std::uint64_t>(p[plane * n + r]) << (8 * plane);
+      previous ^= b;
+      slotOf(e, c, r) = std::bit_cast<double>(previous);
+    }
+    p += 8 * n;
+  }
+  for (std::size_t r = 0; r < n; ++r) {
+    if (p[r] > kMaxStatus)
+      throw std::runtime_error("row " + std::to_string(r) + ": status " + std::to_string(p[r]) +
+                               " outside 0-3");
+    e.status[r] = p[r];
+  }
+  for (std::size_t r = 0; r < n; ++r) {
+    if (!std::isfinite(e.t[r]) || (r > 0 && e.t[r] < e.t[r - 1]))
+      throw std::runtime_error("row " + std::to_string(r) + ": time not finite or decreasing");
+  }
+  return e;
+}
+
+}  // namespace armtrack::storage

@@ -1,0 +1,42 @@
+// A session's estimated joint angles as one compact blob (docs/storage.md, "Estimates"):
+// codec "est-f64-zstd-v1".
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack::storage {
+
+/// The estimator's output rows as columns (the columns of kEstimateHeader).
+struct EstimateColumns {
+  std::vector<double> t;        ///< s
+  std::vector<JointVector> th;  ///< DH joint angles (rad)
+  std::vector<JointVector> sd;  ///< their standard deviations (rad)
+  std::vector<int> status;      ///< kStatus* of core/estimation/RecordingEstimator.h (0-3)
+  std::size_t size() const { return t.size(); }
+};
+
+/// Encodes and decodes estimate blobs. Every double is kept bit for bit. Before compression: a
+/// 16-byte header (magic "ATE1", column count 12, row count, little-endian), then the 11 double
+/// columns (t, th0..th5, sd_th0..sd_th5), each value's 64-bit pattern XORed with the previous
+/// row's and written as 8 byte planes (least significant first), then one status byte per row;
+/// the whole compressed as one zstd frame with its content checksum. Stateless; any thread.
+class EstimateCodec {
+ public:
+  static constexpr const char* kName = "est-f64-zstd-v1";
+
+  /// The blob of columns (all of one length; throws std::invalid_argument otherwise, or for a
+  /// status outside 0-3).
+  static std::string encode(const EstimateColumns& columns, int level = 3);
+
+  /// The columns of a blob made by encode. Throws std::runtime_error saying what is wrong (not a
+  /// zstd frame, damaged, wrong size, bad header, a row count other than expectedRows, a status
+  /// outside 0-3, times that are not finite or decrease); the caller adds which session and
+  /// version.
+  static EstimateColumns decode(const std::string& blob, std::uint64_t expectedRows);
+};
+
+}  // namespace armtrack::storage

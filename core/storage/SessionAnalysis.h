@@ -1,0 +1,88 @@
+// A stored session's analysis: its recording estimated, its estimates kept as a compressed blob
+// and its clinical metrics as JSON, each run a new version beside the earlier ones
+// (docs/storage.md, "Estimates" and "Metrics").
+#pragma once
+
+#include <QJsonObject>
+#include <QString>
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "core/estimation/RecordingEstimator.h"
+#include "core/metrics/ClinicalMetrics.h"
+#include "core/storage/ClinicalStore.h"
+
+namespace armtrack::storage {
+
+/// The "format" field of the metrics JSON this version writes.
+inline constexpr const char* kMetricsFormat = "armtrack-metrics-v1";
+
+struct AnalysisOptions {
+  /// Overrides the session's stored filter (else the session's, else EKF).
+  std::optional<FilterKind> filter;
+  /// true = fuse no optical data (Kinect positions and marker pixels), whatever the session says.
+  bool noOptical = false;
+  /// Called on the calling thread with 0-100 (percent done, rising; 100 once stored).
+  std::function<void(int percent)> progress;
+  /// Checked while estimating; when it reads true the analysis stops and stores nothing
+  /// (AnalysisResult::cancelled). May be set from another thread. May be null.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+struct AnalysisResult {
+  bool cancelled = false;   ///< stopped by the cancel flag: nothing was stored
+  int estimateVersion = 0;  ///< the version stored (0 when cancelled)
+  int metricsVersion = 0;
+  EstimateOptions settings;  ///< the filter settings used
+  QString settingsSource;    ///< "session" (its stored filter settings) or "defaults"
+  EstimateStats stats;       ///< the estimator's run
+  SessionMetrics metrics;    ///< SI units
+  QJsonObject metricsJson;   ///< as latestAnalysis() returns it
+};
+
+/// Reads the session's recording, estimates it (the session's filter settings when it has any,
+/// else the defaults; the geometry from its sidecar), stores the estimates (codec
+/// EstimateCodec::kName) and the clinical metrics as a new version, and audits it. Repetitions
+/// are counted on the protocol's primary angle, with its target range judging partial ones,
+/// or, without a protocol, on the angle with the largest range of motion.
+/// Throws StorageError: NotFound (no such session, or another patient's for a home account),
+/// AccessDenied (home accounts do not analyse), Usage (no IMU rows to estimate from, an unknown
+/// filter setting), Corrupt (as readRecording). Same thread as the store: Qt Sql connections
+/// belong to the thread that opened them, so a GUI that analyses off its thread opens its own
+/// Database and ClinicalStore (signed in as the same user) in that worker thread.
+AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
+                              const AnalysisOptions& options = {});
+
+/// One stored version of a session's analysis, decoded.
+struct StoredAnalysis {
+  qint64 sessionId = 0;
+  int version = 0;                  ///< the estimates' version
+  QString createdAt;                ///< ISO 8601 UTC
+  QString paramsJson;               ///< how the estimates were made (docs/storage.md)
+  std::vector<double> t;            ///< s, one per output row
+  std::vector<JointVector> joints;  ///< DH joint angles (rad)
+  std::vector<JointVector> sd;      ///< their standard deviations (rad)
+  std::vector<int> status;          ///< kStatus* (core/estimation/RecordingEstimator.h)
+  AngleSeries clinical;             ///< the five clinical angles (rad) at t
+  /// The metrics JSON computed from these estimates (docs/storage.md, "Metrics"); empty when the
+  /// newest stored metrics belong to another version.
+  std::optional<QJsonObject> metrics;
+};
+
+/// The newest analysis of the session, or nothing when it was never analysed. Throws
+/// StorageError(Corrupt) naming the session and version when the blob or its parameters cannot
+/// be decoded; NotFound as ClinicalStore::session.
+std::optional<StoredAnalysis> latestAnalysis(ClinicalStore& store, qint64 sessionId);
+/// The same for a given version (1, 2, ...; 0 = the newest): nothing when there is no such
+/// version.
+std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version);
+
+/// Only the newest metrics JSON (docs/storage.md, "Metrics"), without decoding any estimates:
+/// what `session show` prints. Nothing when the session was never analysed. Throws
+/// StorageError(Corrupt) when the stored JSON is not an object; NotFound as
+/// ClinicalStore::session.
+std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessionId);
+
+}  // namespace armtrack::storage
