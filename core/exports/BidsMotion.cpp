@@ -223,11 +223,16 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     dt.reserve(s.rows.size());
     for (std::size_t k = 1; k < s.rows.size(); ++k) {
       const double d = s.time(s.rows[k]) - s.time(s.rows[k - 1]);
-      if (!(d > 0))
+      // Equal times are kept (a live session's synchroniser can give two readings one time;
+      // the latency channel shows it); a time that goes back is refused.
+      if (!(d >= 0))
         throw ExportError(dir / (prefix + "_tracksys-" + s.label + "_motion.tsv"),
-                          "time does not increase at sample " + std::to_string(s.rows[k] + 1));
-      dt.push_back(d);
+                          "time goes back at sample " + std::to_string(s.rows[k] + 1));
+      if (d > 0) dt.push_back(d);
     }
+    if (dt.empty())
+      throw ExportError(dir / (prefix + "_tracksys-" + s.label + "_motion.tsv"),
+                        "every sample has the same time; a rate cannot be given");
     std::nth_element(dt.begin(), dt.begin() + dt.size() / 2, dt.end());
     double nominal = 1.0 / dt[dt.size() / 2];
     if (std::abs(nominal - std::round(nominal)) < 1e-3 * nominal) nominal = std::round(nominal);

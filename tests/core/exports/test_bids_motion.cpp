@@ -234,6 +234,26 @@ TEST(BidsMotion, IrregularTimesGoToTheLatencyChannelAndBothRates) {
   EXPECT_EQ(readChannels(r.systems[0].channelsTsv).rows[1][3], "LeftShoulder");
 }
 
+// A live recording can hold two readings at one time (the synchroniser's merge); they are kept,
+// and the rate comes from the intervals that are not zero.
+TEST(BidsMotion, EqualTimesAreKeptAndLeftOutOfTheRate) {
+  AngleSeries s;
+  for (int i = 0; i < 101; ++i) {
+    s.t.push_back(i * 0.01);
+    s.angle.push_back(ClinicalRow{0.01 * i, 0, 0, 0, 0});
+    if (i == 0 || i == 50) {
+      s.t.push_back(i * 0.01);
+      s.angle.push_back(ClinicalRow{0.01 * i, 0, 0, 0, 0});
+    }
+  }
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), nullptr, &s, Side::Right, options());
+  ASSERT_EQ(r.systems.size(), 1u);
+  EXPECT_EQ(r.systems[0].rows, 103u);
+  const json j = json::parse(readText(r.systems[0].motionJson));
+  EXPECT_NEAR(j.at("SamplingFrequency").get<double>(), 100.0, 1e-9);
+}
+
 TEST(BidsMotion, MissingValuesAreNaAndRowsWithoutTimeAreDropped) {
   AngleSeries s;
   for (int i = 0; i < 6; ++i) {
