@@ -73,6 +73,10 @@ class ClinicalStore {
   /// into the records, see DatabaseRecordingSink).
   qint64 beginRecording(const QString& patientCode, const QString& protocolName,
                         const RecordingMeta& meta, const RecordingColumns& columns);
+  /// The session's stored sidecar (geometry, gravity, side, camera). Throws NotFound, Corrupt.
+  RecordingMeta recordingMeta(qint64 sessionId);
+  /// An account's name, for reports (administrators and therapists). Throws NotFound.
+  QString userName(qint64 userId);
   /// Stores samples as the session's next chunk in one transaction (a chunk is ~1 s).
   void appendChunk(qint64 sessionId, std::span<const ArmSample> samples);
   void finishSession(qint64 sessionId, const QString& status = kStatusComplete);

@@ -122,6 +122,18 @@ qint64 ClinicalStore::beginRecording(const QString& patientCode, const QString& 
   return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns));
 }
 
+RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
+  return metaFromText(visibleSession(sessionId).calibrationJson, sessionId);
+}
+
+QString ClinicalStore::userName(qint64 userId) {
+  require(isStaff(), "reading account names");
+  QSqlQuery q = m_db.exec("SELECT name FROM users WHERE id = ?", {userId});
+  if (!q.next())
+    throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
+  return q.value(0).toString();
+}
+
 void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> samples) {
   if (samples.empty()) return;
   const SessionInfo s = visibleSession(sessionId);

@@ -29,6 +29,72 @@ QString angleKey(int index) {
   return QString::fromUtf8(k.data(), static_cast<qsizetype>(k.size()));
 }
 
+// The rows the metrics use: the estimates without the filter's settling time after each
+// (re)start or recovery, as the error statistics leave it out (those angles may be far off while
+// the arm did not move), and without a row at the time of the previous one (the metrics need
+// strictly increasing times). Both stay in the stored estimates.
+struct MetricRows {
+  AngleSeries series;
+  std::vector<ClinicalRow> sdRad;
+  std::size_t dropped = 0, settling = 0;
+};
+
+MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVector>& th,
+                      const std::vector<JointVector>& sd, const std::vector<int>& status,
+                      qint64 sessionId) {
+  std::vector<double> mt;
+  std::vector<JointVector> mth;
+  MetricRows out;
+  double settledFrom = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    if (status[i] == kStatusRestarted || status[i] == kStatusRecovered)
+      settledFrom = t[i] + kStartupSeconds;
+    if (t[i] < settledFrom) {
+      ++out.settling;
+      continue;
+    }
+    if (!mt.empty() && !(t[i] > mt.back())) {
+      ++out.dropped;
+      continue;
+    }
+    mt.push_back(t[i]);
+    mth.push_back(th[i]);
+    ClinicalRow s;  // the clinical angles are the joint angles up to sign
+    for (int k = 0; k < kNumClinicalAngles; ++k) s[static_cast<std::size_t>(k)] = sd[i](k);
+    out.sdRad.push_back(s);
+  }
+  if (mt.size() < 2)
+    throw StorageError(Kind::Usage, sessionText(sessionId) + ": " + std::to_string(t.size()) +
+                                        " estimates, " + std::to_string(mt.size()) +
+                                        " after the filter's start-up second; at least 2 are "
+                                        "needed for metrics");
+  out.series = angleSeriesFromJoints(mt, mth);
+  return out;
+}
+
+// Metrics parameters for a session: the wrist path from its geometry, repetitions on its
+// protocol's primary angle judged against the protocol's target (protocol is set then).
+ClinicalMetricsParams metricsParams(ClinicalStore& store, const SessionInfo& info,
+                                    const ArmGeometry& geometry,
+                                    std::optional<Protocol>& protocol) {
+  ClinicalMetricsParams mp;
+  mp.geometry = geometry;
+  if (info.protocolName.isEmpty()) return mp;
+  protocol = store.protocol(info.protocolName);
+  const auto& keys = clinicalAngleInfo();
+  for (std::size_t a = 0; a < keys.size(); ++a)
+    if (angleKey(static_cast<int>(a)) == protocol->angleKey)
+      mp.repetitions.primaryAngle = static_cast<int>(a);
+  if (!mp.repetitions.primaryAngle)
+    throw StorageError(Kind::Usage, "protocol '" + protocol->name.toStdString() +
+                                        "' has an unknown angle '" +
+                                        protocol->angleKey.toStdString() + "'");
+  if (protocol->targetMaxDeg > protocol->targetMinDeg)
+    mp.repetitions.target =
+        TargetRange{protocol->targetMinDeg * kDegToRad, protocol->targetMaxDeg * kDegToRad};
+  return mp;
+}
+
 // The session's stored filter settings ({} = none): see docs/storage.md, "Filter settings".
 EstimateOptions parseFilterSettings(const QString& json, qint64 sessionId, bool& fromSession) {
   EstimateOptions o;
@@ -205,56 +271,16 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                                         " rows with IMU data gave " + std::to_string(rows.size()) +
                                         " estimates; at least 2 are needed for metrics");
 
-  // The metrics leave out the filter's settling time after each (re)start or recovery, as the
-  // error statistics do: those angles may be far off while the arm did not move. They need
-  // strictly increasing times: a row at the time of the previous one is left out and counted.
-  // Both stay in the stored estimates.
-  std::vector<double> mt;
-  std::vector<JointVector> mth;
-  std::size_t dropped = 0, settling = 0;
-  double settledFrom = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows.status[i] == kStatusRestarted || rows.status[i] == kStatusRecovered)
-      settledFrom = rows.t[i] + kStartupSeconds;
-    if (rows.t[i] < settledFrom) {
-      ++settling;
-      continue;
-    }
-    if (!mt.empty() && !(rows.t[i] > mt.back())) {
-      ++dropped;
-      continue;
-    }
-    mt.push_back(rows.t[i]);
-    mth.push_back(rows.th[i]);
-  }
-  if (mt.size() < 2)
-    throw StorageError(Kind::Usage, sessionText(sessionId) + ": " + std::to_string(rows.size()) +
-                                        " estimates, " + std::to_string(mt.size()) +
-                                        " after the filter's start-up second; at least 2 are "
-                                        "needed for metrics");
-  ClinicalMetricsParams mp;
-  mp.geometry = params.geometry;
   std::optional<Protocol> protocol;
-  if (!info.protocolName.isEmpty()) {
-    protocol = store.protocol(info.protocolName);
-    const auto& keys = clinicalAngleInfo();
-    for (std::size_t a = 0; a < keys.size(); ++a)
-      if (angleKey(static_cast<int>(a)) == protocol->angleKey)
-        mp.repetitions.primaryAngle = static_cast<int>(a);
-    if (!mp.repetitions.primaryAngle)
-      throw StorageError(Kind::Usage, "protocol '" + protocol->name.toStdString() +
-                                          "' has an unknown angle '" +
-                                          protocol->angleKey.toStdString() + "'");
-    if (protocol->targetMaxDeg > protocol->targetMinDeg)
-      mp.repetitions.target =
-          TargetRange{protocol->targetMinDeg * kDegToRad, protocol->targetMaxDeg * kDegToRad};
-  }
+  const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
+  const MetricRows settled = metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId);
   try {
-    result.metrics = computeSessionMetrics(angleSeriesFromJoints(mt, mth), mp);
+    result.metrics = computeSessionMetrics(settled.series, mp);
   } catch (const std::invalid_argument& e) {
     throw StorageError(Kind::Usage,
                        sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
   }
+  const std::size_t dropped = settled.dropped, settling = settled.settling;
   progress(92);
   if (options.cancel && options.cancel->load()) {
     result.cancelled = true;
@@ -349,6 +375,35 @@ std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessio
                                           ": its stored metrics are not JSON objects (run "
                                           "'session reestimate')");
   return merged(*summary, *angles);
+}
+
+}  // namespace armtrack::storage
+
+namespace armtrack::storage {
+
+SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId) {
+  SessionAngles out;
+  out.info = store.session(sessionId);
+  const std::optional<StoredAnalysis> a = latestAnalysis(store, sessionId);
+  if (!a)
+    throw StorageError(Kind::NotFound, sessionText(sessionId) +
+                                           " has not been analysed: run 'session reestimate " +
+                                           std::to_string(sessionId) + "' (therapists)");
+  const RecordingMeta meta = store.recordingMeta(sessionId);
+  out.side = meta.side;
+  out.version = a->version;
+  std::optional<Protocol> protocol;
+  const ClinicalMetricsParams mp = metricsParams(store, out.info, meta.geometry, protocol);
+  MetricRows rows = metricRows(a->t, a->joints, a->sd, a->status, sessionId);
+  try {
+    out.metrics = computeSessionMetrics(rows.series, mp);
+  } catch (const std::invalid_argument& e) {
+    throw StorageError(Kind::Usage,
+                       sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
+  }
+  out.series = std::move(rows.series);
+  out.sdRad = std::move(rows.sdRad);
+  return out;
 }
 
 }  // namespace armtrack::storage

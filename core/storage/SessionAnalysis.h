@@ -85,4 +85,19 @@ std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessio
 /// ClinicalStore::session.
 std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessionId);
 
+/// A session's newest analysis as the reports and exports use it: the clinical angles and their
+/// standard deviations over the rows the metrics use (the filter's settling second after each
+/// start or recovery left out), and the metrics computed from them as analyseSession did.
+struct SessionAngles {
+  SessionInfo info;
+  Side side = Side::Right;          ///< the arm recorded (the session's sidecar)
+  int version = 0;                  ///< the estimates' version
+  AngleSeries series;               ///< clinical angles (rad)
+  std::vector<ClinicalRow> sdRad;   ///< their standard deviations (rad), one per row of series
+  SessionMetrics metrics;
+};
+/// Throws StorageError: NotFound (no such session, or never analysed: the message says to run
+/// `session reestimate`), Corrupt and Usage as latestAnalysis and analyseSession.
+SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId);
+
 }  // namespace armtrack::storage
