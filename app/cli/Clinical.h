@@ -18,6 +18,8 @@ int patientCommand(const std::vector<std::string>& args, std::ostream& out, std:
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// report and export: ClinicalOutputs.cpp.
+int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int auditCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 }  // namespace armtrack::cli

@@ -38,6 +38,12 @@ class ClinicalContext {
 /// std::runtime_error saying how to give it otherwise. what names the account, for the prompt.
 std::string passwordFromUser(const std::string& what);
 
+/// Estimates a session just stored (imported or recorded) and stores its metrics, telling err
+/// how it went; a session that cannot be analysed stays stored, with a warning saying why. Home
+/// accounts do not analyse: err says a therapist can.
+void analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
+                       std::ostream& err);
+
 /// Writes doc indented, for --json.
 inline void printJson(std::ostream& out, const QJsonDocument& doc) {
   out << doc.toJson(QJsonDocument::Indented).toStdString();

@@ -36,16 +36,6 @@ constexpr std::string_view kSessionHelp =
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
-constexpr std::string_view kExportHelp =
-    R"(Usage: armtrack-cli export ID --format recording --out PATH [--overwrite]
-
-Writes session ID in the open recording format (PATH and its sidecar), bit for bit as it was
-imported or recorded. Every export is written to the audit log. (The csv, mot and bids formats are
-not available yet.)
-
---db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
-)";
-
 constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --user ADMIN
 
 The audit log: who created, changed, viewed or exported what, and when (administrators only).
@@ -113,17 +103,7 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
       << s.storedBytes << " bytes stored\n";
   // The recording is stored whatever happens next: its id is printed even when it cannot be
   // analysed, with what to do about it.
-  if (c.store().user().role == storage::Role::Home) {
-    err << "session import: not analysed (a home account does not estimate sessions); a "
-           "therapist can run 'session reestimate "
-        << id << "'\n";
-  } else {
-    try {
-      analyse(c.store(), id, {}, "session import", err);
-    } catch (const storage::StorageError& e) {
-      err << "warning: session " << id << " is stored but not analysed: " << e.what() << "\n";
-    }
-  }
+  analyseNewSession(c.store(), id, "session import", err);
   out << id << "\n";
   return 0;
 }
@@ -228,6 +208,20 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
 
 }  // namespace
 
+void analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
+                       std::ostream& err) {
+  if (store.user().role == storage::Role::Home) {
+    err << command << ": not analysed (a home account does not estimate sessions); a "
+        << "therapist can run 'session reestimate " << id << "'\n";
+    return;
+  }
+  try {
+    analyse(store, id, {}, command, err);
+  } catch (const storage::StorageError& e) {
+    err << "warning: session " << id << " is stored but not analysed: " << e.what() << "\n";
+  }
+}
+
 int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   if (args.empty()) throw UsageError("session", "missing subcommand");
   const std::string& sub = args[0];
@@ -238,24 +232,6 @@ int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std:
   if (sub == "list") return sessionList(rest, out, err);
   if (sub == "show") return sessionShow(rest, out, err);
   throw UsageError("session", "unknown subcommand '" + sub + "'");
-}
-
-int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const Args a("export", args,
-               withDb({{"--format", true}, {"--out", true}, {"--overwrite", false}}));
-  if (a.help()) return out << kExportHelp, 0;
-  const qint64 id = sessionId(a);
-  const std::string format = a.required("--format");
-  const std::string target = a.required("--out");
-  if (format == "csv" || format == "mot" || format == "bids")
-    throw std::runtime_error("export --format " + format +
-                             " is not available yet; use --format recording");
-  if (format != "recording") a.fail("--format: must be recording, csv, mot or bids");
-  checkOutputPath(target, a.flag("--overwrite"), /*recording=*/true);
-  ClinicalContext c(a, {}, true);
-  c.store().exportRecording(id, target);
-  err << "export: session " << id << " to " << target << "\n";
-  return 0;
 }
 
 int auditCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {

@@ -63,8 +63,10 @@ Commands:
   user       add or list accounts (administrators)
   patient    add or list patients
   protocol   add or list exercise protocols
-  session    import a recording into the records, list or show sessions
-  export     write a stored session in the open recording format
+  session    import a recording into the records (estimated and measured), list, show or
+             re-estimate sessions
+  export     write a stored session as a recording, clinical CSV, OpenSim .mot or BIDS motion
+  report     a session's PDF report, or a patient's progress over a date range
   audit      who viewed, changed or exported what (administrators)
 
 Exit status: 0 success, 1 runtime or input error, 2 usage error.
@@ -491,6 +493,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (cmd == "session") return sessionCommand(rest, out, err);
     if (cmd == "export") return exportCommand(rest, out, err);
     if (cmd == "audit") return auditCommand(rest, out, err);
+    if (cmd == "report") return reportCommand(rest, out, err);
     if (cmd.starts_with("-")) throw UsageError("", "unknown option '" + cmd + "'");
     throw UsageError("", "unknown command '" + cmd + "'");
   } catch (const UsageError& e) {

@@ -372,6 +372,8 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
           << "; it will be marked interrupted when the database is next opened\n";
       finishFailed = true;
     }
+    if (!finishFailed && s.recorderError.empty())
+      analyseNewSession(records->store(), sessionId, "record", err);
     try {
       onDisk = static_cast<std::uint64_t>(records->store().session(sessionId).sampleRows);
     } catch (const std::exception& e) {

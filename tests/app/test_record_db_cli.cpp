@@ -111,6 +111,8 @@ TEST_F(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   EXPECT_EQ(s["patient"].toString(), "P01");
   EXPECT_GT(s["duration_s"].toDouble(), 2.0);
   EXPECT_GT(s["samples"].toInteger(), 2000);  // two IMUs at 1 kHz for about 3 s
+  EXPECT_EQ(s["estimate_version"].toInt(), 1);  // analysed once stored, as an import is
+  EXPECT_TRUE(s["metrics"].isObject());
   // The count printed is what the database holds.
   EXPECT_NE(out.find("recorded " + std::to_string(s["rows"].toInteger()) + " rows in session " +
                      id),

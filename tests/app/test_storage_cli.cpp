@@ -11,6 +11,8 @@
 #include <QSqlQuery>
 #include <QTemporaryDir>
 #include <QThread>
+#include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -128,7 +130,7 @@ TEST_F(StorageCli, ImportListShowExportRoundTrip) {
   EXPECT_EQ(bytesOf(armtrack::sidecarPath(back).string()),
             bytesOf(armtrack::sidecarPath(csv).string()));
   EXPECT_EQ(run({"export", id, "--format", "recording", "--out", back}).code, 1);  // exists
-  EXPECT_EQ(run({"export", id, "--format", "mot", "--out", path("x.mot")}).code, 1);
+  EXPECT_EQ(run({"export", id, "--format", "mot", "--out", path("x.mot")}).code, 0);
   EXPECT_EQ(run({"export", id, "--format", "pdf", "--out", path("x.pdf")}).code, 2);
 
   const Result audit = run({"audit", "--json"});
@@ -214,6 +216,19 @@ TEST_F(StorageCli, HomeAccountCannotReachAnotherPatient) {
   EXPECT_EQ(home({"session", "show", other, "--json"}).code, 1);
   EXPECT_EQ(home({"export", other, "--format", "recording", "--out", path("stolen.csv")}).code, 1);
   EXPECT_FALSE(fs::exists(path("stolen.csv")));
+  for (const char* format : {"csv", "mot", "bids"}) {
+    EXPECT_EQ(home({"export", other, "--format", format, "--out", path("stolen")}).code, 1);
+    EXPECT_FALSE(fs::exists(path("stolen")));
+  }
+  // Its own session, which was too short (1 s) to analyse: the error says what to do.
+  r = home({"export", mine, "--format", "mot", "--out", path("mine.mot")});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("session reestimate"), std::string::npos) << r.err;
+  EXPECT_EQ(home({"export", mine, "--format", "recording", "--out", path("mine.csv")}).code, 0);
+  r = home({"report", "--patient", "P02", "--from", "2020-01-01", "--to", "2099-01-01", "--pdf",
+            path("stolen.pdf")});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_FALSE(fs::exists(path("stolen.pdf")));
   EXPECT_EQ(home({"session", "import", csv, "--patient", "P02"}).code, 1);
   EXPECT_EQ(home({"patient", "add", "--code", "P03", "--name", "x"}).code, 1);
   EXPECT_EQ(home({"user", "add", "evil", "--role", "admin"}).code, 1);
@@ -437,4 +452,121 @@ TEST_F(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
             0);
   EXPECT_EQ(static_cast<qint64>(armtrack::readRecording(path("partial.csv")).samples.size()),
             s["rows"].toInteger());
+}
+
+namespace {
+
+/// Runs the real executable (reports need a QGuiApplication of their own, which the in-process
+/// tests' QCoreApplication rules out).
+Result runProcess(const QStringList& args) {
+  QProcess p;
+  p.start(QStringLiteral(ARMTRACK_CLI), args);
+  if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
+  return {p.exitCode(), p.readAllStandardOutput().toStdString(),
+          p.readAllStandardError().toStdString()};
+}
+
+std::string pdfText(const std::string& pdf) {
+  QProcess p;
+  p.start("pdftotext", {"-layout", QString::fromStdString(pdf), "-"});
+  if (!p.waitForFinished(30000)) return {};
+  return p.readAllStandardOutput().toStdString();
+}
+
+}  // namespace
+
+// The analysed session leaves the records as a PDF report, a progress report, a clinical CSV, an
+// OpenSim motion file and a BIDS data set, each audited; the numbers are those of session show.
+TEST_F(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
+  addPatients();
+  ASSERT_EQ(run({"protocol", "add", "--name", "reach", "--angle", "shoulder_flexion",
+                 "--target-min", "0", "--target-max", "120", "--reps", "8"})
+                .code,
+            0);
+  const std::string csv = simulate("rec.csv", 8.0);
+  const Result imp = run({"session", "import", csv, "--patient", "P01", "--protocol", "reach"});
+  ASSERT_EQ(imp.code, 0) << imp.err;
+  const std::string id = imp.out.substr(0, imp.out.find('\n'));
+  const Result show = run({"session", "show", id, "--json"});
+  const QJsonObject metrics = QJsonDocument::fromJson(QByteArray::fromStdString(show.out))
+                                  .object()["metrics"]
+                                  .toObject();
+  const double flexionRom = metrics["shoulder_flexion"].toObject()["rom_deg"].toDouble();
+  ASSERT_GT(flexionRom, 10.0) << show.out;
+
+  const QString db = QString::fromStdString(m_db);
+  const QStringList signIn{"--db", db, "--user", "boss"};
+  const std::string pdf = path("report.pdf");
+  Result r = runProcess(QStringList{"report", QString::fromStdString(id), "--pdf",
+                                    QString::fromStdString(pdf)} + signIn);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(bytesOf(pdf).substr(0, 5), "%PDF-");
+  const std::string text = pdfText(pdf);
+  if (text.empty()) {
+    ADD_FAILURE() << "pdftotext (poppler-utils) is needed to read the report back";
+  } else {
+    for (const char* heading : {"Session report", "Metrics per clinical angle", "Repetitions",
+                                "Name P01", "Shoulder flexion", "Page 1 of"})
+      EXPECT_NE(text.find(heading), std::string::npos) << heading;
+    char rom[32];
+    std::snprintf(rom, sizeof rom, "%.1f", flexionRom);
+    EXPECT_NE(text.find(rom), std::string::npos) << "flexion ROM " << rom << " not in the report";
+  }
+  EXPECT_EQ(runProcess(QStringList{"report", QString::fromStdString(id), "--pdf",
+                                   QString::fromStdString(pdf)} + signIn)
+                .code,
+            1);  // exists: only with --overwrite
+  const std::string progress = path("progress.pdf");
+  r = runProcess(QStringList{"report", "--patient", "P01", "--from", "2000-01-01", "--to",
+                             "2099-12-31", "--pdf", QString::fromStdString(progress)} +
+                 signIn);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("1 sessions"), std::string::npos) << r.err;
+  EXPECT_EQ(runProcess(QStringList{"report", "--patient", "P01", "--from", "2000-13-01", "--to",
+                                   "2099-12-31", "--pdf", QString::fromStdString(path("x.pdf"))} +
+                       signIn)
+                .code,
+            2);
+
+  // Clinical CSV: the angles the metrics were computed from; the metrics smooth them, so the
+  // flexion column's range is within a degree of the ROM that show printed.
+  ASSERT_EQ(run({"export", id, "--format", "csv", "--out", path("angles.csv")}).code, 0);
+  std::ifstream angles(path("angles.csv"));
+  std::string header, line;
+  std::getline(angles, header);
+  EXPECT_EQ(header.rfind("time_s,shoulder_flexion_deg,", 0), 0u) << header;
+  double lo = 1e9, hi = -1e9;
+  while (std::getline(angles, line)) {
+    const double v = std::atof(line.c_str() + line.find(',') + 1);
+    lo = std::min(lo, v);
+    hi = std::max(hi, v);
+  }
+  EXPECT_NEAR(hi - lo, flexionRom, 1.0);
+  EXPECT_TRUE(fs::exists(path("angles_metrics.csv")));
+
+  ASSERT_EQ(run({"export", id, "--format", "mot", "--out", path("angles.mot")}).code, 0);
+  std::ifstream mot(path("angles.mot"));
+  std::vector<std::string> head;
+  for (int i = 0; i < 7 && std::getline(mot, line); ++i) head.push_back(line);
+  ASSERT_EQ(head.size(), 7u);
+  EXPECT_EQ(head[1], "version=1");
+  EXPECT_EQ(head[4], "inDegrees=yes");
+  EXPECT_EQ(head[5], "endheader");
+  EXPECT_EQ(head[6], "time\tarm_flex_r\tarm_add_r\tarm_rot_r\telbow_flex_r\tpro_sup_r");
+
+  r = run({"export", id, "--format", "bids", "--out", path("bids")});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const fs::path motion = fs::path(path("bids")) / "sub-P01" / ("ses-" + id) / "motion";
+  for (const char* sys : {"imu", "optical", "angles"}) {
+    bool found = false;
+    for (const auto& e : fs::directory_iterator(motion))
+      found |= e.path().filename().string().find(std::string("tracksys-") + sys) !=
+               std::string::npos;
+    EXPECT_TRUE(found) << sys;
+  }
+
+  const Result audit = run({"audit", "--json"});
+  for (const char* what : {"report pdf", "format csv", "format mot", "format bids", "progress"})
+    EXPECT_NE(audit.out.find(what), std::string::npos) << what;
+  EXPECT_EQ(audit.out.find("Name P01"), std::string::npos);  // identifiers only
 }

@@ -1,0 +1,227 @@
+// armtrack-cli report and export: a stored session's analysis as PDF reports and as files in the
+// open formats (docs/cli.md, docs/reports.md, docs/exports.md).
+#include <QGuiApplication>
+#include <QJsonArray>
+#include <QJsonObject>
+#include <algorithm>
+#include <charconv>
+#include <memory>
+
+#include "app/cli/Clinical.h"
+#include "app/cli/ClinicalContext.h"
+#include "app/cli/CsvOutput.h"
+#include "core/exports/Exports.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/reports/Reports.h"
+#include "core/storage/SessionAnalysis.h"
+
+namespace armtrack::cli {
+
+namespace {
+
+constexpr std::string_view kReportHelp =
+    R"(Usage: armtrack-cli report ID --pdf OUT.pdf [--overwrite]
+       armtrack-cli report --patient CODE --from YYYY-MM-DD --to YYYY-MM-DD --pdf OUT.pdf
+                           [--overwrite]
+
+The first form writes session ID's report: patient and session details, devices and calibration,
+the metrics per clinical angle, joint-angle plots, repetitions, the angles against normative
+ranges and against the patient's earlier sessions, the notes. The second writes a progress report:
+range of motion per clinical angle against date over the sessions from --from to --to
+(inclusive). Every report is written to the audit log.
+
+--db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
+)";
+
+constexpr std::string_view kExportHelp =
+    R"(Usage: armtrack-cli export ID --format recording|csv|mot|bids --out PATH [--overwrite]
+
+  recording  PATH and its sidecar in the open recording format, bit for bit as imported or
+             recorded
+  csv        PATH: time and the five clinical angles (deg) with their standard deviations;
+             <PATH stem>_metrics.csv beside it: the metrics per angle and per repetition
+  mot        PATH: the clinical angles as an OpenSim motion file (coordinates arm_flex_r ...)
+  bids       PATH is a BIDS dataset root: sub-<patient>/ses-<session>/motion/ with one file set
+             per tracking system (IMUs, Kinect, estimated joint angles)
+
+csv, mot and bids use the session's newest analysis (session reestimate makes a new one).
+Every export is written to the audit log. docs/exports.md describes the formats.
+--db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
+)";
+
+qint64 positiveId(const Args& a) {
+  const std::string text = a.single("session id");
+  qint64 id = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || id <= 0)
+    a.fail("session id: expected a positive whole number, got \"" + text + "\"");
+  return id;
+}
+
+/// Reports draw text, which needs a QGuiApplication; the command line has no display, so it uses
+/// the offscreen platform unless told otherwise.
+std::unique_ptr<QGuiApplication> guiApplication() {
+  if (QCoreApplication::instance()) return nullptr;
+  if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  static int argc = 1;
+  static char name[] = "armtrack-cli";
+  static char* argv[] = {name, nullptr};
+  return std::make_unique<QGuiApplication>(argc, argv);
+}
+
+/// The five ranges of motion (rad) of a stored metrics JSON (docs/storage.md, "Metrics").
+std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics) {
+  std::array<std::optional<double>, kNumClinicalAngles> rom{};
+  const QJsonObject angles = metrics["angles"].toObject();
+  for (int i = 0; i < kNumClinicalAngles; ++i) {
+    const std::string_view key = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
+    const QJsonValue v =
+        angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
+            .toObject()["rom_deg"];
+    if (v.isDouble()) rom[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
+  }
+  return rom;
+}
+
+QString dateOf(const QString& iso) {
+  return iso.left(10);
+}
+
+int sessionReport(ClinicalContext& c, qint64 id, const std::string& pdf, std::ostream& err) {
+  storage::ClinicalStore& store = c.store();
+  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  reports::SessionReportData d;
+  d.session = s.info;
+  d.patient = store.patient(s.info.patientCode);
+  if (!s.info.protocolName.isEmpty()) d.protocol = store.protocol(s.info.protocolName);
+  if (s.info.therapistId && store.user().role != storage::Role::Home)
+    d.therapistName = store.userName(*s.info.therapistId);
+  d.side = s.side == Side::Left ? "left" : "right";
+  d.angles = s.series;
+  d.metrics = s.metrics;
+  // Earlier sessions of the patient with metrics, oldest first; the latest of the other arm.
+  std::vector<storage::SessionInfo> all = store.listSessions(s.info.patientCode);
+  std::sort(all.begin(), all.end(),
+            [](const auto& x, const auto& y) { return x.startedAt < y.startedAt; });
+  for (const storage::SessionInfo& e : all) {
+    if (e.id == id || e.startedAt > s.info.startedAt) continue;
+    const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id);
+    if (!m) continue;
+    reports::RomSnapshot snap{dateOf(e.startedAt), e.id, romOf(*m)};
+    if (store.recordingMeta(e.id).side == s.side)
+      d.earlierSessions.push_back(snap);
+    else
+      d.otherSide = snap;
+  }
+  const int pages = reports::writeSessionReport(d, QString::fromStdString(pdf));
+  store.audit("export", "session", QString::number(id), "report pdf");
+  err << "report: session " << id << ", " << pages << " pages, to " << pdf << "\n";
+  return 0;
+}
+
+int progressReport(ClinicalContext& c, const Args& a, const std::string& pdf, std::ostream& err) {
+  storage::ClinicalStore& store = c.store();
+  const QString code = qs(a.required("--patient"));
+  const QString from = qs(a.required("--from")), to = qs(a.required("--to"));
+  for (const QString& date : {from, to})
+    if (!QDate::fromString(date, Qt::ISODate).isValid() || date.size() != 10)
+      a.fail("--from and --to: expected dates as YYYY-MM-DD, got '" + ss(date) + "'");
+  if (to < from) a.fail("--to is before --from");
+  reports::ProgressReportData d;
+  d.patient = store.patient(code);
+  d.fromDate = from;
+  d.toDate = to;
+  d.therapistName = store.user().role == storage::Role::Home ? QString() : store.user().name;
+  for (const storage::SessionInfo& e : store.listSessions(code)) {
+    const QString date = dateOf(e.startedAt);
+    if (date < from || date > to) continue;
+    reports::ProgressSession p;
+    p.id = e.id;
+    p.startedAt = e.startedAt;
+    p.protocolName = e.protocolName;
+    p.durationS = e.durationS;
+    if (const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id)) {
+      p.romRad = romOf(*m);
+      const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
+      if (reps.isDouble()) p.repetitions = reps.toInt();
+    }
+    d.sessions.push_back(p);
+  }
+  const int pages = reports::writeProgressReport(d, QString::fromStdString(pdf));
+  store.audit("export", "patient", code, "progress report pdf " + from + " to " + to);
+  err << "report: patient " << ss(code) << ", " << d.sessions.size() << " sessions, " << pages
+      << " pages, to " << pdf << "\n";
+  return 0;
+}
+
+}  // namespace
+
+int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("report", args,
+               withDb({{"--pdf", true},
+                       {"--patient", true},
+                       {"--from", true},
+                       {"--to", true},
+                       {"--overwrite", false}}));
+  if (a.help()) return out << kReportHelp, 0;
+  const std::string pdf = a.required("--pdf");
+  const bool progress = a.value("--patient").has_value();
+  if (progress && !a.positionals().empty())
+    a.fail("give a session id or --patient with --from and --to, not both");
+  if (!progress && (a.value("--from") || a.value("--to")))
+    a.fail("--from and --to: only with --patient");
+  const qint64 id = progress ? 0 : positiveId(a);
+  checkOutputPath(pdf, a.flag("--overwrite"), /*recording=*/false);
+  const std::unique_ptr<QGuiApplication> gui = guiApplication();
+  ClinicalContext c(a, {}, true);
+  return progress ? progressReport(c, a, pdf, err) : sessionReport(c, id, pdf, err);
+}
+
+int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const Args a("export", args,
+               withDb({{"--format", true}, {"--out", true}, {"--overwrite", false}}));
+  if (a.help()) return out << kExportHelp, 0;
+  const qint64 id = positiveId(a);
+  const std::string format = a.required("--format");
+  const std::string target = a.required("--out");
+  if (format != "recording" && format != "csv" && format != "mot" && format != "bids")
+    a.fail("--format: must be recording, csv, mot or bids");
+  const bool overwrite = a.flag("--overwrite");
+  if (format == "recording" || format == "mot") checkOutputPath(target, overwrite, format == "recording");
+  if (format == "csv") {
+    checkOutputPath(target, overwrite, false);
+    checkOutputPath(metricsCsvPath(target).string(), overwrite, false);
+  }
+  ClinicalContext c(a, {}, true);
+  storage::ClinicalStore& store = c.store();
+  if (format == "recording") {
+    store.exportRecording(id, target);
+    err << "export: session " << id << " to " << target << "\n";
+    return 0;
+  }
+  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  if (format == "csv") {
+    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
+    err << "export: session " << id << ", " << r.rows << " rows to " << r.anglesCsv.string()
+        << " and its metrics to " << r.metricsCsv.string() << "\n";
+  } else if (format == "mot") {
+    const MotExportResult r = writeOpenSimMot(target, s.series, s.side);
+    err << "export: session " << id << ", " << r.rows << " rows to " << target << "\n";
+  } else {
+    const Recording recording = store.readRecording(id);
+    BidsOptions o;
+    o.subject = bidsLabel(ss(s.info.patientCode));
+    o.session = bidsLabel(std::to_string(id));
+    o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
+                                                     : ss(s.info.protocolName));
+    o.taskName = s.info.protocolName.isEmpty() ? "ArmTrack session" : ss(s.info.protocolName);
+    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o);
+    err << "export: session " << id << ", " << r.systems.size() << " tracking systems to "
+        << r.motionDir.string() << "\n";
+    for (const std::string& note : r.notes) err << "  note: " << note << "\n";
+  }
+  store.audit("export", "session", QString::number(id), qs("format " + format));
+  return 0;
+}
+
+}  // namespace armtrack::cli
