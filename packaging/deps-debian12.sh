@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev nlohmann-json3-dev libopencv-dev libopencv-contrib-dev libceres-dev
   qt6-base-dev qt6-serialport-dev libqt6sql6-sqlite libfreenect-dev libfreenect-bin
   libzstd-dev libsodium-dev
+  libqt6sql6-psql postgresql
   libgtest-dev googletest libbenchmark-dev
   clang libclang-rt-14-dev
 )
