@@ -17,7 +17,7 @@ using Kind = StorageError::Kind;
 
 constexpr double kChunkSeconds = 1.0;            // a chunk spans about this much time
 constexpr std::size_t kMaxChunkRows = 1u << 16;  // and never more rows than this
-const QString kCodec = "atc1-zstd";
+const QString kCodec = ChunkCodec::kName;  // written; ChunkCodec::knows what is read
 
 std::string text(const QString& s) {
   return s.toStdString();
@@ -291,13 +291,14 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
       throw StorageError(Kind::Corrupt,
                          where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
-    if (q.value(2).toString() != kCodec)
+    const std::string codec = text(q.value(2).toString());
+    if (!ChunkCodec::knows(codec))
       throw StorageError(Kind::Corrupt,
                          where + "unknown codec '" + text(q.value(2).toString()) + "'");
     const QByteArray blob = q.value(3).toByteArray();
     try {
       auto samples =
-          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong());
+          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong(), codec);
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
