@@ -236,6 +236,7 @@ void Database::applyStep(const MigrationStep& step) {
     }
     applied = true;
     for (const QString& s : step.statements) exec(m_dialect.expand(s));
+    for (const QString& s : m_dialect.afterStep(step.toVersion)) exec(s);
     exec("DELETE FROM schema_version");
     exec("INSERT INTO schema_version (version) VALUES (?)", {step.toVersion});
   });
