@@ -180,3 +180,17 @@ TEST(Postgres, RecordingIsStoredAndReadBackBitForBit) {
   ASSERT_TRUE(left.next());
   EXPECT_EQ(left.value(0).toInt(), 0);
 }
+
+// A recorder that died mid-session (its pid no longer exists on this host) leaves a session that
+// the next opening marks interrupted, on PostgreSQL as on SQLite.
+TEST(Postgres, DeadRecorderSessionIsMarkedInterrupted) {
+  Fixture f(Engine::Postgres);
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = f.store->beginSession("P1", "", "{}", 0);
+  // Above Linux's largest pid (4194304): no process has it.
+  f.db->exec("UPDATE sessions SET recorder_pid = 4194399 WHERE id = ?", {id});
+  ClinicalStore reopened(*f.db);
+  EXPECT_EQ(reopened.interruptedOnOpen(), 1);
+  reopened.signIn("admin", kAdminPassword);
+  EXPECT_EQ(reopened.session(id).status, kStatusInterrupted);
+}
