@@ -9,6 +9,7 @@
 
 #include <QCoreApplication>
 #include <QTemporaryDir>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -16,6 +17,7 @@
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
 #include "tests/support/PostgresServer.h"
 
@@ -47,7 +49,34 @@ struct Minute {
     writeRecording(csv, simulateRecording(*trajectory, sim));
     rec = readRecording(csv);  // bit for bit what the CSV holds
     csvBytes = static_cast<double>(std::filesystem::file_size(csv));
+    // The same chunks in the previous format, and the least any lossless coder can spend on
+    // the IMU values: each is a smooth signal plus Gaussian noise of std sigma, so at best
+    // log2(sigma / ulp) + log2(sqrt(2 pi e)) bits (the differential entropy of the noise,
+    // quantised to the double's spacing).
+    std::size_t begin = 0;
+    const auto& samples = rec.samples;
+    while (begin < samples.size()) {
+      std::size_t end = begin;
+      while (end < samples.size() && samples[end].t < samples[begin].t + 1.0) ++end;
+      legacyBytes += static_cast<double>(
+          ChunkCodec::encodeLegacy(std::span<const ArmSample>(samples.data() + begin, end - begin))
+              .size());
+      begin = end;
+    }
+    const double gauss = 0.5 * std::log2(2.0 * M_PI * M_E);
+    auto bound = [&](double v, double sigma) {
+      const double ulp = std::nextafter(std::fabs(v), INFINITY) - std::fabs(v);
+      return std::max(0.0, std::log2(sigma / ulp) + gauss) / 8.0;
+    };
+    for (const ArmSample& a : samples)
+      for (const auto* imu : {&a.upperArm, &a.forearm})
+        if (*imu)
+          for (int i = 0; i < 3; ++i)
+            imuFloorBytes += bound((*imu)->gyr[i], Table5::gyroStd()) +
+                             bound((*imu)->acc[i], Table5::accelStd());
   }
+  double legacyBytes = 0;
+  double imuFloorBytes = 0;
 };
 
 const Minute& minute() {
@@ -112,6 +141,8 @@ void BM_WriteRecording(benchmark::State& state) {
   state.counters["MB_per_hour"] = static_cast<double>(stored) * 3600.0 / kSeconds / 1e6;
   state.counters["CSV_MB_per_hour"] = minute().csvBytes * 3600.0 / kSeconds / 1e6;
   state.counters["vs_csv"] = static_cast<double>(stored) / minute().csvBytes;
+  state.counters["vs_csv_atc1"] = minute().legacyBytes / minute().csvBytes;
+  state.counters["imu_floor_vs_csv"] = minute().imuFloorBytes / minute().csvBytes;
 }
 BENCHMARK(BM_WriteRecording)
     ->ArgName("engine")  // 0 SQLite, 1 PostgreSQL socket, 2 PostgreSQL TCP loopback
