@@ -4,7 +4,9 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
+#include <QSqlDriver>
 #include <QSqlError>
+#include <QSqlField>
 #include <QSqlRecord>
 
 namespace armtrack::storage {
@@ -281,6 +283,11 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
     // Unprepared: PostgreSQL cannot PREPARE every statement (SET, LOCK), and it saves a round
     // trip there.
     ok = q.exec(sql);
+  } else if (isPostgres()) {
+    // QPSQL would PREPARE, EXECUTE with the values formatted by its driver, and DEALLOCATE:
+    // three round trips, and a DEALLOCATE that fails noisily in an aborted transaction. The
+    // same driver formatting inlined gives one.
+    ok = q.exec(inlineValues(sql, binds));
   } else {
     if (!q.prepare(sql)) fail(Kind::Io, "refused a statement", q.lastError().text());
     for (const QVariant& b : binds) {
@@ -308,6 +315,29 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
     fail(kind, "refused a statement", text);
   }
   return q;
+}
+
+QString Database::inlineValues(const QString& sql, const QVariantList& binds) {
+  QString out;
+  out.reserve(sql.size() + 64 * binds.size());
+  qsizetype next = 0;
+  bool inString = false;
+  for (const QChar c : sql) {
+    if (c == '\'') inString = !inString;
+    if (c != '?' || inString) {
+      out += c;
+      continue;
+    }
+    if (next >= binds.size()) fail(Kind::Io, "refused a statement", "more ? than values");
+    const QVariant& b = binds[next++];
+    QSqlField field(QString(), b.metaType());
+    // An empty QString() would bind as NULL; text columns mean "" by it (as for SQLite).
+    field.setValue(b.typeId() == QMetaType::QString && b.toString().isNull() ? QVariant(QString(""))
+                                                                             : b);
+    out += m_db.driver()->formatValue(field);
+  }
+  if (next != binds.size()) fail(Kind::Io, "refused a statement", "fewer ? than values");
+  return out;
 }
 
 qint64 Database::insert(const QString& sql, const QVariantList& binds) {

@@ -60,6 +60,7 @@ class Database {
   void transaction(const std::function<void()>& body);
 
  private:
+  QString inlineValues(const QString& sql, const QVariantList& binds);
   void openSqlite(bool create);
   void openPostgres();
   [[noreturn]] void explainConnectFailure(const QString& error);

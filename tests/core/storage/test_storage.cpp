@@ -282,6 +282,31 @@ TEST_P(Crud, Patients) {
   expectError([&] { f.store->patient("P1"); }, Kind::NotFound);
 }
 
+// Text that would break a statement built by hand: quotes, backslashes, placeholders, a comment,
+// non-ASCII; and binary data with every byte value. Each reads back as written.
+TEST_P(Crud, HostileTextAndBytesRoundTrip) {
+  Fixture f(GetParam());
+  Patient p = makePatient("Q'1?");
+  p.name = "O'Brien \\ \"x\" ? ?? $1 :name -- ); DROP TABLE patients; --";
+  p.notes = QString::fromUtf8("Grüße, 患者, \\x00 \\' E'\\n'");
+  p.diagnosis = "";
+  f.store->addPatient(p);
+  const Patient back = f.store->patient("Q'1?");
+  EXPECT_EQ(back.name, p.name);
+  EXPECT_EQ(back.notes, p.notes);
+  EXPECT_EQ(back.diagnosis, "");
+  const qint64 s = f.store->beginSession("Q'1?", "", "{}", 0);
+  QByteArray bytes;
+  for (int i = 0; i < 256; ++i) bytes.append(static_cast<char>(i));
+  bytes += QByteArray("\\x'?", 5);
+  f.store->saveEstimates(s, "{\"k\":\"'?\"}", "raw", bytes);
+  QSqlQuery q = f.db->exec("SELECT data, params_json FROM estimates WHERE session_id = ?", {s});
+  ASSERT_TRUE(q.next());
+  EXPECT_EQ(q.value(0).toByteArray(), bytes);
+  EXPECT_EQ(q.value(1).toString(), "{\"k\":\"'?\"}");
+  EXPECT_EQ(f.store->listPatients().size(), 1u);  // the table is still there
+}
+
 TEST_P(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   Fixture f(GetParam());
   Protocol pr;
