@@ -19,7 +19,7 @@ namespace {
 
 constexpr std::uint32_t kMagic = 0x31435441;   // "ATC1" little-endian
 constexpr std::uint32_t kMagic2 = 0x32435441;  // "ATC2" little-endian
-constexpr std::uint32_t kMaxRows = 1u << 24;  // a chunk holds about a second; this is far beyond
+constexpr std::uint32_t kMaxRows = 1u << 24;   // a chunk holds about a second; this is far beyond
 constexpr int kGroups = 8;
 
 // The sensor groups of an ArmSample in a fixed order, and their number of doubles.
@@ -402,7 +402,8 @@ std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
 
 std::uint32_t le32(const char* p) {
   std::uint32_t v = 0;
-  for (int b = 0; b < 4; ++b) v |= static_cast<std::uint32_t>(static_cast<unsigned char>(p[b])) << (8 * b);
+  for (int b = 0; b < 4; ++b)
+    v |= static_cast<std::uint32_t>(static_cast<unsigned char>(p[b])) << (8 * b);
   return v;
 }
 
@@ -452,17 +453,16 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
   // few per column): a bound that a forged size field cannot push past.
   const std::uint64_t bound = 8 + 34 * 3 + expectedRows * (2 + 9 * 33);
   if (codec == kLegacyName)
-    return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic,
-                 expectedRows, nullptr);
+    return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic, expectedRows,
+                 nullptr);
   if (codec != kName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
   if (frame.size() < kHeader2 || le32(frame.data()) != kMagic2)
     throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
   const std::uint32_t frameBytes = le32(frame.data() + 4);
   if (frameBytes > frame.size() - kHeader2)
     throw std::runtime_error("chunk shorter than its header says");
-  const std::uint64_t sum =
-      static_cast<std::uint64_t>(le32(frame.data() + 8)) |
-      (static_cast<std::uint64_t>(le32(frame.data() + 12)) << 32);
+  const std::uint64_t sum = static_cast<std::uint64_t>(le32(frame.data() + 8)) |
+                            (static_cast<std::uint64_t>(le32(frame.data() + 12)) << 32);
   if (sum != fnv1a(frame.data() + kHeader2, frame.size() - kHeader2))
     throw std::runtime_error("checksum mismatch: the chunk was damaged");
   const std::string raw = decompress(frame.data() + kHeader2, frameBytes, bound, expectedRows);

@@ -35,7 +35,8 @@ std::uint64_t unzigzag(std::uint64_t z) {
 // and the decoder computes the very same number). s holds ordered values minus 2^63.
 std::uint64_t predict(const std::uint64_t* s, std::size_t i, int predictor) {
   if (i == 0) return 0;
-  const int order = predictor == 6 ? (i >= 4 ? 6 : 1) : std::min<int>(predictor, static_cast<int>(i));
+  const int order =
+      predictor == 6 ? (i >= 4 ? 6 : 1) : std::min<int>(predictor, static_cast<int>(i));
   const std::uint64_t a = s[i - 1];
   switch (order) {
     case 1:

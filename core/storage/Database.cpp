@@ -108,7 +108,8 @@ void Database::openPostgres() {
 void Database::explainConnectFailure(const QString& error) {
   const QString where =
       m_url.isSocket()
-          ? "the socket in " + (m_url.host.isEmpty() ? QString("libpq's default folder") : m_url.host) +
+          ? "the socket in " +
+                (m_url.host.isEmpty() ? QString("libpq's default folder") : m_url.host) +
                 " (port " + QString::number(m_url.port) + ")"
           : "host " + m_url.host + " port " + QString::number(m_url.port);
   const QString e = error.simplified();
@@ -119,7 +120,8 @@ void Database::explainConnectFailure(const QString& error) {
         ("PostgreSQL refused the password of role '" +
          (m_url.user.isEmpty() ? QString("(login name)") : m_url.user) + "' at " + where +
          ": set ARMTRACK_DB_PASSWORD, or a line 'host:port:database:user:password' in "
-         "~/.pgpass (mode 0600) [" + e.left(300) + "]")
+         "~/.pgpass (mode 0600) [" +
+         e.left(300) + "]")
             .toStdString());
   if (e.contains("does not exist") && e.contains("database"))
     throw StorageError(Kind::NotFound,
@@ -135,18 +137,18 @@ void Database::explainConnectFailure(const QString& error) {
                         ") [" + e.left(300) + "]")
                            .toStdString());
   if (e.contains("pg_hba.conf"))
-    throw StorageError(Kind::Authentication,
-                       ("PostgreSQL at " + where + " does not let this machine or role in: its "
-                        "administrator adds a line to pg_hba.conf [" + e.left(300) + "]")
-                           .toStdString());
-  throw StorageError(Kind::Io,
-                     ("cannot reach the PostgreSQL server at " + where +
-                      ": is it running (pg_isready" +
-                      (m_url.host.isEmpty() ? QString() : " -h " + m_url.host) + " -p " +
-                      QString::number(m_url.port) +
-                      "), are host and port right, does a firewall let the port through? [" +
-                      e.left(300) + "]")
-                         .toStdString());
+    throw StorageError(Kind::Authentication, ("PostgreSQL at " + where +
+                                              " does not let this machine or role in: its "
+                                              "administrator adds a line to pg_hba.conf [" +
+                                              e.left(300) + "]")
+                                                 .toStdString());
+  throw StorageError(
+      Kind::Io,
+      ("cannot reach the PostgreSQL server at " + where + ": is it running (pg_isready" +
+       (m_url.host.isEmpty() ? QString() : " -h " + m_url.host) + " -p " +
+       QString::number(m_url.port) +
+       "), are host and port right, does a firewall let the port through? [" + e.left(300) + "]")
+          .toStdString());
 }
 
 Database::~Database() {

@@ -1,8 +1,8 @@
 #include "core/storage/DatabaseUrl.h"
 
 #include <QDir>
-#include <QStandardPaths>
 #include <QRegularExpression>
+#include <QStandardPaths>
 #include <QUrl>
 
 #include "core/storage/StorageError.h"
@@ -81,7 +81,8 @@ DatabaseUrl parsePostgres(const QString& text) {
 DatabaseUrl DatabaseUrl::parse(const QString& text) {
   if (text.trimmed().isEmpty()) bad("empty database location");
   DatabaseUrl url;
-  if (text.startsWith("postgresql://") || text.startsWith("postgres://")) return parsePostgres(text);
+  if (text.startsWith("postgresql://") || text.startsWith("postgres://"))
+    return parsePostgres(text);
   QString path = text;
   if (path.startsWith("sqlite://"))
     path = path.mid(9);
@@ -109,9 +110,9 @@ QString DatabaseUrl::display() const {
   if (engine == Engine::Sqlite) return path;
   const QString who = user.isEmpty() ? QString() : user + "@";
   if (isSocket())
-    return "postgresql://" + who + "/" + database + "?host=" +
-           (host.isEmpty() ? QString("(default socket)") : host) + "&port=" +
-           QString::number(port);
+    return "postgresql://" + who + "/" + database +
+           "?host=" + (host.isEmpty() ? QString("(default socket)") : host) +
+           "&port=" + QString::number(port);
   return "postgresql://" + who + host + ":" + QString::number(port) + "/" + database;
 }
 

@@ -135,9 +135,8 @@ void BM_WriteRecording(benchmark::State& state) {
   Db d(static_cast<int>(state.range(0)));
   qint64 stored = 0;
   for (auto _ : state) stored = d.store->session(writeMinute(*d.store)).storedBytes;
-  state.counters["x_real_time"] =
-      benchmark::Counter(kSeconds * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
   state.counters["MB_per_hour"] = static_cast<double>(stored) * 3600.0 / kSeconds / 1e6;
   state.counters["CSV_MB_per_hour"] = minute().csvBytes * 3600.0 / kSeconds / 1e6;
   state.counters["vs_csv"] = static_cast<double>(stored) / minute().csvBytes;
@@ -156,9 +155,8 @@ void BM_ReadRecording(benchmark::State& state) {
   Db d(static_cast<int>(state.range(0)));
   const qint64 id = d.store->importRecording(minute().csv, "P1");
   for (auto _ : state) benchmark::DoNotOptimize(d.store->readRecording(id).samples.size());
-  state.counters["x_real_time"] =
-      benchmark::Counter(kSeconds * static_cast<double>(state.iterations()),
-                         benchmark::Counter::kIsRate);
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ReadRecording)
     ->ArgName("engine")

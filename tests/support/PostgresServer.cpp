@@ -108,7 +108,9 @@ PostgresServer::PostgresServer(bool durable) {
     m_port = freePort();
     QString options = "-k " + m_dir + " -p " + QString::number(m_port) +
                       " -c listen_addresses=127.0.0.1 -c max_connections=40";
-    if (!durable) options += " -c fsync=off -c synchronous_commit=off -c full_page_writes=off";
+    if (!durable)
+      options +=
+          " -c fsync=off -c synchronous_commit=off -c full_page_writes=off -c shared_buffers=16MB";
     try {
       run(m_bin + "/pg_ctl", {"-D", m_data, "-l", log, "-w", "-t", "60", "-o", options, "start"});
       m_started = true;

@@ -74,8 +74,7 @@ struct Fixture {
   std::unique_ptr<Database> db;
   std::unique_ptr<ClinicalStore> store;
 
-  explicit Fixture(Engine e = Engine::Sqlite)
-      : engine(e), path(newDatabase(e, dir, "armtrack")) {
+  explicit Fixture(Engine e = Engine::Sqlite) : engine(e), path(newDatabase(e, dir, "armtrack")) {
     db = std::make_unique<Database>(DatabaseUrl::parse(path), Database::Options{true, false});
     store = std::make_unique<ClinicalStore>(*db);
     store->initialise("admin", kAdminPassword);

@@ -73,7 +73,9 @@ TEST(DatabaseUrl, PostgresSocketForms) {
 TEST(Postgres, ServerDownSaysWhichHostAndPortAndWhatToCheck) {
   // Port 1 on the loopback: nothing listens there, so the connection is refused at once.
   const StorageError e = expectError(
-      [] { Database db(DatabaseUrl::parse("postgresql://nobody@127.0.0.1:1/rec"), {true, false}); },
+      [] {
+        Database db(DatabaseUrl::parse("postgresql://nobody@127.0.0.1:1/rec"), {true, false});
+      },
       Kind::Io);
   EXPECT_TRUE(contains(e, "host 127.0.0.1 port 1")) << e.what();
   EXPECT_TRUE(contains(e, "pg_isready")) << e.what();
@@ -88,8 +90,11 @@ TEST(Postgres, MissingDatabaseIsNotFound) {
   const QString url = server.createDatabase("exists_here");
   QString other = url;
   other.replace("/exists_here?", "/not_here?");
-  const StorageError e =
-      expectError([&] { Database db(DatabaseUrl::parse(other), {true, false}); }, Kind::NotFound);
+  const StorageError e = expectError(
+      [&] {
+        Database db(DatabaseUrl::parse(other), {true, false});
+      },
+      Kind::NotFound);
   EXPECT_TRUE(contains(e, "createdb")) << e.what();
 }
 
@@ -107,7 +112,11 @@ TEST(Postgres, PasswordFromEnvironmentOrPasswordFile) {
   }
   {
     ScopedEnv wrong("ARMTRACK_DB_PASSWORD", "not-the-password");
-    const StorageError e = expectError([&] { Database db(tcp, {true, false}); }, Kind::Authentication);
+    const StorageError e = expectError(
+        [&] {
+          Database db(tcp, {true, false});
+        },
+        Kind::Authentication);
     EXPECT_TRUE(contains(e, PostgresServer::kRole)) << e.what();
     EXPECT_FALSE(contains(e, "not-the-password")) << e.what();
   }
@@ -135,8 +144,8 @@ TEST(Postgres, PasswordFromEnvironmentOrPasswordFile) {
 
 TEST(Postgres, BackupPointsToPgDump) {
   Fixture f(Engine::Postgres);
-  const StorageError e = expectError([&] { f.db->backup(f.dir.filePath("b.dump")); },
-                                     Kind::Unsupported);
+  const StorageError e =
+      expectError([&] { f.db->backup(f.dir.filePath("b.dump")); }, Kind::Unsupported);
   EXPECT_TRUE(contains(e, "pg_dump -Fc")) << e.what();
   EXPECT_EQ(f.db->integrityCheck(), "ok");
 }
