@@ -103,6 +103,8 @@ void Database::openPostgres() {
   m_db.setConnectOptions("connect_timeout=10;application_name=armtrack");
   if (!m_db.open()) explainConnectFailure(m_db.lastError().text());
   exec("SET client_min_messages = warning");
+  // As SQLite's busy timeout: a statement waiting more than 5 s for another's lock gives up.
+  exec("SET lock_timeout = '5s'");
 }
 
 void Database::explainConnectFailure(const QString& error) {
@@ -307,6 +309,10 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
       text +=
           " (another program has been writing to it for more than 5 s; try again, or close "
           "the other program)";
+    if (text.contains("lock timeout", Qt::CaseInsensitive))
+      text +=
+          " (another workstation has held a lock for more than 5 s; try again, or see which "
+          "program holds it: pg_stat_activity)";
     if (text.contains("disk is full", Qt::CaseInsensitive) ||
         text.contains("disk I/O error", Qt::CaseInsensitive))
       text += " (free some space: what was committed before is intact)";

@@ -81,6 +81,15 @@ QString connectionName() {
 }  // namespace
 
 PostgresServer::PostgresServer(bool durable) {
+  try {
+    start(durable);
+  } catch (...) {
+    stop();  // a half-started server and its folder do not outlive the failure
+    throw;
+  }
+}
+
+void PostgresServer::start(bool durable) {
   m_bin = findBinDir();
   m_asPostgresUser = ::geteuid() == 0;
   // Under /tmp, not $TMPDIR: a Unix socket path must stay under 108 bytes.
@@ -123,14 +132,20 @@ PostgresServer::PostgresServer(bool durable) {
 }
 
 PostgresServer::~PostgresServer() {
+  stop();
+}
+
+void PostgresServer::stop() {
   if (m_started) {
+    m_started = false;
     try {
       run(m_bin + "/pg_ctl", {"-D", m_data, "-m", "immediate", "-w", "stop"}, 30000);
     } catch (...) {
-      // The folder goes anyway; a server left behind dies with its socket folder's removal.
+      // The folder goes anyway; a postmaster whose lock file is gone exits within a minute.
     }
   }
   if (!m_dir.isEmpty()) QDir(m_dir).removeRecursively();
+  m_dir.clear();
 }
 
 PostgresServer& PostgresServer::shared() {

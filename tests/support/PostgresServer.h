@@ -41,6 +41,8 @@ class PostgresServer {
   QString binDir() const { return m_bin; }
 
  private:
+  void start(bool durable);
+  void stop();
   QString run(const QString& program, const QStringList& args, int timeoutMs = 120000);
   QString m_bin, m_dir, m_data;
   int m_port = 0;

@@ -27,6 +27,10 @@ inline constexpr const char* kAdminPassword = "correct horse battery";
 /// The engines every storage test runs on (value-parameterised tests).
 enum class Engine { Sqlite, Postgres };
 
+inline void PrintTo(Engine e, std::ostream* os) {
+  *os << (e == Engine::Sqlite ? "SQLite" : "PostgreSQL");
+}
+
 inline std::string engineName(const testing::TestParamInfo<Engine>& info) {
   return info.param == Engine::Sqlite ? "Sqlite" : "Postgres";
 }

@@ -203,3 +203,21 @@ TEST(Postgres, DeadRecorderSessionIsMarkedInterrupted) {
   reopened.signIn("admin", kAdminPassword);
   EXPECT_EQ(reopened.session(id).status, kStatusInterrupted);
 }
+
+// A workstation holding a row lock does not hang another forever: after 5 s the waiting
+// statement gives up with a message saying what happened; the holder's work commits.
+TEST(Postgres, LockHeldByAnotherWorkstationTimesOutClearly) {
+  Fixture a(Engine::Postgres);
+  a.store->addPatient(makePatient("LOCKED"));
+  Database second(DatabaseUrl::parse(a.path), {});
+  ClinicalStore b(second);
+  b.signIn("admin", kAdminPassword);
+  Patient edited = b.patient("LOCKED");
+  edited.notes = "from b";
+  a.db->transaction([&] {
+    a.db->exec("UPDATE patients SET notes = 'from a' WHERE code = 'LOCKED'");
+    const StorageError e = expectError([&] { b.updatePatient(edited); }, Kind::Io);
+    EXPECT_TRUE(contains(e, "more than 5 s")) << e.what();
+  });
+  EXPECT_EQ(b.patient("LOCKED").notes, "from a");
+}
