@@ -21,6 +21,7 @@
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/support/PostgresServer.h"
 
 namespace fs = std::filesystem;
 using armtrack::cli::runCli;
@@ -84,6 +85,21 @@ class StorageCli : public ::testing::Test {
 
   QTemporaryDir m_dir;
   std::string m_db;
+};
+
+// The same commands against a database on a PostgreSQL server the test starts
+// (tests/support/PostgresServer; the test fails with the reason when it cannot).
+class StorageCliOnPostgres : public StorageCli {
+ protected:
+  void SetUp() override {
+    static int counter = 0;
+    m_db = armtrack::test::PostgresServer::shared()
+               .createDatabase(QString("cli%1").arg(counter++))
+               .toStdString();
+    ::setenv("ARMTRACK_PASSWORD", kAdminPass, 1);
+    const Result init = run({"db", "init", "--admin", "boss"}, nullptr);
+    ASSERT_EQ(init.code, 0) << init.err;
+  }
 };
 
 std::string bytesOf(const std::string& p) {
@@ -316,4 +332,27 @@ TEST_F(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
             0);
   EXPECT_EQ(static_cast<qint64>(armtrack::readRecording(path("partial.csv")).samples.size()),
             s["rows"].toInteger());
+}
+
+TEST_F(StorageCliOnPostgres, ImportExportCheckAndBackupAdvice) {
+  addPatients();
+  const std::string csv = simulate("rec.csv", 3.0);
+  const std::string id = importFor("P01", csv);
+  const Result list = run({"session", "list", "--patient", "P01", "--json"});
+  ASSERT_EQ(list.code, 0) << list.err;
+  EXPECT_EQ(QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array().size(), 1);
+  const std::string back = path("back.csv");
+  const Result exp = run({"export", id, "--format", "recording", "--out", back});
+  ASSERT_EQ(exp.code, 0) << exp.err;
+  EXPECT_EQ(bytesOf(back), bytesOf(csv));
+  const Result check = run({"db", "check"});
+  EXPECT_EQ(check.code, 0) << check.err;
+  EXPECT_EQ(check.out.rfind("ok: postgresql://", 0), 0u) << check.out;
+  EXPECT_EQ(run({"db", "migrate"}).code, 0);
+  // db backup copies SQLite files; on PostgreSQL it says to use pg_dump, and writes nothing.
+  const Result backup = run({"db", "backup", "--out", path("copy.dump")});
+  EXPECT_NE(backup.code, 0);
+  EXPECT_NE(backup.err.find("pg_dump -Fc"), std::string::npos) << backup.err;
+  EXPECT_FALSE(fs::exists(path("copy.dump")));
+  EXPECT_EQ(run({"patient", "list"}, "boss", "wrong-password").code, 1);
 }
