@@ -8,6 +8,7 @@
 #include <QSqlError>
 #include <QSqlField>
 #include <QSqlRecord>
+#include <cmath>
 
 namespace armtrack::storage {
 
@@ -342,7 +343,11 @@ QString Database::inlineValues(const QString& sql, const QVariantList& binds) {
     // An empty QString() would bind as NULL; text columns mean "" by it (as for SQLite).
     field.setValue(b.typeId() == QMetaType::QString && b.toString().isNull() ? QVariant(QString(""))
                                                                              : b);
-    out += m_db.driver()->formatValue(field);
+    // Qt prints -0.0 as "0": spell it so PostgreSQL keeps the sign (a double goes in exact).
+    if (b.typeId() == QMetaType::Double && b.toDouble() == 0.0 && std::signbit(b.toDouble()))
+      out += "'-0'";
+    else
+      out += m_db.driver()->formatValue(field);
   }
   if (next != binds.size()) fail(Kind::Io, "refused a statement", "fewer ? than values");
   return out;
