@@ -9,6 +9,7 @@ packages=(
   qt6-base-dev qt6-serialport-dev libqt6sql6-sqlite libfreenect-dev libfreenect-bin
   libzstd-dev libsodium-dev
   fonts-dejavu-core fonts-wqy-microhei poppler-utils
+  libqt6sql6-psql postgresql
   libgtest-dev googletest libbenchmark-dev
   clang libclang-rt-14-dev
 )

@@ -13,6 +13,11 @@ cmake --build "$build" --parallel "$(nproc)"
 if [ -x "$build/tests/benchmarks/bench_filter" ]; then
   "$build/tests/benchmarks/bench_filter" --benchmark_min_time=0.2 || echo "benchmarks failed to run" >&2
 fi
+# The clinical records on SQLite and on a PostgreSQL server the benchmark starts itself.
+if [ -x "$build/tests/benchmarks/bench_storage" ]; then
+  "$build/tests/benchmarks/bench_storage" --benchmark_min_time=1 ||
+    echo "storage benchmarks failed to run" >&2
+fi
 
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600

@@ -1,5 +1,7 @@
 #include "core/storage/ChunkCodec.h"
 
+#include "core/storage/ChunkPredictive.h"
+
 #include <zstd.h>
 
 #include <algorithm>
@@ -15,8 +17,9 @@ namespace armtrack::storage {
 
 namespace {
 
-constexpr std::uint32_t kMagic = 0x31435441;  // "ATC1" little-endian
-constexpr std::uint32_t kMaxRows = 1u << 24;  // a chunk holds about a second; this is far beyond
+constexpr std::uint32_t kMagic = 0x31435441;   // "ATC1" little-endian
+constexpr std::uint32_t kMagic2 = 0x32435441;  // "ATC2" little-endian
+constexpr std::uint32_t kMaxRows = 1u << 24;   // a chunk holds about a second; this is far beyond
 constexpr int kGroups = 8;
 
 // The sensor groups of an ArmSample in a fixed order, and their number of doubles.
@@ -139,6 +142,8 @@ class Reader {
   std::uint32_t u32() { return planes<std::uint32_t>(1)[0]; }
   std::uint8_t u8() { return planes<std::uint8_t>(1)[0]; }
   bool atEnd() const { return m_pos == m_data.size(); }
+  const std::string& data() const { return m_data; }
+  std::size_t& position() { return m_pos; }
 
  private:
   void need(std::size_t bytes) const {
@@ -155,7 +160,7 @@ class Reader {
 //    column is such a short decimal (a 16-bit sensor, a file written with 7 digits), where it
 //    takes a few bytes a value instead of the ~6.5 of a double's noisy mantissa. Exact because
 //    the shortest decimal reads back to the same double.
-enum ColumnMode : std::uint8_t { kBinary = 0, kDecimal = 1 };
+enum ColumnMode : std::uint8_t { kBinary = 0, kDecimal = 1, kPredictive = 2 };
 constexpr int kNoExponent = 1000;
 constexpr std::int64_t kLongDigits = 10'000'000'000'000;  // 14 significant digits
 
@@ -169,6 +174,7 @@ std::int64_t unzigzag(std::uint64_t z) {
 // v as (integer significand, decimal exponent) from its shortest round-trip form.
 bool shortestDecimal(double v, std::int64_t& digits, int& exponent) {
   if (v == 0.0 && std::signbit(v)) return false;  // -0 has no integer significand
+  if (!std::isfinite(v)) return false;            // "inf" and "nan" have no digits
   char buf[40];
   const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::scientific);
   if (r.ec != std::errc()) return false;
@@ -236,10 +242,38 @@ void appendColumn(std::string& raw, const std::vector<double>& values) {
   appendPlanes(raw, words);
 }
 
-std::vector<double> readColumn(Reader& in, std::size_t count) {
+std::size_t zstdSize(const std::string& raw) {
+  std::string out(ZSTD_compressBound(raw.size()), '\0');
+  const std::size_t size = ZSTD_compress(out.data(), out.size(), raw.data(), raw.size(), 1);
+  return ZSTD_isError(size) ? raw.size() : size;
+}
+
+// ATC2: decimal when every value is a short decimal and that is smaller, else predictive.
+void appendColumn2(std::string& raw, detail::BitWriter& bits, const std::vector<double>& values) {
+  std::vector<std::uint8_t> exponents;
+  std::vector<std::uint64_t> words;
+  if (!values.empty() && decimalColumn(values, exponents, words)) {
+    std::string decimal, predictive;
+    appendPlanes(decimal, exponents);
+    appendPlanes(decimal, words);
+    detail::BitWriter trial;
+    detail::appendPredictiveColumn(predictive, trial, values);
+    if (zstdSize(decimal) <= zstdSize(predictive) + trial.finish().size()) {
+      raw.push_back(static_cast<char>(kDecimal));
+      raw += decimal;
+      return;
+    }
+  }
+  raw.push_back(static_cast<char>(kPredictive));
+  detail::appendPredictiveColumn(raw, bits, values);
+}
+
+std::vector<double> readColumn(Reader& in, std::size_t count, detail::BitReader* bits) {
   const std::uint8_t mode = in.u8();
+  if (mode == kPredictive && bits)
+    return detail::readPredictiveColumn(in.data(), in.position(), *bits, count);
   std::vector<double> values(count);
-  if (mode == kBinary) {
+  if (mode == kBinary && !bits) {
     std::uint64_t prev = 0;
     const auto words = in.planes<std::uint64_t>(count);
     for (std::size_t i = 0; i < count; ++i) {
@@ -272,13 +306,15 @@ std::vector<double> readColumn(Reader& in, std::size_t count) {
   return values;
 }
 
-}  // namespace
-
-std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
+// The uncompressed content both versions share: magic, row count, presence masks, the time
+// column, then every group's columns (column is ATC1's or ATC2's writer).
+template <typename AppendColumn>
+std::string content(std::span<const ArmSample> samples, std::uint32_t magic,
+                    AppendColumn&& column) {
   const std::size_t n = samples.size();
   if (n > kMaxRows) throw std::runtime_error("too many rows for one chunk");
   std::string raw;
-  appendPlanes(raw, std::vector<std::uint32_t>{kMagic});
+  appendPlanes(raw, std::vector<std::uint32_t>{magic});
   appendPlanes(raw, std::vector<std::uint32_t>{static_cast<std::uint32_t>(n)});
   std::vector<std::uint16_t> presence(n);
   std::vector<double> times(n);
@@ -287,20 +323,24 @@ std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
     times[i] = samples[i].t;
   }
   appendPlanes(raw, presence);
-  appendColumn(raw, times);
-  std::vector<double> column;
+  column(raw, times);
+  std::vector<double> values;
   double v[6];
   for (int g = 0; g < kGroups; ++g) {
     for (int c = 0; c < kGroupSize[g]; ++c) {
-      column.clear();
+      values.clear();
       for (std::size_t i = 0; i < n; ++i) {
         if (!(presence[i] & (1u << g))) continue;
         valuesOf(samples[i], g, v);
-        column.push_back(v[c]);
+        values.push_back(v[c]);
       }
-      appendColumn(raw, column);
+      column(raw, values);
     }
   }
+  return raw;
+}
+
+std::string compress(const std::string& raw, int level) {
   std::string frame(ZSTD_compressBound(raw.size()), '\0');
   const std::size_t size = ZSTD_compress(frame.data(), frame.size(), raw.data(), raw.size(), level);
   if (ZSTD_isError(size))
@@ -309,30 +349,33 @@ std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
   return frame;
 }
 
-std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_t expectedRows) {
-  const unsigned long long size = ZSTD_getFrameContentSize(frame.data(), frame.size());
+// The content of one zstd frame, its claimed size bounded before anything is allocated.
+std::string decompress(const char* data, std::size_t bytes, std::uint64_t bound,
+                       std::uint64_t rows) {
+  const unsigned long long size = ZSTD_getFrameContentSize(data, bytes);
   if (size == ZSTD_CONTENTSIZE_ERROR) throw std::runtime_error("not a zstd frame");
   if (size == ZSTD_CONTENTSIZE_UNKNOWN) throw std::runtime_error("zstd frame without its size");
-  // Header + presence + time + at most every value of every row: a bound that a forged size
-  // field cannot push past.
-  const std::uint64_t bound = 8 + 33 + expectedRows * (2 + 9 * 33);
   if (size > bound)
     throw std::runtime_error("zstd frame claims " + std::to_string(size) + " bytes for " +
-                             std::to_string(expectedRows) + " rows");
+                             std::to_string(rows) + " rows");
   std::string raw(size, '\0');
-  const std::size_t got = ZSTD_decompress(raw.data(), raw.size(), frame.data(), frame.size());
+  const std::size_t got = ZSTD_decompress(raw.data(), raw.size(), data, bytes);
   if (ZSTD_isError(got))
     throw std::runtime_error(std::string("damaged zstd frame: ") + ZSTD_getErrorName(got));
   if (got != size) throw std::runtime_error("zstd frame shorter than it claims");
+  return raw;
+}
 
+std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
+                             std::uint64_t expectedRows, detail::BitReader* bits) {
   Reader in(raw);
-  if (in.u32() != kMagic) throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
+  if (in.u32() != magic) throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
   const std::uint32_t n = in.u32();
   if (n != expectedRows)
     throw std::runtime_error("holds " + std::to_string(n) + " rows, the index says " +
                              std::to_string(expectedRows));
   const auto presence = in.planes<std::uint16_t>(n);
-  const auto times = readColumn(in, n);
+  const auto times = readColumn(in, n, bits);
   std::vector<ArmSample> samples(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (presence[i] >> kGroups) throw std::runtime_error("unknown sensor group in a row");
@@ -342,7 +385,7 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i) count += (presence[i] >> g) & 1u;
     std::vector<std::vector<double>> cols;
-    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(readColumn(in, count));
+    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(readColumn(in, count, bits));
     std::size_t k = 0;
     double v[6];
     for (std::size_t i = 0; i < n; ++i) {
@@ -353,7 +396,79 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
     }
   }
   if (!in.atEnd()) throw std::runtime_error("chunk content longer than its rows");
+  if (bits) bits->expectEnd();
   return samples;
+}
+
+std::uint32_t le32(const char* p) {
+  std::uint32_t v = 0;
+  for (int b = 0; b < 4; ++b)
+    v |= static_cast<std::uint32_t>(static_cast<unsigned char>(p[b])) << (8 * b);
+  return v;
+}
+
+// FNV-1a, 64 bits: any flipped bit of an ATC2 chunk's body shows (its low bits are raw, so zstd
+// alone would not notice).
+std::uint64_t fnv1a(const char* data, std::size_t size) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  for (std::size_t i = 0; i < size; ++i) {
+    h ^= static_cast<unsigned char>(data[i]);
+    h *= 0x100000001b3ull;
+  }
+  return h;
+}
+
+constexpr std::size_t kHeader2 = 16;  // magic, frame length, checksum of the rest
+
+}  // namespace
+
+bool ChunkCodec::knows(std::string_view codec) {
+  return codec == kName || codec == kLegacyName;
+}
+
+std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
+  detail::BitWriter bits;
+  const std::string raw = content(samples, kMagic2, [&](std::string& out, const auto& values) {
+    appendColumn2(out, bits, values);
+  });
+  const std::string frame = compress(raw, level);
+  const std::string low = bits.finish();
+  const std::string body = frame + low;
+  std::string blob;
+  blob.reserve(kHeader2 + body.size());
+  appendPlanes(blob, std::vector<std::uint32_t>{kMagic2});
+  appendPlanes(blob, std::vector<std::uint32_t>{static_cast<std::uint32_t>(frame.size())});
+  const std::uint64_t sum = fnv1a(body.data(), body.size());
+  for (int b = 0; b < 8; ++b) blob.push_back(static_cast<char>((sum >> (8 * b)) & 0xff));
+  return blob + body;
+}
+
+std::string ChunkCodec::encodeLegacy(std::span<const ArmSample> samples, int level) {
+  return compress(content(samples, kMagic, appendColumn), level);
+}
+
+std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_t expectedRows,
+                                          std::string_view codec) {
+  // Header + presence + time + at most every value of every row (9 bytes each at most, plus a
+  // few per column): a bound that a forged size field cannot push past.
+  const std::uint64_t bound = 8 + 34 * 3 + expectedRows * (2 + 9 * 33);
+  if (codec == kLegacyName)
+    return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic, expectedRows,
+                 nullptr);
+  if (codec != kName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
+  if (frame.size() < kHeader2 || le32(frame.data()) != kMagic2)
+    throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
+  const std::uint32_t frameBytes = le32(frame.data() + 4);
+  if (frameBytes > frame.size() - kHeader2)
+    throw std::runtime_error("chunk shorter than its header says");
+  const std::uint64_t sum = static_cast<std::uint64_t>(le32(frame.data() + 8)) |
+                            (static_cast<std::uint64_t>(le32(frame.data() + 12)) << 32);
+  if (sum != fnv1a(frame.data() + kHeader2, frame.size() - kHeader2))
+    throw std::runtime_error("checksum mismatch: the chunk was damaged");
+  const std::string raw = decompress(frame.data() + kHeader2, frameBytes, bound, expectedRows);
+  detail::BitReader bits(frame.data() + kHeader2 + frameBytes,
+                         frame.size() - kHeader2 - frameBytes);
+  return parse(raw, kMagic2, expectedRows, &bits);
 }
 
 }  // namespace armtrack::storage

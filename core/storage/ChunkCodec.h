@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/ArmSample.h"
@@ -11,24 +12,35 @@
 namespace armtrack::storage {
 
 /// Encodes and decodes one recording chunk (docs/storage.md, "Recording chunks"). Every double is
-/// kept bit for bit: the decoded samples equal the encoded ones exactly. The layout before
-/// compression is columnar (time, then each sensor value across the rows that have it); a column
-/// of short decimals is kept as decimal exponents and significand steps, any other as 64-bit
-/// patterns XORed with the previous one; all as byte planes, which is what lets zstd find the
-/// repeated bytes. Stateless; any thread.
+/// kept bit for bit: the decoded samples equal the encoded ones exactly. The layout is columnar
+/// (time, then each sensor value across the rows that have it); a column of short decimals is
+/// kept as decimal exponents and significand steps, any other (ATC2) as the residuals of a
+/// per-column predictor on the doubles' ordered bit patterns, split into a zstd-compressed high
+/// byte and raw low bits. ATC1 chunks (64-bit patterns XORed with the previous one, as byte
+/// planes) are still read. Stateless; any thread.
 class ChunkCodec {
  public:
-  /// zstd level: 3 compresses as well as 12 on these data (the noise in the low mantissa bits is
-  /// what remains) and imports 60 s at 1 kHz in ~0.2 s.
+  /// The codec names of the recording_chunks.codec column: kName is written, both are read.
+  static constexpr const char* kName = "atc2-zstd";
+  static constexpr const char* kLegacyName = "atc1-zstd";
+  /// zstd level of the structured part (the low noise bits are stored raw beside it).
   static constexpr int kDefaultLevel = 3;
 
-  /// The compressed frame for samples (times must not decrease; not checked here).
-  static std::string encode(std::span<const ArmSample> samples, int level = kDefaultLevel);
+  /// Whether decode reads chunks of this codec name.
+  static bool knows(std::string_view codec);
 
-  /// The samples of a frame made by encode. Throws std::runtime_error naming what is wrong (not a
-  /// zstd frame, truncated, wrong size, bad header, row count other than expectedRows); the caller
-  /// adds which session and chunk.
-  static std::vector<ArmSample> decode(const std::string& frame, std::uint64_t expectedRows);
+  /// The chunk for samples in the current format (kName): times must not decrease (not checked
+  /// here).
+  static std::string encode(std::span<const ArmSample> samples, int level = kDefaultLevel);
+  /// The format written before (kLegacyName), kept so tests can make the chunks old databases
+  /// hold.
+  static std::string encodeLegacy(std::span<const ArmSample> samples, int level = kDefaultLevel);
+
+  /// The samples of a chunk of the given codec. Throws std::runtime_error naming what is wrong
+  /// (unknown codec, not a zstd frame, truncated, wrong size, bad header, row count other than
+  /// expectedRows); the caller adds which session and chunk.
+  static std::vector<ArmSample> decode(const std::string& frame, std::uint64_t expectedRows,
+                                       std::string_view codec = kName);
 };
 
 }  // namespace armtrack::storage

@@ -280,13 +280,14 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
       throw StorageError(Kind::Corrupt,
                          where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
-    if (q.value(2).toString() != kChunkCodecName)
+    const std::string codec = text(q.value(2).toString());
+    if (!ChunkCodec::knows(codec))
       throw StorageError(Kind::Corrupt,
                          where + "unknown codec '" + text(q.value(2).toString()) + "'");
     const QByteArray blob = q.value(3).toByteArray();
     try {
       auto samples =
-          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong());
+          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong(), codec);
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());

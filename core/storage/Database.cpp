@@ -4,8 +4,11 @@
 #include <QDateTime>
 #include <QFile>
 #include <QFileInfo>
+#include <QSqlDriver>
 #include <QSqlError>
+#include <QSqlField>
 #include <QSqlRecord>
+#include <cmath>
 
 namespace armtrack::storage {
 
@@ -35,30 +38,10 @@ QString utcNow() {
 
 Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
   m_dialect.engine = url.engine;
-  if (url.engine == DatabaseUrl::Engine::Postgres)
-    throw StorageError(Kind::Unsupported,
-                       ("PostgreSQL (" + url.display() +
-                        ") is not yet supported by this build; use a SQLite file for now "
-                        "(--db PATH or --db sqlite:PATH)")
-                           .toStdString());
-  checkFileBeforeOpening(options.create);
-
-  m_connection = nextConnectionName();
-  m_db = QSqlDatabase::addDatabase("QSQLITE", m_connection);
-  if (!m_db.isValid())
-    fail(Kind::Io, "the Qt SQLite driver is not installed", "install libqt6sql6-sqlite");
-  m_db.setDatabaseName(url.path);
-  m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
-  if (!m_db.open()) fail(Kind::Io, "cannot open", m_db.lastError().text());
-  exec("PRAGMA foreign_keys = ON");
-  // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
-  // (only a power cut may lose the last transactions), at one fsync per checkpoint.
-  {
-    QSqlQuery wal = exec("PRAGMA journal_mode = WAL");
-    if (!wal.next() || wal.value(0).toString().toLower() != "wal")
-      fail(Kind::Io, "cannot switch to write-ahead logging", "is the folder writable?");
-  }
-  exec("PRAGMA synchronous = NORMAL");
+  if (isPostgres())
+    openPostgres();
+  else
+    openSqlite(options.create);
 
   m_version = readVersion();
   const int latest = latestSchemaVersion();
@@ -81,6 +64,94 @@ Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
          "it has no schema_version table; create one with 'armtrack-cli db init'");
   for (const MigrationStep& step : migrationSteps())
     if (step.toVersion > m_version) applyStep(step);
+}
+
+void Database::openSqlite(bool create) {
+  checkFileBeforeOpening(create);
+  m_connection = nextConnectionName();
+  m_db = QSqlDatabase::addDatabase("QSQLITE", m_connection);
+  if (!m_db.isValid())
+    fail(Kind::Io, "the Qt SQLite driver is not installed", "install libqt6sql6-sqlite");
+  m_db.setDatabaseName(m_url.path);
+  m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
+  if (!m_db.open()) fail(Kind::Io, "cannot open", m_db.lastError().text());
+  exec("PRAGMA foreign_keys = ON");
+  // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
+  // (only a power cut may lose the last transactions), at one fsync per checkpoint.
+  {
+    QSqlQuery wal = exec("PRAGMA journal_mode = WAL");
+    if (!wal.next() || wal.value(0).toString().toLower() != "wal")
+      fail(Kind::Io, "cannot switch to write-ahead logging", "is the folder writable?");
+  }
+  exec("PRAGMA synchronous = NORMAL");
+}
+
+void Database::openPostgres() {
+  m_connection = nextConnectionName();
+  m_db = QSqlDatabase::addDatabase("QPSQL", m_connection);
+  if (!m_db.isValid())
+    fail(Kind::Unsupported, "needs the Qt PostgreSQL driver, which is not installed",
+         "install libqt6sql6-psql");
+  // An empty host makes libpq use its default socket folder; a host starting with '/' is a
+  // socket folder.
+  if (!m_url.host.isEmpty()) m_db.setHostName(m_url.host);
+  m_db.setPort(m_url.port);
+  m_db.setDatabaseName(m_url.database);
+  if (!m_url.user.isEmpty()) m_db.setUserName(m_url.user);
+  // With no password libpq looks in ~/.pgpass (or PGPASSFILE) itself.
+  const QByteArray password = qgetenv("ARMTRACK_DB_PASSWORD");
+  if (!password.isEmpty()) m_db.setPassword(QString::fromUtf8(password));
+  m_db.setConnectOptions("connect_timeout=10;application_name=armtrack");
+  if (!m_db.open()) explainConnectFailure(m_db.lastError().text());
+  exec("SET client_min_messages = warning");
+  // As SQLite's busy timeout: a statement waiting more than 5 s for another's lock gives up.
+  exec("SET lock_timeout = '5s'");
+}
+
+void Database::explainConnectFailure(const QString& error) {
+  const QString where =
+      m_url.isSocket()
+          ? "the socket in " +
+                (m_url.host.isEmpty() ? QString("libpq's default folder") : m_url.host) +
+                " (port " + QString::number(m_url.port) + ")"
+          : "host " + m_url.host + " port " + QString::number(m_url.port);
+  const QString e = error.simplified();
+  if (e.contains("password authentication failed") || e.contains("no password supplied") ||
+      e.contains("authentication failed"))
+    throw StorageError(
+        Kind::Authentication,
+        ("PostgreSQL refused the password of role '" +
+         (m_url.user.isEmpty() ? QString("(login name)") : m_url.user) + "' at " + where +
+         ": set ARMTRACK_DB_PASSWORD, or a line 'host:port:database:user:password' in "
+         "~/.pgpass (mode 0600) [" +
+         e.left(300) + "]")
+            .toStdString());
+  if (e.contains("does not exist") && e.contains("database"))
+    throw StorageError(Kind::NotFound,
+                       ("PostgreSQL at " + where + " has no database '" + m_url.database +
+                        "': an administrator creates it (createdb -O " +
+                        (m_url.user.isEmpty() ? QString("ROLE") : m_url.user) + " " +
+                        m_url.database + "), then 'armtrack-cli db init'")
+                           .toStdString());
+  if (e.contains("role") && e.contains("does not exist"))
+    throw StorageError(Kind::Authentication,
+                       ("PostgreSQL at " + where + " has no role '" + m_url.user +
+                        "': an administrator creates it (createuser --pwprompt " + m_url.user +
+                        ") [" + e.left(300) + "]")
+                           .toStdString());
+  if (e.contains("pg_hba.conf"))
+    throw StorageError(Kind::Authentication, ("PostgreSQL at " + where +
+                                              " does not let this machine or role in: its "
+                                              "administrator adds a line to pg_hba.conf [" +
+                                              e.left(300) + "]")
+                                                 .toStdString());
+  throw StorageError(
+      Kind::Io,
+      ("cannot reach the PostgreSQL server at " + where + ": is it running (pg_isready" +
+       (m_url.host.isEmpty() ? QString() : " -h " + m_url.host) + " -p " +
+       QString::number(m_url.port) +
+       "), are host and port right, does a firewall let the port through? [" + e.left(300) + "]")
+          .toStdString());
 }
 
 Database::~Database() {
@@ -131,6 +202,22 @@ void Database::checkFileBeforeOpening(bool create) {
 }
 
 int Database::readVersion() {
+  if (isPostgres()) {
+    QSqlQuery q = exec(
+        "SELECT count(*) FROM information_schema.tables WHERE table_schema = current_schema() "
+        "AND table_name = 'schema_version'");
+    if (!q.next() || q.value(0).toInt() == 0) {
+      QSqlQuery any = exec(
+          "SELECT count(*) FROM information_schema.tables WHERE table_schema = "
+          "current_schema()");
+      if (any.next() && any.value(0).toInt() > 0)
+        fail(Kind::Corrupt, "holds tables but is not ArmTrack's",
+             "it has no schema_version table; name another database in --db");
+      return 0;
+    }
+    QSqlQuery v = exec("SELECT max(version) FROM schema_version");
+    return v.next() ? v.value(0).toInt() : 0;
+  }
   QSqlQuery q = exec(
       "SELECT count(*) FROM sqlite_master WHERE type = 'table' AND name = "
       "'schema_version'");
@@ -146,20 +233,47 @@ int Database::readVersion() {
 }
 
 void Database::applyStep(const MigrationStep& step) {
+  bool applied = false;
   transaction([&] {
+    if (isPostgres()) {
+      // Two programs opening an old database at once: the second waits here, then finds the
+      // step done (PostgreSQL's DDL is transactional). SQLite's write lock does the same.
+      exec("SELECT pg_advisory_xact_lock(7261540)");
+      if (readVersion() >= step.toVersion) return;
+    }
+    applied = true;
     for (const QString& s : step.statements) exec(m_dialect.expand(s));
+    for (const QString& s : m_dialect.afterStep(step.toVersion)) exec(s);
     exec("DELETE FROM schema_version");
     exec("INSERT INTO schema_version (version) VALUES (?)", {step.toVersion});
   });
   m_version = step.toVersion;
-  ++m_applied;
+  if (applied) ++m_applied;
 }
 
 QString Database::integrityCheck() {
-  return runIntegrityCheck(m_db);
+  if (!isPostgres()) return runIntegrityCheck(m_db);
+  // The server checks its own pages (checksums, WAL); here: every table answers. A page-level
+  // check of a server is pg_amcheck's job (docs/storage.md).
+  for (const char* table : {"schema_version", "users", "patients", "protocols", "programmes",
+                            "sessions", "recording_chunks", "estimates", "metrics", "audit_log"}) {
+    QSqlQuery q(m_db);
+    if (!q.exec(QString("SELECT count(*) FROM ") + table))
+      return QString(table) + ": " + q.lastError().text();
+  }
+  return "ok";
 }
 
 void Database::backup(const QString& outPath) {
+  if (isPostgres())
+    throw StorageError(
+        Kind::Unsupported,
+        ("'db backup' copies SQLite files; back up PostgreSQL (" + m_url.display() +
+         ") with pg_dump, which takes a consistent snapshot while others write: pg_dump -Fc " +
+         (m_url.host.isEmpty() ? QString() : "-h " + m_url.host + " ") + "-p " +
+         QString::number(m_url.port) + (m_url.user.isEmpty() ? QString() : " -U " + m_url.user) +
+         " -f " + outPath + " " + m_url.database + " (docs/storage.md)")
+            .toStdString());
   if (QFileInfo::exists(outPath))
     throw StorageError(Kind::Exists,
                        ("'" + outPath + "' exists; a backup never replaces a file").toStdString());
@@ -169,31 +283,82 @@ void Database::backup(const QString& outPath) {
 QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
   QSqlQuery q(m_db);
   q.setForwardOnly(true);
-  if (!q.prepare(sql)) fail(Kind::Io, "refused a statement", q.lastError().text());
-  for (const QVariant& b : binds) {
-    // An empty QString() would bind as NULL; text columns mean "" by it.
-    if (b.typeId() == QMetaType::QString && b.toString().isNull())
-      q.addBindValue(QString(""));
-    else
-      q.addBindValue(b);
+  bool ok = false;
+  if (binds.isEmpty()) {
+    // Unprepared: PostgreSQL cannot PREPARE every statement (SET, LOCK), and it saves a round
+    // trip there.
+    ok = q.exec(sql);
+  } else if (isPostgres()) {
+    // QPSQL would PREPARE, EXECUTE with the values formatted by its driver, and DEALLOCATE:
+    // three round trips, and a DEALLOCATE that fails noisily in an aborted transaction. The
+    // same driver formatting inlined gives one.
+    ok = q.exec(inlineValues(sql, binds));
+  } else {
+    if (!q.prepare(sql)) fail(Kind::Io, "refused a statement", q.lastError().text());
+    for (const QVariant& b : binds) {
+      // An empty QString() would bind as NULL; text columns mean "" by it.
+      if (b.typeId() == QMetaType::QString && b.toString().isNull())
+        q.addBindValue(QString(""));
+      else
+        q.addBindValue(b);
+    }
+    ok = q.exec();
   }
-  if (!q.exec()) {
+  if (!ok) {
     QString text = q.lastError().text();
     if (text.contains("database is locked", Qt::CaseInsensitive))
       text +=
           " (another program has been writing to it for more than 5 s; try again, or close "
           "the other program)";
+    if (text.contains("lock timeout", Qt::CaseInsensitive))
+      text +=
+          " (another workstation has held a lock for more than 5 s; try again, or see which "
+          "program holds it: pg_stat_activity)";
     if (text.contains("disk is full", Qt::CaseInsensitive) ||
         text.contains("disk I/O error", Qt::CaseInsensitive))
       text += " (free some space: what was committed before is intact)";
-    const Kind kind =
-        text.contains("UNIQUE constraint", Qt::CaseInsensitive) ? Kind::Exists : Kind::Io;
+    const Kind kind = text.contains("UNIQUE constraint", Qt::CaseInsensitive) ||
+                              text.contains("duplicate key value", Qt::CaseInsensitive)
+                          ? Kind::Exists
+                          : Kind::Io;
     fail(kind, "refused a statement", text);
   }
   return q;
 }
 
+QString Database::inlineValues(const QString& sql, const QVariantList& binds) {
+  QString out;
+  out.reserve(sql.size() + 64 * binds.size());
+  qsizetype next = 0;
+  bool inString = false;
+  for (const QChar c : sql) {
+    if (c == '\'') inString = !inString;
+    if (c != '?' || inString) {
+      out += c;
+      continue;
+    }
+    if (next >= binds.size()) fail(Kind::Io, "refused a statement", "more ? than values");
+    const QVariant& b = binds[next++];
+    QSqlField field(QString(), b.metaType());
+    // An empty QString() would bind as NULL; text columns mean "" by it (as for SQLite).
+    field.setValue(b.typeId() == QMetaType::QString && b.toString().isNull() ? QVariant(QString(""))
+                                                                             : b);
+    // Qt prints -0.0 as "0": spell it so PostgreSQL keeps the sign (a double goes in exact).
+    if (b.typeId() == QMetaType::Double && b.toDouble() == 0.0 && std::signbit(b.toDouble()))
+      out += "'-0'";
+    else
+      out += m_db.driver()->formatValue(field);
+  }
+  if (next != binds.size()) fail(Kind::Io, "refused a statement", "fewer ? than values");
+  return out;
+}
+
 qint64 Database::insert(const QString& sql, const QVariantList& binds) {
+  if (isPostgres()) {  // QPSQL's lastInsertId is an OID, which tables no longer have
+    QSqlQuery q = exec(sql + " RETURNING id", binds);
+    if (!q.next()) fail(Kind::Io, "gave no id for a new row", sql.section(' ', 0, 2));
+    return q.value(0).toLongLong();
+  }
   QSqlQuery q = exec(sql, binds);
   const QVariant id = q.lastInsertId();
   if (!id.isValid()) fail(Kind::Io, "gave no id for a new row", sql.section(' ', 0, 2));

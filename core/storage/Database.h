@@ -23,9 +23,12 @@ class Database {
     bool migrate = false;  ///< bring an older schema up to date (otherwise refused)
   };
 
-  /// Opens url. Throws StorageError: Unsupported (PostgreSQL for now), NotFound (no file and not
-  /// create), Corrupt (not SQLite, or integrity_check fails: the file is left untouched),
-  /// NewerSchema, OlderSchema (unless migrate), Io.
+  /// Opens url. Throws StorageError: NotFound (no file and not create; no such PostgreSQL
+  /// database), Corrupt (not SQLite, or integrity_check fails: the file is left untouched; a
+  /// database with someone else's tables), NewerSchema, OlderSchema (unless migrate),
+  /// Authentication (PostgreSQL refused the role or password), Unsupported (the Qt driver is
+  /// missing), Io (e.g. the server cannot be reached: the message names host and port).
+  /// PostgreSQL: the password comes from ARMTRACK_DB_PASSWORD, else libpq reads ~/.pgpass.
   Database(const DatabaseUrl& url, Options options);
   ~Database();
   Database(const Database&) = delete;
@@ -37,21 +40,30 @@ class Database {
   /// The migration steps applied while opening (0 when the schema was current).
   int migrationsApplied() const { return m_applied; }
 
-  /// Runs PRAGMA integrity_check (SQLite) and returns "ok" or the problems found.
+  bool isPostgres() const { return m_url.engine == DatabaseUrl::Engine::Postgres; }
+
+  /// Runs PRAGMA integrity_check (SQLite; on PostgreSQL every table is read) and returns "ok"
+  /// or the problems found.
   QString integrityCheck();
   /// A consistent copy of the whole database into a new file (SQLite: VACUUM INTO), while others
-  /// may keep writing. Throws StorageError(Exists) when outPath exists.
+  /// may keep writing. Throws StorageError(Exists) when outPath exists, Unsupported on
+  /// PostgreSQL (the message gives the pg_dump command).
   void backup(const QString& outPath);
 
   /// Prepares and runs sql with positional (?) bindings. Throws StorageError(Io) naming the
   /// database and the engine's message (never the bound values: they may be patient data).
   QSqlQuery exec(const QString& sql, const QVariantList& binds = {});
-  /// exec for an INSERT into a table with an {id} key; returns the new id.
+  /// exec for an INSERT into a table with an {id} key; returns the new id (PostgreSQL: through
+  /// RETURNING id).
   qint64 insert(const QString& sql, const QVariantList& binds);
   /// Runs body in a transaction: committed when body returns, rolled back when it throws.
   void transaction(const std::function<void()>& body);
 
  private:
+  QString inlineValues(const QString& sql, const QVariantList& binds);
+  void openSqlite(bool create);
+  void openPostgres();
+  [[noreturn]] void explainConnectFailure(const QString& error);
   void checkFileBeforeOpening(bool create);
   int readVersion();
   void applyStep(const MigrationStep& step);

@@ -4,8 +4,6 @@
 
 namespace armtrack::storage {
 
-const QString kChunkCodecName = QStringLiteral("atc1-zstd");
-
 void writeChunk(Database& db, qint64 sessionId, std::span<const ArmSample> samples) {
   using Kind = StorageError::Kind;
   if (samples.empty()) return;
@@ -16,6 +14,11 @@ void writeChunk(Database& db, qint64 sessionId, std::span<const ArmSample> sampl
   qint64 imu = 0;
   for (const ArmSample& a : samples) imu += a.hasImu() ? 1 : 0;
   db.transaction([&] {
+    // PostgreSQL: a chunk's commit does not wait for its WAL flush, the trade-off SQLite's
+    // synchronous=NORMAL makes: a server crash or power cut may lose the last chunks (up to
+    // ~0.6 s of them), never corrupt the database. Accounts and clinical records keep full
+    // durability: this holds for this transaction only.
+    if (db.isPostgres()) db.exec("SET LOCAL synchronous_commit = off");
     QSqlQuery last = db.exec(
         "SELECT seq, t_last FROM recording_chunks WHERE session_id = ? "
         "ORDER BY seq DESC LIMIT 1",
@@ -31,7 +34,7 @@ void writeChunk(Database& db, qint64 sessionId, std::span<const ArmSample> sampl
         "INSERT INTO recording_chunks (session_id, seq, t_first, t_last, row_count, codec, "
         "data) VALUES (?, ?, ?, ?, ?, ?, ?)",
         {sessionId, seq, samples.front().t, samples.back().t, static_cast<qint64>(samples.size()),
-         kChunkCodecName, QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
+         QString::fromLatin1(ChunkCodec::kName), QByteArray(frame.data(), static_cast<qsizetype>(frame.size()))});
     db.exec(
         "UPDATE sessions SET sample_rows = sample_rows + ?, imu_samples = imu_samples + ?, "
         "duration_s = ? - (SELECT t_first FROM recording_chunks WHERE session_id = ? AND "

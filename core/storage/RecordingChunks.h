@@ -10,10 +10,7 @@
 
 namespace armtrack::storage {
 
-/// Codec name stored with each chunk written now (docs/storage.md, "Recordings").
-extern const QString kChunkCodecName;
-
-/// Stores samples as the next chunk of session sessionId in one transaction and adds them to the
+/// Stores samples (ChunkCodec::encode, codec ChunkCodec::kName) as the next chunk of session sessionId in one transaction and adds them to the
 /// session's row, sample and duration counts. No access check: the caller has made it. Throws
 /// StorageError(Usage) when samples are out of time order or start before the previous chunk
 /// ends; StorageError(Io) when the database refuses the write (nothing of the chunk is kept).

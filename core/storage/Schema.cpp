@@ -16,6 +16,13 @@ QString SqlDialect::expand(QString text) const {
   return text.replace("{id}", idColumn()).replace("{blob}", blobType());
 }
 
+QStringList SqlDialect::afterStep(int toVersion) const {
+  if (engine != DatabaseUrl::Engine::Postgres || toVersion != 1) return {};
+  // zstd frames do not shrink under pglz: skip the attempt (EXTERNAL: out of line, uncompressed).
+  return {"ALTER TABLE recording_chunks ALTER COLUMN data SET STORAGE EXTERNAL",
+          "ALTER TABLE estimates ALTER COLUMN data SET STORAGE EXTERNAL"};
+}
+
 // Times are ISO 8601 UTC text ("2026-11-25T07:05:33.123Z"), which sorts as time and reads the
 // same in both engines. Angles in degrees where a therapist enters them, SI elsewhere.
 // Version 1 must never change once released: tests/core/storage builds a v1 file from a copy.

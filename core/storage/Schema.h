@@ -17,6 +17,9 @@ struct SqlDialect {
   QString blobType() const;  ///< BLOB / BYTEA
   /// text with {id} and {blob} replaced.
   QString expand(QString text) const;
+  /// Engine-only statements run right after migration step toVersion, in its transaction
+  /// (PostgreSQL: chunk data stored without TOAST compression, as it is compressed already).
+  QStringList afterStep(int toVersion) const;
 };
 
 /// One migration: the statements that take a database from version toVersion - 1 to toVersion,

@@ -1,0 +1,220 @@
+// The clinical records on SQLite and on PostgreSQL (a server started here, durable: fsync on):
+// writing a 1 kHz recording of both IMUs plus the Kinect as the recorder does (one ~1 s chunk a
+// transaction), its size against the open-format CSV, opening a database of 1,000 sessions and
+// listing one patient's, and reading a session back.
+// Run: build/tests/benchmarks/bench_storage --benchmark_min_time=1
+// Counters: x_real_time = recorded seconds written (or read) per second; MB_per_hour = stored
+// bytes for an hour of recording; vs_csv = stored bytes / CSV bytes.
+#include <benchmark/benchmark.h>
+
+#include <QCoreApplication>
+#include <QTemporaryDir>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "core/io/Recording.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
+#include "core/storage/ChunkCodec.h"
+#include "core/storage/ClinicalStore.h"
+#include "tests/support/PostgresServer.h"
+
+namespace armtrack::storage {
+namespace {
+
+constexpr double kSeconds = 60.0;  // one minute per iteration; per hour is scaled by 60
+constexpr const char* kPassword = "bench password";
+
+enum Engine { kSqlite = 0, kPostgresSocket = 1, kPostgresTcp = 2 };
+
+// One minute at 1 kHz: both IMUs with the paper's noise (Table 5), the Kinect at 30 Hz, no
+// true angles (a clinical recording has none). CSV size from the open-format writer.
+struct Minute {
+  Recording rec;
+  double csvBytes = 0;
+  QTemporaryDir dir;
+  std::filesystem::path csv;
+  Minute() {
+    SimulationParams sim;
+    sim.duration = kSeconds;
+    sim.upperArm.gyroNoiseStd = sim.forearm.gyroNoiseStd = Table5::gyroStd();
+    sim.upperArm.accelNoiseStd = sim.forearm.accelNoiseStd = Table5::accelStd();
+    sim.includeTruth = false;
+    TrajectoryOptions options;
+    options.seed = 11;
+    const auto trajectory = makeTrajectory("multi-joint", options);
+    csv = dir.filePath("minute.csv").toStdString();
+    writeRecording(csv, simulateRecording(*trajectory, sim));
+    rec = readRecording(csv);  // bit for bit what the CSV holds
+    csvBytes = static_cast<double>(std::filesystem::file_size(csv));
+    // The same chunks in the previous format, and the least any lossless coder can spend on
+    // the IMU values: each is a smooth signal plus Gaussian noise of std sigma, so at best
+    // log2(sigma / ulp) + log2(sqrt(2 pi e)) bits (the differential entropy of the noise,
+    // quantised to the double's spacing).
+    std::size_t begin = 0;
+    const auto& samples = rec.samples;
+    while (begin < samples.size()) {
+      std::size_t end = begin;
+      while (end < samples.size() && samples[end].t < samples[begin].t + 1.0) ++end;
+      legacyBytes += static_cast<double>(
+          ChunkCodec::encodeLegacy(std::span<const ArmSample>(samples.data() + begin, end - begin))
+              .size());
+      begin = end;
+    }
+    const double gauss = 0.5 * std::log2(2.0 * M_PI * M_E);
+    auto bound = [&](double v, double sigma) {
+      const double ulp = std::nextafter(std::fabs(v), INFINITY) - std::fabs(v);
+      return std::max(0.0, std::log2(sigma / ulp) + gauss) / 8.0;
+    };
+    for (const ArmSample& a : samples)
+      for (const auto* imu : {&a.upperArm, &a.forearm})
+        if (*imu)
+          for (int i = 0; i < 3; ++i)
+            imuFloorBytes += bound((*imu)->gyr[i], Table5::gyroStd()) +
+                             bound((*imu)->acc[i], Table5::accelStd());
+  }
+  double legacyBytes = 0;
+  double imuFloorBytes = 0;
+};
+
+const Minute& minute() {
+  static const Minute m;
+  return m;
+}
+
+armtrack::test::PostgresServer& server() {
+  static armtrack::test::PostgresServer s(/*durable=*/true);
+  return s;
+}
+
+// A new database of the engine with an administrator and one patient, signed in.
+struct Db {
+  QTemporaryDir dir;
+  std::unique_ptr<Database> db;
+  std::unique_ptr<ClinicalStore> store;
+  explicit Db(int engine) {
+    static int counter = 0;
+    QString url = dir.filePath("bench.db");
+    if (engine != kSqlite) {
+      const QString name = QString("bench%1").arg(counter++);
+      url = server().createDatabase(name);
+      if (engine == kPostgresTcp) {
+        url = server().tcpUrl(name);
+        qputenv("ARMTRACK_DB_PASSWORD", armtrack::test::PostgresServer::kPassword);
+      }
+    }
+    db = std::make_unique<Database>(DatabaseUrl::parse(url), Database::Options{true, false});
+    store = std::make_unique<ClinicalStore>(*db);
+    store->initialise("admin", kPassword);
+    store->signIn("admin", kPassword);
+    Patient p;
+    p.code = "P1";
+    p.name = "Bench";
+    store->addPatient(p);
+  }
+};
+
+// Writes the minute as the live recorder does: one chunk per second, each its own transaction.
+qint64 writeMinute(ClinicalStore& store) {
+  const auto& samples = minute().rec.samples;
+  const qint64 id = store.beginSession("P1", "", "{}", 0);
+  std::size_t begin = 0;
+  while (begin < samples.size()) {
+    std::size_t end = begin;
+    while (end < samples.size() && samples[end].t < samples[begin].t + 1.0) ++end;
+    store.appendChunk(id, std::span<const ArmSample>(samples.data() + begin, end - begin));
+    begin = end;
+  }
+  store.finishSession(id);
+  return id;
+}
+
+void BM_WriteRecording(benchmark::State& state) {
+  Db d(static_cast<int>(state.range(0)));
+  qint64 stored = 0;
+  for (auto _ : state) stored = d.store->session(writeMinute(*d.store)).storedBytes;
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["MB_per_hour"] = static_cast<double>(stored) * 3600.0 / kSeconds / 1e6;
+  state.counters["CSV_MB_per_hour"] = minute().csvBytes * 3600.0 / kSeconds / 1e6;
+  state.counters["vs_csv"] = static_cast<double>(stored) / minute().csvBytes;
+  state.counters["vs_csv_atc1"] = minute().legacyBytes / minute().csvBytes;
+  state.counters["imu_floor_vs_csv"] = minute().imuFloorBytes / minute().csvBytes;
+}
+BENCHMARK(BM_WriteRecording)
+    ->ArgName("engine")  // 0 SQLite, 1 PostgreSQL socket, 2 PostgreSQL TCP loopback
+    ->Arg(kSqlite)
+    ->Arg(kPostgresSocket)
+    ->Arg(kPostgresTcp)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_ReadRecording(benchmark::State& state) {
+  Db d(static_cast<int>(state.range(0)));
+  const qint64 id = d.store->importRecording(minute().csv, "P1");
+  for (auto _ : state) benchmark::DoNotOptimize(d.store->readRecording(id).samples.size());
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_ReadRecording)
+    ->ArgName("engine")
+    ->Arg(kSqlite)
+    ->Arg(kPostgresSocket)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Opening (SQLite: with its integrity check) and listing one patient's 20 sessions among
+// 1,000 sessions of 50 patients; the Argon2id sign-in, slow on purpose, is not timed.
+void BM_OpenAndListSessions(benchmark::State& state) {
+  Db d(static_cast<int>(state.range(0)));
+  for (int p = 2; p <= 50; ++p) {
+    Patient patient;
+    patient.code = QString("P%1").arg(p);
+    patient.name = "Bench";
+    d.store->addPatient(patient);
+  }
+  d.db->transaction([&] {
+    for (int i = 0; i < 1000; ++i)
+      d.db->exec("INSERT INTO sessions (patient_id, started_at, status) VALUES (?, ?, 'complete')",
+                 {1 + i % 50, QString("2026-01-01T00:%1:00.000Z").arg(i % 60, 2, 10, QChar('0'))});
+  });
+  const DatabaseUrl url = d.db->url();
+  d.store.reset();
+  d.db.reset();
+  std::size_t listed = 0;
+  for (auto _ : state) {
+    Database db(url, {});
+    ClinicalStore store(db);
+    state.PauseTiming();
+    store.signIn("admin", kPassword);
+    state.ResumeTiming();
+    listed = store.listSessions("P7").size();
+  }
+  state.counters["sessions_listed"] = static_cast<double>(listed);
+}
+BENCHMARK(BM_OpenAndListSessions)
+    ->ArgName("engine")
+    ->Arg(kSqlite)
+    ->Arg(kPostgresSocket)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(20);
+
+}  // namespace
+}  // namespace armtrack::storage
+
+int main(int argc, char** argv) {
+  QCoreApplication app(argc, argv);  // Qt Sql finds its driver plugins through it
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  try {
+    benchmark::RunSpecifiedBenchmarks();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_storage: %s\n", e.what());
+    return 1;
+  }
+  benchmark::Shutdown();
+  return 0;
+}

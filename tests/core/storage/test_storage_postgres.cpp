@@ -1,0 +1,223 @@
+// PostgreSQL only: URL forms (socket folders), connection failures that say what to check, the
+// password from ARMTRACK_DB_PASSWORD or a password file, pg_dump instead of `db backup`, two
+// workstations on one record, and a recording stored and read back bit for bit. The server is
+// started by the test itself (tests/support/PostgresServer); when it cannot start, these fail.
+#include <gtest/gtest.h>
+
+#include <QFile>
+#include <cstdlib>
+
+#include "tests/core/storage/StorageTestSupport.h"
+
+using namespace armtrack;
+using namespace armtrack::storage;
+using namespace armtrack::storage::test;
+using armtrack::test::PostgresServer;
+using Kind = StorageError::Kind;
+
+namespace {
+
+StorageError expectError(const std::function<void()>& f, Kind kind) {
+  try {
+    f();
+  } catch (const StorageError& e) {
+    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
+    return e;
+  }
+  ADD_FAILURE() << "no StorageError";
+  return StorageError(Kind::Io, "");
+}
+
+bool contains(const StorageError& e, const char* text) {
+  return std::string(e.what()).find(text) != std::string::npos;
+}
+
+// Sets (or, with nullptr, removes) an environment variable for one scope.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : m_name(name) {
+    if (const char* old = std::getenv(name)) m_old = old, m_had = true;
+    value ? ::setenv(name, value, 1) : ::unsetenv(name);
+  }
+  ~ScopedEnv() { m_had ? ::setenv(m_name, m_old.c_str(), 1) : ::unsetenv(m_name); }
+
+ private:
+  const char* m_name;
+  std::string m_old;
+  bool m_had = false;
+};
+
+}  // namespace
+
+TEST(DatabaseUrl, PostgresSocketForms) {
+  const DatabaseUrl encoded = DatabaseUrl::parse("postgresql://clinic@%2Frun%2Fpostgresql/rec");
+  EXPECT_EQ(encoded.host, "/run/postgresql");
+  EXPECT_TRUE(encoded.isSocket());
+  EXPECT_EQ(encoded.database, "rec");
+  EXPECT_EQ(encoded.port, 5432);
+  const DatabaseUrl query = DatabaseUrl::parse("postgres://clinic@/rec?host=/tmp/pg&port=5440");
+  EXPECT_EQ(query.host, "/tmp/pg");
+  EXPECT_EQ(query.port, 5440);
+  EXPECT_EQ(query.user, "clinic");
+  const DatabaseUrl none = DatabaseUrl::parse("postgresql:///rec");
+  EXPECT_TRUE(none.host.isEmpty());
+  EXPECT_TRUE(none.isSocket());
+  EXPECT_FALSE(DatabaseUrl::parse("postgresql://u@db.local/rec").isSocket());
+  EXPECT_EQ(DatabaseUrl::parse("postgresql://u@[::1]:5433/rec").host, "::1");
+  expectError([] { DatabaseUrl::parse("postgresql://u@h:99999/rec"); }, Kind::Usage);
+  expectError([] { DatabaseUrl::parse("postgresql://u@h/rec?password=x"); }, Kind::Usage);
+  expectError([] { DatabaseUrl::parse("postgresql://u@h/rec?sslmode=x"); }, Kind::Usage);
+  expectError([] { DatabaseUrl::parse("postgresql://u@h;rm/rec"); }, Kind::Usage);
+}
+
+TEST(Postgres, ServerDownSaysWhichHostAndPortAndWhatToCheck) {
+  // Port 1 on the loopback: nothing listens there, so the connection is refused at once.
+  const StorageError e = expectError(
+      [] {
+        Database db(DatabaseUrl::parse("postgresql://nobody@127.0.0.1:1/rec"), {true, false});
+      },
+      Kind::Io);
+  EXPECT_TRUE(contains(e, "host 127.0.0.1 port 1")) << e.what();
+  EXPECT_TRUE(contains(e, "pg_isready")) << e.what();
+  const StorageError s = expectError(
+      [] { Database db(DatabaseUrl::parse("postgresql://nobody@/rec?host=/nonexistent"), {}); },
+      Kind::Io);
+  EXPECT_TRUE(contains(s, "/nonexistent")) << s.what();
+}
+
+TEST(Postgres, MissingDatabaseIsNotFound) {
+  PostgresServer& server = PostgresServer::shared();
+  const QString url = server.createDatabase("exists_here");
+  QString other = url;
+  other.replace("/exists_here?", "/not_here?");
+  const StorageError e = expectError(
+      [&] {
+        Database db(DatabaseUrl::parse(other), {true, false});
+      },
+      Kind::NotFound);
+  EXPECT_TRUE(contains(e, "createdb")) << e.what();
+}
+
+TEST(Postgres, PasswordFromEnvironmentOrPasswordFile) {
+  PostgresServer& server = PostgresServer::shared();
+  server.createDatabase("pw");
+  const DatabaseUrl tcp = DatabaseUrl::parse(server.tcpUrl("pw"));
+  QTemporaryDir dir;
+  const QString passFile = dir.filePath("pgpass");
+  ScopedEnv noFile("PGPASSFILE", passFile.toLocal8Bit().constData());  // not the user's own
+
+  {
+    ScopedEnv none("ARMTRACK_DB_PASSWORD", nullptr);
+    expectError([&] { Database db(tcp, {true, false}); }, Kind::Authentication);
+  }
+  {
+    ScopedEnv wrong("ARMTRACK_DB_PASSWORD", "not-the-password");
+    const StorageError e = expectError(
+        [&] {
+          Database db(tcp, {true, false});
+        },
+        Kind::Authentication);
+    EXPECT_TRUE(contains(e, PostgresServer::kRole)) << e.what();
+    EXPECT_FALSE(contains(e, "not-the-password")) << e.what();
+  }
+  {
+    ScopedEnv right("ARMTRACK_DB_PASSWORD", PostgresServer::kPassword);
+    Database db(tcp, {true, false});
+    EXPECT_EQ(db.schemaVersion(), latestSchemaVersion());
+  }
+  {
+    // libpq reads the password file itself when no password is given (mode 0600 or it is
+    // ignored).
+    QFile f(passFile);
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(QString("127.0.0.1:%1:pw:%2:%3\n")
+                .arg(server.port())
+                .arg(PostgresServer::kRole, PostgresServer::kPassword)
+                .toUtf8());
+    f.close();
+    f.setPermissions(QFile::ReadOwner | QFile::WriteOwner);
+    ScopedEnv none("ARMTRACK_DB_PASSWORD", nullptr);
+    Database db(tcp, {});
+    EXPECT_EQ(db.schemaVersion(), latestSchemaVersion());
+  }
+}
+
+TEST(Postgres, BackupPointsToPgDump) {
+  Fixture f(Engine::Postgres);
+  const StorageError e =
+      expectError([&] { f.db->backup(f.dir.filePath("b.dump")); }, Kind::Unsupported);
+  EXPECT_TRUE(contains(e, "pg_dump -Fc")) << e.what();
+  EXPECT_EQ(f.db->integrityCheck(), "ok");
+}
+
+TEST(Postgres, ForeignTablesAreRefused) {
+  QTemporaryDir dir;
+  const QString url = newDatabase(Engine::Postgres, dir, "foreign");
+  rawSql(url, {"CREATE TABLE t (x INTEGER)"});
+  expectError([&] { Database db(DatabaseUrl::parse(url), {true, true}); }, Kind::Corrupt);
+}
+
+TEST(Postgres, TwoWorkstationsShareOneRecord) {
+  Fixture a(Engine::Postgres);
+  Database second(DatabaseUrl::parse(a.path), {});
+  ClinicalStore b(second);
+  b.signIn("admin", kAdminPassword);
+  a.store->addPatient(makePatient("SHARED"));
+  ASSERT_EQ(b.listPatients().size(), 1u);
+  expectError([&] { b.addPatient(makePatient("SHARED")); }, Kind::Exists);
+  // A failed statement inside a transaction leaves the connection usable (rolled back).
+  b.addPatient(makePatient("SECOND"));
+  EXPECT_EQ(a.store->listPatients().size(), 2u);
+}
+
+TEST(Postgres, RecordingIsStoredAndReadBackBitForBit) {
+  Fixture f(Engine::Postgres);
+  f.store->addPatient(makePatient("P1"));
+  const auto csv = f.file("rec.csv");
+  simulateTo(csv, 5.0);
+  const qint64 id = f.store->importRecording(csv, "P1");
+  const SessionInfo s = f.store->session(id);
+  EXPECT_EQ(s.status, kStatusComplete);
+  EXPECT_GE(s.chunks, 5);
+  EXPECT_GT(s.storedBytes, 0);
+  const auto exported = f.file("exported.csv");
+  f.store->exportRecording(id, exported);
+  EXPECT_EQ(fileBytes(exported), fileBytes(csv));  // every double and the sidecar, exactly
+  EXPECT_EQ(fileBytes(sidecarPath(exported)), fileBytes(sidecarPath(csv)));
+  f.store->removeSession(id);
+  QSqlQuery left = f.db->exec("SELECT count(*) FROM recording_chunks");
+  ASSERT_TRUE(left.next());
+  EXPECT_EQ(left.value(0).toInt(), 0);
+}
+
+// A recorder that died mid-session (its pid no longer exists on this host) leaves a session that
+// the next opening marks interrupted, on PostgreSQL as on SQLite.
+TEST(Postgres, DeadRecorderSessionIsMarkedInterrupted) {
+  Fixture f(Engine::Postgres);
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = f.store->beginSession("P1", "", "{}", 0);
+  // Above Linux's largest pid (4194304): no process has it.
+  f.db->exec("UPDATE sessions SET recorder_pid = 4194399 WHERE id = ?", {id});
+  ClinicalStore reopened(*f.db);
+  EXPECT_EQ(reopened.interruptedOnOpen(), 1);
+  reopened.signIn("admin", kAdminPassword);
+  EXPECT_EQ(reopened.session(id).status, kStatusInterrupted);
+}
+
+// A workstation holding a row lock does not hang another forever: after 5 s the waiting
+// statement gives up with a message saying what happened; the holder's work commits.
+TEST(Postgres, LockHeldByAnotherWorkstationTimesOutClearly) {
+  Fixture a(Engine::Postgres);
+  a.store->addPatient(makePatient("LOCKED"));
+  Database second(DatabaseUrl::parse(a.path), {});
+  ClinicalStore b(second);
+  b.signIn("admin", kAdminPassword);
+  Patient edited = b.patient("LOCKED");
+  edited.notes = "from b";
+  a.db->transaction([&] {
+    a.db->exec("UPDATE patients SET notes = 'from a' WHERE code = 'LOCKED'");
+    const StorageError e = expectError([&] { b.updatePatient(edited); }, Kind::Io);
+    EXPECT_TRUE(contains(e, "more than 5 s")) << e.what();
+  });
+  EXPECT_EQ(b.patient("LOCKED").notes, "from a");
+}

@@ -1,0 +1,53 @@
+// A throw-away PostgreSQL server for tests and benchmarks: initdb into a temporary folder, postgres
+// listening on a Unix socket in that folder and on a free loopback port, stopped and removed on
+// destruction. Runs the server binaries as the `postgres` account when the tests run as root
+// (PostgreSQL refuses to run as root).
+#pragma once
+
+#include <QString>
+#include <memory>
+#include <stdexcept>
+
+namespace armtrack::test {
+
+class PostgresServer {
+ public:
+  /// The role the tests connect as (trust on the socket; password kPassword over TCP).
+  static constexpr const char* kRole = "armtrack_test";
+  static constexpr const char* kPassword = "test-pass-8472";
+
+  /// Starts the server. fsync off makes the tests quicker; benchmarks pass true. Throws
+  /// std::runtime_error saying why when it cannot (no binaries, initdb or start failed: the
+  /// server log's tail is in the message).
+  explicit PostgresServer(bool durable = false);
+  ~PostgresServer();
+  PostgresServer(const PostgresServer&) = delete;
+  PostgresServer& operator=(const PostgresServer&) = delete;
+
+  /// One server per test process, started on first use (the same throw as the constructor).
+  static PostgresServer& shared();
+
+  /// Creates a fresh, empty database owned by kRole and returns its --db URL over the socket
+  /// (`postgresql://armtrack_test@/NAME?host=DIR&port=PORT`).
+  QString createDatabase(const QString& name);
+  /// The same database over TCP on 127.0.0.1 (password authentication).
+  QString tcpUrl(const QString& database) const;
+  /// Runs SQL as the superuser in database (for building old schemas); throws on failure.
+  void superuserSql(const QString& database, const QStringList& statements);
+
+  QString socketDir() const { return m_dir; }
+  int port() const { return m_port; }
+  /// The bin folder used (initdb, pg_ctl, postgres).
+  QString binDir() const { return m_bin; }
+
+ private:
+  void start(bool durable);
+  void stop();
+  QString run(const QString& program, const QStringList& args, int timeoutMs = 120000);
+  QString m_bin, m_dir, m_data;
+  int m_port = 0;
+  bool m_asPostgresUser = false;
+  bool m_started = false;
+};
+
+}  // namespace armtrack::test
