@@ -362,23 +362,26 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   std::string where = o.out;
   bool finishFailed = false;
   if (toDb) {
-    // Complete, also after Ctrl-C (the user ended it); if the status cannot be written the
-    // session stays "recording" and is marked interrupted when the database is next opened.
+    // Complete, also after Ctrl-C (the user ended it), when every row is stored; interrupted
+    // when rows were lost. If the status cannot be written the session stays "recording" and is
+    // marked interrupted when the database is next opened.
     where = "session " + std::to_string(sessionId);
-    try {
-      records->store().finishSession(sessionId, QString::fromLatin1(storage::kStatusComplete));
-    } catch (const std::exception& e) {
-      err << "armtrack-cli: error: cannot mark " << where << " complete: " << e.what()
-          << "; it will be marked interrupted when the database is next opened\n";
-      finishFailed = true;
-    }
-    if (!finishFailed && s.recorderError.empty())
-      analyseNewSession(records->store(), sessionId, "record", err);
     try {
       onDisk = static_cast<std::uint64_t>(records->store().session(sessionId).sampleRows);
     } catch (const std::exception& e) {
       unreadable = e.what();
     }
+    const bool whole = onDisk && *onDisk == s.rowsToRecord;
+    try {
+      records->store().finishSession(
+          sessionId,
+          QString::fromLatin1(whole ? storage::kStatusComplete : storage::kStatusInterrupted));
+    } catch (const std::exception& e) {
+      err << "armtrack-cli: error: cannot close " << where << ": " << e.what()
+          << "; it will be marked interrupted when the database is next opened\n";
+      finishFailed = true;
+    }
+    if (whole && !finishFailed) analyseNewSession(records->store(), sessionId, "record", err);
   } else if (!o.out.empty()) {
     try {
       onDisk = rowsInRecording(o.out);
