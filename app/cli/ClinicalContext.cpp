@@ -3,6 +3,7 @@
 #include <termios.h>
 #include <unistd.h>
 
+#include <charconv>
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
@@ -26,6 +27,15 @@ ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options optio
   m_db = std::make_unique<storage::Database>(url, options);
   m_store = std::make_unique<storage::ClinicalStore>(*m_db);
   if (signIn) m_store->signIn(qs(user), passwordFromUser("account '" + user + "'"));
+}
+
+qint64 sessionIdArgument(const Args& a) {
+  const std::string text = a.single("session id");
+  qint64 id = 0;
+  const auto r = std::from_chars(text.data(), text.data() + text.size(), id);
+  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || id <= 0)
+    a.fail("session id: expected a positive whole number, got \"" + text + "\"");
+  return id;
 }
 
 std::string passwordFromUser(const std::string& what) {

@@ -34,6 +34,9 @@ class ClinicalContext {
   std::unique_ptr<storage::ClinicalStore> m_store;
 };
 
+/// The one positional argument, a session id (a positive whole number); a usage error otherwise.
+qint64 sessionIdArgument(const Args& a);
+
 /// ARMTRACK_PASSWORD, else a prompt on the terminal (echo off) when standard input is one; throws
 /// std::runtime_error saying how to give it otherwise. what names the account, for the prompt.
 std::string passwordFromUser(const std::string& what);

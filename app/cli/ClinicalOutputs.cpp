@@ -4,7 +4,6 @@
 #include <QJsonArray>
 #include <QJsonObject>
 #include <algorithm>
-#include <charconv>
 #include <memory>
 
 #include "app/cli/Clinical.h"
@@ -48,15 +47,6 @@ csv, mot and bids use the session's newest analysis (session reestimate makes a 
 Every export is written to the audit log. docs/exports.md describes the formats.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
-
-qint64 positiveId(const Args& a) {
-  const std::string text = a.single("session id");
-  qint64 id = 0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), id);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || id <= 0)
-    a.fail("session id: expected a positive whole number, got \"" + text + "\"");
-  return id;
-}
 
 /// Reports draw text, which needs a QGuiApplication; the command line has no display, so it uses
 /// the offscreen platform unless told otherwise.
@@ -170,7 +160,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     a.fail("give a session id or --patient with --from and --to, not both");
   if (!progress && (a.value("--from") || a.value("--to")))
     a.fail("--from and --to: only with --patient");
-  const qint64 id = progress ? 0 : positiveId(a);
+  const qint64 id = progress ? 0 : sessionIdArgument(a);
   checkOutputPath(pdf, a.flag("--overwrite"), /*recording=*/false);
   const std::unique_ptr<QGuiApplication> gui = guiApplication();
   ClinicalContext c(a, {}, true);
@@ -181,7 +171,7 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   const Args a("export", args,
                withDb({{"--format", true}, {"--out", true}, {"--overwrite", false}}));
   if (a.help()) return out << kExportHelp, 0;
-  const qint64 id = positiveId(a);
+  const qint64 id = sessionIdArgument(a);
   const std::string format = a.required("--format");
   const std::string target = a.required("--out");
   if (format != "recording" && format != "csv" && format != "mot" && format != "bids")

@@ -2,7 +2,6 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
-#include <charconv>
 
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
@@ -41,15 +40,6 @@ constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --
 The audit log: who created, changed, viewed or exported what, and when (administrators only).
 --db URL as for every database command (password: ARMTRACK_PASSWORD).
 )";
-
-qint64 sessionId(const Args& a) {
-  const std::string text = a.single("session id");
-  qint64 id = 0;
-  const auto r = std::from_chars(text.data(), text.data() + text.size(), id);
-  if (r.ec != std::errc() || r.ptr != text.data() + text.size() || id <= 0)
-    a.fail("session id: expected a positive whole number, got \"" + text + "\"");
-  return id;
-}
 
 QJsonObject sessionJson(const storage::SessionInfo& s) {
   return QJsonObject{{"id", s.id},
@@ -111,7 +101,7 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
 int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session reestimate", rest, withDb({{"--filter", true}, {"--no-optical", false}}));
   if (a.help()) return out << kSessionHelp, 0;
-  const qint64 id = sessionId(a);
+  const qint64 id = sessionIdArgument(a);
   storage::AnalysisOptions options;
   if (const auto f = a.value("--filter")) {
     if (*f == "ekf")
@@ -183,7 +173,7 @@ void printMetrics(std::ostream& out, const QJsonObject& m) {
 int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
   const Args a("session show", rest, withDb({{"--json", false}}));
   if (a.help()) return out << kSessionHelp, 0;
-  const qint64 id = sessionId(a);
+  const qint64 id = sessionIdArgument(a);
   ClinicalContext c(a, {}, true);
   const storage::SessionInfo s = c.store().session(id);
   const std::optional<QJsonObject> metrics = storage::latestMetricsJson(c.store(), id);
