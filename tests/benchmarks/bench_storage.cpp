@@ -1,7 +1,8 @@
 // The clinical records on SQLite and on PostgreSQL (a server started here, durable: fsync on):
 // writing a 1 kHz recording of both IMUs plus the Kinect as the recorder does (one ~1 s chunk a
 // transaction), its size against the open-format CSV, opening a database of 1,000 sessions and
-// listing one patient's, and reading a session back.
+// listing one patient's, reading a session back, and re-estimating a session read from the
+// database against the same recording read from its CSV.
 // Run: build/tests/benchmarks/bench_storage --benchmark_min_time=1
 // Counters: x_real_time = recorded seconds written (or read) per second; MB_per_hour = stored
 // bytes for an hour of recording; vs_csv = stored bytes / CSV bytes.
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/estimation/RecordingEstimator.h"
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
@@ -162,6 +164,34 @@ BENCHMARK(BM_ReadRecording)
     ->ArgName("engine")
     ->Arg(kSqlite)
     ->Arg(kPostgresSocket)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// Re-estimating a recording (EKF, Method A, Kinect fused, the library defaults) read from its
+// CSV (source 0) or from the records (1 SQLite, 2 PostgreSQL socket): reading plus estimating,
+// as `estimate` and `session reestimate` do; storing the estimates is not timed.
+void BM_Reestimate(benchmark::State& state) {
+  const int source = static_cast<int>(state.range(0));
+  std::unique_ptr<Db> d;
+  qint64 id = 0;
+  if (source != 0) {
+    d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
+    id = d->store->importRecording(minute().csv, "P1");
+  }
+  std::size_t rows = 0;
+  for (auto _ : state) {
+    const Recording rec = source == 0 ? readRecording(minute().csv) : d->store->readRecording(id);
+    rows = estimateRecording(rec, estimatorParamsFor(rec.meta, EstimateOptions{})).estimates;
+  }
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["estimates"] = static_cast<double>(rows);
+}
+BENCHMARK(BM_Reestimate)
+    ->ArgName("source")  // 0 CSV, 1 SQLite, 2 PostgreSQL socket
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
