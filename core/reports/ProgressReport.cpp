@@ -16,10 +16,6 @@ QString angleName(int i) {
   return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
 }
 
-QString orDash(const QString& s) {
-  return s.trimmed().isEmpty() ? QStringLiteral("-") : s;
-}
-
 std::optional<double> deg(const std::optional<double>& rad) {
   return rad ? std::optional<double>(*rad * kRadToDeg) : std::nullopt;
 }
@@ -97,10 +93,7 @@ int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
   const QString period = QStringLiteral("%1 to %2").arg(orDash(d.fromDate), orDash(d.toDate));
   const QString head =
       QStringLiteral("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
-  const QDateTime at = d.generatedAt.isValid() ? d.generatedAt : QDateTime::currentDateTimeUtc();
-  const QString footer = QStringLiteral("%1 - progress report - generated %2")
-                             .arg(orDash(d.patient.name),
-                                  at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  const QString footer = pageFooter(d.patient.name, QStringLiteral("progress report"), d.generatedAt);
   return writePdf(pdfPath, QStringLiteral("Progress report: %1, %2").arg(d.patient.name, period),
                   head, footer, [&](PageWriter& w) { draw(w, d, sessions); });
 }

@@ -72,6 +72,17 @@ QString formatDateTime(const QString& iso) {
                      : iso;
 }
 
+QString orDash(const QString& s) {
+  return s.trimmed().isEmpty() ? QStringLiteral("-") : s;
+}
+
+QString pageFooter(const QString& patientName, const QString& kind, const QDateTime& generatedAt) {
+  const QDateTime at = generatedAt.isValid() ? generatedAt : QDateTime::currentDateTimeUtc();
+  return QStringLiteral("%1 - %2 - generated %3")
+      .arg(orDash(patientName), kind,
+           at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+}
+
 QString formatDuration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return QStringLiteral("-");
   if (seconds < 60) return QString::number(seconds, 'f', 1) + QStringLiteral(" s");

@@ -9,6 +9,11 @@
 
 namespace armtrack::reports {
 
+/// s, or "-" when s is empty or blank.
+QString orDash(const QString& s);
+/// The running foot of every page: "<name> - <kind> - generated YYYY-MM-DD HH:MM UTC", at
+/// generatedAt, or now when it is invalid.
+QString pageFooter(const QString& patientName, const QString& kind, const QDateTime& generatedAt);
 /// Degrees with one decimal ("85.2"); "-" for an empty or non-finite value.
 QString formatDeg(std::optional<double> deg);
 /// An ISO 8601 date or date-time as "YYYY-MM-DD" (UTC); the text itself if it does not parse.

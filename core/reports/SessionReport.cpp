@@ -25,10 +25,6 @@ std::optional<int> angleIndex(const QString& key) {
   return std::nullopt;
 }
 
-QString orDash(const QString& s) {
-  return s.trimmed().isEmpty() ? QStringLiteral("-") : s;
-}
-
 QString measuredSide(const SessionReportData& d) {
   if (!d.side.isEmpty()) return d.side;
   const QString fromCalibration = jsonString(d.session.calibrationJson, QStringLiteral("side"));
@@ -276,10 +272,7 @@ int writeSessionReport(const SessionReportData& d, const QString& pdfPath) {
   const QString date = formatDate(d.session.startedAt);
   const QString head =
       QStringLiteral("%1 (%2), session of %3").arg(orDash(d.patient.name), d.patient.code, date);
-  const QDateTime at = d.generatedAt.isValid() ? d.generatedAt : QDateTime::currentDateTimeUtc();
-  const QString footer = QStringLiteral("%1 - session report - generated %2")
-                             .arg(orDash(d.patient.name),
-                                  at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  const QString footer = pageFooter(d.patient.name, QStringLiteral("session report"), d.generatedAt);
   return writePdf(pdfPath, QStringLiteral("Session report: %1, %2").arg(d.patient.name, date), head,
                   footer, [&](PageWriter& w) {
                     w.title(QStringLiteral("Session report"));

@@ -15,6 +15,7 @@
 #include <QString>
 #include <QStringList>
 #include <QTemporaryDir>
+#include <iostream>
 #include <ostream>
 #include <vector>
 
@@ -207,5 +208,25 @@ inline SessionReportData sessionData(const SimulatedSession& sim) {
   d.generatedAt = QDateTime::fromString("2026-11-25T10:00:00Z", Qt::ISODate);
   return d;
 }
+
+/// A report test: a GUI application, the poppler tools (skipped, naming the package, when they
+/// are missing) and a temporary folder for the PDFs. ARMTRACK_KEEP_REPORTS=1 keeps the folder
+/// to look at (its path is printed).
+class ReportTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ensureGuiApp();
+    if (const std::string tool = missingPdfTool(); !tool.empty())
+      GTEST_SKIP() << tool
+                   << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
+    ASSERT_TRUE(dir.isValid());
+    if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
+      dir.setAutoRemove(false);
+      std::cout << "reports kept in " << dir.path().toStdString() << std::endl;
+    }
+  }
+  QString path(const QString& name) const { return dir.filePath(name); }
+  QTemporaryDir dir;
+};
 
 }  // namespace armtrack::reports::test

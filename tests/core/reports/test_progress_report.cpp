@@ -12,22 +12,7 @@ namespace {
 
 using namespace test;
 
-class ProgressReport : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ensureGuiApp();
-    if (const std::string tool = missingPdfTool(); !tool.empty())
-      GTEST_SKIP() << tool
-                   << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
-    ASSERT_TRUE(dir.isValid());
-    // ARMTRACK_KEEP_REPORTS=1 keeps the PDFs and PNGs to look at (the folder is printed).
-    if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
-      dir.setAutoRemove(false);
-      std::cout << "reports kept in " << dir.path().toStdString() << std::endl;
-    }
-  }
-  QTemporaryDir dir;
-};
+class ProgressReport : public ReportTest {};
 
 ProgressReportData progressData() {
   ProgressReportData d;

@@ -26,23 +26,7 @@ const QStringList kSections = {"Session report",
                                "Comparison with earlier sessions",
                                "Therapist's notes"};
 
-class SessionReport : public ::testing::Test {
- protected:
-  void SetUp() override {
-    ensureGuiApp();
-    if (const std::string tool = missingPdfTool(); !tool.empty())
-      GTEST_SKIP() << tool
-                   << " not found (Debian package poppler-utils, packaging/deps-debian12.sh)";
-    ASSERT_TRUE(dir.isValid());
-    // ARMTRACK_KEEP_REPORTS=1 keeps the PDFs and PNGs to look at (the folder is printed).
-    if (qEnvironmentVariableIsSet("ARMTRACK_KEEP_REPORTS")) {
-      dir.setAutoRemove(false);
-      std::cout << "reports kept in " << dir.path().toStdString() << std::endl;
-    }
-  }
-  QString path(const QString& name) const { return dir.filePath(name); }
-  QTemporaryDir dir;
-};
+class SessionReport : public ReportTest {};
 
 /// The numbers on the line of the metrics table that starts with `name`.
 std::vector<double> metricsRow(const QString& page, const QString& name) {
