@@ -220,9 +220,8 @@ class ArmFilter final : public JointEstimator {
 
   static PlausibilityLimits gateLimits(const EstimatorParams& p) {
     PlausibilityLimits l = p.plausibility;
-    l.maxReach = std::min(
-        l.maxReach,
-        PlausibilityLimits::forGeometry(p.geometry.l3, p.geometry.l6).maxReach);
+    l.maxReach = std::min(l.maxReach,
+                          PlausibilityLimits::forGeometry(p.geometry.l3, p.geometry.l6).maxReach);
     return l;
   }
 
@@ -392,7 +391,11 @@ class ArmFilter final : public JointEstimator {
     remember(clean);
     if (m_fitAt && m_t >= *m_fitAt) {
       m_fitAt.reset();
-      if (refitFromWindow(m_t0)) return UpdateResult::Recovered;
+      if (refitFromWindow(m_t - m_p.fitWindowSeconds)) return UpdateResult::Recovered;
+      // Not taken: the window may have held the tail of a fault, or the motion was too fast for
+      // the seeds. Try the next window while start-up lasts.
+      if (m_t + m_p.fitWindowSeconds - m_t0 < m_p.startupSeconds)
+        m_fitAt = m_t + m_p.fitWindowSeconds;
     }
     if (lost()) return recover(clean);
     return UpdateResult::Accepted;
@@ -591,9 +594,14 @@ class ArmFilter final : public JointEstimator {
                            : m_p.jointAccelVariance;
     for (int j = 0; j < kNumJoints; ++j)
       if (m_p.activeJoints[j]) m_P(j, j) += std::max(var, m_matchedQ(j)) * dt / m_p.referenceStep;
+    // The heading random walk is a turn of the whole arm about the vertical: in joint space its
+    // variance grows with the squared joint-space length of a unit turn, which is large near the
+    // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
     const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
-    m_P.template topLeftCorner<kBase, kBase>() += m_p.headingVarianceRate * dt * v * v.transpose();
-    m_headingFloor += m_p.headingVarianceRate * dt;
+    const double turnRate =
+        headingTurnRate() * headingGenerator(m_x.template segment<5>(10), m_up).squaredNorm();
+    m_P.template topLeftCorner<kBase, kBase>() += turnRate * dt * v * v.transpose();
+    m_headingFloor += turnRate * dt;
     if constexpr (kAugmented) {
       const double qb = m_p.bodyAccelVariance * (1.0 - phiB * phiB);
       for (int i = kBase; i < N; ++i) m_P(i, i) += qb;
@@ -650,8 +658,7 @@ class ArmFilter final : public JointEstimator {
   // factor L of S = H P H^T + R, the gain applied to the innovation left by the blocks before,
   // and the symmetric rank-M downdate P -= V^T V with V = L^-1 H P, which keeps P symmetric.
   // Returns false when some S is not positive definite.
-  bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p,
-                        Vec& dx) {
+  bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p, Vec& dx) {
     dx.setZero();
     m_updateNis = 0.0;
     m_updateDof = 0;
@@ -678,14 +685,57 @@ class ArmFilter final : public JointEstimator {
     const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
     const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
     if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
+    if (m_headingBlind.active && !isOptical(b.block[i])) {
+      // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
+      // say nothing about the turn of the arm about the vertical, so their gain must not move the
+      // state along it. The optimal gain would, through P's correlations, whenever the motion
+      // outruns the process model (at the start and end of a fast reach the joint accelerations
+      // jump), and every such step stays, because nothing but optics can undo it. The gain has
+      // its heading component removed and P follows that gain exactly (Joseph form).
+      const Eigen::Matrix<double, N, M> k = llt.solve(w).transpose();
+      const Eigen::Matrix<double, N, M> kb =
+          k - m_headingBlind.v * (m_headingBlind.u.transpose() * k);
+      dx.noalias() += kb * r;
+      p += kb * sj * kb.transpose() - kb * w - w.transpose() * kb.transpose();
+      p = 0.5 * (p + p.transpose()).eval();
+      return true;
+    }
     dx.noalias() += w.transpose() * sr;
     const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
     p.noalias() -= v.transpose().lazyProduct(v);
     return true;
   }
 
+  // The heading is a symmetry of the IMU readings only when the whole arm can turn about the
+  // vertical: all three shoulder joints free (the paper's one-segment studies hold two fixed).
+  bool headingIsFree() const {
+    return m_p.activeJoints[0] && m_p.activeJoints[1] && m_p.activeJoints[2];
+  }
+
+  double headingTurnRate() const {
+    if (!headingIsFree()) return 0.0;
+    return m_p.model == MeasurementModel::AccelGyro ? m_p.headingVarianceRate
+                                                    : m_p.inclinometerHeadingVarianceRate;
+  }
+
+  // Whether IMU updates are heading-blind now, and the directions they use: v the full-state
+  // heading symmetry, u the unit heading direction among the angles (u . v = 1). From the start,
+  // so that without optics the heading stays the start pose's, as documented, instead of taking
+  // a random turn while start-up settles. Only for Method A: B and C leave body acceleration out
+  // of their model, so their IMU innovations carry model error whose correlations with the
+  // heading the filter needs to bleed off.
+  void prepareHeadingBlind() {
+    m_headingBlind.active =
+        m_p.headingBlindImuUpdates && headingIsFree() && m_p.model == MeasurementModel::AccelGyro;
+    if (!m_headingBlind.active) return;
+    m_headingBlind.v.setZero();
+    m_headingBlind.v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
+    m_headingBlind.u = headingAngles(m_x);
+  }
+
   bool ekfUpdate(const BlockList& b) {
     const int iterations = m_t - m_t0 < m_p.startupSeconds ? std::max(1, m_p.startupIterations) : 1;
+    prepareHeadingBlind();
     const Vec x0 = m_x;
     Vec xi = m_x, dx;
     MeasVec h;
@@ -712,8 +762,23 @@ class ArmFilter final : public JointEstimator {
   bool ukfUpdate(const BlockList& b, bool& outOfView) {
     // Scaled unscented transform, alpha = 1, beta = 2, kappa = 0: positive weights 1/(2N).
     constexpr int kPoints = 2 * N + 1;
-    Eigen::LLT<Mat> llt(static_cast<double>(N) * m_P);
+    prepareHeadingBlind();
+    // A heading-blind IMU-only update spreads its sigma points without the heading: the state is
+    // split as x = d + a v (a = u . x the heading, d the rest, u . d = 0), the readings depend on
+    // d alone, and the sigma points follow d's covariance Pi P Pi^T with Pi = I - v u^T. Spread
+    // along a straight line in joint space by the tens of degrees an arm without optics has in
+    // heading, they would only measure how that line leaves the curved symmetry.
+    const bool conditioned = m_headingBlind.active && !b.anyOptical();
+    Mat spread = m_P;
+    Mat pi = Mat::Identity();
+    if (conditioned) {
+      pi -= m_headingBlind.v * m_headingBlind.u.transpose();
+      spread = pi * m_P * pi.transpose();
+      spread.diagonal().array() += 1e-12;
+    }
+    Eigen::LLT<Mat> llt(static_cast<double>(N) * spread);
     if (llt.info() != Eigen::Success) {
+      if (conditioned) return false;
       repairCovariance();
       llt.compute(static_cast<double>(N) * m_P);
       if (llt.info() != Eigen::Success) return false;
@@ -747,14 +812,17 @@ class ArmFilter final : public JointEstimator {
       pxz += w * l.col(i) * (dp - dm).transpose();
     }
     // The unscented transform's equivalent linearisation H = Pxz^T P^-1 gets the same heading
-    // projection as the EKF's Jacobian; the rest of Pzz (nonlinearity) is kept.
-    const Eigen::LLT<Mat> pl(m_P);
-    if (pl.info() != Eigen::Success) return false;
-    Jac hs = pl.solve(pxz).transpose();
-    const MeasMat linearPart = hs * m_P * hs.transpose();
-    if (projectHeading(m_x, b, hs)) {
-      pzz += hs * m_P * hs.transpose() - linearPart;
-      pxz = m_P * hs.transpose();
+    // projection as the EKF's Jacobian; the rest of Pzz (nonlinearity) is kept. (Sigma points
+    // conditioned on the heading already see none of it.)
+    if (!conditioned) {
+      const Eigen::LLT<Mat> pl(m_P);
+      if (pl.info() != Eigen::Success) return false;
+      Jac hs = pl.solve(pxz).transpose();
+      const MeasMat linearPart = hs * m_P * hs.transpose();
+      if (projectHeading(m_x, b, hs)) {
+        pzz += hs * m_P * hs.transpose() - linearPart;
+        pxz = m_P * hs.transpose();
+      }
     }
     pzz.diagonal() += b.variance;
     const Eigen::LLT<MeasMat> sl(pzz);
@@ -764,7 +832,31 @@ class ArmFilter final : public JointEstimator {
       m_updateNis = nu.dot(sl.solve(nu));
       m_updateDof = m;
     }
-    const Gain k = sl.solve(pxz.transpose()).transpose();
+    if (conditioned) {
+      // pxz is d's cross-covariance; the whole state's follows from the linearisation it implies,
+      // H^T = cov(d)^-1 pxz on d, that is P Pi^T H^T. The gain is then d's: the heading stays.
+      const Eigen::LLT<Mat> dl(spread);
+      if (dl.info() != Eigen::Success) return false;
+      const Gain full = m_P * pi.transpose() * dl.solve(pxz);
+      const Gain k = sl.solve(pxz.transpose()).transpose();
+      m_x += k * (b.z - zMean);
+      m_P += k * pzz * k.transpose() - k * full.transpose() - full * k.transpose();
+      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      return true;
+    }
+    Gain k = sl.solve(pxz.transpose()).transpose();
+    if (m_headingBlind.active) {
+      // The IMU rows' gain leaves the heading alone (see blockUpdate); P follows the gain used.
+      for (int i = 0; i < b.count; ++i) {
+        if (isOptical(b.block[i])) continue;
+        auto cols = k.middleCols(b.offset[i], b.size[i]);
+        cols -= m_headingBlind.v * (m_headingBlind.u.transpose() * cols);
+      }
+      m_x += k * (b.z - zMean);
+      m_P += k * pzz * k.transpose() - k * pxz.transpose() - pxz * k.transpose();
+      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      return true;
+    }
     m_x += k * (b.z - zMean);
     m_P -= k * pzz * k.transpose();
     return true;
@@ -920,16 +1012,40 @@ class ArmFilter final : public JointEstimator {
   // start pose there (rates from the gyroscopes). When the window holds no optical data but an
   // optical fix set the heading, only the running state: the fit cannot see the heading, and
   // the single-sample pose would bring the start-up prior's heading back.
+  static bool anyOptical(const std::vector<ArmSample>& w) {
+    for (const ArmSample& r : w)
+      if (r.elbow || r.wrist || r.camWrist || r.camElbow) return true;
+    return false;
+  }
+
   std::vector<Vec15> fitSeeds(const ArmSample& last, const std::vector<ArmSample>& w) const {
     std::vector<Vec15> seeds{m_x.template head<kBase>()};
-    bool optical = false;
-    for (const ArmSample& r : w) optical = optical || r.elbow || r.wrist || r.camWrist || r.camElbow;
-    if (!optical && std::isfinite(m_lastOpticalT)) return seeds;
+    if (!anyOptical(w) && std::isfinite(m_lastOpticalT)) return seeds;
     const InitialPose pose = initialPose(m_p, last);
     Vec15 x = Vec15::Zero();
     x.template segment<5>(5) = pose.thd;
     x.template segment<5>(10) = pose.th;
     seeds.push_back(x);
+    // The pose at the window's latest optical frame, with the IMU readings just before it, carried
+    // to the window's end at its gyroscope rates: optical positions pin the upper arm and the
+    // elbow where a single IMU sample in fast motion (gravity hidden in body acceleration) cannot.
+    for (auto it = w.rbegin(); it != w.rend(); ++it) {
+      if (!(it->elbow || it->wrist || it->camWrist || it->camElbow)) continue;
+      ArmSample merged = *it;
+      for (auto imu = it; imu != w.rend(); ++imu) {
+        if (!imu->hasImu()) continue;
+        merged.upperArm = imu->upperArm;
+        merged.forearm = imu->forearm;
+        break;
+      }
+      if (!merged.hasImu()) break;
+      const InitialPose at = initialPose(m_p, merged);
+      Vec15 y = Vec15::Zero();
+      y.template segment<5>(5) = at.thd;
+      y.template segment<5>(10) = at.th + at.thd * (last.t - it->t);
+      seeds.push_back(y);
+      break;
+    }
     return seeds;
   }
 
@@ -939,10 +1055,26 @@ class ArmFilter final : public JointEstimator {
     std::vector<Vec15> states;
     const std::vector<ArmSample> w = recentSince(since, &states);
     if (w.size() < 2) return false;
-    const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back(), w));
-    if (!fit.ok || !(fit.rms < kGoodFitRms) || !inAnatomicalRange(fit.x)) return false;
+    // A window without optical data after an optical fix: the fit cannot see the heading, so it
+    // holds the running state's (the fix's), and the heading keeps the variance it had.
+    std::optional<JointVector> anchor;
+    if (!anyOptical(w) && std::isfinite(m_lastOpticalT)) anchor = m_x.template segment<5>(10);
+    const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back(), w), anchor);
+    if (!fit.explains(kGoodFitRms) || !inAnatomicalRange(fit.x)) return false;
     if (!(fit.rms < kRefitGain * trajectoryRms(m_p, w, states))) return false;
+    const Vec u = headingAngles(m_x);
+    const double headingVar = u.dot(m_P * u) + headingShortfall(u);
     takeFit(fit, w);
+    if (anchor) {
+      // The start covariance without optics spreads the heading over the start-up prior's 30 deg;
+      // the anchored fit kept the fix's heading, so P keeps the fix's heading variance instead.
+      startCovariance(true);
+      Vec v = Vec::Zero();
+      v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
+      m_P += headingVar * v * v.transpose();
+      m_headingFloor = headingVar;
+      finishUpdate();
+    }
     ++m_counters.startupRefits;
     return true;
   }
@@ -952,7 +1084,8 @@ class ArmFilter final : public JointEstimator {
   void takeFit(const WindowFitResult& fit, const std::vector<ArmSample>& w) {
     m_x.template head<kBase>() = fit.x;
     bool optical = false;
-    for (const ArmSample& r : w) optical = optical || r.elbow || r.wrist || (r.camWrist && r.camElbow);
+    for (const ArmSample& r : w)
+      optical = optical || r.elbow || r.wrist || (r.camWrist && r.camElbow);
     startCovariance(optical);
     finishUpdate();
   }
@@ -989,7 +1122,7 @@ class ArmFilter final : public JointEstimator {
     initialise(last);  // fresh covariance, start-up noise and iterations, a new start-up fit
     if (w.size() >= 2) {
       const WindowFitResult fit = fitWindow(m_p, w, seeds);
-      if (fit.ok && fit.rms < kGoodFitRms && inAnatomicalRange(fit.x)) takeFit(fit, w);
+      if (fit.explains(kGoodFitRms) && inAnatomicalRange(fit.x)) takeFit(fit, w);
     }
     remember(last);
     return UpdateResult::Recovered;
@@ -1077,22 +1210,28 @@ class ArmFilter final : public JointEstimator {
   double m_lastSeenT = 0.0;
   double m_lastDataT = 0.0;  // time of the last sample whose readings were fused (s)
   double m_lastOpticalT = 0.0;
-  static constexpr double kRefitGain = 0.7;  // a start-up fit must explain the data this much better
+  static constexpr double kRefitGain =
+      0.7;  // a start-up fit must explain the data this much better
   static constexpr double kGoodFitRms = 3.0;  // whitened residual RMS of a fit worth taking
-  std::deque<Vec15> m_recentStates;  // the filter's state after each of m_recent
-  bool m_opticalDisagrees = false;   // an optical point was gated many frames in a row
+  std::deque<Vec15> m_recentStates;           // the filter's state after each of m_recent
+  bool m_opticalDisagrees = false;            // an optical point was gated many frames in a row
   JointVector m_matchedQ = JointVector::Zero();
   std::deque<ArmSample> m_recent;    // fused samples of the last fitWindowSeconds
   std::optional<double> m_fitAt;     // when the start-up window fit is due (s)
   std::optional<double> m_badSince;  // start of a run of inconsistent IMU updates (s)
   double m_updateNis = 0.0;          // normalised innovation squared of the last update (IMU rows)
-  int m_updateDof = 0;  // matched joint-acceleration noise, (rad/s^2)^2
-  double m_headingFloor = 0.0;  // least variance along the heading while IMU-only (rad^2)
-  double m_headingMatch = 0.0;  // heading variance the optical innovations ask for (rad^2)
-  double m_turnSquared = 0.0;   // running mean of the squared turn the optics ask for (rad^2)
-  double m_turnNoise = 0.0;     // ... and of its variance from optical noise alone (rad^2)
+  int m_updateDof = 0;               // matched joint-acceleration noise, (rad/s^2)^2
+  double m_headingFloor = 0.0;       // least variance along the heading while IMU-only (rad^2)
+  double m_headingMatch = 0.0;       // heading variance the optical innovations ask for (rad^2)
+  double m_turnSquared = 0.0;        // running mean of the squared turn the optics ask for (rad^2)
+  double m_turnNoise = 0.0;          // ... and of its variance from optical noise alone (rad^2)
   double m_lastMatchT = -std::numeric_limits<double>::infinity();
   static constexpr double kMaxHeadingMatch = (60.0 * kDeg) * (60.0 * kDeg);
+  struct HeadingBlind {
+    bool active = false;
+    Vec v = Vec::Zero();              // full-state heading symmetry (its angle part is u)
+    Vec u = Vec::Zero();              // unit heading direction among the angles
+  } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
@@ -1125,8 +1264,7 @@ BatchResult estimateSamples(const std::vector<ArmSample>& samples, const Estimat
   out.estimates.reserve(samples.size());
   for (const ArmSample& s : samples) {
     const UpdateResult r = filter->update(s);
-    if (hasEstimate(r) && s.hasImu())
-      out.estimates.push_back(filter->estimate());
+    if (hasEstimate(r) && s.hasImu()) out.estimates.push_back(filter->estimate());
   }
   out.counters = filter->counters();
   return out;

@@ -69,14 +69,28 @@ struct EstimatorParams {
   double maxJointAccelVariance = (1000.0 * kDeg) * (1000.0 * kDeg);
   /// GM-1 correlation time of the joint accelerations (s). Infinity gives eq. 3's identity block.
   double jointAccelCorrelationTime = std::numeric_limits<double>::infinity();
-  /// Random-walk variance rate along the unobservable heading direction (rad^2/s): keeps the
-  /// filter willing to accept optical heading corrections (docs/estimator.md, "Heading").
-  double headingVarianceRate = (1.0 * kDeg) * (1.0 * kDeg);
+  /// Random walk of the arm's heading, as a turn of the whole arm about the vertical (rad^2/s of
+  /// turn; in joint space it grows near the shoulder's gimbal lock, where a small turn moves
+  /// flexion and rotation far). It keeps the filter willing to accept optical heading
+  /// corrections (docs/estimator.md, "Heading"). Method A's heading only drifts by gyroscope
+  /// noise and linearisation, so its rate is small: (0.17 deg)^2/s.
+  double headingVarianceRate = 0.03 * kDeg * kDeg;
+  /// The same for Methods B and C, whose accelerometer model leaves body acceleration out: the
+  /// tilt errors that leaves turn into heading errors as the arm rotates. 1 (deg)^2/s.
+  double inclinometerHeadingVarianceRate = 1.0 * kDeg * kDeg;
+  /// Heading-blind IMU updates (Method A, all three shoulder joints active, after start-up): the
+  /// gyroscopes and accelerometers say nothing about the arm's turn about the vertical, so their
+  /// updates leave the state's heading where it is (a Schmidt update along that one direction)
+  /// instead of moving it through the covariance's correlations, which at the start and end of
+  /// a fast reach turned the arm by several degrees that only optics could take back
+  /// (docs/estimator.md, "Heading"). Off reproduces the plain EKF and UKF.
+  bool headingBlindImuUpdates = true;
   /// Heading matching (s): the turn about the vertical that the optical data ask for, averaged
   /// over this time, sets the least heading variance before each optical update, so a heading
   /// error left by a fast movement is corrected in a few frames and shows in the standard
-  /// deviation (docs/estimator.md, "Heading"). 0 turns it off.
-  double headingMatchTime = 0.1;
+  /// deviation (docs/estimator.md, "Heading"). Six Kinect frames at 30 Hz: one noisy frame alone
+  /// does not open the heading up. 0 turns it off.
+  double headingMatchTime = 0.2;
 
   double gyroVariance = 0.1 * kDeg * kDeg;  ///< (rad/s)^2, Table 5: 0.1 (deg/s)^2
   double accelVariance = 1e-2;              ///< (m/s^2)^2, Table 5
@@ -200,10 +214,10 @@ struct EstimatorCounters {
   std::uint64_t skippedUpdates = 0;     ///< updates skipped: innovation covariance not invertible
   std::uint64_t covarianceRepairs = 0;  ///< covariance re-symmetrised / jittered to stay PD
   std::uint64_t restarts = 0;           ///< restarts after a gap longer than maxGap
-  std::uint64_t coasted = 0;  ///< rows whose readings were all refused, predicted through
-  std::uint64_t recoveries = 0;     ///< re-initialisations after the arm was lost
-  std::uint64_t startupRefits = 0;  ///< start-up states replaced by the window fit
-  std::uint64_t limitedStates = 0;  ///< estimates projected back into the anatomical range
+  std::uint64_t coasted = 0;            ///< rows whose readings were all refused, predicted through
+  std::uint64_t recoveries = 0;         ///< re-initialisations after the arm was lost
+  std::uint64_t startupRefits = 0;      ///< start-up states replaced by the window fit
+  std::uint64_t limitedStates = 0;      ///< estimates projected back into the anatomical range
   std::uint64_t opticalUpdates = 0;     ///< optical position blocks fused (Kinect)
   std::uint64_t cameraUpdates = 0;      ///< marker pixels fused (webcam)
   std::uint64_t rejectedOutliers = 0;   ///< pixels and positions dropped by the innovation gate

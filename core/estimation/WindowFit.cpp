@@ -16,6 +16,8 @@ using Vec15 = Eigen::Matrix<double, 15, 1>;
 // polynomial represents a whole minimum-jerk reach (degree 5) and the smooth turn between two,
 // where a cubic would bend the data to fit.
 constexpr int kCoeffs = 8;
+// A sample whose whitened residual exceeds this per row on average is an outlier of the fit.
+constexpr double kOutlierSigma = 5.0;
 
 // d[th'' th' th]_j / d(coefficients of joint j) at tau.
 Eigen::Matrix<double, 3, kCoeffs> stateOfCoeffs(double tau, double span) {
@@ -71,7 +73,9 @@ class SampleCost final : public ceres::CostFunction {
     for (int j = 0; j < kNumJoints; ++j) mutable_parameter_block_sizes()->push_back(kCoeffs);
   }
 
-  int rows() const { return 3 * static_cast<int>(m_blocks.size()) + 2 * static_cast<int>(m_pixels.size()); }
+  int rows() const {
+    return 3 * static_cast<int>(m_blocks.size()) + 2 * static_cast<int>(m_pixels.size());
+  }
 
   bool Evaluate(double const* const* params, double* residuals, double** jacobians) const override {
     const Vec15 x = stateAt(params, m_tau, m_span);
@@ -124,7 +128,9 @@ class SampleCost final : public ceres::CostFunction {
     Eigen::Vector2d z;
     double sigma;
   };
-  void add(int offset, const Eigen::Vector3d& z, double sigma) { m_blocks.push_back({offset, z, sigma}); }
+  void add(int offset, const Eigen::Vector3d& z, double sigma) {
+    m_blocks.push_back({offset, z, sigma});
+  }
 
   const EstimatorParams& m_p;
   double m_tau, m_span;
@@ -168,7 +174,8 @@ double spanOf(const std::vector<ArmSample>& window) {
 // residual rows.
 int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
                  const std::vector<ArmSample>& window, int maxImuSamples,
-                 std::array<std::array<double, kCoeffs>, kNumJoints>& coeffs) {
+                 std::array<std::array<double, kCoeffs>, kNumJoints>& coeffs,
+                 std::vector<const SampleCost*>& costs) {
   const double tEnd = window.back().t;
   const double span = spanOf(window);
   std::vector<double*> blocks;
@@ -189,6 +196,7 @@ int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
         auto* cost = new SampleCost(p, s, tau, span, true);
         if (cost->rows() > 0) {
           rows += cost->rows();
+          costs.push_back(cost);
           // Huber on the sample's whitened norm: a reading the motion cannot explain at all
           // (an undetected glitch) pulls linearly, not quadratically.
           problem.AddResidualBlock(cost, new ceres::HuberLoss(3.0 * std::sqrt(cost->rows())),
@@ -202,6 +210,7 @@ int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
     auto* optical = new SampleCost(p, s, tau, span, false);
     if (optical->rows() > 0) {
       rows += optical->rows();
+      costs.push_back(optical);
       problem.AddResidualBlock(optical, new ceres::HuberLoss(3.0), blocks);
     } else {
       delete optical;
@@ -242,13 +251,14 @@ WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSa
   for (const Vec15& seed : seeds) {
     auto coeffs = coeffsOf(params, seed, spanOf(window));
     ceres::Problem problem;
-    const int rows = buildProblem(problem, params, window, maxImuSamples, coeffs);
+    std::vector<const SampleCost*> costs;  // owned by the problem
+    const int rows = buildProblem(problem, params, window, maxImuSamples, coeffs, costs);
     if (rows == 0) return best;
     if (headingAnchor) {
       std::vector<double*> blocks;
       for (auto& c : coeffs) blocks.push_back(c.data());
-      problem.AddResidualBlock(new HeadingAnchor(*headingAnchor, params.gUp.normalized()),
-                               nullptr, blocks);
+      problem.AddResidualBlock(new HeadingAnchor(*headingAnchor, params.gUp.normalized()), nullptr,
+                               blocks);
     }
     ceres::Solver::Options opt;
     opt.linear_solver_type = ceres::DENSE_QR;
@@ -266,7 +276,28 @@ WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSa
     for (int j = 0; j < kNumJoints; ++j) best.x(10 + j) = wrapAngle(best.x(10 + j));
     best.ok = true;
     best.residuals = rows;
-    best.rms = std::sqrt(2.0 * summary.final_cost / rows);
+    // The RMS over the samples the motion explains: a sample whose whitened residual is beyond
+    // kOutlierSigma per row on average (a glitch the Huber loss already discounted) is counted,
+    // not averaged in, so a few bad readings in the window cannot hide a good fit.
+    double inlierSum = 0.0;
+    int inlierRows = 0;
+    best.outlierSamples = 0;
+    for (const SampleCost* cost : costs) {
+      Eigen::VectorXd r(cost->rows());
+      if (!cost->Evaluate(ptrs.data(), r.data(), nullptr)) {
+        ++best.outlierSamples;
+        continue;
+      }
+      if (r.squaredNorm() > kOutlierSigma * kOutlierSigma * cost->rows()) {
+        ++best.outlierSamples;
+        continue;
+      }
+      inlierSum += r.squaredNorm();
+      inlierRows += cost->rows();
+    }
+    best.samples = static_cast<int>(costs.size());
+    best.rms = inlierRows > 0 ? std::sqrt(inlierSum / inlierRows)
+                              : std::numeric_limits<double>::infinity();
   }
   return best;
 }
@@ -285,7 +316,8 @@ double trajectoryRms(const EstimatorParams& params, const std::vector<ArmSample>
       const SampleCost cost(params, window[i], 0.0, 1.0, imu);
       if (cost.rows() == 0) continue;
       Eigen::VectorXd r(cost.rows());
-      if (!cost.Evaluate(ptrs.data(), r.data(), nullptr)) return std::numeric_limits<double>::infinity();
+      if (!cost.Evaluate(ptrs.data(), r.data(), nullptr))
+        return std::numeric_limits<double>::infinity();
       sum += r.squaredNorm();
       rows += cost.rows();
     }

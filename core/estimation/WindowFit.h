@@ -19,10 +19,18 @@ struct WindowFitResult {
   bool ok = false;                                       ///< the solver converged from some seed
   Eigen::Matrix<double, 15, 1> x = decltype(x)::Zero();  ///< [th'' th' th] at tEnd
   double tEnd = 0.0;                                     ///< s
-  /// Root mean square of the whitened residuals (1 when the motion explains the data to within
-  /// the sensors' stated noise; large when it does not).
+  /// Root mean square of the whitened residuals of the samples the motion explains (1 when it
+  /// explains them to within the sensors' stated noise; large when it does not). Samples whose
+  /// residual is beyond 5 sigma per row on average are outliers: counted, not averaged in.
   double rms = 0.0;
-  int residuals = 0;  ///< number of residual rows used
+  int residuals = 0;       ///< number of residual rows used
+  int samples = 0;         ///< residual blocks (IMU samples and optical frames) in the fit
+  int outlierSamples = 0;  ///< of which outliers
+  /// Whether the fit explains the window: an RMS below `goodRms` with at most a fifth of the
+  /// samples outliers.
+  bool explains(double goodRms) const {
+    return ok && rms < goodRms && 5 * outlierSamples <= samples;
+  }
 };
 
 /// Fits th(t) as a cubic per active joint over `window` (time-ordered samples already in the
