@@ -7,6 +7,7 @@
 #include <QString>
 #include <QVariant>
 #include <functional>
+#include <memory>
 
 #include "core/storage/DatabaseUrl.h"
 #include "core/storage/Schema.h"
@@ -75,6 +76,9 @@ class Database {
   QSqlDatabase m_db;
   int m_version = 0;
   int m_applied = 0;
+  /// SQLite: counts this connection among the process's connections to its file while it is
+  /// open (Database.cpp says why).
+  std::shared_ptr<void> m_fileHold;
 };
 
 /// Now as ISO 8601 UTC text with milliseconds, the form every time column holds.

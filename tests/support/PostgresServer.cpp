@@ -14,6 +14,7 @@
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <QStandardPaths>
 #include <cstdlib>
 
@@ -176,6 +177,18 @@ QString PostgresServer::run(const QString& program, const QStringList& args, int
 }
 
 void PostgresServer::superuserSql(const QString& database, const QStringList& statements) {
+  run(database, statements, nullptr);
+}
+
+std::vector<QVariantList> PostgresServer::superuserQuery(const QString& database,
+                                                         const QString& sql) {
+  std::vector<QVariantList> rows;
+  run(database, {sql}, &rows);
+  return rows;
+}
+
+void PostgresServer::run(const QString& database, const QStringList& statements,
+                         std::vector<QVariantList>* rows) {
   const QString name = connectionName();
   QString error;
   {
@@ -193,6 +206,11 @@ void PostgresServer::superuserSql(const QString& database, const QStringList& st
         if (!q.exec(s)) {
           error = "'" + s.left(200) + "' failed: " + q.lastError().text();
           break;
+        }
+        while (rows && q.next()) {
+          QVariantList row;
+          for (int i = 0; i < q.record().count(); ++i) row << q.value(i);
+          rows->push_back(row);
         }
       }
       db.close();

@@ -5,8 +5,10 @@
 #pragma once
 
 #include <QString>
+#include <QVariantList>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 namespace armtrack::test {
 
@@ -34,6 +36,8 @@ class PostgresServer {
   QString tcpUrl(const QString& database) const;
   /// Runs SQL as the superuser in database (for building old schemas); throws on failure.
   void superuserSql(const QString& database, const QStringList& statements);
+  /// Runs one query as the superuser in database and returns its rows; throws on failure.
+  std::vector<QVariantList> superuserQuery(const QString& database, const QString& sql);
 
   QString socketDir() const { return m_dir; }
   int port() const { return m_port; }
@@ -44,6 +48,7 @@ class PostgresServer {
   void start(bool durable);
   void stop();
   QString run(const QString& program, const QStringList& args, int timeoutMs = 120000);
+  void run(const QString& database, const QStringList& statements, std::vector<QVariantList>* rows);
   QString m_bin, m_dir, m_data;
   int m_port = 0;
   bool m_asPostgresUser = false;
