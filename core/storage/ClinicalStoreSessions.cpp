@@ -1,6 +1,7 @@
 // Sessions, their recordings (compressed chunks), estimates and metrics of ClinicalStore.
 #include <unistd.h>
 #include <QFile>
+#include <QJsonDocument>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <cerrno>
@@ -100,26 +101,34 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
 }
 
 qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& protocolName,
-                                   const QString& calibrationJson, int columnsMask) {
+                                   const QString& calibrationJson, int columnsMask,
+                                   const SessionSettings& settings) {
+  for (const auto& [name, json] : {std::pair{"devices", &settings.devicesJson},
+                                   std::pair{"filter settings", &settings.filterJson}})
+    if (!QJsonDocument::fromJson(json->toUtf8()).isObject())
+      throw StorageError(Kind::Usage,
+                         std::string("a session's ") + name + " must be a JSON object");
   const qint64 patientId = visiblePatientId(patientCode);
   const std::optional<qint64> protocol = protocolId(protocolName);
   qint64 id = 0;
   m_db.transaction([&] {
     id = m_db.insert(
-        "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, "
-        "calibration_json, status, columns_mask, recorder_host, recorder_pid) "
-        "VALUES (?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
+        "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, devices_json, "
+        "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
         {patientId, isStaff() ? QVariant(user().id) : QVariant(),
-         protocol ? QVariant(*protocol) : QVariant(), utcNow(), calibrationJson, columnsMask,
-         QSysInfo::machineHostName(), static_cast<qint64>(::getpid())});
+         protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
+         calibrationJson, settings.filterJson, columnsMask, QSysInfo::machineHostName(),
+         static_cast<qint64>(::getpid())});
     audit("create", "session", QString::number(id), "patient " + patientCode);
   });
   return id;
 }
 
 qint64 ClinicalStore::beginRecording(const QString& patientCode, const QString& protocolName,
-                                     const RecordingMeta& meta, const RecordingColumns& columns) {
-  return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns));
+                                     const RecordingMeta& meta, const RecordingColumns& columns,
+                                     const SessionSettings& settings) {
+  return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns), settings);
 }
 
 RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
@@ -129,8 +138,7 @@ RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
 QString ClinicalStore::userName(qint64 userId) {
   require(isStaff(), "reading account names");
   QSqlQuery q = m_db.exec("SELECT name FROM users WHERE id = ?", {userId});
-  if (!q.next())
-    throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
+  if (!q.next()) throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
   return q.value(0).toString();
 }
 
@@ -286,8 +294,8 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
                          where + "unknown codec '" + text(q.value(2).toString()) + "'");
     const QByteArray blob = q.value(3).toByteArray();
     try {
-      auto samples =
-          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong(), codec);
+      auto samples = ChunkCodec::decode(std::string(blob.constData(), blob.size()),
+                                        q.value(1).toULongLong(), codec);
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());

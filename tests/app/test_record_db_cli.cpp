@@ -1,13 +1,15 @@
 // `record --db`: a live session recorded straight into the clinical records (issue 10), on SQLite
 // and on PostgreSQL: the rows arrive as chunks of under a second, a SIGKILL loses at most the last
-// second and leaves the session marked interrupted, and a write the database refuses (a full disk)
-// is told and leaves what was written intact.
+// second and leaves the session marked interrupted, a write the database refuses (a full disk) is
+// told and leaves what was written intact, and the recorded session's PDF report has every section.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
+#include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <chrono>
 #include <csignal>
@@ -17,6 +19,8 @@
 
 #include "app/cli/Cli.h"
 #include "core/io/Recording.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "tests/core/reports/ReportTestSupport.h"
 #include "tests/support/DatabaseEngines.h"
 
 using armtrack::cli::runCli;
@@ -230,6 +234,79 @@ TEST_P(RecordDb, AFullDiskIsToldAndWhatWasWrittenStaysIntact) {
   const std::string csv = m_dir.filePath("full.csv").toStdString();
   ASSERT_EQ(run({"export", id, "--format", "recording", "--out", csv}).code, 0);
   EXPECT_EQ(static_cast<long long>(armtrack::readRecording(csv).samples.size()), stored);
+}
+
+// Acceptance 3 of issue 10: the PDF report of a session recorded live from the virtual arm, read
+// back as a reader would (pdftotext for the words, pdftoppm for the pages): every section, the
+// devices it was recorded with, the metrics that session show gives, and plots drawn.
+TEST_P(RecordDb, ReportOfARecordedVirtualArmSessionHasEverySection) {
+  namespace rt = armtrack::reports::test;
+  if (const std::string tool = rt::missingPdfTool(); !tool.empty())
+    GTEST_SKIP() << tool << " not found (Debian package poppler-utils)";
+  QProcess rec;
+  rec.start(ARMTRACK_CLI, recordArgs("8"));
+  ASSERT_TRUE(rec.waitForFinished(90000));
+  const std::string out = rec.readAllStandardOutput().toStdString();
+  ASSERT_EQ(rec.exitCode(), 0) << out << rec.readAllStandardError().toStdString();
+  const std::string id = out.substr(8, out.find('\n') - 8);
+  const QJsonObject s = show(id);
+  ASSERT_EQ(s["status"].toString(), "complete");
+  ASSERT_TRUE(s["metrics"].isObject()) << "record --db analyses the session";
+
+  const QString pdf = m_dir.filePath("report.pdf");
+  QProcess report;
+  report.start(ARMTRACK_CLI, {"report", QString::fromStdString(id), "--pdf", pdf, "--db",
+                              QString::fromStdString(m_db), "--user", "boss"});
+  ASSERT_TRUE(report.waitForFinished(120000));
+  ASSERT_EQ(report.exitCode(), 0) << report.readAllStandardError().toStdString();
+
+  const QStringList text = rt::pageTexts(pdf);
+  ASSERT_GE(text.size(), 2);
+  const QString all = text.join('\n');
+  for (const char* section : {"Session report", "Patient and session", "Devices and calibration",
+                              "Metrics per clinical angle", "Joint angles over time", "Repetitions",
+                              "Comparison with normative ranges",
+                              "Comparison with earlier sessions", "Therapist's notes"})
+    EXPECT_TRUE(all.contains(section)) << "missing section " << section;
+  for (qsizetype i = 0; i < text.size(); ++i) {
+    EXPECT_TRUE(text[i].contains("Ada Example")) << "page " << i + 1;
+    EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(text.size())));
+  }
+  // The devices it was recorded with: the plugin, and its streams with their rates.
+  EXPECT_TRUE(all.contains("virtual-arm#1.plugin: virtual-arm")) << all.left(3000);
+  EXPECT_TRUE(all.contains(QRegularExpression("upper.arm[^\\n]*1000 Hz"))) << all.left(3000);
+  EXPECT_FALSE(all.contains("No devices were recorded"));
+  // Each angle's range of motion as session show gives it, on that angle's row of the table.
+  const QJsonObject metrics = s["metrics"].toObject();
+  for (const armtrack::ClinicalAngleInfo& info : armtrack::clinicalAngleInfo()) {
+    const QString name = QString::fromUtf8(info.name.data(), info.name.size());
+    const double rom =
+        metrics[QString::fromUtf8(info.key.data(), info.key.size())]["rom_deg"].toDouble();
+    const QRegularExpression row("\\n\\s*" + QRegularExpression::escape(name) +
+                                 "\\s+-?[0-9.]+\\s+-?[0-9.]+\\s+" +
+                                 QRegularExpression::escape(QString::number(rom, 'f', 1)) + "\\s");
+    EXPECT_TRUE(all.contains(row)) << name.toStdString() << " ROM " << rom;
+  }
+  const int reps = s["repetitions"].toObject()["count"].toInt();
+  EXPECT_TRUE(all.contains(QString("%1 repetitions counted on").arg(reps)) ||
+              (reps == 0 && all.contains("No repetitions")))
+      << reps << " repetitions";
+
+  const std::vector<QImage> pages = rt::renderPages(pdf, m_dir.path());
+  ASSERT_EQ(static_cast<qsizetype>(pages.size()), text.size());
+  bool sawPlot = false;
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    EXPECT_NEAR(pages[i].width(), 496, 2);  // A4 at 60 dpi
+    EXPECT_NEAR(pages[i].height(), 702, 2);
+    EXPECT_GT(rt::inkFraction(pages[i]), 0.01) << "page " << i + 1 << " looks blank";
+    if (text[static_cast<qsizetype>(i)].contains("Joint angles over time")) {
+      const rt::BlueInk b = rt::blueInk(pages[i]);
+      EXPECT_GT(b.count, 300);
+      EXPECT_GT(b.maxX - b.minX, 0.6 * pages[i].width()) << "the curve spans the plot";
+      sawPlot = true;
+    }
+  }
+  EXPECT_TRUE(sawPlot);
 }
 
 TEST_P(RecordDb, RefusesAnUnknownPatientAndMixedTargetsBeforeAnyDeviceStarts) {
