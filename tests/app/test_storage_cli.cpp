@@ -95,9 +95,8 @@ class StorageCli : public ::testing::Test {
 class StorageCliOnPostgres : public StorageCli {
  protected:
   void SetUp() override {
-    static int counter = 0;
     m_db = armtrack::test::PostgresServer::shared()
-               .createDatabase(QString("cli%1").arg(counter++))
+               .createDatabase(armtrack::test::PostgresServer::uniqueName("cli"))
                .toStdString();
     ::setenv("ARMTRACK_PASSWORD", kAdminPass, 1);
     const Result init = run({"db", "init", "--admin", "boss"}, nullptr);
@@ -506,17 +505,17 @@ TEST_F(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
   ASSERT_EQ(imp.code, 0) << imp.err;
   const std::string id = imp.out.substr(0, imp.out.find('\n'));
   const Result show = run({"session", "show", id, "--json"});
-  const QJsonObject metrics = QJsonDocument::fromJson(QByteArray::fromStdString(show.out))
-                                  .object()["metrics"]
-                                  .toObject();
+  const QJsonObject metrics =
+      QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object()["metrics"].toObject();
   const double flexionRom = metrics["shoulder_flexion"].toObject()["rom_deg"].toDouble();
   ASSERT_GT(flexionRom, 10.0) << show.out;
 
   const QString db = QString::fromStdString(m_db);
   const QStringList signIn{"--db", db, "--user", "boss"};
   const std::string pdf = path("report.pdf");
-  Result r = runProcess(QStringList{"report", QString::fromStdString(id), "--pdf",
-                                    QString::fromStdString(pdf)} + signIn);
+  Result r = runProcess(
+      QStringList{"report", QString::fromStdString(id), "--pdf", QString::fromStdString(pdf)} +
+      signIn);
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(bytesOf(pdf).substr(0, 5), "%PDF-");
   const std::string text = pdfText(pdf);
@@ -531,7 +530,8 @@ TEST_F(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
     EXPECT_NE(text.find(rom), std::string::npos) << "flexion ROM " << rom << " not in the report";
   }
   EXPECT_EQ(runProcess(QStringList{"report", QString::fromStdString(id), "--pdf",
-                                   QString::fromStdString(pdf)} + signIn)
+                                   QString::fromStdString(pdf)} +
+                       signIn)
                 .code,
             1);  // exists: only with --overwrite
   const std::string progress = path("progress.pdf");
@@ -578,8 +578,8 @@ TEST_F(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
   for (const char* sys : {"imu", "optical", "angles"}) {
     bool found = false;
     for (const auto& e : fs::directory_iterator(motion))
-      found |= e.path().filename().string().find(std::string("tracksys-") + sys) !=
-               std::string::npos;
+      found |=
+          e.path().filename().string().find(std::string("tracksys-") + sys) != std::string::npos;
     EXPECT_TRUE(found) << sys;
   }
 

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <QAtomicInt>
 #include <QSqlDatabase>
@@ -41,9 +40,7 @@ inline std::string engineName(const testing::TestParamInfo<Engine>& info) {
 /// test processes.
 inline QString newDatabase(Engine engine, const QTemporaryDir& dir, const QString& stem) {
   if (engine == Engine::Sqlite) return dir.filePath(stem + ".db");
-  static QAtomicInt counter;
-  return PostgresServer::shared().createDatabase(
-      QString("t%1_%2_%3").arg(::getpid()).arg(counter.fetchAndAddRelaxed(1)).arg(stem.toLower()));
+  return PostgresServer::shared().createDatabase(PostgresServer::uniqueName(stem));
 }
 
 namespace detail {
