@@ -4,6 +4,8 @@
 // for bit as estimating the CSV gives them; damaged blobs; settings; access; cancelling.
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSqlQuery>
@@ -217,11 +219,21 @@ TEST(SessionAnalysis, ExerciseFromTheDatabaseMatchesTheTruth) {
                               "mean_velocity_deg_s", "movement_time_s"})
       EXPECT_TRUE(one[field].isDouble()) << key.toStdString() << " " << field;
     if (trueRom[k] < 5.0) continue;
-    const double err = one["rom_deg"].toDouble() - trueRom[k];
-    std::printf("%s: ROM %.2f deg, true %.2f deg, error %.2f deg\n", key.toStdString().c_str(),
-                one["rom_deg"].toDouble(), trueRom[k], err);
+    const double rom = one["rom_deg"].toDouble();
+    const double err = rom - trueRom[k];
     const bool heading = key == "shoulder_abduction" || key == "shoulder_internal_rotation";
-    EXPECT_LT(std::abs(err), heading ? 2.0 : 1.0) << key.toStdString();
+    const double bound = heading ? 2.0 : 1.0;
+    // The figure measured, for the log and the test report (XML: property <key>_rom_error_deg),
+    // so a run that passes under the wider bound still shows how far it is from 1 deg.
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%s: ROM %.2f deg, true %.2f deg, error %+.2f deg (bound %.0f%s)",
+                  key.toStdString().c_str(), rom, trueRom[k], err, bound,
+                  heading ? ", widened for the heading error" : "");
+    std::cout << line << "\n";
+    RecordProperty(key.toStdString() + "_rom_error_deg",
+                   QString::number(err, 'f', 3).toStdString());
+    EXPECT_LT(std::abs(err), bound) << line;
   }
 
   // The stored estimates are exactly those of estimating the CSV.
