@@ -252,12 +252,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   const EstimatorParams params = estimatorParamsFor(recording.meta, result.settings);
   EstimateColumns rows;
   EstimateCallbacks callbacks;
-  callbacks.row = [&](const EstimateRow& r) {
-    rows.t.push_back(r.t);
-    rows.th.push_back(r.th);
-    rows.sd.push_back(r.sd);
-    rows.status.push_back(r.status);
-  };
+  callbacks.row = [&](const EstimateRow& r) { rows.append(r); };
   callbacks.progress = [&](int p) { progress(p * 9 / 10); };
   callbacks.cancel = options.cancel;
   result.stats = estimateRecording(recording, params, callbacks);

@@ -105,12 +105,7 @@ std::array<double, 5> trueRomDeg(const Recording& rec) {
 EstimateColumns estimateDirectly(const Recording& rec, const EstimateOptions& options) {
   EstimateColumns c;
   EstimateCallbacks cb;
-  cb.row = [&](const EstimateRow& r) {
-    c.t.push_back(r.t);
-    c.th.push_back(r.th);
-    c.sd.push_back(r.sd);
-    c.status.push_back(r.status);
-  };
+  cb.row = [&](const EstimateRow& r) { c.append(r); };
   estimateRecording(rec, estimatorParamsFor(rec.meta, options), cb);
   return c;
 }
@@ -280,15 +275,14 @@ TEST(EstimateCodec, RoundTripIsBitExactAndDamageIsRefused) {
   const double values[] = {0.0,  -0.0,  1e-300, 3.141592653589793,
                            -2.5, 1e300, nan,    std::numeric_limits<double>::infinity()};
   for (int i = 0; i < 40; ++i) {
-    c.t.push_back(0.001 * i);
-    JointVector th, sd;
+    EstimateRow r;
+    r.t = 0.001 * i;
     for (int j = 0; j < kNumJoints; ++j) {
-      th(j) = values[(i + j) % 8];
-      sd(j) = values[(i * 3 + j) % 8];
+      r.th(j) = values[(i + j) % 8];
+      r.sd(j) = values[(i * 3 + j) % 8];
     }
-    c.th.push_back(th);
-    c.sd.push_back(sd);
-    c.status.push_back(i % 4);
+    r.status = i % 4;
+    c.append(r);
   }
   const std::string blob = EstimateCodec::encode(c);
   const EstimateColumns d = EstimateCodec::decode(blob, 40);
