@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <QTemporaryDir>
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -27,6 +29,32 @@ using armtrack::test::engineName;
 using armtrack::test::newDatabase;
 using armtrack::test::rawQuery;
 using armtrack::test::rawSql;
+
+using Kind = StorageError::Kind;
+
+/// Value-parameterised storage tests run on every engine (INSTANTIATE_TEST_SUITE_P with Engine).
+class Engines : public testing::TestWithParam<Engine> {};
+
+/// Whether two doubles are the same bit pattern (NaN payloads and -0 included).
+inline bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+/// Runs f, which must throw a StorageError of kind whose message contains mustSay; returns it
+/// (a failure, and an empty Io error, when f throws nothing).
+template <typename F>
+StorageError expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
+  try {
+    f();
+  } catch (const StorageError& e) {
+    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
+    if (!mustSay.empty())
+      EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
+    return e;
+  }
+  ADD_FAILURE() << "no StorageError";
+  return StorageError(Kind::Io, "");
+}
 
 /// A temporary folder with an initialised database and its administrator signed in. path is the
 /// --db location (a file, or a postgresql:// URL).

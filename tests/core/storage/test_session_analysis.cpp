@@ -23,13 +23,8 @@
 using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
-using Kind = StorageError::Kind;
 
 namespace {
-
-bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
 
 /// Seated shoulder flexion (forearm resting forward at 30 deg flexion, elbow at 45 deg) up to a
 /// peak and back, the other angles following in proportion, with holds and pauses; peaks in
@@ -118,18 +113,6 @@ void expectSameEstimates(const StoredAnalysis& a, const EstimateColumns& c) {
     for (int j = 0; j < kNumJoints; ++j)
       same = same && sameBits(a.joints[i](j), c.th[i](j)) && sameBits(a.sd[i](j), c.sd[i](j));
     ASSERT_TRUE(same) << "row " << i << " differs";
-  }
-}
-
-template <typename F>
-void expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
-  try {
-    f();
-    ADD_FAILURE() << "no StorageError";
-  } catch (const StorageError& e) {
-    EXPECT_EQ(e.kind(), kind) << e.what();
-    if (!mustSay.empty())
-      EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
   }
 }
 

@@ -20,20 +20,8 @@ using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
 using armtrack::test::PostgresServer;
-using Kind = StorageError::Kind;
 
 namespace {
-
-StorageError expectError(const std::function<void()>& f, Kind kind) {
-  try {
-    f();
-  } catch (const StorageError& e) {
-    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
-    return e;
-  }
-  ADD_FAILURE() << "no StorageError";
-  return StorageError(Kind::Io, "");
-}
 
 bool contains(const StorageError& e, const char* text) {
   return std::string(e.what()).find(text) != std::string::npos;

@@ -22,13 +22,8 @@
 using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
-using Kind = StorageError::Kind;
 
 namespace {
-
-bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
 
 template <typename V>
 bool sameOpt(const std::optional<V>& a, const std::optional<V>& b) {
