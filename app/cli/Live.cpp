@@ -270,12 +270,17 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
     if (!protocol.isEmpty()) records->store().protocol(protocol);
     const storage::DatabaseUrl url = records->db().url();
     params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
-    params.openSink = [&records, &sessionId, &out, &devicesUsed, url, patient, protocol](
+    const QString filterName = QString::fromStdString(filter);
+    params.openSink = [&records, &sessionId, &out, &devicesUsed, url, patient, protocol,
+                       filterName](
                           const RecordingMeta& meta,
                           const RecordingColumns& columns) -> std::unique_ptr<RecordingSink> {
       storage::SessionSettings settings;
       settings.devicesJson =
           QString::fromUtf8(QJsonDocument(devicesUsed).toJson(QJsonDocument::Compact));
+      // The live filter, which the session's analysis then uses too.
+      settings.filterJson = QString::fromUtf8(
+          QJsonDocument(QJsonObject{{"filter", filterName}}).toJson(QJsonDocument::Compact));
       try {
         sessionId = records->store().beginRecording(patient, protocol, meta, columns, settings);
       } catch (const storage::StorageError& e) {

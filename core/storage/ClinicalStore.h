@@ -89,6 +89,9 @@ class ClinicalStore {
   std::vector<SessionInfo> listSessions(const QString& patientCode);
   SessionInfo session(qint64 sessionId);
   void updateSessionNotes(qint64 sessionId, const QString& notes);
+  /// Sets the filter settings the session's analyses use (filter_json; administrators and
+  /// therapists). Throws StorageError(Usage) when json is not a JSON object.
+  void updateSessionFilterSettings(qint64 sessionId, const QString& json);
   void removeSession(qint64 sessionId);
   /// The stored recording. Throws StorageError(Corrupt) naming the session and chunk when a
   /// chunk cannot be decoded.

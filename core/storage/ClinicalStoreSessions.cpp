@@ -261,6 +261,17 @@ void ClinicalStore::updateSessionNotes(qint64 sessionId, const QString& notes) {
   });
 }
 
+void ClinicalStore::updateSessionFilterSettings(qint64 sessionId, const QString& json) {
+  require(isStaff(), "change a session's filter settings");
+  if (!QJsonDocument::fromJson(json.toUtf8()).isObject())
+    throw StorageError(Kind::Usage, "a session's filter settings must be a JSON object");
+  visibleSession(sessionId);
+  m_db.transaction([&] {
+    m_db.exec("UPDATE sessions SET filter_json = ? WHERE id = ?", {json, sessionId});
+    audit("update", "session", QString::number(sessionId), "filter settings");
+  });
+}
+
 void ClinicalStore::removeSession(qint64 sessionId) {
   require(user().role == Role::Admin, "remove sessions");
   visibleSession(sessionId);

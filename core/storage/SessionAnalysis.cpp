@@ -242,6 +242,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);
   result.settingsSource = fromSession ? "session" : "defaults";
   if (options.filter) result.settings.filter = *options.filter;
+  if (options.model) result.settings.model = *options.model;
   if (options.noOptical) result.settings.useOptical = result.settings.useCamera = false;
   const auto progress = [&](int p) {
     if (options.progress) options.progress(p);
@@ -283,23 +284,20 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   }
 
   const EstimateStats& st = result.stats;
-  const QJsonObject paramsJson{
-      {"filter", filterName(result.settings.filter)},
-      {"method", QString::fromStdString(methodName(result.settings.model))},
-      {"optical", result.settings.useOptical},
-      {"camera", result.settings.useCamera},
-      {"joint_accel_std_deg", result.settings.jointAccelStdDeg
-                                  ? QJsonValue(*result.settings.jointAccelStdDeg)
-                                  : QJsonValue(QJsonValue::Null)},
-      {"settings", result.settingsSource},
-      {"optical_used", st.opticalUsed},
-      {"library_version", ARMTRACK_VERSION},
-      {"rows", static_cast<qint64>(rows.size())},
-      {"recording_rows", static_cast<qint64>(st.rows)},
-      {"imu_rows", static_cast<qint64>(st.imuRows)},
-      {"predicted", static_cast<qint64>(st.predicted)},
-      {"restarts", static_cast<qint64>(st.counters.restarts)},
-      {"recoveries", static_cast<qint64>(st.counters.recoveries)}};
+  QJsonObject paramsJson = filterSettingsJson(result.settings);
+  if (!paramsJson.contains("joint_accel_std_deg"))
+    paramsJson.insert("joint_accel_std_deg", QJsonValue(QJsonValue::Null));
+  for (const auto& [key, value] : std::initializer_list<std::pair<const char*, QJsonValue>>{
+           {"settings", result.settingsSource},
+           {"optical_used", st.opticalUsed},
+           {"library_version", ARMTRACK_VERSION},
+           {"rows", static_cast<qint64>(rows.size())},
+           {"recording_rows", static_cast<qint64>(st.rows)},
+           {"imu_rows", static_cast<qint64>(st.imuRows)},
+           {"predicted", static_cast<qint64>(st.predicted)},
+           {"restarts", static_cast<qint64>(st.counters.restarts)},
+           {"recoveries", static_cast<qint64>(st.counters.recoveries)}})
+    paramsJson.insert(key, value);
   const std::string blob = EstimateCodec::encode(rows);
   result.estimateVersion = store.saveEstimates(
       sessionId, QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
@@ -315,6 +313,15 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
               "estimates and metrics version " + QString::number(result.estimateVersion));
   progress(100);
   return result;
+}
+
+QJsonObject filterSettingsJson(const EstimateOptions& settings) {
+  QJsonObject o{{"filter", filterName(settings.filter)},
+                {"method", QString::fromStdString(methodName(settings.model))},
+                {"optical", settings.useOptical},
+                {"camera", settings.useCamera}};
+  if (settings.jointAccelStdDeg) o.insert("joint_accel_std_deg", *settings.jointAccelStdDeg);
+  return o;
 }
 
 std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version) {

@@ -133,6 +133,10 @@ TEST_P(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   EXPECT_GT(s["duration_s"].toDouble(), 2.0);
   EXPECT_GT(s["samples"].toInteger(), 2000);    // two IMUs at 1 kHz for about 3 s
   EXPECT_EQ(s["estimate_version"].toInt(), 1);  // analysed once stored, as an import is
+  // What it was recorded with: the device, and the live filter its analysis uses too.
+  EXPECT_EQ(s["devices"].toObject()["virtual-arm#1"].toObject()["plugin"].toString(),
+            "virtual-arm");
+  EXPECT_EQ(s["filter_settings"].toObject()["filter"].toString(), "ekf");
   EXPECT_TRUE(s["metrics"].isObject());
   // The count printed is what the database holds.
   EXPECT_NE(

@@ -350,6 +350,40 @@ TEST_P(StorageCli, ImportStoresMetricsAndReestimateAddsAVersion) {
   EXPECT_EQ(run({"session", "reestimate"}).code, 2);
 }
 
+// The filter and method chosen for a re-estimation become the session's filter settings
+// (filter_json): session show reports them, and the next re-estimation without options uses them.
+TEST_P(StorageCli, ReestimateStoresTheChosenFilterSettingsAndShowReportsThem) {
+  addPatients();
+  const std::string id = importFor("P01", simulate("rec.csv", 3.0));
+  Result show = run({"session", "show", id, "--json"});
+  ASSERT_EQ(show.code, 0) << show.err;
+  QJsonObject s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  ASSERT_TRUE(s["filter_settings"].isObject()) << show.out;
+  EXPECT_TRUE(s["filter_settings"].toObject().isEmpty()) << show.out;  // an import: defaults
+
+  Result r = run({"session", "reestimate", id, "--filter", "ukf", "--method", "B"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("(UKF, method B"), std::string::npos) << r.err;
+  show = run({"session", "show", id, "--json"});
+  s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  const QJsonObject f = s["filter_settings"].toObject();
+  EXPECT_EQ(f["filter"].toString(), "ukf") << show.out;
+  EXPECT_EQ(f["method"].toString(), "B") << show.out;
+  EXPECT_EQ(f["optical"].toBool(false), true) << show.out;
+  show = run({"session", "show", id});
+  EXPECT_NE(show.out.find("filter settings: {\"camera\":true,\"filter\":\"ukf\",\"method\":\"B\""),
+            std::string::npos)
+      << show.out;
+
+  r = run({"session", "reestimate", id});  // no options: the session's settings
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("(UKF, method B, optical fused, session settings)"), std::string::npos)
+      << r.err;
+  EXPECT_EQ(r.out, "3\n");
+  EXPECT_EQ(run({"session", "reestimate", id, "--method", "Z"}).code, 2);
+  EXPECT_NE(run({"audit", "--json"}).out.find("filter settings"), std::string::npos);
+}
+
 // A home account may read its own session's metrics but analyses nothing, and another patient's
 // session is unknown to it.
 TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
