@@ -493,9 +493,13 @@ TEST_P(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
 namespace {
 
 /// Runs the real executable (reports need a QGuiApplication of their own, which the in-process
-/// tests' QCoreApplication rules out).
+/// tests' QCoreApplication rules out), without a desktop session's XDG_RUNTIME_DIR, as a cron job
+/// or root on a server runs it.
 Result runProcess(const QStringList& args) {
   QProcess p;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.remove("XDG_RUNTIME_DIR");
+  p.setProcessEnvironment(env);
   p.start(QStringLiteral(ARMTRACK_CLI), args);
   if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
   return {p.exitCode(), p.readAllStandardOutput().toStdString(),
@@ -536,6 +540,9 @@ TEST_P(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
       QStringList{"report", QString::fromStdString(id), "--pdf", QString::fromStdString(pdf)} +
       signIn);
   ASSERT_EQ(r.code, 0) << r.err;
+  // Plain output for the user: the one line saying what was written, no warnings from Qt.
+  EXPECT_EQ(r.err.rfind("report: session " + id + ", ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_EQ(bytesOf(pdf).substr(0, 5), "%PDF-");
   const std::string text = pdfText(pdf);
   if (text.empty()) {
