@@ -41,7 +41,7 @@ struct MetricRows {
 
 MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVector>& th,
                       const std::vector<JointVector>& sd, const std::vector<int>& status,
-                      qint64 sessionId) {
+                      qint64 sessionId, bool withSd = true) {
   std::vector<double> mt;
   std::vector<JointVector> mth;
   MetricRows out;
@@ -59,6 +59,7 @@ MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVecto
     }
     mt.push_back(t[i]);
     mth.push_back(th[i]);
+    if (!withSd) continue;
     ClinicalRow s;  // the clinical angles are the joint angles up to sign
     for (int k = 0; k < kNumClinicalAngles; ++k) s[static_cast<std::size_t>(k)] = sd[i](k);
     out.sdRad.push_back(s);
@@ -249,14 +250,23 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   };
   progress(0);
 
-  const Recording recording = store.readRecording(sessionId);
-  const EstimatorParams params = estimatorParamsFor(recording.meta, result.settings);
+  EstimatorParams params;
   EstimateColumns rows;
-  EstimateCallbacks callbacks;
-  callbacks.row = [&](const EstimateRow& r) { rows.append(r); };
-  callbacks.progress = [&](int p) { progress(p * 9 / 10); };
-  callbacks.cancel = options.cancel;
-  result.stats = estimateRecording(recording, params, callbacks);
+  {
+    // The recording (352 bytes a row in memory) goes as soon as it is estimated, before the
+    // metrics and the blob are made (docs/storage.md, "Memory of an analysis").
+    const Recording recording = store.readRecording(sessionId);
+    params = estimatorParamsFor(recording.meta, result.settings);
+    rows.t.reserve(recording.samples.size());
+    rows.th.reserve(recording.samples.size());
+    rows.sd.reserve(recording.samples.size());
+    rows.status.reserve(recording.samples.size());
+    EstimateCallbacks callbacks;
+    callbacks.row = [&](const EstimateRow& r) { rows.append(r); };
+    callbacks.progress = [&](int p) { progress(p * 9 / 10); };
+    callbacks.cancel = options.cancel;
+    result.stats = estimateRecording(recording, params, callbacks);
+  }
   if (result.stats.cancelled) {
     result.cancelled = true;
     return result;
@@ -269,7 +279,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
 
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
-  const MetricRows settled = metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId);
+  const MetricRows settled =
+      metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId, /*withSd=*/false);
   try {
     result.metrics = computeSessionMetrics(settled.series, mp);
   } catch (const std::invalid_argument& e) {
