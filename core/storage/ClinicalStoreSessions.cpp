@@ -286,34 +286,25 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
   Recording rec;
   rec.meta = metaFromText(s.calibrationJson, sessionId);
   rec.samples.reserve(static_cast<std::size_t>(s.sampleRows));
-  QSqlQuery q = m_db.exec(
-      "SELECT seq, row_count, codec, data FROM recording_chunks "
-      "WHERE session_id = ? ORDER BY seq",
-      {sessionId});
   int expectedSeq = 0;
-  while (q.next()) {
-    const int seq = q.value(0).toInt();
+  readChunks(m_db, sessionId, [&](const StoredChunk& c) {
     const std::string where =
-        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(seq) + ": ";
-    if (seq != expectedSeq)
+        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(c.seq) + ": ";
+    if (c.seq != expectedSeq)
       throw StorageError(Kind::Corrupt,
                          where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
-    const std::string codec = text(q.value(2).toString());
-    if (!ChunkCodec::knows(codec))
-      throw StorageError(Kind::Corrupt,
-                         where + "unknown codec '" + text(q.value(2).toString()) + "'");
-    const QByteArray blob = q.value(3).toByteArray();
+    if (!ChunkCodec::knows(c.codec))
+      throw StorageError(Kind::Corrupt, where + "unknown codec '" + c.codec + "'");
     try {
-      auto samples = ChunkCodec::decode(std::string(blob.constData(), blob.size()),
-                                        q.value(1).toULongLong(), codec);
+      auto samples = ChunkCodec::decode(std::string(c.data), c.rows, c.codec);
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
     } catch (const std::runtime_error& e) {
       throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
     }
-  }
+  });
   if (static_cast<qint64>(rec.samples.size()) != s.sampleRows)
     throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
                                           std::to_string(rec.samples.size()) + " rows, " +

@@ -321,6 +321,17 @@ void Database::backup(const QString& outPath) {
   exec("VACUUM INTO ?", {outPath});
 }
 
+void* Database::postgresConnection() const {
+  if (!isPostgres() || !m_db.driver()) return nullptr;
+  // QPSQL hands out its PGconn* (Qt's documented handle()); the type is named after the struct
+  // behind libpq's typedef, pg_conn.
+  const QVariant v = m_db.driver()->handle();
+  if (!v.isValid() ||
+      (qstrcmp(v.typeName(), "PGconn*") != 0 && qstrcmp(v.typeName(), "pg_conn*") != 0))
+    return nullptr;
+  return *static_cast<void* const*>(v.data());
+}
+
 QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
   QSqlQuery q(m_db);
   q.setForwardOnly(true);

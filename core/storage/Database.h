@@ -42,6 +42,10 @@ class Database {
   int migrationsApplied() const { return m_applied; }
 
   bool isPostgres() const { return m_url.engine == DatabaseUrl::Engine::Postgres; }
+  /// PostgreSQL: the connection's libpq handle (a PGconn*) for what Qt Sql cannot do (binary
+  /// results, see readChunks); nullptr on SQLite or when the driver does not give it. Use it
+  /// only between statements of this object, on its thread.
+  void* postgresConnection() const;
 
   /// Runs PRAGMA integrity_check (SQLite; on PostgreSQL every table is read) and returns "ok"
   /// or the problems found.

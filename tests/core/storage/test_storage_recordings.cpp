@@ -175,8 +175,11 @@ TEST(ChunkCodec, DamagedFramesAreRefused) {
   refuses(frame + "trailing bytes", samples.size(), "bytes after the frame");
 }
 
-TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
-  Fixture f;
+// On both engines (PostgreSQL reads the chunks in the binary wire format through libpq): a
+// damaged or missing chunk is named, and the connection stays usable after the refusal.
+using DamagedChunk = Engines;
+TEST_P(DamagedChunk, NamesTheSessionAndChunk) {
+  Fixture f(GetParam());
   f.store->addPatient(makePatient("P1"));
   simulateTo(f.file("rec.csv"), 3.0, 200.0);
   const qint64 id = f.store->importRecording(f.file("rec.csv"), "P1");
@@ -194,6 +197,7 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
               std::string::npos)
         << e.what();
   }
+  EXPECT_GE(f.store->session(id).chunks, 3);  // the connection is still usable
   f.db->exec("UPDATE recording_chunks SET data = ? WHERE session_id = ? AND seq = 2",
              {QByteArray("\x28\xb5\x2f\xfd garbage after a zstd magic"), id});
   f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = 1", {id});
@@ -205,6 +209,8 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
   }
   EXPECT_THROW(f.store->exportRecording(id, f.file("out.csv")), StorageError);
 }
+INSTANTIATE_TEST_SUITE_P(Engines, DamagedChunk, testing::Values(Engine::Sqlite, Engine::Postgres),
+                         engineName);
 
 // Real sensor data: the BROAD trials (CC-BY-4.0, tests/data/broad, unpacked by the build) hold
 // one IMU at 286 Hz with 7 significant digits. Stored as an upper-arm IMU.
