@@ -193,14 +193,7 @@ RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& m
                                  const RecordingColumns& c)
     : m_path(csvPath), m_prevT(std::numeric_limits<double>::quiet_NaN()) {
   static_assert(std::tuple_size_v<decltype(m_present)> == kNumGroups);
-  m_present[kUaGyr] = m_present[kUaAcc] = c.upperArm;
-  m_present[kFaGyr] = m_present[kFaAcc] = c.forearm;
-  m_present[kElbow] = c.elbow;
-  m_present[kWrist] = c.wrist;
-  m_present[kCamWrist] = c.camWrist;
-  m_present[kCamElbow] = c.camElbow;
-  m_present[kTruth] = c.truth;
-  m_present[kEstimate] = c.estimate;
+  m_present = groupsOf(c);
   // Check everything that can be checked before creating anything, so a refused recording
   // leaves no file behind (not even a sidecar).
   const std::string name = csvPath.string();

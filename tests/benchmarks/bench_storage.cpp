@@ -156,14 +156,18 @@ BENCHMARK(BM_WriteRecording)
 
 // Reading a session back, the part of BM_Reestimate that differs between the sources: from its
 // CSV (source 0, parsing), or its chunks from the records (1 SQLite, 2 PostgreSQL socket).
+// The minute imported into a new database of source (1 SQLite, 2 PostgreSQL socket), and its
+// session id; nothing for source 0 (the CSV itself).
+std::pair<std::unique_ptr<Db>, qint64> importedMinute(int source) {
+  if (source == 0) return {nullptr, 0};
+  auto d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
+  const qint64 id = d->store->importRecording(minute().csv, "P1");
+  return {std::move(d), id};
+}
+
 void BM_ReadRecording(benchmark::State& state) {
   const int source = static_cast<int>(state.range(0));
-  std::unique_ptr<Db> d;
-  qint64 id = 0;
-  if (source != 0) {
-    d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
-    id = d->store->importRecording(minute().csv, "P1");
-  }
+  const auto [d, id] = importedMinute(source);
   for (auto _ : state)
     benchmark::DoNotOptimize(
         (source == 0 ? readRecording(minute().csv) : d->store->readRecording(id)).samples.size());
@@ -183,12 +187,7 @@ BENCHMARK(BM_ReadRecording)
 // as `estimate` and `session reestimate` do; storing the estimates is not timed.
 void BM_Reestimate(benchmark::State& state) {
   const int source = static_cast<int>(state.range(0));
-  std::unique_ptr<Db> d;
-  qint64 id = 0;
-  if (source != 0) {
-    d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
-    id = d->store->importRecording(minute().csv, "P1");
-  }
+  const auto [d, id] = importedMinute(source);
   std::size_t rows = 0;
   for (auto _ : state) {
     const Recording rec = source == 0 ? readRecording(minute().csv) : d->store->readRecording(id);

@@ -8,8 +8,6 @@
 #include <QAtomicInt>
 #include <QSqlDatabase>
 #include <QSqlError>
-#include <QSqlQuery>
-#include <QSqlRecord>
 #include <QStringList>
 #include <QTemporaryDir>
 #include <QVariantList>
@@ -57,18 +55,7 @@ inline void sqliteRun(const QString& path, const QStringList& statements,
     if (!db.open()) {
       error = "cannot open " + path + ": " + db.lastError().text();
     } else {
-      for (const QString& s : statements) {
-        QSqlQuery q(db);
-        if (!q.exec(s)) {
-          error = s + ": " + q.lastError().text();
-          break;
-        }
-        while (rows && q.next()) {
-          QVariantList row;
-          for (int i = 0; i < q.record().count(); ++i) row << q.value(i);
-          rows->push_back(row);
-        }
-      }
+      error = runSql(db, statements, rows);
       db.close();
     }
   }

@@ -309,6 +309,19 @@ std::vector<QVariantList> PostgresServer::superuserQuery(const QString& database
   return rows;
 }
 
+QString runSql(QSqlDatabase& db, const QStringList& statements, std::vector<QVariantList>* rows) {
+  for (const QString& s : statements) {
+    QSqlQuery q(db);
+    if (!q.exec(s)) return "'" + s.left(200) + "' failed: " + q.lastError().text();
+    while (rows && q.next()) {
+      QVariantList row;
+      for (int i = 0; i < q.record().count(); ++i) row << q.value(i);
+      rows->push_back(row);
+    }
+  }
+  return {};
+}
+
 void PostgresServer::run(const QString& database, const QStringList& statements,
                          std::vector<QVariantList>* rows) {
   const QString name = connectionName();
@@ -323,18 +336,7 @@ void PostgresServer::run(const QString& database, const QStringList& statements,
     if (!db.open()) {
       error = "cannot connect as superuser: " + db.lastError().text();
     } else {
-      for (const QString& s : statements) {
-        QSqlQuery q(db);
-        if (!q.exec(s)) {
-          error = "'" + s.left(200) + "' failed: " + q.lastError().text();
-          break;
-        }
-        while (rows && q.next()) {
-          QVariantList row;
-          for (int i = 0; i < q.record().count(); ++i) row << q.value(i);
-          rows->push_back(row);
-        }
-      }
+      error = runSql(db, statements, rows);
       db.close();
     }
   }

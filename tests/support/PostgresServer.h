@@ -16,7 +16,13 @@
 #include <stdexcept>
 #include <vector>
 
+class QSqlDatabase;
+
 namespace armtrack::test {
+
+/// Runs statements on an open connection, stopping at the first that fails; the rows of the
+/// results go to rows when given. Returns "" or the failing statement with the engine's error.
+QString runSql(QSqlDatabase& db, const QStringList& statements, std::vector<QVariantList>* rows);
 
 class PostgresServer {
  public:
