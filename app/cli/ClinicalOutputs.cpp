@@ -1,8 +1,11 @@
 // armtrack-cli report and export: a stored session's analysis as PDF reports and as files in the
 // open formats (docs/cli.md, docs/reports.md, docs/exports.md).
+#include <QDir>
+#include <QFile>
 #include <QGuiApplication>
 #include <QJsonArray>
 #include <QJsonObject>
+#include <QTemporaryDir>
 #include <algorithm>
 #include <memory>
 
@@ -49,14 +52,28 @@ Every export is written to the audit log. docs/exports.md describes the formats.
 )";
 
 /// Reports draw text, which needs a QGuiApplication; the command line has no display, so it uses
-/// the offscreen platform unless told otherwise.
-std::unique_ptr<QGuiApplication> guiApplication() {
+/// the offscreen platform unless told otherwise. Without a session (a cron job, root on a server)
+/// there is no XDG_RUNTIME_DIR either, and Qt would warn about it on every report: the
+/// application gets a private one (mode 0700, as Qt requires), removed when it ends.
+struct GuiApplication {
+  QTemporaryDir runtimeDir{QDir::tempPath() + "/armtrack-runtime-XXXXXX"};
+  std::unique_ptr<QGuiApplication> app;
+};
+
+std::unique_ptr<GuiApplication> guiApplication() {
   if (QCoreApplication::instance()) return nullptr;
+  auto gui = std::make_unique<GuiApplication>();
   if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+  if (qEnvironmentVariableIsEmpty("XDG_RUNTIME_DIR") && gui->runtimeDir.isValid()) {
+    QFile::setPermissions(gui->runtimeDir.path(),
+                          QFile::ReadOwner | QFile::WriteOwner | QFile::ExeOwner);
+    qputenv("XDG_RUNTIME_DIR", QFile::encodeName(gui->runtimeDir.path()));
+  }
   static int argc = 1;
   static char name[] = "armtrack-cli";
   static char* argv[] = {name, nullptr};
-  return std::make_unique<QGuiApplication>(argc, argv);
+  gui->app = std::make_unique<QGuiApplication>(argc, argv);
+  return gui;
 }
 
 /// The five ranges of motion (rad) of a stored metrics JSON (docs/storage.md, "Metrics").
@@ -65,9 +82,8 @@ std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& m
   const QJsonObject angles = metrics["angles"].toObject();
   for (int i = 0; i < kNumClinicalAngles; ++i) {
     const std::string_view key = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
-    const QJsonValue v =
-        angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
-            .toObject()["rom_deg"];
+    const QJsonValue v = angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
+                             .toObject()["rom_deg"];
     if (v.isDouble()) rom[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
   }
   return rom;
@@ -162,7 +178,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     a.fail("--from and --to: only with --patient");
   const qint64 id = progress ? 0 : sessionIdArgument(a);
   checkOutputPath(pdf, a.flag("--overwrite"), /*recording=*/false);
-  const std::unique_ptr<QGuiApplication> gui = guiApplication();
+  const std::unique_ptr<GuiApplication> gui = guiApplication();
   ClinicalContext c(a, {}, true);
   return progress ? progressReport(c, a, pdf, err) : sessionReport(c, id, pdf, err);
 }
@@ -177,7 +193,8 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   if (format != "recording" && format != "csv" && format != "mot" && format != "bids")
     a.fail("--format: must be recording, csv, mot or bids");
   const bool overwrite = a.flag("--overwrite");
-  if (format == "recording" || format == "mot") checkOutputPath(target, overwrite, format == "recording");
+  if (format == "recording" || format == "mot")
+    checkOutputPath(target, overwrite, format == "recording");
   if (format == "csv") {
     checkOutputPath(target, overwrite, false);
     checkOutputPath(metricsCsvPath(target).string(), overwrite, false);

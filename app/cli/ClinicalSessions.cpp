@@ -21,15 +21,15 @@ constexpr std::string_view kSessionHelp =
                             store a recording (CSV + sidecar) losslessly as a complete session,
                             estimate its joint angles and store them with its clinical metrics;
                             prints the new session id
-  session reestimate ID [--filter ekf|ukf] [--no-optical]
+  session reestimate ID [--filter ekf|ukf] [--method A|B|C] [--no-optical]
                             estimate the stored recording again (the session's filter settings,
                             else the defaults, with these overrides) and store the estimates and
-                            metrics as a new version; earlier versions are kept. Prints the
-                            version
+                            metrics as a new version; earlier versions are kept. Overrides become
+                            the session's filter settings. Prints the version
   session list --patient CODE [--json]
   session show ID [--json]  id, patient, status (complete, interrupted or recording), duration_s,
-                            samples (rows with IMU data), rows, chunks, stored_bytes, and the
-                            newest metrics: per clinical angle, repetitions, sparc, ldlj,
+                            samples (rows with IMU data), rows, chunks, stored_bytes, devices,
+                            filter_settings, and the newest metrics: per clinical angle, repetitions, sparc, ldlj,
                             estimate_version (docs/cli.md)
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
@@ -40,6 +40,11 @@ constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --
 The audit log: who created, changed, viewed or exported what, and when (administrators only).
 --db URL as for every database command (password: ARMTRACK_PASSWORD).
 )";
+
+/// A JSON column's object (empty when the text is not one).
+QJsonObject objectOf(const QString& json) {
+  return QJsonDocument::fromJson(json.toUtf8()).object();
+}
 
 QJsonObject sessionJson(const storage::SessionInfo& s) {
   return QJsonObject{{"id", s.id},
@@ -52,12 +57,15 @@ QJsonObject sessionJson(const storage::SessionInfo& s) {
                      {"chunks", s.chunks},
                      {"stored_bytes", s.storedBytes},
                      {"protocol", s.protocolName},
+                     {"devices", objectOf(s.devicesJson)},
+                     {"filter_settings", objectOf(s.filterJson)},
                      {"notes", s.notes}};
 }
 
-// Estimates the session and stores its metrics, reporting on err; returns the new version.
-int analyse(storage::ClinicalStore& store, qint64 id, const storage::AnalysisOptions& base,
-            const std::string& command, std::ostream& err) {
+// Estimates the session and stores its metrics, reporting on err.
+storage::AnalysisResult analyse(storage::ClinicalStore& store, qint64 id,
+                                const storage::AnalysisOptions& base, const std::string& command,
+                                std::ostream& err) {
   storage::AnalysisOptions options = base;
   const bool reporting = store.session(id).sampleRows > static_cast<qint64>(kProgressRows);
   int nextPercent = 10;
@@ -77,7 +85,7 @@ int analyse(storage::ClinicalStore& store, qint64 id, const storage::AnalysisOpt
       << ss(reps["primary_angle"].toString()) << ", SPARC "
       << (m["sparc"].isDouble() ? fixed(m["sparc"].toDouble(), 2) : std::string("-")) << ", LDLJ "
       << (m["ldlj"].isDouble() ? fixed(m["ldlj"].toDouble(), 2) : std::string("-")) << "\n";
-  return r.estimateVersion;
+  return r;
 }
 
 int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
@@ -99,7 +107,8 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
 }
 
 int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
-  const Args a("session reestimate", rest, withDb({{"--filter", true}, {"--no-optical", false}}));
+  const Args a("session reestimate", rest,
+               withDb({{"--filter", true}, {"--method", true}, {"--no-optical", false}}));
   if (a.help()) return out << kSessionHelp, 0;
   const qint64 id = sessionIdArgument(a);
   storage::AnalysisOptions options;
@@ -111,9 +120,24 @@ int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, s
     else
       a.fail("--filter: expected ekf or ukf, got " + inQuotes(*f));
   }
+  if (const auto m = a.value("--method")) {
+    try {
+      options.model = parseMethod(*m);
+    } catch (const std::invalid_argument&) {
+      a.fail("--method: expected A, B or C, got " + inQuotes(*m));
+    }
+  }
   options.noOptical = a.flag("--no-optical");
   ClinicalContext c(a, {}, true);
-  out << analyse(c.store(), id, options, "session reestimate", err) << "\n";
+  const storage::AnalysisResult r = analyse(c.store(), id, options, "session reestimate", err);
+  // What was chosen here becomes the session's filter settings: later analyses and session show
+  // use them.
+  if (options.filter || options.model || options.noOptical)
+    c.store().updateSessionFilterSettings(
+        id,
+        QString::fromUtf8(
+            QJsonDocument(storage::filterSettingsJson(r.settings)).toJson(QJsonDocument::Compact)));
+  out << r.estimateVersion << "\n";
   return 0;
 }
 
@@ -188,6 +212,12 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
       << "\nstarted: " << ss(s.startedAt) << "\nduration: " << s.durationS
       << " s\nsamples: " << s.imuSamples << " (rows " << s.sampleRows << ", " << s.chunks
       << " chunks, " << s.storedBytes << " bytes)\nprotocol: " << ss(s.protocolName)
+      << "\ndevices: " << ss(QStringList(objectOf(s.devicesJson).keys()).join(", "))
+      << "\nfilter settings: "
+      << (objectOf(s.filterJson).isEmpty()
+              ? std::string("none (the defaults)")
+              : ss(QString::fromUtf8(
+                    QJsonDocument(objectOf(s.filterJson)).toJson(QJsonDocument::Compact))))
       << "\nnotes: " << ss(s.notes) << "\n";
   if (metrics)
     printMetrics(out, *metrics);

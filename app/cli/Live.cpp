@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <QCoreApplication>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QSettings>
 #include <algorithm>
 #include <atomic>
@@ -23,11 +25,29 @@
 #include "core/io/Recording.h"
 #include "core/session/Session.h"
 #include "core/storage/DatabaseRecordingSink.h"
+#include "core/sync/SensorPayload.h"
 #include "devices/api/DeviceThread.h"
 #include "devices/api/Options.h"
 
 namespace armtrack::cli {
 namespace {
+
+/// One device as the clinical records keep it (a session's devices_json, docs/storage.md): its
+/// plugin, the options it was created with, and its streams with their nominal rates.
+QJsonObject deviceRecord(const QString& plugin, const QVariantMap& options,
+                         const devices::Device& device) {
+  QJsonObject given;
+  for (auto it = options.begin(); it != options.end(); ++it)
+    given.insert(it.key(), it.value().toString());
+  QStringList streams;
+  for (const StreamInfo& s : device.streams())
+    streams << QStringLiteral("%1 (%2, %3 Hz)")
+                   .arg(QString::fromStdString(s.name), QLatin1String(toString(s.role)))
+                   .arg(s.nominalRateHz, 0, 'g', 6);
+  return {{QStringLiteral("plugin"), plugin},
+          {QStringLiteral("options"), given},
+          {QStringLiteral("streams"), streams.join(QStringLiteral("; "))}};
+}
 
 constexpr const char* kDevicesHelp = R"(usage: armtrack-cli devices [--plugins DIR]...
 
@@ -133,9 +153,9 @@ struct LiveOptions {
 };
 
 const std::vector<OptionSpec> kSessionOptions = {
-    {"--device", true}, {"--duration", true},       {"--out", true},    {"--plugins", true},
-    {"--filter", true}, {"--no-estimate", false},   {"--side", true},   {"--latency-window", true},
-    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false}, {"--overwrite", false},
+    {"--device", true}, {"--duration", true},       {"--out", true},     {"--plugins", true},
+    {"--filter", true}, {"--no-estimate", false},   {"--side", true},    {"--latency-window", true},
+    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false},  {"--overwrite", false},
     {"--db", true},     {"--user", true},           {"--patient", true}, {"--protocol", true}};
 
 /// recorded: the rows to report as recorded (the session's count unless given).
@@ -151,15 +171,14 @@ void printStats(std::ostream& out, const session::SessionStats& s, double cpuPer
   out << line;
   for (std::size_t i = 0; i < s.streams.size(); ++i) {
     const session::StreamStats& st = s.streams[i];
-    std::snprintf(line, sizeof line,
-                  "  %-14s %-8s %8.1f Hz  received %9llu  rejected %5llu  late %5llu  "
-                  "link lost %6llu  corrupt %5llu  drift %+7.1f ppm  jitter %5.2f ms\n",
-                  st.device.c_str(), st.stream.c_str(), st.rateHz,
-                  static_cast<unsigned long long>(st.received),
-                  static_cast<unsigned long long>(st.rejected),
-                  static_cast<unsigned long long>(st.late),
-                  static_cast<unsigned long long>(st.deviceDropped),
-                  static_cast<unsigned long long>(st.deviceCorrupt), st.driftPpm, st.jitterMs);
+    std::snprintf(
+        line, sizeof line,
+        "  %-14s %-8s %8.1f Hz  received %9llu  rejected %5llu  late %5llu  "
+        "link lost %6llu  corrupt %5llu  drift %+7.1f ppm  jitter %5.2f ms\n",
+        st.device.c_str(), st.stream.c_str(), st.rateHz,
+        static_cast<unsigned long long>(st.received), static_cast<unsigned long long>(st.rejected),
+        static_cast<unsigned long long>(st.late), static_cast<unsigned long long>(st.deviceDropped),
+        static_cast<unsigned long long>(st.deviceCorrupt), st.driftPpm, st.jitterMs);
     out << line;
   }
   std::snprintf(line, sizeof line,
@@ -241,6 +260,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   // Recording into the clinical records: sign in and check the patient before any device starts.
   std::unique_ptr<ClinicalContext> records;
   qint64 sessionId = 0;
+  QJsonObject devicesUsed;  // filled below, stored when the session begins
   if (toDb) {
     if (overwrite) a.fail("--overwrite: only applies with --out");
     const QString patient = qs(a.required("--patient"));
@@ -250,11 +270,19 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
     if (!protocol.isEmpty()) records->store().protocol(protocol);
     const storage::DatabaseUrl url = records->db().url();
     params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
-    params.openSink = [&records, &sessionId, &out, url, patient, protocol](
+    const QString filterName = QString::fromStdString(filter);
+    params.openSink = [&records, &sessionId, &out, &devicesUsed, url, patient, protocol,
+                       filterName](
                           const RecordingMeta& meta,
                           const RecordingColumns& columns) -> std::unique_ptr<RecordingSink> {
+      storage::SessionSettings settings;
+      settings.devicesJson =
+          QString::fromUtf8(QJsonDocument(devicesUsed).toJson(QJsonDocument::Compact));
+      // The live filter, which the session's analysis then uses too.
+      settings.filterJson = QString::fromUtf8(
+          QJsonDocument(QJsonObject{{"filter", filterName}}).toJson(QJsonDocument::Compact));
       try {
-        sessionId = records->store().beginRecording(patient, protocol, meta, columns);
+        sessionId = records->store().beginRecording(patient, protocol, meta, columns, settings);
       } catch (const storage::StorageError& e) {
         throw RecordingError(ss(url.display()), 0, 0, e.what());
       }
@@ -274,8 +302,8 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
         colon == std::string::npos ? QString() : QString::fromStdString(spec.substr(colon + 1)));
     devices::DevicePlugin* plugin = registry.plugin(name);
     if (!plugin) {
-      err << "armtrack-cli: error: no device plugin '" << name.toStdString() << "'; found: "
-          << registry.names().join(QStringLiteral(", ")).toStdString()
+      err << "armtrack-cli: error: no device plugin '" << name.toStdString()
+          << "'; found: " << registry.names().join(QStringLiteral(", ")).toStdString()
           << " (armtrack-cli devices tells which files were refused)\n";
       return 1;
     }
@@ -287,6 +315,7 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
     }
     const QString label = QStringLiteral("%1#%2").arg(name).arg(
         o.devices.size() > 1 ? QString::number(&spec - o.devices.data() + 1) : QStringLiteral("1"));
+    devicesUsed.insert(label, deviceRecord(name, options, *device));
     session.addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);
   }
   if (const QString why = session.start(); !why.isEmpty()) {
@@ -334,8 +363,9 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
     if (o.anglesEverySecond && now >= nextAngles && !results.empty()) {
       const session::EstimateRow& r = results.back();
       char line[160];
-      std::snprintf(line, sizeof line, "t %9.3f s  th0 %7.2f  th1 %7.2f  th2 %7.2f  th4 %7.2f  th5 %7.2f deg\n",
-                    r.t, r.th(0) * 180 / M_PI, r.th(1) * 180 / M_PI, r.th(2) * 180 / M_PI,
+      std::snprintf(line, sizeof line,
+                    "t %9.3f s  th0 %7.2f  th1 %7.2f  th2 %7.2f  th4 %7.2f  th5 %7.2f deg\n", r.t,
+                    r.th(0) * 180 / M_PI, r.th(1) * 180 / M_PI, r.th(2) * 180 / M_PI,
                     r.th(3) * 180 / M_PI, r.th(4) * 180 / M_PI);
       out << line << std::flush;
       nextAngles = now + 1.0;
@@ -444,7 +474,8 @@ int devicesCommand(const std::vector<std::string>& args, std::ostream& out, std:
     out << "    (" << r.file.toStdString() << ")\n";
   }
   for (const app::PluginRecord& r : registry.records())
-    if (!r.loaded) out << "refused " << r.file.toStdString() << ": " << r.refusal.toStdString() << "\n";
+    if (!r.loaded)
+      out << "refused " << r.file.toStdString() << ": " << r.refusal.toStdString() << "\n";
   if (registry.names().isEmpty()) out << "no device plugins found\n";
   return 0;
 }

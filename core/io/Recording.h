@@ -69,6 +69,18 @@ struct RecordingColumns {
   bool estimate = false;                    ///< est_th*
 };
 
+/// What keeps a sample from being the next row of a recording with these columns, after a row at
+/// prevT (NaN or -infinity before the first row): a non-finite time, a time before prevT, a sensor
+/// the columns do not hold, or a non-finite value. The one check every writer of rows makes
+/// (RecordingWriter, core/storage's DatabaseRecordingSink).
+struct RowProblem {
+  int column = 1;       ///< the CSV column (1-based, the time is 1) as these columns number them
+  std::string message;  ///< e.g. "cannot write non-finite value nan in column \"ua_ax\""
+};
+/// Empty when sample may be appended.
+std::optional<RowProblem> checkRow(const ArmSample& sample, const RecordingColumns& columns,
+                                   double prevT);
+
 /// Reads a CSV recording row by row, holding one chunk of the file in memory, not the whole
 /// recording (a replay of an hour at 1 kHz). The constructor reads the sidecar and the header;
 /// next() the rows, checked as readRecording checks them. Throws RecordingError. One thread at a

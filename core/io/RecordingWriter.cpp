@@ -56,21 +56,35 @@ std::string fileHeader(const GroupSet& present) {
   return "# ArmTrack recording, format version 1\n" + csvHeader(present) + "\n";
 }
 
-/// Appends one CSV row for the columns in `present`. `prevT` is the previous row's time (NaN for
-/// the first row). Throws RecordingError for non-finite values, decreasing time, or a sensor the
-/// columns do not hold.
-void appendRow(std::string& buf, const GroupSet& present, const ArmSample& s, double prevT,
-               const std::string& file, int line) {
-  if (!std::isfinite(s.t)) {
-    throw RecordingError(file, line, 1, "cannot write non-finite time " + formatDouble(s.t));
-  }
-  if (s.t < prevT) {
-    throw RecordingError(
-        file, line, 1,
-        "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT));
-  }
+GroupSet groupsOf(const RecordingColumns& c) {
+  GroupSet g{};
+  g[kUaGyr] = g[kUaAcc] = c.upperArm;
+  g[kFaGyr] = g[kFaAcc] = c.forearm;
+  g[kElbow] = c.elbow;
+  g[kWrist] = c.wrist;
+  g[kCamWrist] = c.camWrist;
+  g[kCamElbow] = c.camElbow;
+  g[kTruth] = c.truth;
+  g[kEstimate] = c.estimate;
+  return g;
+}
+
+RecordingColumns columnsOf(const GroupSet& g) {
+  RecordingColumns c;
+  c.upperArm = g[kUaGyr];
+  c.forearm = g[kFaGyr];
+  c.elbow = g[kElbow];
+  c.wrist = g[kWrist];
+  c.camWrist = g[kCamWrist];
+  c.camElbow = g[kCamElbow];
+  c.truth = g[kTruth];
+  c.estimate = g[kEstimate];
+  return c;
+}
+
+/// The row's values in slot order (slot 0, the time, left 0).
+std::array<double, kNumSlots> slotsOf(const ArmSample& s) {
   std::array<double, kNumSlots> v{};
-  const GroupSet has = groupsOf(s);
   auto put = [&](Group g, const auto& x) {
     for (int k = 0; k < kGroups[g].size; ++k) v[kGroups[g].firstSlot + k] = x[k];
   };
@@ -88,39 +102,29 @@ void appendRow(std::string& buf, const GroupSet& present, const ArmSample& s, do
   if (s.camElbow) put(kCamElbow, *s.camElbow);
   if (s.trueAngles) put(kTruth, *s.trueAngles);
   if (s.estimate) put(kEstimate, *s.estimate);
+  return v;
+}
 
-  const std::size_t rowStart = buf.size();
+/// Appends one CSV row (checked with checkRow) for the columns in `present`. `prevT` is the
+/// previous row's time (NaN for the first row). Throws RecordingError naming file, line and
+/// column for what checkRow refuses.
+void appendRow(std::string& buf, const GroupSet& present, const ArmSample& s, double prevT,
+               const std::string& file, int line) {
+  if (const std::optional<RowProblem> p = checkRow(s, columnsOf(present), prevT))
+    throw RecordingError(file, line, p->column, p->message);
+  const std::array<double, kNumSlots> v = slotsOf(s);
+  const GroupSet has = groupsOf(s);
   char tbuf[32];
   const auto tr = std::to_chars(tbuf, tbuf + sizeof tbuf, s.t);
   buf.append(tbuf, tr.ptr);
-  int column = 1;
   for (int g = 0; g < kNumGroups; ++g) {
     const GroupDef& def = kGroups[g];
-    if (!present[g]) {
-      if (has[g]) {
-        buf.resize(rowStart);
-        throw RecordingError(
-            file, line, 1,
-            "cannot write the " + std::string(def.label) + ": the recording has no columns for it");
-      }
-      continue;
-    }
+    if (!present[g]) continue;
     if (!has[g]) {
       buf.append(static_cast<std::size_t>(def.size), ',');
-      column += def.size;
       continue;
     }
-    for (int k = 0; k < def.size; ++k) {
-      const double x = v[def.firstSlot + k];
-      ++column;
-      if (!std::isfinite(x)) {
-        buf.resize(rowStart);
-        throw RecordingError(file, line, column,
-                             "cannot write non-finite value " + formatDouble(x) + " in column " +
-                                 inQuotes(def.columns[k]));
-      }
-      appendNumber(buf, x);
-    }
+    for (int k = 0; k < def.size; ++k) appendNumber(buf, v[def.firstSlot + k]);
   }
   buf += '\n';
 }
@@ -151,18 +155,45 @@ void writeCsv(AtomicFile& out, const std::string& file, const Recording& rec) {
 
 }  // namespace
 
+std::optional<RowProblem> checkRow(const ArmSample& s, const RecordingColumns& columns,
+                                   double prevT) {
+  if (!std::isfinite(s.t))
+    return RowProblem{1, "cannot write non-finite time " + formatDouble(s.t)};
+  if (s.t < prevT)
+    return RowProblem{
+        1, "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT)};
+  const GroupSet present = groupsOf(columns);
+  const GroupSet has = groupsOf(s);
+  const std::array<double, kNumSlots> v = slotsOf(s);
+  int column = 1;
+  for (int g = 0; g < kNumGroups; ++g) {
+    const GroupDef& def = kGroups[g];
+    if (!present[g]) {
+      if (has[g])
+        return RowProblem{1, "cannot write the " + std::string(def.label) +
+                                 ": the recording has no columns for it"};
+      continue;
+    }
+    if (!has[g]) {
+      column += def.size;
+      continue;
+    }
+    for (int k = 0; k < def.size; ++k) {
+      const double x = v[def.firstSlot + k];
+      ++column;
+      if (!std::isfinite(x))
+        return RowProblem{column, "cannot write non-finite value " + formatDouble(x) +
+                                      " in column " + inQuotes(def.columns[k])};
+    }
+  }
+  return std::nullopt;
+}
+
 RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& meta,
                                  const RecordingColumns& c)
     : m_path(csvPath), m_prevT(std::numeric_limits<double>::quiet_NaN()) {
   static_assert(std::tuple_size_v<decltype(m_present)> == kNumGroups);
-  m_present[kUaGyr] = m_present[kUaAcc] = c.upperArm;
-  m_present[kFaGyr] = m_present[kFaAcc] = c.forearm;
-  m_present[kElbow] = c.elbow;
-  m_present[kWrist] = c.wrist;
-  m_present[kCamWrist] = c.camWrist;
-  m_present[kCamElbow] = c.camElbow;
-  m_present[kTruth] = c.truth;
-  m_present[kEstimate] = c.estimate;
+  m_present = groupsOf(c);
   // Check everything that can be checked before creating anything, so a refused recording
   // leaves no file behind (not even a sidecar).
   const std::string name = csvPath.string();

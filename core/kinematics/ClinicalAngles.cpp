@@ -31,11 +31,11 @@ JointVector fromClinical(const ClinicalAngles& c) {
 const std::array<ClinicalAngleInfo, 5>& clinicalAngleInfo() {
   static const std::array<ClinicalAngleInfo, 5> info{{
       {"shoulder_flexion", "Shoulder flexion", "flexion (arm forward)", -60.0, 180.0},
-      {"shoulder_abduction", "Shoulder abduction", "abduction (arm out to the side)", -30.0, 180.0},
+      {"shoulder_abduction", "Shoulder abduction", "abduction (arm out to the side)", 0.0, 180.0},
       {"shoulder_internal_rotation", "Shoulder internal rotation", "internal rotation", -90.0,
        70.0},
-      {"elbow_flexion", "Elbow flexion", "flexion", 0.0, 145.0},
-      {"forearm_pronation", "Forearm pronation", "pronation (palm down)", -85.0, 80.0},
+      {"elbow_flexion", "Elbow flexion", "flexion", 0.0, 150.0},
+      {"forearm_pronation", "Forearm pronation", "pronation (palm down)", -80.0, 80.0},
   }};
   return info;
 }

@@ -20,10 +20,13 @@ struct ClinicalAngles {
 };
 
 struct ClinicalAngleInfo {
-  std::string_view key;         ///< stable identifier (CSV columns, settings)
-  std::string_view name;        ///< English display name
-  std::string_view positive;    ///< what a positive value means
-  double normalMin, normalMax;  ///< typical active range of motion (deg)
+  std::string_view key;       ///< stable identifier (CSV columns, settings)
+  std::string_view name;      ///< English display name
+  std::string_view positive;  ///< what a positive value means
+  /// Typical active range of motion (deg): the AAOS values (1965, via Norkin & White,
+  /// Measurement of Joint Motion, Table A.1), as aaosNormativeRanges() in core/metrics cites
+  /// them; shoulder adduction is not in that table, so abduction's range starts at 0.
+  double normalMin, normalMax;
 };
 
 ClinicalAngles toClinical(const JointVector& th);

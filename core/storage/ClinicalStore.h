@@ -66,13 +66,16 @@ class ClinicalStore {
 
   // Sessions and recordings (ClinicalStoreSessions.cpp).
   /// Starts a session in status "recording" owned by this process. calibrationJson is the
-  /// recording's sidecar text.
+  /// recording's sidecar text; settings says what it is recorded with (StorageError(Usage) when
+  /// either is not a JSON object).
   qint64 beginSession(const QString& patientCode, const QString& protocolName,
-                      const QString& calibrationJson, int columnsMask);
+                      const QString& calibrationJson, int columnsMask,
+                      const SessionSettings& settings = {});
   /// beginSession for a recording with this sidecar and these columns (a live session recording
   /// into the records, see DatabaseRecordingSink).
   qint64 beginRecording(const QString& patientCode, const QString& protocolName,
-                        const RecordingMeta& meta, const RecordingColumns& columns);
+                        const RecordingMeta& meta, const RecordingColumns& columns,
+                        const SessionSettings& settings = {});
   /// The session's stored sidecar (geometry, gravity, side, camera). Throws NotFound, Corrupt.
   RecordingMeta recordingMeta(qint64 sessionId);
   /// An account's name, for reports (administrators and therapists). Throws NotFound.
@@ -86,6 +89,9 @@ class ClinicalStore {
   std::vector<SessionInfo> listSessions(const QString& patientCode);
   SessionInfo session(qint64 sessionId);
   void updateSessionNotes(qint64 sessionId, const QString& notes);
+  /// Sets the filter settings the session's analyses use (filter_json; administrators and
+  /// therapists). Throws StorageError(Usage) when json is not a JSON object.
+  void updateSessionFilterSettings(qint64 sessionId, const QString& json);
   void removeSession(qint64 sessionId);
   /// The stored recording. Throws StorageError(Corrupt) naming the session and chunk when a
   /// chunk cannot be decoded.

@@ -1,6 +1,7 @@
 // Sessions, their recordings (compressed chunks), estimates and metrics of ClinicalStore.
 #include <unistd.h>
 #include <QFile>
+#include <QJsonDocument>
 #include <QSysInfo>
 #include <QTemporaryDir>
 #include <cerrno>
@@ -100,26 +101,34 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
 }
 
 qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& protocolName,
-                                   const QString& calibrationJson, int columnsMask) {
+                                   const QString& calibrationJson, int columnsMask,
+                                   const SessionSettings& settings) {
+  for (const auto& [name, json] : {std::pair{"devices", &settings.devicesJson},
+                                   std::pair{"filter settings", &settings.filterJson}})
+    if (!QJsonDocument::fromJson(json->toUtf8()).isObject())
+      throw StorageError(Kind::Usage,
+                         std::string("a session's ") + name + " must be a JSON object");
   const qint64 patientId = visiblePatientId(patientCode);
   const std::optional<qint64> protocol = protocolId(protocolName);
   qint64 id = 0;
   m_db.transaction([&] {
     id = m_db.insert(
-        "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, "
-        "calibration_json, status, columns_mask, recorder_host, recorder_pid) "
-        "VALUES (?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
+        "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, devices_json, "
+        "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
         {patientId, isStaff() ? QVariant(user().id) : QVariant(),
-         protocol ? QVariant(*protocol) : QVariant(), utcNow(), calibrationJson, columnsMask,
-         QSysInfo::machineHostName(), static_cast<qint64>(::getpid())});
+         protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
+         calibrationJson, settings.filterJson, columnsMask, QSysInfo::machineHostName(),
+         static_cast<qint64>(::getpid())});
     audit("create", "session", QString::number(id), "patient " + patientCode);
   });
   return id;
 }
 
 qint64 ClinicalStore::beginRecording(const QString& patientCode, const QString& protocolName,
-                                     const RecordingMeta& meta, const RecordingColumns& columns) {
-  return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns));
+                                     const RecordingMeta& meta, const RecordingColumns& columns,
+                                     const SessionSettings& settings) {
+  return beginSession(patientCode, protocolName, sidecarText(meta), maskOf(columns), settings);
 }
 
 RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
@@ -129,8 +138,7 @@ RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
 QString ClinicalStore::userName(qint64 userId) {
   require(isStaff(), "reading account names");
   QSqlQuery q = m_db.exec("SELECT name FROM users WHERE id = ?", {userId});
-  if (!q.next())
-    throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
+  if (!q.next()) throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
   return q.value(0).toString();
 }
 
@@ -253,6 +261,17 @@ void ClinicalStore::updateSessionNotes(qint64 sessionId, const QString& notes) {
   });
 }
 
+void ClinicalStore::updateSessionFilterSettings(qint64 sessionId, const QString& json) {
+  require(isStaff(), "change a session's filter settings");
+  if (!QJsonDocument::fromJson(json.toUtf8()).isObject())
+    throw StorageError(Kind::Usage, "a session's filter settings must be a JSON object");
+  visibleSession(sessionId);
+  m_db.transaction([&] {
+    m_db.exec("UPDATE sessions SET filter_json = ? WHERE id = ?", {json, sessionId});
+    audit("update", "session", QString::number(sessionId), "filter settings");
+  });
+}
+
 void ClinicalStore::removeSession(qint64 sessionId) {
   require(user().role == Role::Admin, "remove sessions");
   visibleSession(sessionId);
@@ -267,34 +286,25 @@ Recording ClinicalStore::readRecording(qint64 sessionId) {
   Recording rec;
   rec.meta = metaFromText(s.calibrationJson, sessionId);
   rec.samples.reserve(static_cast<std::size_t>(s.sampleRows));
-  QSqlQuery q = m_db.exec(
-      "SELECT seq, row_count, codec, data FROM recording_chunks "
-      "WHERE session_id = ? ORDER BY seq",
-      {sessionId});
   int expectedSeq = 0;
-  while (q.next()) {
-    const int seq = q.value(0).toInt();
+  readChunks(m_db, sessionId, [&](const StoredChunk& c) {
     const std::string where =
-        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(seq) + ": ";
-    if (seq != expectedSeq)
+        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(c.seq) + ": ";
+    if (c.seq != expectedSeq)
       throw StorageError(Kind::Corrupt,
                          where + "chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
-    const std::string codec = text(q.value(2).toString());
-    if (!ChunkCodec::knows(codec))
-      throw StorageError(Kind::Corrupt,
-                         where + "unknown codec '" + text(q.value(2).toString()) + "'");
-    const QByteArray blob = q.value(3).toByteArray();
+    if (!ChunkCodec::knows(c.codec))
+      throw StorageError(Kind::Corrupt, where + "unknown codec '" + c.codec + "'");
     try {
-      auto samples =
-          ChunkCodec::decode(std::string(blob.constData(), blob.size()), q.value(1).toULongLong(), codec);
+      auto samples = ChunkCodec::decode(std::string(c.data), c.rows, c.codec);
       if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
         throw std::runtime_error("starts before the previous chunk ends");
       rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
     } catch (const std::runtime_error& e) {
       throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
     }
-  }
+  });
   if (static_cast<qint64>(rec.samples.size()) != s.sampleRows)
     throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
                                           std::to_string(rec.samples.size()) + " rows, " +

@@ -1,5 +1,7 @@
 #include "core/storage/Database.h"
 
+#include <sys/stat.h>
+
 #include <QAtomicInt>
 #include <QDateTime>
 #include <QFile>
@@ -9,12 +11,38 @@
 #include <QSqlField>
 #include <QSqlRecord>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 namespace armtrack::storage {
 
 namespace {
 
 using Kind = StorageError::Kind;
+
+// SQLite's locks are POSIX advisory locks: they belong to the process, and closing *any*
+// descriptor of the file drops all of them (sqlite.org/howtocorrupt.html, 2.2). Reading the
+// header through a descriptor of our own while another connection of this process has the file
+// open would drop that connection's locks; another process could then take the database for
+// unused, checkpoint it and delete the write-ahead log this process is still appending to (its
+// commits would be invisible to others, and lost if it were killed). So only the first
+// connection of a process to a file reads it before opening; later ones (a recorder's connection
+// beside the command's own) rely on that check. Keyed by device and inode.
+using FileId = std::pair<std::uint64_t, std::uint64_t>;
+std::mutex g_openFilesMutex;
+std::map<FileId, int> g_openFiles;
+
+std::optional<FileId> fileIdOf(const QString& path) {
+  struct stat st {};
+  if (::stat(QFile::encodeName(path).constData(), &st) != 0) return std::nullopt;
+  return FileId{static_cast<std::uint64_t>(st.st_dev), static_cast<std::uint64_t>(st.st_ino)};
+}
+
+bool openInThisProcess(const QString& path) {
+  const std::optional<FileId> id = fileIdOf(path);
+  const std::lock_guard lock(g_openFilesMutex);
+  return id && g_openFiles.count(*id) > 0;
+}
 
 QString nextConnectionName() {
   static QAtomicInt counter;
@@ -67,7 +95,7 @@ Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
 }
 
 void Database::openSqlite(bool create) {
-  checkFileBeforeOpening(create);
+  if (!openInThisProcess(m_url.path)) checkFileBeforeOpening(create);
   m_connection = nextConnectionName();
   m_db = QSqlDatabase::addDatabase("QSQLITE", m_connection);
   if (!m_db.isValid())
@@ -75,6 +103,18 @@ void Database::openSqlite(bool create) {
   m_db.setDatabaseName(m_url.path);
   m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
   if (!m_db.open()) fail(Kind::Io, "cannot open", m_db.lastError().text());
+  if (const std::optional<FileId> id = fileIdOf(m_url.path)) {
+    {
+      const std::lock_guard lock(g_openFilesMutex);
+      ++g_openFiles[*id];
+    }
+    // Released by the destructor, or when a later check of this constructor throws.
+    m_fileHold = std::shared_ptr<void>(nullptr, [id = *id](void*) {
+      const std::lock_guard lock(g_openFilesMutex);
+      const auto it = g_openFiles.find(id);
+      if (it != g_openFiles.end() && --it->second == 0) g_openFiles.erase(it);
+    });
+  }
   exec("PRAGMA foreign_keys = ON");
   // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
   // (only a power cut may lose the last transactions), at one fsync per checkpoint.
@@ -158,6 +198,7 @@ Database::~Database() {
   m_db.close();
   m_db = QSqlDatabase();
   if (!m_connection.isEmpty()) QSqlDatabase::removeDatabase(m_connection);
+  m_fileHold.reset();  // after the connection has closed
 }
 
 void Database::checkFileBeforeOpening(bool create) {
@@ -278,6 +319,17 @@ void Database::backup(const QString& outPath) {
     throw StorageError(Kind::Exists,
                        ("'" + outPath + "' exists; a backup never replaces a file").toStdString());
   exec("VACUUM INTO ?", {outPath});
+}
+
+void* Database::postgresConnection() const {
+  if (!isPostgres() || !m_db.driver()) return nullptr;
+  // QPSQL hands out its PGconn* (Qt's documented handle()); the type is named after the struct
+  // behind libpq's typedef, pg_conn.
+  const QVariant v = m_db.driver()->handle();
+  if (!v.isValid() ||
+      (qstrcmp(v.typeName(), "PGconn*") != 0 && qstrcmp(v.typeName(), "pg_conn*") != 0))
+    return nullptr;
+  return *static_cast<void* const*>(v.data());
 }
 
 QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {

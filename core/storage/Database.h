@@ -7,6 +7,7 @@
 #include <QString>
 #include <QVariant>
 #include <functional>
+#include <memory>
 
 #include "core/storage/DatabaseUrl.h"
 #include "core/storage/Schema.h"
@@ -41,6 +42,10 @@ class Database {
   int migrationsApplied() const { return m_applied; }
 
   bool isPostgres() const { return m_url.engine == DatabaseUrl::Engine::Postgres; }
+  /// PostgreSQL: the connection's libpq handle (a PGconn*) for what Qt Sql cannot do (binary
+  /// results, see readChunks); nullptr on SQLite or when the driver does not give it. Use it
+  /// only between statements of this object, on its thread.
+  void* postgresConnection() const;
 
   /// Runs PRAGMA integrity_check (SQLite; on PostgreSQL every table is read) and returns "ok"
   /// or the problems found.
@@ -75,6 +80,9 @@ class Database {
   QSqlDatabase m_db;
   int m_version = 0;
   int m_applied = 0;
+  /// SQLite: counts this connection among the process's connections to its file while it is
+  /// open (Database.cpp says why).
+  std::shared_ptr<void> m_fileHold;
 };
 
 /// Now as ISO 8601 UTC text with milliseconds, the form every time column holds.

@@ -3,7 +3,6 @@
 #include <unistd.h>
 
 #include <QSysInfo>
-#include <cmath>
 #include <limits>
 
 #include "core/storage/Database.h"
@@ -11,14 +10,6 @@
 #include "core/storage/Records.h"
 
 namespace armtrack::storage {
-
-namespace {
-
-bool finite(const ImuReading& r) {
-  return r.gyr.allFinite() && r.acc.allFinite();
-}
-
-}  // namespace
 
 DatabaseRecordingSink::DatabaseRecordingSink(DatabaseUrl url, qint64 sessionId,
                                              const RecordingColumns& columns, double chunkSeconds)
@@ -37,32 +28,14 @@ DatabaseRecordingSink::~DatabaseRecordingSink() {
 }
 
 void DatabaseRecordingSink::fail(const std::string& what) const {
-  throw RecordingError(m_url.display().toStdString() + " session " + std::to_string(m_sessionId),
-                       0, 0, what);
+  throw RecordingError(m_url.display().toStdString() + " session " + std::to_string(m_sessionId), 0,
+                       0, what);
 }
 
 void DatabaseRecordingSink::append(const ArmSample& s) {
   if (m_closed) fail("the recording is closed");
-  if (!std::isfinite(s.t)) fail("row " + std::to_string(m_rows + 1) + ": non-finite time");
-  if (s.t < m_prevT)
-    fail("row " + std::to_string(m_rows + 1) + ": time goes back from " + std::to_string(m_prevT) +
-         " to " + std::to_string(s.t) + " s");
-  const bool present[] = {s.upperArm.has_value(), s.forearm.has_value(), s.elbow.has_value(),
-                          s.wrist.has_value(),    s.camWrist.has_value(), s.camElbow.has_value(),
-                          s.trueAngles.has_value(), s.estimate.has_value()};
-  const bool allowed[] = {m_columns.upperArm, m_columns.forearm,  m_columns.elbow,
-                          m_columns.wrist,    m_columns.camWrist, m_columns.camElbow,
-                          m_columns.truth,    m_columns.estimate};
-  for (int i = 0; i < 8; ++i)
-    if (present[i] && !allowed[i])
-      fail("row " + std::to_string(m_rows + 1) + ": a sensor the recording has no column for");
-  const bool ok = (!s.upperArm || finite(*s.upperArm)) && (!s.forearm || finite(*s.forearm)) &&
-                  (!s.elbow || s.elbow->allFinite()) && (!s.wrist || s.wrist->allFinite()) &&
-                  (!s.camWrist || s.camWrist->allFinite()) &&
-                  (!s.camElbow || s.camElbow->allFinite()) &&
-                  (!s.trueAngles || s.trueAngles->allFinite()) &&
-                  (!s.estimate || s.estimate->allFinite());
-  if (!ok) fail("row " + std::to_string(m_rows + 1) + ": non-finite value");
+  if (const std::optional<RowProblem> p = checkRow(s, m_columns, m_prevT))
+    fail("row " + std::to_string(m_rows + 1) + ": " + p->message);
   m_buffer.push_back(s);
   m_prevT = s.t;
   ++m_rows;

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <memory>
 #include <stdexcept>
+#include <vector>
 
 namespace armtrack::storage {
 
@@ -45,15 +46,71 @@ double& slotOf(EstimateColumns& e, std::size_t c, std::size_t r) {
 
 }  // namespace
 
+namespace {
+
+/// zstd's streaming compressor fed through a small buffer: the blob's bytes (which are as large
+/// as the estimates themselves, about 89 per row) are never all in memory, only the compressed
+/// frame is (docs/storage.md, "Memory of an analysis").
+class FrameWriter {
+ public:
+  FrameWriter(int level, std::uint64_t contentBytes) : m_cctx(ZSTD_createCCtx(), &ZSTD_freeCCtx) {
+    if (!m_cctx) throw std::runtime_error("zstd: out of memory");
+    ZSTD_CCtx_setParameter(m_cctx.get(), ZSTD_c_compressionLevel, level);
+    // With zstd's content checksum, so a damaged blob is refused rather than decoded to other
+    // numbers; the size in the frame header as a one-shot compression would write it.
+    ZSTD_CCtx_setParameter(m_cctx.get(), ZSTD_c_checksumFlag, 1);
+    ZSTD_CCtx_setPledgedSrcSize(m_cctx.get(), contentBytes);
+    m_in.reserve(kBuffer);
+  }
+  void put(char c) {
+    m_in.push_back(c);
+    if (m_in.size() == kBuffer) compress(ZSTD_e_continue);
+  }
+  void put(const std::string& bytes) {
+    for (char c : bytes) put(c);
+  }
+  std::string finish() {
+    compress(ZSTD_e_end);
+    return std::move(m_frame);
+  }
+
+ private:
+  static constexpr std::size_t kBuffer = 1 << 17;
+  void compress(ZSTD_EndDirective mode) {
+    ZSTD_inBuffer in{m_in.data(), m_in.size(), 0};
+    std::size_t remaining = 0;
+    do {
+      const std::size_t at = m_frame.size();
+      m_frame.resize(at + ZSTD_CStreamOutSize());
+      ZSTD_outBuffer out{m_frame.data() + at, ZSTD_CStreamOutSize(), 0};
+      remaining = ZSTD_compressStream2(m_cctx.get(), &out, &in, mode);
+      if (ZSTD_isError(remaining))
+        throw std::runtime_error(std::string("zstd compression failed: ") +
+                                 ZSTD_getErrorName(remaining));
+      m_frame.resize(at + out.pos);
+    } while (in.pos < in.size || (mode == ZSTD_e_end && remaining != 0));
+    m_in.clear();
+  }
+  std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> m_cctx;
+  std::string m_in;
+  std::string m_frame;
+};
+
+}  // namespace
+
 std::string EstimateCodec::encode(const EstimateColumns& e, int level) {
   const std::size_t n = e.t.size();
   if (e.th.size() != n || e.sd.size() != n || e.status.size() != n)
     throw std::invalid_argument("estimate columns of different lengths");
-  std::string raw;
-  raw.reserve(kHeaderBytes + n * (8 * kDoubleColumns + 1));
-  putU32(raw, kMagic);
-  putU32(raw, kColumns);
-  putU64(raw, n);
+  for (int s : e.status)
+    if (s < 0 || s > kMaxStatus)
+      throw std::invalid_argument("estimate status " + std::to_string(s) + " outside 0-3");
+  FrameWriter frame(level, kHeaderBytes + n * (8 * kDoubleColumns + 1));
+  std::string header;
+  putU32(header, kMagic);
+  putU32(header, kColumns);
+  putU64(header, n);
+  frame.put(header);
   std::vector<std::uint64_t> bits(n);
   for (std::size_t c = 0; c < kDoubleColumns; ++c) {
     std::uint64_t previous = 0;
@@ -64,26 +121,10 @@ std::string EstimateCodec::encode(const EstimateColumns& e, int level) {
     }
     for (int plane = 0; plane < 8; ++plane)
       for (std::size_t r = 0; r < n; ++r)
-        raw.push_back(static_cast<char>((bits[r] >> (8 * plane)) & 0xff));
+        frame.put(static_cast<char>((bits[r] >> (8 * plane)) & 0xff));
   }
-  for (int s : e.status) {
-    if (s < 0 || s > kMaxStatus)
-      throw std::invalid_argument("estimate status " + std::to_string(s) + " outside 0-3");
-    raw.push_back(static_cast<char>(s));
-  }
-  // With zstd's content checksum, so a damaged blob is refused rather than decoded to other
-  // numbers.
-  std::unique_ptr<ZSTD_CCtx, decltype(&ZSTD_freeCCtx)> cctx(ZSTD_createCCtx(), &ZSTD_freeCCtx);
-  if (!cctx) throw std::runtime_error("zstd: out of memory");
-  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_compressionLevel, level);
-  ZSTD_CCtx_setParameter(cctx.get(), ZSTD_c_checksumFlag, 1);
-  std::string frame(ZSTD_compressBound(raw.size()), '\0');
-  const std::size_t size =
-      ZSTD_compress2(cctx.get(), frame.data(), frame.size(), raw.data(), raw.size());
-  if (ZSTD_isError(size))
-    throw std::runtime_error(std::string("zstd compression failed: ") + ZSTD_getErrorName(size));
-  frame.resize(size);
-  return frame;
+  for (int s : e.status) frame.put(static_cast<char>(s));
+  return frame.finish();
 }
 
 EstimateColumns EstimateCodec::decode(const std::string& blob, std::uint64_t expectedRows) {

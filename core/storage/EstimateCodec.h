@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/estimation/RecordingEstimator.h"
 #include "core/kinematics/ArmModel.h"
 
 namespace armtrack::storage {
@@ -17,6 +18,13 @@ struct EstimateColumns {
   std::vector<JointVector> sd;  ///< their standard deviations (rad)
   std::vector<int> status;      ///< kStatus* of core/estimation/RecordingEstimator.h (0-3)
   std::size_t size() const { return t.size(); }
+  /// Adds one output row of the estimator at the end of every column.
+  void append(const EstimateRow& row) {
+    t.push_back(row.t);
+    th.push_back(row.th);
+    sd.push_back(row.sd);
+    status.push_back(row.status);
+  }
 };
 
 /// Encodes and decodes estimate blobs. Every double is kept bit for bit. Before compression: a

@@ -54,6 +54,12 @@ inline constexpr const char* kStatusRecording = "recording";
 inline constexpr const char* kStatusComplete = "complete";
 inline constexpr const char* kStatusInterrupted = "interrupted";
 
+/// How a session was made, stored beside it (docs/storage.md, "Sessions"); each a JSON object.
+struct SessionSettings {
+  QString devicesJson = "{}";  ///< the devices: plugin, options and streams, by device label
+  QString filterJson = "{}";   ///< the filter settings its analysis uses (SessionAnalysis.h)
+};
+
 struct SessionInfo {
   qint64 id = 0;
   qint64 patientId = 0;

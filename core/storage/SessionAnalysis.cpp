@@ -41,7 +41,7 @@ struct MetricRows {
 
 MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVector>& th,
                       const std::vector<JointVector>& sd, const std::vector<int>& status,
-                      qint64 sessionId) {
+                      qint64 sessionId, bool withSd = true) {
   std::vector<double> mt;
   std::vector<JointVector> mth;
   MetricRows out;
@@ -59,6 +59,7 @@ MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVecto
     }
     mt.push_back(t[i]);
     mth.push_back(th[i]);
+    if (!withSd) continue;
     ClinicalRow s;  // the clinical angles are the joint angles up to sign
     for (int k = 0; k < kNumClinicalAngles; ++k) s[static_cast<std::size_t>(k)] = sd[i](k);
     out.sdRad.push_back(s);
@@ -242,25 +243,30 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);
   result.settingsSource = fromSession ? "session" : "defaults";
   if (options.filter) result.settings.filter = *options.filter;
+  if (options.model) result.settings.model = *options.model;
   if (options.noOptical) result.settings.useOptical = result.settings.useCamera = false;
   const auto progress = [&](int p) {
     if (options.progress) options.progress(p);
   };
   progress(0);
 
-  const Recording recording = store.readRecording(sessionId);
-  const EstimatorParams params = estimatorParamsFor(recording.meta, result.settings);
+  EstimatorParams params;
   EstimateColumns rows;
-  EstimateCallbacks callbacks;
-  callbacks.row = [&](const EstimateRow& r) {
-    rows.t.push_back(r.t);
-    rows.th.push_back(r.th);
-    rows.sd.push_back(r.sd);
-    rows.status.push_back(r.status);
-  };
-  callbacks.progress = [&](int p) { progress(p * 9 / 10); };
-  callbacks.cancel = options.cancel;
-  result.stats = estimateRecording(recording, params, callbacks);
+  {
+    // The recording (352 bytes a row in memory) goes as soon as it is estimated, before the
+    // metrics and the blob are made (docs/storage.md, "Memory of an analysis").
+    const Recording recording = store.readRecording(sessionId);
+    params = estimatorParamsFor(recording.meta, result.settings);
+    rows.t.reserve(recording.samples.size());
+    rows.th.reserve(recording.samples.size());
+    rows.sd.reserve(recording.samples.size());
+    rows.status.reserve(recording.samples.size());
+    EstimateCallbacks callbacks;
+    callbacks.row = [&](const EstimateRow& r) { rows.append(r); };
+    callbacks.progress = [&](int p) { progress(p * 9 / 10); };
+    callbacks.cancel = options.cancel;
+    result.stats = estimateRecording(recording, params, callbacks);
+  }
   if (result.stats.cancelled) {
     result.cancelled = true;
     return result;
@@ -273,7 +279,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
 
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
-  const MetricRows settled = metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId);
+  const MetricRows settled =
+      metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId, /*withSd=*/false);
   try {
     result.metrics = computeSessionMetrics(settled.series, mp);
   } catch (const std::invalid_argument& e) {
@@ -288,23 +295,20 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   }
 
   const EstimateStats& st = result.stats;
-  const QJsonObject paramsJson{
-      {"filter", filterName(result.settings.filter)},
-      {"method", QString::fromStdString(methodName(result.settings.model))},
-      {"optical", result.settings.useOptical},
-      {"camera", result.settings.useCamera},
-      {"joint_accel_std_deg", result.settings.jointAccelStdDeg
-                                  ? QJsonValue(*result.settings.jointAccelStdDeg)
-                                  : QJsonValue(QJsonValue::Null)},
-      {"settings", result.settingsSource},
-      {"optical_used", st.opticalUsed},
-      {"library_version", ARMTRACK_VERSION},
-      {"rows", static_cast<qint64>(rows.size())},
-      {"recording_rows", static_cast<qint64>(st.rows)},
-      {"imu_rows", static_cast<qint64>(st.imuRows)},
-      {"predicted", static_cast<qint64>(st.predicted)},
-      {"restarts", static_cast<qint64>(st.counters.restarts)},
-      {"recoveries", static_cast<qint64>(st.counters.recoveries)}};
+  QJsonObject paramsJson = filterSettingsJson(result.settings);
+  if (!paramsJson.contains("joint_accel_std_deg"))
+    paramsJson.insert("joint_accel_std_deg", QJsonValue(QJsonValue::Null));
+  for (const auto& [key, value] : std::initializer_list<std::pair<const char*, QJsonValue>>{
+           {"settings", result.settingsSource},
+           {"optical_used", st.opticalUsed},
+           {"library_version", ARMTRACK_VERSION},
+           {"rows", static_cast<qint64>(rows.size())},
+           {"recording_rows", static_cast<qint64>(st.rows)},
+           {"imu_rows", static_cast<qint64>(st.imuRows)},
+           {"predicted", static_cast<qint64>(st.predicted)},
+           {"restarts", static_cast<qint64>(st.counters.restarts)},
+           {"recoveries", static_cast<qint64>(st.counters.recoveries)}})
+    paramsJson.insert(key, value);
   const std::string blob = EstimateCodec::encode(rows);
   result.estimateVersion = store.saveEstimates(
       sessionId, QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
@@ -320,6 +324,15 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
               "estimates and metrics version " + QString::number(result.estimateVersion));
   progress(100);
   return result;
+}
+
+QJsonObject filterSettingsJson(const EstimateOptions& settings) {
+  QJsonObject o{{"filter", filterName(settings.filter)},
+                {"method", QString::fromStdString(methodName(settings.model))},
+                {"optical", settings.useOptical},
+                {"camera", settings.useCamera}};
+  if (settings.jointAccelStdDeg) o.insert("joint_accel_std_deg", *settings.jointAccelStdDeg);
+  return o;
 }
 
 std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version) {

@@ -22,6 +22,8 @@ inline constexpr const char* kMetricsFormat = "armtrack-metrics-v1";
 struct AnalysisOptions {
   /// Overrides the session's stored filter (else the session's, else EKF).
   std::optional<FilterKind> filter;
+  /// Overrides the session's stored measurement model (else the session's, else Method A).
+  std::optional<MeasurementModel> model;
   /// true = fuse no optical data (Kinect positions and marker pixels), whatever the session says.
   bool noOptical = false;
   /// Called on the calling thread with 0-100 (percent done, rising; 100 once stored).
@@ -41,6 +43,10 @@ struct AnalysisResult {
   SessionMetrics metrics;    ///< SI units
   QJsonObject metricsJson;   ///< as latestAnalysis() returns it
 };
+
+/// Filter settings as a session's filter_json holds them (docs/storage.md, "Filter settings"):
+/// filter, method, optical, camera and, when set, joint_accel_std_deg.
+QJsonObject filterSettingsJson(const EstimateOptions& settings);
 
 /// Reads the session's recording, estimates it (the session's filter settings when it has any,
 /// else the defaults; the geometry from its sidecar), stores the estimates (codec
@@ -90,10 +96,10 @@ std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessio
 /// start or recovery left out), and the metrics computed from them as analyseSession did.
 struct SessionAngles {
   SessionInfo info;
-  Side side = Side::Right;          ///< the arm recorded (the session's sidecar)
-  int version = 0;                  ///< the estimates' version
-  AngleSeries series;               ///< clinical angles (rad)
-  std::vector<ClinicalRow> sdRad;   ///< their standard deviations (rad), one per row of series
+  Side side = Side::Right;         ///< the arm recorded (the session's sidecar)
+  int version = 0;                 ///< the estimates' version
+  AngleSeries series;              ///< clinical angles (rad)
+  std::vector<ClinicalRow> sdRad;  ///< their standard deviations (rad), one per row of series
   SessionMetrics metrics;
 };
 /// Throws StorageError: NotFound (no such session, or never analysed: the message says to run

@@ -1,25 +1,30 @@
-// `record --db`: a live session recorded straight into the clinical records (issue 10): the rows
-// arrive as chunks of under a second, a SIGKILL loses at most the last second and leaves the
-// session marked interrupted, and a full disk is told and leaves what was written intact.
+// `record --db`: a live session recorded straight into the clinical records (issue 10), on SQLite
+// and on PostgreSQL: the rows arrive as chunks of under a second, a SIGKILL loses at most the last
+// second and leaves the session marked interrupted, a write the database refuses (a full disk) is
+// told and leaves what was written intact, and the recorded session's PDF report has every section.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
+#include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
-#include <QSqlDatabase>
-#include <QSqlQuery>
+#include <QRegularExpression>
 #include <QTemporaryDir>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <filesystem>
 #include <sstream>
-#include <thread>
 
 #include "app/cli/Cli.h"
 #include "core/io/Recording.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "tests/core/reports/ReportTestSupport.h"
+#include "tests/support/DatabaseEngines.h"
 
 using armtrack::cli::runCli;
+using armtrack::test::Engine;
 using Clock = std::chrono::steady_clock;
 
 namespace {
@@ -31,13 +36,14 @@ struct Result {
   std::string out, err;
 };
 
-class RecordDb : public ::testing::Test {
+class RecordDb : public ::testing::TestWithParam<Engine> {
  protected:
   void SetUp() override {
     ASSERT_TRUE(m_dir.isValid());
-    m_db = m_dir.filePath("clinic.db").toStdString();
+    m_db = armtrack::test::newDatabase(GetParam(), m_dir, "clinic").toStdString();
     ::setenv("ARMTRACK_PASSWORD", kPass, 1);
-    ASSERT_EQ(run({"db", "init", "--admin", "boss"}, false).code, 0);
+    const Result init = run({"db", "init", "--admin", "boss"}, false);
+    ASSERT_EQ(init.code, 0) << init.err;
     const Result p = run({"patient", "add", "--code", "P01", "--name", "Ada Example", "--birth",
                           "1950-01-02", "--sex", "f", "--side", "right"});
     ASSERT_EQ(p.code, 0) << p.err;
@@ -52,10 +58,20 @@ class RecordDb : public ::testing::Test {
     return {code, out.str(), err.str()};
   }
   QStringList recordArgs(const char* duration) const {
-    return {"record",    "--device",  "virtual-arm", "--duration",
-            duration,    "--db",      QString::fromStdString(m_db),
-            "--user",    "boss",      "--patient",   "P01",
-            "--plugins", ARMTRACK_PLUGIN_DIR, "--quiet"};
+    return {"record",
+            "--device",
+            "virtual-arm",
+            "--duration",
+            duration,
+            "--db",
+            QString::fromStdString(m_db),
+            "--user",
+            "boss",
+            "--patient",
+            "P01",
+            "--plugins",
+            ARMTRACK_PLUGIN_DIR,
+            "--quiet"};
   }
   QJsonObject show(const std::string& id) {
     const Result r = run({"session", "show", id, "--json"});
@@ -65,18 +81,23 @@ class RecordDb : public ::testing::Test {
   /// (t_first, t_last) of every chunk of the session, in order, read with plain SQL.
   std::vector<std::pair<double, double>> chunks(const std::string& id) {
     std::vector<std::pair<double, double>> spans;
-    {
-      QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", "chunks");
-      db.setDatabaseName(QString::fromStdString(m_db));
-      EXPECT_TRUE(db.open());
-      QSqlQuery q(db);
-      q.prepare("SELECT t_first, t_last FROM recording_chunks WHERE session_id = ? ORDER BY seq");
-      q.addBindValue(std::stoll(id));
-      EXPECT_TRUE(q.exec());
-      while (q.next()) spans.emplace_back(q.value(0).toDouble(), q.value(1).toDouble());
-    }
-    QSqlDatabase::removeDatabase("chunks");
+    for (const QVariantList& row : armtrack::test::rawQuery(
+             QString::fromStdString(m_db),
+             QString("SELECT t_first, t_last FROM recording_chunks WHERE session_id = %1 "
+                     "ORDER BY seq")
+                 .arg(std::stoll(id))))
+      spans.emplace_back(row[0].toDouble(), row[1].toDouble());
     return spans;
+  }
+  /// Waits (up to 60 s, while p runs) until the session's chunks reach `seconds` of session
+  /// time; the last chunk's end, or -1.
+  double waitForChunksTo(QProcess& p, const std::string& id, double seconds) {
+    for (int i = 0; i < 600 && p.state() == QProcess::Running; ++i) {
+      const auto spans = chunks(id);
+      if (!spans.empty() && spans.back().second >= seconds) return spans.back().second;
+      p.waitForFinished(100);
+    }
+    return -1.0;
   }
 
   QTemporaryDir m_dir;
@@ -97,7 +118,7 @@ std::string waitForSessionLine(QProcess& p) {
 
 }  // namespace
 
-TEST_F(RecordDb, RecordsASessionInChunksOfUnderASecond) {
+TEST_P(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   QProcess p;
   p.start(ARMTRACK_CLI, recordArgs("3"));
   ASSERT_TRUE(p.waitForFinished(60000));
@@ -110,13 +131,17 @@ TEST_F(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   EXPECT_EQ(s["status"].toString(), "complete");
   EXPECT_EQ(s["patient"].toString(), "P01");
   EXPECT_GT(s["duration_s"].toDouble(), 2.0);
-  EXPECT_GT(s["samples"].toInteger(), 2000);  // two IMUs at 1 kHz for about 3 s
+  EXPECT_GT(s["samples"].toInteger(), 2000);    // two IMUs at 1 kHz for about 3 s
   EXPECT_EQ(s["estimate_version"].toInt(), 1);  // analysed once stored, as an import is
+  // What it was recorded with: the device, and the live filter its analysis uses too.
+  EXPECT_EQ(s["devices"].toObject()["virtual-arm#1"].toObject()["plugin"].toString(),
+            "virtual-arm");
+  EXPECT_EQ(s["filter_settings"].toObject()["filter"].toString(), "ekf");
   EXPECT_TRUE(s["metrics"].isObject());
   // The count printed is what the database holds.
-  EXPECT_NE(out.find("recorded " + std::to_string(s["rows"].toInteger()) + " rows in session " +
-                     id),
-            std::string::npos)
+  EXPECT_NE(
+      out.find("recorded " + std::to_string(s["rows"].toInteger()) + " rows in session " + id),
+      std::string::npos)
       << out;
 
   const auto spans = chunks(id);
@@ -138,14 +163,22 @@ TEST_F(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   EXPECT_GT(estimated, 1000);
 }
 
-TEST_F(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
+// Another process watches the session grow while it is recorded (a GUI would), then the recorder
+// is killed: what the watcher saw stays, and at most the last second is lost. On SQLite this also
+// holds the recorder to its file locks: had it lost them, the watcher closing its connection would
+// checkpoint the database and delete the write-ahead log the recorder goes on appending to, so the
+// watcher would never see the recording grow and the kill would lose everything after that.
+TEST_P(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
   QProcess p;
-  p.start(ARMTRACK_CLI, recordArgs("60"));
+  p.start(ARMTRACK_CLI, recordArgs("20"));
   ASSERT_TRUE(p.waitForStarted());
   const std::string id = waitForSessionLine(p);
   const Clock::time_point started = Clock::now();  // the session's clock starts just after
   ASSERT_FALSE(id.empty()) << p.readAllStandardError().toStdString();
-  std::this_thread::sleep_for(std::chrono::milliseconds(4000));
+  // Kill it once the watcher sees 3 s stored, however long a loaded machine took to get there.
+  const double seen = waitForChunksTo(p, id, 3.0);
+  ASSERT_GE(seen, 3.0) << "the recording did not grow for a watcher; "
+                       << p.readAllStandardError().toStdString();
   const double killedAt = std::chrono::duration<double>(Clock::now() - started).count();
   p.kill();  // SIGKILL: no chance to commit anything more
   ASSERT_TRUE(p.waitForFinished());
@@ -154,6 +187,7 @@ TEST_F(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
   EXPECT_EQ(s["status"].toString(), "interrupted");
   const auto spans = chunks(id);
   ASSERT_FALSE(spans.empty());
+  EXPECT_GE(spans.back().second, seen) << "what the watcher saw was lost";
   const double lost = killedAt - spans.back().second;
   std::cout << "killed at " << killedAt << " s of session time; stored up to "
             << spans.back().second << " s: lost " << lost << " s\n";
@@ -161,30 +195,38 @@ TEST_F(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
   // the scheduler of a loaded test machine.
   EXPECT_LT(lost, 1.2);
   EXPECT_EQ(run({"db", "check"}).code, 0);  // opens clean
-  const Result exp = run({"export", id, "--format", "recording", "--out",
-                          m_dir.filePath("killed.csv").toStdString()});
+  const Result exp = run(
+      {"export", id, "--format", "recording", "--out", m_dir.filePath("killed.csv").toStdString()});
   EXPECT_EQ(exp.code, 0) << exp.err;  // every stored chunk decodes
 }
 
-TEST_F(RecordDb, AFullDiskIsToldAndWhatWasWrittenStaysIntact) {
-  const auto dbSize = std::filesystem::file_size(m_db);
+// SQLite: the file size limit stands in for a full disk (writes past it fail with EFBIG; the
+// signal it would raise is ignored, as a full disk raises none). PostgreSQL: the server refuses
+// the chunks' inserts from the third second on, as it refuses them when its disk is full ("could
+// not extend file": an error for the statement, the connection and the server stay up).
+TEST_P(RecordDb, AFullDiskIsToldAndWhatWasWrittenStaysIntact) {
   QProcess p;
-  // The file size limit stands in for a full disk: writes past it fail with EFBIG (the signal it
-  // would raise is ignored, as a full disk raises none).
-  p.setChildProcessModifier([limit = dbSize + 160 * 1024] {
-    std::signal(SIGXFSZ, SIG_IGN);
-    const rlimit r{limit, limit};
-    setrlimit(RLIMIT_FSIZE, &r);
-  });
+  if (GetParam() == Engine::Sqlite)
+    p.setChildProcessModifier([limit = std::filesystem::file_size(m_db) + 160 * 1024] {
+      std::signal(SIGXFSZ, SIG_IGN);
+      const rlimit r{limit, limit};
+      setrlimit(RLIMIT_FSIZE, &r);
+    });
   p.start(ARMTRACK_CLI, recordArgs("6"));
+  ASSERT_TRUE(p.waitForStarted());
+  const std::string id = waitForSessionLine(p);
+  ASSERT_FALSE(id.empty()) << p.readAllStandardError().toStdString();
+  if (GetParam() == Engine::Postgres) {
+    ASSERT_GE(waitForChunksTo(p, id, 2.0), 2.0);
+    armtrack::test::rawSql(QString::fromStdString(m_db),
+                           {"REVOKE INSERT ON recording_chunks FROM armtrack_test"});
+  }
   ASSERT_TRUE(p.waitForFinished(60000));
   const std::string out = p.readAllStandardOutput().toStdString();
   const std::string err = p.readAllStandardError().toStdString();
   EXPECT_EQ(p.exitCode(), 1) << out << err;
   EXPECT_NE(err.find("rows were lost"), std::string::npos) << err;
   EXPECT_NE(err.find("cannot store the recording"), std::string::npos) << err;
-  ASSERT_EQ(out.rfind("session ", 0), 0u) << out;
-  const std::string id = out.substr(8, out.find('\n') - 8);
 
   EXPECT_EQ(run({"db", "check"}).code, 0);
   const QJsonObject s = show(id);
@@ -198,7 +240,80 @@ TEST_F(RecordDb, AFullDiskIsToldAndWhatWasWrittenStaysIntact) {
   EXPECT_EQ(static_cast<long long>(armtrack::readRecording(csv).samples.size()), stored);
 }
 
-TEST_F(RecordDb, RefusesAnUnknownPatientAndMixedTargetsBeforeAnyDeviceStarts) {
+// Acceptance 3 of issue 10: the PDF report of a session recorded live from the virtual arm, read
+// back as a reader would (pdftotext for the words, pdftoppm for the pages): every section, the
+// devices it was recorded with, the metrics that session show gives, and plots drawn.
+TEST_P(RecordDb, ReportOfARecordedVirtualArmSessionHasEverySection) {
+  namespace rt = armtrack::reports::test;
+  if (const std::string tool = rt::missingPdfTool(); !tool.empty())
+    GTEST_SKIP() << tool << " not found (Debian package poppler-utils)";
+  QProcess rec;
+  rec.start(ARMTRACK_CLI, recordArgs("8"));
+  ASSERT_TRUE(rec.waitForFinished(90000));
+  const std::string out = rec.readAllStandardOutput().toStdString();
+  ASSERT_EQ(rec.exitCode(), 0) << out << rec.readAllStandardError().toStdString();
+  const std::string id = out.substr(8, out.find('\n') - 8);
+  const QJsonObject s = show(id);
+  ASSERT_EQ(s["status"].toString(), "complete");
+  ASSERT_TRUE(s["metrics"].isObject()) << "record --db analyses the session";
+
+  const QString pdf = m_dir.filePath("report.pdf");
+  QProcess report;
+  report.start(ARMTRACK_CLI, {"report", QString::fromStdString(id), "--pdf", pdf, "--db",
+                              QString::fromStdString(m_db), "--user", "boss"});
+  ASSERT_TRUE(report.waitForFinished(120000));
+  ASSERT_EQ(report.exitCode(), 0) << report.readAllStandardError().toStdString();
+
+  const QStringList text = rt::pageTexts(pdf);
+  ASSERT_GE(text.size(), 2);
+  const QString all = text.join('\n');
+  for (const char* section : {"Session report", "Patient and session", "Devices and calibration",
+                              "Metrics per clinical angle", "Joint angles over time", "Repetitions",
+                              "Comparison with normative ranges",
+                              "Comparison with earlier sessions", "Therapist's notes"})
+    EXPECT_TRUE(all.contains(section)) << "missing section " << section;
+  for (qsizetype i = 0; i < text.size(); ++i) {
+    EXPECT_TRUE(text[i].contains("Ada Example")) << "page " << i + 1;
+    EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(text.size())));
+  }
+  // The devices it was recorded with: the plugin, and its streams with their rates.
+  EXPECT_TRUE(all.contains("virtual-arm#1.plugin: virtual-arm")) << all.left(3000);
+  EXPECT_TRUE(all.contains(QRegularExpression("upper.arm[^\\n]*1000 Hz"))) << all.left(3000);
+  EXPECT_FALSE(all.contains("No devices were recorded"));
+  // Each angle's range of motion as session show gives it, on that angle's row of the table.
+  const QJsonObject metrics = s["metrics"].toObject();
+  for (const armtrack::ClinicalAngleInfo& info : armtrack::clinicalAngleInfo()) {
+    const QString name = QString::fromUtf8(info.name.data(), info.name.size());
+    const double rom =
+        metrics[QString::fromUtf8(info.key.data(), info.key.size())]["rom_deg"].toDouble();
+    const QRegularExpression row("\\n\\s*" + QRegularExpression::escape(name) +
+                                 "\\s+-?[0-9.]+\\s+-?[0-9.]+\\s+" +
+                                 QRegularExpression::escape(QString::number(rom, 'f', 1)) + "\\s");
+    EXPECT_TRUE(all.contains(row)) << name.toStdString() << " ROM " << rom;
+  }
+  const int reps = s["repetitions"].toObject()["count"].toInt();
+  EXPECT_TRUE(all.contains(QString("%1 repetitions counted on").arg(reps)) ||
+              (reps == 0 && all.contains("No repetitions")))
+      << reps << " repetitions";
+
+  const std::vector<QImage> pages = rt::renderPages(pdf, m_dir.path());
+  ASSERT_EQ(static_cast<qsizetype>(pages.size()), text.size());
+  bool sawPlot = false;
+  for (std::size_t i = 0; i < pages.size(); ++i) {
+    EXPECT_NEAR(pages[i].width(), 496, 2);  // A4 at 60 dpi
+    EXPECT_NEAR(pages[i].height(), 702, 2);
+    EXPECT_GT(rt::inkFraction(pages[i]), 0.01) << "page " << i + 1 << " looks blank";
+    if (text[static_cast<qsizetype>(i)].contains("Joint angles over time")) {
+      const rt::BlueInk b = rt::blueInk(pages[i]);
+      EXPECT_GT(b.count, 300);
+      EXPECT_GT(b.maxX - b.minX, 0.6 * pages[i].width()) << "the curve spans the plot";
+      sawPlot = true;
+    }
+  }
+  EXPECT_TRUE(sawPlot);
+}
+
+TEST_P(RecordDb, RefusesAnUnknownPatientAndMixedTargetsBeforeAnyDeviceStarts) {
   QStringList args = recordArgs("2");
   args[args.indexOf("P01")] = "P99";
   QProcess p;
@@ -215,3 +330,6 @@ TEST_F(RecordDb, RefusesAnUnknownPatientAndMixedTargetsBeforeAnyDeviceStarts) {
   EXPECT_EQ(q.exitCode(), 2);
   EXPECT_FALSE(QFile::exists(m_dir.filePath("x.csv")));
 }
+
+INSTANTIATE_TEST_SUITE_P(Engines, RecordDb, testing::Values(Engine::Sqlite, Engine::Postgres),
+                         armtrack::test::engineName);

@@ -10,6 +10,7 @@
 
 #include <QCoreApplication>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -153,17 +154,31 @@ BENCHMARK(BM_WriteRecording)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
+// Reading a session back, the part of BM_Reestimate that differs between the sources: from its
+// CSV (source 0, parsing), or its chunks from the records (1 SQLite, 2 PostgreSQL socket).
+// The minute imported into a new database of source (1 SQLite, 2 PostgreSQL socket), and its
+// session id; nothing for source 0 (the CSV itself).
+std::pair<std::unique_ptr<Db>, qint64> importedMinute(int source) {
+  if (source == 0) return {nullptr, 0};
+  auto d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
+  const qint64 id = d->store->importRecording(minute().csv, "P1");
+  return {std::move(d), id};
+}
+
 void BM_ReadRecording(benchmark::State& state) {
-  Db d(static_cast<int>(state.range(0)));
-  const qint64 id = d.store->importRecording(minute().csv, "P1");
-  for (auto _ : state) benchmark::DoNotOptimize(d.store->readRecording(id).samples.size());
+  const int source = static_cast<int>(state.range(0));
+  const auto [d, id] = importedMinute(source);
+  for (auto _ : state)
+    benchmark::DoNotOptimize(
+        (source == 0 ? readRecording(minute().csv) : d->store->readRecording(id)).samples.size());
   state.counters["x_real_time"] = benchmark::Counter(
       kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_ReadRecording)
-    ->ArgName("engine")
-    ->Arg(kSqlite)
-    ->Arg(kPostgresSocket)
+    ->ArgName("source")  // 0 CSV, 1 SQLite, 2 PostgreSQL socket
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
@@ -172,12 +187,7 @@ BENCHMARK(BM_ReadRecording)
 // as `estimate` and `session reestimate` do; storing the estimates is not timed.
 void BM_Reestimate(benchmark::State& state) {
   const int source = static_cast<int>(state.range(0));
-  std::unique_ptr<Db> d;
-  qint64 id = 0;
-  if (source != 0) {
-    d = std::make_unique<Db>(source == 1 ? kSqlite : kPostgresSocket);
-    id = d->store->importRecording(minute().csv, "P1");
-  }
+  const auto [d, id] = importedMinute(source);
   std::size_t rows = 0;
   for (auto _ : state) {
     const Recording rec = source == 0 ? readRecording(minute().csv) : d->store->readRecording(id);
@@ -194,6 +204,80 @@ BENCHMARK(BM_Reestimate)
     ->Arg(2)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The same minute as real sensors would deliver it (docs/storage.md, "Size of real sensors' data"):
+// each IMU value put on the sensor's own lattice by the conversion its plugin makes, the CSV
+// written and the chunks encoded as the records store them. 0: full precision (the simulator);
+// 1: Shimmer3 counts (gyroscope 65.5 counts per deg/s at +-500 deg/s, low-noise accelerometer
+// 83 counts per m/s^2 around 2047 on a 12-bit converter, as devices/shimmer3 converts them);
+// 2: NGIMU float32 (deg/s and g, converted as devices/ngimu does); 3: the DIY line protocol
+// printing 4 decimals. Counters: the chunks against the CSV, and the least a coder storing the
+// counts as integers could spend on the IMU values (the noise's entropy in counts), against it.
+void BM_RealSensorResolution(benchmark::State& state) {
+  const int variant = static_cast<int>(state.range(0));
+  constexpr double kGyroCounts = 65.5 * 180.0 / M_PI;  // counts per rad/s
+  constexpr double kAccCounts = 83.0;                  // counts per m/s^2
+  auto quantise = [&](ImuReading& r) {
+    for (int i = 0; i < 3; ++i) {
+      double& g = r.gyr[i];
+      double& a = r.acc[i];
+      if (variant == 1) {
+        const double gc = std::clamp(std::round(g / (M_PI / 180.0) * 65.5), -32768.0, 32767.0);
+        g = gc / 65.5 * (M_PI / 180.0);
+        const double ac = std::clamp(std::round(a * 83.0 + 2047.0), 0.0, 4095.0);
+        a = (ac - 2047.0) / 83.0;
+      } else if (variant == 2) {
+        g = static_cast<double>(static_cast<float>(g / (M_PI / 180.0))) * (M_PI / 180.0);
+        a = static_cast<double>(static_cast<float>(a / 9.80665)) * 9.80665;
+      } else if (variant == 3) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.4f", g);
+        g = std::strtod(text, nullptr);
+        std::snprintf(text, sizeof text, "%.4f", a);
+        a = std::strtod(text, nullptr);
+      }
+    }
+  };
+  Recording rec = minute().rec;
+  for (ArmSample& a : rec.samples)
+    for (auto* imu : {&a.upperArm, &a.forearm})
+      if (*imu) quantise(**imu);
+  QTemporaryDir dir;
+  const std::filesystem::path csv = dir.filePath("q.csv").toStdString();
+  double stored = 0;
+  for (auto _ : state) {
+    writeRecording(csv, rec);
+    stored = 0;
+    std::size_t begin = 0;
+    while (begin < rec.samples.size()) {
+      std::size_t end = begin;
+      while (end < rec.samples.size() && rec.samples[end].t < rec.samples[begin].t + 1.0) ++end;
+      stored += static_cast<double>(
+          ChunkCodec::encode(std::span<const ArmSample>(rec.samples.data() + begin, end - begin))
+              .size());
+      begin = end;
+    }
+  }
+  const double csvBytes = static_cast<double>(std::filesystem::file_size(csv));
+  // Counts need log2(sigma_counts) + log2(sqrt(2 pi e)) bits each at best (the noise's
+  // differential entropy on a unit lattice), whatever coder stores them.
+  const double gauss = 0.5 * std::log2(2.0 * M_PI * M_E);
+  double floorBytes = 0;
+  if (variant == 1)
+    for (const ArmSample& a : rec.samples)
+      for (const auto* imu : {&a.upperArm, &a.forearm})
+        if (*imu)
+          floorBytes += 3.0 * (std::log2(Table5::gyroStd() * kGyroCounts) + gauss) / 8.0 +
+                        3.0 * (std::log2(Table5::accelStd() * kAccCounts) + gauss) / 8.0;
+  state.counters["CSV_MB_per_hour"] = csvBytes * 3600.0 / kSeconds / 1e6;
+  state.counters["vs_csv"] = stored / csvBytes;
+  state.counters["count_floor_imu_vs_csv"] = floorBytes / csvBytes;
+}
+BENCHMARK(BM_RealSensorResolution)
+    ->ArgName("sensor")  // 0 simulator, 1 Shimmer3 counts, 2 NGIMU float32, 3 4 decimals
+    ->DenseRange(0, 3)
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 // Opening (SQLite: with its integrity check) and listing one patient's 20 sessions among
 // 1,000 sessions of 50 patients; the Argon2id sign-in, slow on purpose, is not timed.

@@ -3,18 +3,24 @@
 #include <arpa/inet.h>
 #include <netinet/in.h>
 #include <pwd.h>
+#include <signal.h>
 #include <sys/socket.h>
 #include <unistd.h>
 
 #include <QAtomicInt>
+#include <QDateTime>
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
+#include <QMap>
 #include <QProcess>
+#include <QSaveFile>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
+#include <QSqlRecord>
 #include <QStandardPaths>
+#include <cerrno>
 #include <cstdlib>
 
 namespace armtrack::test {
@@ -22,6 +28,9 @@ namespace armtrack::test {
 namespace {
 
 constexpr const char* kSuperuser = "armtrack_super";
+/// Where servers live: under /tmp, not $TMPDIR, since a Unix socket path must stay under 108
+/// bytes.
+constexpr const char* kFolderTemplate = "/tmp/armtrack-pg-XXXXXX";
 
 [[noreturn]] void failWith(const QString& why) {
   throw std::runtime_error(("test PostgreSQL server: " + why).toStdString());
@@ -81,22 +90,27 @@ QString connectionName() {
 }  // namespace
 
 PostgresServer::PostgresServer(bool durable) {
+  sweepAbandoned();
   try {
-    start(durable);
+    start(durable, QString("pid %1").arg(::getpid()));
   } catch (...) {
     stop();  // a half-started server and its folder do not outlive the failure
     throw;
   }
 }
 
-void PostgresServer::start(bool durable) {
+void PostgresServer::start(bool durable, const QString& owner) {
   m_bin = findBinDir();
   m_asPostgresUser = ::geteuid() == 0;
-  // Under /tmp, not $TMPDIR: a Unix socket path must stay under 108 bytes.
-  QByteArray templ("/tmp/armtrack-pg-XXXXXX");
+  QByteArray templ(kFolderTemplate);
   if (!::mkdtemp(templ.data())) failWith("cannot create a folder in /tmp");
   m_dir = QString::fromLocal8Bit(templ);
   m_data = m_dir + "/data";
+  // Who stops this server: a later start sweeps it away once that owner is gone.
+  QFile ownerFile(m_dir + "/owner");
+  if (!ownerFile.open(QIODevice::WriteOnly) || ownerFile.write(owner.toUtf8()) < 0)
+    failWith("cannot write " + ownerFile.fileName());
+  ownerFile.close();
   if (m_asPostgresUser) {
     const passwd* pw = ::getpwnam("postgres");
     if (!pw)
@@ -116,7 +130,7 @@ void PostgresServer::start(bool durable) {
   for (int attempt = 0; attempt < 3 && !m_started; ++attempt) {
     m_port = freePort();
     QString options = "-k " + m_dir + " -p " + QString::number(m_port) +
-                      " -c listen_addresses=127.0.0.1 -c max_connections=40";
+                      " -c listen_addresses=127.0.0.1 -c max_connections=100";
     if (!durable)
       options +=
           " -c fsync=off -c synchronous_commit=off -c full_page_writes=off -c shared_buffers=16MB";
@@ -132,7 +146,7 @@ void PostgresServer::start(bool durable) {
 }
 
 PostgresServer::~PostgresServer() {
-  stop();
+  if (m_owned) stop();
 }
 
 void PostgresServer::stop() {
@@ -150,8 +164,117 @@ void PostgresServer::stop() {
 
 PostgresServer& PostgresServer::shared() {
   static std::unique_ptr<PostgresServer> server;
-  if (!server) server = std::make_unique<PostgresServer>();
+  if (!server) {
+    const QString state = qEnvironmentVariable("ARMTRACK_TEST_PG_STATE");
+    server = state.isEmpty() ? std::make_unique<PostgresServer>() : attach(state);
+  }
   return *server;
+}
+
+namespace {
+
+/// key=value lines of a state file; empty when it cannot be read.
+QMap<QString, QString> readState(const QString& stateFile) {
+  QMap<QString, QString> state;
+  QFile f(stateFile);
+  if (!f.open(QIODevice::ReadOnly)) return state;
+  for (const QByteArray& line : f.readAll().split('\n')) {
+    const qsizetype eq = line.indexOf('=');
+    if (eq > 0) state.insert(QString::fromUtf8(line.left(eq)), QString::fromUtf8(line.mid(eq + 1)));
+  }
+  return state;
+}
+
+void writeState(const QString& stateFile, const QMap<QString, QString>& state) {
+  QSaveFile f(stateFile);
+  if (!f.open(QIODevice::WriteOnly)) failWith("cannot write " + stateFile);
+  for (auto it = state.begin(); it != state.end(); ++it)
+    f.write((it.key() + "=" + QString(it.value()).replace('\n', ' ') + "\n").toUtf8());
+  if (!f.commit()) failWith("cannot write " + stateFile);
+}
+
+}  // namespace
+
+std::unique_ptr<PostgresServer> PostgresServer::attach(const QString& stateFile) {
+  const QMap<QString, QString> state = readState(stateFile);
+  if (state.contains("error")) failWith("the shared test server did not start: " + state["error"]);
+  if (!state.contains("dir") || !QFileInfo::exists(state["dir"] + "/data/postmaster.pid"))
+    failWith("no shared test server is running (state file " + stateFile +
+             "; CTest starts it in the fixture test armtrack_pg_server_start)");
+  auto s = std::unique_ptr<PostgresServer>(new PostgresServer(AttachTag{}));
+  s->m_owned = false;
+  s->m_started = true;
+  s->m_dir = state["dir"];
+  s->m_data = s->m_dir + "/data";
+  s->m_bin = state["bin"];
+  s->m_port = state["port"].toInt();
+  s->m_asPostgresUser = state["postgres_user"] == "1";
+  return s;
+}
+
+bool PostgresServer::startDetached(const QString& stateFile) {
+  stopDetached(stateFile);  // what an interrupted run left
+  sweepAbandoned();
+  PostgresServer s(AttachTag{});
+  try {
+    s.start(false, "fixture " + QFileInfo(stateFile).absoluteFilePath());
+  } catch (const std::exception& e) {
+    s.stop();
+    writeState(stateFile, {{"error", QString::fromLocal8Bit(e.what())}});
+    return false;
+  }
+  writeState(stateFile, {{"dir", s.m_dir},
+                         {"bin", s.m_bin},
+                         {"port", QString::number(s.m_port)},
+                         {"postgres_user", s.m_asPostgresUser ? "1" : "0"}});
+  s.m_owned = false;  // it outlives this process
+  return true;
+}
+
+void PostgresServer::stopDetached(const QString& stateFile) {
+  const QMap<QString, QString> state = readState(stateFile);
+  if (state.contains("dir")) {
+    PostgresServer s(AttachTag{});
+    s.m_dir = state["dir"];
+    s.m_data = s.m_dir + "/data";
+    s.m_bin = state["bin"];
+    s.m_asPostgresUser = state["postgres_user"] == "1";
+    s.m_started = QFileInfo::exists(s.m_data + "/postmaster.pid");
+    s.stop();
+  }
+  QFile::remove(stateFile);
+}
+
+void PostgresServer::sweepAbandoned() {
+  const QDir tmp(QFileInfo(kFolderTemplate).path());
+  const QString prefix = QFileInfo(kFolderTemplate).fileName().remove("XXXXXX");
+  for (const QFileInfo& folder : tmp.entryInfoList({prefix + "*"}, QDir::Dirs)) {
+    QFile ownerFile(folder.filePath() + "/owner");
+    QString owner;
+    if (ownerFile.open(QIODevice::ReadOnly)) owner = QString::fromUtf8(ownerFile.readAll());
+    bool abandoned = false;
+    if (owner.startsWith("pid ")) {
+      // A test process's own server: abandoned once that process is gone.
+      abandoned = ::kill(owner.mid(4).toInt(), 0) != 0 && errno == ESRCH;
+    } else if (owner.startsWith("fixture ")) {
+      // The fixture's: abandoned once its state file no longer names it.
+      abandoned = readState(owner.mid(8)).value("dir") != folder.filePath();
+    } else {
+      // No owner yet: a server starting right now, or one from before owners were written.
+      abandoned = folder.lastModified().secsTo(QDateTime::currentDateTime()) > 600;
+    }
+    if (!abandoned) continue;
+    PostgresServer s(AttachTag{});
+    s.m_dir = folder.filePath();
+    s.m_data = s.m_dir + "/data";
+    s.m_asPostgresUser = ::geteuid() == 0;
+    try {
+      s.m_bin = findBinDir();
+      s.m_started = QFileInfo::exists(s.m_data + "/postmaster.pid");
+    } catch (...) {
+    }
+    s.stop();
+  }
 }
 
 QString PostgresServer::run(const QString& program, const QStringList& args, int timeoutMs) {
@@ -176,6 +299,31 @@ QString PostgresServer::run(const QString& program, const QStringList& args, int
 }
 
 void PostgresServer::superuserSql(const QString& database, const QStringList& statements) {
+  run(database, statements, nullptr);
+}
+
+std::vector<QVariantList> PostgresServer::superuserQuery(const QString& database,
+                                                         const QString& sql) {
+  std::vector<QVariantList> rows;
+  run(database, {sql}, &rows);
+  return rows;
+}
+
+QString runSql(QSqlDatabase& db, const QStringList& statements, std::vector<QVariantList>* rows) {
+  for (const QString& s : statements) {
+    QSqlQuery q(db);
+    if (!q.exec(s)) return "'" + s.left(200) + "' failed: " + q.lastError().text();
+    while (rows && q.next()) {
+      QVariantList row;
+      for (int i = 0; i < q.record().count(); ++i) row << q.value(i);
+      rows->push_back(row);
+    }
+  }
+  return {};
+}
+
+void PostgresServer::run(const QString& database, const QStringList& statements,
+                         std::vector<QVariantList>* rows) {
   const QString name = connectionName();
   QString error;
   {
@@ -188,13 +336,7 @@ void PostgresServer::superuserSql(const QString& database, const QStringList& st
     if (!db.open()) {
       error = "cannot connect as superuser: " + db.lastError().text();
     } else {
-      for (const QString& s : statements) {
-        QSqlQuery q(db);
-        if (!q.exec(s)) {
-          error = "'" + s.left(200) + "' failed: " + q.lastError().text();
-          break;
-        }
-      }
+      error = runSql(db, statements, rows);
       db.close();
     }
   }
@@ -205,6 +347,14 @@ void PostgresServer::superuserSql(const QString& database, const QStringList& st
 QString PostgresServer::createDatabase(const QString& name) {
   superuserSql("postgres", {QString("CREATE DATABASE %1 OWNER %2").arg(name, kRole)});
   return QString("postgresql://%1@/%2?host=%3&port=%4").arg(kRole, name, m_dir).arg(m_port);
+}
+
+QString PostgresServer::uniqueName(const QString& stem) {
+  static QAtomicInt counter;
+  return QString("%1_p%2_%3")
+      .arg(stem.toLower())
+      .arg(::getpid())
+      .arg(counter.fetchAndAddRelaxed(1));
 }
 
 QString PostgresServer::tcpUrl(const QString& database) const {

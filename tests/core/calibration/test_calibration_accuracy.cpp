@@ -204,7 +204,8 @@ TEST(CalibrationAccuracy, RecoversKnownMountingImuOnly) {
   expectRecovered(r, truth, false);
   EXPECT_FALSE(r.calibration.opticalUsed);
   EXPECT_TRUE(r.calibration.headingFromStartPoseOnly);
-  EXPECT_LT(r.seconds, 30.0);
+  // How long it takes is measured by tests/benchmarks/bench_calibration, not asserted here: a
+  // wall-clock limit fails on a loaded machine however right the result.
 }
 
 // A left arm: calibrated on its mirrored twin, reported in the real sensors' axes (the mirror

@@ -386,5 +386,17 @@ TEST(NormativeRanges, AaosValuesAndSpans) {
   }
 }
 
+// The typical ranges the kinematics layer gives with each angle's name (for a GUI's scales and
+// gauges) are the cited AAOS ones, not figures of their own; adduction, which that source does
+// not give, starts at the side (0).
+TEST(NormativeRanges, ClinicalAngleInfoCarriesTheCitedRanges) {
+  const auto& n = aaosNormativeRanges();
+  for (int a = 0; a < kNumClinicalAngles; ++a) {
+    SCOPED_TRACE(clinicalAngleInfo()[a].key);
+    EXPECT_NEAR(clinicalAngleInfo()[a].normalMax, n[a].maxRad * kRadToDeg, 1e-9);
+    EXPECT_NEAR(clinicalAngleInfo()[a].normalMin, n[a].minRad.value_or(0.0) * kRadToDeg, 1e-9);
+  }
+}
+
 }  // namespace
 }  // namespace armtrack

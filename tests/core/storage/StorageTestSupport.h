@@ -4,11 +4,9 @@
 
 #include <gtest/gtest.h>
 
-#include <QAtomicInt>
-#include <QSqlDatabase>
-#include <QSqlError>
-#include <QSqlQuery>
 #include <QTemporaryDir>
+#include <bit>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -18,55 +16,44 @@
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 #include "core/storage/ClinicalStore.h"
-#include "tests/support/PostgresServer.h"
+#include "tests/support/DatabaseEngines.h"
 
 namespace armtrack::storage::test {
 
 inline constexpr const char* kAdminPassword = "correct horse battery";
 
-/// The engines every storage test runs on (value-parameterised tests).
-enum class Engine { Sqlite, Postgres };
+// The engines every storage test runs on (value-parameterised tests), a fresh database of each,
+// and raw SQL on it: tests/support/DatabaseEngines.h.
+using armtrack::test::Engine;
+using armtrack::test::engineName;
+using armtrack::test::newDatabase;
+using armtrack::test::rawQuery;
+using armtrack::test::rawSql;
 
-inline void PrintTo(Engine e, std::ostream* os) {
-  *os << (e == Engine::Sqlite ? "SQLite" : "PostgreSQL");
+using Kind = StorageError::Kind;
+
+/// Value-parameterised storage tests run on every engine (INSTANTIATE_TEST_SUITE_P with Engine).
+class Engines : public testing::TestWithParam<Engine> {};
+
+/// Whether two doubles are the same bit pattern (NaN payloads and -0 included).
+inline bool sameBits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
 }
 
-inline std::string engineName(const testing::TestParamInfo<Engine>& info) {
-  return info.param == Engine::Sqlite ? "Sqlite" : "Postgres";
-}
-
-/// A new, empty database of engine: a file named stem in dir, or a new database on the test
-/// server of this process (started on first use; a server that cannot start throws, so the test
-/// fails with the reason).
-inline QString newDatabase(Engine engine, const QTemporaryDir& dir, const QString& stem) {
-  if (engine == Engine::Sqlite) return dir.filePath(stem + ".db");
-  static QAtomicInt counter;
-  return armtrack::test::PostgresServer::shared().createDatabase(
-      QString("t%1_%2").arg(counter.fetchAndAddRelaxed(1)).arg(stem.toLower()));
-}
-
-/// Runs raw SQL on a database outside the service (to build old or damaged ones). On
-/// PostgreSQL as the test role, so the service may alter what is created.
-inline void rawSql(const QString& location, const QStringList& statements) {
-  const DatabaseUrl url = DatabaseUrl::parse(location);
-  if (url.engine == DatabaseUrl::Engine::Postgres) {
-    armtrack::test::PostgresServer::shared().superuserSql(
-        url.database,
-        QStringList{QString("SET ROLE ") + armtrack::test::PostgresServer::kRole} + statements);
-    return;
+/// Runs f, which must throw a StorageError of kind whose message contains mustSay; returns it
+/// (a failure, and an empty Io error, when f throws nothing).
+template <typename F>
+StorageError expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
+  try {
+    f();
+  } catch (const StorageError& e) {
+    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
+    if (!mustSay.empty())
+      EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
+    return e;
   }
-  const QString name = "raw-" + location;
-  {
-    QSqlDatabase db = QSqlDatabase::addDatabase("QSQLITE", name);
-    db.setDatabaseName(url.path);
-    ASSERT_TRUE(db.open());
-    for (const QString& s : statements) {
-      QSqlQuery q(db);
-      ASSERT_TRUE(q.exec(s)) << s.toStdString() << ": " << q.lastError().text().toStdString();
-    }
-    db.close();
-  }
-  QSqlDatabase::removeDatabase(name);
+  ADD_FAILURE() << "no StorageError";
+  return StorageError(Kind::Io, "");
 }
 
 /// A temporary folder with an initialised database and its administrator signed in. path is the

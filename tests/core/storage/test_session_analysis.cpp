@@ -4,6 +4,8 @@
 // for bit as estimating the CSV gives them; damaged blobs; settings; access; cancelling.
 #include <gtest/gtest.h>
 
+#include <iostream>
+
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QSqlQuery>
@@ -21,13 +23,8 @@
 using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
-using Kind = StorageError::Kind;
 
 namespace {
-
-bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
 
 /// Seated shoulder flexion (forearm resting forward at 30 deg flexion, elbow at 45 deg) up to a
 /// peak and back, the other angles following in proportion, with holds and pauses; peaks in
@@ -103,12 +100,7 @@ std::array<double, 5> trueRomDeg(const Recording& rec) {
 EstimateColumns estimateDirectly(const Recording& rec, const EstimateOptions& options) {
   EstimateColumns c;
   EstimateCallbacks cb;
-  cb.row = [&](const EstimateRow& r) {
-    c.t.push_back(r.t);
-    c.th.push_back(r.th);
-    c.sd.push_back(r.sd);
-    c.status.push_back(r.status);
-  };
+  cb.row = [&](const EstimateRow& r) { c.append(r); };
   estimateRecording(rec, estimatorParamsFor(rec.meta, options), cb);
   return c;
 }
@@ -121,18 +113,6 @@ void expectSameEstimates(const StoredAnalysis& a, const EstimateColumns& c) {
     for (int j = 0; j < kNumJoints; ++j)
       same = same && sameBits(a.joints[i](j), c.th[i](j)) && sameBits(a.sd[i](j), c.sd[i](j));
     ASSERT_TRUE(same) << "row " << i << " differs";
-  }
-}
-
-template <typename F>
-void expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
-  try {
-    f();
-    ADD_FAILURE() << "no StorageError";
-  } catch (const StorageError& e) {
-    EXPECT_EQ(e.kind(), kind) << e.what();
-    if (!mustSay.empty())
-      EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
   }
 }
 
@@ -217,11 +197,21 @@ TEST(SessionAnalysis, ExerciseFromTheDatabaseMatchesTheTruth) {
                               "mean_velocity_deg_s", "movement_time_s"})
       EXPECT_TRUE(one[field].isDouble()) << key.toStdString() << " " << field;
     if (trueRom[k] < 5.0) continue;
-    const double err = one["rom_deg"].toDouble() - trueRom[k];
-    std::printf("%s: ROM %.2f deg, true %.2f deg, error %.2f deg\n", key.toStdString().c_str(),
-                one["rom_deg"].toDouble(), trueRom[k], err);
+    const double rom = one["rom_deg"].toDouble();
+    const double err = rom - trueRom[k];
     const bool heading = key == "shoulder_abduction" || key == "shoulder_internal_rotation";
-    EXPECT_LT(std::abs(err), heading ? 2.0 : 1.0) << key.toStdString();
+    const double bound = heading ? 2.0 : 1.0;
+    // The figure measured, for the log and the test report (XML: property <key>_rom_error_deg),
+    // so a run that passes under the wider bound still shows how far it is from 1 deg.
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "%s: ROM %.2f deg, true %.2f deg, error %+.2f deg (bound %.0f%s)",
+                  key.toStdString().c_str(), rom, trueRom[k], err, bound,
+                  heading ? ", widened for the heading error" : "");
+    std::cout << line << "\n";
+    RecordProperty(key.toStdString() + "_rom_error_deg",
+                   QString::number(err, 'f', 3).toStdString());
+    EXPECT_LT(std::abs(err), bound) << line;
   }
 
   // The stored estimates are exactly those of estimating the CSV.
@@ -268,15 +258,14 @@ TEST(EstimateCodec, RoundTripIsBitExactAndDamageIsRefused) {
   const double values[] = {0.0,  -0.0,  1e-300, 3.141592653589793,
                            -2.5, 1e300, nan,    std::numeric_limits<double>::infinity()};
   for (int i = 0; i < 40; ++i) {
-    c.t.push_back(0.001 * i);
-    JointVector th, sd;
+    EstimateRow r;
+    r.t = 0.001 * i;
     for (int j = 0; j < kNumJoints; ++j) {
-      th(j) = values[(i + j) % 8];
-      sd(j) = values[(i * 3 + j) % 8];
+      r.th(j) = values[(i + j) % 8];
+      r.sd(j) = values[(i * 3 + j) % 8];
     }
-    c.th.push_back(th);
-    c.sd.push_back(sd);
-    c.status.push_back(i % 4);
+    r.status = i % 4;
+    c.append(r);
   }
   const std::string blob = EstimateCodec::encode(c);
   const EstimateColumns d = EstimateCodec::decode(blob, 40);

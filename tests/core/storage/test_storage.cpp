@@ -16,23 +16,9 @@
 using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
-using Kind = StorageError::Kind;
 
 namespace {
 
-template <typename F>
-StorageError expectError(F&& f, Kind kind) {
-  try {
-    f();
-  } catch (const StorageError& e) {
-    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
-    return e;
-  }
-  ADD_FAILURE() << "no StorageError";
-  return StorageError(Kind::Io, "");
-}
-
-class Engines : public testing::TestWithParam<Engine> {};
 using Crud = Engines;
 using SignIn = Engines;
 using AccessControl = Engines;

@@ -1,10 +1,17 @@
 // PostgreSQL only: URL forms (socket folders), connection failures that say what to check, the
 // password from ARMTRACK_DB_PASSWORD or a password file, pg_dump instead of `db backup`, two
-// workstations on one record, and a recording stored and read back bit for bit. The server is
-// started by the test itself (tests/support/PostgresServer); when it cannot start, these fail.
+// workstations on one record, and a recording stored and read back bit for bit; and the test
+// server's own clean-up after a killed test. The server is the shared test server
+// (tests/support/PostgresServer); when it cannot start, these fail.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <QCoreApplication>
 #include <QFile>
+#include <QFileInfo>
+#include <QProcess>
+#include <QThread>
 #include <cstdlib>
 
 #include "tests/core/storage/StorageTestSupport.h"
@@ -13,20 +20,8 @@ using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
 using armtrack::test::PostgresServer;
-using Kind = StorageError::Kind;
 
 namespace {
-
-StorageError expectError(const std::function<void()>& f, Kind kind) {
-  try {
-    f();
-  } catch (const StorageError& e) {
-    EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
-    return e;
-  }
-  ADD_FAILURE() << "no StorageError";
-  return StorageError(Kind::Io, "");
-}
 
 bool contains(const StorageError& e, const char* text) {
   return std::string(e.what()).find(text) != std::string::npos;
@@ -87,9 +82,10 @@ TEST(Postgres, ServerDownSaysWhichHostAndPortAndWhatToCheck) {
 
 TEST(Postgres, MissingDatabaseIsNotFound) {
   PostgresServer& server = PostgresServer::shared();
-  const QString url = server.createDatabase("exists_here");
+  const QString name = PostgresServer::uniqueName("exists_here");
+  const QString url = server.createDatabase(name);
   QString other = url;
-  other.replace("/exists_here?", "/not_here?");
+  other.replace("/" + name + "?", "/not_here?");
   const StorageError e = expectError(
       [&] {
         Database db(DatabaseUrl::parse(other), {true, false});
@@ -100,8 +96,9 @@ TEST(Postgres, MissingDatabaseIsNotFound) {
 
 TEST(Postgres, PasswordFromEnvironmentOrPasswordFile) {
   PostgresServer& server = PostgresServer::shared();
-  server.createDatabase("pw");
-  const DatabaseUrl tcp = DatabaseUrl::parse(server.tcpUrl("pw"));
+  const QString name = PostgresServer::uniqueName("pw");
+  server.createDatabase(name);
+  const DatabaseUrl tcp = DatabaseUrl::parse(server.tcpUrl(name));
   QTemporaryDir dir;
   const QString passFile = dir.filePath("pgpass");
   ScopedEnv noFile("PGPASSFILE", passFile.toLocal8Bit().constData());  // not the user's own
@@ -130,9 +127,9 @@ TEST(Postgres, PasswordFromEnvironmentOrPasswordFile) {
     // ignored).
     QFile f(passFile);
     ASSERT_TRUE(f.open(QIODevice::WriteOnly));
-    f.write(QString("127.0.0.1:%1:pw:%2:%3\n")
+    f.write(QString("127.0.0.1:%1:%2:%3:%4\n")
                 .arg(server.port())
-                .arg(PostgresServer::kRole, PostgresServer::kPassword)
+                .arg(name, PostgresServer::kRole, PostgresServer::kPassword)
                 .toUtf8());
     f.close();
     f.setPermissions(QFile::ReadOwner | QFile::WriteOwner);
@@ -220,4 +217,60 @@ TEST(Postgres, LockHeldByAnotherWorkstationTimesOutClearly) {
     EXPECT_TRUE(contains(e, "more than 5 s")) << e.what();
   });
   EXPECT_EQ(b.patient("LOCKED").notes, "from a");
+}
+
+// The test server itself: a test process that dies without stopping its server (a crash, a
+// SIGKILL, a timeout) leaves the server running in /tmp; the next server to start stops it and
+// removes its folder. The child is this test binary, started with ARMTRACK_PG_CHILD_OUT set: it
+// starts a server of its own, writes its folder there and waits to be killed.
+TEST(PostgresTestServer, AServerLeftByAKilledTestIsStoppedByTheNextStart) {
+  const QString childOut = qEnvironmentVariable("ARMTRACK_PG_CHILD_OUT");
+  if (!childOut.isEmpty()) {
+    PostgresServer own;
+    QFile f(childOut + ".tmp");
+    ASSERT_TRUE(f.open(QIODevice::WriteOnly));
+    f.write(own.socketDir().toUtf8());
+    f.close();
+    ASSERT_TRUE(QFile::rename(childOut + ".tmp", childOut));
+    QThread::sleep(120);  // killed long before
+    return;
+  }
+  QTemporaryDir dir;
+  const QString out = dir.filePath("child-server");
+  QProcess child;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert("ARMTRACK_PG_CHILD_OUT", out);
+  env.remove("ARMTRACK_TEST_PG_STATE");  // a server of its own, as a test run by hand starts
+  child.setProcessEnvironment(env);
+  child.start(
+      QCoreApplication::applicationFilePath(),
+      {"--gtest_filter=PostgresTestServer.AServerLeftByAKilledTestIsStoppedByTheNextStart"});
+  ASSERT_TRUE(child.waitForStarted());
+  for (int i = 0; i < 600 && !QFile::exists(out) && child.state() == QProcess::Running; ++i)
+    child.waitForFinished(100);
+  ASSERT_TRUE(QFile::exists(out)) << child.readAll().toStdString();
+  child.kill();
+  child.waitForFinished();
+  QFile f(out);
+  ASSERT_TRUE(f.open(QIODevice::ReadOnly));
+  const QString left = QString::fromUtf8(f.readAll());
+  QFile pidFile(left + "/data/postmaster.pid");
+  ASSERT_TRUE(pidFile.open(QIODevice::ReadOnly)) << "the killed test's server is not running";
+  const pid_t postmaster = QString::fromUtf8(pidFile.readLine()).trimmed().toInt();
+  pidFile.close();
+  ASSERT_GT(postmaster, 0);
+  ASSERT_EQ(::kill(postmaster, 0), 0) << "the killed test's server is not running";
+
+  PostgresServer next;  // sweeps before it starts
+  EXPECT_FALSE(QFileInfo::exists(left)) << left.toStdString();
+  // pg_ctl has waited for the server to stop; the exited postmaster may still wait for its
+  // parent (init, since the test that started it died) to collect it.
+  auto gone = [&] {
+    if (::kill(postmaster, 0) != 0) return true;
+    QFile stat(QString("/proc/%1/stat").arg(postmaster));
+    return stat.open(QIODevice::ReadOnly) && stat.readAll().contains(") Z ");
+  };
+  for (int i = 0; i < 300 && !gone(); ++i) QThread::msleep(100);
+  EXPECT_TRUE(gone()) << "postmaster " << postmaster << " still runs";
+  EXPECT_TRUE(QFileInfo::exists(next.socketDir()));
 }

@@ -16,18 +16,14 @@
 
 #include "core/estimation/ArmFilter.h"
 #include "core/storage/ChunkCodec.h"
+#include "core/storage/DatabaseRecordingSink.h"
 #include "tests/core/storage/StorageTestSupport.h"
 
 using namespace armtrack;
 using namespace armtrack::storage;
 using namespace armtrack::storage::test;
-using Kind = StorageError::Kind;
 
 namespace {
-
-bool sameBits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
 
 template <typename V>
 bool sameOpt(const std::optional<V>& a, const std::optional<V>& b) {
@@ -117,10 +113,10 @@ TEST(ChunkCodec, EveryBitPatternRoundTrips) {
   };
   for (std::size_t i = 0; i < samples.size(); ++i) {
     samples[i].t = static_cast<double>(i) * 1e-3;
-    samples[i].upperArm = ImuReading{Eigen::Vector3d(next(), next(), next()),
-                                     Eigen::Vector3d(std::numeric_limits<double>::infinity(),
-                                                     -std::numeric_limits<double>::quiet_NaN(),
-                                                     i % 2 ? -0.0 : 5e-324)};
+    samples[i].upperArm = ImuReading{
+        Eigen::Vector3d(next(), next(), next()),
+        Eigen::Vector3d(std::numeric_limits<double>::infinity(),
+                        -std::numeric_limits<double>::quiet_NaN(), i % 2 ? -0.0 : 5e-324)};
     if (i % 7 == 0) samples[i].estimate = JointVector::Constant(next());
   }
   expectSameSamples(ChunkCodec::decode(ChunkCodec::encode(samples), samples.size()), samples);
@@ -133,9 +129,9 @@ TEST(ChunkCodec, LegacyChunksStayReadable) {
   const std::string old = ChunkCodec::encodeLegacy(samples);
   expectSameSamples(ChunkCodec::decode(old, samples.size(), ChunkCodec::kLegacyName), samples);
   EXPECT_THROW(ChunkCodec::decode(old, samples.size(), ChunkCodec::kName), std::runtime_error);
-  EXPECT_THROW(ChunkCodec::decode(ChunkCodec::encode(samples), samples.size(),
-                                  ChunkCodec::kLegacyName),
-               std::runtime_error);
+  EXPECT_THROW(
+      ChunkCodec::decode(ChunkCodec::encode(samples), samples.size(), ChunkCodec::kLegacyName),
+      std::runtime_error);
   EXPECT_THROW(ChunkCodec::decode(old, samples.size(), "atc9-zstd"), std::runtime_error);
 
   // A stored session whose first chunk is in the old format reads back whole.
@@ -144,8 +140,8 @@ TEST(ChunkCodec, LegacyChunksStayReadable) {
   const auto csv = f.file("rec.csv");
   const Recording original = simulateTo(csv, 2.5, 200.0);
   const qint64 id = f.store->importRecording(csv, "P1");
-  QSqlQuery first = f.db->exec(
-      "SELECT row_count FROM recording_chunks WHERE session_id = ? AND seq = 0", {id});
+  QSqlQuery first =
+      f.db->exec("SELECT row_count FROM recording_chunks WHERE session_id = ? AND seq = 0", {id});
   ASSERT_TRUE(first.next());
   const auto rows = static_cast<std::size_t>(first.value(0).toLongLong());
   first.finish();
@@ -179,8 +175,11 @@ TEST(ChunkCodec, DamagedFramesAreRefused) {
   refuses(frame + "trailing bytes", samples.size(), "bytes after the frame");
 }
 
-TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
-  Fixture f;
+// On both engines (PostgreSQL reads the chunks in the binary wire format through libpq): a
+// damaged or missing chunk is named, and the connection stays usable after the refusal.
+using DamagedChunk = Engines;
+TEST_P(DamagedChunk, NamesTheSessionAndChunk) {
+  Fixture f(GetParam());
   f.store->addPatient(makePatient("P1"));
   simulateTo(f.file("rec.csv"), 3.0, 200.0);
   const qint64 id = f.store->importRecording(f.file("rec.csv"), "P1");
@@ -198,6 +197,7 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
               std::string::npos)
         << e.what();
   }
+  EXPECT_GE(f.store->session(id).chunks, 3);  // the connection is still usable
   f.db->exec("UPDATE recording_chunks SET data = ? WHERE session_id = ? AND seq = 2",
              {QByteArray("\x28\xb5\x2f\xfd garbage after a zstd magic"), id});
   f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = 1", {id});
@@ -209,6 +209,8 @@ TEST(StoredRecording, DamagedChunkNamesTheSessionAndChunk) {
   }
   EXPECT_THROW(f.store->exportRecording(id, f.file("out.csv")), StorageError);
 }
+INSTANTIATE_TEST_SUITE_P(Engines, DamagedChunk, testing::Values(Engine::Sqlite, Engine::Postgres),
+                         engineName);
 
 // Real sensor data: the BROAD trials (CC-BY-4.0, tests/data/broad, unpacked by the build) hold
 // one IMU at 286 Hz with 7 significant digits. Stored as an upper-arm IMU.
@@ -392,4 +394,51 @@ TEST(StoredRecording, KilledRecorderLeavesAnInterruptedSessionAndACleanFile) {
   const Recording kept = store.readRecording(sessions[0].id);
   expectSameSamples(kept.samples,
                     std::vector<ArmSample>(rec.samples.begin(), rec.samples.begin() + 1000));
+}
+
+namespace {
+
+ArmSample imuRow(double t) {
+  ArmSample s;
+  s.t = t;
+  s.upperArm = ImuReading{Eigen::Vector3d(0.1, 0.2, 0.3), Eigen::Vector3d(0.0, 0.0, 9.81)};
+  return s;
+}
+
+}  // namespace
+
+// The live recorder's sink refuses what a recording file's writer refuses (the same checkRow of
+// core/io), names the row, and stays usable: the rows it took are stored.
+TEST(StoredRecording, SinkRefusesBadRowsAndStaysUsable) {
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  RecordingColumns columns;
+  columns.upperArm = true;
+  const qint64 id = f.store->beginRecording("P1", "", RecordingMeta{}, columns);
+  DatabaseRecordingSink sink(DatabaseUrl::parse(f.path), id, columns);
+  sink.append(imuRow(0.0));
+  auto refusal = [&](const ArmSample& s) -> std::string {
+    try {
+      sink.append(s);
+    } catch (const RecordingError& e) {
+      return e.what();
+    }
+    return "(taken)";
+  };
+  ArmSample extra = imuRow(0.001);
+  extra.forearm = ImuReading{};  // no forearm columns
+  EXPECT_NE(refusal(extra).find("row 2: cannot write the forearm"), std::string::npos)
+      << refusal(extra);
+  ArmSample nan = imuRow(0.001);
+  nan.upperArm->acc.x() = std::nan("");
+  EXPECT_NE(refusal(nan).find("non-finite value nan in column \"ua_ax\""), std::string::npos)
+      << refusal(nan);
+  ArmSample noTime = imuRow(std::numeric_limits<double>::infinity());
+  EXPECT_NE(refusal(noTime).find("non-finite time"), std::string::npos) << refusal(noTime);
+  EXPECT_NE(refusal(imuRow(-1.0)).find("decreasing time: -1 after 0"), std::string::npos)
+      << refusal(imuRow(-1.0));
+  sink.append(imuRow(0.001));
+  sink.close();
+  EXPECT_EQ(sink.rows(), 2u);
+  EXPECT_EQ(f.store->readRecording(id).samples.size(), 2u);
 }
