@@ -1,0 +1,44 @@
+// What the application shows when: the first-run assistant, sign-in, the patients, a session,
+// a review. It owns the services (records, plugins, settings) and hands them to the screens; the
+// screens know nothing of each other.
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+#include <memory>
+
+#include "app/gui/AppOptions.h"
+#include "app/gui/services/AppSettings.h"
+#include "app/gui/services/RecordsService.h"
+#include "app/plugins/PluginRegistry.h"
+
+namespace armtrack::gui {
+
+class MainWindow;
+
+class AppController : public QObject {
+  Q_OBJECT
+ public:
+  explicit AppController(AppOptions options, QObject* parent = nullptr);
+  ~AppController() override;
+
+  /// Loads the settings and plugins, shows the window and its first screen.
+  void start();
+
+  MainWindow* window() const { return m_window.get(); }
+  RecordsService& records() { return *m_records; }
+  const app::PluginRegistry& plugins() const { return m_plugins; }
+  const AppSettings& settings() const { return m_settings; }
+
+ private:
+  void loadPlugins();
+  void showMessage(const QString& title, const QString& text);
+
+  AppOptions m_options;
+  AppSettings m_settings;
+  app::PluginRegistry m_plugins;
+  std::unique_ptr<RecordsService> m_records;
+  std::unique_ptr<MainWindow> m_window;
+};
+
+}  // namespace armtrack::gui
