@@ -1,22 +1,33 @@
 #include "app/gui/AppController.h"
 
-#include <QLabel>
+#include <QApplication>
 #include <QSettings>
-#include <QVBoxLayout>
 
 #include "app/gui/Appearance.h"
+#include "app/gui/FirstRunScreen.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/MessageScreen.h"
+#include "app/gui/SignInScreen.h"
 
 namespace armtrack::gui {
+
+namespace {
+constexpr auto kLastUser = "signIn/lastUser";
+}
 
 AppController::AppController(AppOptions options, QObject* parent)
     : QObject(parent),
       m_options(std::move(options)),
       m_records(std::make_unique<RecordsService>()),
-      m_window(std::make_unique<MainWindow>()) {}
+      m_window(std::make_unique<MainWindow>()) {
+  connect(m_window.get(), &MainWindow::signOutRequested, this, &AppController::signOut);
+  connect(m_window.get(), &MainWindow::patientsRequested, this, &AppController::showPatients);
+  connect(m_records.get(), &RecordsService::problem, this,
+          [this](const QString& text) { m_window->showStatus(text, 0); });
+}
 
 AppController::~AppController() {
-  m_window.reset();  // screens first: they hold pending calls to the records
+  m_window.reset();  // screens first: their pending answers are dropped
   m_records.reset();
 }
 
@@ -24,10 +35,10 @@ void AppController::start() {
   QSettings settings;
   m_settings = AppSettings::load(settings);
   installTranslators(m_options.language.isEmpty() ? m_settings.language : m_options.language);
+  applyTheme(parseTheme(settings.value(QStringLiteral("display/theme")).toString()));
   loadPlugins();
   m_window->show();
-  showMessage(tr("Welcome"), tr("%n device plugin(s) found.", nullptr,
-                                static_cast<int>(m_plugins.names().size())));
+  openRecords();
 }
 
 void AppController::loadPlugins() {
@@ -36,14 +47,142 @@ void AppController::loadPlugins() {
   m_plugins.load(folders);
 }
 
-void AppController::showMessage(const QString& title, const QString& text) {
-  auto* screen = new QWidget;
-  screen->setWindowTitle(title);
-  auto* layout = new QVBoxLayout(screen);
-  auto* label = new QLabel(text, screen);
-  label->setWordWrap(true);
-  label->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
-  layout->addWidget(label);
+void AppController::saveSettings() {
+  QSettings settings;
+  m_settings.save(settings);
+}
+
+storage::DatabaseUrl AppController::databaseUrl() const {
+  if (!m_options.database.isEmpty()) return storage::DatabaseUrl::parse(m_options.database);
+  return m_settings.effectiveDatabase();
+}
+
+void AppController::openRecords() {
+  storage::DatabaseUrl url;
+  try {
+    url = databaseUrl();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  auto* wait = new MessageScreen(tr("Opening the records"), tr("Opening %1...").arg(url.display()));
+  wait->setProgress(-1);
+  m_window->showScreen(wait);
+  m_records->probe(
+      url, wait,
+      [this](DatabaseState state) {
+        state == DatabaseState::Ready ? showSignIn() : showFirstRun();
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+}
+
+void AppController::showFirstRun() {
+  QString fixed;
+  if (!m_options.database.isEmpty() || !m_settings.databaseUrl.isEmpty())
+    fixed = databaseUrl().display();
+  auto* screen = new FirstRunScreen(m_settings.effectiveDataFolder(), fixed);
+  connect(screen, &FirstRunScreen::createRequested, this,
+          [this, screen](const QString& folder, const QString& admin, const QString& password) {
+            const AppSettings before = m_settings;
+            if (m_options.database.isEmpty() && m_settings.databaseUrl.isEmpty())
+              m_settings.dataFolder = folder;
+            storage::DatabaseUrl url;
+            try {
+              url = databaseUrl();
+            } catch (const storage::StorageError& e) {
+              m_settings = before;
+              return screen->showError(QString::fromStdString(e.what()));
+            }
+            screen->setBusy(true);
+            m_records->create(
+                url, admin, password, screen,
+                [this](const storage::User& user) {
+                  saveSettings();
+                  QSettings().setValue(kLastUser, user.name);
+                  onSignedIn(user);
+                },
+                [this, screen, before](const RecordsFailure& f) {
+                  m_settings = before;
+                  screen->showError(f.message);
+                });
+          });
+  m_window->showScreen(screen);
+}
+
+void AppController::showSignIn() {
+  QString where;
+  try {
+    where = databaseUrl().display();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  const QString last = QSettings().value(kLastUser).toString();
+  auto* screen = new SignInScreen(where, last);
+  connect(screen, &SignInScreen::signInRequested, this,
+          [this, screen](const QString& name, const QString& password) {
+            screen->setBusy(true);
+            m_records->signIn(
+                databaseUrl(), name, password, screen,
+                [this, name](const storage::User& user) {
+                  QSettings().setValue(kLastUser, name);
+                  onSignedIn(user);
+                },
+                [screen](const RecordsFailure& f) { screen->showError(f.message); });
+          });
+  m_window->showScreen(screen);
+}
+
+void AppController::onSignedIn(const storage::User& user) {
+  m_window->setSignedIn(tr("%1 (%2)").arg(user.name, storage::roleName(user.role)));
+  emit signedIn(user.name);
+  if (user.role == storage::Role::Home) return showHomeModeLater();
+  showPatients();
+}
+
+void AppController::signOut() {
+  m_records->signOut();
+  m_window->setSignedIn({});
+  showSignIn();
+}
+
+void AppController::showPatients() {
+  if (!m_records->signedIn()) return;
+  auto* screen = new MessageScreen(tr("Patients"), tr("The patient list arrives with step 3."));
+  m_window->showScreen(screen);
+}
+
+void AppController::showHomeModeLater() {
+  auto* screen = new MessageScreen(
+      tr("Home exercises"),
+      tr("This is a home account. The guided home exercises it opens arrive in a later version "
+         "of ArmTrack. Until then, your therapist records your sessions at the clinic."));
+  screen->addAction(tr("Sign &out"), [this] { signOut(); });
+  m_window->showScreen(screen);
+}
+
+void AppController::showDatabaseProblem(const RecordsFailure& failure) {
+  using Kind = storage::StorageError::Kind;
+  QString advice;
+  switch (failure.kind.value_or(Kind::Io)) {
+    case Kind::OlderSchema:
+      advice = tr("Back the file up, then bring it up to date with: armtrack-cli db migrate");
+      break;
+    case Kind::NewerSchema:
+      advice = tr("Install the newer ArmTrack that wrote it.");
+      break;
+    case Kind::Corrupt:
+      advice =
+          tr("The file was left untouched. Restore it from a backup, or choose another "
+             "database in the settings.");
+      break;
+    default:
+      advice =
+          tr("Check the location in the settings (or --db) and that you may read and "
+             "write it, then try again.");
+  }
+  auto* screen = new MessageScreen(tr("The records cannot be opened"),
+                                   failure.message + QStringLiteral("\n\n") + advice);
+  screen->addAction(tr("&Try again"), [this] { openRecords(); });
+  screen->addAction(tr("&Quit"), [] { QApplication::quit(); });
   m_window->showScreen(screen);
 }
 

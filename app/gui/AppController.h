@@ -30,9 +30,25 @@ class AppController : public QObject {
   const app::PluginRegistry& plugins() const { return m_plugins; }
   const AppSettings& settings() const { return m_settings; }
 
+  // Where the application goes; public so that a test can drive it.
+  void openRecords();
+  void showFirstRun();
+  void showSignIn();
+  void signOut();
+  void showPatients();
+
+ signals:
+  /// Someone signed in (after the first-run assistant too).
+  void signedIn(const QString& name);
+
  private:
   void loadPlugins();
-  void showMessage(const QString& title, const QString& text);
+  void saveSettings();
+  /// The records in effect (--db, else the settings); throws StorageError(Usage).
+  storage::DatabaseUrl databaseUrl() const;
+  void onSignedIn(const storage::User& user);
+  void showDatabaseProblem(const RecordsFailure& failure);
+  void showHomeModeLater();
 
   AppOptions m_options;
   AppSettings m_settings;

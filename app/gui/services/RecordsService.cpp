@@ -25,15 +25,23 @@ class Relay : public QObject {
   void progressed(int percent);
 };
 
+// The services' messages start in lower case, as the command line prints them after a colon;
+// on a screen they stand alone.
+QString sentence(const std::string& text) {
+  QString s = QString::fromStdString(text);
+  if (!s.isEmpty()) s[0] = s[0].toUpper();
+  return s;
+}
+
 RecordsFailure failureOf(std::exception_ptr e) {
   try {
     std::rethrow_exception(e);
   } catch (const StorageError& s) {
-    return {s.kind(), QString::fromStdString(s.what())};
+    return {s.kind(), sentence(s.what())};
   } catch (const RecordingError& r) {
-    return {std::nullopt, QString::fromStdString(r.message())};
+    return {std::nullopt, sentence(r.message())};
   } catch (const std::exception& x) {
-    return {std::nullopt, QString::fromStdString(x.what())};
+    return {std::nullopt, sentence(x.what())};
   } catch (...) {
     return {std::nullopt, QStringLiteral("an unexpected error")};
   }
