@@ -13,6 +13,8 @@ packages=(
   fonts-dejavu-core fonts-wqy-microhei poppler-utils
   libqt6sql6-psql postgresql
   libgtest-dev googletest libbenchmark-dev
+  qt6-charts-dev libqt6opengl6-dev libvtk9-dev
+  xvfb xauth libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev
 )
 
