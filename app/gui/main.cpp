@@ -2,35 +2,18 @@
 // plain words before Qt starts, then sets the OpenGL format the 3D view needs and hands over to
 // AppController.
 #include <QApplication>
-#include <QSurfaceFormat>
 #include <cstdio>
 
 #include "app/gui/AppController.h"
 #include "app/gui/AppOptions.h"
 #include "app/gui/services/AppSettings.h"
+#include "ui/OpenGlSetup.h"
 
 namespace {
 
 void print(FILE* to, const QString& text) {
   std::fputs(text.toLocal8Bit().constData(), to);
   std::fflush(to);
-}
-
-/// VTK's OpenGL2 back end inside a QOpenGLWidget: OpenGL 3.2 core, RGBA8, a depth buffer, no
-/// stencil, no multisampling (docs/architecture.md). Must be set before QApplication exists.
-void setOpenGlFormat() {
-  QSurfaceFormat f;
-  f.setRenderableType(QSurfaceFormat::OpenGL);
-  f.setVersion(3, 2);
-  f.setProfile(QSurfaceFormat::CoreProfile);
-  f.setRedBufferSize(8);
-  f.setGreenBufferSize(8);
-  f.setBlueBufferSize(8);
-  f.setAlphaBufferSize(8);
-  f.setDepthBufferSize(24);
-  f.setStencilBufferSize(0);
-  f.setSamples(0);
-  QSurfaceFormat::setDefaultFormat(f);
 }
 
 }  // namespace
@@ -56,7 +39,7 @@ int main(int argc, char** argv) {
     print(stderr, why + u'\n');
     return 2;
   }
-  setOpenGlFormat();
+  armtrack::ui::setDefaultSurfaceFormat();  // before QApplication: the VTK view needs it
   QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
       Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
   QApplication app(argc, argv);

@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 
 #include "app/gui/MainWindow.h"
+#include "tests/app/gui/support/GuiTestSupport.h"
 
 namespace {
 
@@ -59,5 +60,5 @@ class TestMainWindow : public QObject {
   }
 };
 
-QTEST_MAIN(TestMainWindow)
+ARMTRACK_APP_TEST_MAIN(TestMainWindow)
 #include "test_main_window.moc"

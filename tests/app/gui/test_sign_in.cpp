@@ -121,11 +121,5 @@ class TestSignIn : public QObject {
   }
 };
 
-int main(int argc, char** argv) {
-  armtrack::gui::test::isolatedHome();
-  QApplication app(argc, argv);
-  armtrack::gui::setApplicationIdentity();
-  TestSignIn t;
-  return QTest::qExec(&t, argc, argv);
-}
+ARMTRACK_APP_TEST_MAIN(TestSignIn)
 #include "test_sign_in.moc"

@@ -11,6 +11,9 @@
 #include <QTest>
 #include <QWidget>
 
+#include "app/gui/services/AppSettings.h"
+#include "tests/support/GuiTestMain.h"
+
 namespace armtrack::gui::test {
 
 /// Points QSettings and QStandardPaths at a fresh temporary home. Call before QApplication.
@@ -44,16 +47,24 @@ inline void typeInto(QLineEdit* edit, const QString& text) {
   QTest::keyClicks(edit, text);
 }
 
-/// Saves what the X server shows of window (so an OpenGL view is included) as <name>.png in
-/// $ARMTRACK_SCREENSHOT_DIR, when that is set. Returns the file written, or "".
+/// Saves what the X server shows of the window (the VTK view included) as <name>.png in the
+/// screenshot folder (tests/support/GuiTestMain.h); returns the path.
 inline QString saveScreenshot(QWidget* window, const QString& name) {
-  const QString dir = qEnvironmentVariable("ARMTRACK_SCREENSHOT_DIR");
-  if (dir.isEmpty() || !window) return {};
-  QDir().mkpath(dir);
   QApplication::processEvents();
-  const QPixmap shot = window->screen()->grabWindow(window->winId());
-  const QString path = QDir(dir).filePath(name + QStringLiteral(".png"));
-  return shot.save(path) ? path : QString();
+  return armtrack::test::saveScreenshot(armtrack::test::grabFromScreen(window->window()), name);
 }
 
 }  // namespace armtrack::gui::test
+
+/// main() for the application's GUI tests: a private home, the OpenGL format, the application's
+/// identity (as armtrack's main() sets them).
+#define ARMTRACK_APP_TEST_MAIN(TestClass)          \
+  int main(int argc, char** argv) {                \
+    armtrack::gui::test::isolatedHome();           \
+    armtrack::ui::setDefaultSurfaceFormat();       \
+    QApplication app(argc, argv);                  \
+    app.setAttribute(Qt::AA_DontUseNativeDialogs); \
+    armtrack::gui::setApplicationIdentity();       \
+    TestClass test;                                \
+    return QTest::qExec(&test, argc, argv);        \
+  }
