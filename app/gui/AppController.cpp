@@ -7,6 +7,8 @@
 #include "app/gui/FirstRunScreen.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/MessageScreen.h"
+#include "app/gui/PatientListScreen.h"
+#include "app/gui/PatientScreen.h"
 #include "app/gui/SignInScreen.h"
 
 namespace armtrack::gui {
@@ -145,9 +147,31 @@ void AppController::signOut() {
 }
 
 void AppController::showPatients() {
+  showPatientList({});
+}
+
+void AppController::showPatientList(const QString& select) {
   if (!m_records->signedIn()) return;
-  auto* screen = new MessageScreen(tr("Patients"), tr("The patient list arrives with step 3."));
+  auto* screen = new PatientListScreen(*m_records, select);
+  connect(screen, &PatientListScreen::openRequested, this, &AppController::showPatient);
   m_window->showScreen(screen);
+}
+
+void AppController::showPatient(const QString& code) {
+  if (!m_records->signedIn()) return;
+  auto* screen = new PatientScreen(*m_records, m_settings, code);
+  connect(screen, &PatientScreen::backRequested, this, [this, code] { showPatientList(code); });
+  connect(screen, &PatientScreen::newSessionRequested, this, &AppController::startNewSession);
+  connect(screen, &PatientScreen::reviewRequested, this, &AppController::showReview);
+  m_window->showScreen(screen);
+}
+
+void AppController::startNewSession(const QString& code) {
+  m_window->showStatus(tr("The new-session flow for %1 arrives in a later step.").arg(code));
+}
+
+void AppController::showReview(qint64 sessionId) {
+  m_window->showStatus(tr("The review of session %1 arrives in a later step.").arg(sessionId));
 }
 
 void AppController::showHomeModeLater() {

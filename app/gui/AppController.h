@@ -36,6 +36,10 @@ class AppController : public QObject {
   void showSignIn();
   void signOut();
   void showPatients();
+  void showPatientList(const QString& select);
+  void showPatient(const QString& code);
+  void startNewSession(const QString& code);
+  void showReview(qint64 sessionId);
 
  signals:
   /// Someone signed in (after the first-run assistant too).

@@ -15,6 +15,7 @@ MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_stack(new QStackedWidget(this)), m_who(new QLabel(this)) {
   setCentralWidget(m_stack);
   setMinimumSize(900, 600);
+  resize(1200, 760);  // fits a 1280x800 screen; a window manager may maximise it
   statusBar()->addPermanentWidget(m_who);
   m_who->setAccessibleName(tr("Signed-in account"));
 
