@@ -1,7 +1,12 @@
 #include "app/gui/AppController.h"
 
 #include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QScreen>
 #include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
 
 #include "app/gui/Appearance.h"
 #include "app/gui/FirstRunScreen.h"
@@ -10,6 +15,7 @@
 #include "app/gui/PatientListScreen.h"
 #include "app/gui/PatientScreen.h"
 #include "app/gui/SignInScreen.h"
+#include "app/gui/services/DemoData.h"
 
 namespace armtrack::gui {
 
@@ -40,7 +46,77 @@ void AppController::start() {
   applyTheme(parseTheme(settings.value(QStringLiteral("display/theme")).toString()));
   loadPlugins();
   m_window->show();
-  openRecords();
+  if (m_options.quitAfterSeconds > 0)
+    QTimer::singleShot(static_cast<int>(m_options.quitAfterSeconds * 1000), this, [this] {
+      if (!m_options.screenshot.isEmpty()) saveWindowImage(m_options.screenshot);
+      QApplication::quit();
+    });
+  m_options.demo ? startDemo() : openRecords();
+}
+
+bool AppController::saveWindowImage(const QString& path) const {
+  QApplication::processEvents();
+  // From the screen, so the OpenGL views are included.
+  const QPixmap shot = m_window->screen()->grabWindow(m_window->winId());
+  const bool ok = shot.save(path);
+  if (!ok) qWarning("armtrack: cannot write the screenshot %s", qPrintable(path));
+  return ok;
+}
+
+storage::DatabaseUrl AppController::demoDatabaseUrl() const {
+  if (!m_options.database.isEmpty()) return storage::DatabaseUrl::parse(m_options.database);
+  storage::DatabaseUrl url;
+  url.path = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                 .filePath(QStringLiteral("demo/armtrack-demo.db"));
+  return url;
+}
+
+void AppController::startDemo() {
+  storage::DatabaseUrl url;
+  try {
+    url = demoDatabaseUrl();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  m_demoUrl = url;
+  if (url.engine == storage::DatabaseUrl::Engine::Sqlite)
+    QDir().mkpath(QFileInfo(url.path).absolutePath());
+  auto* wait = new MessageScreen(
+      tr("Preparing the demo"),
+      tr("Making demo records in %1: three patients, two protocols and six weeks of sessions, "
+         "simulated and analysed the way real ones are. This takes a few seconds.")
+          .arg(url.display()));
+  wait->setProgress(0);
+  m_window->showScreen(wait);
+  RecordsJob* job = m_records->startJob(
+      wait,
+      [url](JobContext& c) {
+        return buildDemoDatabase(
+            url, [&c](int p) { c.progress(p); }, c.cancelFlag());
+      },
+      [this, wait, url](bool built) {
+        if (!built) return QApplication::quit();
+        wait->setText(tr("Signing in as the demo therapist..."));
+        m_records->signIn(
+            url, QString::fromLatin1(DemoAccounts::kTherapist),
+            QString::fromLatin1(DemoAccounts::kPassword), wait,
+            [this](const storage::User& user) {
+              m_window->setSignedIn(
+                  tr("%1 (%2, demo)").arg(user.name, storage::roleName(user.role)));
+              m_window->showStatus(tr("Demo records: accounts \"%1\" and \"%2\", password \"%3\".")
+                                       .arg(QString::fromLatin1(DemoAccounts::kTherapist),
+                                            QString::fromLatin1(DemoAccounts::kAdmin),
+                                            QString::fromLatin1(DemoAccounts::kPassword)),
+                                   0);
+              emit signedIn(user.name);
+              showPatient(QString::fromLatin1(DemoAccounts::kLivePatient));
+              emit demoReady();
+            },
+            [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+  connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
+  wait->addAction(tr("&Cancel"), [job] { job->cancel(); });
 }
 
 void AppController::loadPlugins() {
@@ -55,6 +131,7 @@ void AppController::saveSettings() {
 }
 
 storage::DatabaseUrl AppController::databaseUrl() const {
+  if (m_demoUrl) return *m_demoUrl;
   if (!m_options.database.isEmpty()) return storage::DatabaseUrl::parse(m_options.database);
   return m_settings.effectiveDatabase();
 }

@@ -40,10 +40,16 @@ class AppController : public QObject {
   void showPatient(const QString& code);
   void startNewSession(const QString& code);
   void showReview(qint64 sessionId);
+  /// `--demo`: fresh demo records, signed in as the demo therapist, then the live session.
+  void startDemo();
+  /// Writes what the screen shows of the window to path (PNG).
+  bool saveWindowImage(const QString& path) const;
 
  signals:
   /// Someone signed in (after the first-run assistant too).
   void signedIn(const QString& name);
+  /// The demo records are made and the demo therapist signed in.
+  void demoReady();
 
  private:
   void loadPlugins();
@@ -53,8 +59,10 @@ class AppController : public QObject {
   void onSignedIn(const storage::User& user);
   void showDatabaseProblem(const RecordsFailure& failure);
   void showHomeModeLater();
+  storage::DatabaseUrl demoDatabaseUrl() const;
 
   AppOptions m_options;
+  std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode
   AppSettings m_settings;
   app::PluginRegistry m_plugins;
   std::unique_ptr<RecordsService> m_records;

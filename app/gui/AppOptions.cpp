@@ -40,6 +40,9 @@ QString appUsage() {
       "                  live session with the virtual arm\n"
       "  --plugins DIR   also look for device plugins in DIR (repeatable)\n"
       "  --lang CODE     language of the user interface, e.g. en, de, es\n"
+      "  --quit-after S  quit after S seconds (for unattended runs)\n"
+      "  --screenshot FILE\n"
+      "                  with --quit-after: save the window as a PNG before quitting\n"
       "  --version       print the version and exit\n"
       "  --help          print this text and exit\n"
       "\n"
@@ -81,6 +84,16 @@ AppOptions parseAppOptions(const QStringList& arguments) {
       if (valueOf(i, QStringLiteral("--plugins"), dir)) o.pluginFolders << dir;
     } else if (is("--lang")) {
       valueOf(i, QStringLiteral("--lang"), o.language);
+    } else if (is("--quit-after")) {
+      QString v;
+      if (valueOf(i, QStringLiteral("--quit-after"), v)) {
+        bool ok = false;
+        o.quitAfterSeconds = v.toDouble(&ok);
+        if (!ok || !(o.quitAfterSeconds > 0))
+          o.error = tr("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
+      }
+    } else if (is("--screenshot")) {
+      valueOf(i, QStringLiteral("--screenshot"), o.screenshot);
     } else if (isQtOptionWithValue(a) && i + 1 < arguments.size()) {
       o.qtArguments << a << arguments[++i];
     } else if (a.startsWith(u'-') && !a.startsWith(QLatin1String("--"))) {
@@ -89,6 +102,8 @@ AppOptions parseAppOptions(const QStringList& arguments) {
       o.error = tr("unknown option or argument '%1' (see armtrack --help)").arg(a);
     }
   }
+  if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0)
+    o.error = tr("--screenshot needs --quit-after");
   return o;
 }
 

@@ -8,10 +8,12 @@
 namespace armtrack::gui {
 
 struct AppOptions {
-  QString database;           ///< --db URL (empty: the settings' or the default)
-  bool demo = false;          ///< --demo
-  QStringList pluginFolders;  ///< --plugins DIR, repeatable
-  QString language;           ///< --lang CODE (empty: settings, else the system's)
+  QString database;             ///< --db URL (empty: the settings' or the default)
+  bool demo = false;            ///< --demo
+  QStringList pluginFolders;    ///< --plugins DIR, repeatable
+  QString language;             ///< --lang CODE (empty: settings, else the system's)
+  double quitAfterSeconds = 0;  ///< --quit-after S: quit after S seconds (0: never)
+  QString screenshot;           ///< --screenshot FILE: the window as PNG when quitting
   bool help = false;
   bool version = false;
   QString error;            ///< a usage error, in words; empty when the line was fine

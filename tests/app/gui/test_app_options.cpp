@@ -52,6 +52,10 @@ class TestAppOptions : public QObject {
     QCOMPARE(o.pluginFolders, (QStringList{QStringLiteral("/a"), QStringLiteral("/b")}));
     QCOMPARE(o.language, QStringLiteral("de"));
     QVERIFY(!o.help && !o.version);
+    const auto u = parseAppOptions(line({"--quit-after", "2.5", "--screenshot=/tmp/a.png"}));
+    QVERIFY2(u.error.isEmpty(), qPrintable(u.error));
+    QCOMPARE(u.quitAfterSeconds, 2.5);
+    QCOMPARE(u.screenshot, QStringLiteral("/tmp/a.png"));
   }
 
   void leavesQtOptionsForQApplication() {
@@ -70,6 +74,12 @@ class TestAppOptions : public QObject {
     QTest::newRow("empty db") << line({"--db="}) << QStringLiteral("--db needs a value");
     QTest::newRow("plugins without value")
         << line({"--demo", "--plugins"}) << QStringLiteral("--plugins needs a value");
+    QTest::newRow("quit-after text") << line({"--quit-after", "soon"}) << QStringLiteral("'soon'");
+    QTest::newRow("quit-after negative")
+        << line({"--quit-after=-3"}) << QStringLiteral("positive number");
+    QTest::newRow("quit-after nan") << line({"--quit-after", "nan"}) << QStringLiteral("'nan'");
+    QTest::newRow("screenshot alone")
+        << line({"--screenshot", "x.png"}) << QStringLiteral("--screenshot needs --quit-after");
   }
   void refusesWhatItDoesNotKnow() {
     QFETCH(QStringList, args);
