@@ -242,13 +242,22 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);
   result.settingsSource = fromSession ? "session" : "defaults";
   if (options.filter) result.settings.filter = *options.filter;
+  if (options.model) result.settings.model = *options.model;
   if (options.noOptical) result.settings.useOptical = result.settings.useCamera = false;
   const auto progress = [&](int p) {
     if (options.progress) options.progress(p);
   };
   progress(0);
 
-  const Recording recording = store.readRecording(sessionId);
+  Recording recording = store.readRecording(sessionId);
+  if (options.calibration) {
+    try {
+      applyCalibration(*options.calibration, recording);  // the geometry goes into the meta
+    } catch (const std::invalid_argument& e) {
+      throw StorageError(Kind::Usage,
+                         sessionText(sessionId) + ": the calibration does not fit: " + e.what());
+    }
+  }
   const EstimatorParams params = estimatorParamsFor(recording.meta, result.settings);
   EstimateColumns rows;
   EstimateCallbacks callbacks;
@@ -293,6 +302,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       {"method", QString::fromStdString(methodName(result.settings.model))},
       {"optical", result.settings.useOptical},
       {"camera", result.settings.useCamera},
+      {"calibration", options.calibration.has_value()},
       {"joint_accel_std_deg", result.settings.jointAccelStdDeg
                                   ? QJsonValue(*result.settings.jointAccelStdDeg)
                                   : QJsonValue(QJsonValue::Null)},
