@@ -12,6 +12,7 @@
 #include "app/gui/FirstRunScreen.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/MessageScreen.h"
+#include "app/gui/NewSessionScreen.h"
 #include "app/gui/PatientListScreen.h"
 #include "app/gui/PatientScreen.h"
 #include "app/gui/SignInScreen.h"
@@ -244,7 +245,15 @@ void AppController::showPatient(const QString& code) {
 }
 
 void AppController::startNewSession(const QString& code) {
-  m_window->showStatus(tr("The new-session flow for %1 arrives in a later step.").arg(code));
+  if (!m_records->signedIn()) return;
+  auto* screen = new NewSessionScreen(*m_records, code);
+  connect(screen, &NewSessionScreen::cancelled, this, [this, code] { showPatient(code); });
+  connect(screen, &NewSessionScreen::accepted, this, [this, code](const SessionPlan&) {
+    // The live session (app/gui/live) is wired in when it lands.
+    m_window->showStatus(tr("The live session arrives with the widgets' live screen."));
+    showPatient(code);
+  });
+  m_window->showScreen(screen);
 }
 
 void AppController::showReview(qint64 sessionId) {

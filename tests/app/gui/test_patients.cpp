@@ -11,13 +11,16 @@
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QPushButton>
+#include <QRadioButton>
 #include <QSignalSpy>
 #include <QStandardItemModel>
 #include <QTableView>
+#include <QWizard>
 
 #include "app/gui/AppController.h"
 #include "app/gui/Forms.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/NewSessionScreen.h"
 #include "app/gui/PatientDialog.h"
 #include "app/gui/PatientListScreen.h"
 #include "app/gui/PatientScreen.h"
@@ -227,6 +230,32 @@ class TestPatients : public QObject {
     QTRY_COMPARE(loaded.count(), 1);
     QCOMPARE(page->overview().patient.diagnosis, QStringLiteral("Updated"));
     QCOMPARE(page->overview().patient.name, QStringLiteral("Ada Example"));  // the rest kept
+  }
+
+  void aNewSessionStartsWithProtocolAndSide() {
+    activate(m_app->window());
+    QVERIFY(current<PatientScreen>());
+    QTest::keySequence(screen(), QKeySequence(QStringLiteral("Ctrl+R")));
+    QTRY_VERIFY(current<NewSessionScreen>());
+    auto* setup = current<NewSessionScreen>()->setupPage();
+    QTRY_VERIFY(setup->isComplete());
+    SessionPlan plan = setup->plan();
+    QCOMPARE(plan.patient.code, QStringLiteral("P001"));
+    QVERIFY(!plan.protocol);
+    QCOMPARE(plan.side, armtrack::Side::Right);  // Ada's affected side
+    QVERIFY(setup->selectProtocol(QStringLiteral("Elbow flexion")));
+    QVERIFY(!setup->selectProtocol(QStringLiteral("No such protocol")));
+    QVERIFY(findControl<QRadioButton>(screen(), QStringLiteral("Left arm")));
+    QTest::mouseClick(findControl<QRadioButton>(screen(), QStringLiteral("Left arm")),
+                      Qt::LeftButton);
+    plan = setup->plan();
+    QVERIFY(plan.protocol && plan.protocol->angleKey == QStringLiteral("elbow_flexion"));
+    QCOMPARE(plan.side, armtrack::Side::Left);
+    test::saveScreenshot(m_app->window(), QStringLiteral("new-session"));
+    // Cancel goes back to the patient, nothing recorded.
+    current<NewSessionScreen>()->wizard()->reject();
+    QTRY_VERIFY(current<PatientScreen>());
+    QTRY_COMPARE(current<PatientScreen>()->overview().sessions.size(), std::size_t{6});
   }
 
   void backReturnsToTheListWithThePatientSelected() {
