@@ -71,6 +71,11 @@ class AnglePlotPanel : public QWidget {
  public slots:
   /// Redraws now.
   void refresh();
+  /// Redraws if something changed since the last redraw (for an owner that drives the redraws
+  /// from its own timer, with setRefreshRate(0), so that every view repaints in one pass).
+  void refreshIfChanged() {
+    if (m_dirty) refresh();
+  }
 
  signals:
   /// Review: the user clicked a time on a plot.

@@ -24,7 +24,11 @@ class AngleReadouts : public QWidget {
   void setSample(const AngleSample* sample);
   /// An angle is marked uncertain when its 2-sigma half-width exceeds this (deg, default 10).
   void setUncertainAboveDeg(double deg) { m_uncertainAbove = deg; }
+  /// 0: only refresh() or refreshIfChanged() redraw.
   void setRefreshRate(double hz);
+  void refreshIfChanged() {
+    if (m_dirty) refresh();
+  }
   /// Lays the readouts out in one row (wide) or a grid (narrow).
   void setColumns(int columns);
 

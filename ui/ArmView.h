@@ -59,8 +59,14 @@ class ArmView : public VtkOpenGlWidget {
   const JointVector& pose() const { return m_pose; }
   std::uint64_t rejectedPoses() const { return m_rejected; }
 
-  /// Frames per second at most (default 60); 0 draws only when update() is called.
+  /// Frames per second at most (default 60); 0 draws only when update() or updateIfChanged()
+  /// is called.
   void setRefreshRate(double hz);
+  /// Schedules a frame if something changed since the last one (for an owner that drives the
+  /// frames from its own timer, so that every view repaints in one pass).
+  void updateIfChanged() {
+    if (m_dirty) update();
+  }
   double refreshRate() const { return m_refreshHz; }
 
   CameraView camera() const;

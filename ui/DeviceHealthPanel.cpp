@@ -113,7 +113,7 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
 }
 
 bool HealthTracker::allOk() const {
-  return std::all_of(m_rows.begin(), m_rows.end(),
+  return !m_rows.empty() && std::all_of(m_rows.begin(), m_rows.end(),
                      [](const StreamHealthRow& r) { return r.level == HealthLevel::Ok; });
 }
 

@@ -43,6 +43,7 @@ class HealthTracker {
   const std::vector<StreamHealthRow>& rows() const { return m_rows; }
   /// "All devices are streaming", or what is wrong, in one line.
   QString summary() const;
+  /// Every stream streams (false while there are none).
   bool allOk() const;
 
  private:

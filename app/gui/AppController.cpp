@@ -8,6 +8,7 @@
 #include <QStandardPaths>
 #include <QTimer>
 
+#include "app/gui/AngleNames.h"
 #include "app/gui/Appearance.h"
 #include "app/gui/FirstRunScreen.h"
 #include "app/gui/MainWindow.h"
@@ -15,8 +16,12 @@
 #include "app/gui/NewSessionScreen.h"
 #include "app/gui/PatientListScreen.h"
 #include "app/gui/PatientScreen.h"
+#include "app/gui/RecordsRecordingTarget.h"
 #include "app/gui/SignInScreen.h"
+#include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
+#include "app/gui/services/PatientRecords.h"
+#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
 
@@ -53,6 +58,24 @@ void AppController::start() {
       QApplication::quit();
     });
   m_options.demo ? startDemo() : openRecords();
+}
+
+void AppController::startDemoSession() {
+  // The demo patient with the demo protocol, live with the virtual arm at once.
+  m_records->call(
+      m_window.get(),
+      [](storage::ClinicalStore& s) {
+        SessionPlan plan;
+        plan.patient = s.patient(QString::fromLatin1(DemoAccounts::kLivePatient));
+        plan.protocol = s.protocol(QString::fromLatin1(DemoAccounts::kLiveProtocol));
+        plan.side = defaultSide(plan.patient, plan.protocol);
+        return plan;
+      },
+      [this](const SessionPlan& plan) {
+        showLiveSession(plan, app::gui::demoDevices());
+        emit demoReady();
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
 }
 
 bool AppController::saveWindowImage(const QString& path) const {
@@ -110,8 +133,7 @@ void AppController::startDemo() {
                                             QString::fromLatin1(DemoAccounts::kPassword)),
                                    0);
               emit signedIn(user.name);
-              showPatient(QString::fromLatin1(DemoAccounts::kLivePatient));
-              emit demoReady();
+              startDemoSession();
             },
             [this](const RecordsFailure& f) { showDatabaseProblem(f); });
       },
@@ -248,12 +270,98 @@ void AppController::startNewSession(const QString& code) {
   if (!m_records->signedIn()) return;
   auto* screen = new NewSessionScreen(*m_records, code);
   connect(screen, &NewSessionScreen::cancelled, this, [this, code] { showPatient(code); });
-  connect(screen, &NewSessionScreen::accepted, this, [this, code](const SessionPlan&) {
-    // The live session (app/gui/live) is wired in when it lands.
-    m_window->showStatus(tr("The live session arrives with the widgets' live screen."));
-    showPatient(code);
-  });
+  connect(screen, &NewSessionScreen::accepted, this,
+          [this](const SessionPlan& plan) { showLiveSession(plan, defaultDevices()); });
   m_window->showScreen(screen);
+}
+
+QStringList AppController::defaultDevices() const {
+  const QStringList saved = QSettings().value(QStringLiteral("devices/default")).toStringList();
+  return saved.isEmpty() ? app::gui::demoDevices() : saved;
+}
+
+app::gui::LiveSessionConfig AppController::liveConfig(const SessionPlan& plan,
+                                                      const QStringList& devices) const {
+  app::gui::LiveSessionConfig c;
+  c.devices = devices;
+  c.patientLabel = tr("%1 %2").arg(plan.patient.code, plan.patient.name);
+  const bool virtualArm = std::all_of(devices.begin(), devices.end(), [](const QString& d) {
+    return d.startsWith(QLatin1String("virtual-arm"));
+  });
+  // The virtual arm simulates the default right arm; a real patient's arm gets their measured
+  // lengths and the chosen side.
+  c.meta.side = virtualArm ? Side::Right : plan.side;
+  if (!virtualArm) {
+    const SegmentLengths l = SegmentLengths::fromJson(plan.patient.segmentLengthsJson);
+    if (l.upperArmM) c.meta.geometry.l3 = *l.upperArmM;
+    if (l.forearmM) c.meta.geometry.l6 = *l.forearmM;
+    if (l.upperStrapM) c.meta.geometry.lu3 = *l.upperStrapM;
+    if (l.forearmStrapM) c.meta.geometry.lf6 = *l.forearmStrapM;
+  }
+  c.estimator.filter =
+      m_settings.filter == QLatin1String("ukf") ? FilterKind::Ukf : FilterKind::Ekf;
+  try {
+    c.estimator.model = parseMethod(m_settings.method.toStdString());
+  } catch (const std::invalid_argument&) {
+  }
+  if (plan.protocol) {
+    const int angle = angleIndex(plan.protocol->angleKey);
+    if (angle >= 0) c.primaryAngle = angle;
+    c.targetDeg = std::make_pair(plan.protocol->targetMinDeg, plan.protocol->targetMaxDeg);
+    if (plan.protocol->repetitions > 0) c.targetRepetitions = plan.protocol->repetitions;
+  }
+  return c;
+}
+
+void AppController::showLiveSession(const SessionPlan& plan, const QStringList& devices) {
+  if (!m_records->signedIn()) return;
+  auto target = std::make_shared<RecordsRecordingTarget>(
+      *m_records, plan.patient.code, plan.protocol ? plan.protocol->name : QString());
+  auto* screen = new app::gui::LiveSessionScreen(m_plugins, liveConfig(plan, devices), target);
+  screen->setWindowTitle(tr("Live session: %1").arg(plan.patient.name));
+  const QString code = plan.patient.code;
+  connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
+          [this, target, code](const QString& summary) {
+            m_window->showStatus(summary, 0);
+            if (const qint64 id = target->sessionId())
+              analyseThenReview(id, code);
+            else
+              showPatient(code);
+          });
+  m_window->showScreen(screen);
+  screen->start();
+  emit liveSessionShown(screen);
+}
+
+void AppController::analyseThenReview(qint64 sessionId, const QString& code) {
+  auto* wait = new MessageScreen(
+      tr("Analysing the session"),
+      tr("Estimating the joint angles of session %1 again from its recording and computing its "
+         "metrics...")
+          .arg(sessionId));
+  wait->setProgress(0);
+  m_window->showScreen(wait);
+  RecordsJob* job = m_records->startJob(
+      wait,
+      [sessionId](JobContext& c) {
+        storage::AnalysisOptions o;
+        o.progress = [&c](int p) { c.progress(p); };
+        o.cancel = c.cancelFlag();
+        return !storage::analyseSession(c.store(), sessionId, o).cancelled;
+      },
+      [this, sessionId](bool) { showReview(sessionId); },
+      [this, wait, sessionId, code](const RecordsFailure& f) {
+        // The recording is stored whatever happened: say why it has no analysis yet.
+        wait->setProgress(100);
+        wait->setText(tr("Session %1 is saved, but it could not be analysed: %2\nYou can "
+                         "re-estimate it from its review.")
+                          .arg(sessionId)
+                          .arg(f.message));
+        wait->addAction(tr("&Review session"), [this, sessionId] { showReview(sessionId); });
+        wait->addAction(tr("&Back to the patient"), [this, code] { showPatient(code); });
+      });
+  connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
+  wait->addAction(tr("&Skip the analysis"), [job] { job->cancel(); });
 }
 
 void AppController::showReview(qint64 sessionId) {

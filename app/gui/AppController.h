@@ -8,8 +8,10 @@
 #include <memory>
 
 #include "app/gui/AppOptions.h"
+#include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "app/gui/services/SessionPlan.h"
 #include "app/plugins/PluginRegistry.h"
 
 namespace armtrack::gui {
@@ -42,14 +44,23 @@ class AppController : public QObject {
   void showReview(qint64 sessionId);
   /// `--demo`: fresh demo records, signed in as the demo therapist, then the live session.
   void startDemo();
+  /// The live session of plan with these devices ("plugin:options"), recording into the records;
+  /// when it stops after recording, the new session is analysed and reviewed.
+  void showLiveSession(const SessionPlan& plan, const QStringList& devices);
+  /// Analyses a stored session (a job with progress), then opens its review.
+  void analyseThenReview(qint64 sessionId, const QString& patientCode);
+  /// The devices a new session starts with (settings "devices/default", else the virtual arm).
+  QStringList defaultDevices() const;
   /// Writes what the screen shows of the window to path (PNG).
   bool saveWindowImage(const QString& path) const;
 
  signals:
   /// Someone signed in (after the first-run assistant too).
   void signedIn(const QString& name);
-  /// The demo records are made and the demo therapist signed in.
+  /// The demo records are made, the demo therapist signed in and the live session shown.
   void demoReady();
+  /// A live session screen was shown (and started).
+  void liveSessionShown(QWidget* screen);
 
  private:
   void loadPlugins();
@@ -60,6 +71,8 @@ class AppController : public QObject {
   void showDatabaseProblem(const RecordsFailure& failure);
   void showHomeModeLater();
   storage::DatabaseUrl demoDatabaseUrl() const;
+  void startDemoSession();
+  app::gui::LiveSessionConfig liveConfig(const SessionPlan& plan, const QStringList& devices) const;
 
   AppOptions m_options;
   std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode

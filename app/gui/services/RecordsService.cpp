@@ -102,6 +102,9 @@ class RecordsService::Worker {
   void post(std::function<void()> fn) {
     QMetaObject::invokeMethod(m_context, std::move(fn), Qt::QueuedConnection);
   }
+  void runBlocking(const std::function<void()>& fn) {
+    QMetaObject::invokeMethod(m_context, fn, Qt::BlockingQueuedConnection);
+  }
   QThread* thread() const { return m_thread; }
 
   Connection connection;  // worker thread only
@@ -256,6 +259,11 @@ void RecordsService::signedInShort(const storage::DatabaseUrl& url, const QStrin
                          .arg(f.message));
       },
       nullptr);
+}
+
+void RecordsService::runBlocking(const std::function<void(storage::ClinicalStore*)>& fn) {
+  Worker& w = *m_short;
+  w.runBlocking([&] { fn(w.connection.store.get()); });
 }
 
 void RecordsService::signOut() {

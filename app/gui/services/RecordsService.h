@@ -104,6 +104,12 @@ class RecordsService : public QObject {
   template <class Job, class Done>
   void call(QObject* receiver, Job job, Done done, FailedFn failed);
 
+  /// Runs job(ClinicalStore&) on the short-call thread and waits for it: for the few short
+  /// statements an interface needs at once (a session's row when recording starts). Rethrows
+  /// the job's exception. Never for anything that may take long.
+  template <class Job>
+  auto callBlocking(Job job) -> std::invoke_result_t<Job&, storage::ClinicalStore&>;
+
   /// Runs job(JobContext&) on the long-job thread; done gets its result, failed its exception,
   /// both on receiver's thread. The job may call the context's progress() and should stop when
   /// cancelled() reads true. Jobs run one after another.
@@ -128,6 +134,8 @@ class RecordsService : public QObject {
   /// it throws goes to failed there instead.
   void post(Lane lane, QObject* receiver, std::function<Deliver(Connection&, JobContext&)> work,
             FailedFn failed, RecordsJob* job);
+  /// Runs fn on the short-call thread with its store (null before sign-in) and waits.
+  void runBlocking(const std::function<void(storage::ClinicalStore*)>& fn);
   /// Signs the lane's connection in (on its thread).
   static storage::User openAndSignIn(Connection& c, const storage::DatabaseUrl& url,
                                      const QString& name, const QString& password);
@@ -156,6 +164,29 @@ void RecordsService::call(QObject* receiver, Job job, Done done, FailedFn failed
         }
       },
       std::move(failed), nullptr);
+}
+
+template <class Job>
+auto RecordsService::callBlocking(Job job) -> std::invoke_result_t<Job&, storage::ClinicalStore&> {
+  using R = std::invoke_result_t<Job&, storage::ClinicalStore&>;
+  std::exception_ptr error;
+  std::optional<std::conditional_t<std::is_void_v<R>, bool, R>> result;
+  runBlocking([&](storage::ClinicalStore* store) {
+    try {
+      if (!store)
+        throw storage::StorageError(storage::StorageError::Kind::Authentication, "not signed in");
+      if constexpr (std::is_void_v<R>) {
+        job(*store);
+        result = true;
+      } else {
+        result = job(*store);
+      }
+    } catch (...) {
+      error = std::current_exception();
+    }
+  });
+  if (error) std::rethrow_exception(error);
+  if constexpr (!std::is_void_v<R>) return std::move(*result);
 }
 
 template <class Job, class Done>

@@ -10,6 +10,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MessageScreen.h"
 #include "app/gui/PatientScreen.h"
+#include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 
@@ -24,6 +25,7 @@ class TestDemoMode : public QObject {
     AppOptions o;
     o.demo = true;
     o.database = m_dir.filePath(QStringLiteral("demo/armtrack-demo.db"));
+    o.pluginFolders = {QStringLiteral(ARMTRACK_PLUGIN_DIR)};
     AppController app(o);
     QSignalSpy ready(&app, &AppController::demoReady);
     QElapsedTimer timer;
@@ -36,8 +38,20 @@ class TestDemoMode : public QObject {
     QVERIFY(app.records().signedIn());
     QCOMPARE(app.records().user().name, QString::fromLatin1(DemoAccounts::kTherapist));
     QCOMPARE(app.records().user().role, armtrack::storage::Role::Therapist);
+    // The live session with the virtual arm: estimates flow within seconds.
+    auto* live =
+        qobject_cast<armtrack::app::gui::LiveSessionScreen*>(app.window()->currentScreen());
+    QVERIFY(live);
+    QTRY_VERIFY2_WITH_TIMEOUT(live->sessionTime() >= 2.0, qPrintable(live->bannerText()), 20000);
+    qInfo("live estimates at %.1f s of session time, %.2f s after start", live->sessionTime(),
+          timer.elapsed() / 1000.0);
+    QVERIFY(live->estimatesDrained() > 100);
+    QVERIFY(live->bannerText().isEmpty());
+    test::saveScreenshot(app.window(), QStringLiteral("demo-live"));
+    live->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(qobject_cast<PatientScreen*>(app.window()->currentScreen()), 20000);
+    // Nothing was recorded: still six sessions.
     auto* page = qobject_cast<PatientScreen*>(app.window()->currentScreen());
-    QVERIFY(page);
     QTRY_COMPARE(page->overview().sessions.size(), std::size_t{6});
   }
 
