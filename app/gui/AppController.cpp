@@ -17,6 +17,7 @@
 #include "app/gui/PatientListScreen.h"
 #include "app/gui/PatientScreen.h"
 #include "app/gui/RecordsRecordingTarget.h"
+#include "app/gui/ReviewScreen.h"
 #include "app/gui/SignInScreen.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
@@ -365,7 +366,10 @@ void AppController::analyseThenReview(qint64 sessionId, const QString& code) {
 }
 
 void AppController::showReview(qint64 sessionId) {
-  m_window->showStatus(tr("The review of session %1 arrives in a later step.").arg(sessionId));
+  if (!m_records->signedIn()) return;
+  auto* screen = new ReviewScreen(*m_records, m_settings, sessionId);
+  connect(screen, &ReviewScreen::backRequested, this, &AppController::showPatient);
+  m_window->showScreen(screen);
 }
 
 void AppController::showHomeModeLater() {
