@@ -18,6 +18,7 @@
 #include "app/gui/PatientScreen.h"
 #include "app/gui/RecordsRecordingTarget.h"
 #include "app/gui/ReviewScreen.h"
+#include "app/gui/SettingsDialog.h"
 #include "app/gui/SignInScreen.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
@@ -37,6 +38,7 @@ AppController::AppController(AppOptions options, QObject* parent)
       m_window(std::make_unique<MainWindow>()) {
   connect(m_window.get(), &MainWindow::signOutRequested, this, &AppController::signOut);
   connect(m_window.get(), &MainWindow::patientsRequested, this, &AppController::showPatients);
+  connect(m_window.get(), &MainWindow::settingsRequested, this, &AppController::showSettings);
   connect(m_records.get(), &RecordsService::problem, this,
           [this](const QString& text) { m_window->showStatus(text, 0); });
 }
@@ -141,6 +143,33 @@ void AppController::startDemo() {
       [this](const RecordsFailure& f) { showDatabaseProblem(f); });
   connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
   wait->addAction(tr("&Cancel"), [job] { job->cancel(); });
+}
+
+void AppController::showSettings() {
+  const Theme theme = parseTheme(QSettings().value(QStringLiteral("display/theme")).toString());
+  auto* dialog = new SettingsDialog(m_settings, theme, m_window.get());
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this,
+          [this, dialog] { applySettings(dialog->settings(), dialog->theme()); });
+  dialog->open();
+}
+
+void AppController::applySettings(const AppSettings& s, Theme theme) {
+  const AppSettings before = m_settings;
+  m_settings = s;
+  saveSettings();
+  QSettings().setValue(QStringLiteral("display/theme"), themeName(theme));
+  applyTheme(theme);
+  if (s.language != before.language)
+    installTranslators(m_options.language.isEmpty() ? s.language : m_options.language);
+  if (s.pluginFolders != before.pluginFolders) m_plugins.load(s.pluginFolders);
+  QString note = tr("Settings saved.");
+  if (s.effectiveDatabase().display() != before.effectiveDatabase().display())
+    note += u' ' + tr("The new records location is used at the next sign-in.");
+  if (s.language != before.language)
+    note += u' ' + tr("Screens opened from now on use the new language.");
+  m_window->showStatus(note);
+  emit settingsApplied();
 }
 
 void AppController::loadPlugins() {

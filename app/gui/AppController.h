@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "app/gui/AppOptions.h"
+#include "app/gui/Appearance.h"
 #include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
@@ -42,6 +43,9 @@ class AppController : public QObject {
   void showPatient(const QString& code);
   void startNewSession(const QString& code);
   void showReview(qint64 sessionId);
+  void showSettings();
+  /// Saves s (and the theme) and applies what can change at once.
+  void applySettings(const AppSettings& s, Theme theme);
   /// `--demo`: fresh demo records, signed in as the demo therapist, then the live session.
   void startDemo();
   /// The live session of plan with these devices ("plugin:options"), recording into the records;
@@ -59,6 +63,7 @@ class AppController : public QObject {
   void signedIn(const QString& name);
   /// The demo records are made, the demo therapist signed in and the live session shown.
   void demoReady();
+  void settingsApplied();
   /// A live session screen was shown (and started).
   void liveSessionShown(QWidget* screen);
 

@@ -76,6 +76,7 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
       m_edit(new QPushButton(tr("&Edit patient..."), this)),
       m_back(new QPushButton(tr("&Back to patients"), this)) {
   setWindowTitle(tr("Patient %1").arg(code));
+  m_chart->setRadians(settings.units == AppSettings::AngleUnit::Radians);
   auto* layout = new QVBoxLayout(this);
   auto* top = new QHBoxLayout;
   top->addWidget(m_title, 1);

@@ -68,6 +68,11 @@ void ProgressChart::setSessions(std::vector<reports::ProgressSession> sessions) 
   redraw();
 }
 
+void ProgressChart::setRadians(bool radians) {
+  m_radians = radians;
+  redraw();
+}
+
 void ProgressChart::setAngle(int index) {
   m_angle->setCurrentIndex(std::clamp(index, 0, kNumClinicalAngles - 1));
 }
@@ -87,7 +92,10 @@ QChart* ProgressChart::chart() const {
 void ProgressChart::redraw() {
   const int a = std::max(0, angle());
   const NormativeRange& normal = aaosNormativeRanges()[static_cast<std::size_t>(a)];
-  const double normalDeg = normativeSpanRad(normal) * kRadToDeg;
+  // Drawn in the unit of the settings: "deg" values are radians * scale.
+  const double scale = m_radians ? 1.0 : kRadToDeg;
+  const QString unit = m_radians ? tr("rad") : tr("deg");
+  const double normalDeg = normativeSpanRad(normal) * scale;
 
   auto* chart = new QChart;
   chart->setTitle(angleName(a));
@@ -97,7 +105,7 @@ void ProgressChart::redraw() {
                                                                       : QChart::ChartThemeLight);
 
   m_table->clear();
-  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Range (deg)"), tr("Of normal")});
+  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Range (%1)").arg(unit), tr("Of normal")});
   auto* line = new QLineSeries;
   line->setName(tr("Range of motion"));
   auto* dots = new QScatterSeries;
@@ -111,7 +119,7 @@ void ProgressChart::redraw() {
     if (!rom) continue;
     const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
     if (!when.isValid()) continue;
-    const double deg = *rom * kRadToDeg;
+    const double deg = *rom * scale;
     line->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
     dots->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
     if (!first.isValid()) first = when;
@@ -120,7 +128,7 @@ void ProgressChart::redraw() {
     ++m_points;
     m_table->appendRow(
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
-         new QStandardItem(QString::number(deg, 'f', 1)),
+         new QStandardItem(QString::number(deg, 'f', m_radians ? 3 : 1)),
          new QStandardItem(QStringLiteral("%1 %").arg(100.0 * fractionOfNormativeSpan(normal, *rom),
                                                       0, 'f', 0))});
   }
@@ -138,7 +146,8 @@ void ProgressChart::redraw() {
     normalBottom->append(static_cast<qreal>(t.toMSecsSinceEpoch()), 0);
   }
   auto* normalArea = new QAreaSeries(normalTop, normalBottom);
-  normalArea->setName(tr("Normal (AAOS) %1 deg").arg(normalDeg, 0, 'f', 0));
+  normalArea->setName(
+      tr("Normal (AAOS) %1 %2").arg(normalDeg, 0, 'f', m_radians ? 2 : 0).arg(unit));
   QColor shade = palette().color(QPalette::Highlight);
   shade.setAlpha(45);
   normalArea->setBrush(shade);
@@ -156,13 +165,14 @@ void ProgressChart::redraw() {
   x->setRange(from, to);
   x->setTickCount(std::clamp(m_points + 1, 3, 6));
   auto* y = new QValueAxis;
-  y->setTitleText(tr("ROM (deg)"));
-  const double step = highest > 200 ? 45 : 30;
+  y->setTitleText(tr("ROM (%1)").arg(unit));
+  const double highestDeg = highest / scale * kRadToDeg;
+  const double step = (highestDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
   y->setRange(0, std::ceil(highest * 1.05 / step) * step);
   y->setTickType(QValueAxis::TicksDynamic);
   y->setTickAnchor(0);
   y->setTickInterval(step);
-  y->setLabelFormat(QStringLiteral("%.0f"));
+  y->setLabelFormat(m_radians ? QStringLiteral("%.2f") : QStringLiteral("%.0f"));
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
   for (QAbstractSeries* s : chart->series()) {

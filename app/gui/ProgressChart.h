@@ -23,13 +23,15 @@ class ProgressChart : public QWidget {
 
   /// The analysed sessions, any order.
   void setSessions(std::vector<reports::ProgressSession> sessions);
+  /// Shows angles in radians instead of degrees (the settings' unit).
+  void setRadians(bool radians);
   /// Which clinical angle (clinicalAngleInfo() order) is drawn.
   void setAngle(int index);
   int angle() const;
   /// Points drawn (sessions with a value for the angle).
   int points() const;
   QChart* chart() const;
-  /// The numbers drawn: date, range of motion (deg), percent of the normal range.
+  /// The numbers drawn: date, range of motion (deg or rad), percent of the normal range.
   const QStandardItemModel* table() const { return m_table; }
 
  private:
@@ -41,6 +43,7 @@ class ProgressChart : public QWidget {
   QStandardItemModel* m_table;
   QTableView* m_tableView;
   int m_points = 0;
+  bool m_radians = false;
 };
 
 }  // namespace armtrack::gui

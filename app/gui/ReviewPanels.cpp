@@ -29,6 +29,12 @@ void RepetitionTableModel::setRows(std::vector<RepetitionRow> rows) {
   endResetModel();
 }
 
+void RepetitionTableModel::setRadians(bool radians) {
+  beginResetModel();
+  m_radians = radians;
+  endResetModel();
+}
+
 int RepetitionTableModel::rowCount(const QModelIndex& parent) const {
   return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
 }
@@ -44,6 +50,11 @@ QVariant RepetitionTableModel::data(const QModelIndex& index, int role) const {
   if (role == Qt::TextAlignmentRole)
     return index.column() == Kind ? QVariant() : QVariant(Qt::AlignRight | Qt::AlignVCenter);
   if (role != Qt::DisplayRole && role != Qt::AccessibleTextRole) return {};
+  const double k = m_radians ? 3.14159265358979323846 / 180 : 1.0;
+  const int d = m_radians ? 3 : 1;
+  const auto angle = [&](const std::optional<double>& deg, int decimals) {
+    return deg ? QString::number(*deg * k, 'f', decimals) : QStringLiteral("-");
+  };
   switch (index.column()) {
     case Number:
       return index.row() + 1;
@@ -52,11 +63,11 @@ QVariant RepetitionTableModel::data(const QModelIndex& index, int role) const {
     case End:
       return QString::number(r.endS, 'f', 1);
     case Excursion:
-      return QString::number(r.excursionDeg, 'f', 1);
+      return angle(r.excursionDeg, d);
     case Rom:
-      return number(r.romDeg, 1);
+      return angle(r.romDeg, d);
     case PeakVelocity:
-      return number(r.peakVelocityDegS, 0);
+      return angle(r.peakVelocityDegS, m_radians ? 2 : 0);
     case Sparc:
       return number(r.sparc, 2);
     case Kind:
@@ -76,11 +87,11 @@ QVariant RepetitionTableModel::headerData(int section, Qt::Orientation o, int ro
     case End:
       return tr("End (s)");
     case Excursion:
-      return tr("Excursion (deg)");
+      return m_radians ? tr("Excursion (rad)") : tr("Excursion (deg)");
     case Rom:
-      return tr("Range (deg)");
+      return m_radians ? tr("Range (rad)") : tr("Range (deg)");
     case PeakVelocity:
-      return tr("Peak velocity (deg/s)");
+      return m_radians ? tr("Peak velocity (rad/s)") : tr("Peak velocity (deg/s)");
     case Sparc:
       return tr("SPARC");
     case Kind:

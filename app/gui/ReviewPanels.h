@@ -28,6 +28,8 @@ class RepetitionTableModel : public QAbstractTableModel {
 
   using QAbstractTableModel::QAbstractTableModel;
   void setRows(std::vector<RepetitionRow> rows);
+  /// Angles and velocities in radians instead of degrees (the settings' unit).
+  void setRadians(bool radians);
   int rowCount(const QModelIndex& parent = {}) const override;
   int columnCount(const QModelIndex& parent = {}) const override;
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
@@ -36,6 +38,7 @@ class RepetitionTableModel : public QAbstractTableModel {
 
  private:
   std::vector<RepetitionRow> m_rows;
+  bool m_radians = false;
 };
 
 /// How to estimate a stored session again.

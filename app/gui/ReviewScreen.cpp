@@ -124,6 +124,7 @@ void ReviewScreen::buildLayout() {
   m_repSummary->setWordWrap(true);
   repsLayout->addWidget(m_repSummary);
   m_reps = new RepetitionTableModel(this);
+  m_reps->setRadians(m_settings.units == AppSettings::AngleUnit::Radians);
   m_repTable = new QTableView(repsTab);
   m_repTable->setModel(m_reps);
   m_repTable->setAccessibleName(tr("Repetitions"));
