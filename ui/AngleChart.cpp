@@ -14,7 +14,7 @@ namespace armtrack::ui {
 namespace {
 constexpr std::size_t kMaxMarkers = 16;
 constexpr double kMinSpanDeg = 20.0;
-constexpr double kAxisLimitDeg = 400.0;
+constexpr double kAxisLimitDeg = 360.0;  // a multiple of every tick step
 
 /// The smallest of the usual steps that splits span into at most maxTicks intervals.
 double niceStep(double span, int maxTicks, std::initializer_list<double> steps) {
@@ -75,12 +75,13 @@ AngleChart::AngleChart(int angle, QWidget* parent)
   m_y = new QValueAxis;
   m_x->setLabelFormat(QStringLiteral("%.0f s"));
   m_y->setLabelFormat(QStringLiteral("%.0f"));
-  for (QValueAxis* a : {m_x, m_y}) {
-    a->setTickType(QValueAxis::TicksDynamic);
-    a->setTickAnchor(0.0);
-  }
+  // Qt Charts elides labels ("...") it sized while the chart was tiny and keeps them so.
+  m_x->setTruncateLabels(false);
+  m_y->setTruncateLabels(false);
+  m_x->setTickType(QValueAxis::TicksDynamic);
+  m_x->setTickAnchor(0.0);
   m_x->setTickInterval(5.0);
-  m_y->setTickInterval(30.0);
+  m_y->setTickCount(6);
   m_chart->addAxis(m_x, Qt::AlignBottom);
   m_chart->addAxis(m_y, Qt::AlignLeft);
 
@@ -165,16 +166,21 @@ void AngleChart::fitY(double lo, double hi) {
     lo = mid - kMinSpanDeg / 2;
     hi = mid + kMinSpanDeg / 2;
   }
-  // Round out to tens; grow at once, shrink only when the data use under 60 % of the axis, so
-  // the axis does not twitch with every frame.
-  const double wantLo = std::floor(lo / 10.0) * 10.0, wantHi = std::ceil(hi / 10.0) * 10.0;
+  // Round out to a step of 5-180 deg; grow at once, shrink only when the data use under 60 % of
+  // the axis, so the axis does not twitch with every frame. Fixed ticks on the step (Qt Charts'
+  // dynamic ticks elide labels after a range change).
+  const double step = niceStep(hi - lo, 4, {5, 10, 15, 20, 30, 45, 60, 90, 180});
+  const double wantLo = std::floor(lo / step) * step, wantHi = std::ceil(hi / step) * step;
   const bool grow = wantLo < m_yMin || wantHi > m_yMax;
   const bool shrink = (wantHi - wantLo) < 0.6 * (m_yMax - m_yMin);
   if (grow || shrink) {
-    m_yMin = grow && !shrink ? std::min(wantLo, m_yMin) : wantLo;
-    m_yMax = grow && !shrink ? std::max(wantHi, m_yMax) : wantHi;
+    double newLo = grow && !shrink ? std::min(wantLo, m_yMin) : wantLo;
+    double newHi = grow && !shrink ? std::max(wantHi, m_yMax) : wantHi;
+    const double newStep = niceStep(newHi - newLo, 4, {5, 10, 15, 20, 30, 45, 60, 90, 180});
+    m_yMin = std::floor(newLo / newStep) * newStep;
+    m_yMax = std::ceil(newHi / newStep) * newStep;
     m_y->setRange(m_yMin, m_yMax);
-    m_y->setTickInterval(niceStep(m_yMax - m_yMin, 4, {5, 10, 15, 20, 30, 45, 60, 90, 180}));
+    m_y->setTickCount(static_cast<int>(std::lround((m_yMax - m_yMin) / newStep)) + 1);
   }
 }
 

@@ -65,7 +65,7 @@ class AngleChart : public QChartView {
   QAreaSeries* m_target;
   QLineSeries* m_cursor;
   std::vector<QLineSeries*> m_markers;
-  double m_yMin = -10.0, m_yMax = 90.0;
+  double m_yMin = -30.0, m_yMax = 120.0;  // a multiple of the initial 30 deg step
   bool m_dark = false;
   int m_pointsDrawn = 0;
   int m_columns = 0;

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QHeaderView>
+#include <QScrollBar>
 #include <QSplitter>
 #include <QTableView>
 #include <QVBoxLayout>
@@ -202,8 +203,26 @@ void AnglePlotPanel::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
 }
 
+void AnglePlotPanel::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  sizeTable();
+}
+
+void AnglePlotPanel::sizeTable() {
+  if (m_sized || !isVisible() || width() < 300) return;
+  // The table as wide as its columns (at most 40 % of the panel), the plots the rest.
+  m_sized = true;
+  m_tableView->resizeColumnsToContents();
+  const int table = std::min(m_tableView->horizontalHeader()->length() +
+                                 m_tableView->verticalScrollBar()->sizeHint().width() +
+                                 2 * m_tableView->frameWidth(),
+                             width() * 2 / 5);
+  m_splitter->setSizes({width() - table, table});
+}
+
 void AnglePlotPanel::resizeEvent(QResizeEvent* event) {
   QWidget::resizeEvent(event);
+  sizeTable();
   markDirty();  // the number of pixel columns changed
 }
 

@@ -84,9 +84,12 @@ class AnglePlotPanel : public QWidget {
  protected:
   void changeEvent(QEvent* event) override;
   void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
 
  private:
   void markDirty() { m_dirty = true; }
+  /// Once, when first shown wide enough: the table as wide as its columns.
+  void sizeTable();
 
   Mode m_mode = Mode::Live;
   double m_window = 20.0;
@@ -102,6 +105,7 @@ class AnglePlotPanel : public QWidget {
   bool m_dirty = true;
   double m_t0 = 0.0, m_t1 = 20.0;
   std::uint64_t m_redraws = 0;
+  bool m_sized = false;
 };
 
 }  // namespace armtrack::ui

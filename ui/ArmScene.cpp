@@ -374,9 +374,10 @@ void ArmScene::setDark(bool dark) {
 void ArmScene::resetCamera() {
   const Vec3 f = m->forward(), med = m->medial();
   CameraView v;
-  // In front of the patient and a little to the arm's side, looking at the upper arm.
-  v.focalPoint = -m->up * 0.26 + med * 0.04;
-  v.position = v.focalPoint + f * 1.35 - med * 0.6 + m->up * 0.4;
+  // In front of the patient and a little to the arm's side, looking at the space the arm
+  // reaches (about 0.45 m round the shoulder), the trunk at the side.
+  v.focalPoint = -m->up * 0.1 - med * 0.08 + f * 0.1;
+  v.position = v.focalPoint + f * 1.3 - med * 0.65 + m->up * 0.4;
   v.viewUp = m->up;
   v.viewAngleDeg = 30.0;
   setCamera(v);

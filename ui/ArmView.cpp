@@ -21,7 +21,7 @@ bool isDark(const QPalette& p) {
 }
 }  // namespace
 
-ArmView::ArmView(QWidget* parent) : VtkOpenGlWidget(parent), m_scene(new ArmScene) {
+ArmView::ArmView(QWidget* parent, Host host) : VtkView(parent, host), m_scene(new ArmScene) {
   setAccessibleName(tr("3D view of the arm"));
   setAccessibleDescription(
       tr("The estimated arm with its sensors. Arrow keys turn the view, plus and minus zoom, "
@@ -42,7 +42,7 @@ ArmView::ArmView(QWidget* parent) : VtkOpenGlWidget(parent), m_scene(new ArmScen
   applyPalette();
   m_refresh.setTimerType(Qt::PreciseTimer);
   connect(&m_refresh, &QTimer::timeout, this, [this] {
-    if (m_dirty && isVisible()) update();
+    if (m_dirty && isVisible()) scheduleFrame();
   });
   setRefreshRate(m_refreshHz);
 }
@@ -111,7 +111,7 @@ void ArmView::resetView() {
 }
 
 void ArmView::markDirty() {
-  m_dirty = true;  // drawn at the next refresh tick (or when the owner calls update())
+  m_dirty = true;  // drawn at the next refresh tick (or when the owner asks for a frame)
 }
 
 void ArmView::prepareRender() {
@@ -154,17 +154,17 @@ void ArmView::keyPressEvent(QKeyEvent* event) {
       m_scene->resetCamera();
       break;
     default:
-      VtkOpenGlWidget::keyPressEvent(event);
+      VtkView::keyPressEvent(event);
       return;
   }
   markDirty();
-  update();
+  scheduleFrame();
   event->accept();
 }
 
 void ArmView::changeEvent(QEvent* event) {
   if (event->type() == QEvent::PaletteChange) applyPalette();
-  VtkOpenGlWidget::changeEvent(event);
+  VtkView::changeEvent(event);
 }
 
 void ArmView::contextMenuEvent(QContextMenuEvent* event) {

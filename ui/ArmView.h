@@ -1,7 +1,7 @@
 // The 3D arm view: the arm model drawn from the newest estimate, with the IMUs on their straps,
 // the optical measurements beside it, an optional translucent target arm (demonstrations,
 // review overlays), the trunk on the patient's side and a floor grid. Hosted in a Qt 6
-// QOpenGLWidget (ui/VtkOpenGlWidget.h). docs/gui.md describes it.
+// QOpenGLWindow or QOpenGLWidget (ui/VtkView.h). docs/gui.md describes it.
 #pragma once
 
 #include <Eigen/Core>
@@ -12,7 +12,7 @@
 #include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
-#include "ui/VtkOpenGlWidget.h"
+#include "ui/VtkView.h"
 
 class QAction;
 
@@ -39,10 +39,10 @@ struct OpticalMarks {
 /// frame each. The camera orbits with the left mouse button, pans with the middle one (or
 /// Shift + left), zooms with the wheel or the right button; keys: arrows orbit, + and - zoom,
 /// Home or R resets the view. GUI thread only.
-class ArmView : public VtkOpenGlWidget {
+class ArmView : public VtkView {
   Q_OBJECT
  public:
-  explicit ArmView(QWidget* parent = nullptr);
+  explicit ArmView(QWidget* parent = nullptr, Host host = defaultHost());
   ~ArmView() override;
 
   /// The arm's segment lengths and sensor mounting, its side, the up direction (unit, shoulder
@@ -59,13 +59,14 @@ class ArmView : public VtkOpenGlWidget {
   const JointVector& pose() const { return m_pose; }
   std::uint64_t rejectedPoses() const { return m_rejected; }
 
-  /// Frames per second at most (default 60); 0 draws only when update() or updateIfChanged()
+  /// Frames per second at most (default 60); 0 draws only when scheduleFrame() or
+  /// updateIfChanged()
   /// is called.
   void setRefreshRate(double hz);
   /// Schedules a frame if something changed since the last one (for an owner that drives the
   /// frames from its own timer, so that every view repaints in one pass).
   void updateIfChanged() {
-    if (m_dirty) update();
+    if (m_dirty) scheduleFrame();
   }
   double refreshRate() const { return m_refreshHz; }
 

@@ -113,8 +113,9 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
 }
 
 bool HealthTracker::allOk() const {
-  return !m_rows.empty() && std::all_of(m_rows.begin(), m_rows.end(),
-                     [](const StreamHealthRow& r) { return r.level == HealthLevel::Ok; });
+  return !m_rows.empty() && std::all_of(m_rows.begin(), m_rows.end(), [](const StreamHealthRow& r) {
+    return r.level == HealthLevel::Ok;
+  });
 }
 
 QString HealthTracker::summary() const {

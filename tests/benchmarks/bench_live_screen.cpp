@@ -62,8 +62,8 @@ int main(int argc, char** argv) {
                  QStringLiteral("s"), QStringLiteral("10")});
   cli.addOption({QStringLiteral("size"), QStringLiteral("Window size."), QStringLiteral("WxH"),
                  QStringLiteral("1280x800")});
-  cli.addOption({QStringLiteral("plugins"), QStringLiteral("Plugin folder."),
-                 QStringLiteral("dir"), QStringLiteral(ARMTRACK_PLUGIN_DIR)});
+  cli.addOption({QStringLiteral("plugins"), QStringLiteral("Plugin folder."), QStringLiteral("dir"),
+                 QStringLiteral(ARMTRACK_PLUGIN_DIR)});
   cli.addOption({QStringLiteral("hide"),
                  QStringLiteral("Hide a part to see what it costs: 3d, plots, table."),
                  QStringLiteral("part")});
@@ -108,9 +108,8 @@ int main(int argc, char** argv) {
     std::uint64_t frames, redraws, paints, drains, estimates;
   };
   auto mark = [&] {
-    return Mark{clock.nsecsElapsed() * 1e-9,        cpuSeconds(),
-                screen.armView()->framesRendered(), screen.plots()->redraws(),
-                plotPaints.paints,                  screen.drains(),
+    return Mark{clock.nsecsElapsed() * 1e-9, cpuSeconds(),      screen.armView()->framesRendered(),
+                screen.plots()->redraws(),   plotPaints.paints, screen.drains(),
                 screen.estimatesDrained()};
   };
   Mark start{}, prev{};
@@ -128,9 +127,10 @@ int main(int argc, char** argv) {
       lastTick = 0;
       maxStallMs = 0;
       watchdog.start(2);
-      std::printf("Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
-                  "webcam), EKF, drained at %.0f Hz\n",
-                  screen.width(), screen.height(), screen.drainRate());
+      std::printf(
+          "Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
+          "webcam), EKF, drained at %.0f Hz\n",
+          screen.width(), screen.height(), screen.drainRate());
       std::printf("%8s %9s %11s %12s %10s %13s %9s %10s\n", "time s", "3D fps", "plot fps",
                   "plot paint/s", "drains/s", "max stall ms", "CPU %", "RSS MB");
       std::fflush(stdout);
@@ -152,11 +152,12 @@ int main(int argc, char** argv) {
     prev = m;
     if (m.t - start.t >= seconds - 1e-3) {
       const double total = m.t - start.t;
-      std::printf("whole run: 3D %.1f fps, plots %.1f fps, longest GUI stall %.1f ms, CPU %.0f %% "
-                  "of one core, %llu estimates drained\n",
-                  (m.frames - start.frames) / total, (m.redraws - start.redraws) / total,
-                  maxStallAllMs, 100.0 * (m.cpu - start.cpu) / total,
-                  static_cast<unsigned long long>(m.estimates - start.estimates));
+      std::printf(
+          "whole run: 3D %.1f fps, plots %.1f fps, longest GUI stall %.1f ms, CPU %.0f %% "
+          "of one core, %llu estimates drained\n",
+          (m.frames - start.frames) / total, (m.redraws - start.redraws) / total, maxStallAllMs,
+          100.0 * (m.cpu - start.cpu) / total,
+          static_cast<unsigned long long>(m.estimates - start.estimates));
       std::fflush(stdout);
       screen.stop();
     }

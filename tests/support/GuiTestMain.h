@@ -33,9 +33,11 @@ inline QImage grabFromScreen(QWidget* w) {
   return shot.toImage().convertToFormat(QImage::Format_RGB32);
 }
 
-/// Saves the image as <screenshotDir()>/<name>.png; returns the path.
+/// Saves the image as <screenshotDir()>/<name><$ARMTRACK_SCREENSHOT_SUFFIX>.png; returns the
+/// path.
 inline QString saveScreenshot(const QImage& image, const QString& name) {
-  const QString path = screenshotDir() + QLatin1Char('/') + name + QStringLiteral(".png");
+  const QString path = screenshotDir() + QLatin1Char('/') + name +
+                       qEnvironmentVariable("ARMTRACK_SCREENSHOT_SUFFIX") + QStringLiteral(".png");
   image.save(path);
   return path;
 }

@@ -68,7 +68,7 @@ class TestArmView : public QObject {
   QImage freshShot() {
     for (int i = 0; i < 2; ++i) {
       const std::uint64_t start = m_view->framesRendered();
-      m_view->update();
+      m_view->scheduleFrame();
       if (!QTest::qWaitFor([&] { return m_view->framesRendered() > start; }, 5000)) return {};
     }
     QCoreApplication::processEvents();
@@ -207,7 +207,7 @@ class TestArmView : public QObject {
       m_window->resize(s);
       QCoreApplication::processEvents();
       const std::uint64_t n = m_view->framesRendered();
-      m_view->update();
+      m_view->scheduleFrame();
       QTRY_VERIFY(m_view->framesRendered() > n);
     }
     m_window->resize(640, 480);

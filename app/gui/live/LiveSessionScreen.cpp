@@ -34,8 +34,9 @@ RepetitionParams counterParams(const LiveSessionConfig& c) {
 
 QString clock(double seconds) {
   const int s = static_cast<int>(std::max(0.0, seconds));
-  return QStringLiteral("%1:%2").arg(s / 60, 2, 10, QLatin1Char('0')).arg(s % 60, 2, 10,
-                                                                          QLatin1Char('0'));
+  return QStringLiteral("%1:%2")
+      .arg(s / 60, 2, 10, QLatin1Char('0'))
+      .arg(s % 60, 2, 10, QLatin1Char('0'));
 }
 }  // namespace
 
@@ -112,7 +113,8 @@ void LiveSessionScreen::buildLayout() {
   m_mark = new QPushButton(tr("&Mark event"), this);
   m_mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
   m_mark->setToolTip(tr("Mark the chosen event at the current time (Ctrl+M)"));
-  for (QPushButton* b : {m_record, m_pause, m_stop, m_mark}) b->setAccessibleName(b->text().remove(u'&'));
+  for (QPushButton* b : {m_record, m_pause, m_stop, m_mark})
+    b->setAccessibleName(b->text().remove(u'&'));
   header->addWidget(m_title, 1);
   header->addWidget(m_status);
   header->addSpacing(12);
@@ -147,8 +149,7 @@ void LiveSessionScreen::buildLayout() {
   leftLayout->setContentsMargins(0, 0, 0, 0);
   m_arm = new ui::ArmView(left);
   m_arm->setMinimumSize(160, 120);
-  m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up,
-                m_config.meta.camera);
+  m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
   m_readouts = new ui::AngleReadouts(left);
   m_readouts->setColumns(3);
   leftLayout->addWidget(m_arm, 3);
@@ -286,9 +287,9 @@ void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
     // Rows the gate dropped while paused were never meant for the recording.
     const bool complete =
         recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
-    summary = m_target->finish(recordedRows, complete,
-                               events.isEmpty() ? QString()
-                                                : tr("Events: %1").arg(events.join(u"; ")));
+    summary =
+        m_target->finish(recordedRows, complete,
+                         events.isEmpty() ? QString() : tr("Events: %1").arg(events.join(u"; ")));
     if (!recorderError.isEmpty())
       summary += QStringLiteral(" ") + tr("Last recording problem: %1").arg(recorderError);
   } else {
@@ -387,13 +388,13 @@ void LiveSessionScreen::setState(State s) {
 }
 
 void LiveSessionScreen::updateButtons() {
-  const bool running = m_state == State::Live || m_state == State::Recording ||
-                       m_state == State::Paused;
+  const bool running =
+      m_state == State::Live || m_state == State::Recording || m_state == State::Paused;
   const bool canRecord = m_gate && (m_state == State::Live || m_state == State::Paused);
   m_record->setEnabled(canRecord);
-  m_record->setToolTip(m_gate ? tr("Start or resume recording to %1 (Ctrl+R)")
-                                    .arg(m_target->describe())
-                              : tr("This session is not recorded"));
+  m_record->setToolTip(
+      m_gate ? tr("Start or resume recording to %1 (Ctrl+R)").arg(m_target->describe())
+             : tr("This session is not recorded"));
   m_pause->setEnabled(m_gate && m_state == State::Recording);
   m_stop->setEnabled(running || m_state == State::Starting);
   m_mark->setEnabled(running);
@@ -412,8 +413,8 @@ void LiveSessionScreen::updateStatus() {
       text = tr("Live %1 (not recording)").arg(clock(m_sessionTime));
       break;
     case State::Recording:
-      text = tr("\u25cf Recording %1").arg(clock(m_recordedSeconds + m_sessionTime -
-                                                  m_recordingSince));
+      text = tr("\u25cf Recording %1")
+                 .arg(clock(m_recordedSeconds + m_sessionTime - m_recordingSince));
       break;
     case State::Paused:
       text = tr("Paused (%1 recorded)").arg(clock(m_recordedSeconds));

@@ -26,9 +26,9 @@ std::unique_ptr<RecordingSink> CsvRecordingTarget::open(const RecordingMeta& met
                                                         const RecordingColumns& columns) {
   std::error_code ec;
   if (std::filesystem::exists(m_csv, ec) || std::filesystem::exists(sidecarPath(m_csv), ec))
-    throw RecordingError(m_csv.string(), 0, 0,
-                         tr("a recording with this name exists; choose another name")
-                             .toStdString());
+    throw RecordingError(
+        m_csv.string(), 0, 0,
+        tr("a recording with this name exists; choose another name").toStdString());
   return std::make_unique<RecordingWriter>(m_csv, meta, columns);
 }
 
@@ -44,14 +44,14 @@ DatabaseRecordingTarget::DatabaseRecordingTarget(storage::ClinicalStore& store,
                                                  QString protocolName)
     : m_store(store),
       m_url(std::move(url)),
-      m_patient(std::move(patientCode)), m_protocol(std::move(protocolName)) {}
+      m_patient(std::move(patientCode)),
+      m_protocol(std::move(protocolName)) {}
 
 QString DatabaseRecordingTarget::describe() const {
   return tr("the records of patient %1").arg(m_patient);
 }
 
-QString DatabaseRecordingTarget::begin(const RecordingMeta& meta,
-                                       const RecordingColumns& columns) {
+QString DatabaseRecordingTarget::begin(const RecordingMeta& meta, const RecordingColumns& columns) {
   if (m_sessionId != 0) return {};
   try {
     m_sessionId = m_store.beginRecording(m_patient, m_protocol, meta, columns);
@@ -63,18 +63,16 @@ QString DatabaseRecordingTarget::begin(const RecordingMeta& meta,
 
 std::unique_ptr<RecordingSink> DatabaseRecordingTarget::open(const RecordingMeta&,
                                                              const RecordingColumns& columns) {
-  if (m_sessionId == 0)
-    throw RecordingError("", 0, 0, "the session was not begun in the records");
-  return std::make_unique<storage::DatabaseRecordingSink>(m_url, m_sessionId,
-                                                          columns);
+  if (m_sessionId == 0) throw RecordingError("", 0, 0, "the session was not begun in the records");
+  return std::make_unique<storage::DatabaseRecordingSink>(m_url, m_sessionId, columns);
 }
 
 QString DatabaseRecordingTarget::finish(std::uint64_t rows, bool complete, const QString& events) {
   if (m_sessionId == 0) return {};
   try {
     if (!events.isEmpty()) m_store.updateSessionNotes(m_sessionId, events);
-    m_store.finishSession(m_sessionId, complete ? storage::kStatusComplete
-                                                : storage::kStatusInterrupted);
+    m_store.finishSession(m_sessionId,
+                          complete ? storage::kStatusComplete : storage::kStatusInterrupted);
   } catch (const storage::StorageError& e) {
     return tr("session %1: %2 rows recorded, but it could not be closed: %3")
         .arg(m_sessionId)

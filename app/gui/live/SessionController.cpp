@@ -3,9 +3,9 @@
 #include <QCoreApplication>
 
 #include "app/plugins/PluginRegistry.h"
+#include "core/storage/DatabaseRecordingSink.h"
 #include "devices/api/DeviceThread.h"
 #include "devices/api/Options.h"
-#include "core/storage/DatabaseRecordingSink.h"
 
 namespace armtrack::app::gui {
 
@@ -63,8 +63,9 @@ void SessionController::startInThread(LiveSessionConfig config,
   params.estimator = config.estimator;
   params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
   if (gate && gate->target()) {
-    params.openSink = [this, gate](const RecordingMeta& meta, const RecordingColumns& columns)
-        -> std::unique_ptr<RecordingSink> {
+    params.openSink = [this, gate](
+                          const RecordingMeta& meta,
+                          const RecordingColumns& columns) -> std::unique_ptr<RecordingSink> {
       {
         std::lock_guard lock(m_layoutMutex);
         m_layout = std::make_pair(meta, columns);
@@ -84,8 +85,8 @@ void SessionController::startInThread(LiveSessionConfig config,
                      "settings.")
                       .arg(name, m_registry.names().join(QStringLiteral(", "))));
     QString why;
-    std::unique_ptr<devices::Device> device = plugin->create(
-        devices::Options::parse(colon < 0 ? QString() : spec.mid(colon + 1)), &why);
+    std::unique_ptr<devices::Device> device =
+        plugin->create(devices::Options::parse(colon < 0 ? QString() : spec.mid(colon + 1)), &why);
     if (!device) return fail(tr("%1: %2").arg(name, why));
     const QString label = QStringLiteral("%1#%2").arg(name).arg(index);
     s->addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);

@@ -88,8 +88,6 @@ class TestLiveSessionScreen : public QObject {
     QVERIFY(screen.estimatesDrained() > 2000);
     QVERIFY(screen.drains() < screen.estimatesDrained() / 10);
     QVERIFY(screen.plots()->trace().samples().size() > 2000);
-    qInfo() << "drains" << screen.drains() << "plot redraws" << screen.plots()->redraws()
-            << "3D frames" << screen.armView()->framesRendered();
     QVERIFY(screen.plots()->redraws() > 20);
     QVERIFY(screen.readouts()->valueText(3) != QStringLiteral("\u2013"));
     QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 5000);
@@ -109,9 +107,9 @@ class TestLiveSessionScreen : public QObject {
 
   void deviceDropsOutTurnsRedAndRecovers() {
     // The Kinect, a device of its own, goes away from 2 s to 5 s.
-    LiveSessionScreen screen(
-        m_registry, config({QStringLiteral("virtual-arm:sensors=upper+forearm"),
-                            QStringLiteral("virtual-arm:sensors=kinect,disappear=2+3")}));
+    LiveSessionScreen screen(m_registry,
+                             config({QStringLiteral("virtual-arm:sensors=upper+forearm"),
+                                     QStringLiteral("virtual-arm:sensors=kinect,disappear=2+3")}));
     screen.resize(1100, 700);
     screen.show();
     screen.start();
@@ -150,10 +148,10 @@ class TestLiveSessionScreen : public QObject {
     screen.show();
     screen.start();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(!screen.health()->tracker().allOk() &&
-                                 screen.health()->tracker().summary().contains(
-                                     QStringLiteral("kinect")),
-                             6000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !screen.health()->tracker().allOk() &&
+            screen.health()->tracker().summary().contains(QStringLiteral("kinect")),
+        6000);
     QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 8000);
     screen.stop();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
@@ -301,8 +299,8 @@ class TestLiveSessionScreen : public QObject {
     screen.activateWindow();
     screen.start();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
-    for (QPushButton* b : {screen.recordButton(), screen.pauseButton(), screen.stopButton(),
-                           screen.markButton()})
+    for (QPushButton* b :
+         {screen.recordButton(), screen.pauseButton(), screen.stopButton(), screen.markButton()})
       QVERIFY(!b->accessibleName().isEmpty());
     QTest::keyClick(&screen, Qt::Key_R, Qt::ControlModifier);
     QTRY_COMPARE(screen.state(), State::Recording);
