@@ -194,7 +194,7 @@ class TestPatients : public QObject {
                            [&](QLabel* l) { return l->text() == shown && l->isVisible(); }),
                qPrintable(shown));
     }
-    test::saveScreenshot(m_app->window(), QStringLiteral("patient"));
+    test::saveScreenshot(m_app->window(), QStringLiteral("demo-patient"));
   }
 
   void aProgressReportNamesThePatient() {
@@ -251,7 +251,7 @@ class TestPatients : public QObject {
     plan = setup->plan();
     QVERIFY(plan.protocol && plan.protocol->angleKey == QStringLiteral("elbow_flexion"));
     QCOMPARE(plan.side, armtrack::Side::Left);
-    test::saveScreenshot(m_app->window(), QStringLiteral("new-session"));
+    test::saveScreenshot(m_app->window(), QStringLiteral("demo-new-session"));
     // Cancel goes back to the patient, nothing recorded.
     current<NewSessionScreen>()->wizard()->reject();
     QTRY_VERIFY(current<PatientScreen>());
@@ -263,7 +263,7 @@ class TestPatients : public QObject {
     QTest::keySequence(screen(), QKeySequence::Back);
     QTRY_VERIFY(current<PatientListScreen>());
     QTRY_COMPARE(current<PatientListScreen>()->selectedCode(), QStringLiteral("P001"));
-    test::saveScreenshot(m_app->window(), QStringLiteral("patients"));
+    test::saveScreenshot(m_app->window(), QStringLiteral("demo-patients"));
   }
 
   void cleanupTestCase() { m_app.reset(); }

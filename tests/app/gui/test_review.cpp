@@ -94,7 +94,7 @@ class TestReview : public QObject {
     QCOMPARE(r->cursor(), at);
     // The repetitions of the metrics are listed (4 swings of 5 s in 20 s).
     QVERIFY(r->repetitionTable()->model()->rowCount() >= 3);
-    test::saveScreenshot(m_app->window(), QStringLiteral("review"));
+    test::saveScreenshot(m_app->window(), QStringLiteral("demo-review"));
   }
 
   void overlaysAnotherSession() {

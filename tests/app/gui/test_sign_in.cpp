@@ -46,7 +46,6 @@ class TestSignIn : public QObject {
 
     typeInto(folder, dataFolder());
     typeInto(admin, QStringLiteral("boss"));
-    test::saveScreenshot(app.window(), QStringLiteral("first-run"));
     typeInto(password, QStringLiteral("short"));
     typeInto(again, QStringLiteral("short"));
     QTest::keyClick(again, Qt::Key_Return);

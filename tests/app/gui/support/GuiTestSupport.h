@@ -50,7 +50,9 @@ inline void typeInto(QLineEdit* edit, const QString& text) {
 /// Saves what the X server shows of the window (the VTK view included) as <name>.png in the
 /// screenshot folder (tests/support/GuiTestMain.h); returns the path.
 inline QString saveScreenshot(QWidget* window, const QString& name) {
-  QApplication::processEvents();
+  // The 3D view and the plots draw from their own 30-60 Hz timers: give them a frame to show
+  // the newest state. Only the picture depends on it; no test asserts on it.
+  QTest::qWait(120);
   return armtrack::test::saveScreenshot(armtrack::test::grabFromScreen(window->window()), name);
 }
 
