@@ -47,10 +47,7 @@ class TestEndToEnd : public QObject {
   T* current() const {
     return qobject_cast<T*>(screen());
   }
-  void activate(QWidget* w) {
-    w->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(w));
-  }
+  void activate(QWidget* w) { QVERIFY(test::activate(w)); }
   void shot(const char* name) { test::saveScreenshot(m_app->window(), QString::fromLatin1(name)); }
 
  private slots:
@@ -194,10 +191,7 @@ class TestEndToEnd : public QObject {
     r->writeReport(pdf);
     QVERIFY(written.wait(60000));
     QCOMPARE(written.at(0).at(1).toString(), QString());
-    QProcess p;
-    p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
-    QVERIFY(p.waitForFinished(30000));
-    const QString text = QString::fromUtf8(p.readAllStandardOutput());
+    const QString text = test::pdfText(pdf);
     QVERIFY2(text.contains(QStringLiteral("Eva Ende")), qPrintable(text.left(300)));
     QVERIFY(text.contains(QStringLiteral("P100")));
   }

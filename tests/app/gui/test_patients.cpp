@@ -39,10 +39,7 @@ class TestPatients : public QObject {
   QTemporaryDir m_dir;
   std::unique_ptr<AppController> m_app;
 
-  static void activate(QWidget* w) {
-    w->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(w));
-  }
+  static void activate(QWidget* w) { QVERIFY(test::activate(w)); }
   QWidget* screen() const { return m_app->window()->currentScreen(); }
   template <class T>
   T* current() const {
@@ -68,18 +65,8 @@ class TestPatients : public QObject {
 
  private slots:
   void initTestCase() {
-    armtrack::storage::DatabaseUrl url;
-    url.path = m_dir.filePath(QStringLiteral("demo.db"));
-    QVERIFY(buildDemoDatabase(url, {}));
-    AppOptions o;
-    o.database = url.path;
-    m_app = std::make_unique<AppController>(o);
-    m_app->start();
-    m_app->window()->activateWindow();
-    QVERIFY(QTest::qWaitForWindowActive(m_app->window()));
-    QTRY_VERIFY(current<SignInScreen>());
-    emit current<SignInScreen>()->signInRequested(QString::fromLatin1(DemoAccounts::kTherapist),
-                                                  QString::fromLatin1(DemoAccounts::kPassword));
+    m_app = test::demoApp(m_dir);
+    QVERIFY(m_app);
     QTRY_VERIFY(current<PatientListScreen>());
     QTRY_COMPARE(patientTable()->model()->rowCount(), 3);
   }
@@ -205,10 +192,7 @@ class TestPatients : public QObject {
     page->writeProgressReport(pdf);
     QTRY_COMPARE_WITH_TIMEOUT(written.count(), 1, 30000);
     QCOMPARE(written.at(0).at(1).toString(), QString());
-    QProcess p;
-    p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
-    QVERIFY(p.waitForFinished(30000));
-    const QString text = QString::fromUtf8(p.readAllStandardOutput());
+    const QString text = test::pdfText(pdf);
     QVERIFY2(text.contains(QStringLiteral("Ada Example")), qPrintable(text.left(400)));
     // A folder that cannot be written: the page says so and stays usable.
     page->writeProgressReport(QStringLiteral("/proc/no-such-dir/x.pdf"));

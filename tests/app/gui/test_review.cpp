@@ -46,18 +46,8 @@ class TestReview : public QObject {
 
  private slots:
   void initTestCase() {
-    armtrack::storage::DatabaseUrl url;
-    url.path = m_dir.filePath(QStringLiteral("demo.db"));
-    QVERIFY(buildDemoDatabase(url, {}));
-    AppOptions o;
-    o.database = url.path;
-    m_app = std::make_unique<AppController>(o);
-    m_app->start();
-    QTRY_VERIFY(qobject_cast<SignInScreen*>(m_app->window()->currentScreen()));
-    emit qobject_cast<SignInScreen*>(m_app->window()->currentScreen())
-        ->signInRequested(QString::fromLatin1(DemoAccounts::kTherapist),
-                          QString::fromLatin1(DemoAccounts::kPassword));
-    QTRY_VERIFY(m_app->records().signedIn());
+    m_app = test::demoApp(m_dir);
+    QVERIFY(m_app);
     bool read = false;
     m_app->records().call(
         m_app->window(),
@@ -165,10 +155,7 @@ class TestReview : public QObject {
     r->writeReport(pdf);
     QVERIFY(written.wait(60000));
     QCOMPARE(written.at(0).at(1).toString(), QString());
-    QProcess p;
-    p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
-    QVERIFY(p.waitForFinished(30000));
-    QVERIFY(QString::fromUtf8(p.readAllStandardOutput()).contains(QStringLiteral("Ada Example")));
+    QVERIFY(test::pdfText(pdf).contains(QStringLiteral("Ada Example")));
 
     const QString csv = m_dir.filePath(QStringLiteral("angles.csv"));
     const QString mot = m_dir.filePath(QStringLiteral("angles.mot"));

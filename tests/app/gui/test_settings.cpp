@@ -36,18 +36,9 @@ class TestSettings : public QObject {
 
  private slots:
   void savedAppliedAndChecked() {
-    armtrack::storage::DatabaseUrl url;
-    url.path = m_dir.filePath(QStringLiteral("demo.db"));
-    QVERIFY(buildDemoDatabase(url, {}));
-    AppOptions o;
-    o.database = url.path;
-    AppController app(o);
-    app.start();
-    QTRY_VERIFY(qobject_cast<SignInScreen*>(app.window()->currentScreen()));
-    emit qobject_cast<SignInScreen*>(app.window()->currentScreen())
-        ->signInRequested(QString::fromLatin1(DemoAccounts::kTherapist),
-                          QString::fromLatin1(DemoAccounts::kPassword));
-    QTRY_VERIFY(app.records().signedIn());
+    const auto owner = test::demoApp(m_dir);
+    QVERIFY(owner);
+    AppController& app = *owner;
 
     app.showSettings();
     SettingsDialog* d = nullptr;

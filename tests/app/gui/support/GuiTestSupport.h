@@ -11,7 +11,14 @@
 #include <QTest>
 #include <QWidget>
 
+#include <QProcess>
+#include <memory>
+
+#include "app/gui/AppController.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/SignInScreen.h"
 #include "app/gui/services/AppSettings.h"
+#include "app/gui/services/DemoData.h"
 #include "tests/support/GuiTestMain.h"
 
 namespace armtrack::gui::test {
@@ -45,6 +52,38 @@ inline void typeInto(QLineEdit* edit, const QString& text) {
   edit->selectAll();
   QTest::keyClick(edit, Qt::Key_Backspace);
   QTest::keyClicks(edit, text);
+}
+
+/// Makes w the active window (Xvfb has no window manager to do it), so shortcuts reach it.
+inline bool activate(QWidget* w) {
+  w->activateWindow();
+  return QTest::qWaitForWindowActive(w);
+}
+
+/// The text of a PDF (pdftotext), or "" when it cannot be read.
+inline QString pdfText(const QString& pdf) {
+  QProcess p;
+  p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
+  if (!p.waitForFinished(30000)) return {};
+  return QString::fromUtf8(p.readAllStandardOutput());
+}
+
+/// The application on fresh demo records in folder dir, started and signed in as the demo
+/// therapist (the patient list showing); nullptr when that fails.
+inline std::unique_ptr<AppController> demoApp(const QTemporaryDir& dir, AppOptions options = {}) {
+  storage::DatabaseUrl url;
+  url.path = dir.filePath(QStringLiteral("demo.db"));
+  if (!buildDemoDatabase(url, {})) return nullptr;
+  options.database = url.path;
+  auto app = std::make_unique<AppController>(options);
+  app->start();
+  activate(app->window());
+  const auto signIn = [&] { return qobject_cast<SignInScreen*>(app->window()->currentScreen()); };
+  if (!QTest::qWaitFor([&] { return signIn() != nullptr; }, 20000)) return nullptr;
+  emit signIn()->signInRequested(QString::fromLatin1(DemoAccounts::kTherapist),
+                                 QString::fromLatin1(DemoAccounts::kPassword));
+  if (!QTest::qWaitFor([&] { return app->records().signedIn(); }, 20000)) return nullptr;
+  return app;
 }
 
 /// Saves what the X server shows of the window (the VTK view included) as <name>.png in the
