@@ -22,116 +22,86 @@ int devicePixels(int logical, qreal ratio) {
 }
 }  // namespace
 
-// --- the QOpenGLWidget host ------------------------------------------------------------------
+// --- the hosts ------------------------------------------------------------------------------
 
-class VtkView::WidgetHost final : public QOpenGLWidget {
+/// What both hosts do with the bridge; Base is QOpenGLWidget or QOpenGLWindow, which share the
+/// names used here (context, makeCurrent, devicePixelRatio, defaultFramebufferObject, ...).
+template <class Base>
+class VtkView::GlHost : public Base {
  public:
-  WidgetHost(VtkView* view) : QOpenGLWidget(view), m_view(view) {
-    setFocusPolicy(Qt::NoFocus);  // the view takes the keys
-    setMinimumSize(1, 1);
-  }
-  ~WidgetHost() override {
+  template <class... Args>
+  explicit GlHost(VtkView* view, Args&&... args)
+      : Base(std::forward<Args>(args)...), m_view(view) {}
+  ~GlHost() override {
     // Disconnect first: the context's aboutToBeDestroyed would call back into a half-destroyed
     // object at exit.
     QObject::disconnect(m_contextDestroyed);
-    if (context()) {
-      QOpenGLWidget::makeCurrent();
+    if (this->context()) {
+      this->makeCurrent();
       m_view->m_bridge->cleanup();
-      doneCurrent();
+      this->doneCurrent();
     }
   }
+  /// Our context on the surface saved in initializeGL(). (Not QOpenGLWidget::makeCurrent(),
+  /// which rebinds Qt's framebuffer behind VTK's state cache and leaves a black view.)
   void makeBridgeCurrent() {
-    if (QOpenGLContext* c = context(); c && m_surface) c->makeCurrent(m_surface);
+    if (QOpenGLContext* c = this->context(); c && m_surface) c->makeCurrent(m_surface);
   }
   bool bridgeIsCurrent() const {
-    QOpenGLContext* c = context();
+    QOpenGLContext* c = this->context();
     return c && c == QOpenGLContext::currentContext() && m_surface && c->surface() == m_surface;
   }
 
  protected:
   void initializeGL() override {
-    m_surface = context()->surface();
+    m_surface = this->context()->surface();
     QObject::disconnect(m_contextDestroyed);
-    m_contextDestroyed = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
-      QOpenGLWidget::makeCurrent();
-      m_view->m_bridge->cleanup();
-    });
-    const qreal r = devicePixelRatioF();
-    m_view->m_problem = m_view->m_bridge->initialize(context(), devicePixels(width(), r),
-                                                     devicePixels(height(), r));
+    m_contextDestroyed =
+        QObject::connect(this->context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
+          this->makeCurrent();
+          m_view->m_bridge->cleanup();
+        });
+    const qreal r = this->devicePixelRatio();
+    m_view->m_problem = m_view->m_bridge->initialize(
+        this->context(), devicePixels(this->width(), r), devicePixels(this->height(), r));
   }
   void resizeGL(int w, int h) override {
-    const qreal r = devicePixelRatioF();
+    const qreal r = this->devicePixelRatio();
     m_view->m_bridge->resize(devicePixels(w, r), devicePixels(h, r));
   }
   void paintGL() override {
-    if (!m_view->m_bridge->ready()) {
-      const QColor bg = palette().color(QPalette::Window);
-      context()->functions()->glClearColor(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
-      context()->functions()->glClear(GL_COLOR_BUFFER_BIT);
+    if (!m_view->m_bridge->ready()) {  // no usable context: the window colour, not garbage
+      const QColor bg = m_view->palette().color(QPalette::Window);
+      this->context()->functions()->glClearColor(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
+      this->context()->functions()->glClear(GL_COLOR_BUFFER_BIT);
       return;
     }
-    const qreal r = devicePixelRatioF();
-    m_view->m_bridge->paint(defaultFramebufferObject(), devicePixels(width(), r),
-                            devicePixels(height(), r));
+    const qreal r = this->devicePixelRatio();
+    m_view->m_bridge->paint(this->defaultFramebufferObject(), devicePixels(this->width(), r),
+                            devicePixels(this->height(), r));
     emit m_view->frameRendered();
   }
 
- private:
   VtkView* m_view;
   QSurface* m_surface = nullptr;
   QMetaObject::Connection m_contextDestroyed;
 };
 
-// --- the QOpenGLWindow host ------------------------------------------------------------------
-
-class VtkView::WindowHost final : public QOpenGLWindow {
+/// A QOpenGLWidget: mouse events it ignores reach the view, its parent.
+class VtkView::WidgetHost final : public GlHost<QOpenGLWidget> {
  public:
-  explicit WindowHost(VtkView* view) : QOpenGLWindow(NoPartialUpdate), m_view(view) {}
-  ~WindowHost() override {
-    QObject::disconnect(m_contextDestroyed);
-    if (context()) {
-      makeCurrent();
-      m_view->m_bridge->cleanup();
-      doneCurrent();
-    }
+  explicit WidgetHost(VtkView* view) : GlHost(view, view) {
+    setFocusPolicy(Qt::NoFocus);  // the view takes the keys
+    setMinimumSize(1, 1);
   }
-  void makeBridgeCurrent() {
-    if (QOpenGLContext* c = context()) c->makeCurrent(this);
-  }
-  bool bridgeIsCurrent() const {
-    QOpenGLContext* c = context();
-    return c && c == QOpenGLContext::currentContext() && c->surface() == this;
-  }
+};
+
+/// A QOpenGLWindow in a window container: its input is sent on to the view.
+class VtkView::WindowHost final : public GlHost<QOpenGLWindow> {
+ public:
+  explicit WindowHost(VtkView* view) : GlHost(view, QOpenGLWindow::NoPartialUpdate) {}
 
  protected:
-  void initializeGL() override {
-    QObject::disconnect(m_contextDestroyed);
-    m_contextDestroyed = connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, [this] {
-      makeCurrent();
-      m_view->m_bridge->cleanup();
-    });
-    const qreal r = devicePixelRatio();
-    m_view->m_problem = m_view->m_bridge->initialize(context(), devicePixels(width(), r),
-                                                     devicePixels(height(), r));
-  }
-  void resizeGL(int w, int h) override {
-    const qreal r = devicePixelRatio();
-    m_view->m_bridge->resize(devicePixels(w, r), devicePixels(h, r));
-  }
-  void paintGL() override {
-    if (!m_view->m_bridge->ready()) {
-      const QColor bg = m_view->palette().color(QPalette::Window);
-      context()->functions()->glClearColor(bg.redF(), bg.greenF(), bg.blueF(), 1.0f);
-      context()->functions()->glClear(GL_COLOR_BUFFER_BIT);
-      return;
-    }
-    const qreal r = devicePixelRatio();
-    m_view->m_bridge->paint(defaultFramebufferObject(), devicePixels(width(), r),
-                            devicePixels(height(), r));
-    emit m_view->frameRendered();
-  }
-  // Input goes to the view, which the rest of the application knows.
   void mousePressEvent(QMouseEvent* e) override {
     m_view->setFocus(Qt::MouseFocusReason);
     QCoreApplication::sendEvent(m_view, e);
@@ -142,10 +112,6 @@ class VtkView::WindowHost final : public QOpenGLWindow {
   void wheelEvent(QWheelEvent* e) override { QCoreApplication::sendEvent(m_view, e); }
   void keyPressEvent(QKeyEvent* e) override { QCoreApplication::sendEvent(m_view, e); }
   void keyReleaseEvent(QKeyEvent* e) override { QCoreApplication::sendEvent(m_view, e); }
-
- private:
-  VtkView* m_view;
-  QMetaObject::Connection m_contextDestroyed;
 };
 
 // --- the view --------------------------------------------------------------------------------
@@ -212,7 +178,7 @@ void VtkView::scheduleFrame() {
 }
 
 qreal VtkView::hostPixelRatio() const {
-  return m_windowHost ? m_windowHost->devicePixelRatio() : devicePixelRatioF();
+  return m_windowHost ? m_windowHost->devicePixelRatio() : devicePixelRatio();
 }
 
 void VtkView::forwardMouse(QMouseEvent* event, unsigned long vtkEvent) {

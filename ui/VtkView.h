@@ -64,10 +64,10 @@ class VtkView : public QWidget {
   void leaveEvent(QEvent* event) override;
 
  private:
+  template <class Base>
+  class GlHost;
   class WidgetHost;
   class WindowHost;
-  friend class WidgetHost;
-  friend class WindowHost;
   void forwardMouse(QMouseEvent* event, unsigned long vtkEvent);
   qreal hostPixelRatio() const;
 

@@ -11,6 +11,7 @@
 #include "app/gui/AngleNames.h"
 #include "app/gui/Appearance.h"
 #include "app/gui/FirstRunScreen.h"
+#include "app/gui/LiveConfig.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/MessageScreen.h"
 #include "app/gui/NewSessionScreen.h"
@@ -75,7 +76,9 @@ void AppController::startDemoSession() {
         return plan;
       },
       [this](const SessionPlan& plan) {
-        showLiveSession(plan, app::gui::demoDevices());
+        NewSessionChoices demo;
+        demo.devices = app::gui::demoDevices();
+        showLiveSession(plan, demo);
         emit demoReady();
       },
       [this](const RecordsFailure& f) { showDatabaseProblem(f); });
@@ -298,10 +301,9 @@ void AppController::showPatient(const QString& code) {
 
 void AppController::startNewSession(const QString& code) {
   if (!m_records->signedIn()) return;
-  auto* screen = new NewSessionScreen(*m_records, code);
+  auto* screen = new NewSessionScreen(*m_records, m_plugins, m_settings, code, defaultDevices());
   connect(screen, &NewSessionScreen::cancelled, this, [this, code] { showPatient(code); });
-  connect(screen, &NewSessionScreen::accepted, this,
-          [this](const SessionPlan& plan) { showLiveSession(plan, defaultDevices()); });
+  connect(screen, &NewSessionScreen::accepted, this, &AppController::showLiveSession);
   m_window->showScreen(screen);
 }
 
@@ -310,51 +312,19 @@ QStringList AppController::defaultDevices() const {
   return saved.isEmpty() ? app::gui::demoDevices() : saved;
 }
 
-app::gui::LiveSessionConfig AppController::liveConfig(const SessionPlan& plan,
-                                                      const QStringList& devices) const {
-  app::gui::LiveSessionConfig c;
-  c.devices = devices;
-  c.patientLabel = tr("%1 %2").arg(plan.patient.code, plan.patient.name);
-  const bool virtualArm = std::all_of(devices.begin(), devices.end(), [](const QString& d) {
-    return d.startsWith(QLatin1String("virtual-arm"));
-  });
-  // The virtual arm simulates the default right arm; a real patient's arm gets their measured
-  // lengths and the chosen side.
-  c.meta.side = virtualArm ? Side::Right : plan.side;
-  if (!virtualArm) {
-    const SegmentLengths l = SegmentLengths::fromJson(plan.patient.segmentLengthsJson);
-    if (l.upperArmM) c.meta.geometry.l3 = *l.upperArmM;
-    if (l.forearmM) c.meta.geometry.l6 = *l.forearmM;
-    if (l.upperStrapM) c.meta.geometry.lu3 = *l.upperStrapM;
-    if (l.forearmStrapM) c.meta.geometry.lf6 = *l.forearmStrapM;
-  }
-  c.estimator.filter =
-      m_settings.filter == QLatin1String("ukf") ? FilterKind::Ukf : FilterKind::Ekf;
-  try {
-    c.estimator.model = parseMethod(m_settings.method.toStdString());
-  } catch (const std::invalid_argument&) {
-  }
-  if (plan.protocol) {
-    const int angle = angleIndex(plan.protocol->angleKey);
-    if (angle >= 0) c.primaryAngle = angle;
-    c.targetDeg = std::make_pair(plan.protocol->targetMinDeg, plan.protocol->targetMaxDeg);
-    if (plan.protocol->repetitions > 0) c.targetRepetitions = plan.protocol->repetitions;
-  }
-  return c;
-}
-
-void AppController::showLiveSession(const SessionPlan& plan, const QStringList& devices) {
+void AppController::showLiveSession(const SessionPlan& plan, const NewSessionChoices& choices) {
   if (!m_records->signedIn()) return;
   auto target = std::make_shared<RecordsRecordingTarget>(
       *m_records, plan.patient.code, plan.protocol ? plan.protocol->name : QString());
-  auto* screen = new app::gui::LiveSessionScreen(m_plugins, liveConfig(plan, devices), target);
+  auto* screen = new app::gui::LiveSessionScreen(
+      m_plugins, liveSessionConfig(plan, choices.devices, m_settings, choices.calibration), target);
   screen->setWindowTitle(tr("Live session: %1").arg(plan.patient.name));
   const QString code = plan.patient.code;
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
-          [this, target, code](const QString& summary) {
+          [this, target, code, calibration = choices.calibration](const QString& summary) {
             m_window->showStatus(summary, 0);
             if (const qint64 id = target->sessionId())
-              analyseThenReview(id, code);
+              analyseThenReview(id, code, calibration);
             else
               showPatient(code);
           });
@@ -363,7 +333,8 @@ void AppController::showLiveSession(const SessionPlan& plan, const QStringList& 
   emit liveSessionShown(screen);
 }
 
-void AppController::analyseThenReview(qint64 sessionId, const QString& code) {
+void AppController::analyseThenReview(qint64 sessionId, const QString& code,
+                                      const std::optional<Calibration>& calibration) {
   auto* wait = new MessageScreen(
       tr("Analysing the session"),
       tr("Estimating the joint angles of session %1 again from its recording and computing its "
@@ -373,8 +344,9 @@ void AppController::analyseThenReview(qint64 sessionId, const QString& code) {
   m_window->showScreen(wait);
   RecordsJob* job = m_records->startJob(
       wait,
-      [sessionId](JobContext& c) {
+      [sessionId, calibration](JobContext& c) {
         storage::AnalysisOptions o;
+        o.calibration = calibration;
         o.progress = [&c](int p) { c.progress(p); };
         o.cancel = c.cancelFlag();
         return !storage::analyseSession(c.store(), sessionId, o).cancelled;

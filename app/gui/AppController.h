@@ -9,6 +9,7 @@
 
 #include "app/gui/AppOptions.h"
 #include "app/gui/Appearance.h"
+#include "app/gui/NewSessionSteps.h"
 #include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
@@ -50,9 +51,11 @@ class AppController : public QObject {
   void startDemo();
   /// The live session of plan with these devices ("plugin:options"), recording into the records;
   /// when it stops after recording, the new session is analysed and reviewed.
-  void showLiveSession(const SessionPlan& plan, const QStringList& devices);
-  /// Analyses a stored session (a job with progress), then opens its review.
-  void analyseThenReview(qint64 sessionId, const QString& patientCode);
+  void showLiveSession(const SessionPlan& plan, const NewSessionChoices& choices);
+  /// Analyses a stored session (a job with progress, with the session's sensor calibration when
+  /// one was made), then opens its review.
+  void analyseThenReview(qint64 sessionId, const QString& patientCode,
+                         const std::optional<Calibration>& calibration = {});
   /// The devices a new session starts with (settings "devices/default", else the virtual arm).
   QStringList defaultDevices() const;
   /// Writes what the screen shows of the window to path (PNG).
@@ -77,7 +80,6 @@ class AppController : public QObject {
   void showHomeModeLater();
   storage::DatabaseUrl demoDatabaseUrl() const;
   void startDemoSession();
-  app::gui::LiveSessionConfig liveConfig(const SessionPlan& plan, const QStringList& devices) const;
 
   AppOptions m_options;
   std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode

@@ -2,6 +2,8 @@
 
 #include <QButtonGroup>
 #include <QComboBox>
+#include <QDateTime>
+#include <QDir>
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -11,6 +13,11 @@
 
 #include "app/gui/AngleNames.h"
 #include "app/gui/Forms.h"
+#include "app/gui/LiveConfig.h"
+#include "app/gui/newsession/CameraCalibrationPage.h"
+#include "app/gui/newsession/DevicesPage.h"
+#include "app/gui/newsession/SensorCalibrationPage.h"
+#include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
 
 namespace armtrack::gui {
@@ -127,9 +134,11 @@ SessionPlan SessionSetupPage::plan() const {
   return m_plan;
 }
 
-NewSessionScreen::NewSessionScreen(RecordsService& records, const QString& patientCode,
-                                   QWidget* parent)
+NewSessionScreen::NewSessionScreen(RecordsService& records, const app::PluginRegistry& plugins,
+                                   const AppSettings& settings, const QString& patientCode,
+                                   const QStringList& devices, QWidget* parent)
     : QWidget(parent), m_wizard(new QWizard(this)) {
+  m_choices.devices = devices;
   setWindowTitle(tr("New session"));
   m_wizard->setWindowFlags(Qt::Widget);  // a step of the main window, not a dialog of its own
   m_wizard->setWizardStyle(QWizard::ClassicStyle);
@@ -137,16 +146,95 @@ NewSessionScreen::NewSessionScreen(RecordsService& records, const QString& patie
   m_wizard->setButtonText(QWizard::FinishButton, tr("&Start the live session"));
   m_setup = new SessionSetupPage(records, patientCode, m_wizard);
   m_wizard->addPage(m_setup);
+  addDeviceSteps(plugins, settings);
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->addWidget(m_wizard);
-  connect(m_wizard, &QWizard::accepted, this, [this] { emit accepted(plan()); });
+  connect(m_wizard, &QWizard::accepted, this, [this] { emit accepted(plan(), m_choices); });
   connect(m_wizard, &QWizard::rejected, this, &NewSessionScreen::cancelled);
   setFocusProxy(m_wizard);
 }
 
-int NewSessionScreen::addPage(QWizardPage* page) {
-  return m_wizard->addPage(page);
+void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
+                                      const AppSettings& settings) {
+  using app::gui::CameraCalibrationPage;
+  using app::gui::DevicesPage;
+  using app::gui::SensorCalibrationPage;
+  // The arm and estimator the pages run the devices with: the plan's, with these devices.
+  const auto config = [this, &settings](const QStringList& devices) {
+    return liveSessionConfig(plan(), devices, settings);
+  };
+  m_devices = new WidgetStep(
+      tr("Devices"),
+      tr("Choose the sensors and their options, then check the connection: every stream should "
+         "turn green and the angles move with the arm."),
+      [this, &plugins, config] {
+        auto* page = new DevicesPage(plugins, config(m_choices.devices));
+        page->setDevices(m_choices.devices);
+        return page;
+      },
+      [](QWidget* w) { return static_cast<DevicesPage*>(w)->isComplete(); },
+      [this](QWidget* w) {
+        auto* page = static_cast<DevicesPage*>(w);
+        page->stopCheck();
+        m_choices.devices = page->devices();
+        return true;
+      });
+  m_calibration = new WidgetStep(
+      tr("Sensor calibration"),
+      tr("The patient holds and makes the movements shown; ArmTrack then works out how the "
+         "sensors sit on the arm. About a minute."),
+      [this, &plugins, &settings, config] {
+        const QString folder =
+            QDir(settings.effectiveDataFolder())
+                .filePath(QStringLiteral("calibrations/%1_%2")
+                              .arg(plan().patient.code, QDateTime::currentDateTime().toString(
+                                                            QStringLiteral("yyyyMMdd-HHmmss"))));
+        QDir().mkpath(folder);
+        // The virtual arm plays the protocol itself; a real patient makes the movements.
+        return new SensorCalibrationPage(plugins, config(calibrationDevices(m_choices.devices)),
+                                         folder.toStdString());
+      },
+      [](QWidget* w) { return static_cast<SensorCalibrationPage*>(w)->isComplete(); },
+      [this](QWidget* w) {
+        m_choices.calibration.reset();
+        m_choices.calibrationFile.clear();
+        auto* page = static_cast<SensorCalibrationPage*>(w);
+        if (!page || !page->result()) return true;  // skipped
+        m_choices.calibration = page->result()->calibration;
+        const std::filesystem::path file = page->recordingPath().parent_path() / "calibration.json";
+        try {
+          writeCalibration(file, *m_choices.calibration);
+          m_choices.calibrationFile = QString::fromStdString(file.string());
+        } catch (const std::exception&) {
+          // The calibration is still used for this session; only the file is missing.
+        }
+        return true;
+      },
+      tr("Skip the calibration (the measured segment lengths are used)"));
+  m_camera = new WidgetStep(
+      tr("Camera calibration"),
+      tr("Hold the printed chessboard in front of the webcam in different places and angles "
+         "until the grid is covered."),
+      [this]() -> QWidget* {
+        const bool webcam =
+            std::any_of(m_choices.devices.begin(), m_choices.devices.end(),
+                        [](const QString& d) { return d.startsWith(QLatin1String("webcam")); });
+        if (!webcam) {
+          auto* none = new QLabel(tr("No webcam among the devices: nothing to calibrate here."));
+          none->setProperty("complete", true);
+          return none;
+        }
+        auto* page = new CameraCalibrationPage(app::gui::openWebcam(0), {});
+        page->startCamera();
+        return page;
+      },
+      [](QWidget* w) {
+        if (auto* page = qobject_cast<CameraCalibrationPage*>(w)) return page->isComplete();
+        return w->property("complete").toBool();
+      },
+      {}, tr("Skip the camera calibration (use the camera's stored model)"));
+  for (WidgetStep* step : {m_devices, m_calibration, m_camera}) m_wizard->addPage(step);
 }
 
 }  // namespace armtrack::gui

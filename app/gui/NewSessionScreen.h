@@ -7,7 +7,12 @@
 #include <QWizardPage>
 #include <vector>
 
+#include "app/gui/NewSessionSteps.h"
 #include "app/gui/services/SessionPlan.h"
+
+namespace armtrack::app {
+class PluginRegistry;
+}
 
 class QComboBox;
 class QLabel;
@@ -18,6 +23,7 @@ namespace armtrack::gui {
 
 class MessageLine;
 class RecordsService;
+struct AppSettings;
 
 /// Step 1: protocol and side for the patient.
 class SessionSetupPage : public QWizardPage {
@@ -50,22 +56,34 @@ class SessionSetupPage : public QWizardPage {
 class NewSessionScreen : public QWidget {
   Q_OBJECT
  public:
-  NewSessionScreen(RecordsService& records, const QString& patientCode, QWidget* parent = nullptr);
+  /// plugins: loaded, outlives the screen. devices: the specs the device step starts with.
+  NewSessionScreen(RecordsService& records, const app::PluginRegistry& plugins,
+                   const AppSettings& settings, const QString& patientCode,
+                   const QStringList& devices, QWidget* parent = nullptr);
 
   QWizard* wizard() const { return m_wizard; }
   SessionSetupPage* setupPage() const { return m_setup; }
-  /// Appends a step (device check, calibration); returns its id.
-  int addPage(QWizardPage* page);
+  WidgetStep* devicesStep() const { return m_devices; }
+  WidgetStep* calibrationStep() const { return m_calibration; }
+  WidgetStep* cameraStep() const { return m_camera; }
   SessionPlan plan() const { return m_setup->plan(); }
+  const NewSessionChoices& choices() const { return m_choices; }
 
  signals:
   /// The last step was finished: start the live session.
-  void accepted(const armtrack::gui::SessionPlan& plan);
+  void accepted(const armtrack::gui::SessionPlan& plan,
+                const armtrack::gui::NewSessionChoices& choices);
   void cancelled();
 
  private:
+  void addDeviceSteps(const app::PluginRegistry& plugins, const AppSettings& settings);
+
   QWizard* m_wizard;
   SessionSetupPage* m_setup;
+  WidgetStep* m_devices = nullptr;
+  WidgetStep* m_calibration = nullptr;
+  WidgetStep* m_camera = nullptr;
+  NewSessionChoices m_choices;
 };
 
 }  // namespace armtrack::gui

@@ -310,11 +310,9 @@ void LiveSessionScreen::markEvent() {
 }
 
 void LiveSessionScreen::drain() {
+  if (!m_controller->drainInto(m_rows, m_sessionEvents)) return;
   const std::shared_ptr<session::Session>& s = m_controller->session();
-  if (!s) return;
   ++m_drains;
-  m_rows.clear();
-  s->takeResults(m_rows);
   if (!m_rows.empty()) {
     m_estimates += m_rows.size();
     m_samples.clear();
@@ -338,8 +336,6 @@ void LiveSessionScreen::drain() {
     m_arm->setOptical(m_marks);
     m_reps->showCount(m_counter);
   }
-  m_sessionEvents.clear();
-  s->takeEvents(m_sessionEvents);
   for (const std::string& e : m_sessionEvents) addMessage(QString::fromStdString(e));
   m_plots->refreshIfChanged();
   m_arm->updateIfChanged();

@@ -34,6 +34,16 @@ std::optional<std::pair<RecordingMeta, RecordingColumns>> SessionController::rec
   return m_layout;
 }
 
+bool SessionController::drainInto(std::vector<session::EstimateRow>& results,
+                                  std::vector<std::string>& events) {
+  results.clear();
+  events.clear();
+  if (!m_session) return false;
+  m_session->takeResults(results);
+  m_session->takeEvents(events);
+  return true;
+}
+
 void SessionController::start(const LiveSessionConfig& config,
                               std::shared_ptr<RecordingGate> gate) {
   if (m_busy) {

@@ -38,6 +38,9 @@ class SessionController : public QObject {
 
   /// The running session (GUI thread), or nullptr.
   const std::shared_ptr<session::Session>& session() const { return m_session; }
+  /// Moves the running session's new estimates and messages into the vectors (cleared first);
+  /// false when no session runs. GUI thread.
+  bool drainInto(std::vector<session::EstimateRow>& results, std::vector<std::string>& events);
   /// True from start() until stopped() (or a failed started()).
   bool busy() const { return m_busy; }
   /// The recording's metadata and columns, known once started (empty before).
