@@ -303,7 +303,12 @@ void AppController::startNewSession(const QString& code) {
   if (!m_records->signedIn()) return;
   auto* screen = new NewSessionScreen(*m_records, m_plugins, m_settings, code, defaultDevices());
   connect(screen, &NewSessionScreen::cancelled, this, [this, code] { showPatient(code); });
-  connect(screen, &NewSessionScreen::accepted, this, &AppController::showLiveSession);
+  connect(screen, &NewSessionScreen::accepted, this,
+          [this](const SessionPlan& plan, const NewSessionChoices& choices) {
+            // The next session proposes these devices again.
+            QSettings().setValue(QStringLiteral("devices/default"), choices.devices);
+            showLiveSession(plan, choices);
+          });
   m_window->showScreen(screen);
 }
 
