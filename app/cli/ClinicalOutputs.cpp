@@ -1,21 +1,17 @@
 // armtrack-cli report and export: a stored session's analysis as PDF reports and as files in the
 // open formats (docs/cli.md, docs/reports.md, docs/exports.md).
+#include <QDate>
 #include <QDir>
 #include <QFile>
 #include <QGuiApplication>
-#include <QJsonArray>
-#include <QJsonObject>
 #include <QTemporaryDir>
-#include <algorithm>
 #include <memory>
 
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
+#include "app/clinical/Outputs.h"
 #include "core/exports/Exports.h"
-#include "core/kinematics/ClinicalAngles.h"
-#include "core/reports/Reports.h"
-#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::cli {
 
@@ -76,85 +72,21 @@ std::unique_ptr<GuiApplication> guiApplication() {
   return gui;
 }
 
-/// The five ranges of motion (rad) of a stored metrics JSON (docs/storage.md, "Metrics").
-std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics) {
-  std::array<std::optional<double>, kNumClinicalAngles> rom{};
-  const QJsonObject angles = metrics["angles"].toObject();
-  for (int i = 0; i < kNumClinicalAngles; ++i) {
-    const std::string_view key = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
-    const QJsonValue v = angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
-                             .toObject()["rom_deg"];
-    if (v.isDouble()) rom[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
-  }
-  return rom;
-}
-
-QString dateOf(const QString& iso) {
-  return iso.left(10);
-}
-
 int sessionReport(ClinicalContext& c, qint64 id, const std::string& pdf, std::ostream& err) {
-  storage::ClinicalStore& store = c.store();
-  const storage::SessionAngles s = storage::sessionAngles(store, id);
-  reports::SessionReportData d;
-  d.session = s.info;
-  d.patient = store.patient(s.info.patientCode);
-  if (!s.info.protocolName.isEmpty()) d.protocol = store.protocol(s.info.protocolName);
-  if (s.info.therapistId && store.user().role != storage::Role::Home)
-    d.therapistName = store.userName(*s.info.therapistId);
-  d.side = s.side == Side::Left ? "left" : "right";
-  d.angles = s.series;
-  d.metrics = s.metrics;
-  // Earlier sessions of the patient with metrics, oldest first; the latest of the other arm.
-  std::vector<storage::SessionInfo> all = store.listSessions(s.info.patientCode);
-  std::sort(all.begin(), all.end(),
-            [](const auto& x, const auto& y) { return x.startedAt < y.startedAt; });
-  for (const storage::SessionInfo& e : all) {
-    if (e.id == id || e.startedAt > s.info.startedAt) continue;
-    const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id);
-    if (!m) continue;
-    reports::RomSnapshot snap{dateOf(e.startedAt), e.id, romOf(*m)};
-    if (store.recordingMeta(e.id).side == s.side)
-      d.earlierSessions.push_back(snap);
-    else
-      d.otherSide = snap;
-  }
-  const int pages = reports::writeSessionReport(d, QString::fromStdString(pdf));
-  store.audit("export", "session", QString::number(id), "report pdf");
+  const int pages = clinical::writeSessionReport(c.store(), id, QString::fromStdString(pdf));
   err << "report: session " << id << ", " << pages << " pages, to " << pdf << "\n";
   return 0;
 }
 
 int progressReport(ClinicalContext& c, const Args& a, const std::string& pdf, std::ostream& err) {
-  storage::ClinicalStore& store = c.store();
   const QString code = qs(a.required("--patient"));
   const QString from = qs(a.required("--from")), to = qs(a.required("--to"));
   for (const QString& date : {from, to})
     if (!QDate::fromString(date, Qt::ISODate).isValid() || date.size() != 10)
       a.fail("--from and --to: expected dates as YYYY-MM-DD, got '" + ss(date) + "'");
   if (to < from) a.fail("--to is before --from");
-  reports::ProgressReportData d;
-  d.patient = store.patient(code);
-  d.fromDate = from;
-  d.toDate = to;
-  d.therapistName = store.user().role == storage::Role::Home ? QString() : store.user().name;
-  for (const storage::SessionInfo& e : store.listSessions(code)) {
-    const QString date = dateOf(e.startedAt);
-    if (date < from || date > to) continue;
-    reports::ProgressSession p;
-    p.id = e.id;
-    p.startedAt = e.startedAt;
-    p.protocolName = e.protocolName;
-    p.durationS = e.durationS;
-    if (const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id)) {
-      p.romRad = romOf(*m);
-      const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
-      if (reps.isDouble()) p.repetitions = reps.toInt();
-    }
-    d.sessions.push_back(p);
-  }
-  const int pages = reports::writeProgressReport(d, QString::fromStdString(pdf));
-  store.audit("export", "patient", code, "progress report pdf " + from + " to " + to);
+  const reports::ProgressReportData d = clinical::progressReportData(c.store(), code, from, to);
+  const int pages = clinical::writeProgressReport(c.store(), d, QString::fromStdString(pdf));
   err << "report: patient " << ss(code) << ", " << d.sessions.size() << " sessions, " << pages
       << " pages, to " << pdf << "\n";
   return 0;
@@ -200,34 +132,10 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     checkOutputPath(metricsCsvPath(target).string(), overwrite, false);
   }
   ClinicalContext c(a, {}, true);
-  storage::ClinicalStore& store = c.store();
-  if (format == "recording") {
-    store.exportRecording(id, target);
-    err << "export: session " << id << " to " << target << "\n";
-    return 0;
-  }
-  const storage::SessionAngles s = storage::sessionAngles(store, id);
-  if (format == "csv") {
-    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
-    err << "export: session " << id << ", " << r.rows << " rows to " << r.anglesCsv.string()
-        << " and its metrics to " << r.metricsCsv.string() << "\n";
-  } else if (format == "mot") {
-    const MotExportResult r = writeOpenSimMot(target, s.series, s.side);
-    err << "export: session " << id << ", " << r.rows << " rows to " << target << "\n";
-  } else {
-    const Recording recording = store.readRecording(id);
-    BidsOptions o;
-    o.subject = bidsLabel(ss(s.info.patientCode));
-    o.session = bidsLabel(std::to_string(id));
-    o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
-                                                     : ss(s.info.protocolName));
-    o.taskName = s.info.protocolName.isEmpty() ? "ArmTrack session" : ss(s.info.protocolName);
-    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o);
-    err << "export: session " << id << ", " << r.systems.size() << " tracking systems to "
-        << r.motionDir.string() << "\n";
-    for (const std::string& note : r.notes) err << "  note: " << note << "\n";
-  }
-  store.audit("export", "session", QString::number(id), qs("format " + format));
+  const clinical::ExportSummary r =
+      clinical::exportSession(c.store(), id, *clinical::parseExportFormat(format), target);
+  err << "export: session " << id << (format == "recording" ? " to " : ", ") << r.what << "\n";
+  for (const std::string& note : r.notes) err << "  note: " << note << "\n";
   return 0;
 }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <ctime>
 #include <system_error>
+#include <utility>
 
 #include "core/session/EstimatorMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
@@ -339,9 +340,15 @@ void Session::workerLoop() {
                                       m_params.refusalSummarySeconds);
   std::vector<std::string> notes;  // messages made under no lock, told by publish()
 
+  // Optical measurements waiting for the next estimate (they often come in rows of their own).
+  EstimateRow pendingOptical;
   auto processRow = [&](ArmSample row, double oldestArrival) {
     ++rows;
     row.t -= m_startTime * scale;  // session time: 0 at start()
+    if (row.elbow) pendingOptical.opticalElbow = row.elbow;
+    if (row.wrist) pendingOptical.opticalWrist = row.wrist;
+    if (row.camElbow) pendingOptical.camElbow = row.camElbow;
+    if (row.camWrist) pendingOptical.camWrist = row.camWrist;
     if (filter) {
       const UpdateResult r = filter->update(row);
       estimatorMessages.update(filter->counters(), row.t, notes);
@@ -360,6 +367,10 @@ void Session::workerLoop() {
         out.latency = lat;
         out.thStd = e.thStd;
         out.status = r;
+        out.opticalElbow = std::exchange(pendingOptical.opticalElbow, std::nullopt);
+        out.opticalWrist = std::exchange(pendingOptical.opticalWrist, std::nullopt);
+        out.camElbow = std::exchange(pendingOptical.camElbow, std::nullopt);
+        out.camWrist = std::exchange(pendingOptical.camWrist, std::nullopt);
         fresh.push_back(std::move(out));
       }
     }

@@ -69,6 +69,11 @@ struct EstimateRow {
   JointVector thStd = JointVector::Zero();  ///< 1-sigma uncertainty of th (rad)
   /// How the estimate came about: Accepted, Initialised, Predicted or Recovered.
   UpdateResult status = UpdateResult::Accepted;
+  /// The newest optical measurements that arrived since the previous estimate (rows without IMU
+  /// data get no estimate of their own), for a view to draw beside the estimate: Kinect
+  /// positions in the shoulder frame of the arm's side (m), webcam marker pixels.
+  std::optional<Eigen::Vector3d> opticalElbow, opticalWrist;
+  std::optional<Eigen::Vector2d> camElbow, camWrist;
 };
 
 /// Latencies in 0.1 ms bins up to 1 s.

@@ -255,7 +255,15 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   {
     // The recording (352 bytes a row in memory) goes as soon as it is estimated, before the
     // metrics and the blob are made (docs/storage.md, "Memory of an analysis").
-    const Recording recording = store.readRecording(sessionId);
+    Recording recording = store.readRecording(sessionId);
+    if (options.calibration) {
+      try {
+        applyCalibration(*options.calibration, recording);  // the geometry goes into the meta
+      } catch (const std::invalid_argument& e) {
+        throw StorageError(Kind::Usage,
+                           sessionText(sessionId) + ": the calibration does not fit: " + e.what());
+      }
+    }
     params = estimatorParamsFor(recording.meta, result.settings);
     rows.t.reserve(recording.samples.size());
     rows.th.reserve(recording.samples.size());
@@ -299,6 +307,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   if (!paramsJson.contains("joint_accel_std_deg"))
     paramsJson.insert("joint_accel_std_deg", QJsonValue(QJsonValue::Null));
   for (const auto& [key, value] : std::initializer_list<std::pair<const char*, QJsonValue>>{
+           {"calibration", options.calibration.has_value()},
            {"settings", result.settingsSource},
            {"optical_used", st.opticalUsed},
            {"library_version", ARMTRACK_VERSION},

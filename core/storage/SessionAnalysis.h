@@ -10,6 +10,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/calibration/Calibration.h"
 #include "core/estimation/RecordingEstimator.h"
 #include "core/metrics/ClinicalMetrics.h"
 #include "core/storage/ClinicalStore.h"
@@ -22,10 +23,14 @@ inline constexpr const char* kMetricsFormat = "armtrack-metrics-v1";
 struct AnalysisOptions {
   /// Overrides the session's stored filter (else the session's, else EKF).
   std::optional<FilterKind> filter;
-  /// Overrides the session's stored measurement model (else the session's, else Method A).
+  /// Overrides the session's stored IMU measurement model (Method A, B or C, docs/estimator.md).
   std::optional<MeasurementModel> model;
   /// true = fuse no optical data (Kinect positions and marker pixels), whatever the session says.
   bool noOptical = false;
+  /// A sensor-to-segment calibration (core/calibration, `armtrack-cli calibrate`) applied to the
+  /// recording and the filter before estimating; its side must be the recording's (Usage error
+  /// otherwise). The parameters JSON records "calibration": true.
+  std::optional<Calibration> calibration;
   /// Called on the calling thread with 0-100 (percent done, rising; 100 once stored).
   std::function<void(int percent)> progress;
   /// Checked while estimating; when it reads true the analysis stops and stores nothing

@@ -7,7 +7,9 @@
 #   allowed there);
 # - anything under core/ includes a header of devices/, app/ or ui/ (an upward arrow);
 # - anything under devices/ includes a header of app/ or ui/, or widgets;
-# - a file under core/ or devices/ includes with a "../" path, which would hide such an arrow.
+# - anything under ui/ includes a header of app/ or of a device plugin's folder (devices/api/ is
+#   allowed: ui/ sees devices through their interface);
+# - a file under core/, devices/ or ui/ includes with a "../" path, which would hide such an arrow.
 # core/exports (export writers, target armtrack_exports) is science for this rule: Qt-free, and it
 # must not include a service header, so the CLI, the services and the GUI can all link it.
 set(include_re "^[ \t]*#[ \t]*include[ \t]*[<\"]")
@@ -55,8 +57,17 @@ foreach(f IN LISTS device_files)
   check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
 endforeach()
 
+file(GLOB_RECURSE ui_files "${ROOT}/ui/*.h" "${ROOT}/ui/*.cpp")
+foreach(f IN LISTS ui_files)
+  check("${f}" "${include_re}app/" "ui/ must not include app/")
+  check("${f}" "${include_re}devices/([^a/][^/]*|a[^p/][^/]*|ap[^i/][^/]*|api[^/]+)/"
+    "ui/ sees devices through devices/api only")
+  check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
+endforeach()
+
 if(offenders)
   list(JOIN offenders "\n" text)
   message(FATAL_ERROR "layer rule broken (docs/architecture.md):\n${text}")
 endif()
-message(STATUS "checked ${n_core} core and ${n_devices} device files: the layers point one way")
+list(LENGTH ui_files n_ui)
+message(STATUS "checked ${n_core} core, ${n_devices} device and ${n_ui} ui files: the layers point one way")

@@ -5,6 +5,7 @@
 
 #include <QCoreApplication>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -163,6 +164,33 @@ TEST_F(SessionTest, SixtySecondsLiveEqualsOfflineReestimate) {
   const JointVector e = rmse(r.rec, 5.0, 1e9);
   for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(e(j), 1.0 * kDeg) << "joint " << j;
   EXPECT_LT(r.stats.latency.quantile(0.99), 0.05);
+}
+
+TEST_F(SessionTest, EstimatesCarryTheOpticalMeasurementsBesideThem) {
+  // The 3D view draws the Kinect points and webcam rays beside the estimate from the results
+  // buffer: each optical measurement reaches the next estimate, unchanged.
+  const SessionRun r = run({QStringLiteral("sensors=upper+forearm+kinect+webcam")}, 3.0);
+  expectComplete(r);
+  std::vector<Eigen::Vector3d> recorded;
+  std::size_t pixelRows = 0;
+  for (const ArmSample& s : r.rec.samples) {
+    if (s.elbow) recorded.push_back(*s.elbow);
+    pixelRows += s.camWrist.has_value();
+  }
+  ASSERT_GT(recorded.size(), 60u);
+  std::size_t carried = 0, pixels = 0, matched = 0;
+  for (const EstimateRow& e : r.results) {
+    pixels += e.camWrist.has_value();
+    if (!e.opticalElbow) continue;
+    ++carried;
+    matched += std::find(recorded.begin(), recorded.end(), *e.opticalElbow) != recorded.end();
+    EXPECT_TRUE(e.opticalWrist.has_value());
+  }
+  EXPECT_EQ(matched, carried);
+  // Every Kinect row before the last estimate is carried (one may come after it).
+  EXPECT_GE(carried + 1, recorded.size());
+  EXPECT_GE(pixels + 1, pixelRows);
+  EXPECT_GT(pixels, 60u);
 }
 
 TEST_F(SessionTest, KinectDropoutIsReportedAndFusionResumes) {

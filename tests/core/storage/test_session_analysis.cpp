@@ -364,6 +364,51 @@ TEST(SessionAnalysis, StoredFilterSettingsAreUsedAndCheckedAndOptionsOverrideThe
   EXPECT_EQ(f.store->estimateVersions(id), 2);
 }
 
+TEST(SessionAnalysis, MethodAndCalibrationOptionsGiveTheEstimatesOfTheCsvWithThem) {
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  const Recording rec = simulateTo(f.file("a.csv"), 2.0);
+  const qint64 id = f.store->importRecording(f.file("a.csv"), "P1");
+
+  AnalysisOptions methodC;
+  methodC.model = MeasurementModel::InclinometerGyro;
+  const AnalysisResult r = analyseSession(*f.store, id, methodC);
+  EXPECT_EQ(r.settings.model, MeasurementModel::InclinometerGyro);
+  EstimateOptions c;
+  c.model = MeasurementModel::InclinometerGyro;
+  expectSameEstimates(*latestAnalysis(*f.store, id), estimateDirectly(rec, c));
+
+  // A calibration: longer segments and a gyroscope bias; the same as calibrating the CSV.
+  Calibration cal;
+  cal.side = rec.meta.side;
+  cal.geometry = rec.meta.geometry;
+  cal.geometry.l3 += 0.03;
+  cal.geometry.l6 -= 0.02;
+  cal.upperArm.gyroBias = Eigen::Vector3d(0.01, -0.02, 0.005);
+  AnalysisOptions calibrated;
+  calibrated.calibration = cal;
+  analyseSession(*f.store, id, calibrated);
+  const auto stored = latestAnalysis(*f.store, id);
+  EXPECT_TRUE(QJsonDocument::fromJson(stored->paramsJson.toUtf8())["calibration"].toBool());
+  Recording corrected = rec;
+  applyCalibration(cal, corrected);
+  expectSameEstimates(*stored, estimateDirectly(corrected, {}));
+  // ... and not those of the uncorrected recording.
+  const EstimateColumns plain = estimateDirectly(rec, {});
+  ASSERT_EQ(plain.th.size(), stored->joints.size());
+  double largest = 0;
+  for (std::size_t i = 0; i < plain.th.size(); ++i)
+    largest = std::max(largest, (plain.th[i] - stored->joints[i]).cwiseAbs().maxCoeff());
+  EXPECT_GT(largest, 1e-3);
+
+  // A calibration of the other arm is refused in words; nothing is stored.
+  cal.side = cal.side == Side::Left ? Side::Right : Side::Left;
+  calibrated.calibration = cal;
+  expectError([&] { analyseSession(*f.store, id, calibrated); }, Kind::Usage,
+              "calibration does not fit");
+  EXPECT_EQ(f.store->estimateVersions(id), 2);
+}
+
 TEST(SessionAnalysis, HomeAccountCannotAnalyseOrReadAnotherPatient) {
   Fixture f;
   f.store->addPatient(makePatient("MINE"));

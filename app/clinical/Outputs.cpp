@@ -1,0 +1,164 @@
+#include "app/clinical/Outputs.h"
+
+#include <QDate>
+#include <algorithm>
+
+#include "core/exports/Exports.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/reports/Reports.h"
+#include "core/storage/SessionAnalysis.h"
+
+namespace armtrack::clinical {
+
+namespace {
+
+QString dateOf(const QString& iso) {
+  return iso.left(10);
+}
+
+std::string ss(const QString& s) {
+  return s.toStdString();
+}
+
+}  // namespace
+
+std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics) {
+  std::array<std::optional<double>, kNumClinicalAngles> rom{};
+  const QJsonObject angles = metrics["angles"].toObject();
+  for (int i = 0; i < kNumClinicalAngles; ++i) {
+    const std::string_view key = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
+    const QJsonValue v = angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
+                             .toObject()["rom_deg"];
+    if (v.isDouble()) rom[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
+  }
+  return rom;
+}
+
+reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint64 id) {
+  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  reports::SessionReportData d;
+  d.session = s.info;
+  d.patient = store.patient(s.info.patientCode);
+  if (!s.info.protocolName.isEmpty()) d.protocol = store.protocol(s.info.protocolName);
+  if (s.info.therapistId && store.user().role != storage::Role::Home)
+    d.therapistName = store.userName(*s.info.therapistId);
+  d.side = s.side == Side::Left ? "left" : "right";
+  d.angles = s.series;
+  d.metrics = s.metrics;
+  // Earlier sessions of the patient with metrics, oldest first; the latest of the other arm.
+  std::vector<storage::SessionInfo> all = store.listSessions(s.info.patientCode);
+  std::sort(all.begin(), all.end(),
+            [](const auto& x, const auto& y) { return x.startedAt < y.startedAt; });
+  for (const storage::SessionInfo& e : all) {
+    if (e.id == id || e.startedAt > s.info.startedAt) continue;
+    const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id);
+    if (!m) continue;
+    reports::RomSnapshot snap{dateOf(e.startedAt), e.id, romOf(*m)};
+    if (store.recordingMeta(e.id).side == s.side)
+      d.earlierSessions.push_back(snap);
+    else
+      d.otherSide = snap;
+  }
+  return d;
+}
+
+reports::ProgressReportData progressReportData(storage::ClinicalStore& store, const QString& code,
+                                               const QString& from, const QString& to) {
+  reports::ProgressReportData d;
+  d.patient = store.patient(code);
+  d.fromDate = from;
+  d.toDate = to;
+  d.therapistName = store.user().role == storage::Role::Home ? QString() : store.user().name;
+  for (const storage::SessionInfo& e : store.listSessions(code)) {
+    const QString date = dateOf(e.startedAt);
+    if ((!from.isEmpty() && date < from) || (!to.isEmpty() && date > to)) continue;
+    reports::ProgressSession p;
+    p.id = e.id;
+    p.startedAt = e.startedAt;
+    p.protocolName = e.protocolName;
+    p.durationS = e.durationS;
+    if (const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id)) {
+      p.romRad = romOf(*m);
+      const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
+      if (reps.isDouble()) p.repetitions = reps.toInt();
+    }
+    d.sessions.push_back(p);
+  }
+  return d;
+}
+
+int writeSessionReport(storage::ClinicalStore& store, qint64 id, const QString& pdf) {
+  const reports::SessionReportData d = sessionReportData(store, id);
+  const int pages = reports::writeSessionReport(d, pdf);
+  store.audit("export", "session", QString::number(id), "report pdf");
+  return pages;
+}
+
+int writeProgressReport(storage::ClinicalStore& store, const reports::ProgressReportData& d,
+                        const QString& pdf) {
+  const int pages = reports::writeProgressReport(d, pdf);
+  store.audit("export", "patient", d.patient.code,
+              "progress report pdf " + d.fromDate + " to " + d.toDate);
+  return pages;
+}
+
+std::optional<ExportFormat> parseExportFormat(const std::string& name) {
+  if (name == "recording") return ExportFormat::Recording;
+  if (name == "csv") return ExportFormat::Csv;
+  if (name == "mot") return ExportFormat::Mot;
+  if (name == "bids") return ExportFormat::Bids;
+  return std::nullopt;
+}
+
+std::string exportFormatName(ExportFormat format) {
+  switch (format) {
+    case ExportFormat::Recording:
+      return "recording";
+    case ExportFormat::Csv:
+      return "csv";
+    case ExportFormat::Mot:
+      return "mot";
+    case ExportFormat::Bids:
+      break;
+  }
+  return "bids";
+}
+
+ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportFormat format,
+                            const std::filesystem::path& target) {
+  ExportSummary out;
+  if (format == ExportFormat::Recording) {
+    store.exportRecording(id, target);  // audits itself
+    out.what = target.string();
+    out.files = {target, sidecarPath(target)};
+    return out;
+  }
+  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  if (format == ExportFormat::Csv) {
+    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
+    out.what = std::to_string(r.rows) + " rows to " + r.anglesCsv.string() +
+               " and its metrics to " + r.metricsCsv.string();
+    out.files = {r.anglesCsv, r.metricsCsv};
+  } else if (format == ExportFormat::Mot) {
+    const MotExportResult r = writeOpenSimMot(target, s.series, s.side);
+    out.what = std::to_string(r.rows) + " rows to " + target.string();
+    out.files = {target};
+  } else {
+    const Recording recording = store.readRecording(id);
+    BidsOptions o;
+    o.subject = bidsLabel(ss(s.info.patientCode));
+    o.session = bidsLabel(std::to_string(id));
+    o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
+                                                     : ss(s.info.protocolName));
+    o.taskName = s.info.protocolName.isEmpty() ? "ArmTrack session" : ss(s.info.protocolName);
+    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o);
+    out.what = std::to_string(r.systems.size()) + " tracking systems to " + r.motionDir.string();
+    out.files = {r.motionDir};
+    out.notes = r.notes;
+  }
+  store.audit("export", "session", QString::number(id),
+              QString::fromStdString("format " + exportFormatName(format)));
+  return out;
+}
+
+}  // namespace armtrack::clinical

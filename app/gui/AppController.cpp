@@ -1,0 +1,417 @@
+#include "app/gui/AppController.h"
+
+#include <QApplication>
+#include <QDir>
+#include <QFileInfo>
+#include <QScreen>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTimer>
+
+#include "app/gui/AngleNames.h"
+#include "app/gui/Appearance.h"
+#include "app/gui/FirstRunScreen.h"
+#include "app/gui/LiveConfig.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/MessageScreen.h"
+#include "app/gui/NewSessionScreen.h"
+#include "app/gui/PatientListScreen.h"
+#include "app/gui/PatientScreen.h"
+#include "app/gui/RecordsRecordingTarget.h"
+#include "app/gui/ReviewScreen.h"
+#include "app/gui/SettingsDialog.h"
+#include "app/gui/SignInScreen.h"
+#include "app/gui/live/LiveSessionScreen.h"
+#include "app/gui/services/DemoData.h"
+#include "app/gui/services/PatientRecords.h"
+#include "core/storage/SessionAnalysis.h"
+
+namespace armtrack::gui {
+
+namespace {
+constexpr auto kLastUser = "signIn/lastUser";
+}
+
+AppController::AppController(AppOptions options, QObject* parent)
+    : QObject(parent),
+      m_options(std::move(options)),
+      m_records(std::make_unique<RecordsService>()),
+      m_window(std::make_unique<MainWindow>()) {
+  connect(m_window.get(), &MainWindow::signOutRequested, this, &AppController::signOut);
+  connect(m_window.get(), &MainWindow::patientsRequested, this, &AppController::showPatients);
+  connect(m_window.get(), &MainWindow::settingsRequested, this, &AppController::showSettings);
+  connect(m_records.get(), &RecordsService::problem, this,
+          [this](const QString& text) { m_window->showStatus(text, 0); });
+}
+
+AppController::~AppController() {
+  m_window.reset();  // screens first: their pending answers are dropped
+  m_records.reset();
+}
+
+void AppController::start() {
+  QSettings settings;
+  m_settings = AppSettings::load(settings);
+  installTranslators(m_options.language.isEmpty() ? m_settings.language : m_options.language);
+  applyTheme(parseTheme(settings.value(QStringLiteral("display/theme")).toString()));
+  loadPlugins();
+  m_window->show();
+  if (m_options.quitAfterSeconds > 0)
+    QTimer::singleShot(static_cast<int>(m_options.quitAfterSeconds * 1000), this, [this] {
+      if (!m_options.screenshot.isEmpty()) saveWindowImage(m_options.screenshot);
+      QApplication::quit();
+    });
+  m_options.demo ? startDemo() : openRecords();
+}
+
+void AppController::startDemoSession() {
+  // The demo patient with the demo protocol, live with the virtual arm at once.
+  m_records->call(
+      m_window.get(),
+      [](storage::ClinicalStore& s) {
+        SessionPlan plan;
+        plan.patient = s.patient(QString::fromLatin1(DemoAccounts::kLivePatient));
+        plan.protocol = s.protocol(QString::fromLatin1(DemoAccounts::kLiveProtocol));
+        plan.side = defaultSide(plan.patient, plan.protocol);
+        return plan;
+      },
+      [this](const SessionPlan& plan) {
+        NewSessionChoices demo;
+        demo.devices = app::gui::demoDevices();
+        showLiveSession(plan, demo);
+        emit demoReady();
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+}
+
+bool AppController::saveWindowImage(const QString& path) const {
+  QApplication::processEvents();
+  // From the screen, so the OpenGL views are included.
+  const QPixmap shot = m_window->screen()->grabWindow(m_window->winId());
+  const bool ok = shot.save(path);
+  if (!ok) qWarning("armtrack: cannot write the screenshot %s", qPrintable(path));
+  return ok;
+}
+
+storage::DatabaseUrl AppController::demoDatabaseUrl() const {
+  if (!m_options.database.isEmpty()) return storage::DatabaseUrl::parse(m_options.database);
+  storage::DatabaseUrl url;
+  url.path = QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation))
+                 .filePath(QStringLiteral("demo/armtrack-demo.db"));
+  return url;
+}
+
+void AppController::startDemo() {
+  storage::DatabaseUrl url;
+  try {
+    url = demoDatabaseUrl();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  m_demoUrl = url;
+  if (url.engine == storage::DatabaseUrl::Engine::Sqlite)
+    QDir().mkpath(QFileInfo(url.path).absolutePath());
+  auto* wait = new MessageScreen(
+      tr("Preparing the demo"),
+      tr("Making demo records in %1: three patients, two protocols and six weeks of sessions, "
+         "simulated and analysed the way real ones are. This takes a few seconds.")
+          .arg(url.display()));
+  wait->setProgress(0);
+  m_window->showScreen(wait);
+  RecordsJob* job = m_records->startJob(
+      wait,
+      [url](JobContext& c) {
+        return buildDemoDatabase(
+            url, [&c](int p) { c.progress(p); }, c.cancelFlag());
+      },
+      [this, wait, url](bool built) {
+        if (!built) return QApplication::quit();
+        wait->setText(tr("Signing in as the demo therapist..."));
+        m_records->signIn(
+            url, QString::fromLatin1(DemoAccounts::kTherapist),
+            QString::fromLatin1(DemoAccounts::kPassword), wait,
+            [this](const storage::User& user) {
+              m_window->setSignedIn(
+                  tr("%1 (%2, demo)").arg(user.name, storage::roleName(user.role)));
+              m_window->showStatus(tr("Demo records: accounts \"%1\" and \"%2\", password \"%3\".")
+                                       .arg(QString::fromLatin1(DemoAccounts::kTherapist),
+                                            QString::fromLatin1(DemoAccounts::kAdmin),
+                                            QString::fromLatin1(DemoAccounts::kPassword)),
+                                   0);
+              emit signedIn(user.name);
+              startDemoSession();
+            },
+            [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+  connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
+  wait->addAction(tr("&Cancel"), [job] { job->cancel(); });
+}
+
+void AppController::showSettings() {
+  const Theme theme = parseTheme(QSettings().value(QStringLiteral("display/theme")).toString());
+  auto* dialog = new SettingsDialog(m_settings, theme, m_window.get());
+  dialog->setAttribute(Qt::WA_DeleteOnClose);
+  connect(dialog, &QDialog::accepted, this,
+          [this, dialog] { applySettings(dialog->settings(), dialog->theme()); });
+  dialog->open();
+}
+
+void AppController::applySettings(const AppSettings& s, Theme theme) {
+  const AppSettings before = m_settings;
+  m_settings = s;
+  saveSettings();
+  QSettings().setValue(QStringLiteral("display/theme"), themeName(theme));
+  applyTheme(theme);
+  if (s.language != before.language)
+    installTranslators(m_options.language.isEmpty() ? s.language : m_options.language);
+  if (s.pluginFolders != before.pluginFolders) m_plugins.load(s.pluginFolders);
+  QString note = tr("Settings saved.");
+  if (s.effectiveDatabase().display() != before.effectiveDatabase().display())
+    note += u' ' + tr("The new records location is used at the next sign-in.");
+  if (s.language != before.language)
+    note += u' ' + tr("Screens opened from now on use the new language.");
+  m_window->showStatus(note);
+  emit settingsApplied();
+}
+
+void AppController::loadPlugins() {
+  QStringList folders = m_options.pluginFolders;
+  folders << m_settings.pluginFolders << app::PluginRegistry::defaultFolders();
+  m_plugins.load(folders);
+}
+
+void AppController::saveSettings() {
+  QSettings settings;
+  m_settings.save(settings);
+}
+
+storage::DatabaseUrl AppController::databaseUrl() const {
+  if (m_demoUrl) return *m_demoUrl;
+  if (!m_options.database.isEmpty()) return storage::DatabaseUrl::parse(m_options.database);
+  return m_settings.effectiveDatabase();
+}
+
+void AppController::openRecords() {
+  storage::DatabaseUrl url;
+  try {
+    url = databaseUrl();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  auto* wait = new MessageScreen(tr("Opening the records"), tr("Opening %1...").arg(url.display()));
+  wait->setProgress(-1);
+  m_window->showScreen(wait);
+  m_records->probe(
+      url, wait,
+      [this](DatabaseState state) {
+        state == DatabaseState::Ready ? showSignIn() : showFirstRun();
+      },
+      [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+}
+
+void AppController::showFirstRun() {
+  QString fixed;
+  if (!m_options.database.isEmpty() || !m_settings.databaseUrl.isEmpty())
+    fixed = databaseUrl().display();
+  auto* screen = new FirstRunScreen(m_settings.effectiveDataFolder(), fixed);
+  connect(screen, &FirstRunScreen::createRequested, this,
+          [this, screen](const QString& folder, const QString& admin, const QString& password) {
+            const AppSettings before = m_settings;
+            if (m_options.database.isEmpty() && m_settings.databaseUrl.isEmpty())
+              m_settings.dataFolder = folder;
+            storage::DatabaseUrl url;
+            try {
+              url = databaseUrl();
+            } catch (const storage::StorageError& e) {
+              m_settings = before;
+              return screen->showError(QString::fromStdString(e.what()));
+            }
+            screen->setBusy(true);
+            m_records->create(
+                url, admin, password, screen,
+                [this](const storage::User& user) {
+                  saveSettings();
+                  QSettings().setValue(kLastUser, user.name);
+                  onSignedIn(user);
+                },
+                [this, screen, before](const RecordsFailure& f) {
+                  m_settings = before;
+                  screen->showError(f.message);
+                });
+          });
+  m_window->showScreen(screen);
+}
+
+void AppController::showSignIn() {
+  QString where;
+  try {
+    where = databaseUrl().display();
+  } catch (const storage::StorageError& e) {
+    return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
+  }
+  const QString last = QSettings().value(kLastUser).toString();
+  auto* screen = new SignInScreen(where, last);
+  connect(screen, &SignInScreen::signInRequested, this,
+          [this, screen](const QString& name, const QString& password) {
+            screen->setBusy(true);
+            m_records->signIn(
+                databaseUrl(), name, password, screen,
+                [this, name](const storage::User& user) {
+                  QSettings().setValue(kLastUser, name);
+                  onSignedIn(user);
+                },
+                [screen](const RecordsFailure& f) { screen->showError(f.message); });
+          });
+  m_window->showScreen(screen);
+}
+
+void AppController::onSignedIn(const storage::User& user) {
+  m_window->setSignedIn(tr("%1 (%2)").arg(user.name, storage::roleName(user.role)));
+  emit signedIn(user.name);
+  if (user.role == storage::Role::Home) return showHomeModeLater();
+  showPatients();
+}
+
+void AppController::signOut() {
+  m_records->signOut();
+  m_window->setSignedIn({});
+  showSignIn();
+}
+
+void AppController::showPatients() {
+  showPatientList({});
+}
+
+void AppController::showPatientList(const QString& select) {
+  if (!m_records->signedIn()) return;
+  auto* screen = new PatientListScreen(*m_records, select);
+  connect(screen, &PatientListScreen::openRequested, this, &AppController::showPatient);
+  m_window->showScreen(screen);
+}
+
+void AppController::showPatient(const QString& code) {
+  if (!m_records->signedIn()) return;
+  auto* screen = new PatientScreen(*m_records, m_settings, code);
+  connect(screen, &PatientScreen::backRequested, this, [this, code] { showPatientList(code); });
+  connect(screen, &PatientScreen::newSessionRequested, this, &AppController::startNewSession);
+  connect(screen, &PatientScreen::reviewRequested, this, &AppController::showReview);
+  m_window->showScreen(screen);
+}
+
+void AppController::startNewSession(const QString& code) {
+  if (!m_records->signedIn()) return;
+  auto* screen = new NewSessionScreen(*m_records, m_plugins, m_settings, code, defaultDevices());
+  connect(screen, &NewSessionScreen::cancelled, this, [this, code] { showPatient(code); });
+  connect(screen, &NewSessionScreen::accepted, this,
+          [this](const SessionPlan& plan, const NewSessionChoices& choices) {
+            // The next session proposes these devices again.
+            QSettings().setValue(QStringLiteral("devices/default"), choices.devices);
+            showLiveSession(plan, choices);
+          });
+  m_window->showScreen(screen);
+}
+
+QStringList AppController::defaultDevices() const {
+  const QStringList saved = QSettings().value(QStringLiteral("devices/default")).toStringList();
+  return saved.isEmpty() ? app::gui::demoDevices() : saved;
+}
+
+void AppController::showLiveSession(const SessionPlan& plan, const NewSessionChoices& choices) {
+  if (!m_records->signedIn()) return;
+  auto target = std::make_shared<RecordsRecordingTarget>(
+      *m_records, plan.patient.code, plan.protocol ? plan.protocol->name : QString());
+  auto* screen = new app::gui::LiveSessionScreen(
+      m_plugins, liveSessionConfig(plan, choices.devices, m_settings, choices.calibration), target);
+  screen->setWindowTitle(tr("Live session: %1").arg(plan.patient.name));
+  const QString code = plan.patient.code;
+  connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
+          [this, target, code, calibration = choices.calibration](const QString& summary) {
+            m_window->showStatus(summary, 0);
+            if (const qint64 id = target->sessionId())
+              analyseThenReview(id, code, calibration);
+            else
+              showPatient(code);
+          });
+  m_window->showScreen(screen);
+  screen->start();
+  emit liveSessionShown(screen);
+}
+
+void AppController::analyseThenReview(qint64 sessionId, const QString& code,
+                                      const std::optional<Calibration>& calibration) {
+  auto* wait = new MessageScreen(
+      tr("Analysing the session"),
+      tr("Estimating the joint angles of session %1 again from its recording and computing its "
+         "metrics...")
+          .arg(sessionId));
+  wait->setProgress(0);
+  m_window->showScreen(wait);
+  RecordsJob* job = m_records->startJob(
+      wait,
+      [sessionId, calibration](JobContext& c) {
+        storage::AnalysisOptions o;
+        o.calibration = calibration;
+        o.progress = [&c](int p) { c.progress(p); };
+        o.cancel = c.cancelFlag();
+        return !storage::analyseSession(c.store(), sessionId, o).cancelled;
+      },
+      [this, sessionId](bool) { showReview(sessionId); },
+      [this, wait, sessionId, code](const RecordsFailure& f) {
+        // The recording is stored whatever happened: say why it has no analysis yet.
+        wait->setProgress(100);
+        wait->setText(tr("Session %1 is saved, but it could not be analysed: %2\nYou can "
+                         "re-estimate it from its review.")
+                          .arg(sessionId)
+                          .arg(f.message));
+        wait->addAction(tr("&Review session"), [this, sessionId] { showReview(sessionId); });
+        wait->addAction(tr("&Back to the patient"), [this, code] { showPatient(code); });
+      });
+  connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
+  wait->addAction(tr("&Skip the analysis"), [job] { job->cancel(); });
+}
+
+void AppController::showReview(qint64 sessionId) {
+  if (!m_records->signedIn()) return;
+  auto* screen = new ReviewScreen(*m_records, m_settings, sessionId);
+  connect(screen, &ReviewScreen::backRequested, this, &AppController::showPatient);
+  m_window->showScreen(screen);
+}
+
+void AppController::showHomeModeLater() {
+  auto* screen = new MessageScreen(
+      tr("Home exercises"),
+      tr("This is a home account. The guided home exercises it opens arrive in a later version "
+         "of ArmTrack. Until then, your therapist records your sessions at the clinic."));
+  screen->addAction(tr("Sign &out"), [this] { signOut(); });
+  m_window->showScreen(screen);
+}
+
+void AppController::showDatabaseProblem(const RecordsFailure& failure) {
+  using Kind = storage::StorageError::Kind;
+  QString advice;
+  switch (failure.kind.value_or(Kind::Io)) {
+    case Kind::OlderSchema:
+      advice = tr("Back the file up, then bring it up to date with: armtrack-cli db migrate");
+      break;
+    case Kind::NewerSchema:
+      advice = tr("Install the newer ArmTrack that wrote it.");
+      break;
+    case Kind::Corrupt:
+      advice =
+          tr("The file was left untouched. Restore it from a backup, or choose another "
+             "database in the settings.");
+      break;
+    default:
+      advice =
+          tr("Check the location in the settings (or --db) and that you may read and "
+             "write it, then try again.");
+  }
+  auto* screen = new MessageScreen(tr("The records cannot be opened"),
+                                   failure.message + QStringLiteral("\n\n") + advice);
+  screen->addAction(tr("&Try again"), [this] { openRecords(); });
+  screen->addAction(tr("&Quit"), [] { QApplication::quit(); });
+  m_window->showScreen(screen);
+}
+
+}  // namespace armtrack::gui

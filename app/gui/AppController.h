@@ -1,0 +1,92 @@
+// What the application shows when: the first-run assistant, sign-in, the patients, a session,
+// a review. It owns the services (records, plugins, settings) and hands them to the screens; the
+// screens know nothing of each other.
+#pragma once
+
+#include <QObject>
+#include <QPointer>
+#include <memory>
+
+#include "app/gui/AppOptions.h"
+#include "app/gui/Appearance.h"
+#include "app/gui/NewSessionSteps.h"
+#include "app/gui/live/LiveSessionConfig.h"
+#include "app/gui/services/AppSettings.h"
+#include "app/gui/services/RecordsService.h"
+#include "app/gui/services/SessionPlan.h"
+#include "app/plugins/PluginRegistry.h"
+
+namespace armtrack::gui {
+
+class MainWindow;
+
+class AppController : public QObject {
+  Q_OBJECT
+ public:
+  explicit AppController(AppOptions options, QObject* parent = nullptr);
+  ~AppController() override;
+
+  /// Loads the settings and plugins, shows the window and its first screen.
+  void start();
+
+  MainWindow* window() const { return m_window.get(); }
+  RecordsService& records() { return *m_records; }
+  const app::PluginRegistry& plugins() const { return m_plugins; }
+  const AppSettings& settings() const { return m_settings; }
+
+  // Where the application goes; public so that a test can drive it.
+  void openRecords();
+  void showFirstRun();
+  void showSignIn();
+  void signOut();
+  void showPatients();
+  void showPatientList(const QString& select);
+  void showPatient(const QString& code);
+  void startNewSession(const QString& code);
+  void showReview(qint64 sessionId);
+  void showSettings();
+  /// Saves s (and the theme) and applies what can change at once.
+  void applySettings(const AppSettings& s, Theme theme);
+  /// `--demo`: fresh demo records, signed in as the demo therapist, then the live session.
+  void startDemo();
+  /// The live session of plan with these devices ("plugin:options"), recording into the records;
+  /// when it stops after recording, the new session is analysed and reviewed.
+  void showLiveSession(const SessionPlan& plan, const NewSessionChoices& choices);
+  /// Analyses a stored session (a job with progress, with the session's sensor calibration when
+  /// one was made), then opens its review.
+  void analyseThenReview(qint64 sessionId, const QString& patientCode,
+                         const std::optional<Calibration>& calibration = {});
+  /// The devices a new session starts with (settings "devices/default", else the virtual arm).
+  QStringList defaultDevices() const;
+  /// Writes what the screen shows of the window to path (PNG).
+  bool saveWindowImage(const QString& path) const;
+
+ signals:
+  /// Someone signed in (after the first-run assistant too).
+  void signedIn(const QString& name);
+  /// The demo records are made, the demo therapist signed in and the live session shown.
+  void demoReady();
+  void settingsApplied();
+  /// A live session screen was shown (and started).
+  void liveSessionShown(QWidget* screen);
+
+ private:
+  void loadPlugins();
+  void saveSettings();
+  /// The records in effect (--db, else the settings); throws StorageError(Usage).
+  storage::DatabaseUrl databaseUrl() const;
+  void onSignedIn(const storage::User& user);
+  void showDatabaseProblem(const RecordsFailure& failure);
+  void showHomeModeLater();
+  storage::DatabaseUrl demoDatabaseUrl() const;
+  void startDemoSession();
+
+  AppOptions m_options;
+  std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode
+  AppSettings m_settings;
+  app::PluginRegistry m_plugins;
+  std::unique_ptr<RecordsService> m_records;
+  std::unique_ptr<MainWindow> m_window;
+};
+
+}  // namespace armtrack::gui

@@ -1,0 +1,151 @@
+#include "app/gui/FirstRunScreen.h"
+
+#include <QDir>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include "app/gui/Forms.h"
+
+namespace armtrack::gui {
+
+namespace {
+constexpr int kMinPasswordLength = 8;
+}
+
+FirstRunScreen::FirstRunScreen(const QString& defaultFolder, const QString& fixedDatabase,
+                               QWidget* parent)
+    : QWidget(parent),
+      m_fixed(!fixedDatabase.isEmpty()),
+      m_folder(new QLineEdit(defaultFolder, this)),
+      m_browse(new QPushButton(tr("&Browse..."), this)),
+      m_databaseNote(new QLabel(this)),
+      m_admin(new QLineEdit(this)),
+      m_password(new QLineEdit(this)),
+      m_repeat(new QLineEdit(this)),
+      m_message(new MessageLine(this)),
+      m_create(new QPushButton(tr("&Create and sign in"), this)) {
+  setWindowTitle(tr("First start"));
+  QWidget* column = nullptr;
+  auto* layout = centredColumn(this, 600, &column);
+  layout->addWidget(heading(tr("Welcome to ArmTrack"), column));
+  auto* intro = new QLabel(
+      tr("ArmTrack keeps its patients, sessions and recordings in one database. Choose where it "
+         "lives and create the administrator account; the administrator can then add the "
+         "therapists' accounts."),
+      column);
+  intro->setWordWrap(true);
+  layout->addWidget(intro);
+
+  auto* where = new QGroupBox(tr("Where the data lives"), column);
+  auto* whereLayout = new QVBoxLayout(where);
+  if (m_fixed) {
+    m_folder->hide();
+    m_browse->hide();
+    m_databaseNote->setText(tr("The database given on the command line: %1").arg(fixedDatabase));
+  } else {
+    auto* row = new QHBoxLayout;
+    m_folder->setAccessibleName(tr("Data folder"));
+    m_browse->setAccessibleName(tr("Choose the data folder"));
+    row->addWidget(m_folder, 1);
+    row->addWidget(m_browse);
+    whereLayout->addLayout(row);
+    connect(m_browse, &QPushButton::clicked, this, &FirstRunScreen::chooseFolder);
+    connect(m_folder, &QLineEdit::textChanged, this, &FirstRunScreen::updateDatabaseNote);
+  }
+  m_databaseNote->setWordWrap(true);
+  whereLayout->addWidget(m_databaseNote);
+  layout->addWidget(where);
+
+  auto* account = new QGroupBox(tr("Administrator account"), column);
+  auto* form = new QFormLayout(account);
+  m_admin->setAccessibleName(tr("Administrator name"));
+  m_password->setEchoMode(QLineEdit::Password);
+  m_password->setAccessibleName(tr("Password"));
+  m_password->setPlaceholderText(tr("at least %n characters", nullptr, kMinPasswordLength));
+  m_repeat->setEchoMode(QLineEdit::Password);
+  m_repeat->setAccessibleName(tr("Password again"));
+  form->addRow(tr("&Name:"), m_admin);
+  form->addRow(tr("&Password:"), m_password);
+  form->addRow(tr("Password &again:"), m_repeat);
+  layout->addWidget(account);
+  layout->addWidget(m_message);
+
+  m_create->setDefault(true);
+  m_create->setAutoDefault(true);
+  auto* buttons = new QHBoxLayout;
+  buttons->addStretch();
+  buttons->addWidget(m_create);
+  layout->addLayout(buttons);
+  layout->addStretch();
+
+  connect(m_create, &QPushButton::clicked, this, &FirstRunScreen::submit);
+  for (QLineEdit* e : {m_folder, m_admin, m_password, m_repeat})
+    connect(e, &QLineEdit::returnPressed, this, &FirstRunScreen::submit);
+  setTabOrder(m_folder, m_browse);
+  setTabOrder(m_browse, m_admin);
+  setTabOrder(m_admin, m_password);
+  setTabOrder(m_password, m_repeat);
+  setTabOrder(m_repeat, m_create);
+  setFocusProxy(m_fixed ? m_admin : m_folder);
+  updateDatabaseNote();
+}
+
+QString FirstRunScreen::folder() const {
+  return m_folder->text().trimmed();
+}
+
+void FirstRunScreen::updateDatabaseNote() {
+  if (m_fixed) return;
+  const QString f = folder();
+  m_databaseNote->setText(f.isEmpty() ? tr("Choose a folder.")
+                                      : tr("The records will be kept in %1.")
+                                            .arg(QDir(f).filePath(QStringLiteral("armtrack.db"))));
+}
+
+void FirstRunScreen::chooseFolder() {
+  const QString chosen =
+      QFileDialog::getExistingDirectory(this, tr("Where ArmTrack keeps its data"), folder());
+  if (!chosen.isEmpty()) m_folder->setText(chosen);
+}
+
+void FirstRunScreen::submit() {
+  if (!m_create->isEnabled()) return;
+  const auto refuse = [this](const QString& text, QLineEdit* field) {
+    m_message->showMessage(text);
+    field->setFocus();
+    field->selectAll();
+  };
+  if (!m_fixed && folder().isEmpty())
+    return refuse(tr("Choose the folder where ArmTrack keeps its data."), m_folder);
+  if (!m_fixed && QDir::isRelativePath(folder()))
+    return refuse(tr("Give the data folder as a full path, e.g. %1.").arg(QDir::homePath()),
+                  m_folder);
+  const QString admin = m_admin->text().trimmed();
+  if (admin.isEmpty()) return refuse(tr("Give the administrator a name."), m_admin);
+  if (m_password->text().size() < kMinPasswordLength)
+    return refuse(tr("The password needs at least %n characters.", nullptr, kMinPasswordLength),
+                  m_password);
+  if (m_password->text() != m_repeat->text())
+    return refuse(tr("The two passwords differ. Type the same password twice."), m_repeat);
+  m_message->clear();
+  emit createRequested(folder(), admin, m_password->text());
+}
+
+void FirstRunScreen::setBusy(bool busy) {
+  for (QWidget* w :
+       std::initializer_list<QWidget*>{m_folder, m_browse, m_admin, m_password, m_repeat, m_create})
+    w->setEnabled(!busy);
+  if (busy) m_message->showMessage(tr("Creating the records..."), MessageLine::Kind::Notice);
+}
+
+void FirstRunScreen::showError(const QString& message) {
+  setBusy(false);
+  m_message->showMessage(message);
+}
+
+}  // namespace armtrack::gui

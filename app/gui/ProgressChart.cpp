@@ -1,0 +1,187 @@
+#include "app/gui/ProgressChart.h"
+
+#include <QAreaSeries>
+#include <QChart>
+#include <QChartView>
+#include <QComboBox>
+#include <QDateTimeAxis>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLineSeries>
+#include <QLocale>
+#include <QScatterSeries>
+#include <QStandardItemModel>
+#include <QTableView>
+#include <QValueAxis>
+#include <algorithm>
+
+#include "app/gui/AngleNames.h"
+#include "core/metrics/NormativeRanges.h"
+
+namespace armtrack::gui {
+
+namespace {
+constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
+}
+
+ProgressChart::ProgressChart(QWidget* parent)
+    : QWidget(parent),
+      m_angle(new QComboBox(this)),
+      m_view(new QChartView(this)),
+      m_table(new QStandardItemModel(this)),
+      m_tableView(new QTableView(this)) {
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  auto* top = new QHBoxLayout;
+  auto* label = new QLabel(tr("&Angle:"), this);
+  label->setBuddy(m_angle);
+  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->addItem(angleName(i), i);
+  m_angle->setAccessibleName(tr("Angle shown in the progress chart"));
+  top->addWidget(label);
+  top->addWidget(m_angle);
+  top->addStretch();
+  layout->addLayout(top);
+  auto* row = new QHBoxLayout;
+  m_view->setRenderHint(QPainter::Antialiasing);
+  m_view->setAccessibleName(tr("Progress chart"));
+  m_view->setAccessibleDescription(
+      tr("Range of motion per session against date; the table beside it holds the same values."));
+  m_view->setMinimumHeight(220);
+  row->addWidget(m_view, 3);
+  m_tableView->setModel(m_table);
+  m_tableView->setAccessibleName(tr("Progress values"));
+  m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_tableView->verticalHeader()->hide();
+  m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_tableView->setTabKeyNavigation(false);
+  row->addWidget(m_tableView, 2);
+  layout->addLayout(row, 1);
+  connect(m_angle, &QComboBox::currentIndexChanged, this, &ProgressChart::redraw);
+  redraw();
+}
+
+void ProgressChart::setSessions(std::vector<reports::ProgressSession> sessions) {
+  std::sort(sessions.begin(), sessions.end(),
+            [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
+  m_sessions = std::move(sessions);
+  redraw();
+}
+
+void ProgressChart::setRadians(bool radians) {
+  m_radians = radians;
+  redraw();
+}
+
+void ProgressChart::setAngle(int index) {
+  m_angle->setCurrentIndex(std::clamp(index, 0, kNumClinicalAngles - 1));
+}
+
+int ProgressChart::angle() const {
+  return m_angle->currentIndex();
+}
+
+int ProgressChart::points() const {
+  return m_points;
+}
+
+QChart* ProgressChart::chart() const {
+  return m_view->chart();
+}
+
+void ProgressChart::redraw() {
+  const int a = std::max(0, angle());
+  const NormativeRange& normal = aaosNormativeRanges()[static_cast<std::size_t>(a)];
+  // Drawn in the unit of the settings: "deg" values are radians * scale.
+  const double scale = m_radians ? 1.0 : kRadToDeg;
+  const QString unit = m_radians ? tr("rad") : tr("deg");
+  const double normalDeg = normativeSpanRad(normal) * scale;
+
+  auto* chart = new QChart;
+  chart->setTitle(angleName(a));
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->setBackgroundRoundness(0);
+  chart->setTheme(palette().color(QPalette::Window).lightness() < 128 ? QChart::ChartThemeDark
+                                                                      : QChart::ChartThemeLight);
+
+  m_table->clear();
+  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Range (%1)").arg(unit), tr("Of normal")});
+  auto* line = new QLineSeries;
+  line->setName(tr("Range of motion"));
+  auto* dots = new QScatterSeries;
+  dots->setMarkerSize(9);
+  dots->setName(tr("Sessions"));
+  QDateTime first, last;
+  double highest = normalDeg;
+  m_points = 0;
+  for (const reports::ProgressSession& s : m_sessions) {
+    const auto& rom = s.romRad[static_cast<std::size_t>(a)];
+    if (!rom) continue;
+    const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
+    if (!when.isValid()) continue;
+    const double deg = *rom * scale;
+    line->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
+    dots->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
+    if (!first.isValid()) first = when;
+    last = when;
+    highest = std::max(highest, deg);
+    ++m_points;
+    m_table->appendRow(
+        {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
+         new QStandardItem(QString::number(deg, 'f', m_radians ? 3 : 1)),
+         new QStandardItem(QStringLiteral("%1 %").arg(100.0 * fractionOfNormativeSpan(normal, *rom),
+                                                      0, 'f', 0))});
+  }
+  if (m_points == 0) {
+    chart->setTitle(tr("%1: no analysed session yet").arg(angleName(a)));
+    first = QDateTime::currentDateTimeUtc().addDays(-28);
+    last = QDateTime::currentDateTimeUtc();
+  }
+  // A day either side, so single points and the shading's ends are visible.
+  const QDateTime from = first.addDays(-1), to = last.addDays(1);
+  auto* normalTop = new QLineSeries;
+  auto* normalBottom = new QLineSeries;
+  for (const QDateTime& t : {from, to}) {
+    normalTop->append(static_cast<qreal>(t.toMSecsSinceEpoch()), normalDeg);
+    normalBottom->append(static_cast<qreal>(t.toMSecsSinceEpoch()), 0);
+  }
+  auto* normalArea = new QAreaSeries(normalTop, normalBottom);
+  normalArea->setName(
+      tr("Normal (AAOS) %1 %2").arg(normalDeg, 0, 'f', m_radians ? 2 : 0).arg(unit));
+  QColor shade = palette().color(QPalette::Highlight);
+  shade.setAlpha(45);
+  normalArea->setBrush(shade);
+  QPen edge(palette().color(QPalette::Highlight));
+  edge.setStyle(Qt::DashLine);
+  edge.setWidthF(1.5);
+  normalArea->setPen(edge);
+  chart->addSeries(normalArea);
+  chart->addSeries(line);
+  chart->addSeries(dots);
+
+  auto* x = new QDateTimeAxis;
+  x->setFormat(QStringLiteral("d MMM"));
+
+  x->setRange(from, to);
+  x->setTickCount(std::clamp(m_points + 1, 3, 6));
+  auto* y = new QValueAxis;
+  y->setTitleText(tr("ROM (%1)").arg(unit));
+  const double highestDeg = highest / scale * kRadToDeg;
+  const double step = (highestDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
+  y->setRange(0, std::ceil(highest * 1.05 / step) * step);
+  y->setTickType(QValueAxis::TicksDynamic);
+  y->setTickAnchor(0);
+  y->setTickInterval(step);
+  y->setLabelFormat(m_radians ? QStringLiteral("%.2f") : QStringLiteral("%.0f"));
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+  for (QAbstractSeries* s : chart->series()) {
+    s->attachAxis(x);
+    s->attachAxis(y);
+  }
+  QChart* old = m_view->chart();
+  m_view->setChart(chart);
+  delete old;
+}
+
+}  // namespace armtrack::gui

@@ -1,0 +1,513 @@
+#include "app/gui/ReviewScreen.h"
+
+#include <QComboBox>
+#include <QDir>
+#include <QFileDialog>
+#include <QHeaderView>
+#include <QJsonDocument>
+#include <QLabel>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSlider>
+#include <QSplitter>
+#include <QTabWidget>
+#include <QTableView>
+#include <QVBoxLayout>
+
+#include "app/gui/AngleNames.h"
+#include "app/gui/Forms.h"
+#include "app/gui/JobProgress.h"
+#include "app/gui/SessionTableModel.h"
+#include "app/gui/services/AppSettings.h"
+#include "app/gui/services/RecordsService.h"
+#include "ui/AnglePlotPanel.h"
+#include "ui/ArmView.h"
+
+namespace armtrack::gui {
+
+namespace {
+
+std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a) {
+  std::vector<ui::AngleSample> out;
+  out.reserve(a.t.size());
+  for (std::size_t i = 0; i < a.t.size(); ++i)
+    out.push_back(ui::angleSample(a.t[i], a.joints[i], a.sd[i]));
+  return out;
+}
+
+QString clock(double s) {
+  const int tenths = static_cast<int>(std::max(0.0, s) * 10 + 0.5);
+  return QStringLiteral("%1:%2.%3")
+      .arg(tenths / 600)
+      .arg((tenths / 10) % 60, 2, 10, QLatin1Char('0'))
+      .arg(tenths % 10);
+}
+
+QString howMade(const storage::StoredAnalysis& a, int versions) {
+  const QJsonObject p = QJsonDocument::fromJson(a.paramsJson.toUtf8()).object();
+  QString text = QObject::tr("version %1 of %2: %3, method %4")
+                     .arg(a.version)
+                     .arg(versions)
+                     .arg(p["filter"].toString().toUpper(), p["method"].toString());
+  text += p["optical_used"].toBool() ? QObject::tr(", optical data fused")
+                                     : QObject::tr(", no optical data fused");
+  if (p["calibration"].toBool()) text += QObject::tr(", calibrated");
+  return text;
+}
+
+}  // namespace
+
+ReviewScreen::ReviewScreen(RecordsService& records, const AppSettings& settings, qint64 sessionId,
+                           QWidget* parent)
+    : QWidget(parent), m_records(records), m_settings(settings), m_id(sessionId) {
+  setWindowTitle(tr("Review of session %1").arg(sessionId));
+  buildLayout();
+  m_play.setInterval(33);  // 30 Hz: the view and plots redraw from this timer only
+  connect(&m_play, &QTimer::timeout, this, &ReviewScreen::tick);
+  reload();
+}
+
+ReviewScreen::~ReviewScreen() {
+  keepDraft();
+}
+
+void ReviewScreen::buildLayout() {
+  auto* layout = new QVBoxLayout(this);
+  auto* top = new QHBoxLayout;
+  m_title = heading(tr("Session %1").arg(m_id), this);
+  m_back = new QPushButton(tr("&Back to the patient"), this);
+  m_back->setShortcut(QKeySequence::Back);
+  top->addWidget(m_title, 1);
+  top->addWidget(m_back);
+  layout->addLayout(top);
+  m_message = new MessageLine(this);
+  layout->addWidget(m_message);
+
+  auto* vertical = new QSplitter(Qt::Vertical, this);
+  auto* horizontal = new QSplitter(Qt::Horizontal, vertical);
+  m_arm = new ui::ArmView(horizontal);
+  m_arm->setAccessibleName(tr("3D arm replay"));
+  m_arm->setMinimumSize(320, 280);
+  m_plots = new ui::AnglePlotPanel(horizontal);
+  m_plots->setMode(ui::AnglePlotPanel::Mode::Review);
+  horizontal->setStretchFactor(0, 2);
+  horizontal->setStretchFactor(1, 3);
+
+  auto* lower = new QWidget(vertical);
+  auto* lowerLayout = new QVBoxLayout(lower);
+  lowerLayout->setContentsMargins(0, 0, 0, 0);
+  auto* transport = new QHBoxLayout;
+  m_playButton = new QPushButton(tr("&Play"), lower);
+  m_playButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Space));
+  m_playButton->setToolTip(tr("Play or pause the replay (Ctrl+Space)"));
+  m_slider = new QSlider(Qt::Horizontal, lower);
+  m_slider->setAccessibleName(tr("Replay time"));
+  m_slider->setSingleStep(100);  // 0.1 s per arrow key
+  m_slider->setPageStep(5000);
+  m_time = new QLabel(lower);
+  m_time->setAccessibleName(tr("Replay time"));
+  m_speed = new QComboBox(lower);
+  for (double s : {0.25, 0.5, 1.0, 2.0, 4.0}) m_speed->addItem(tr("%1x").arg(s), s);
+  m_speed->setCurrentIndex(2);
+  m_speed->setAccessibleName(tr("Replay speed"));
+  transport->addWidget(m_playButton);
+  transport->addWidget(m_slider, 1);
+  transport->addWidget(m_time);
+  transport->addWidget(m_speed);
+  lowerLayout->addLayout(transport);
+
+  m_tabs = new QTabWidget(lower);
+  auto* repsTab = new QWidget;
+  auto* repsLayout = new QVBoxLayout(repsTab);
+  m_repSummary = new QLabel(repsTab);
+  m_repSummary->setWordWrap(true);
+  repsLayout->addWidget(m_repSummary);
+  m_reps = new RepetitionTableModel(this);
+  m_reps->setRadians(m_settings.units == AppSettings::AngleUnit::Radians);
+  m_repTable = new QTableView(repsTab);
+  m_repTable->setModel(m_reps);
+  m_repTable->setAccessibleName(tr("Repetitions"));
+  m_repTable->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_repTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_repTable->setTabKeyNavigation(false);
+  m_repTable->verticalHeader()->hide();
+  m_repTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  repsLayout->addWidget(m_repTable);
+  m_tabs->addTab(repsTab, tr("&Repetitions"));
+
+  auto* compareTab = new QWidget;
+  auto* compareLayout = new QVBoxLayout(compareTab);
+  m_compare = new QComboBox(compareTab);
+  m_compare->setAccessibleName(tr("Session to compare with"));
+  compareLayout->addWidget(new QLabel(
+      tr("Another session of this patient, drawn dashed on the plots and as a translucent arm:"),
+      compareTab));
+  compareLayout->addWidget(m_compare);
+  compareLayout->addStretch();
+  m_tabs->addTab(compareTab, tr("Co&mpare"));
+
+  auto* notesTab = new QWidget;
+  auto* notesLayout = new QVBoxLayout(notesTab);
+  m_notes = new QPlainTextEdit(notesTab);
+  m_notes->setAccessibleName(tr("Session notes"));
+  m_notes->setTabChangesFocus(true);
+  m_saveNotes = new QPushButton(tr("Sa&ve notes"), notesTab);
+  m_saveNotes->setShortcut(QKeySequence::Save);
+  notesLayout->addWidget(m_notes);
+  notesLayout->addWidget(m_saveNotes, 0, Qt::AlignRight);
+  m_tabs->addTab(notesTab, tr("&Notes"));
+
+  m_reestimate = new ReestimatePanel(m_settings);
+  m_tabs->addTab(m_reestimate, tr("Re-es&timate"));
+  m_outputs = new OutputsPanel;
+  m_tabs->addTab(m_outputs, tr("Report and e&xport"));
+  lowerLayout->addWidget(m_tabs, 1);
+  vertical->setStretchFactor(0, 3);
+  vertical->setStretchFactor(1, 2);
+  layout->addWidget(vertical, 1);
+
+  connect(m_back, &QPushButton::clicked, this,
+          [this] { emit backRequested(m_data.info.patientCode); });
+  connect(m_playButton, &QPushButton::clicked, this, [this] { playing() ? pause() : play(); });
+  connect(m_slider, &QSlider::valueChanged, this, [this](int ms) {
+    if (std::abs(ms - static_cast<int>(std::lround((m_cursor - m_t0) * 1000))) > 1)
+      setCursor(m_t0 + ms / 1000.0);
+  });
+  connect(m_plots, &ui::AnglePlotPanel::cursorRequested, this, &ReviewScreen::setCursor);
+  connect(m_repTable, &QTableView::activated, this, [this](const QModelIndex& i) {
+    setCursor(i.data(RepetitionTableModel::StartRole).toDouble());
+  });
+  connect(m_compare, &QComboBox::activated, this,
+          [this] { compareWith(m_compare->currentData().toLongLong()); });
+  connect(m_notes, &QPlainTextEdit::textChanged, this, &ReviewScreen::keepDraft);
+  connect(m_saveNotes, &QPushButton::clicked, this, &ReviewScreen::saveNotes);
+  connect(m_reestimate, &ReestimatePanel::reestimateRequested, this, &ReviewScreen::reestimate);
+  connect(m_outputs, &OutputsPanel::reportRequested, this, &ReviewScreen::askReport);
+  connect(m_outputs, &OutputsPanel::exportRequested, this, &ReviewScreen::askExport);
+  setTabOrder(m_back, m_playButton);
+  setTabOrder(m_playButton, m_slider);
+  setTabOrder(m_slider, m_speed);
+  setTabOrder(m_speed, m_tabs);
+  setFocusProxy(m_playButton);
+}
+
+void ReviewScreen::reload() {
+  m_message->showMessage(tr("Reading the session..."), MessageLine::Kind::Notice);
+  m_records.call(
+      this, [id = m_id](storage::ClinicalStore& s) { return loadReview(s, id); },
+      [this](const ReviewData& d) {
+        m_message->clear();
+        show(d);
+        emit loaded();
+      },
+      [this](const RecordsFailure& f) {
+        m_message->showMessage(tr("This session could not be read: %1").arg(f.message));
+      });
+}
+
+void ReviewScreen::show(const ReviewData& d) {
+  const bool first = m_data.info.id == 0;
+  m_data = d;
+  const QString side = d.meta.side == Side::Left ? tr("left arm") : tr("right arm");
+  m_title->setText(tr("%1: session of %2, %3")
+                       .arg(d.patient.name, SessionTableModel::localTime(d.info.startedAt), side));
+  setWindowTitle(
+      tr("Review: %1, %2").arg(d.patient.name, SessionTableModel::localTime(d.info.startedAt)));
+  m_arm->setArm(d.meta.geometry, d.meta.side, d.meta.up, d.meta.camera);
+  if (d.protocol) {
+    const int a = angleIndex(d.protocol->angleKey);
+    if (a >= 0) m_plots->setTarget(a, d.protocol->targetMinDeg, d.protocol->targetMaxDeg);
+  } else {
+    m_plots->clearTarget();
+  }
+  if (d.analysis && !d.analysis->t.empty()) {
+    m_plots->setSession(samplesOf(*d.analysis));
+    m_t0 = d.analysis->t.front();
+    m_t1 = d.analysis->t.back();
+    m_reestimate->setCurrent(howMade(*d.analysis, d.versions));
+  } else {
+    m_plots->setSession({});
+    m_t0 = m_t1 = 0;
+    m_reestimate->setCurrent(tr("not analysed yet"));
+    m_message->showMessage(
+        tr("This session has no analysis yet (it may have been cut short or failed). Open "
+           "\"Re-estimate\" to estimate its joint angles from the recording."));
+    m_tabs->setCurrentWidget(m_reestimate);
+  }
+  m_slider->setRange(0, static_cast<int>(std::lround((m_t1 - m_t0) * 1000)));
+  setCursor(first ? m_t0 : std::clamp(m_cursor, m_t0, m_t1));
+
+  int skipped = 0;
+  const std::vector<RepetitionRow> reps =
+      d.metrics ? repetitionRows(*d.metrics, &skipped) : std::vector<RepetitionRow>{};
+  m_reps->setRows(reps);
+  if (d.metrics) {
+    const QJsonObject r = (*d.metrics)["repetitions"].toObject();
+    const QJsonValue sparc = (*d.metrics)["sparc"], ldlj = (*d.metrics)["ldlj"];
+    m_repSummary->setText(
+        tr("%1 repetitions on %2 (%3 full, %4 partial). Smoothness: SPARC %5, LDLJ %6.")
+            .arg(r["count"].toInt())
+            .arg(angleName(angleIndex(r["primary_angle"].toString())))
+            .arg(r["full"].toInt())
+            .arg(r["partial"].toInt())
+            .arg(sparc.isDouble() ? QString::number(sparc.toDouble(), 'f', 2) : QStringLiteral("-"))
+            .arg(ldlj.isDouble() ? QString::number(ldlj.toDouble(), 'f', 2) : QStringLiteral("-")) +
+        (skipped > 0 ? u' ' + tr("%n repetition(s) could not be read.", nullptr, skipped)
+                     : QString()));
+  } else {
+    m_repSummary->setText(tr("No metrics yet."));
+  }
+
+  m_compare->clear();
+  m_compare->addItem(tr("(none)"), qint64{0});
+  for (const storage::SessionInfo& o : d.others)
+    m_compare->addItem(tr("%1 %2").arg(SessionTableModel::localTime(o.startedAt), o.protocolName),
+                       o.id);
+
+  // The stored notes, unless a draft typed earlier was never saved.
+  const QString draft = QSettings().value(draftKey()).toString();
+  const QSignalBlocker block(m_notes);
+  if (!draft.isEmpty() && draft != d.info.notes) {
+    m_notes->setPlainText(draft);
+    m_message->showMessage(tr("Notes typed earlier were not saved; they are back in the "
+                              "Notes tab. Save them or edit them."),
+                           MessageLine::Kind::Notice);
+  } else if (first || m_notes->toPlainText() == d.info.notes || draft.isEmpty()) {
+    m_notes->setPlainText(d.info.notes);
+  }
+}
+
+void ReviewScreen::setCursor(double t) {
+  m_cursor = std::clamp(t, m_t0, m_t1);
+  if (m_data.analysis && !m_data.analysis->t.empty()) {
+    const std::size_t i = rowAt(m_data.analysis->t, m_cursor);
+    m_arm->setPose(m_data.analysis->joints[i]);
+  }
+  if (m_overlay && !m_overlay->t.empty()) {
+    // The other session at the same time since its own start.
+    const double since = m_cursor - m_t0 + m_overlay->t.front();
+    m_arm->setTargetPose(m_overlay->joints[rowAt(m_overlay->t, since)]);
+  }
+  m_plots->setCursor(m_cursor);
+  const QSignalBlocker block(m_slider);
+  m_slider->setValue(static_cast<int>(std::lround((m_cursor - m_t0) * 1000)));
+  updateTimeLabel();
+}
+
+void ReviewScreen::updateTimeLabel() {
+  m_time->setText(tr("%1 / %2").arg(clock(m_cursor - m_t0), clock(m_t1 - m_t0)));
+}
+
+void ReviewScreen::play() {
+  if (m_t1 <= m_t0) return;
+  if (m_cursor >= m_t1) setCursor(m_t0);
+  m_clock.start();
+  m_play.start();
+  m_playButton->setText(tr("&Pause"));
+}
+
+void ReviewScreen::pause() {
+  m_play.stop();
+  m_playButton->setText(tr("&Play"));
+}
+
+void ReviewScreen::tick() {
+  const double dt = m_clock.restart() / 1000.0;
+  setCursor(m_cursor + dt * m_speed->currentData().toDouble());
+  if (m_cursor >= m_t1) pause();
+}
+
+void ReviewScreen::compareWith(qint64 other) {
+  if (other == 0) {
+    m_overlay.reset();
+    m_plots->clearOverlay();
+    m_arm->setTargetPose(std::nullopt);
+    emit overlayShown(0);
+    return;
+  }
+  m_records.call(
+      this, [other](storage::ClinicalStore& s) { return storage::latestAnalysis(s, other); },
+      [this, other](const std::optional<storage::StoredAnalysis>& a) {
+        if (!a || a->t.empty()) {
+          m_message->showMessage(tr("Session %1 has no analysis to compare with. Review it and "
+                                    "re-estimate it first.")
+                                     .arg(other));
+          return;
+        }
+        m_overlay = a;
+        std::vector<ui::AngleSample> samples = samplesOf(*a);
+        for (ui::AngleSample& s : samples) s.t += m_t0 - a->t.front();  // same start
+        m_plots->setOverlay(samples);
+        setCursor(m_cursor);
+        emit overlayShown(other);
+      },
+      [this](const RecordsFailure& f) {
+        m_message->showMessage(tr("That session could not be read: %1").arg(f.message));
+      });
+}
+
+QString ReviewScreen::draftKey() const {
+  const QString where = m_records.signedIn() ? m_records.url().display() : QString();
+  return QStringLiteral("drafts/notes/%1/%2").arg(qHash(where)).arg(m_id);
+}
+
+void ReviewScreen::keepDraft() {
+  if (!m_notes || m_data.info.id == 0) return;
+  QSettings settings;
+  if (m_notes->toPlainText() == m_data.info.notes)
+    settings.remove(draftKey());
+  else
+    settings.setValue(draftKey(), m_notes->toPlainText());
+}
+
+void ReviewScreen::saveNotes() {
+  const QString text = m_notes->toPlainText();
+  m_saveNotes->setEnabled(false);
+  m_records.call(
+      this, [id = m_id, text](storage::ClinicalStore& s) { s.updateSessionNotes(id, text); },
+      [this, text] {
+        m_saveNotes->setEnabled(true);
+        m_data.info.notes = text;
+        keepDraft();  // the draft is no longer needed
+        m_message->showMessage(tr("Notes saved."), MessageLine::Kind::Notice);
+        emit notesSaved({});
+      },
+      [this](const RecordsFailure& f) {
+        m_saveNotes->setEnabled(true);
+        const QString text = tr("The notes could not be saved: %1. They stay here and in a "
+                                "draft; try again.")
+                                 .arg(f.message);
+        m_message->showMessage(text);
+        emit notesSaved(text);
+      });
+}
+
+void ReviewScreen::reestimate(const ReestimateChoice& choice) {
+  if (m_busy) return;
+  m_busy = true;
+  m_reestimate->setBusy(true);
+  m_message->showMessage(tr("Estimating the joint angles again..."), MessageLine::Kind::Notice);
+  RecordsJob* job = m_records.startJob(
+      this,
+      [id = m_id, choice](JobContext& c) {
+        storage::AnalysisOptions o;
+        o.filter = choice.filter;
+        o.model = choice.model;
+        o.noOptical = !choice.optical;
+        if (!choice.calibrationFile.isEmpty())
+          o.calibration = readCalibration(choice.calibrationFile.toStdString());
+        o.progress = [&c](int p) { c.progress(p); };
+        o.cancel = c.cancelFlag();
+        const storage::AnalysisResult r = storage::analyseSession(c.store(), id, o);
+        return r.cancelled ? 0 : r.estimateVersion;
+      },
+      [this](int version) {
+        m_busy = false;
+        m_reestimate->setBusy(false);
+        if (version == 0) {
+          m_message->showMessage(tr("Re-estimation cancelled; nothing was stored."),
+                                 MessageLine::Kind::Notice);
+          emit reestimated(0, tr("cancelled"));
+          return;
+        }
+        m_message->showMessage(tr("New estimates stored as version %1.").arg(version),
+                               MessageLine::Kind::Notice);
+        connect(
+            this, &ReviewScreen::loaded, this, [this, version] { emit reestimated(version, {}); },
+            Qt::SingleShotConnection);
+        reload();
+      },
+      [this](const RecordsFailure& f) {
+        m_busy = false;
+        m_reestimate->setBusy(false);
+        const QString text =
+            tr("The session could not be estimated again: %1. The earlier estimates are kept.")
+                .arg(f.message);
+        m_message->showMessage(text);
+        emit reestimated(0, text);
+      });
+  showJobProgress(this, job, tr("Estimating the joint angles again..."));
+}
+
+void ReviewScreen::askReport() {
+  const QString folder = m_settings.exportFolder();
+  QDir().mkpath(folder);
+  const QString pdf = QFileDialog::getSaveFileName(
+      this, tr("Save the session report"),
+      QDir(folder).filePath(
+          QStringLiteral("%1_session_%2.pdf").arg(m_data.info.patientCode).arg(m_id)),
+      tr("PDF files (*.pdf)"));
+  if (!pdf.isEmpty()) writeReport(pdf);
+}
+
+void ReviewScreen::askExport(clinical::ExportFormat format) {
+  const QString folder = m_settings.exportFolder();
+  QDir().mkpath(folder);
+  const QString stem =
+      QDir(folder).filePath(QStringLiteral("%1_session_%2").arg(m_data.info.patientCode).arg(m_id));
+  QString path;
+  switch (format) {
+    case clinical::ExportFormat::Bids:
+      path = QFileDialog::getExistingDirectory(this, tr("Folder of the BIDS data set"), folder);
+      break;
+    case clinical::ExportFormat::Mot:
+      path = QFileDialog::getSaveFileName(this, tr("Export as OpenSim motion"), stem + ".mot",
+                                          tr("OpenSim motion (*.mot)"));
+      break;
+    case clinical::ExportFormat::Csv:
+      path = QFileDialog::getSaveFileName(this, tr("Export the angles as CSV"), stem + ".csv",
+                                          tr("CSV files (*.csv)"));
+      break;
+    case clinical::ExportFormat::Recording:
+      path = QFileDialog::getSaveFileName(this, tr("Export the recording"), stem + "_recording.csv",
+                                          tr("Recordings (*.csv)"));
+      break;
+  }
+  if (!path.isEmpty()) exportTo(format, path);
+}
+
+void ReviewScreen::writeReport(const QString& pdf) {
+  runOutput(tr("the session report"), pdf, [id = m_id, pdf](storage::ClinicalStore& s) {
+    const int pages = clinical::writeSessionReport(s, id, pdf);
+    return tr("Session report written: %1 (%n page(s)).", nullptr, pages)
+        .arg(QDir::toNativeSeparators(pdf));
+  });
+}
+
+void ReviewScreen::exportTo(clinical::ExportFormat format, const QString& path) {
+  runOutput(tr("the export"), path, [id = m_id, format, path](storage::ClinicalStore& s) {
+    const clinical::ExportSummary r = clinical::exportSession(s, id, format, path.toStdString());
+    QString text = tr("Exported: %1.").arg(QString::fromStdString(r.what));
+    for (const std::string& note : r.notes) text += u'\n' + QString::fromStdString(note);
+    return text;
+  });
+}
+
+void ReviewScreen::runOutput(const QString& what, const QString& path,
+                             std::function<QString(storage::ClinicalStore&)> work) {
+  m_outputs->setBusy(true);
+  m_outputs->setResult(tr("Writing %1...").arg(what));
+  RecordsJob* job = m_records.startJob(
+      this,
+      [work = std::move(work)](JobContext& c) {
+        c.progress(5);
+        return work(c.store());
+      },
+      [this, path](const QString& text) {
+        m_outputs->setBusy(false);
+        m_outputs->setResult(text);
+        emit outputWritten(path, {});
+      },
+      [this, what, path](const RecordsFailure& f) {
+        m_outputs->setBusy(false);
+        const QString text = tr("%1 could not be written: %2. Choose another place and try again.")
+                                 .arg(what, f.message);
+        m_outputs->setResult(text);
+        m_message->showMessage(text);
+        emit outputWritten(path, text);
+      });
+  showJobProgress(this, job, tr("Writing %1...").arg(what));
+}
+
+}  // namespace armtrack::gui

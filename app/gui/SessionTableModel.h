@@ -1,0 +1,38 @@
+// A patient's sessions as a table: date, protocol, duration, status, samples, notes.
+#pragma once
+
+#include <QAbstractTableModel>
+#include <vector>
+
+#include "core/storage/Records.h"
+
+namespace armtrack::gui {
+
+class SessionTableModel : public QAbstractTableModel {
+  Q_OBJECT
+ public:
+  enum Column { Started, Protocol, Duration, Status, Samples, Notes, ColumnCount };
+  static constexpr int IdRole = Qt::UserRole;  ///< the session id, on any column
+
+  using QAbstractTableModel::QAbstractTableModel;
+  void setSessions(std::vector<storage::SessionInfo> sessions);
+  const storage::SessionInfo* sessionAt(int row) const;
+
+  int rowCount(const QModelIndex& parent = {}) const override;
+  int columnCount(const QModelIndex& parent = {}) const override;
+  QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
+  QVariant headerData(int section, Qt::Orientation orientation,
+                      int role = Qt::DisplayRole) const override;
+
+  /// "complete", "interrupted", "recording" in words.
+  static QString statusText(const QString& status);
+  /// Seconds as m:ss (or h:mm:ss).
+  static QString durationText(double seconds);
+  /// An ISO 8601 UTC time as the local date and time in the user's locale.
+  static QString localTime(const QString& isoUtc);
+
+ private:
+  std::vector<storage::SessionInfo> m_sessions;
+};
+
+}  // namespace armtrack::gui

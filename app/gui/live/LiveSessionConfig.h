@@ -1,0 +1,42 @@
+// What a live session screen needs to start a session: the devices as the command line names
+// them, the arm, the estimator, and the protocol's targets for the counter and the plots.
+#pragma once
+
+#include <QString>
+#include <QStringList>
+#include <optional>
+#include <utility>
+
+#include "core/estimation/ArmFilter.h"
+#include "core/io/Recording.h"
+
+namespace armtrack::app::gui {
+
+struct LiveSessionConfig {
+  /// Devices as "plugin:key=value,..." (armtrack-cli record --device), e.g.
+  /// "virtual-arm:sensors=upper+forearm+kinect+webcam".
+  QStringList devices;
+  /// Arm geometry, up direction, gravity, side (and a camera, if no device brings one).
+  RecordingMeta meta;
+  /// Estimator settings (filter, method, noise); the geometry comes from meta.
+  EstimatorParams estimator;
+  /// Shown in the screen's header, e.g. "P01 Ada Example".
+  QString patientLabel;
+  /// The protocol's primary angle (clinicalAngleInfo() index) and its target range (deg); the
+  /// counter counts on the primary angle (shoulder flexion when none is given).
+  std::optional<int> primaryAngle;
+  std::optional<std::pair<double, double>> targetDeg;
+  /// The protocol's number of repetitions.
+  std::optional<int> targetRepetitions;
+  /// The plots' window (s, 10-30).
+  double windowSeconds = 20.0;
+  /// Record from the start (when a recording target was given), without pressing Record.
+  bool recordFromStart = false;
+};
+
+/// The demo's devices: the virtual arm with both IMUs, a Kinect and a webcam.
+inline QStringList demoDevices() {
+  return {QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+webcam")};
+}
+
+}  // namespace armtrack::app::gui

@@ -1,0 +1,431 @@
+#include "app/gui/live/LiveSessionScreen.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <cmath>
+
+#include "core/metrics/RangeOfMotion.h"
+#include "ui/AnglePlotPanel.h"
+#include "ui/AngleReadouts.h"
+#include "ui/AngleTableModel.h"
+#include "ui/DeviceHealthPanel.h"
+#include "ui/RepetitionCounterWidget.h"
+
+namespace armtrack::app::gui {
+
+namespace {
+constexpr double kOpticalShownSeconds = 0.5;  // optical marks vanish when no longer measured
+constexpr int kStatsEveryTicks = 5;           // device health a few times a second
+constexpr int kMaxMessages = 500;
+
+RepetitionParams counterParams(const LiveSessionConfig& c) {
+  RepetitionParams p;
+  p.primaryAngle = c.primaryAngle.value_or(0);
+  if (c.targetDeg && c.targetDeg->second > c.targetDeg->first)
+    p.target = TargetRange{c.targetDeg->first * kDegToRad, c.targetDeg->second * kDegToRad};
+  return p;
+}
+
+QString clock(double seconds) {
+  const int s = static_cast<int>(std::max(0.0, seconds));
+  return QStringLiteral("%1:%2")
+      .arg(s / 60, 2, 10, QLatin1Char('0'))
+      .arg(s % 60, 2, 10, QLatin1Char('0'));
+}
+}  // namespace
+
+LiveSessionScreen::LiveSessionScreen(const PluginRegistry& registry, LiveSessionConfig config,
+                                     std::shared_ptr<RecordingTarget> target, QWidget* parent)
+    : QWidget(parent),
+      m_registry(registry),
+      m_config(std::move(config)),
+      m_target(std::move(target)),
+      m_gate(m_target ? std::make_shared<RecordingGate>(m_target) : nullptr),
+      m_controller(new SessionController(registry, this)),
+      m_counter(counterParams(m_config)) {
+  setAccessibleName(tr("Live session"));
+  buildLayout();
+  connect(m_controller, &SessionController::started, this, &LiveSessionScreen::onStarted);
+  connect(m_controller, &SessionController::stopped, this, &LiveSessionScreen::onStopped);
+  connect(m_controller, &SessionController::deviceStateChanged, m_health,
+          &ui::DeviceHealthPanel::setDeviceState);
+  connect(m_health, &ui::DeviceHealthPanel::summaryChanged, this,
+          [this](const QString& summary, bool ok) {
+            if (m_state == State::Failed) return;
+            if (ok)
+              showBanner({}, false);
+            else
+              showBanner(tr("%1. The session goes on with the other sensors; check the device "
+                            "(power, cable or distance).")
+                             .arg(summary),
+                         true);
+          });
+  // One timer drives every view, so that a tick repaints the window once (with a QOpenGLWidget
+  // in it, each repaint composes the whole window in OpenGL).
+  m_arm->setRefreshRate(0);
+  m_plots->setRefreshRate(0);
+  m_readouts->setRefreshRate(0);
+  m_drainTimer.setTimerType(Qt::PreciseTimer);
+  connect(&m_drainTimer, &QTimer::timeout, this, &LiveSessionScreen::drain);
+  setDrainRate(m_drainHz);
+  updateButtons();
+  updateStatus();
+}
+
+LiveSessionScreen::~LiveSessionScreen() = default;
+
+void LiveSessionScreen::buildLayout() {
+  auto* root = new QVBoxLayout(this);
+  root->setContentsMargins(6, 6, 6, 6);
+
+  // Header: who, state, controls.
+  auto* header = new QHBoxLayout;
+  m_title = new QLabel(this);
+  QFont tf = m_title->font();
+  tf.setPointSizeF(tf.pointSizeF() * 1.3);
+  tf.setBold(true);
+  m_title->setFont(tf);
+  const QString side = m_config.meta.side == Side::Left ? tr("left arm") : tr("right arm");
+  m_title->setText(m_config.patientLabel.isEmpty()
+                       ? tr("Live session, %1").arg(side)
+                       : tr("%1 \u2014 %2").arg(m_config.patientLabel, side));
+  m_status = new QLabel(this);
+  m_status->setAccessibleName(tr("Session status"));
+  m_record = new QPushButton(tr("&Record"), this);
+  m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
+  m_record->setToolTip(tr("Start or resume recording (Ctrl+R)"));
+  m_pause = new QPushButton(tr("&Pause"), this);
+  m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
+  m_pause->setToolTip(tr("Pause recording; the live view goes on (Ctrl+P)"));
+  m_stop = new QPushButton(tr("S&top"), this);
+  m_stop->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+  m_stop->setToolTip(tr("End the session (Ctrl+E)"));
+  m_eventLabel = new QComboBox(this);
+  m_eventLabel->setEditable(true);
+  m_eventLabel->addItems({tr("Pain"), tr("Rest"), tr("Fatigue"), tr("Compensation"), tr("Note")});
+  m_eventLabel->setAccessibleName(tr("Event label"));
+  m_mark = new QPushButton(tr("&Mark event"), this);
+  m_mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
+  m_mark->setToolTip(tr("Mark the chosen event at the current time (Ctrl+M)"));
+  for (QPushButton* b : {m_record, m_pause, m_stop, m_mark})
+    b->setAccessibleName(b->text().remove(u'&'));
+  header->addWidget(m_title, 1);
+  header->addWidget(m_status);
+  header->addSpacing(12);
+  header->addWidget(m_record);
+  header->addWidget(m_pause);
+  header->addWidget(m_stop);
+  header->addSpacing(12);
+  header->addWidget(m_eventLabel);
+  header->addWidget(m_mark);
+  root->addLayout(header);
+
+  // Banner: the problem that matters now, in words, with what to do.
+  auto* bannerRow = new QHBoxLayout;
+  m_banner = new QLabel(this);
+  m_banner->setWordWrap(true);
+  m_banner->setAutoFillBackground(true);
+  m_banner->setMargin(6);
+  m_banner->setAccessibleName(tr("Problem"));
+  m_banner->hide();
+  m_retry = new QPushButton(tr("Try &again"), this);
+  m_retry->hide();
+  bannerRow->addWidget(m_banner, 1);
+  bannerRow->addWidget(m_retry);
+  root->addLayout(bannerRow);
+  connect(m_retry, &QPushButton::clicked, this, &LiveSessionScreen::start);
+
+  // Body: 3D arm and readouts | plots; below: health, repetitions, messages.
+  auto* vertical = new QSplitter(Qt::Vertical, this);
+  auto* top = new QSplitter(Qt::Horizontal, vertical);
+  auto* left = new QWidget(top);
+  auto* leftLayout = new QVBoxLayout(left);
+  leftLayout->setContentsMargins(0, 0, 0, 0);
+  m_arm = new ui::ArmView(left);
+  m_arm->setMinimumSize(160, 120);
+  m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
+  m_readouts = new ui::AngleReadouts(left);
+  m_readouts->setColumns(3);
+  leftLayout->addWidget(m_arm, 3);
+  leftLayout->addWidget(m_readouts, 0);
+  m_plots = new ui::AnglePlotPanel(top);
+  m_plots->setWindowSeconds(m_config.windowSeconds);
+  if (m_config.targetDeg)
+    m_plots->setTarget(m_config.primaryAngle.value_or(0), m_config.targetDeg->first,
+                       m_config.targetDeg->second);
+  top->setStretchFactor(0, 2);
+  top->setStretchFactor(1, 3);
+
+  auto* bottom = new QWidget(vertical);
+  auto* bottomLayout = new QHBoxLayout(bottom);
+  bottomLayout->setContentsMargins(0, 0, 0, 0);
+  m_health = new ui::DeviceHealthPanel(bottom);
+  m_reps = new ui::RepetitionCounterWidget(bottom);
+  m_reps->setTarget(m_config.targetRepetitions);
+  m_reps->setAngleName(ui::angleDisplayName(m_config.primaryAngle.value_or(0)));
+  m_messages = new QListWidget(bottom);
+  m_messages->setAccessibleName(tr("Session messages"));
+  m_messages->setWordWrap(true);
+  bottomLayout->addWidget(m_health, 3);
+  bottomLayout->addWidget(m_reps, 1);
+  bottomLayout->addWidget(m_messages, 3);
+  vertical->setStretchFactor(0, 4);
+  vertical->setStretchFactor(1, 1);
+  root->addWidget(vertical, 1);
+
+  connect(m_record, &QPushButton::clicked, this, &LiveSessionScreen::record);
+  connect(m_pause, &QPushButton::clicked, this, &LiveSessionScreen::pause);
+  connect(m_stop, &QPushButton::clicked, this, &LiveSessionScreen::stop);
+  connect(m_mark, &QPushButton::clicked, this, &LiveSessionScreen::markEvent);
+
+  // Keyboard order: controls, then the views.
+  setTabOrder(m_record, m_pause);
+  setTabOrder(m_pause, m_stop);
+  setTabOrder(m_stop, m_eventLabel);
+  setTabOrder(m_eventLabel, m_mark);
+  setTabOrder(m_mark, m_arm);
+  setTabOrder(m_arm, m_plots->tableView());
+  setTabOrder(m_plots->tableView(), m_health->view());
+  setTabOrder(m_health->view(), m_messages);
+}
+
+void LiveSessionScreen::setDrainRate(double hz) {
+  m_drainHz = std::isfinite(hz) && hz > 0 ? std::clamp(hz, 1.0, 120.0) : 40.0;
+  m_drainTimer.setInterval(static_cast<int>(std::lround(1000.0 / m_drainHz)));
+}
+
+void LiveSessionScreen::start() {
+  if (m_state == State::Starting || m_state == State::Live || m_state == State::Recording ||
+      m_state == State::Paused || m_state == State::Stopping)
+    return;
+  showBanner({}, false);
+  m_retry->hide();
+  m_plots->clear();
+  m_health->clear();
+  m_counter.reset();
+  m_events.clear();
+  m_sessionTime = 0;
+  m_recordedSeconds = 0;
+  m_recordingSince = -1;
+  m_begun = false;
+  setState(State::Starting);
+  if (m_gate) m_gate->setRecording(false);
+  m_controller->start(m_config, m_gate);
+}
+
+void LiveSessionScreen::onStarted(const QString& error) {
+  if (!error.isEmpty()) {
+    setState(State::Failed);
+    showBanner(tr("Could not start the session: %1").arg(error), true);
+    m_retry->show();
+    addMessage(error);
+    emit sessionFailed(error);
+    return;
+  }
+  setState(State::Live);
+  m_drainTimer.start();
+  addMessage(tr("Session started"));
+  emit sessionStarted();
+  if (m_config.recordFromStart && m_target) record();
+}
+
+void LiveSessionScreen::record() {
+  if (!m_gate || (m_state != State::Live && m_state != State::Paused)) return;
+  if (!m_begun) {
+    const auto layout = m_controller->recordingLayout();
+    if (!layout) return;
+    if (const QString why = m_target->begin(layout->first, layout->second); !why.isEmpty()) {
+      showBanner(why, true);
+      addMessage(why);
+      return;
+    }
+    m_begun = true;
+    addMessage(tr("Recording to %1").arg(m_target->describe()));
+  } else {
+    addMessage(tr("Recording resumed at %1 s").arg(m_sessionTime, 0, 'f', 1));
+  }
+  m_gate->setRecording(true);
+  m_recordingSince = m_sessionTime;
+  setState(State::Recording);
+}
+
+void LiveSessionScreen::pause() {
+  if (!m_gate || m_state != State::Recording) return;
+  m_gate->setRecording(false);
+  m_recordedSeconds += m_sessionTime - m_recordingSince;
+  m_recordingSince = -1;
+  addMessage(tr("Recording paused at %1 s").arg(m_sessionTime, 0, 'f', 1));
+  setState(State::Paused);
+}
+
+void LiveSessionScreen::stop() {
+  if (m_state != State::Live && m_state != State::Recording && m_state != State::Paused &&
+      m_state != State::Starting)
+    return;
+  drain();  // what has arrived so far
+  if (m_gate) m_gate->setRecording(false);
+  if (m_recordingSince >= 0) m_recordedSeconds += m_sessionTime - m_recordingSince;
+  m_recordingSince = -1;
+  m_drainTimer.stop();
+  setState(State::Stopping);
+  m_controller->stop();
+}
+
+void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
+                                  const QString& recorderError) {
+  QString summary;
+  if (m_target && m_begun) {
+    QStringList events;
+    for (const auto& [t, label] : m_events)
+      events << QStringLiteral("%1 s: %2").arg(t, 0, 'f', 1).arg(label);
+    // Rows the gate dropped while paused were never meant for the recording.
+    const bool complete =
+        recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
+    summary =
+        m_target->finish(recordedRows, complete,
+                         events.isEmpty() ? QString() : tr("Events: %1").arg(events.join(u"; ")));
+    if (!recorderError.isEmpty())
+      summary += QStringLiteral(" ") + tr("Last recording problem: %1").arg(recorderError);
+  } else {
+    summary = tr("Session ended; nothing was recorded.");
+  }
+  addMessage(summary);
+  setState(State::Stopped);
+  emit sessionStopped(summary);
+}
+
+void LiveSessionScreen::markEvent() {
+  if (m_state != State::Live && m_state != State::Recording && m_state != State::Paused) return;
+  QString label = m_eventLabel->currentText().trimmed();
+  if (label.isEmpty()) label = tr("Event");
+  m_events.emplace_back(m_sessionTime, label);
+  m_plots->addEvent(m_sessionTime, label);
+  addMessage(tr("%1 marked at %2 s").arg(label).arg(m_sessionTime, 0, 'f', 1));
+}
+
+void LiveSessionScreen::drain() {
+  if (!m_controller->drainInto(m_rows, m_sessionEvents)) return;
+  const std::shared_ptr<session::Session>& s = m_controller->session();
+  ++m_drains;
+  if (!m_rows.empty()) {
+    m_estimates += m_rows.size();
+    m_samples.clear();
+    m_samples.reserve(m_rows.size());
+    const int primary = m_counter.primaryAngle();
+    for (const session::EstimateRow& r : m_rows) {
+      m_samples.push_back(ui::angleSample(r));
+      m_counter.add(r.t, m_samples.back().deg[static_cast<std::size_t>(primary)] * kDegToRad);
+      if (r.opticalElbow) m_marks.elbow = r.opticalElbow;
+      if (r.opticalWrist) m_marks.wrist = r.opticalWrist;
+      if (r.camElbow) m_marks.camElbow = r.camElbow;
+      if (r.camWrist) m_marks.camWrist = r.camWrist;
+      if (r.opticalElbow || r.opticalWrist || r.camElbow || r.camWrist) m_lastOptical = r.t;
+    }
+    const session::EstimateRow& last = m_rows.back();
+    m_sessionTime = last.t;
+    if (m_sessionTime - m_lastOptical > kOpticalShownSeconds) m_marks = {};
+    m_plots->append(m_samples);
+    m_readouts->setSample(&m_samples.back());
+    m_arm->setPose(last.th);
+    m_arm->setOptical(m_marks);
+    m_reps->showCount(m_counter);
+  }
+  for (const std::string& e : m_sessionEvents) addMessage(QString::fromStdString(e));
+  m_plots->refreshIfChanged();
+  m_arm->updateIfChanged();
+  if (m_drains % kStatsEveryTicks == 0) {
+    m_readouts->refreshIfChanged();
+    m_health->setStats(s->stats());
+    if (m_gate && m_state == State::Recording && !m_gate->recording()) {
+      // The recording could not be opened: say why; the session goes on.
+      const QString why = m_gate->openError();
+      showBanner(tr("Recording stopped: %1").arg(why), true);
+      m_recordedSeconds += m_sessionTime - m_recordingSince;
+      m_recordingSince = -1;
+      setState(State::Paused);
+    }
+    updateStatus();
+  }
+}
+
+void LiveSessionScreen::showBanner(const QString& text, bool error) {
+  m_banner->setText(text);
+  m_banner->setVisible(!text.isEmpty());
+  QPalette p = palette();
+  const bool dark = p.color(QPalette::Window).lightness() < 128;
+  if (error) {
+    p.setColor(QPalette::Window, dark ? QColor(0x5a, 0x1f, 0x1f) : QColor(0xfd, 0xe2, 0xe2));
+    p.setColor(QPalette::WindowText, dark ? QColor(0xff, 0xe0, 0xe0) : QColor(0x6b, 0x0c, 0x0c));
+  }
+  m_banner->setPalette(p);
+}
+
+QString LiveSessionScreen::bannerText() const {
+  return m_banner->isVisible() ? m_banner->text() : QString();
+}
+
+void LiveSessionScreen::addMessage(const QString& text) {
+  m_messages->insertItem(0, QStringLiteral("[%1] %2").arg(clock(m_sessionTime), text));
+  while (m_messages->count() > kMaxMessages) delete m_messages->takeItem(m_messages->count() - 1);
+}
+
+void LiveSessionScreen::setState(State s) {
+  if (m_state == s) return;
+  m_state = s;
+  updateButtons();
+  updateStatus();
+  emit stateChanged(s);
+}
+
+void LiveSessionScreen::updateButtons() {
+  const bool running =
+      m_state == State::Live || m_state == State::Recording || m_state == State::Paused;
+  const bool canRecord = m_gate && (m_state == State::Live || m_state == State::Paused);
+  m_record->setEnabled(canRecord);
+  m_record->setToolTip(
+      m_gate ? tr("Start or resume recording to %1 (Ctrl+R)").arg(m_target->describe())
+             : tr("This session is not recorded"));
+  m_pause->setEnabled(m_gate && m_state == State::Recording);
+  m_stop->setEnabled(running || m_state == State::Starting);
+  m_mark->setEnabled(running);
+}
+
+void LiveSessionScreen::updateStatus() {
+  QString text;
+  switch (m_state) {
+    case State::Idle:
+      text = tr("Not started");
+      break;
+    case State::Starting:
+      text = tr("Starting\u2026");
+      break;
+    case State::Live:
+      text = tr("Live %1 (not recording)").arg(clock(m_sessionTime));
+      break;
+    case State::Recording:
+      text = tr("\u25cf Recording %1")
+                 .arg(clock(m_recordedSeconds + m_sessionTime - m_recordingSince));
+      break;
+    case State::Paused:
+      text = tr("Paused (%1 recorded)").arg(clock(m_recordedSeconds));
+      break;
+    case State::Stopping:
+      text = tr("Stopping\u2026");
+      break;
+    case State::Stopped:
+      text = tr("Ended");
+      break;
+    case State::Failed:
+      text = tr("Not running");
+      break;
+  }
+  m_status->setText(text);
+}
+
+}  // namespace armtrack::app::gui

@@ -1,0 +1,143 @@
+// The live session screen: the 3D arm, the joint-angle plots with their table, large readouts,
+// the repetition counter, device health and messages around a running Session; Record, Pause,
+// Stop and event markers. docs/gui.md describes it.
+#pragma once
+
+#include <QTimer>
+#include <QWidget>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "app/gui/live/GatedRecordingSink.h"
+#include "app/gui/live/LiveSessionConfig.h"
+#include "app/gui/live/RecordingTarget.h"
+#include "app/gui/live/SessionController.h"
+#include "core/metrics/RepetitionCounter.h"
+#include "ui/AngleTrace.h"
+#include "ui/ArmView.h"
+
+class QComboBox;
+class QLabel;
+class QListWidget;
+class QPushButton;
+
+namespace armtrack::ui {
+class AnglePlotPanel;
+class AngleReadouts;
+class DeviceHealthPanel;
+class RepetitionCounterWidget;
+}  // namespace armtrack::ui
+
+namespace armtrack::app::gui {
+
+/// The screen drains the session on a timer (drainRate(), 40 Hz by default): estimates go to
+/// the plots, readouts, counter and 3D view in batches; messages to the list; figures to the
+/// device health a few times a second. Nothing on the GUI thread waits for a device, the disk or
+/// the database: the session starts and stops in SessionController's thread, rows are written
+/// by the session's recorder thread. (Record and Stop each make one short call into the
+/// records' store, which lives on this thread.) GUI thread only.
+class LiveSessionScreen : public QWidget {
+  Q_OBJECT
+ public:
+  /// registry: loaded plugins, outlives the screen. target: where Record writes (nullptr: the
+  /// session is only watched; Record is disabled).
+  LiveSessionScreen(const PluginRegistry& registry, LiveSessionConfig config,
+                    std::shared_ptr<RecordingTarget> target = nullptr, QWidget* parent = nullptr);
+  ~LiveSessionScreen() override;
+
+  enum class State { Idle, Starting, Live, Recording, Paused, Stopping, Stopped, Failed };
+  State state() const { return m_state; }
+  /// The newest estimate's session time (s).
+  double sessionTime() const { return m_sessionTime; }
+  /// The last problem shown in the banner (empty when none).
+  QString bannerText() const;
+  /// Event markers so far: time (s) and label.
+  const std::vector<std::pair<double, QString>>& events() const { return m_events; }
+  const RepetitionCounter& repetitionCounter() const { return m_counter; }
+
+  void setDrainRate(double hz);
+  double drainRate() const { return m_drainHz; }
+  /// Timer ticks that drained the session, and estimates drained (for tests and the benchmark).
+  std::uint64_t drains() const { return m_drains; }
+  std::uint64_t estimatesDrained() const { return m_estimates; }
+
+  ui::ArmView* armView() const { return m_arm; }
+  ui::AnglePlotPanel* plots() const { return m_plots; }
+  ui::AngleReadouts* readouts() const { return m_readouts; }
+  ui::DeviceHealthPanel* health() const { return m_health; }
+  ui::RepetitionCounterWidget* repetitions() const { return m_reps; }
+  QListWidget* messages() const { return m_messages; }
+  QPushButton* recordButton() const { return m_record; }
+  QPushButton* pauseButton() const { return m_pause; }
+  QPushButton* stopButton() const { return m_stop; }
+  QPushButton* markButton() const { return m_mark; }
+
+ public slots:
+  /// Starts the session (asynchronously: sessionStarted() or sessionFailed() follows).
+  void start();
+  /// Starts or resumes recording.
+  void record();
+  /// Pauses recording (the session goes on; rows are not recorded meanwhile).
+  void pause();
+  /// Ends the session (asynchronously: sessionStopped() follows).
+  void stop();
+  /// Marks an event now, labelled with the event box's text.
+  void markEvent();
+
+ signals:
+  void sessionStarted();
+  void sessionFailed(const QString& message);
+  /// The session has ended; summary says what was recorded where.
+  void sessionStopped(const QString& summary);
+  void stateChanged(armtrack::app::gui::LiveSessionScreen::State state);
+
+ private:
+  void buildLayout();
+  void setState(State s);
+  void drain();
+  void showBanner(const QString& text, bool error);
+  void addMessage(const QString& text);
+  void onStarted(const QString& error);
+  void onStopped(quint64 recordedRows, quint64 rowsToRecord, const QString& recorderError);
+  void updateButtons();
+  void updateStatus();
+
+  const PluginRegistry& m_registry;
+  LiveSessionConfig m_config;
+  std::shared_ptr<RecordingTarget> m_target;
+  std::shared_ptr<RecordingGate> m_gate;
+  SessionController* m_controller;
+  State m_state = State::Idle;
+  bool m_begun = false;  // the recording target was begun
+  QTimer m_drainTimer;
+  double m_drainHz = 40.0;
+  std::uint64_t m_drains = 0, m_estimates = 0;
+  double m_sessionTime = 0.0;
+  double m_lastOptical = -1e9;
+  double m_recordedSeconds = 0.0, m_recordingSince = -1.0;
+  std::vector<session::EstimateRow> m_rows;
+  std::vector<ui::AngleSample> m_samples;
+  std::vector<std::string> m_sessionEvents;
+  std::vector<std::pair<double, QString>> m_events;
+  ui::OpticalMarks m_marks;
+  RepetitionCounter m_counter;
+
+  ui::ArmView* m_arm = nullptr;
+  ui::AnglePlotPanel* m_plots = nullptr;
+  ui::AngleReadouts* m_readouts = nullptr;
+  ui::DeviceHealthPanel* m_health = nullptr;
+  ui::RepetitionCounterWidget* m_reps = nullptr;
+  QListWidget* m_messages = nullptr;
+  QLabel* m_title = nullptr;
+  QLabel* m_status = nullptr;
+  QLabel* m_banner = nullptr;
+  QPushButton* m_retry = nullptr;
+  QPushButton* m_record = nullptr;
+  QPushButton* m_pause = nullptr;
+  QPushButton* m_stop = nullptr;
+  QPushButton* m_mark = nullptr;
+  QComboBox* m_eventLabel = nullptr;
+};
+
+}  // namespace armtrack::app::gui

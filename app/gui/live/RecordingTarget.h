@@ -1,0 +1,76 @@
+// Where the live screen records when the user presses Record: a recording file (the open CSV
+// format) or the clinical records. The session's rows reach it through a gate that drops them
+// while recording is paused (GatedRecordingSink.h).
+#pragma once
+
+#include <QString>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+
+#include "core/io/Recording.h"
+#include "core/storage/DatabaseUrl.h"
+
+namespace armtrack::storage {
+class ClinicalStore;
+}
+
+namespace armtrack::app::gui {
+
+class RecordingTarget {
+ public:
+  virtual ~RecordingTarget() = default;
+  /// Where, in words, for the screen ("recording.csv", "the records of patient P01").
+  virtual QString describe() const = 0;
+  /// GUI thread, when Record is first pressed: what must happen before rows flow (the records:
+  /// the session's row, one short insert). Returns an empty string, or what is wrong.
+  virtual QString begin(const RecordingMeta& meta, const RecordingColumns& columns) = 0;
+  /// The session's recorder thread, with the first row to record: opens the sink. Throws
+  /// RecordingError with a message a user can act on.
+  virtual std::unique_ptr<RecordingSink> open(const RecordingMeta& meta,
+                                              const RecordingColumns& columns) = 0;
+  /// GUI thread, after the session has stopped (the sink is closed): rows recorded, whether
+  /// every row reached the storage, and event markers as text. Returns a line for the user.
+  virtual QString finish(std::uint64_t rows, bool complete, const QString& events) = 0;
+};
+
+/// A recording file; never replaces one that exists (the user picks another name).
+class CsvRecordingTarget final : public RecordingTarget {
+ public:
+  explicit CsvRecordingTarget(std::filesystem::path csv) : m_csv(std::move(csv)) {}
+  QString describe() const override;
+  QString begin(const RecordingMeta& meta, const RecordingColumns& columns) override;
+  std::unique_ptr<RecordingSink> open(const RecordingMeta& meta,
+                                      const RecordingColumns& columns) override;
+  QString finish(std::uint64_t rows, bool complete, const QString& events) override;
+
+ private:
+  std::filesystem::path m_csv;
+};
+
+/// A new session of a patient in the clinical records, as `armtrack-cli record --db` makes
+/// one: begun on the store's thread (the GUI's, where the signed-in store lives), its rows
+/// committed by a DatabaseRecordingSink on the recorder thread, finished as complete or
+/// interrupted, event markers saved in its notes.
+class DatabaseRecordingTarget final : public RecordingTarget {
+ public:
+  /// store: signed in, on the GUI thread; url: its database (Database::url()), which the sink
+  /// opens again on the recorder thread.
+  DatabaseRecordingTarget(storage::ClinicalStore& store, storage::DatabaseUrl url,
+                          QString patientCode, QString protocolName = {});
+  QString describe() const override;
+  QString begin(const RecordingMeta& meta, const RecordingColumns& columns) override;
+  std::unique_ptr<RecordingSink> open(const RecordingMeta& meta,
+                                      const RecordingColumns& columns) override;
+  QString finish(std::uint64_t rows, bool complete, const QString& events) override;
+  /// The session's id once begun (0 before).
+  qint64 sessionId() const { return m_sessionId; }
+
+ private:
+  storage::ClinicalStore& m_store;
+  storage::DatabaseUrl m_url;
+  QString m_patient, m_protocol;
+  qint64 m_sessionId = 0;
+};
+
+}  // namespace armtrack::app::gui

@@ -1,0 +1,30 @@
+// The sensor-to-segment calibration protocol of docs/calibration.md as the screen guides it:
+// what to do in each phase, for how long, and the pose to reach. The times are those of the
+// simulated protocol (core/simulation CalibrationProtocolTrajectory, which the virtual arm plays
+// with trajectory=calibration); test_calibration_pages holds the two together.
+#pragma once
+
+#include <QString>
+#include <array>
+#include <optional>
+#include <vector>
+
+namespace armtrack::app::gui {
+
+struct CalibrationPhase {
+  double startS = 0, endS = 0;  ///< protocol time (s)
+  bool hold = false;            ///< keep still (true) or move
+  QString title;                ///< short: "Start pose"
+  QString instruction;          ///< what the patient does
+  /// The pose to reach or hold, joint angles [th0 th1 th2 th4 th5] in degrees (the movements
+  /// have none: they go back and forth).
+  std::optional<std::array<double, 5>> poseDeg;
+};
+
+/// The phases in time order, from 0 to protocolSeconds().
+const std::vector<CalibrationPhase>& calibrationPhases();
+double protocolSeconds();
+/// The phase at protocol time t (s); the last one after the end, the first before 0.
+const CalibrationPhase& phaseAt(double t);
+
+}  // namespace armtrack::app::gui

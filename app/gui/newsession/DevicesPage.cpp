@@ -1,0 +1,224 @@
+#include "app/gui/newsession/DevicesPage.h"
+
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QListWidget>
+#include <QPushButton>
+#include <QScrollArea>
+#include <QVBoxLayout>
+
+#include "app/plugins/PluginRegistry.h"
+#include "devices/api/Options.h"
+#include "ui/AngleReadouts.h"
+#include "ui/AngleTrace.h"
+#include "ui/DeviceHealthPanel.h"
+#include "ui/DeviceOptionsForm.h"
+
+namespace armtrack::app::gui {
+
+namespace {
+constexpr int kOptionsRole = Qt::UserRole + 1;  // the plugin's options text
+constexpr double kPassAfterSeconds = 2.0;       // every stream streaming this long: passed
+constexpr double kGiveUpSeconds = 15.0;
+}  // namespace
+
+DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base, QWidget* parent)
+    : QWidget(parent),
+      m_registry(registry),
+      m_base(std::move(base)),
+      m_controller(new SessionController(registry, this)) {
+  setAccessibleName(tr("Devices"));
+  auto* root = new QHBoxLayout(this);
+
+  auto* left = new QVBoxLayout;
+  auto* listLabel = new QLabel(tr("&Devices found (tick the ones to use):"), this);
+  m_plugins = new QListWidget(this);
+  m_plugins->setAccessibleName(tr("Device plugins"));
+  listLabel->setBuddy(m_plugins);
+  for (const PluginRecord& r : registry.records()) {
+    if (!r.loaded) continue;
+    devices::DevicePlugin* p = registry.plugin(r.name);
+    auto* item = new QListWidgetItem(r.name, m_plugins);
+    item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
+    item->setCheckState(Qt::Unchecked);
+    item->setToolTip(p ? p->description() : QString());
+    item->setData(kOptionsRole, QString());
+  }
+  QStringList refused;
+  for (const PluginRecord& r : registry.records())
+    if (!r.loaded) refused << QStringLiteral("%1: %2").arg(r.file, r.refusal);
+  left->addWidget(listLabel);
+  left->addWidget(m_plugins, 1);
+  if (!refused.isEmpty()) {
+    auto* refusedLabel =
+        new QLabel(tr("Not loaded: %1").arg(refused.join(QStringLiteral("; "))), this);
+    refusedLabel->setWordWrap(true);
+    left->addWidget(refusedLabel);
+  }
+  root->addLayout(left, 1);
+
+  auto* middle = new QVBoxLayout;
+  m_description = new QLabel(this);
+  m_description->setWordWrap(true);
+  m_form = new ui::DeviceOptionsForm(this);
+  auto* scroll = new QScrollArea(this);
+  scroll->setWidgetResizable(true);
+  scroll->setWidget(m_form);
+  middle->addWidget(m_description);
+  middle->addWidget(scroll, 1);
+  root->addLayout(middle, 2);
+
+  auto* right = new QVBoxLayout;
+  m_check = new QPushButton(tr("&Check connection"), this);
+  m_check->setAccessibleName(tr("Check connection"));
+  m_status = new QLabel(tr("Choose the devices, then check their connection."), this);
+  m_status->setWordWrap(true);
+  m_status->setAccessibleName(tr("Connection check"));
+  m_signal = new ui::AngleReadouts(this);
+  m_signal->setColumns(2);
+  m_health = new ui::DeviceHealthPanel(this);
+  right->addWidget(m_check);
+  right->addWidget(m_status);
+  right->addWidget(m_signal);
+  right->addWidget(m_health, 1);
+  root->addLayout(right, 2);
+
+  connect(m_plugins, &QListWidget::currentItemChanged, this,
+          [this](QListWidgetItem* current, QListWidgetItem*) { showPlugin(current); });
+  connect(m_plugins, &QListWidget::itemChanged, this, [this] { emit completeChanged(); });
+  connect(m_form, &ui::DeviceOptionsForm::changed, this, [this] {
+    if (m_shown) m_shown->setData(kOptionsRole, m_form->optionsText());
+  });
+  connect(m_check, &QPushButton::clicked, this, [this] {
+    if (m_checking)
+      stopCheck();
+    else
+      startCheck();
+  });
+  connect(m_controller, &SessionController::started, this, [this](const QString& error) {
+    if (!error.isEmpty()) {
+      finishCheck(tr("The devices could not start: %1").arg(error));
+      return;
+    }
+    m_timer.start(100);
+  });
+  connect(m_controller, &SessionController::deviceStateChanged, m_health,
+          &ui::DeviceHealthPanel::setDeviceState);
+  connect(&m_timer, &QTimer::timeout, this, &DevicesPage::drain);
+  if (m_plugins->count() > 0) m_plugins->setCurrentRow(0);
+}
+
+void DevicesPage::showPlugin(QListWidgetItem* item) {
+  m_shown = nullptr;  // while the form is rebuilt, edits belong to no plugin
+  if (!item) return;
+  devices::DevicePlugin* p = m_registry.plugin(item->text());
+  m_description->setText(p ? p->description() : QString());
+  m_form->setOptionsHelp(p ? p->optionsHelp() : QString());
+  m_form->setValues(devices::Options::parse(item->data(kOptionsRole).toString()));
+  m_shown = item;
+}
+
+QStringList DevicesPage::devices() const {
+  QStringList specs;
+  for (int i = 0; i < m_plugins->count(); ++i) {
+    const QListWidgetItem* item = m_plugins->item(i);
+    if (item->checkState() != Qt::Checked) continue;
+    const QString options = item->data(kOptionsRole).toString();
+    specs << (options.isEmpty() ? item->text() : item->text() + QLatin1Char(':') + options);
+  }
+  return specs;
+}
+
+void DevicesPage::setDevices(const QStringList& specs) {
+  QStringList missing;
+  for (const QString& spec : specs) {
+    const qsizetype colon = spec.indexOf(u':');
+    const QString name = spec.left(colon);
+    const auto found = m_plugins->findItems(name, Qt::MatchExactly);
+    if (found.isEmpty()) {
+      missing << name;
+      continue;
+    }
+    found.front()->setCheckState(Qt::Checked);
+    found.front()->setData(kOptionsRole, colon < 0 ? QString() : spec.mid(colon + 1));
+    if (found.front() == m_plugins->currentItem()) showPlugin(found.front());
+  }
+  if (!missing.isEmpty())
+    m_status->setText(tr("Not found: %1. Check the plugin folders in the settings.")
+                          .arg(missing.join(QStringLiteral(", "))));
+  emit completeChanged();
+}
+
+bool DevicesPage::isComplete() const {
+  return !devices().isEmpty();
+}
+
+QString DevicesPage::statusText() const {
+  return m_status->text();
+}
+
+void DevicesPage::startCheck() {
+  if (m_checking) return;
+  LiveSessionConfig c = m_base;
+  c.devices = devices();
+  if (c.devices.isEmpty()) {
+    m_status->setText(tr("Tick at least one device first."));
+    return;
+  }
+  m_checking = true;
+  m_checkPassed = false;
+  m_okSince = -1.0;
+  m_health->clear();
+  m_signal->setSample(nullptr);
+  m_check->setText(tr("Stop &check"));
+  m_status->setText(tr("Starting the devices\u2026"));
+  m_controller->start(c, nullptr);
+}
+
+void DevicesPage::drain() {
+  std::vector<std::string> events;
+  if (!m_controller->drainInto(m_rows, events)) return;
+  const auto& s = m_controller->session();
+  if (!m_rows.empty()) {
+    const ui::AngleSample last = ui::angleSample(m_rows.back());
+    m_signal->setSample(&last);
+  }
+  const session::SessionStats st = s->stats();
+  m_health->setStats(st);
+  const ui::HealthTracker& h = m_health->tracker();
+  if (h.allOk()) {
+    if (m_okSince < 0) m_okSince = st.elapsed;
+    if (st.elapsed - m_okSince >= kPassAfterSeconds) {
+      m_checkPassed = true;
+      QStringList rates;
+      for (const ui::StreamHealthRow& r : h.rows())
+        rates << QStringLiteral("%1 %2 %3 Hz").arg(r.device, r.stream).arg(r.rateHz, 0, 'f', 0);
+      finishCheck(tr("Connected: %1.").arg(rates.join(QStringLiteral(", "))));
+      return;
+    }
+    m_status->setText(tr("Receiving from every device\u2026"));
+  } else {
+    m_okSince = -1.0;
+    m_status->setText(h.summary());
+    if (st.elapsed > kGiveUpSeconds)
+      finishCheck(tr("Not every device is streaming: %1. Check that each is switched on, "
+                     "charged and within range, then check again.")
+                      .arg(h.summary()));
+  }
+}
+
+void DevicesPage::stopCheck() {
+  if (!m_checking) return;
+  finishCheck(tr("Check stopped."));
+}
+
+void DevicesPage::finishCheck(const QString& message) {
+  m_timer.stop();
+  m_controller->stop();
+  m_checking = false;
+  m_check->setText(tr("&Check connection"));
+  m_status->setText(message);
+  emit checkFinished(m_checkPassed, message);
+}
+
+}  // namespace armtrack::app::gui

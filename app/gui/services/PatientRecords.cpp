@@ -1,0 +1,121 @@
+#include "app/gui/services/PatientRecords.h"
+
+#include <QCoreApplication>
+#include <QDate>
+#include <QJsonDocument>
+#include <QRegularExpression>
+#include <algorithm>
+#include <cmath>
+
+#include "app/clinical/Outputs.h"
+
+namespace armtrack::gui {
+
+namespace {
+
+QString tr(const char* text) {
+  return QCoreApplication::translate("armtrack::gui::PatientRecords", text);
+}
+
+struct LengthKey {
+  const char* key;
+  std::optional<double> SegmentLengths::*field;
+};
+constexpr LengthKey kLengthKeys[] = {
+    {"upper_arm_m", &SegmentLengths::upperArmM},
+    {"forearm_m", &SegmentLengths::forearmM},
+    {"upper_arm_strap_m", &SegmentLengths::upperStrapM},
+    {"forearm_strap_m", &SegmentLengths::forearmStrapM},
+};
+
+}  // namespace
+
+SegmentLengths SegmentLengths::fromJson(const QString& json, int* ignored) {
+  SegmentLengths s;
+  int bad = 0;
+  s.others = QJsonDocument::fromJson(json.toUtf8()).object();
+  for (const LengthKey& k : kLengthKeys) {
+    const QString key = QString::fromLatin1(k.key);
+    if (!s.others.contains(key)) continue;
+    const QJsonValue v = s.others.take(key);
+    if (v.isDouble() && std::isfinite(v.toDouble()) && v.toDouble() > 0)
+      s.*k.field = v.toDouble();
+    else
+      ++bad;
+  }
+  if (ignored) *ignored = bad;
+  return s;
+}
+
+QString SegmentLengths::toJson() const {
+  QJsonObject o = others;
+  for (const LengthKey& k : kLengthKeys)
+    if (const auto& v = this->*k.field) o.insert(QString::fromLatin1(k.key), *v);
+  return QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));
+}
+
+PatientOverview loadPatientOverview(storage::ClinicalStore& store, const QString& code) {
+  PatientOverview o;
+  o.patient = store.patient(code);
+  o.programme = store.programme(code);
+  o.protocols = store.listProtocols();
+  o.sessions = store.listSessions(code);
+  std::sort(o.sessions.begin(), o.sessions.end(), [](const auto& a, const auto& b) {
+    return a.startedAt != b.startedAt ? a.startedAt > b.startedAt : a.id > b.id;
+  });
+  reports::ProgressReportData progress = clinical::progressReportData(store, code);
+  for (const reports::ProgressSession& p : progress.sessions)
+    if (std::any_of(p.romRad.begin(), p.romRad.end(), [](const auto& v) { return v.has_value(); }))
+      o.progress.push_back(p);
+  std::sort(o.progress.begin(), o.progress.end(),
+            [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
+  return o;
+}
+
+QString patientProblem(const storage::Patient& p, const QDate& today, QString* field) {
+  const auto fail = [&](const char* name, const QString& text) {
+    if (field) *field = QString::fromLatin1(name);
+    return text;
+  };
+  static const QRegularExpression codeRe(QStringLiteral("^[A-Za-z0-9][A-Za-z0-9_-]{0,31}$"));
+  if (p.code.trimmed().isEmpty())
+    return fail("code", tr("Give the patient a code, e.g. P001: it names the patient in files "
+                           "and exports."));
+  if (!codeRe.match(p.code).hasMatch())
+    return fail("code", tr("The code may hold letters, digits, '-' and '_' (at most 32, starting "
+                           "with a letter or digit): \"%1\" does not.")
+                            .arg(p.code));
+  if (p.name.trimmed().isEmpty()) return fail("name", tr("Give the patient's name."));
+  if (!p.birthDate.isEmpty()) {
+    const QDate d = QDate::fromString(p.birthDate, Qt::ISODate);
+    if (!d.isValid()) return fail("birthDate", tr("The birth date is not a date."));
+    if (d > today) return fail("birthDate", tr("The birth date lies in the future."));
+    if (d.year() < 1900) return fail("birthDate", tr("The birth date is before 1900."));
+  }
+  const SegmentLengths s = SegmentLengths::fromJson(p.segmentLengthsJson);
+  const auto check = [&](const std::optional<double>& v, double lo, double hi, const char* name,
+                         const QString& what) -> QString {
+    if (v && (*v < lo || *v > hi))
+      return fail(name, tr("The %1 of %2 cm is outside %3-%4 cm: check the measurement.")
+                            .arg(what)
+                            .arg(*v * 100, 0, 'f', 1)
+                            .arg(lo * 100, 0, 'f', 0)
+                            .arg(hi * 100, 0, 'f', 0));
+    return {};
+  };
+  for (const QString& problem :
+       {check(s.upperArmM, 0.15, 0.50, "upperArm", tr("upper arm length")),
+        check(s.forearmM, 0.12, 0.45, "forearm", tr("forearm length")),
+        check(s.upperStrapM, 0.02, 0.45, "upperStrap", tr("upper-arm IMU distance")),
+        check(s.forearmStrapM, 0.02, 0.40, "forearmStrap", tr("forearm IMU distance"))})
+    if (!problem.isEmpty()) return problem;
+  if (s.upperArmM && s.upperStrapM && *s.upperStrapM >= *s.upperArmM)
+    return fail("upperStrap", tr("The upper-arm IMU sits farther from the shoulder than the "
+                                 "elbow is: check both measurements."));
+  if (s.forearmM && s.forearmStrapM && *s.forearmStrapM >= *s.forearmM)
+    return fail("forearmStrap", tr("The forearm IMU sits farther from the elbow than the wrist "
+                                   "is: check both measurements."));
+  return {};
+}
+
+}  // namespace armtrack::gui

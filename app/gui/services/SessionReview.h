@@ -1,0 +1,45 @@
+// A stored session as the review screen shows it: its record, the patient, the protocol, the
+// arm (sidecar), the newest analysis (estimates and metrics) and the patient's other sessions
+// to compare with. Loaded in one go on the records thread.
+#pragma once
+
+#include <QJsonObject>
+#include <optional>
+#include <vector>
+
+#include "core/storage/SessionAnalysis.h"
+
+namespace armtrack::gui {
+
+struct ReviewData {
+  storage::SessionInfo info;
+  storage::Patient patient;
+  std::optional<storage::Protocol> protocol;
+  RecordingMeta meta;                               ///< geometry, side, up, camera
+  std::optional<storage::StoredAnalysis> analysis;  ///< the newest; none: never analysed
+  std::optional<QJsonObject> metrics;  ///< the newest metrics with "angles" (latestMetricsJson)
+  int versions = 0;                    ///< estimate versions stored
+  std::vector<storage::SessionInfo> others;  ///< the patient's other sessions, newest first
+};
+
+/// Throws StorageError (NotFound, Corrupt).
+ReviewData loadReview(storage::ClinicalStore& store, qint64 sessionId);
+
+/// One repetition of the metrics JSON, for the table.
+struct RepetitionRow {
+  double startS = 0, peakS = 0, endS = 0;
+  double excursionDeg = 0;
+  bool partial = false;
+  std::optional<double> romDeg;            ///< of the primary angle
+  std::optional<double> peakVelocityDegS;  ///< of the primary angle
+  std::optional<double> sparc, ldlj;
+};
+
+/// The repetitions of a metrics JSON (docs/storage.md, "Metrics"); a malformed entry is left
+/// out and counted in *skipped.
+std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipped = nullptr);
+
+/// The index of the row at or before t in times (ascending); 0 for t before the first.
+std::size_t rowAt(const std::vector<double>& times, double t);
+
+}  // namespace armtrack::gui

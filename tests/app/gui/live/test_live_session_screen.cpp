@@ -1,0 +1,358 @@
+// The live session screen against real virtual-arm sessions under Xvfb: the arm moves and the
+// plots fill; a device that drops out turns the health red while the session goes on, and green
+// again; record, pause and stop write a CSV or a session in the clinical records; a session that
+// cannot start says why; keys drive every control.
+#include <QListWidget>
+#include <QPushButton>
+#include <QTableView>
+#include <QTemporaryDir>
+#include <cmath>
+
+#include "app/gui/live/LiveSessionScreen.h"
+#include "app/plugins/PluginRegistry.h"
+#include "core/storage/ClinicalStore.h"
+#include "core/storage/Database.h"
+#include "tests/support/GuiTestMain.h"
+#include "ui/AnglePlotPanel.h"
+#include "ui/AngleReadouts.h"
+#include "ui/DeviceHealthPanel.h"
+
+using namespace armtrack;
+using namespace armtrack::app;
+using namespace armtrack::app::gui;
+using State = LiveSessionScreen::State;
+
+namespace {
+
+gui::LiveSessionConfig config(QStringList devices) {
+  gui::LiveSessionConfig c;
+  c.devices = std::move(devices);
+  c.patientLabel = QStringLiteral("P01 Test Patient");
+  c.primaryAngle = 0;
+  c.targetDeg = std::make_pair(20.0, 90.0);
+  c.targetRepetitions = 10;
+  return c;
+}
+
+/// Waits (processing events) until the screen has drained estimates up to session time t.
+bool waitForSessionTime(const LiveSessionScreen& s, double t, int timeoutMs = 15000) {
+  return QTest::qWaitFor([&] { return s.sessionTime() >= t; }, timeoutMs);
+}
+
+int rowOf(const ui::HealthTracker& h, const QString& stream) {
+  for (std::size_t i = 0; i < h.rows().size(); ++i)
+    if (h.rows()[i].stream == stream) return static_cast<int>(i);
+  return -1;
+}
+
+bool hasBluePixels(const QImage& img) {
+  int n = 0;
+  for (int y = 0; y < img.height(); y += 3)
+    for (int x = 0; x < img.width(); x += 3) {
+      const QColor c(img.pixel(x, y));
+      n += c.hsvHue() >= 200 && c.hsvHue() <= 235 && c.hsvSaturation() > 120 && c.value() > 40;
+    }
+  return n > 50;
+}
+
+}  // namespace
+
+class TestLiveSessionScreen : public QObject {
+  Q_OBJECT
+
+  PluginRegistry m_registry;
+
+ private slots:
+  void initTestCase() {
+    m_registry.load({QStringLiteral(ARMTRACK_PLUGIN_DIR)});
+    QVERIFY2(m_registry.plugin(QStringLiteral("virtual-arm")), "virtual-arm plugin not built");
+  }
+
+  void demoSessionMovesTheArmAndFillsThePlots() {
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()));
+    screen.resize(1280, 800);
+    screen.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&screen));
+    QSignalSpy started(&screen, &LiveSessionScreen::sessionStarted);
+    screen.start();
+    QCOMPARE(screen.state(), State::Starting);
+    QVERIFY(started.wait(10000));
+    QCOMPARE(screen.state(), State::Live);
+    QVERIFY(!screen.recordButton()->isEnabled());  // no recording target
+    QVERIFY(waitForSessionTime(screen, 1.0));
+    const JointVector first = screen.armView()->pose();
+    QVERIFY(waitForSessionTime(screen, 3.0));
+    const JointVector later = screen.armView()->pose();
+    QVERIFY2((later - first).norm() > 0.05, "the arm does not move");
+    // Estimates arrive at the IMU rate and are drained in batches, not one by one.
+    QVERIFY(screen.estimatesDrained() > 2000);
+    QVERIFY(screen.drains() < screen.estimatesDrained() / 10);
+    QVERIFY(screen.plots()->trace().samples().size() > 2000);
+    QVERIFY(screen.plots()->redraws() > 20);
+    QVERIFY(screen.readouts()->valueText(3) != QStringLiteral("\u2013"));
+    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 5000);
+    QCOMPARE(screen.health()->tracker().rows().size(), std::size_t{5});  // 4 sensors + truth
+    QVERIFY(screen.bannerText().isEmpty());
+    const QImage shot = test::grabFromScreen(&screen);
+    test::saveScreenshot(shot, QStringLiteral("live_session"));
+    QVERIFY(hasBluePixels(test::grabFromScreen(screen.armView())));
+    // The plot follows the session: its window ends at the newest estimate.
+    QVERIFY(std::abs(screen.plots()->trace().lastTime() - screen.sessionTime()) < 1e-9);
+    QCOMPARE(screen.plots()->timeSpan().second, 20.0);  // the first window, until 20 s
+    QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
+    screen.stop();
+    QVERIFY(stopped.wait(15000));
+    QCOMPARE(screen.state(), State::Stopped);
+  }
+
+  void deviceDropsOutTurnsRedAndRecovers() {
+    // The Kinect, a device of its own, goes away from 2 s to 5 s.
+    LiveSessionScreen screen(m_registry,
+                             config({QStringLiteral("virtual-arm:sensors=upper+forearm"),
+                                     QStringLiteral("virtual-arm:sensors=kinect,disappear=2+3")}));
+    screen.resize(1100, 700);
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 5000);
+    const int kinect = rowOf(screen.health()->tracker(), QStringLiteral("kinect"));
+    if (kinect < 0)
+      for (const auto& r : screen.health()->tracker().rows()) qWarning() << r.device << r.stream;
+    QVERIFY(kinect >= 0);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        screen.health()->tracker().rows()[static_cast<std::size_t>(kinect)].level ==
+            ui::HealthLevel::Down,
+        6000);
+    QVERIFY2(screen.bannerText().contains(QStringLiteral("kinect")),
+             qPrintable(screen.bannerText()));
+    test::saveScreenshot(test::grabFromScreen(&screen), QStringLiteral("live_session_dropout"));
+    // The session goes on meanwhile: the IMUs keep the estimates coming.
+    const std::uint64_t before = screen.estimatesDrained();
+    QTest::qWait(500);
+    QVERIFY(screen.estimatesDrained() > before + 300);
+    QCOMPARE(screen.state(), State::Live);
+    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 8000);
+    QVERIFY(screen.bannerText().isEmpty());
+    bool told = false;
+    for (int i = 0; i < screen.messages()->count(); ++i)
+      told |= screen.messages()->item(i)->text().contains(QStringLiteral("link lost"));
+    QVERIFY(told);
+    screen.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
+  }
+
+  void streamDropoutWithinADevice() {
+    LiveSessionScreen screen(
+        m_registry,
+        config({QStringLiteral("virtual-arm:sensors=upper+forearm+kinect,dropout=kinect@1.5+2")}));
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        !screen.health()->tracker().allOk() &&
+            screen.health()->tracker().summary().contains(QStringLiteral("kinect")),
+        6000);
+    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 8000);
+    screen.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
+  }
+
+  void recordPauseRecordStopIntoACsv() {
+    QTemporaryDir dir;
+    const std::filesystem::path csv = dir.filePath(QStringLiteral("live.csv")).toStdString();
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()),
+                             std::make_shared<CsvRecordingTarget>(csv));
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QVERIFY(screen.recordButton()->isEnabled());
+    QVERIFY(!screen.pauseButton()->isEnabled());
+    QVERIFY(waitForSessionTime(screen, 0.5));
+    screen.record();
+    QCOMPARE(screen.state(), State::Recording);
+    const double recordAt = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, recordAt + 1.0));
+    screen.pause();
+    QCOMPARE(screen.state(), State::Paused);
+    const double pausedAt = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, pausedAt + 1.5));
+    screen.record();
+    const double resumedAt = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, resumedAt + 1.0));
+    QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
+    screen.stop();
+    QVERIFY(stopped.wait(15000));
+    const QString summary = stopped.at(0).at(0).toString();
+    QVERIFY2(summary.contains(QStringLiteral("rows recorded")), qPrintable(summary));
+
+    const Recording rec = readRecording(csv);
+    QVERIFY(rec.samples.size() > 1500u);
+    // One recording with a gap where it was paused: rows before the pause and after resuming.
+    double biggestGap = 0, gapAt = 0;
+    for (std::size_t i = 1; i < rec.samples.size(); ++i) {
+      const double dt = rec.samples[i].t - rec.samples[i - 1].t;
+      if (dt > biggestGap) {
+        biggestGap = dt;
+        gapAt = rec.samples[i - 1].t;
+      }
+    }
+    QVERIFY2(biggestGap > 1.0 && biggestGap < 2.5, qPrintable(QString::number(biggestGap)));
+    QVERIFY(std::abs(gapAt - pausedAt) < 0.3);
+    QVERIFY(std::abs(rec.samples.front().t - recordAt) < 0.3);
+    std::size_t withEstimate = 0;
+    for (const ArmSample& s : rec.samples) withEstimate += s.estimate.has_value();
+    QVERIFY(withEstimate > 1500);
+  }
+
+  void recordIntoTheClinicalRecords() {
+    QTemporaryDir dir;
+    const auto url = storage::DatabaseUrl::parse(dir.filePath(QStringLiteral("clinic.db")));
+    storage::Database db(url, {.create = true, .migrate = false});
+    storage::ClinicalStore store(db);
+    store.initialise(QStringLiteral("boss"), "a long enough password");
+    store.signIn(QStringLiteral("boss"), "a long enough password");
+    storage::Patient p;
+    p.code = QStringLiteral("P01");
+    p.name = QStringLiteral("Ada Example");
+    p.birthDate = QStringLiteral("1950-01-02");
+    p.sex = QStringLiteral("f");
+    p.affectedSide = QStringLiteral("right");
+    store.addPatient(p);
+    auto target = std::make_shared<DatabaseRecordingTarget>(store, url, QStringLiteral("P01"));
+    gui::LiveSessionConfig c = config(gui::demoDevices());
+    c.recordFromStart = true;
+    LiveSessionScreen screen(m_registry, c, target);
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Recording, 10000);
+    QVERIFY(target->sessionId() > 0);
+    QVERIFY(waitForSessionTime(screen, 1.0));
+    screen.markEvent();
+    QVERIFY(waitForSessionTime(screen, 2.5));
+    QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
+    screen.stop();
+    QVERIFY(stopped.wait(15000));
+    const storage::SessionInfo info = store.session(target->sessionId());
+    QCOMPARE(info.status, QString::fromLatin1(storage::kStatusComplete));
+    QVERIFY2(info.sampleRows > 2000, qPrintable(QString::number(info.sampleRows)));
+    QVERIFY2(info.notes.contains(QStringLiteral("Pain")), qPrintable(info.notes));
+    QVERIFY(stopped.at(0).at(0).toString().contains(QString::number(target->sessionId())));
+  }
+
+  void sessionsThatCannotStartSayWhy() {
+    struct Case {
+      QStringList devices;
+      QString expected;
+    };
+    const std::vector<Case> cases{
+        {{QStringLiteral("nope:x=1")}, QStringLiteral("no device plugin \"nope\"")},
+        {{QStringLiteral("virtual-arm:sensors=banana")}, QStringLiteral("banana")},
+        {{QStringLiteral("virtual-arm:sensors=upper"), QStringLiteral("virtual-arm:sensors=upper")},
+         QStringLiteral("two streams provide the upper-arm IMU")},
+        {{}, QStringLiteral("no device chosen")},
+    };
+    for (const Case& c : cases) {
+      LiveSessionScreen screen(m_registry, config(c.devices));
+      screen.show();
+      QSignalSpy failed(&screen, &LiveSessionScreen::sessionFailed);
+      screen.start();
+      QVERIFY(failed.wait(10000));
+      QCOMPARE(screen.state(), State::Failed);
+      QVERIFY2(screen.bannerText().contains(c.expected), qPrintable(screen.bannerText()));
+      QVERIFY(!screen.stopButton()->isEnabled());
+      QVERIFY(!screen.markButton()->isEnabled());
+    }
+  }
+
+  void recordingThatCannotOpenSaysWhyAndTheSessionGoesOn() {
+    QTemporaryDir dir;
+    const QString path = dir.filePath(QStringLiteral("taken.csv"));
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write("already here\n");
+    f.close();
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()),
+                             std::make_shared<CsvRecordingTarget>(path.toStdString()));
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    screen.record();
+    QTRY_VERIFY_WITH_TIMEOUT(screen.bannerText().contains(QStringLiteral("exists")), 5000);
+    QCOMPARE(screen.state(), State::Paused);
+    const double t = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, t + 0.5));
+    QFile again(path);
+    QVERIFY(again.open(QIODevice::ReadOnly));
+    QCOMPARE(again.readAll(), QByteArray("already here\n"));  // untouched
+    screen.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
+  }
+
+  void keysDriveEveryControl() {
+    QTemporaryDir dir;
+    LiveSessionScreen screen(
+        m_registry, config(gui::demoDevices()),
+        std::make_shared<CsvRecordingTarget>(dir.filePath(QStringLiteral("k.csv")).toStdString()));
+    screen.resize(1000, 700);
+    screen.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&screen));
+    screen.activateWindow();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    for (QPushButton* b :
+         {screen.recordButton(), screen.pauseButton(), screen.stopButton(), screen.markButton()})
+      QVERIFY(!b->accessibleName().isEmpty());
+    QTest::keyClick(&screen, Qt::Key_R, Qt::ControlModifier);
+    QTRY_COMPARE(screen.state(), State::Recording);
+    QTest::keyClick(&screen, Qt::Key_M, Qt::ControlModifier);  // buttons click after a flash
+    QTRY_COMPARE(screen.events().size(), std::size_t{1});
+    QTest::keyClick(&screen, Qt::Key_P, Qt::ControlModifier);
+    QTRY_COMPARE(screen.state(), State::Paused);
+    // Tab reaches the controls and the views in order.
+    screen.recordButton()->setFocus();
+    QSet<QWidget*> reached;
+    for (int i = 0; i < 20; ++i) {
+      reached.insert(QApplication::focusWidget());
+      QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    }
+    QVERIFY(reached.contains(screen.stopButton()));
+    QVERIFY(reached.contains(screen.markButton()));
+    QVERIFY(reached.contains(screen.armView()));
+    QVERIFY(reached.contains(screen.plots()->tableView()));
+    QVERIFY(reached.contains(screen.messages()));
+    // Tiny and huge sizes while running.
+    for (const QSize s : {QSize(50, 40), QSize(2, 2), QSize(1280, 800)}) {
+      screen.resize(s);
+      QTest::qWait(100);
+    }
+    QTest::keyClick(&screen, Qt::Key_E, Qt::ControlModifier);
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
+  }
+
+  void darkPalette() {
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()));
+    QPalette dark;
+    dark.setColor(QPalette::Window, QColor(0x2b, 0x2d, 0x31));
+    dark.setColor(QPalette::WindowText, QColor(0xe8, 0xe8, 0xe8));
+    dark.setColor(QPalette::Base, QColor(0x1f, 0x21, 0x24));
+    dark.setColor(QPalette::AlternateBase, QColor(0x26, 0x28, 0x2c));
+    dark.setColor(QPalette::Text, QColor(0xe8, 0xe8, 0xe8));
+    dark.setColor(QPalette::Button, QColor(0x35, 0x38, 0x3d));
+    dark.setColor(QPalette::ButtonText, QColor(0xe8, 0xe8, 0xe8));
+    screen.setPalette(dark);
+    screen.resize(1280, 800);
+    screen.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&screen));
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QVERIFY(waitForSessionTime(screen, 2.5));
+    test::saveScreenshot(test::grabFromScreen(&screen), QStringLiteral("live_session_dark"));
+    const QImage arm = test::grabFromScreen(screen.armView());
+    QVERIFY(qGray(arm.pixel(2, 2)) < 90);
+    screen.stop();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
+  }
+};
+
+ARMTRACK_GUI_TEST_MAIN(TestLiveSessionScreen)
+#include "test_live_session_screen.moc"

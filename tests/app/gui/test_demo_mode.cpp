@@ -1,0 +1,80 @@
+// armtrack --demo: fresh demo records made off the GUI thread with a progress bar, signed in as
+// the demo therapist, the demo patient's page open within seconds; and the program itself, run
+// unattended under Xvfb, saves its window and quits.
+#include <QElapsedTimer>
+#include <QImage>
+#include <QProcess>
+#include <QSignalSpy>
+
+#include "app/gui/AppController.h"
+#include "app/gui/MainWindow.h"
+#include "app/gui/MessageScreen.h"
+#include "app/gui/PatientScreen.h"
+#include "app/gui/live/LiveSessionScreen.h"
+#include "app/gui/services/DemoData.h"
+#include "tests/app/gui/support/GuiTestSupport.h"
+
+using namespace armtrack::gui;
+
+class TestDemoMode : public QObject {
+  Q_OBJECT
+  QTemporaryDir m_dir;
+
+ private slots:
+  void opensThePatientSignedInAsTheDemoTherapist() {
+    AppOptions o;
+    o.demo = true;
+    o.database = m_dir.filePath(QStringLiteral("demo/armtrack-demo.db"));
+    o.pluginFolders = {QStringLiteral(ARMTRACK_PLUGIN_DIR)};
+    AppController app(o);
+    QSignalSpy ready(&app, &AppController::demoReady);
+    QElapsedTimer timer;
+    timer.start();
+    app.start();
+    // While the records are made, the window shows progress and stays responsive.
+    QVERIFY(qobject_cast<MessageScreen*>(app.window()->currentScreen()));
+    QVERIFY(ready.wait(30000));
+    qInfo("demo ready after %.2f s", timer.elapsed() / 1000.0);
+    QVERIFY(app.records().signedIn());
+    QCOMPARE(app.records().user().name, QString::fromLatin1(DemoAccounts::kTherapist));
+    QCOMPARE(app.records().user().role, armtrack::storage::Role::Therapist);
+    // The live session with the virtual arm: estimates flow within seconds.
+    auto* live =
+        qobject_cast<armtrack::app::gui::LiveSessionScreen*>(app.window()->currentScreen());
+    QVERIFY(live);
+    QTRY_VERIFY2_WITH_TIMEOUT(live->sessionTime() >= 2.0, qPrintable(live->bannerText()), 20000);
+    qInfo("live estimates at %.1f s of session time, %.2f s after start", live->sessionTime(),
+          timer.elapsed() / 1000.0);
+    QVERIFY(live->estimatesDrained() > 100);
+    QVERIFY(live->bannerText().isEmpty());
+    test::saveScreenshot(app.window(), QStringLiteral("demo-live"));
+    live->stop();
+    QTRY_VERIFY_WITH_TIMEOUT(qobject_cast<PatientScreen*>(app.window()->currentScreen()), 20000);
+    // Nothing was recorded: still six sessions.
+    auto* page = qobject_cast<PatientScreen*>(app.window()->currentScreen());
+    QTRY_COMPARE(page->overview().sessions.size(), std::size_t{6});
+  }
+
+  void runsUnattendedAndSavesItsWindow() {
+    const QString shot = m_dir.filePath(QStringLiteral("window.png"));
+    QProcess p;
+    p.start(QStringLiteral(ARMTRACK_GUI),
+            {QStringLiteral("--demo"), QStringLiteral("--db"),
+             m_dir.filePath(QStringLiteral("unattended.db")), QStringLiteral("--quit-after"),
+             QStringLiteral("8"), QStringLiteral("--screenshot"), shot});
+    QVERIFY(p.waitForFinished(60000));
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    const QImage image(shot);
+    QVERIFY(!image.isNull());
+    QVERIFY(image.width() >= 900 && image.height() >= 600);
+    // Not a blank picture: many distinct colours.
+    QSet<QRgb> colours;
+    for (int y = 0; y < image.height(); y += 7)
+      for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
+    QVERIFY2(colours.size() > 20, qPrintable(QString::number(colours.size())));
+  }
+};
+
+ARMTRACK_APP_TEST_MAIN(TestDemoMode)
+#include "test_demo_mode.moc"

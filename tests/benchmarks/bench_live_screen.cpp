@@ -1,0 +1,170 @@
+// The live session screen under load (not a ctest test; figures for the README). Runs a virtual
+// arm session (1 kHz IMUs, 30 Hz Kinect and webcam, EKF) in the real screen and prints, every
+// report interval: frames per second of the 3D view and of the plots, the longest stall of the
+// GUI thread (a 2 ms watchdog timer: the longest time the event loop did not get round to it),
+// the whole process's CPU use and its resident memory.
+//
+//   tests/support/run-gui-test.sh build/tests/benchmarks/bench_live_screen [--seconds 600]
+//       [--interval 30] [--size 1280x800]
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <QApplication>
+#include <QChartView>
+#include <QCommandLineParser>
+#include <QElapsedTimer>
+#include <QTimer>
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+
+#include "app/gui/live/LiveSessionScreen.h"
+#include "app/plugins/PluginRegistry.h"
+#include "ui/AnglePlotPanel.h"
+#include "ui/OpenGlSetup.h"
+
+namespace {
+
+double cpuSeconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+double residentMb() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  statm >> size >> resident;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+/// Counts the paints of the charts' viewports (what the user sees refresh).
+class PaintCounter : public QObject {
+ public:
+  std::uint64_t paints = 0;
+  bool eventFilter(QObject*, QEvent* e) override {
+    if (e->type() == QEvent::Paint) ++paints;
+    return false;
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  armtrack::ui::setDefaultSurfaceFormat();
+  QApplication app(argc, argv);
+  QCommandLineParser cli;
+  cli.addHelpOption();
+  cli.addOption({QStringLiteral("seconds"), QStringLiteral("Length of the run (s)."),
+                 QStringLiteral("s"), QStringLiteral("60")});
+  cli.addOption({QStringLiteral("interval"), QStringLiteral("Seconds between reports."),
+                 QStringLiteral("s"), QStringLiteral("10")});
+  cli.addOption({QStringLiteral("size"), QStringLiteral("Window size."), QStringLiteral("WxH"),
+                 QStringLiteral("1280x800")});
+  cli.addOption({QStringLiteral("plugins"), QStringLiteral("Plugin folder."), QStringLiteral("dir"),
+                 QStringLiteral(ARMTRACK_PLUGIN_DIR)});
+  cli.addOption({QStringLiteral("hide"),
+                 QStringLiteral("Hide a part to see what it costs: 3d, plots, table."),
+                 QStringLiteral("part")});
+  cli.process(app);
+  const double seconds = cli.value(QStringLiteral("seconds")).toDouble();
+  const double interval = cli.value(QStringLiteral("interval")).toDouble();
+  const QStringList wh = cli.value(QStringLiteral("size")).split(u'x');
+
+  armtrack::app::PluginRegistry registry;
+  registry.load({cli.value(QStringLiteral("plugins"))});
+  armtrack::app::gui::LiveSessionConfig config;
+  config.devices = armtrack::app::gui::demoDevices();
+  config.patientLabel = QStringLiteral("Benchmark");
+  config.targetDeg = std::make_pair(20.0, 90.0);
+  config.targetRepetitions = 10;
+  armtrack::app::gui::LiveSessionScreen screen(registry, config);
+  screen.resize(wh.value(0).toInt(), wh.value(1).toInt());
+  screen.show();
+  for (const QString& part : cli.values(QStringLiteral("hide"))) {
+    if (part == u"3d") screen.armView()->hide();
+    if (part == u"plots") screen.plots()->hide();
+    if (part == u"table") screen.plots()->setTableVisible(false);
+  }
+  PaintCounter plotPaints;
+  const auto charts = screen.plots()->findChildren<QChartView*>();
+  for (QChartView* c : charts) c->viewport()->installEventFilter(&plotPaints);
+
+  // The watchdog: a 2 ms timer on the GUI thread; a late tick is a stall.
+  QElapsedTimer clock;
+  clock.start();
+  double lastTick = 0, maxStallMs = 0, maxStallAllMs = 0;
+  QTimer watchdog;
+  watchdog.setTimerType(Qt::PreciseTimer);
+  QObject::connect(&watchdog, &QTimer::timeout, [&] {
+    const double now = clock.nsecsElapsed() * 1e-6;
+    if (lastTick > 0) maxStallMs = std::max(maxStallMs, now - lastTick - 2.0);
+    lastTick = now;
+  });
+
+  struct Mark {
+    double t, cpu;
+    std::uint64_t frames, redraws, paints, drains, estimates;
+  };
+  auto mark = [&] {
+    return Mark{clock.nsecsElapsed() * 1e-9, cpuSeconds(),      screen.armView()->framesRendered(),
+                screen.plots()->redraws(),   plotPaints.paints, screen.drains(),
+                screen.estimatesDrained()};
+  };
+  Mark start{}, prev{};
+  bool failed = false;
+  QObject::connect(&screen, &armtrack::app::gui::LiveSessionScreen::sessionFailed,
+                   [&](const QString& why) {
+                     std::fprintf(stderr, "bench_live_screen: %s\n", qPrintable(why));
+                     failed = true;
+                     app.exit(1);
+                   });
+  QObject::connect(&screen, &armtrack::app::gui::LiveSessionScreen::sessionStarted, [&] {
+    // Skip the first second (start-up), then measure.
+    QTimer::singleShot(1000, [&] {
+      start = prev = mark();
+      lastTick = 0;
+      maxStallMs = 0;
+      watchdog.start(2);
+      std::printf(
+          "Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
+          "webcam), EKF, drained at %.0f Hz\n",
+          screen.width(), screen.height(), screen.drainRate());
+      std::printf("%8s %9s %11s %12s %10s %13s %9s %10s\n", "time s", "3D fps", "plot fps",
+                  "plot paint/s", "drains/s", "max stall ms", "CPU %", "RSS MB");
+      std::fflush(stdout);
+    });
+  });
+  QTimer report;
+  QObject::connect(&report, &QTimer::timeout, [&] {
+    if (start.t == 0) return;
+    const Mark m = mark();
+    const double dt = m.t - prev.t;
+    std::printf("%8.0f %9.1f %11.1f %12.1f %10.1f %13.1f %9.1f %10.1f\n", m.t - start.t,
+                (m.frames - prev.frames) / dt, (m.redraws - prev.redraws) / dt,
+                (m.paints - prev.paints) / dt / std::max<qsizetype>(1, charts.size()),
+                (m.drains - prev.drains) / dt, maxStallMs, 100.0 * (m.cpu - prev.cpu) / dt,
+                residentMb());
+    std::fflush(stdout);
+    maxStallAllMs = std::max(maxStallAllMs, maxStallMs);
+    maxStallMs = 0;
+    prev = m;
+    if (m.t - start.t >= seconds - 1e-3) {
+      const double total = m.t - start.t;
+      std::printf(
+          "whole run: 3D %.1f fps, plots %.1f fps, longest GUI stall %.1f ms, CPU %.0f %% "
+          "of one core, %llu estimates drained\n",
+          (m.frames - start.frames) / total, (m.redraws - start.redraws) / total, maxStallAllMs,
+          100.0 * (m.cpu - start.cpu) / total,
+          static_cast<unsigned long long>(m.estimates - start.estimates));
+      std::fflush(stdout);
+      screen.stop();
+    }
+  });
+  QObject::connect(&screen, &armtrack::app::gui::LiveSessionScreen::sessionStopped,
+                   [&] { app.exit(failed ? 1 : 0); });
+  report.start(static_cast<int>(interval * 1000));
+  screen.start();
+  return app.exec();
+}

@@ -1,0 +1,263 @@
+#include "ui/AngleChart.h"
+
+#include <QAreaSeries>
+#include <QLineSeries>
+#include <QMouseEvent>
+#include <QValueAxis>
+#include <algorithm>
+#include <cmath>
+
+#include "ui/AngleTableModel.h"
+
+namespace armtrack::ui {
+
+namespace {
+constexpr std::size_t kMaxMarkers = 16;
+constexpr double kMinSpanDeg = 20.0;
+constexpr double kAxisLimitDeg = 360.0;  // a multiple of every tick step
+
+/// The smallest of the usual steps that splits span into at most maxTicks intervals.
+double niceStep(double span, int maxTicks, std::initializer_list<double> steps) {
+  double last = 1.0;
+  for (double s : steps) {
+    last = s;
+    if (span / s <= maxTicks) return s;
+  }
+  while (span / last > maxTicks) last *= 2;
+  return last;
+}
+
+QList<QPointF> toList(const std::vector<QPointF>& v) {
+  return QList<QPointF>(v.begin(), v.end());
+}
+
+void setPen(QLineSeries* s, const QColor& c, qreal width, Qt::PenStyle style = Qt::SolidLine) {
+  QPen pen(c);
+  pen.setWidthF(width);
+  pen.setStyle(style);
+  pen.setCosmetic(true);
+  s->setPen(pen);
+}
+}  // namespace
+
+QColor angleColour(int angle, bool dark) {
+  static const QColor light[kAngleCount] = {QColor(0x1f, 0x5f, 0xbf), QColor(0xc2, 0x4b, 0x0f),
+                                            QColor(0x2c, 0x8a, 0x3c), QColor(0x8a, 0x2b, 0xb0),
+                                            QColor(0xb0, 0x1e, 0x4a)};
+  static const QColor darkColours[kAngleCount] = {
+      QColor(0x6a, 0xa8, 0xff), QColor(0xff, 0x9b, 0x5a), QColor(0x6f, 0xd6, 0x7f),
+      QColor(0xc9, 0x8b, 0xff), QColor(0xff, 0x7a, 0xa2)};
+  if (angle < 0 || angle >= kAngleCount) return Qt::gray;
+  return dark ? darkColours[angle] : light[angle];
+}
+
+AngleChart::AngleChart(int angle, QWidget* parent)
+    : QChartView(parent), m_angle(angle), m_chart(new QChart) {
+  m_chart->setAnimationOptions(QChart::NoAnimation);
+  m_chart->legend()->hide();
+  m_chart->setMargins(QMargins(4, 2, 4, 2));
+  m_chart->setBackgroundRoundness(0);
+  m_chart->setTitle(angleDisplayName(angle) + QStringLiteral(" (\u00b0)"));
+  QFont f = m_chart->titleFont();
+  f.setPointSizeF(f.pointSizeF() * 0.9);
+  f.setBold(true);
+  m_chart->setTitleFont(f);
+  setChart(m_chart);
+  setRenderHint(QPainter::Antialiasing, false);  // thousands of points at 30 Hz
+  setMinimumSize(1, 1);
+  setAccessibleName(angleDisplayName(angle));
+  setAccessibleDescription(tr("Plot of %1 over time in degrees; the table beside it holds the "
+                              "same numbers")
+                               .arg(angleDisplayName(angle)));
+  setFocusPolicy(Qt::NoFocus);
+
+  m_x = new QValueAxis;
+  m_y = new QValueAxis;
+  m_x->setLabelFormat(QStringLiteral("%.0f s"));
+  m_y->setLabelFormat(QStringLiteral("%.0f"));
+  // Qt Charts elides labels ("...") it sized while the chart was tiny and keeps them so.
+  m_x->setTruncateLabels(false);
+  m_y->setTruncateLabels(false);
+  m_x->setTickType(QValueAxis::TicksDynamic);
+  m_x->setTickAnchor(0.0);
+  m_x->setTickInterval(5.0);
+  m_y->setTickCount(6);
+  m_chart->addAxis(m_x, Qt::AlignBottom);
+  m_chart->addAxis(m_y, Qt::AlignLeft);
+
+  auto attach = [&](QAbstractSeries* s) {
+    m_chart->addSeries(s);
+    s->attachAxis(m_x);
+    s->attachAxis(m_y);
+  };
+  m_targetUpper = new QLineSeries(this);
+  m_targetLower = new QLineSeries(this);
+  m_target = new QAreaSeries(m_targetUpper, m_targetLower);
+  m_target->setName(tr("Target"));
+  attach(m_target);
+  m_bandUpper = new QLineSeries(this);
+  m_bandLower = new QLineSeries(this);
+  m_band = new QAreaSeries(m_bandUpper, m_bandLower);
+  m_band->setName(tr("\u00b12\u03c3"));
+  attach(m_band);
+  m_overlay = new QLineSeries;
+  m_overlay->setName(tr("Compared session"));
+  attach(m_overlay);
+  m_line = new QLineSeries;
+  m_line->setName(angleDisplayName(angle));
+  attach(m_line);
+  m_cursor = new QLineSeries;
+  attach(m_cursor);
+  m_x->setRange(0, 10);
+  m_y->setRange(m_yMin, m_yMax);
+  setDark(false);
+}
+
+void AngleChart::setDark(bool dark) {
+  m_dark = dark;
+  const QColor bg = dark ? QColor(0x23, 0x25, 0x29) : QColor(Qt::white);
+  const QColor fg = dark ? QColor(0xe6, 0xe6, 0xe6) : QColor(0x20, 0x20, 0x20);
+  const QColor grid = dark ? QColor(0x3c, 0x40, 0x46) : QColor(0xdd, 0xdd, 0xdd);
+  m_chart->setBackgroundBrush(bg);
+  m_chart->setPlotAreaBackgroundVisible(false);
+  m_chart->setTitleBrush(fg);
+  for (QValueAxis* a : {m_x, m_y}) {
+    a->setLabelsBrush(fg);
+    a->setGridLineColor(grid);
+    a->setLinePenColor(grid);
+  }
+  const QColor c = angleColour(m_angle, dark);
+  setPen(m_line, c, 2.0);
+  QColor band = c;
+  band.setAlpha(dark ? 70 : 55);
+  m_band->setBrush(band);
+  m_band->setPen(Qt::NoPen);
+  QColor target = dark ? QColor(0x4c, 0xc2, 0x6a) : QColor(0x2e, 0x9e, 0x4f);
+  target.setAlpha(dark ? 60 : 45);
+  m_target->setBrush(target);
+  QPen tp(target.darker(dark ? 80 : 130));
+  tp.setStyle(Qt::DashLine);
+  tp.setCosmetic(true);
+  m_target->setPen(tp);
+  setPen(m_overlay, dark ? QColor(0xbb, 0xbb, 0xbb) : QColor(0x55, 0x55, 0x55), 1.5, Qt::DashLine);
+  setPen(m_cursor, fg, 1.0);
+  for (QLineSeries* m : m_markers)
+    setPen(m, dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
+}
+
+QLineSeries* AngleChart::verticalLine(std::size_t index) {
+  while (m_markers.size() <= index) {
+    auto* s = new QLineSeries;
+    m_chart->addSeries(s);
+    s->attachAxis(m_x);
+    s->attachAxis(m_y);
+    setPen(s, m_dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
+    m_markers.push_back(s);
+  }
+  return m_markers[index];
+}
+
+void AngleChart::fitY(double lo, double hi) {
+  if (!std::isfinite(lo) || !std::isfinite(hi)) return;
+  lo = std::clamp(lo, -kAxisLimitDeg, kAxisLimitDeg);
+  hi = std::clamp(hi, -kAxisLimitDeg, kAxisLimitDeg);
+  if (hi - lo < kMinSpanDeg) {
+    const double mid = (lo + hi) / 2;
+    lo = mid - kMinSpanDeg / 2;
+    hi = mid + kMinSpanDeg / 2;
+  }
+  // Round out to a step of 5-180 deg; grow at once, shrink only when the data use under 60 % of
+  // the axis, so the axis does not twitch with every frame. Fixed ticks on the step (Qt Charts'
+  // dynamic ticks elide labels after a range change).
+  const double step = niceStep(hi - lo, 4, {5, 10, 15, 20, 30, 45, 60, 90, 180});
+  const double wantLo = std::floor(lo / step) * step, wantHi = std::ceil(hi / step) * step;
+  const bool grow = wantLo < m_yMin || wantHi > m_yMax;
+  const bool shrink = (wantHi - wantLo) < 0.6 * (m_yMax - m_yMin);
+  if (grow || shrink) {
+    double newLo = grow && !shrink ? std::min(wantLo, m_yMin) : wantLo;
+    double newHi = grow && !shrink ? std::max(wantHi, m_yMax) : wantHi;
+    const double newStep = niceStep(newHi - newLo, 4, {5, 10, 15, 20, 30, 45, 60, 90, 180});
+    m_yMin = std::floor(newLo / newStep) * newStep;
+    m_yMax = std::ceil(newHi / newStep) * newStep;
+    m_y->setRange(m_yMin, m_yMax);
+    m_y->setTickCount(static_cast<int>(std::lround((m_yMax - m_yMin) / newStep)) + 1);
+  }
+}
+
+void AngleChart::draw(const AngleTrace& trace, const AngleTrace* overlay, double t0, double t1,
+                      const ChartDecor& decor) {
+  if (!(t1 > t0)) t1 = t0 + 1.0;
+  const int columns = std::max(1, static_cast<int>(m_chart->plotArea().width() / 2));
+  m_columns = columns;
+  decimateAngle(trace, m_angle, t0, t1, columns, m_points, kAxisLimitDeg);
+  m_pointsDrawn = static_cast<int>(m_points.size());
+  m_line->replace(toList(m_points));
+  decimateBand(trace, m_angle, t0, t1, columns, decor.sigmaFactor, m_upper, m_lower, kAxisLimitDeg);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const QPointF& p : m_points) {
+    if (p.x() < t0 || p.x() > t1) continue;
+    lo = std::min(lo, p.y());
+    hi = std::max(hi, p.y());
+  }
+  // The band widens the axis only as far as the data themselves reach plus 30 deg, so a
+  // sigma of 1e3 deg (no optical data for a long time) does not squash the angle flat.
+  for (std::size_t i = 0; i < m_upper.size(); ++i) {
+    m_upper[i].setY(std::min(m_upper[i].y(), hi + 30.0));
+    m_lower[i].setY(std::max(m_lower[i].y(), lo - 30.0));
+  }
+  m_bandUpper->replace(toList(m_upper));
+  m_bandLower->replace(toList(m_lower));
+
+  std::vector<QPointF> ov;
+  if (overlay) decimateAngle(*overlay, m_angle, t0, t1, columns, ov, kAxisLimitDeg);
+  m_overlay->replace(toList(ov));
+  for (const QPointF& p : ov) {
+    if (p.x() < t0 || p.x() > t1) continue;
+    lo = std::min(lo, p.y());
+    hi = std::max(hi, p.y());
+  }
+  if (decor.targetDeg) {
+    const auto [tmin, tmax] = *decor.targetDeg;
+    m_targetUpper->replace(QList<QPointF>{{t0, tmax}, {t1, tmax}});
+    m_targetLower->replace(QList<QPointF>{{t0, tmin}, {t1, tmin}});
+    lo = std::min(lo, tmin);
+    hi = std::max(hi, tmax);
+  } else {
+    m_targetUpper->clear();
+    m_targetLower->clear();
+  }
+  m_target->setVisible(decor.targetDeg.has_value());
+  if (std::isfinite(lo)) fitY(lo - 3.0, hi + 3.0);
+
+  std::size_t used = 0;
+  for (const auto& [t, label] : decor.events) {
+    if (t < t0 || t > t1 || used >= kMaxMarkers) continue;
+    QLineSeries* s = verticalLine(used++);
+    s->replace(QList<QPointF>{{t, m_yMin}, {t, m_yMax}});
+    s->setName(label);
+    s->setVisible(true);
+  }
+  for (std::size_t i = used; i < m_markers.size(); ++i) m_markers[i]->setVisible(false);
+  if (decor.cursor && *decor.cursor >= t0 && *decor.cursor <= t1) {
+    m_cursor->replace(QList<QPointF>{{*decor.cursor, m_yMin}, {*decor.cursor, m_yMax}});
+    m_cursor->setVisible(true);
+  } else {
+    m_cursor->setVisible(false);
+  }
+  if (m_x->min() != t0 || m_x->max() != t1) {
+    m_x->setRange(t0, t1);
+    m_x->setTickInterval(niceStep(t1 - t0, 6, {1, 2, 5, 10, 15, 30, 60, 120, 300, 600}));
+  }
+}
+
+void AngleChart::mousePressEvent(QMouseEvent* event) {
+  if (event->button() == Qt::LeftButton && m_chart->plotArea().contains(event->position())) {
+    const QPointF v = m_chart->mapToValue(event->position(), m_line);
+    emit clicked(v.x());
+    event->accept();
+    return;
+  }
+  QChartView::mousePressEvent(event);
+}
+
+}  // namespace armtrack::ui

@@ -1,0 +1,229 @@
+#include "ui/AnglePlotPanel.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QScrollBar>
+#include <QSplitter>
+#include <QTableView>
+#include <QVBoxLayout>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace armtrack::ui {
+
+namespace {
+bool isDark(const QPalette& p) {
+  return p.color(QPalette::Window).lightness() < 128;
+}
+}  // namespace
+
+AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_window + 1.0) {
+  setAccessibleName(tr("Joint angle plots"));
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  m_splitter = new QSplitter(Qt::Horizontal, this);
+  m_splitter->setChildrenCollapsible(true);
+  layout->addWidget(m_splitter);
+
+  auto* plots = new QWidget(m_splitter);
+  auto* plotLayout = new QVBoxLayout(plots);
+  plotLayout->setContentsMargins(0, 0, 0, 0);
+  plotLayout->setSpacing(0);
+  for (int a = 0; a < kAngleCount; ++a) {
+    auto* c = new AngleChart(a, plots);
+    c->setMinimumHeight(0);
+    connect(c, &AngleChart::clicked, this, [this](double t) {
+      if (m_mode == Mode::Review) emit cursorRequested(t);
+    });
+    m_charts[static_cast<std::size_t>(a)] = c;
+    plotLayout->addWidget(c, 1);
+  }
+  m_table = new AngleTableModel(this);
+  m_tableView = new QTableView(m_splitter);
+  m_tableView->setModel(m_table);
+  m_tableView->setAccessibleName(tr("Joint angles table"));
+  m_tableView->setAccessibleDescription(
+      tr("The current value of each angle, its uncertainty, the range over the plotted time "
+         "and the target"));
+  m_tableView->verticalHeader()->hide();
+  m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_tableView->setSelectionBehavior(QAbstractItemView::SelectRows);
+  m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
+  m_tableView->setTabKeyNavigation(false);
+  m_splitter->setStretchFactor(0, 4);
+  m_splitter->setStretchFactor(1, 1);
+
+  const bool dark = isDark(palette());
+  for (AngleChart* c : m_charts) c->setDark(dark);
+  connect(&m_timer, &QTimer::timeout, this, [this] {
+    if (m_dirty && isVisible()) refresh();
+  });
+  setRefreshRate(30.0);
+}
+
+void AnglePlotPanel::setMode(Mode mode) {
+  m_mode = mode;
+  m_trace.setKeepSeconds(mode == Mode::Live ? m_window + 1.0
+                                            : std::numeric_limits<double>::infinity());
+  markDirty();
+}
+
+void AnglePlotPanel::setWindowSeconds(double seconds) {
+  m_window = std::clamp(std::isfinite(seconds) ? seconds : 20.0, 10.0, 30.0);
+  if (m_mode == Mode::Live) m_trace.setKeepSeconds(m_window + 1.0);
+  markDirty();
+}
+
+void AnglePlotPanel::append(const std::vector<AngleSample>& rows) {
+  if (m_trace.append(rows) > 0) markDirty();
+}
+
+void AnglePlotPanel::clear() {
+  m_trace.clear();
+  m_overlay.reset();
+  m_decor.events.clear();
+  m_decor.cursor.reset();
+  markDirty();
+}
+
+void AnglePlotPanel::setSession(const std::vector<AngleSample>& rows) {
+  setMode(Mode::Review);
+  m_trace.clear();
+  m_trace.append(rows);
+  markDirty();
+}
+
+void AnglePlotPanel::setOverlay(const std::vector<AngleSample>& rows) {
+  m_overlay.emplace();
+  m_overlay->append(rows);
+  markDirty();
+}
+
+void AnglePlotPanel::clearOverlay() {
+  m_overlay.reset();
+  markDirty();
+}
+
+void AnglePlotPanel::setCursor(std::optional<double> t) {
+  m_decor.cursor = t && std::isfinite(*t) ? t : std::nullopt;
+  markDirty();
+}
+
+void AnglePlotPanel::setTarget(int angle, double minDeg, double maxDeg) {
+  if (angle < 0 || angle >= kAngleCount || !std::isfinite(minDeg) || !std::isfinite(maxDeg)) return;
+  if (m_targetAngle) m_table->setTarget(*m_targetAngle, std::nullopt);
+  m_targetAngle = angle;
+  m_decor.targetDeg = std::make_pair(std::min(minDeg, maxDeg), std::max(minDeg, maxDeg));
+  m_table->setTarget(angle, m_decor.targetDeg);
+  markDirty();
+}
+
+void AnglePlotPanel::clearTarget() {
+  if (m_targetAngle) m_table->setTarget(*m_targetAngle, std::nullopt);
+  m_targetAngle.reset();
+  m_decor.targetDeg.reset();
+  markDirty();
+}
+
+void AnglePlotPanel::addEvent(double t, const QString& label) {
+  if (!std::isfinite(t)) return;
+  m_decor.events.emplace_back(t, label);
+  markDirty();
+}
+
+void AnglePlotPanel::setAnglesShown(const std::vector<int>& angles) {
+  for (int a = 0; a < kAngleCount; ++a)
+    m_charts[static_cast<std::size_t>(a)]->setVisible(std::find(angles.begin(), angles.end(), a) !=
+                                                      angles.end());
+  markDirty();
+}
+
+void AnglePlotPanel::setTableVisible(bool visible) {
+  m_tableView->setVisible(visible);
+}
+
+void AnglePlotPanel::setRefreshRate(double hz) {
+  if (std::isfinite(hz) && hz > 0.0) {
+    m_timer.start(static_cast<int>(std::lround(1000.0 / std::min(hz, 120.0))));
+  } else {
+    m_timer.stop();
+  }
+}
+
+void AnglePlotPanel::refresh() {
+  m_dirty = false;
+  ++m_redraws;
+  if (m_mode == Mode::Live) {
+    m_t1 = std::max(m_trace.lastTime(), m_window);
+    m_t0 = m_t1 - m_window;
+  } else {
+    m_t0 = m_trace.firstTime();
+    m_t1 = m_trace.lastTime();
+    if (m_overlay && !m_overlay->empty()) {
+      m_t0 = std::min(m_t0, m_overlay->firstTime());
+      m_t1 = std::max(m_t1, m_overlay->lastTime());
+    }
+    if (!(m_t1 > m_t0)) m_t1 = m_t0 + 1.0;
+  }
+  const AngleTrace* overlay = m_overlay ? &*m_overlay : nullptr;
+  for (std::size_t a = 0; a < kAngleCount; ++a) {
+    ChartDecor decor = m_decor;
+    if (!m_targetAngle || *m_targetAngle != static_cast<int>(a)) decor.targetDeg.reset();
+    if (m_charts[a]->isVisible()) m_charts[a]->draw(m_trace, overlay, m_t0, m_t1, decor);
+  }
+  // The table: the value at the cursor (review) or the newest (live), and the plotted range.
+  std::array<double, kAngleCount> lo, hi;
+  lo.fill(std::numeric_limits<double>::infinity());
+  hi.fill(-std::numeric_limits<double>::infinity());
+  const auto& rows = m_trace.samples();
+  for (std::size_t i = m_trace.lowerBound(m_t0); i < rows.size() && rows[i].t <= m_t1; ++i)
+    for (std::size_t a = 0; a < kAngleCount; ++a) {
+      const double v = rows[i].deg[a];
+      if (!std::isfinite(v)) continue;
+      lo[a] = std::min(lo[a], v);
+      hi[a] = std::max(hi[a], v);
+    }
+  for (std::size_t a = 0; a < kAngleCount; ++a)
+    if (!std::isfinite(lo[a])) lo[a] = hi[a] = std::numeric_limits<double>::quiet_NaN();
+  const AngleSample* current = nullptr;
+  if (m_mode == Mode::Review && m_decor.cursor)
+    current = m_trace.at(*m_decor.cursor);
+  else if (!rows.empty())
+    current = &rows.back();
+  m_table->setValues(current, lo, hi);
+}
+
+void AnglePlotPanel::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::PaletteChange) {
+    const bool dark = isDark(palette());
+    for (AngleChart* c : m_charts) c->setDark(dark);
+    markDirty();
+  }
+  QWidget::changeEvent(event);
+}
+
+void AnglePlotPanel::showEvent(QShowEvent* event) {
+  QWidget::showEvent(event);
+  sizeTable();
+}
+
+void AnglePlotPanel::sizeTable() {
+  if (m_sized || !isVisible() || width() < 300) return;
+  // The table as wide as its columns (at most 40 % of the panel), the plots the rest.
+  m_sized = true;
+  m_tableView->resizeColumnsToContents();
+  const int table = std::min(m_tableView->horizontalHeader()->length() +
+                                 m_tableView->verticalScrollBar()->sizeHint().width() +
+                                 2 * m_tableView->frameWidth(),
+                             width() * 2 / 5);
+  m_splitter->setSizes({width() - table, table});
+}
+
+void AnglePlotPanel::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  sizeTable();
+  markDirty();  // the number of pixel columns changed
+}
+
+}  // namespace armtrack::ui

@@ -1,0 +1,111 @@
+// The joint-angle plots: the five clinical angles in degrees, each with its +-2 sigma band from
+// the estimator's uncertainty, the protocol's target band, event markers and, beside them, the
+// same numbers in a table for screen readers. Live: a scrolling 10-30 s window fed in batches;
+// review: a whole session with a time cursor and a second session overlaid.
+#pragma once
+
+#include <QTimer>
+#include <QWidget>
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "ui/AngleChart.h"
+#include "ui/AngleTableModel.h"
+#include "ui/AngleTrace.h"
+
+class QTableView;
+class QSplitter;
+
+namespace armtrack::ui {
+
+/// Appending only stores rows: the plots redraw at most refreshRate() times a second, each angle
+/// decimated to the pixels shown, so a 1 kHz stream costs no more than a 30 Hz one. GUI thread
+/// only.
+class AnglePlotPanel : public QWidget {
+  Q_OBJECT
+ public:
+  enum class Mode { Live, Review };
+
+  explicit AnglePlotPanel(QWidget* parent = nullptr);
+
+  void setMode(Mode mode);
+  Mode mode() const { return m_mode; }
+  /// The live window (s), clamped to 10-30 s. Default 20 s.
+  void setWindowSeconds(double seconds);
+  double windowSeconds() const { return m_window; }
+
+  /// Live: rows in time order (degrees). Rows out of order or with a non-finite time are
+  /// refused and counted (trace().refused()).
+  void append(const std::vector<AngleSample>& rows);
+  /// Forgets every row, event and cursor (a new session).
+  void clear();
+  /// Review: the whole session, shown from its first to its last time.
+  void setSession(const std::vector<AngleSample>& rows);
+  /// Review: a second session drawn dashed over the first, on its own times.
+  void setOverlay(const std::vector<AngleSample>& rows);
+  void clearOverlay();
+  /// Review: the time cursor (s); empty hides it.
+  void setCursor(std::optional<double> t);
+  /// The protocol's target range of one angle (deg); other angles' targets are cleared.
+  void setTarget(int angle, double minDeg, double maxDeg);
+  void clearTarget();
+  /// A marker at time t (s) on every plot, e.g. "pain" or "rest".
+  void addEvent(double t, const QString& label);
+  /// Which angles get a plot (all five by default); the table always lists all five.
+  void setAnglesShown(const std::vector<int>& angles);
+  /// Shows or hides the numeric table beside the plots.
+  void setTableVisible(bool visible);
+
+  /// At most this many redraws a second (default 30); 0 redraws only on refresh().
+  void setRefreshRate(double hz);
+
+  AngleTableModel* tableModel() const { return m_table; }
+  QTableView* tableView() const { return m_tableView; }
+  const AngleTrace& trace() const { return m_trace; }
+  AngleChart* chart(int angle) const { return m_charts[static_cast<std::size_t>(angle)]; }
+  /// The time span plotted (s).
+  std::pair<double, double> timeSpan() const { return {m_t0, m_t1}; }
+  std::uint64_t redraws() const { return m_redraws; }
+
+ public slots:
+  /// Redraws now.
+  void refresh();
+  /// Redraws if something changed since the last redraw (for an owner that drives the redraws
+  /// from its own timer, with setRefreshRate(0), so that every view repaints in one pass).
+  void refreshIfChanged() {
+    if (m_dirty) refresh();
+  }
+
+ signals:
+  /// Review: the user clicked a time on a plot.
+  void cursorRequested(double t);
+
+ protected:
+  void changeEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
+  void showEvent(QShowEvent* event) override;
+
+ private:
+  void markDirty() { m_dirty = true; }
+  /// Once, when first shown wide enough: the table as wide as its columns.
+  void sizeTable();
+
+  Mode m_mode = Mode::Live;
+  double m_window = 20.0;
+  AngleTrace m_trace;
+  std::optional<AngleTrace> m_overlay;
+  std::array<AngleChart*, kAngleCount> m_charts{};
+  QSplitter* m_splitter = nullptr;
+  QTableView* m_tableView = nullptr;
+  AngleTableModel* m_table = nullptr;
+  ChartDecor m_decor;
+  std::optional<int> m_targetAngle;
+  QTimer m_timer;
+  bool m_dirty = true;
+  double m_t0 = 0.0, m_t1 = 20.0;
+  std::uint64_t m_redraws = 0;
+  bool m_sized = false;
+};
+
+}  // namespace armtrack::ui

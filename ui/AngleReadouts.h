@@ -1,0 +1,64 @@
+// Large readouts of the current clinical angles, for reading across the room. An angle whose
+// uncertainty is large (e.g. the shoulder's heading without optical data) is greyed and marked
+// "uncertain" in words, so the mark does not rest on colour alone.
+#pragma once
+
+#include <QTimer>
+#include <QWidget>
+#include <array>
+#include <optional>
+
+#include "ui/AngleTrace.h"
+
+class QLabel;
+
+namespace armtrack::ui {
+
+class AngleReadouts : public QWidget {
+  Q_OBJECT
+ public:
+  explicit AngleReadouts(QWidget* parent = nullptr);
+
+  /// The newest values; shown at the next refresh (at most refreshRate() a second, default 10,
+  /// so the digits can be read). nullptr clears them.
+  void setSample(const AngleSample* sample);
+  /// An angle is marked uncertain when its 2-sigma half-width exceeds this (deg, default 10).
+  void setUncertainAboveDeg(double deg) { m_uncertainAbove = deg; }
+  /// 0: only refresh() or refreshIfChanged() redraw.
+  void setRefreshRate(double hz);
+  void refreshIfChanged() {
+    if (m_dirty) refresh();
+  }
+  /// Lays the readouts out in one row (wide) or a grid (narrow).
+  void setColumns(int columns);
+
+  /// For tests: the text shown and whether the angle is marked uncertain.
+  QString valueText(int angle) const;
+  bool isUncertain(int angle) const { return m_uncertain[static_cast<std::size_t>(angle)]; }
+
+ public slots:
+  void refresh();
+
+ protected:
+  void changeEvent(QEvent* event) override;
+
+ private:
+  struct Readout {
+    QWidget* box = nullptr;
+    QLabel* name = nullptr;
+    QLabel* value = nullptr;
+    QLabel* note = nullptr;
+  };
+  void applyFonts();
+  void applyColours();
+
+  std::array<Readout, kAngleCount> m_readouts;
+  std::array<bool, kAngleCount> m_uncertain{};
+  std::optional<AngleSample> m_sample;
+  bool m_dirty = true;
+  double m_uncertainAbove = 10.0;
+  int m_columns = kAngleCount;
+  QTimer m_timer;
+};
+
+}  // namespace armtrack::ui

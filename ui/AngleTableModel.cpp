@@ -1,0 +1,109 @@
+#include "ui/AngleTableModel.h"
+
+#include <cmath>
+#include <limits>
+
+#include <QCoreApplication>
+
+namespace armtrack::ui {
+
+QString angleDisplayName(int angle) {
+  static const char* const kNames[kAngleCount] = {
+      QT_TRANSLATE_NOOP("armtrack::ui::Angles", "Shoulder flexion"),
+      QT_TRANSLATE_NOOP("armtrack::ui::Angles", "Shoulder abduction"),
+      QT_TRANSLATE_NOOP("armtrack::ui::Angles", "Shoulder internal rotation"),
+      QT_TRANSLATE_NOOP("armtrack::ui::Angles", "Elbow flexion"),
+      QT_TRANSLATE_NOOP("armtrack::ui::Angles", "Forearm pronation"),
+  };
+  if (angle < 0 || angle >= kAngleCount) return {};
+  return QCoreApplication::translate("armtrack::ui::Angles", kNames[angle]);
+}
+
+QString formatDegrees(double deg, int decimals) {
+  if (!std::isfinite(deg)) return QStringLiteral("\u2013");
+  return QStringLiteral("%1\u00b0").arg(deg, 0, 'f', decimals);
+}
+
+AngleTableModel::AngleTableModel(QObject* parent) : QAbstractTableModel(parent) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  m_value.fill(nan);
+  m_sigma.fill(nan);
+  m_min.fill(nan);
+  m_max.fill(nan);
+}
+
+int AngleTableModel::rowCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : kAngleCount;
+}
+
+int AngleTableModel::columnCount(const QModelIndex& parent) const {
+  return parent.isValid() ? 0 : ColumnCount;
+}
+
+QVariant AngleTableModel::data(const QModelIndex& index, int role) const {
+  if (!index.isValid() || index.row() >= kAngleCount) return {};
+  const auto r = static_cast<std::size_t>(index.row());
+  if (role == Qt::TextAlignmentRole && index.column() != Name)
+    return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  if (role != Qt::DisplayRole && role != Qt::AccessibleTextRole) return {};
+  switch (index.column()) {
+    case Name:
+      return angleDisplayName(index.row());
+    case Value:
+      return formatDegrees(m_value[r]);
+    case Uncertainty:
+      return std::isfinite(m_sigma[r]) ? QStringLiteral("\u00b1") + formatDegrees(2 * m_sigma[r])
+                                       : QStringLiteral("\u2013");
+    case Minimum:
+      return formatDegrees(m_min[r]);
+    case Maximum:
+      return formatDegrees(m_max[r]);
+    case Target:
+      if (!m_target[r]) return QString();
+      return QStringLiteral("%1 \u2013 %2")
+          .arg(formatDegrees(m_target[r]->first, 0), formatDegrees(m_target[r]->second, 0));
+    default:
+      return {};
+  }
+}
+
+QVariant AngleTableModel::headerData(int section, Qt::Orientation orientation, int role) const {
+  if (role != Qt::DisplayRole || orientation != Qt::Horizontal) return {};
+  switch (section) {
+    case Name:
+      return tr("Angle");
+    case Value:
+      return tr("Now");
+    case Uncertainty:
+      return tr("\u00b12\u03c3");
+    case Minimum:
+      return tr("Min");
+    case Maximum:
+      return tr("Max");
+    case Target:
+      return tr("Target");
+    default:
+      return {};
+  }
+}
+
+void AngleTableModel::setValues(const AngleSample* current,
+                                const std::array<double, kAngleCount>& minDeg,
+                                const std::array<double, kAngleCount>& maxDeg) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < kAngleCount; ++i) {
+    m_value[i] = current ? current->deg[i] : nan;
+    m_sigma[i] = current ? current->sigmaDeg[i] : nan;
+  }
+  m_min = minDeg;
+  m_max = maxDeg;
+  emit dataChanged(index(0, Value), index(kAngleCount - 1, Maximum));
+}
+
+void AngleTableModel::setTarget(int angle, std::optional<std::pair<double, double>> rangeDeg) {
+  if (angle < 0 || angle >= kAngleCount) return;
+  m_target[static_cast<std::size_t>(angle)] = rangeDeg;
+  emit dataChanged(index(angle, Target), index(angle, Target));
+}
+
+}  // namespace armtrack::ui

@@ -1,0 +1,78 @@
+// The clinical angles over time as the plots and tables show them: degrees at this boundary
+// (the session and the records are SI), with each angle's 1-sigma uncertainty, and the
+// decimation that turns thousands of samples into a couple of points per pixel column.
+#pragma once
+
+#include <QPointF>
+#include <array>
+#include <cstddef>
+#include <deque>
+#include <limits>
+#include <vector>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack::session {
+struct EstimateRow;
+}
+
+namespace armtrack::ui {
+
+inline constexpr int kAngleCount = 5;
+
+/// The five clinical angles at one time, in the order and signs of clinicalAngleInfo().
+struct AngleSample {
+  double t = 0.0;                              ///< s
+  std::array<double, kAngleCount> deg{};       ///< degrees; NaN where unknown
+  std::array<double, kAngleCount> sigmaDeg{};  ///< 1-sigma (deg); 0 when not known
+};
+
+/// An estimate as clinical angles (degrees) with its uncertainty.
+AngleSample angleSample(double t, const JointVector& thRad, const JointVector& thStdRad);
+AngleSample angleSample(const session::EstimateRow& row);
+
+/// The samples of one series, in time order. Live: old samples beyond keepSeconds are dropped;
+/// review: keepSeconds = infinity keeps everything. Samples out of time order or with a
+/// non-finite time are refused and counted; a non-finite angle is kept as a gap in that angle.
+class AngleTrace {
+ public:
+  explicit AngleTrace(double keepSeconds = std::numeric_limits<double>::infinity())
+      : m_keep(keepSeconds) {}
+
+  void setKeepSeconds(double s) { m_keep = s; }
+  /// Appends in time order; returns how many were kept.
+  std::size_t append(const std::vector<AngleSample>& rows);
+  void clear();
+
+  const std::deque<AngleSample>& samples() const { return m_rows; }
+  bool empty() const { return m_rows.empty(); }
+  double firstTime() const { return m_rows.empty() ? 0.0 : m_rows.front().t; }
+  double lastTime() const { return m_rows.empty() ? 0.0 : m_rows.back().t; }
+  /// The newest sample at or before t (the last one when t is past the end); nullptr if none.
+  const AngleSample* at(double t) const;
+  std::size_t refused() const { return m_refused; }
+
+  /// Index of the first sample with time >= t.
+  std::size_t lowerBound(double t) const;
+
+ private:
+  std::deque<AngleSample> m_rows;
+  double m_keep;
+  std::size_t m_refused = 0;
+};
+
+/// One angle of a trace reduced for a plot of `columns` pixel columns spanning [t0, t1]: per
+/// column, the smallest and largest value in the order they occur (so peaks survive), or the one
+/// value there is. Non-finite values are skipped; values are clamped to +-limitDeg so that an
+/// absurd one cannot wreck the axis. At most 2 x columns points; plus the last sample before t0
+/// and the first after t1, so lines run to the plot's edges.
+void decimateAngle(const AngleTrace& trace, int angle, double t0, double t1, int columns,
+                   std::vector<QPointF>& out, double limitDeg = 720.0);
+
+/// The +-k sigma envelope of one angle, one upper and one lower point per column (the column's
+/// widest extent).
+void decimateBand(const AngleTrace& trace, int angle, double t0, double t1, int columns, double k,
+                  std::vector<QPointF>& upper, std::vector<QPointF>& lower,
+                  double limitDeg = 720.0);
+
+}  // namespace armtrack::ui
