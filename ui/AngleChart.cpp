@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "ui/AngleTableModel.h"
+#include "ui/Fonts.h"
 
 namespace armtrack::ui {
 
@@ -58,10 +59,7 @@ AngleChart::AngleChart(int angle, QWidget* parent)
   m_chart->setMargins(QMargins(4, 2, 4, 2));
   m_chart->setBackgroundRoundness(0);
   m_chart->setTitle(angleDisplayName(angle) + QStringLiteral(" (\u00b0)"));
-  QFont f = m_chart->titleFont();
-  f.setPointSizeF(f.pointSizeF() * 0.9);
-  f.setBold(true);
-  m_chart->setTitleFont(f);
+  m_chart->setTitleFont(scaledFont(m_chart->titleFont(), 0.9));
   setChart(m_chart);
   setRenderHint(QPainter::Antialiasing, false);  // thousands of points at 30 Hz
   setMinimumSize(1, 1);

@@ -47,7 +47,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
       tr("The current value of each angle, its uncertainty, the range over the plotted time "
          "and the target"));
   m_tableView->verticalHeader()->hide();
-  m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
   m_tableView->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_tableView->setTabKeyNavigation(false);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ui/AngleTableModel.h"
+#include "ui/Fonts.h"
 
 namespace armtrack::ui {
 
@@ -96,13 +97,8 @@ void AngleReadouts::refresh() {
 
 void AngleReadouts::applyFonts() {
   for (Readout& r : m_readouts) {
-    QFont big = font();
-    big.setPointSizeF(font().pointSizeF() * 2.6);
-    big.setBold(true);
-    r.value->setFont(big);
-    QFont small = font();
-    small.setPointSizeF(font().pointSizeF() * 0.9);
-    r.note->setFont(small);
+    r.value->setFont(scaledFont(font(), 2.6));
+    r.note->setFont(scaledFont(font(), 0.9, false));
   }
 }
 

@@ -225,10 +225,13 @@ struct ArmScene::Impl {
     kinectElbow->setColor(kinect);
     kinectWrist->setColor(kinect);
     for (auto& r : rays) r->GetProperty()->SetColor(0.98, 0.88, 0.2);
-    const Rgb body = dark ? Rgb{0.6, 0.6, 0.64} : Rgb{0.45, 0.45, 0.5};
+    // Opaque and pale: any translucent prop switches VTK to its order-independent translucency
+    // passes, which cost more than the rest of the scene in software OpenGL.
+    const Rgb body = dark ? Rgb{0.34, 0.35, 0.38} : Rgb{0.93, 0.93, 0.95};
     for (Part* p : {trunk.get(), head.get()}) {
       p->setColor(body);
-      p->actor->GetProperty()->SetOpacity(0.14);
+      p->actor->GetProperty()->SetAmbient(0.55);
+      p->actor->GetProperty()->SetDiffuse(0.4);
     }
     const Rgb grid = dark ? Rgb{0.42, 0.45, 0.5} : Rgb{0.62, 0.65, 0.7};
     floor->GetProperty()->SetColor(grid[0], grid[1], grid[2]);

@@ -1,8 +1,11 @@
 #include "ui/DeviceHealthPanel.h"
 
 #include <QEvent>
+#include <QGuiApplication>
 #include <QHeaderView>
+#include <QIcon>
 #include <QLabel>
+#include <QPixmap>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -144,8 +147,7 @@ int DeviceHealthModel::columnCount(const QModelIndex& parent) const {
 QVariant DeviceHealthModel::data(const QModelIndex& index, int role) const {
   if (!index.isValid() || index.row() >= static_cast<int>(m_rows.size())) return {};
   const StreamHealthRow& r = m_rows[static_cast<std::size_t>(index.row())];
-  if (role == Qt::DecorationRole && index.column() == Status)
-    return healthColour(r.level, m_dark);  // a swatch beside the words
+  if (role == Qt::DecorationRole && index.column() == Status) return swatch(r.level);
   if (role == Qt::ForegroundRole && index.column() == Status && r.level != HealthLevel::Ok)
     return healthColour(r.level, m_dark);
   if (role == Qt::TextAlignmentRole && index.column() >= Rate)
@@ -203,8 +205,23 @@ void DeviceHealthModel::setRows(const std::vector<StreamHealthRow>& rows) {
     emit dataChanged(index(0, 0), index(static_cast<int>(m_rows.size()) - 1, ColumnCount - 1));
 }
 
+QVariant DeviceHealthModel::swatch(HealthLevel level) const {
+  // One icon per level, made once: a bare QColor as decoration makes the item delegate create a
+  // new pixmap at every paint, and those were kept (the process grew 2 MB a minute).
+  const QColor c = healthColour(level, m_dark);
+  if (!qobject_cast<QGuiApplication*>(QCoreApplication::instance())) return c;
+  const auto i = static_cast<std::size_t>(level);
+  if (m_swatches[i].isNull()) {
+    QPixmap p(12, 12);
+    p.fill(c);
+    m_swatches[i] = QIcon(p);
+  }
+  return m_swatches[i];
+}
+
 void DeviceHealthModel::setDark(bool dark) {
   m_dark = dark;
+  m_swatches = {};
   if (!m_rows.empty())
     emit dataChanged(index(0, 0), index(static_cast<int>(m_rows.size()) - 1, ColumnCount - 1));
 }
@@ -223,8 +240,9 @@ DeviceHealthPanel::DeviceHealthPanel(QWidget* parent)
   m_view->setModel(m_model);
   m_view->setAccessibleName(tr("Devices and streams"));
   m_view->verticalHeader()->hide();
-  m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  m_view->horizontalHeader()->setStretchLastSection(true);
+  // Sized to the contents when the rows change, not at every update (that measures every cell).
+  m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
+  m_view->horizontalHeader()->setSectionResizeMode(DeviceHealthModel::Status, QHeaderView::Stretch);
   m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_view->setTabKeyNavigation(false);
@@ -251,7 +269,9 @@ void DeviceHealthPanel::clear() {
 }
 
 void DeviceHealthPanel::publish() {
+  const bool resized = m_tracker.rows().size() != static_cast<std::size_t>(m_model->rowCount());
   m_model->setRows(m_tracker.rows());
+  if (resized) m_view->resizeColumnsToContents();
   const QString summary = m_tracker.summary();
   const bool ok = m_tracker.allOk();
   m_summary->setText(summary);

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QIcon>
 #include <QString>
 #include <QWidget>
+#include <array>
 #include <vector>
 
 #include "core/devices/Stream.h"
@@ -72,8 +74,12 @@ class DeviceHealthModel : public QAbstractTableModel {
   void setDark(bool dark);
 
  private:
+  /// The level's colour as an icon (a plain colour without a QGuiApplication).
+  QVariant swatch(HealthLevel level) const;
+
   std::vector<StreamHealthRow> m_rows;
   bool m_dark = false;
+  mutable std::array<QIcon, 4> m_swatches;
 };
 
 /// The colour of a level (green, amber, red, grey), readable on either palette.

@@ -5,6 +5,7 @@
 #include <QVBoxLayout>
 
 #include "core/metrics/RepetitionCounter.h"
+#include "ui/Fonts.h"
 
 namespace armtrack::ui {
 
@@ -14,10 +15,7 @@ RepetitionCounterWidget::RepetitionCounterWidget(QWidget* parent) : QWidget(pare
   v->setContentsMargins(4, 4, 4, 4);
   m_caption = new QLabel(tr("Repetitions"), this);
   m_count = new QLabel(this);
-  QFont big = font();
-  big.setPointSizeF(font().pointSizeF() * 2.6);
-  big.setBold(true);
-  m_count->setFont(big);
+  setScaledFont(m_count, 2.6);
   m_detail = new QLabel(this);
   m_detail->setWordWrap(true);
   m_progress = new QProgressBar(this);

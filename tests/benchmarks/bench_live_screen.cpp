@@ -6,6 +6,7 @@
 //
 //   tests/support/run-gui-test.sh build/tests/benchmarks/bench_live_screen [--seconds 600]
 //       [--interval 30] [--size 1280x800]
+#include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -37,6 +38,13 @@ double residentMb() {
   double size = 0, resident = 0;
   statm >> size >> resident;
   return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+/// Bytes the allocator has handed out and not had back (all arenas): beside the resident size,
+/// it tells a leak (both grow) from memory the allocator keeps (only the resident size grows).
+double heapInUseMb() {
+  const struct mallinfo2 m = mallinfo2();
+  return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
 }
 
 /// Counts the paints of the charts' viewports (what the user sees refresh).
@@ -131,8 +139,8 @@ int main(int argc, char** argv) {
           "Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
           "webcam), EKF, drained at %.0f Hz\n",
           screen.width(), screen.height(), screen.drainRate());
-      std::printf("%8s %9s %11s %12s %10s %13s %9s %10s\n", "time s", "3D fps", "plot fps",
-                  "plot paint/s", "drains/s", "max stall ms", "CPU %", "RSS MB");
+      std::printf("%8s %9s %11s %12s %10s %13s %9s %10s %10s\n", "time s", "3D fps", "plot fps",
+                  "plot paint/s", "drains/s", "max stall ms", "CPU %", "RSS MB", "heap MB");
       std::fflush(stdout);
     });
   });
@@ -141,11 +149,11 @@ int main(int argc, char** argv) {
     if (start.t == 0) return;
     const Mark m = mark();
     const double dt = m.t - prev.t;
-    std::printf("%8.0f %9.1f %11.1f %12.1f %10.1f %13.1f %9.1f %10.1f\n", m.t - start.t,
+    std::printf("%8.0f %9.1f %11.1f %12.1f %10.1f %13.1f %9.1f %10.1f %10.1f\n", m.t - start.t,
                 (m.frames - prev.frames) / dt, (m.redraws - prev.redraws) / dt,
                 (m.paints - prev.paints) / dt / std::max<qsizetype>(1, charts.size()),
                 (m.drains - prev.drains) / dt, maxStallMs, 100.0 * (m.cpu - prev.cpu) / dt,
-                residentMb());
+                residentMb(), heapInUseMb());
     std::fflush(stdout);
     maxStallAllMs = std::max(maxStallAllMs, maxStallMs);
     maxStallMs = 0;

@@ -15,6 +15,7 @@
 #include "ui/AngleReadouts.h"
 #include "ui/AngleTableModel.h"
 #include "ui/DeviceHealthPanel.h"
+#include "ui/Fonts.h"
 #include "ui/RepetitionCounterWidget.h"
 
 namespace armtrack::app::gui {
@@ -87,10 +88,7 @@ void LiveSessionScreen::buildLayout() {
   // Header: who, state, controls.
   auto* header = new QHBoxLayout;
   m_title = new QLabel(this);
-  QFont tf = m_title->font();
-  tf.setPointSizeF(tf.pointSizeF() * 1.3);
-  tf.setBold(true);
-  m_title->setFont(tf);
+  ui::setScaledFont(m_title, 1.3);
   const QString side = m_config.meta.side == Side::Left ? tr("left arm") : tr("right arm");
   m_title->setText(m_config.patientLabel.isEmpty()
                        ? tr("Live session, %1").arg(side)

@@ -16,6 +16,7 @@
 #include "app/gui/newsession/CalibrationGuide.h"
 #include "core/metrics/RangeOfMotion.h"
 #include "ui/ArmView.h"
+#include "ui/Fonts.h"
 
 namespace armtrack::app::gui {
 
@@ -91,10 +92,7 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
   auto* root = new QHBoxLayout(this);
   auto* left = new QVBoxLayout;
   m_title = new QLabel(tr("Sensor calibration"), this);
-  QFont tf = m_title->font();
-  tf.setPointSizeF(tf.pointSizeF() * 1.6);
-  tf.setBold(true);
-  m_title->setFont(tf);
+  ui::setScaledFont(m_title, 1.6);
   m_instruction = new QLabel(
       tr("The patient sits upright with both sensors strapped on. Press Start, then follow the "
          "instructions for about a minute (docs/calibration.md)."),
@@ -102,10 +100,7 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
   m_instruction->setWordWrap(true);
   m_instruction->setAccessibleName(tr("Instruction"));
   m_countdown = new QLabel(this);
-  QFont cf = m_countdown->font();
-  cf.setPointSizeF(cf.pointSizeF() * 2.4);
-  cf.setBold(true);
-  m_countdown->setFont(cf);
+  ui::setScaledFont(m_countdown, 2.4);
   m_countdown->setAccessibleName(tr("Time left in this step"));
   m_progress = new QProgressBar(this);
   m_progress->setRange(0, 1000);
