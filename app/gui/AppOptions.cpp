@@ -41,8 +41,13 @@ QString appUsage() {
       "  --plugins DIR   also look for device plugins in DIR (repeatable)\n"
       "  --lang CODE     language of the user interface, e.g. en, de, es\n"
       "  --quit-after S  quit after S seconds (for unattended runs)\n"
+      "  --quit-when-live\n"
+      "                  quit once a live session (the demo's, with --demo) has shown 2 s of\n"
+      "                  estimates; with --quit-after S, exit with status 1 if it has not\n"
+      "                  within S seconds (for checking an installation)\n"
       "  --screenshot FILE\n"
-      "                  with --quit-after: save the window as a PNG before quitting\n"
+      "                  with --quit-after or --quit-when-live: save the window as a PNG\n"
+      "                  before quitting\n"
       "  --version       print the version and exit\n"
       "  --help          print this text and exit\n"
       "\n"
@@ -92,6 +97,8 @@ AppOptions parseAppOptions(const QStringList& arguments) {
         if (!ok || !(o.quitAfterSeconds > 0))
           o.error = tr("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
       }
+    } else if (a == QLatin1String("--quit-when-live")) {
+      o.quitWhenLive = true;
     } else if (is("--screenshot")) {
       valueOf(i, QStringLiteral("--screenshot"), o.screenshot);
     } else if (isQtOptionWithValue(a) && i + 1 < arguments.size()) {
@@ -102,8 +109,8 @@ AppOptions parseAppOptions(const QStringList& arguments) {
       o.error = tr("unknown option or argument '%1' (see armtrack --help)").arg(a);
     }
   }
-  if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0)
-    o.error = tr("--screenshot needs --quit-after");
+  if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0 && !o.quitWhenLive)
+    o.error = tr("--screenshot needs --quit-after or --quit-when-live");
   return o;
 }
 

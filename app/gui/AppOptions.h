@@ -14,6 +14,7 @@ struct AppOptions {
   QString language;             ///< --lang CODE (empty: settings, else the system's)
   double quitAfterSeconds = 0;  ///< --quit-after S: quit after S seconds (0: never)
   QString screenshot;           ///< --screenshot FILE: the window as PNG when quitting
+  bool quitWhenLive = false;    ///< --quit-when-live: quit once a live session shows estimates
   bool help = false;
   bool version = false;
   QString error;            ///< a usage error, in words; empty when the line was fine

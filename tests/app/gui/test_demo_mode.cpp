@@ -4,6 +4,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 
 #include "app/gui/AppController.h"
@@ -73,6 +74,45 @@ class TestDemoMode : public QObject {
     for (int y = 0; y < image.height(); y += 7)
       for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
     QVERIFY2(colours.size() > 20, qPrintable(QString::number(colours.size())));
+  }
+
+  // --quit-when-live: how the package's install test knows the installed program reached the
+  // live screen (tests/packaging): it quits on the condition, not after a guessed time.
+  void quitsOnceTheLiveSessionShowsEstimates() {
+    const QString shot = m_dir.filePath(QStringLiteral("live.png"));
+    QProcess p;
+    p.start(QStringLiteral(ARMTRACK_GUI),
+            {QStringLiteral("--demo"), QStringLiteral("--db"),
+             m_dir.filePath(QStringLiteral("live.db")), QStringLiteral("--quit-when-live"),
+             QStringLiteral("--quit-after"), QStringLiteral("120"), QStringLiteral("--screenshot"),
+             shot});
+    QVERIFY(p.waitForFinished(150000));
+    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QVERIFY2(p.exitCode() == 0, qPrintable(err));
+    const QRegularExpression running(
+        QStringLiteral("the live session is running: (\\d+) "
+                       "estimates in ([0-9.]+) s"));
+    const QRegularExpressionMatch m = running.match(err);
+    QVERIFY2(m.hasMatch(), qPrintable(err));
+    QVERIFY2(m.captured(1).toLongLong() > 100, qPrintable(err));
+    QVERIFY2(m.captured(2).toDouble() >= 2.0, qPrintable(err));
+    QVERIFY(!QImage(shot).isNull());
+  }
+
+  void saysSoWhenNoLiveSessionCame() {
+    // Without --demo the records open at the sign-in (here the first run): no live session.
+    QProcess p;
+    p.start(QStringLiteral(ARMTRACK_GUI),
+            {QStringLiteral("--db"), m_dir.filePath(QStringLiteral("none.db")),
+             QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"),
+             QStringLiteral("1.5")});
+    QVERIFY(p.waitForFinished(60000));
+    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), 1);
+    QVERIFY2(err.contains(QStringLiteral("no live session showed estimates within 1.5 s")),
+             qPrintable(err));
   }
 };
 
