@@ -2,6 +2,7 @@
 // plain words before Qt starts, then sets the OpenGL format the 3D view needs and hands over to
 // AppController.
 #include <QApplication>
+#include <QIcon>
 #include <cstdio>
 
 #include "app/gui/AppController.h"
@@ -46,7 +47,9 @@ int main(int argc, char** argv) {
   armtrack::gui::setApplicationIdentity();
   QApplication::setApplicationDisplayName(QStringLiteral("ArmTrack"));
   QApplication::setApplicationVersion(QStringLiteral(ARMTRACK_VERSION));
-  QApplication::setDesktopFileName(QStringLiteral("armtrack"));
+  // The installed desktop entry and icon (packaging/linux, packaging/icons).
+  QApplication::setDesktopFileName(QStringLiteral("org.armtrack.ArmTrack"));
+  QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("org.armtrack.ArmTrack")));
   armtrack::gui::AppController controller(std::move(options));
   controller.start();
   return app.exec();
