@@ -8,9 +8,10 @@ namespace armtrack::gui {
 
 namespace {
 
-QString tr(const char* text) {
-  return QCoreApplication::translate("armtrack::gui::AppOptions", text);
-}
+// This file's texts (context "armtrack::gui::AppOptions" in translations/armtrack_<code>.ts).
+struct Tr {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::gui::AppOptions)
+};
 
 // Options of QApplication itself that take a value (they stay for it).
 bool isQtOptionWithValue(const QString& a) {
@@ -27,7 +28,7 @@ bool isQtOptionWithValue(const QString& a) {
 }  // namespace
 
 QString appUsage() {
-  return tr(
+  return Tr::tr(
       "Usage: armtrack [options]\n"
       "\n"
       "ArmTrack measures how a patient's arm moves during rehabilitation.\n"
@@ -60,10 +61,10 @@ AppOptions parseAppOptions(const QStringList& arguments) {
     } else if (i + 1 < arguments.size()) {
       into = arguments[++i];
     } else {
-      o.error = tr("%1 needs a value").arg(name);
+      o.error = Tr::tr("%1 needs a value").arg(name);
       return false;
     }
-    if (into.isEmpty()) o.error = tr("%1 needs a value").arg(name);
+    if (into.isEmpty()) o.error = Tr::tr("%1 needs a value").arg(name);
     return !into.isEmpty();
   };
   for (qsizetype i = 1; i < arguments.size() && o.error.isEmpty(); ++i) {
@@ -90,7 +91,7 @@ AppOptions parseAppOptions(const QStringList& arguments) {
         bool ok = false;
         o.quitAfterSeconds = v.toDouble(&ok);
         if (!ok || !(o.quitAfterSeconds > 0))
-          o.error = tr("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
+          o.error = Tr::tr("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
       }
     } else if (is("--screenshot")) {
       valueOf(i, QStringLiteral("--screenshot"), o.screenshot);
@@ -99,11 +100,11 @@ AppOptions parseAppOptions(const QStringList& arguments) {
     } else if (a.startsWith(u'-') && !a.startsWith(QLatin1String("--"))) {
       o.qtArguments << a;  // a Qt option without a value, e.g. -reverse
     } else {
-      o.error = tr("unknown option or argument '%1' (see armtrack --help)").arg(a);
+      o.error = Tr::tr("unknown option or argument '%1' (see armtrack --help)").arg(a);
     }
   }
   if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0)
-    o.error = tr("--screenshot needs --quit-after");
+    o.error = Tr::tr("--screenshot needs --quit-after");
   return o;
 }
 
@@ -115,11 +116,11 @@ bool displayAvailable(QString* why) {
     return true;
   const QByteArray display = qgetenv("DISPLAY");
   const bool wayland = !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
-  const QString howTo =
-      tr("To run ArmTrack on a machine without a screen, start it under a virtual display:\n"
-         "  xvfb-run -a -s '-screen 0 1280x800x24' armtrack --demo\n"
-         "(xvfb-run comes with the Debian package xvfb.) The clinical records can also be "
-         "reached without a display through armtrack-cli.");
+  const QString howTo = Tr::tr(
+      "To run ArmTrack on a machine without a screen, start it under a virtual display:\n"
+      "  xvfb-run -a -s '-screen 0 1280x800x24' armtrack --demo\n"
+      "(xvfb-run comes with the Debian package xvfb.) The clinical records can also be "
+      "reached without a display through armtrack-cli.");
   if (!display.isEmpty() && !platform.startsWith(QLatin1String("wayland"))) {
     int screen = 0;
     xcb_connection_t* c = xcb_connect(display.constData(), &screen);
@@ -128,15 +129,17 @@ bool displayAvailable(QString* why) {
     if (ok) return true;
     if (wayland) return true;  // Qt falls back to Wayland when X cannot be reached
     if (why)
-      *why = tr("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
-                 .arg(QString::fromLocal8Bit(display)) +
-             howTo;
+      *why =
+          Tr::tr("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
+              .arg(QString::fromLocal8Bit(display)) +
+          howTo;
     return false;
   }
   if (wayland) return true;
   if (why)
-    *why = tr("ArmTrack needs a graphical display and found none (neither DISPLAY nor "
-              "WAYLAND_DISPLAY is set).\n") +
+    *why = Tr::tr(
+               "ArmTrack needs a graphical display and found none (neither DISPLAY nor "
+               "WAYLAND_DISPLAY is set).\n") +
            howTo;
   return false;
 }
