@@ -77,7 +77,7 @@ QVariant AngleTableModel::headerData(int section, Qt::Orientation orientation, i
     case Value:
       return tr("Now");
     case Uncertainty:
-      return tr("\u00b12\u03c3");
+      return tr("±2σ");
     case Minimum:
       return tr("Min");
     case Maximum:

@@ -238,8 +238,8 @@ void ReviewScreen::showDataTexts() {
   if (d.metrics) {
     const QJsonObject r = (*d.metrics)["repetitions"].toObject();
     m_repSummary->setText(
-        tr("%1 repetitions on %2 (%3 full, %4 partial). Smoothness: SPARC %5, LDLJ %6.")
-            .arg(r["count"].toInt())
+        tr("%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.",
+           nullptr, r["count"].toInt())
             .arg(angleName(angleIndex(r["primary_angle"].toString())))
             .arg(r["full"].toInt())
             .arg(r["partial"].toInt())

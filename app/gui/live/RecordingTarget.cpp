@@ -35,8 +35,8 @@ std::unique_ptr<RecordingSink> CsvRecordingTarget::open(const RecordingMeta& met
 }
 
 QString CsvRecordingTarget::finish(std::uint64_t rows, bool complete, const QString&) {
-  return complete ? Tr::tr("%1 rows recorded in %2").arg(rows).arg(describe())
-                  : Tr::tr("%1 rows recorded in %2; some rows could not be written")
+  return complete ? Tr::tr("%L1 rows recorded in %2").arg(rows).arg(describe())
+                  : Tr::tr("%L1 rows recorded in %2; some rows could not be written")
                         .arg(rows)
                         .arg(describe());
 }
@@ -76,12 +76,12 @@ QString DatabaseRecordingTarget::finish(std::uint64_t rows, bool complete, const
     m_store.finishSession(m_sessionId,
                           complete ? storage::kStatusComplete : storage::kStatusInterrupted);
   } catch (const storage::StorageError& e) {
-    return Tr::tr("session %1: %2 rows recorded, but it could not be closed: %3")
+    return Tr::tr("session %1: %L2 rows recorded, but it could not be closed: %3")
         .arg(m_sessionId)
         .arg(rows)
         .arg(QString::fromStdString(e.what()));
   }
-  return Tr::tr("session %1 saved in the records: %2 rows").arg(m_sessionId).arg(rows);
+  return Tr::tr("session %1 saved in the records: %L2 rows").arg(m_sessionId).arg(rows);
 }
 
 }  // namespace armtrack::app::gui

@@ -98,7 +98,7 @@ QString patientProblem(const storage::Patient& p, const QDate& today, QString* f
   const auto check = [&](const std::optional<double>& v, double lo, double hi, const char* name,
                          const QString& what) -> QString {
     if (v && (*v < lo || *v > hi))
-      return fail(name, Tr::tr("The %1 of %2 cm is outside %3-%4 cm: check the measurement.")
+      return fail(name, Tr::tr("The %1 of %L2 cm is outside %L3-%L4 cm: check the measurement.")
                             .arg(what)
                             .arg(*v * 100, 0, 'f', 1)
                             .arg(lo * 100, 0, 'f', 0)
