@@ -2372,10 +2372,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Datum</translation>
     </message>
     <message>
-        <source>shaded: AAOS normal range of motion, 0-%L1 deg</source>
-        <translation>schattiert: normales Bewegungsausmaß nach AAOS, 0–%L1°</translation>
-    </message>
-    <message>
         <source>not measured in this period</source>
         <translation>in diesem Zeitraum nicht gemessen</translation>
     </message>
@@ -2569,10 +2565,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>%1 – %2 – erstellt am %3</translation>
     </message>
     <message>
-        <source>%L1 s</source>
-        <translation>%L1 s</translation>
-    </message>
-    <message>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
@@ -2679,10 +2671,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Bewegungszeit (s)</translation>
     </message>
     <message>
-        <source>%L1 samples used, %L2 rows rejected (not finite), %L3 gaps. Smoothness of the wrist path: %4, %5.</source>
-        <translation>%L1 Messwerte verwendet, %L2 Zeilen verworfen (nicht endlich), %L3 Lücken. Glattheit der Handgelenksbahn: %4, %5.</translation>
-    </message>
-    <message>
         <source>Joint angles over time</source>
         <translation>Gelenkwinkel im Zeitverlauf</translation>
     </message>
@@ -2739,10 +2727,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Vergleich mit Normbereichen</translation>
     </message>
     <message>
-        <source>ROM %1 of %2 deg (%L3 %)</source>
-        <translation>ROM %1 von %2° (%L3 %)</translation>
-    </message>
-    <message>
         <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
         <translation>Grau: das normale aktive Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Quelle: %1. Für die Schulteradduktion nennt diese Quelle keinen Normwert; ihr Bereich wird ab 0 gezeigt.</translation>
     </message>
@@ -2793,6 +2777,22 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Session report</source>
         <translation>Sitzungsbericht</translation>
+    </message>
+    <message>
+        <source>shaded: AAOS normal range of motion, 0-%1 deg</source>
+        <translation>schattiert: normales Bewegungsausmaß nach AAOS, 0–%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 samples used, %2 rows rejected (not finite), %3 gaps. Smoothness of the wrist path: %4, %5.</source>
+        <translation>%1 Messwerte verwendet, %2 Zeilen verworfen (nicht endlich), %3 Lücken. Glattheit der Handgelenksbahn: %4, %5.</translation>
+    </message>
+    <message>
+        <source>ROM %1 of %2 deg (%3 %)</source>
+        <translation>ROM %1 von %2° (%3 %)</translation>
     </message>
 </context>
 <context>

@@ -2372,10 +2372,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>fecha</translation>
     </message>
     <message>
-        <source>shaded: AAOS normal range of motion, 0-%L1 deg</source>
-        <translation>sombreado: rango de movimiento normal según la AAOS, 0–%L1°</translation>
-    </message>
-    <message>
         <source>not measured in this period</source>
         <translation>no medido en este periodo</translation>
     </message>
@@ -2569,10 +2565,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>%1 – %2 – generado el %3</translation>
     </message>
     <message>
-        <source>%L1 s</source>
-        <translation>%L1 s</translation>
-    </message>
-    <message>
         <source>%1 min %2 s</source>
         <translation>%1 min %2 s</translation>
     </message>
@@ -2679,10 +2671,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Tiempo en movimiento (s)</translation>
     </message>
     <message>
-        <source>%L1 samples used, %L2 rows rejected (not finite), %L3 gaps. Smoothness of the wrist path: %4, %5.</source>
-        <translation>%L1 muestras usadas, %L2 filas descartadas (no finitas), %L3 huecos. Suavidad de la trayectoria de la muñeca: %4, %5.</translation>
-    </message>
-    <message>
         <source>Joint angles over time</source>
         <translation>Ángulos articulares a lo largo del tiempo</translation>
     </message>
@@ -2739,10 +2727,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Comparación con los rangos normativos</translation>
     </message>
     <message>
-        <source>ROM %1 of %2 deg (%L3 %)</source>
-        <translation>ROM %1 de %2° (%L3 %)</translation>
-    </message>
-    <message>
         <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
         <translation>Gris: el rango de movimiento activo normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Fuente: %1. Esa fuente no da un límite normal para la aducción de hombro; su rango se muestra desde 0.</translation>
     </message>
@@ -2793,6 +2777,22 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Session report</source>
         <translation>Informe de la sesión</translation>
+    </message>
+    <message>
+        <source>shaded: AAOS normal range of motion, 0-%1 deg</source>
+        <translation>sombreado: rango de movimiento normal según la AAOS, 0–%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 samples used, %2 rows rejected (not finite), %3 gaps. Smoothness of the wrist path: %4, %5.</source>
+        <translation>%1 muestras usadas, %2 filas descartadas (no finitas), %3 huecos. Suavidad de la trayectoria de la muñeca: %4, %5.</translation>
+    </message>
+    <message>
+        <source>ROM %1 of %2 deg (%3 %)</source>
+        <translation>ROM %1 de %2° (%3 %)</translation>
     </message>
 </context>
 <context>

@@ -5,7 +5,7 @@
 
 #include <QCoreApplication>
 
-#include "ui/ModelTexts.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::ui {
 

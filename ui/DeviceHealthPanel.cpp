@@ -11,7 +11,7 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
-#include "ui/ModelTexts.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::ui {
 

@@ -14,6 +14,7 @@
 #include "app/gui/PatientDialog.h"
 #include "app/gui/PatientTableModel.h"
 #include "app/gui/services/RecordsService.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -110,7 +111,7 @@ void PatientListScreen::retranslateUi() {
   m_search->setAccessibleName(tr("Search patients"));
   m_table->setAccessibleName(tr("Patient list"));
   m_open->setText(tr("&Open"));
-  m_add->setText(tr("&New patient..."));
+  ui::setButtonText(m_add, tr("&New patient..."));
   m_add->setToolTip(tr("Add a patient (%1)")
                         .arg(QKeySequence(QKeySequence::New).toString(QKeySequence::NativeText)));
   m_edit->setText(tr("&Edit..."));

@@ -26,6 +26,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -179,7 +180,7 @@ void PatientScreen::retranslateUi() {
   m_review->setText(tr("&Review session"));
   m_report->setText(tr("&Progress report (PDF)..."));
   m_edit->setText(tr("&Edit patient..."));
-  m_back->setText(tr("&Back to patients"));
+  ui::setButtonText(m_back, tr("&Back to patients"));
   m_detailsBox->setTitle(tr("Details"));
   const QStringList details = {tr("Code:"),          tr("Born:"),      tr("Sex:"),
                                tr("Affected side:"), tr("Diagnosis:"), tr("Notes:")};

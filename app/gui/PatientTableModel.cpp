@@ -3,7 +3,7 @@
 #include <QDate>
 #include <QLocale>
 
-#include "ui/ModelTexts.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 

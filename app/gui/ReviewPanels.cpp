@@ -15,7 +15,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 
-#include "ui/ModelTexts.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 

@@ -24,6 +24,7 @@
 #include "app/gui/services/RecordsService.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -191,9 +192,9 @@ void ReviewScreen::buildLayout() {
 }
 
 void ReviewScreen::retranslateUi() {
-  m_back->setText(tr("&Back to the patient"));
+  ui::setButtonText(m_back, tr("&Back to the patient"));
   m_arm->setAccessibleName(tr("3D arm replay"));
-  m_playButton->setText(playing() ? tr("&Pause") : tr("&Play"));
+  ui::setButtonText(m_playButton, playing() ? tr("&Pause") : tr("&Play"));
   m_playButton->setToolTip(tr("Play or pause the replay (%1)")
                                .arg(m_playButton->shortcut().toString(QKeySequence::NativeText)));
   m_slider->setAccessibleName(tr("Replay time"));
@@ -208,7 +209,7 @@ void ReviewScreen::retranslateUi() {
       tr("Another session of this patient, drawn dashed on the plots and as a translucent arm:"));
   m_tabs->setTabText(m_tabs->indexOf(m_compareTab), tr("Co&mpare"));
   m_notes->setAccessibleName(tr("Session notes"));
-  m_saveNotes->setText(tr("Sa&ve notes"));
+  ui::setButtonText(m_saveNotes, tr("Sa&ve notes"));
   m_tabs->setTabText(m_tabs->indexOf(m_notesTab), tr("&Notes"));
   m_tabs->setTabText(m_tabs->indexOf(m_reestimate), tr("Re-es&timate"));
   m_tabs->setTabText(m_tabs->indexOf(m_outputs), tr("Report and e&xport"));
@@ -238,8 +239,8 @@ void ReviewScreen::showDataTexts() {
   if (d.metrics) {
     const QJsonObject r = (*d.metrics)["repetitions"].toObject();
     m_repSummary->setText(
-        tr("%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.",
-           nullptr, r["count"].toInt())
+        tr("%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.", nullptr,
+           r["count"].toInt())
             .arg(angleName(angleIndex(r["primary_angle"].toString())))
             .arg(r["full"].toInt())
             .arg(r["partial"].toInt())
@@ -353,12 +354,12 @@ void ReviewScreen::play() {
   if (m_cursor >= m_t1) setCursor(m_t0);
   m_clock.start();
   m_play.start();
-  m_playButton->setText(tr("&Pause"));
+  ui::setButtonText(m_playButton, tr("&Pause"));
 }
 
 void ReviewScreen::pause() {
   m_play.stop();
-  m_playButton->setText(tr("&Play"));
+  ui::setButtonText(m_playButton, tr("&Play"));
 }
 
 void ReviewScreen::tick() {

@@ -4,7 +4,7 @@
 #include <QLocale>
 #include <cmath>
 
-#include "ui/ModelTexts.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 

@@ -105,7 +105,7 @@ QString SignInScreen::refusalText(const QString& message) const {
   if (const auto wait = waitRe.match(message); wait.hasMatch())
     return tr("Too many wrong passwords for this account: wait %n s, then try again.", nullptr,
               wait.captured(1).toInt());
-  if (message.startsWith(QLatin1String("wrong user name or password")))
+  if (message.startsWith(QLatin1String("wrong user name or password"), Qt::CaseInsensitive))
     return tr("Wrong user name or password.") + u'\n' +
            tr("Check the name and the password (is Caps Lock on?) and try again. If you have "
               "forgotten it, an administrator can set a new one.");

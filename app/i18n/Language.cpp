@@ -1,6 +1,7 @@
 #include "app/i18n/Language.h"
 
 #include <QCoreApplication>
+#include <QHash>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QStringList>
@@ -37,10 +38,13 @@ void remove(std::unique_ptr<QTranslator>& t) {
 const std::vector<Language>& shippedLanguages() {
   static const std::vector<Language> languages = [] {
     std::vector<Language> out{{QStringLiteral("en"), QStringLiteral("English")}};
+    // Qt's own names may carry a country ("español de España"); the list shows the language.
+    const QHash<QString, QString> names = {{QStringLiteral("de"), QStringLiteral("Deutsch")},
+                                           {QStringLiteral("es"), QStringLiteral("Español")}};
     for (const QString& code :
          QStringLiteral(ARMTRACK_TRANSLATIONS).split(u',', Qt::SkipEmptyParts)) {
-      QString name = QLocale(code).nativeLanguageName();
-      if (!name.isEmpty()) name[0] = name[0].toUpper();  // "español" opens a list as "Español"
+      QString name = names.value(code, QLocale(code).nativeLanguageName());
+      if (!name.isEmpty()) name[0] = name[0].toUpper();
       out.push_back({code, name});
     }
     return out;
@@ -68,7 +72,10 @@ QString setLanguage(const QString& code) {
   if (!i.localeBefore) i.localeBefore = QLocale();
   remove(i.own);
   remove(i.qt);
-  const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
+  QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
+  // The C locale (a machine without a configured language) has no national convention: plain
+  // numbers, as files and the command line print them.
+  if (locale.language() == QLocale::C) locale.setNumberOptions(QLocale::OmitGroupSeparator);
   QLocale::setDefault(locale);
   const QString shipped = shippedLanguageFor(locale.name());
   i.language = shipped.isEmpty() ? QStringLiteral("en") : shipped;

@@ -29,7 +29,7 @@ struct Frame {
 
 QString number(double v) {
   if (std::abs(v) < 1e-9) v = 0;
-  return QLocale().toString(v, 'g', 6);
+  return reportLocale().toString(v, 'g', 6);
 }
 
 /// Title, grid, frame, ticks and their labels, axis titles.
@@ -302,9 +302,10 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)),
              QPointF(f.plot.right(), f.py(normalSpanDeg)));
   p.setFont(w.fonts().small);
-  p.drawText(
-      QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)), Qt::AlignRight | Qt::AlignVCenter,
-      Text::tr("shaded: AAOS normal range of motion, 0-%L1 deg").arg(normalSpanDeg, 0, 'f', 0));
+  p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
+             Qt::AlignRight | Qt::AlignVCenter,
+             Text::tr("shaded: AAOS normal range of motion, 0-%1 deg")
+                 .arg(reportLocale().toString(normalSpanDeg, 'f', 0)));
   QPainterPath path;
   bool open = false;
   p.setPen(QPen(kLine, w.mm(0.35)));

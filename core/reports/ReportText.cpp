@@ -23,7 +23,7 @@ constexpr std::array<const char*, kNumClinicalAngles> kAngleNames = {
 };
 
 QString scalar(const QJsonValue& v) {
-  if (v.isDouble()) return QLocale().toString(v.toDouble(), 'g', 5);
+  if (v.isDouble()) return reportLocale().toString(v.toDouble(), 'g', 5);
   if (v.isBool()) return v.toBool() ? Text::tr("yes") : Text::tr("no");
   if (v.isString()) return v.toString();
   if (v.isNull()) return QStringLiteral("-");
@@ -89,6 +89,12 @@ QString word(const QString& stored) {
   return orDash(stored);
 }
 
+QLocale reportLocale() {
+  QLocale locale;
+  if (locale.language() == QLocale::C) locale.setNumberOptions(QLocale::OmitGroupSeparator);
+  return locale;
+}
+
 QString fullYearDateFormat(const QLocale& locale) {
   if (locale.language() == QLocale::C) return QStringLiteral("yyyy-MM-dd");
   QString format = locale.dateFormat(QLocale::ShortFormat);
@@ -100,7 +106,7 @@ QString fullYearDateFormat(const QLocale& locale) {
 QString formatDeg(std::optional<double> deg) {
   if (!deg || !std::isfinite(*deg)) return QStringLiteral("-");
   const double shown = std::round(*deg * 10) == 0 ? 0.0 : *deg;  // never "-0.0"
-  return QLocale().toString(shown, 'f', 1);
+  return reportLocale().toString(shown, 'f', 1);
 }
 
 QDateTime parseIso(const QString& iso) {
@@ -115,7 +121,7 @@ QDateTime parseIso(const QString& iso) {
 }
 
 QString formatDate(const QDate& date) {
-  const QLocale locale;
+  const QLocale locale = reportLocale();
   return locale.toString(date, fullYearDateFormat(locale));
 }
 
@@ -143,7 +149,7 @@ QString pageFooter(const QString& patientName, const QString& kind, const QDateT
 
 QString formatDuration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return QStringLiteral("-");
-  if (seconds < 60) return Text::tr("%L1 s").arg(seconds, 0, 'f', 1);
+  if (seconds < 60) return Text::tr("%1 s").arg(reportLocale().toString(seconds, 'f', 1));
   const long long s = std::llround(seconds);
   if (s < 3600) return Text::tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
   return Text::tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));

@@ -19,6 +19,10 @@ struct Text {
   Q_DECLARE_TR_FUNCTIONS(armtrack::reports)
 };
 
+/// The locale of the report's numbers and dates: QLocale(), with plain digits (no group
+/// separator) for the C locale, the one of a machine without a configured language.
+QLocale reportLocale();
+
 /// The locale's numeric date format with the year in full ("dd.MM.yyyy" for German,
 /// "dd/MM/yyyy" for Spanish); ISO 8601 ("yyyy-MM-dd") for the C locale, which has no national
 /// convention.

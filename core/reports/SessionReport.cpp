@@ -67,7 +67,8 @@ void devices(PageWriter& w, const SessionReportData& d) {
 }
 
 QString smoothness(const char* name, const SmoothnessValue& v) {
-  return v.ok() ? QStringLiteral("%1 %L2").arg(QLatin1String(name)).arg(v.value, 0, 'f', 2)
+  return v.ok() ? QStringLiteral("%1 %2").arg(QLatin1String(name),
+                                              reportLocale().toString(v.value, 'f', 2))
                 : Text::tr("%1 not defined").arg(QLatin1String(name));
 }
 
@@ -86,14 +87,15 @@ void metricsTable(PageWriter& w, const SessionReportData& d) {
     const AngleMetricsDeg m = inDegrees(d.metrics.session.angle[static_cast<std::size_t>(i)]);
     t.rows.push_back({angleName(i), formatDeg(m.minDeg), formatDeg(m.maxDeg), formatDeg(m.romDeg),
                       formatDeg(m.peakVelocityDegPerS), formatDeg(m.meanVelocityDegPerS),
-                      QLocale().toString(m.movementTimeS, 'f', 1)});
+                      reportLocale().toString(m.movementTimeS, 'f', 1)});
   }
   w.table(t);
-  w.paragraph(Text::tr("%L1 samples used, %L2 rows rejected (not finite), %L3 gaps. Smoothness "
+  const QLocale locale = reportLocale();
+  w.paragraph(Text::tr("%1 samples used, %2 rows rejected (not finite), %3 gaps. Smoothness "
                        "of the wrist path: %4, %5.")
-                  .arg(d.metrics.samples)
-                  .arg(d.metrics.rejectedNonFinite)
-                  .arg(d.metrics.gaps)
+                  .arg(locale.toString(static_cast<qulonglong>(d.metrics.samples)),
+                       locale.toString(static_cast<qulonglong>(d.metrics.rejectedNonFinite)),
+                       locale.toString(static_cast<qulonglong>(d.metrics.gaps)))
                   .arg(smoothness("SPARC", d.metrics.sparc), smoothness("LDLJ", d.metrics.ldlj)),
               w.fonts().small);
 }
@@ -161,8 +163,8 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
     const Repetition& rep = r.repetitions[i];
     const AngleMetricsDeg m =
         inDegrees(rep.metrics.angle[static_cast<std::size_t>(r.primaryAngle)]);
-    t.rows.push_back({QString::number(i + 1), QLocale().toString(rep.startS - t0, 'f', 2),
-                      QLocale().toString(rep.endS - t0, 'f', 2),
+    t.rows.push_back({QString::number(i + 1), reportLocale().toString(rep.startS - t0, 'f', 2),
+                      reportLocale().toString(rep.endS - t0, 'f', 2),
                       formatDeg(rep.excursionRad * kRadToDeg), formatDeg(m.peakVelocityDegPerS),
                       rep.partial ? Text::tr("yes") : Text::tr("no")});
   }
@@ -183,9 +185,10 @@ void normative(PageWriter& w, const SessionReportData& d) {
     b.minDeg = m.minRad * kRadToDeg;
     b.maxDeg = m.maxRad * kRadToDeg;
     b.caption =
-        Text::tr("ROM %1 of %2 deg (%L3 %)")
-            .arg(formatDeg(m.romRad * kRadToDeg), formatDeg(normativeSpanRad(n) * kRadToDeg))
-            .arg(std::lround(100 * fractionOfNormativeSpan(n, m.romRad)));
+        Text::tr("ROM %1 of %2 deg (%3 %)")
+            .arg(formatDeg(m.romRad * kRadToDeg), formatDeg(normativeSpanRad(n) * kRadToDeg),
+                 reportLocale().toString(static_cast<qlonglong>(
+                     std::lround(100 * fractionOfNormativeSpan(n, m.romRad)))));
     bars.push_back(b);
   }
   const QRectF r = w.reserve(normativeBarsHeight(w, bars.size()));

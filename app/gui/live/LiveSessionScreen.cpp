@@ -18,6 +18,7 @@
 #include "ui/DeviceHealthPanel.h"
 #include "ui/Fonts.h"
 #include "ui/RepetitionCounterWidget.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::app::gui {
 
@@ -196,10 +197,10 @@ void LiveSessionScreen::retranslateUi() {
   const auto shortcut = [](const QPushButton* b) {
     return b->shortcut().toString(QKeySequence::NativeText);
   };
-  m_record->setText(tr("&Record"));
-  m_pause->setText(tr("&Pause"));
+  ui::setButtonText(m_record, tr("&Record"));
+  ui::setButtonText(m_pause, tr("&Pause"));
   m_pause->setToolTip(tr("Pause recording; the live view goes on (%1)").arg(shortcut(m_pause)));
-  m_stop->setText(tr("S&top"));
+  ui::setButtonText(m_stop, tr("S&top"));
   m_stop->setToolTip(tr("End the session (%1)").arg(shortcut(m_stop)));
   // The event labels offered (a label typed by hand stays as typed).
   const QString typed = m_eventLabel->currentIndex() < 0 ? m_eventLabel->currentText() : QString();
@@ -208,7 +209,7 @@ void LiveSessionScreen::retranslateUi() {
   for (int i = 0; i < events.size(); ++i) m_eventLabel->setItemText(i, events[i]);
   if (!typed.isEmpty()) m_eventLabel->setEditText(typed);
   m_eventLabel->setAccessibleName(tr("Event label"));
-  m_mark->setText(tr("&Mark event"));
+  ui::setButtonText(m_mark, tr("&Mark event"));
   m_mark->setToolTip(tr("Mark the chosen event at the current time (%1)").arg(shortcut(m_mark)));
   for (QPushButton* b : {m_record, m_pause, m_stop, m_mark})
     b->setAccessibleName(b->text().remove(u'&'));

@@ -13,6 +13,8 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "ui/Retranslate.h"
+
 namespace armtrack::app::gui {
 
 using devices::webcam::CalibrationError;
@@ -231,7 +233,7 @@ void CameraCalibrationPage::retranslateUi() {
           .arg(m_board.innerCorners.width)
           .arg(m_board.innerCorners.height));
   m_auto->setText(tr("Capture &automatically when the board covers new ground"));
-  m_capture->setText(tr("&Capture view"));
+  ui::setButtonText(m_capture, tr("&Capture view"));
   m_calibrate->setText(tr("Ca&librate"));
   m_reset->setText(tr("&Start over"));
   m_coverageLabel->setAccessibleName(tr("Coverage"));
