@@ -4,16 +4,25 @@
 # render without warnings; the licence is in Debian's machine-readable format; every program,
 # library and plugin finds its libraries from the installed location (relative RUNPATHs, nothing
 # pointing into the build tree) and none links Qt 5; the control file names the runtime packages
-# that are loaded without being linked; every shipped language has its compiled translation.
-#   check-package.sh DEB WORKDIR SOURCE_DIR
+# that are loaded without being linked. The translations are built into the programs (app/i18n);
+# package_install checks them by running the installed CLI.
+#   check-package.sh DEB WORKDIR
 set -euo pipefail
-deb="$1" work="$2" src="$3"
+deb="$1" work="$2"
 status=0
 fail() {
   echo "package_contents: FAIL: $*" >&2
   status=1
 }
 [ -f "$deb" ] || { echo "package_contents: FAIL: no package at $deb" >&2; exit 1; }
+# The checkers: a missing one is a failure, never a skip (packaging/deps-debian12.sh installs them).
+for tool in dpkg-deb dpkg-architecture desktop-file-validate appstreamcli groff col readelf ldd \
+  /usr/bin/python3; do
+  command -v "$tool" >/dev/null ||
+    { echo "package_contents: FAIL: $tool not found (packaging/deps-debian12.sh installs it)" >&2; exit 1; }
+done
+/usr/bin/python3 -c 'import debian.copyright' 2>/dev/null ||
+  { echo "package_contents: FAIL: python3-debian not installed (packaging/deps-debian12.sh)" >&2; exit 1; }
 
 rm -rf "$work"
 mkdir -p "$work"
@@ -45,19 +54,6 @@ for f in "${expected[@]}"; do
 done
 outside="$(cd "$root" && find . -mindepth 1 -maxdepth 1 ! -name usr)"
 [ -z "$outside" ] || fail "files outside /usr: $outside"
-
-# Translations: one compiled file per translations/armtrack_<lang>.ts, and a valid one.
-qm_magic="3cb86418caef9c95cd211cbf60a1bddd"
-for ts in "$src"/translations/armtrack_*.ts; do
-  [ -e "$ts" ] || continue
-  qm="/usr/share/armtrack/translations/$(basename "${ts%.ts}").qm"
-  if [ ! -f "$root$qm" ]; then
-    fail "$qm is not in the package (translations/$(basename "$ts") is shipped)"
-  elif [ "$(head -c 16 "$root$qm" | od -An -tx1 | tr -d ' \n')" != "$qm_magic" ]; then
-    fail "$qm is not a compiled Qt translation"
-  fi
-done
-echo "package_contents: translations: $(find "$root/usr/share/armtrack/translations" -name '*.qm' 2>/dev/null | wc -l) .qm files"
 
 # Icons: PNGs of the size their folder says (the PNG header's width and height).
 for png in "$root"/usr/share/icons/hicolor/*x*/apps/$app.png; do

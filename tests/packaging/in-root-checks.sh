@@ -6,14 +6,17 @@
 # 1. apt installs the dependencies of WORKDIR/armtrack.deb (without Recommends), then the
 #    package alone;
 # 2. armtrack-cli: --version, devices (every plugin from the installed folder), a live session
-#    with the virtual arm, and the clinical records (a database, a patient, a recorded session, a
-#    PDF report: Qt's SQLite driver and the reports' font come from the package's dependencies);
-# 3. armtrack --demo as an ordinary user under Xvfb, until its live screen shows estimates;
+#    with the virtual arm, and the clinical records (a database, a patient, a recorded session, its
+#    PDF report in English and in every shipped translation: Qt's SQLite driver and the reports'
+#    font come from the package's dependencies, the translations are built into the programs);
+# 3. armtrack --demo --lang de as an ordinary user under Xvfb, until its live screen shows
+#    estimates;
 # 4. apt purges the package: none of its files is left, and the root is as it was before the
 #    package was installed (its dependencies stay), outside the home folders, /tmp, logs, caches
 #    and dpkg's and apt's own state.
 set -euo pipefail
 work="$1" src="$2" version="$3" root="$4"
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
 ma="$(dpkg-architecture -qDEB_HOST_MULTIARCH)"
 step() { echo "package_install: $*"; }
 fail() {
@@ -52,11 +55,6 @@ grep -q '^0 upgraded, 1 newly installed, 0 to remove' "$work/apt-install.log" ||
   fail "dpkg does not list armtrack $version as installed"
 in_root dpkg-query -L armtrack | LC_ALL=C sort >"$work/armtrack.list"
 step "apt-get install ./armtrack_${version}.deb: $(wc -l <"$work/armtrack.list") paths"
-for ts in "$src"/translations/armtrack_*.ts; do
-  [ -e "$ts" ] || continue
-  qm="/usr/share/armtrack/translations/$(basename "${ts%.ts}").qm"
-  [ -f "$root$qm" ] || fail "$qm is not installed (translations/$(basename "$ts") is shipped)"
-done
 
 # Every ELF file of the package finds its libraries in the clean root.
 while read -r f; do
@@ -103,6 +101,30 @@ records report "$session" --pdf /root/session.pdf --db /root/clinic.db --user bo
 step "armtrack-cli: records on SQLite, session $session recorded and its PDF report written" \
   "($(stat -c %s "$root/root/session.pdf") bytes)"
 
+# The translations are built into the programs (app/i18n): the installed CLI writes the report in
+# every shipped language, with the title translations/armtrack_<lang>.ts gives (the PDFs are read
+# on the host with pdftotext); the English report above has the source text.
+pdf_words() { pdftotext -q "$1" - | tr -s '[:space:]' ' '; }
+title_en="Session report"
+grep -qF "$title_en" <<<"$(pdf_words "$root/root/session.pdf")" ||
+  fail "the English report has no '$title_en'"
+languages=()
+for ts in "$src"/translations/armtrack_*.ts; do
+  lang="$(basename "${ts%.ts}")"
+  lang="${lang#armtrack_}"
+  [ "$lang" = en ] && continue # English: the plural forms only
+  title="$(/usr/bin/python3 "$here/ts-translation.py" "$ts" armtrack::reports "$title_en")" ||
+    fail "$(basename "$ts") has no translation of '$title_en'"
+  records report "$session" --lang "$lang" --pdf "/root/session-$lang.pdf" --db /root/clinic.db \
+    --user boss >/dev/null 2>&1 || fail "report --lang $lang failed"
+  words="$(pdf_words "$root/root/session-$lang.pdf")"
+  grep -qF "$title" <<<"$words" || fail "the report in '$lang' has no '$title': ${words:0:300}"
+  grep -qF "$title_en" <<<"$words" && fail "the report in '$lang' still says '$title_en'"
+  languages+=("$lang '$title'")
+done
+[ ${#languages[@]} -gt 0 ] || fail "no translations/armtrack_<lang>.ts in $src"
+step "armtrack-cli report --lang: ${languages[*]}"
+
 # 3. The application, as an ordinary user, on a virtual display of the host's: the X server's
 # abstract socket is reachable from the chroot, which shares the host's network namespace.
 in_root install -d -m 0700 -o therapist -g therapist /tmp/runtime-therapist
@@ -116,7 +138,7 @@ set +e
 chroot --userspec=therapist:therapist "$root" /usr/bin/env -i PATH=/usr/bin:/bin \
   HOME=/home/therapist USER=therapist LANG=C.UTF-8 DISPLAY=":$display" \
   XDG_RUNTIME_DIR=/tmp/runtime-therapist \
-  timeout 300 armtrack --demo --quit-when-live --quit-after 240 \
+  timeout 300 armtrack --demo --lang de --quit-when-live --quit-after 240 \
   --screenshot /home/therapist/installed-demo.png >"$work/armtrack.log" 2>&1
 code=$?
 set -e
