@@ -8,7 +8,7 @@
 # package_install checks them by running the installed CLI.
 #   check-package.sh DEB WORKDIR
 set -euo pipefail
-deb="$1" work="$2"
+deb="$1" work="$(realpath -m "$2")"
 status=0
 fail() {
   echo "package_contents: FAIL: $*" >&2

@@ -17,6 +17,29 @@
 
 using namespace armtrack::gui;
 
+namespace {
+
+// The program run as a user would, with its exit and what it said on standard error.
+struct GuiRun {
+  bool finished = false;
+  QProcess::ExitStatus status = QProcess::CrashExit;
+  int code = -1;
+  QString err;
+};
+
+GuiRun runGui(const QStringList& args, int timeoutMs) {
+  QProcess p;
+  p.start(QStringLiteral(ARMTRACK_GUI), args);
+  GuiRun r;
+  r.finished = p.waitForFinished(timeoutMs);
+  r.status = p.exitStatus();
+  r.code = p.exitCode();
+  r.err = QString::fromLocal8Bit(p.readAllStandardError());
+  return r;
+}
+
+}  // namespace
+
 class TestDemoMode : public QObject {
   Q_OBJECT
   QTemporaryDir m_dir;
@@ -58,14 +81,14 @@ class TestDemoMode : public QObject {
 
   void runsUnattendedAndSavesItsWindow() {
     const QString shot = m_dir.filePath(QStringLiteral("window.png"));
-    QProcess p;
-    p.start(QStringLiteral(ARMTRACK_GUI),
-            {QStringLiteral("--demo"), QStringLiteral("--db"),
-             m_dir.filePath(QStringLiteral("unattended.db")), QStringLiteral("--quit-after"),
-             QStringLiteral("8"), QStringLiteral("--screenshot"), shot});
-    QVERIFY(p.waitForFinished(60000));
-    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
-    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    const GuiRun r =
+        runGui({QStringLiteral("--demo"), QStringLiteral("--db"),
+                m_dir.filePath(QStringLiteral("unattended.db")), QStringLiteral("--quit-after"),
+                QStringLiteral("8"), QStringLiteral("--screenshot"), shot},
+               60000);
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QVERIFY2(r.code == 0, qPrintable(r.err));
     const QImage image(shot);
     QVERIFY(!image.isNull());
     QVERIFY(image.width() >= 900 && image.height() >= 600);
@@ -80,16 +103,15 @@ class TestDemoMode : public QObject {
   // live screen (tests/packaging): it quits on the condition, not after a guessed time.
   void quitsOnceTheLiveSessionShowsEstimates() {
     const QString shot = m_dir.filePath(QStringLiteral("live.png"));
-    QProcess p;
-    p.start(QStringLiteral(ARMTRACK_GUI),
-            {QStringLiteral("--demo"), QStringLiteral("--db"),
-             m_dir.filePath(QStringLiteral("live.db")), QStringLiteral("--quit-when-live"),
-             QStringLiteral("--quit-after"), QStringLiteral("120"), QStringLiteral("--screenshot"),
-             shot});
-    QVERIFY(p.waitForFinished(150000));
-    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
-    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
-    QVERIFY2(p.exitCode() == 0, qPrintable(err));
+    const GuiRun r = runGui({QStringLiteral("--demo"), QStringLiteral("--db"),
+                             m_dir.filePath(QStringLiteral("live.db")),
+                             QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"),
+                             QStringLiteral("120"), QStringLiteral("--screenshot"), shot},
+                            150000);
+    const QString& err = r.err;
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QVERIFY2(r.code == 0, qPrintable(err));
     const QRegularExpression running(
         QStringLiteral("the live session is running: (\\d+) "
                        "estimates in ([0-9.]+) s"));
@@ -102,17 +124,15 @@ class TestDemoMode : public QObject {
 
   void saysSoWhenNoLiveSessionCame() {
     // Without --demo the records open at the sign-in (here the first run): no live session.
-    QProcess p;
-    p.start(QStringLiteral(ARMTRACK_GUI),
-            {QStringLiteral("--db"), m_dir.filePath(QStringLiteral("none.db")),
-             QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"),
-             QStringLiteral("1.5")});
-    QVERIFY(p.waitForFinished(60000));
-    const QString err = QString::fromLocal8Bit(p.readAllStandardError());
-    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
-    QCOMPARE(p.exitCode(), 1);
-    QVERIFY2(err.contains(QStringLiteral("no live session showed estimates within 1.5 s")),
-             qPrintable(err));
+    const GuiRun r = runGui(
+        {QStringLiteral("--db"), m_dir.filePath(QStringLiteral("none.db")),
+         QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"), QStringLiteral("1.5")},
+        60000);
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("no live session showed estimates within 1.5 s")),
+             qPrintable(r.err));
   }
 };
 
