@@ -16,7 +16,7 @@ fail() {
 }
 [ -f "$deb" ] || { echo "package_contents: FAIL: no package at $deb" >&2; exit 1; }
 # The checkers: a missing one is a failure, never a skip (packaging/deps-debian12.sh installs them).
-for tool in dpkg-deb dpkg-architecture desktop-file-validate appstreamcli groff col readelf ldd \
+for tool in dpkg-deb dpkg-architecture dpkg-parsechangelog desktop-file-validate appstreamcli groff col readelf ldd \
   /usr/bin/python3; do
   command -v "$tool" >/dev/null ||
     { echo "package_contents: FAIL: $tool not found (packaging/deps-debian12.sh installs it)" >&2; exit 1; }
@@ -42,6 +42,7 @@ expected=(
   /usr/share/icons/hicolor/scalable/apps/$app.svg
   /usr/share/man/man1/armtrack-cli.1.gz /usr/share/man/man1/armtrack.1.gz
   /usr/share/doc/armtrack/copyright /usr/share/doc/armtrack/NOTICE
+  /usr/share/doc/armtrack/changelog.gz
 )
 for size in 16 22 24 32 48 64 128 256 512; do
   expected+=("/usr/share/icons/hicolor/${size}x${size}/apps/$app.png")
@@ -97,6 +98,19 @@ files = c.find_files_paragraph("usr/bin/armtrack")
 assert files is not None and files.license.synopsis == "GPL-3+", "no GPL-3+ paragraph for *"
 assert c.header.upstream_name == "ArmTrack"
 EOF
+
+# The changelog of a native package: its newest entry is this version, of the metainfo's release
+# date.
+changelog="$work/changelog"
+zcat "$root/usr/share/doc/armtrack/changelog.gz" >"$changelog" 2>/dev/null ||
+  fail "changelog.gz is not gzip-compressed"
+if [ -s "$changelog" ]; then
+  [ "$(dpkg-parsechangelog -l "$changelog" -S Version 2>&1)" = "$version" ] ||
+    fail "the changelog's newest entry is not $version: $(head -n 1 "$changelog")"
+  released="$(date -u -d "$(dpkg-parsechangelog -l "$changelog" -S Date 2>/dev/null)" +%F 2>&1)"
+  grep -q "<release version=\"$version\" date=\"$released\"" "$metainfo" ||
+    fail "the changelog dates $version $released, the metainfo: $(grep -o '<release [^>]*>' "$metainfo")"
+fi
 
 # ELF files: relative RUNPATHs only, every library found from the unpacked tree, no Qt 5.
 elf_count=0
