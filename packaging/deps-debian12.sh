@@ -16,7 +16,7 @@ packages=(
   xvfb xauth libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev
   # the package (docs/packaging.md): icons, manual pages, validators, the clean-root install test
-  librsvg2-bin groff-base desktop-file-utils appstream python3-debian mmdebstrap eatmydata
+  librsvg2-bin groff-base desktop-file-utils appstream python3-debian lintian mmdebstrap eatmydata
 )
 
 missing=()

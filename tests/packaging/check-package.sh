@@ -16,7 +16,7 @@ fail() {
 }
 [ -f "$deb" ] || { echo "package_contents: FAIL: no package at $deb" >&2; exit 1; }
 # The checkers: a missing one is a failure, never a skip (packaging/deps-debian12.sh installs them).
-for tool in dpkg-deb dpkg-architecture dpkg-parsechangelog desktop-file-validate appstreamcli groff col readelf ldd \
+for tool in dpkg-deb dpkg-architecture dpkg-parsechangelog lintian desktop-file-validate appstreamcli groff col readelf ldd \
   /usr/bin/python3; do
   command -v "$tool" >/dev/null ||
     { echo "package_contents: FAIL: $tool not found (packaging/deps-debian12.sh installs it)" >&2; exit 1; }
@@ -99,11 +99,16 @@ assert files is not None and files.license.synopsis == "GPL-3+", "no GPL-3+ para
 assert c.header.upstream_name == "ArmTrack"
 EOF
 
+# Debian's own checker of packages: no error and no warning (its notes, e.g. hardening flags the
+# project's build does not set, are not failures).
+lintian_out="$(lintian --fail-on error,warning "$deb" 2>&1)" ||
+  fail "lintian: $(grep -v 'root privileges' <<<"$lintian_out")"
+
 # The changelog of a native package: its newest entry is this version, of the metainfo's release
 # date.
 changelog="$work/changelog"
 zcat "$root/usr/share/doc/armtrack/changelog.gz" >"$changelog" 2>/dev/null ||
-  fail "changelog.gz is not gzip-compressed"
+  fail "changelog.gz is missing or not gzip-compressed"
 if [ -s "$changelog" ]; then
   [ "$(dpkg-parsechangelog -l "$changelog" -S Version 2>&1)" = "$version" ] ||
     fail "the changelog's newest entry is not $version: $(head -n 1 "$changelog")"
