@@ -56,12 +56,17 @@ grep -q '^0 upgraded, 1 newly installed, 0 to remove' "$work/apt-install.log" ||
 in_root dpkg-query -L armtrack | LC_ALL=C sort >"$work/armtrack.list"
 step "apt-get install ./armtrack_${version}.deb: $(wc -l <"$work/armtrack.list") paths"
 
-# Every ELF file of the package finds its libraries in the clean root.
+# Every ELF file of the package (2 programs, the device API, 8 plugins) finds its libraries in the
+# clean root.
+elf_count=0
 while read -r f; do
   [ -f "$root$f" ] && [ "$(head -c 4 "$root$f" | od -An -c | tr -d ' ')" = '177ELF' ] || continue
+  elf_count=$((elf_count + 1))
   missing="$(in_root ldd "$f" | grep 'not found' || true)"
   [ -z "$missing" ] || fail "$f: $missing"
 done <"$work/armtrack.list"
+[ "$elf_count" -eq 11 ] || fail "expected 11 ELF files installed, found $elf_count"
+step "ldd: the $elf_count ELF files find all their libraries in the root"
 
 # 2. The command-line tool.
 out="$(in_root armtrack-cli --version)"
