@@ -122,7 +122,12 @@ AppOptions parseAppOptions(const QStringList& arguments) {
   return o;
 }
 
-bool displayAvailable(QString* why) {
+void HeldDisplay::release() {
+  if (m_connection) xcb_disconnect(m_connection);
+  m_connection = nullptr;
+}
+
+bool displayAvailable(QString* why, HeldDisplay* hold) {
   const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
   // Another platform chosen on purpose (e.g. vnc) is the user's business.
   if (!platform.isEmpty() && !platform.startsWith(QLatin1String("xcb")) &&
@@ -139,6 +144,11 @@ bool displayAvailable(QString* why) {
     int screen = 0;
     xcb_connection_t* c = xcb_connect(display.constData(), &screen);
     const bool ok = c && xcb_connection_has_error(c) == 0;
+    if (ok && hold) {
+      hold->release();
+      hold->m_connection = c;
+      return true;
+    }
     if (c) xcb_disconnect(c);
     if (ok) return true;
     if (wayland) return true;  // Qt falls back to Wayland when X cannot be reached

@@ -36,7 +36,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   QString why;
-  if (!armtrack::gui::displayAvailable(&why)) {
+  armtrack::gui::HeldDisplay probe;  // open until Qt has connected (a fresh Xvfb resets otherwise)
+  if (!armtrack::gui::displayAvailable(&why, &probe)) {
     print(stderr, why + u'\n');
     return 2;
   }
@@ -44,6 +45,7 @@ int main(int argc, char** argv) {
   QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
       Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
   QApplication app(argc, argv);
+  probe.release();
   armtrack::gui::setApplicationIdentity();
   QApplication::setApplicationDisplayName(QStringLiteral("ArmTrack"));
   QApplication::setApplicationVersion(QStringLiteral(ARMTRACK_VERSION));
