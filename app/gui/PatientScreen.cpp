@@ -214,17 +214,19 @@ void PatientScreen::show(const PatientOverview& o) {
 
   m_programme->clear();
   m_programme->setHorizontalHeaderLabels(
-      {tr("Protocol"), tr("Angle"), tr("Target (deg)"), tr("Per week")});
+      {tr("Protocol"), tr("Angle"), tr("Sets"), tr("Target (deg)"), tr("Rest"), tr("Per week")});
   for (const storage::ProgrammeItem& item : o.programme) {
-    QString angle, target;
+    QString angle, target, sets;
     for (const storage::Protocol& pr : o.protocols) {
       if (pr.name != item.protocolName) continue;
       angle = angleName(angleIndex(pr.angleKey));
-      target =
-          QStringLiteral("%1-%2").arg(pr.targetMinDeg, 0, 'f', 0).arg(pr.targetMaxDeg, 0, 'f', 0);
+      const auto [lo, hi] = storage::effectiveTarget(item, pr);
+      target = QStringLiteral("%1-%2").arg(lo, 0, 'f', 0).arg(hi, 0, 'f', 0);
+      sets = tr("%1 \u00d7 %2").arg(item.sets).arg(storage::effectiveRepetitions(item, pr));
     }
     m_programme->appendRow({new QStandardItem(item.protocolName), new QStandardItem(angle),
-                            new QStandardItem(target),
+                            new QStandardItem(sets), new QStandardItem(target),
+                            new QStandardItem(tr("%1 s").arg(item.restS, 0, 'f', 0)),
                             new QStandardItem(QString::number(item.sessionsPerWeek))});
   }
   m_chart->setSessions(o.progress);
