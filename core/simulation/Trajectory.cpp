@@ -272,8 +272,8 @@ JointMotion CalibrationProtocolTrajectory::at(double t) const {
 
 namespace {
 // Reaching postures (rad): anatomical ranges that keep th1 away from the +-90 deg gimbal lock.
-constexpr std::array<double, kNumJoints> kReachLow{-40 * kDeg, -20 * kDeg, -60 * kDeg,
-                                                   -120 * kDeg, -80 * kDeg};
+constexpr std::array<double, kNumJoints> kReachLow{-40 * kDeg, -20 * kDeg, -60 * kDeg, -120 * kDeg,
+                                                   -80 * kDeg};
 constexpr std::array<double, kNumJoints> kReachHigh{120 * kDeg, 80 * kDeg, 60 * kDeg, 0.0,
                                                     80 * kDeg};
 constexpr double kMinReach = 60 * kDeg;  // the largest joint change of every move
@@ -302,7 +302,8 @@ ReachingTrajectory::ReachingTrajectory(std::uint64_t seed, double peakRate, doub
     JointVector next = posture();
     while ((next - m_path.lastPosture()).cwiseAbs().maxCoeff() < kMinReach) next = posture();
     const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
-    const double seconds = std::max(1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel));
+    const double seconds =
+        std::max(1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel));
     m_path.add(m_path.endTime() + seconds, next);
     m_path.hold(pause(rng));
   }

@@ -139,16 +139,16 @@ class ReachingTrajectory final : public Trajectory {
 
 struct TrajectoryOptions {
   std::uint64_t seed = 1;
-  JointVector amplitude = JointVector::Constant(0.5);  ///< sinusoid: rad
-  JointVector frequency = JointVector::Constant(0.5);  ///< sinusoid: Hz
-  JointVector offset = JointVector::Zero();            ///< sinusoid: rad
-  double maxFrequencyHz = 0.8;                         ///< multi-joint
-  double amplitudeScale = 1.0;                         ///< multi-joint
-  double wheelPeriod = 4.0;                            ///< shoulder wheel: s per turn
+  JointVector amplitude = JointVector::Constant(0.5);    ///< sinusoid: rad
+  JointVector frequency = JointVector::Constant(0.5);    ///< sinusoid: Hz
+  JointVector offset = JointVector::Zero();              ///< sinusoid: rad
+  double maxFrequencyHz = 0.8;                           ///< multi-joint
+  double amplitudeScale = 1.0;                           ///< multi-joint
+  double wheelPeriod = 4.0;                              ///< shoulder wheel: s per turn
   double peakRate = 420.0 * std::numbers::pi / 180.0;    ///< reaching: rad/s
   double peakAccel = 4000.0 * std::numbers::pi / 180.0;  ///< reaching: rad/s^2
-  double duration = 600.0;  ///< reaching: s of planned moves
-  ArmGeometry geometry;                                ///< shoulder wheel
+  double duration = 600.0;                               ///< reaching: s of planned moves
+  ArmGeometry geometry;                                  ///< shoulder wheel
 };
 
 /// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol),

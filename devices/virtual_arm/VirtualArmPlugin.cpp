@@ -72,8 +72,9 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.sim.webcam.enabled = sensors.contains(QStringLiteral("webcam"));
   for (const QString& s : sensors)
     if (s != u"upper" && s != u"forearm" && s != u"kinect" && s != u"webcam")
-      problems << QStringLiteral("unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
-                                 "webcam joined by '+')")
+      problems << QStringLiteral(
+                      "unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
+                      "webcam joined by '+')")
                       .arg(s);
   for (ImuSimParams* imu : {&p.sim.upperArm, &p.sim.forearm}) {
     imu->rateHz = imuRate;

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -235,9 +235,8 @@ TEST(Trajectory, WheelRejectsUnreachable) {
 
 TEST(Trajectory, Factory) {
   const std::vector<std::string> names = trajectoryNames();
-  ASSERT_EQ(names,
-            (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration",
-                                      "reaching"}));
+  ASSERT_EQ(names, (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel",
+                                             "calibration", "reaching"}));
   TrajectoryOptions opts;
   for (const std::string& n : names) EXPECT_NE(makeTrajectory(n, opts), nullptr);
 
