@@ -371,6 +371,7 @@ void Session::workerLoop() {
         out.latency = lat;
         out.thStd = e.thStd;
         out.status = r;
+        out.headingFromStartPoseOnly = filter->headingFromStartPoseOnly();
         out.opticalElbow = std::exchange(pendingOptical.opticalElbow, std::nullopt);
         out.opticalWrist = std::exchange(pendingOptical.opticalWrist, std::nullopt);
         out.camElbow = std::exchange(pendingOptical.camElbow, std::nullopt);

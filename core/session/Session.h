@@ -69,6 +69,9 @@ struct EstimateRow {
   JointVector thStd = JointVector::Zero();  ///< 1-sigma uncertainty of th (rad)
   /// How the estimate came about: Accepted, Initialised, Predicted or Recovered.
   UpdateResult status = UpdateResult::Accepted;
+  /// No optical measurement has been fused for a while: the arm's heading about the vertical
+  /// rests on the start pose alone, so the shoulder's angles drift (JointEstimator's flag).
+  bool headingFromStartPoseOnly = false;
   /// The newest optical measurements that arrived since the previous estimate (rows without IMU
   /// data get no estimate of their own), for a view to draw beside the estimate: Kinect
   /// positions in the shoulder frame of the arm's side (m), webcam marker pixels.

@@ -314,7 +314,8 @@ JointMotion ReachingTrajectory::at(double t) const {
 }
 
 std::vector<std::string> trajectoryNames() {
-  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration", "reaching"};
+  return {"sinusoid", "multi-joint",  "shoulder-wheel", "calibration",
+          "reaching", "sensor-check", "exercise"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
@@ -331,6 +332,8 @@ std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const Trajec
   if (name == "shoulder-wheel")
     return std::make_unique<ShoulderWheelTrajectory>(opts.geometry, opts.wheelPeriod);
   if (name == "calibration") return std::make_unique<CalibrationProtocolTrajectory>();
+  if (name == "sensor-check") return std::make_unique<SensorCheckTrajectory>();
+  if (name == "exercise") return std::make_unique<ExerciseTrajectory>(opts.exercise);
   if (name == "reaching")
     return std::make_unique<ReachingTrajectory>(opts.seed, opts.peakRate, opts.peakAccel,
                                                 opts.duration);

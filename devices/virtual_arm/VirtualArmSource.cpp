@@ -242,8 +242,10 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
   };
 
   const double imuT = imuClock(t);
-  if (row.upperArm) deliver(StreamRole::UpperArmImu, imuT, *row.upperArm);
-  if (row.forearm) deliver(StreamRole::ForearmImu, imuT, *row.forearm);
+  const std::optional<ImuReading>& upper = m_p.swapImus ? row.forearm : row.upperArm;
+  const std::optional<ImuReading>& forearm = m_p.swapImus ? row.upperArm : row.forearm;
+  if (upper) deliver(StreamRole::UpperArmImu, imuT, *upper);
+  if (forearm) deliver(StreamRole::ForearmImu, imuT, *forearm);
   if (row.elbow || row.wrist)
     deliver(StreamRole::Optical, t, OpticalPositions{row.elbow, row.wrist});
   if (row.camWrist || row.camElbow)

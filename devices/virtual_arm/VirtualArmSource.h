@@ -82,6 +82,9 @@ struct VirtualArmParams {
   std::string trajectory = "multi-joint";
   TrajectoryOptions trajectoryOptions;
   bool truth = true;  ///< a Truth stream beside the IMUs
+  /// The two IMUs' readings exchanged, as when each sensor is strapped on the other's segment
+  /// (the home window's sensor check must find it).
+  bool swapImus = false;
   Faults faults;
 };
 

@@ -211,6 +211,26 @@ TEST_F(SessionTest, KinectDropoutIsReportedAndFusionResumes) {
   for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(e(j), 2.0 * kDeg) << "joint " << j;
 }
 
+// The GUI says which angles it cannot trust from the estimates themselves: without optical data
+// the heading rests on the start pose, with a Kinect it does not.
+TEST_F(SessionTest, EstimatesSayWhenTheHeadingRestsOnTheStartPose) {
+  for (const bool optical : {false, true}) {
+    const SessionRun r = run({optical ? QStringLiteral("sensors=upper+forearm+kinect")
+                                      : QStringLiteral("sensors=upper+forearm")},
+                             2.5, [&](SessionParams& p) {
+                               p.recordingPath.replace_filename(optical ? "with.csv" : "none.csv");
+                             });
+    std::size_t later = 0, blind = 0;
+    for (const EstimateRow& e : r.results) {
+      if (e.t < 1.0) continue;
+      ++later;
+      blind += e.headingFromStartPoseOnly;
+    }
+    ASSERT_GT(later, 1000u);
+    EXPECT_EQ(blind, optical ? 0u : later) << (optical ? "with" : "without") << " a Kinect";
+  }
+}
+
 TEST_F(SessionTest, OpticalDeviceDisappearsAndSessionRunsOnImus) {
   const SessionRun r =
       run({QStringLiteral("sensors=upper+forearm"), QStringLiteral("sensors=kinect,disappear=3+2")},
