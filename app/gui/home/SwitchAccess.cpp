@@ -124,10 +124,9 @@ bool SwitchAccess::eventFilter(QObject* watched, QEvent* event) {
     return true;
   }
   if (!isSwitchKey(key->key())) return false;
-  // Typing in the comment box: Enter and Space are text (Ctrl+Enter goes on).
-  if (m_mode == AccessMode::Keyboard && qobject_cast<QPlainTextEdit*>(w) &&
-      !(key->modifiers() & Qt::ControlModifier))
-    return false;
+  // Typing in the comment box: Enter and Space are text, whatever the mode (Ctrl+Enter goes
+  // on). A switch never puts the focus there: scanning steps through the buttons only.
+  if (qobject_cast<QPlainTextEdit*>(w) && !(key->modifiers() & Qt::ControlModifier)) return false;
   if (key->isAutoRepeat()) return true;  // a switch held down is one press
   switch (m_mode) {
     case AccessMode::Scanning:
