@@ -1,7 +1,6 @@
 #include "app/gui/home/FeedbackSound.h"
 
 #include <QAudioDevice>
-#include <QFile>
 #include <QMediaDevices>
 #include <QSoundEffect>
 #include <QUrl>
@@ -82,17 +81,26 @@ QByteArray FeedbackSound::wav(Cue cue) {
   return b;
 }
 
+QString FeedbackSound::resource(Cue cue) {
+  switch (cue) {
+    case Cue::Reached:
+      return QStringLiteral(":/home-sounds/reached.wav");
+    case Cue::Counted:
+      return QStringLiteral(":/home-sounds/counted.wav");
+    case Cue::Hint:
+      break;
+  }
+  return QStringLiteral(":/home-sounds/hint.wav");
+}
+
 FeedbackSound::FeedbackSound(QObject* parent) : QObject(parent) {
   // No output (a computer without sound, a test's virtual display): stay silent.
-  if (QMediaDevices::audioOutputs().isEmpty() || !m_dir.isValid()) return;
+  if (QMediaDevices::audioOutputs().isEmpty()) return;
   const QAudioDevice device = QMediaDevices::defaultAudioOutput();
   for (std::size_t i = 0; i < m_effects.size(); ++i) {
-    const QString path = m_dir.filePath(QStringLiteral("cue%1.wav").arg(i));
-    QFile f(path);
-    if (!f.open(QIODevice::WriteOnly) || f.write(wav(static_cast<Cue>(i))) < 0) return;
-    f.close();
     auto* effect = new QSoundEffect(device, this);
-    effect->setSource(QUrl::fromLocalFile(path));
+    // The shipped cues are built into the program (sounds/, made by sounds/make-sounds.py).
+    effect->setSource(QUrl(QStringLiteral("qrc") + resource(static_cast<Cue>(i))));
     effect->setVolume(0.8f);
     m_effects[i] = effect;
   }

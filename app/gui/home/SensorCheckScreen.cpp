@@ -49,7 +49,8 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
   left->addWidget(m_title);
   left->addWidget(m_text);
   left->addWidget(m_banner);
-  left->addWidget(m_picture, 1);
+  left->addWidget(m_picture, 3);
+  left->addStretch(1);  // takes the room while the picture is hidden
   left->addLayout(buttons);
   root->addLayout(left, 3);
   m_arm = new ui::ArmView(this);
