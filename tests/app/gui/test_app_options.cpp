@@ -56,6 +56,10 @@ class TestAppOptions : public QObject {
     QVERIFY2(u.error.isEmpty(), qPrintable(u.error));
     QCOMPARE(u.quitAfterSeconds, 2.5);
     QCOMPARE(u.screenshot, QStringLiteral("/tmp/a.png"));
+    const auto h = parseAppOptions(line({"--home", "--demo"}));
+    QVERIFY2(h.error.isEmpty(), qPrintable(h.error));
+    QVERIFY(h.home && h.demo);
+    QVERIFY(!o.home);
   }
 
   void leavesQtOptionsForQApplication() {
@@ -78,6 +82,8 @@ class TestAppOptions : public QObject {
     QTest::newRow("quit-after negative")
         << line({"--quit-after=-3"}) << QStringLiteral("positive number");
     QTest::newRow("quit-after nan") << line({"--quit-after", "nan"}) << QStringLiteral("'nan'");
+    QTest::newRow("home without demo")
+        << line({"--home"}) << QStringLiteral("--home goes with --demo");
     QTest::newRow("screenshot alone")
         << line({"--screenshot", "x.png"}) << QStringLiteral("--screenshot needs --quit-after");
   }
