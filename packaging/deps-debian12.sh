@@ -12,7 +12,7 @@ packages=(
   fonts-dejavu-core fonts-wqy-microhei poppler-utils
   libqt6sql6-psql postgresql
   libgtest-dev googletest libbenchmark-dev
-  qt6-charts-dev libqt6opengl6-dev libvtk9-dev
+  qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libvtk9-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev
   # the package (docs/packaging.md): icons, manual pages, validators, the clean-root install test

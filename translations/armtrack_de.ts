@@ -704,18 +704,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Auswertung ü&amp;berspringen</translation>
     </message>
     <message>
-        <source>Home exercises</source>
-        <translation>Heimübungen</translation>
-    </message>
-    <message>
-        <source>This is a home account. The guided home exercises it opens arrive in a later version of ArmTrack. Until then, your therapist records your sessions at the clinic.</source>
-        <translation>Dies ist ein Heimkonto. Die angeleiteten Heimübungen, die es öffnet, kommen in einer späteren Version von ArmTrack. Bis dahin zeichnet Ihr Therapeut Ihre Sitzungen in der Praxis auf.</translation>
-    </message>
-    <message>
-        <source>Sign &amp;out</source>
-        <translation>&amp;Abmelden</translation>
-    </message>
-    <message>
         <source>Back the file up, then bring it up to date with: armtrack-cli db migrate</source>
         <translation>Sichern Sie die Datei und bringen Sie sie dann auf den neuesten Stand mit: armtrack-cli db migrate</translation>
     </message>
@@ -754,6 +742,10 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>home account</source>
         <translation>Heimkonto</translation>
+    </message>
+    <message>
+        <source>Signing in as the demo patient at home...</source>
+        <translation>Anmeldung als Demo-Patientin zu Hause ...</translation>
     </message>
 </context>
 <context>
@@ -1460,6 +1452,22 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Target (°)</source>
         <translation>Ziel (°)</translation>
     </message>
+    <message>
+        <source>Sets</source>
+        <translation>Serien</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>%L1 × %L2</source>
+        <translation>%L1 × %L2</translation>
+    </message>
+    <message>
+        <source>%L1 s</source>
+        <translation>%L1 s</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::PatientTableModel</name>
@@ -2120,6 +2128,38 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Notes</source>
         <translation>Notizen</translation>
     </message>
+    <message>
+        <source>home</source>
+        <translation>zu Hause</translation>
+    </message>
+    <message>
+        <source>clinic</source>
+        <translation>Praxis</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 repetitions</source>
+        <translation>%L1 von %L2 Wiederholungen</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 sets (not measured)</source>
+        <translation>%L1 von %L2 Serien (nicht gemessen)</translation>
+    </message>
+    <message>
+        <source>reached %L1° of %L2°</source>
+        <translation>%L1° von %L2° erreicht</translation>
+    </message>
+    <message>
+        <source>pain %L1/10</source>
+        <translation>Schmerz %L1/10</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <source>Patient&apos;s own account</source>
+        <translation>Angaben des Patienten</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SettingsDialog</name>
@@ -2347,6 +2387,711 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Wrong user name or password.</source>
         <translation>Falscher Benutzername oder falsches Passwort.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::ExerciseRecording</name>
+    <message>
+        <source>the records</source>
+        <translation>die Akten</translation>
+    </message>
+    <message>
+        <source>This exercise cannot be saved: %1</source>
+        <translation>Diese Übung kann nicht gespeichert werden: %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::ExerciseScreen</name>
+    <message>
+        <source>The sensors could not start: %1. Check that they are switched on; you can skip this exercise.</source>
+        <translation>Die Sensoren konnten nicht starten: %1. Prüfen Sie, ob sie eingeschaltet sind; Sie können diese Übung überspringen.</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <source>Exercise %L1 of %L2: %3</source>
+        <translation>Übung %L1 von %L2: %3</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Anweisung</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Your angle now</source>
+        <translation>Ihr Winkel jetzt</translation>
+    </message>
+    <message>
+        <source>Feedback</source>
+        <translation>Rückmeldung</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Pause (Escape)</source>
+        <translation>Pause (Esc)</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this exercise</source>
+        <translation>Übung übers&amp;pringen</translation>
+    </message>
+    <message>
+        <source>S&amp;top for today</source>
+        <translation>Für heute &amp;beenden</translation>
+    </message>
+    <message>
+        <source>%1: not measured</source>
+        <translation>%1: nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Raise your arm forward with the elbow straight, up to where the light arm goes, then lower it slowly.</source>
+        <translation>Heben Sie den Arm mit gestrecktem Ellbogen nach vorn, so weit wie der helle Arm, und senken Sie ihn dann langsam.</translation>
+    </message>
+    <message>
+        <source>Raise your arm out to the side with the elbow straight, up to where the light arm goes, then lower it slowly.</source>
+        <translation>Heben Sie den Arm mit gestrecktem Ellbogen seitlich an, so weit wie der helle Arm, und senken Sie ihn dann langsam.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow at your side, bent at a right angle. Turn your hand in towards your belly and out again, as the light arm does.</source>
+        <translation>Halten Sie den Ellbogen rechtwinklig gebeugt am Körper. Drehen Sie die Hand zum Bauch hin und wieder nach außen, wie der helle Arm.</translation>
+    </message>
+    <message>
+        <source>Bend your elbow up as far as the light arm goes, then straighten it slowly. Keep your upper arm still.</source>
+        <translation>Beugen Sie den Ellbogen so weit wie der helle Arm und strecken Sie ihn dann langsam. Halten Sie den Oberarm ruhig.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow bent at a right angle. Turn your palm down and up again, as the light arm does.</source>
+        <translation>Halten Sie den Ellbogen rechtwinklig gebeugt. Drehen Sie die Handfläche nach unten und wieder nach oben, wie der helle Arm.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Then press Start: %n set(s) of %1 repetitions.</source>
+        <translation>
+            <numerusform>Drücken Sie dann Start: %n Serie mit %1 Wiederholungen.</numerusform>
+            <numerusform>Drücken Sie dann Start: %n Serien mit %1 Wiederholungen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>ArmTrack cannot measure this exercise without the camera. Do it as shown and count the repetitions yourself; it is recorded for your therapist.</source>
+        <translation>Ohne die Kamera kann ArmTrack diese Übung nicht messen. Machen Sie sie wie gezeigt und zählen Sie die Wiederholungen selbst; sie wird für Ihre Therapeutin aufgezeichnet.</translation>
+    </message>
+    <message>
+        <source>Your therapist says: %1</source>
+        <translation>Ihre Therapeutin sagt: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Start set %1</source>
+        <translation>Serie %1 &amp;starten</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2: move like the light arm, %3 times. Take your time.</source>
+        <translation>Serie %1 von %2: Bewegen Sie sich wie der helle Arm, %3-mal. Lassen Sie sich Zeit.</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2: do the movement %3 times, then press Done.</source>
+        <translation>Serie %1 von %2: Machen Sie die Bewegung %3-mal und drücken Sie dann Fertig.</translation>
+    </message>
+    <message>
+        <source>&amp;Done with this set</source>
+        <translation>Serie &amp;fertig</translation>
+    </message>
+    <message>
+        <source>Rest. The next set starts by itself when the time is up.</source>
+        <translation>Pause. Die nächste Serie beginnt von selbst, wenn die Zeit um ist.</translation>
+    </message>
+    <message>
+        <source>&amp;Start the next set now</source>
+        <translation>Nächste Serie jetzt &amp;starten</translation>
+    </message>
+    <message>
+        <source>Paused. Press Go on when you are ready.</source>
+        <translation>Angehalten. Drücken Sie Weiter, wenn Sie bereit sind.</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>Saving this exercise…</source>
+        <translation>Diese Übung wird gespeichert …</translation>
+    </message>
+    <message>
+        <source>Rest: %1 s</source>
+        <translation>Pause: %1 s</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message>
+        <source>Count: %1 times</source>
+        <translation>Zählen Sie: %1-mal</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2</source>
+        <translation>Serie %1 von %2</translation>
+    </message>
+    <message>
+        <source>Set %1 done. Well done!</source>
+        <translation>Serie %1 geschafft. Gut gemacht!</translation>
+    </message>
+    <message>
+        <source>The camera does not see you, so ArmTrack cannot measure this shoulder exercise now. Go on as shown, count yourself, and press Done after each set.</source>
+        <translation>Die Kamera sieht Sie nicht, deshalb kann ArmTrack diese Schulterübung jetzt nicht messen. Machen Sie wie gezeigt weiter, zählen Sie selbst und drücken Sie nach jeder Serie Fertig.</translation>
+    </message>
+    <message>
+        <source>%1: %2°</source>
+        <translation>%1: %2°</translation>
+    </message>
+    <message>
+        <source>Target reached!</source>
+        <translation>Ziel erreicht!</translation>
+    </message>
+    <message>
+        <source>Good: %1 done.</source>
+        <translation>Gut: %1 geschafft.</translation>
+    </message>
+    <message>
+        <source>Try to go a little further next time.</source>
+        <translation>Versuchen Sie, beim nächsten Mal etwas weiter zu gehen.</translation>
+    </message>
+    <message>
+        <source>Almost: go a little further for it to count.</source>
+        <translation>Fast: Gehen Sie etwas weiter, damit es zählt.</translation>
+    </message>
+    <message>
+        <source>A little slower, please.</source>
+        <translation>Etwas langsamer, bitte.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow straight; move only your shoulder.</source>
+        <translation>Halten Sie den Ellbogen gestreckt; bewegen Sie nur die Schulter.</translation>
+    </message>
+    <message>
+        <source>Keep your upper arm still; move only your elbow and forearm.</source>
+        <translation>Halten Sie den Oberarm ruhig; bewegen Sie nur Ellbogen und Unterarm.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeCalibrationScreen</name>
+    <message>
+        <source>Now ArmTrack learns how the sensors sit on your arm today. It takes about a minute: press Start, then do what the screen says and what the light arm shows.</source>
+        <translation>Jetzt lernt ArmTrack, wie die Sensoren heute an Ihrem Arm sitzen. Das dauert etwa eine Minute: Drücken Sie Start und tun Sie dann, was der Bildschirm sagt und der helle Arm zeigt.</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Kalibrierung</translation>
+    </message>
+    <message>
+        <source>S&amp;kip the calibration</source>
+        <translation>Kalibrierung übers&amp;pringen</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>&amp;Go on without it</source>
+        <translation>&amp;Ohne sie weiter</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeController</name>
+    <message>
+        <source>One moment</source>
+        <translation>Einen Moment</translation>
+    </message>
+    <message>
+        <source>Loading today&apos;s exercises…</source>
+        <translation>Die heutigen Übungen werden geladen …</translation>
+    </message>
+    <message>
+        <source>Today</source>
+        <translation>Heute</translation>
+    </message>
+    <message>
+        <source>Sensor check</source>
+        <translation>Sensorprüfung</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Exercise %L1 of %L2</source>
+        <translation>Übung %L1 von %L2</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>Something went wrong</source>
+        <translation>Etwas ist schiefgegangen</translation>
+    </message>
+    <message>
+        <source>%1
+Please try again. If this happens again, call your therapist.</source>
+        <translation>%1
+Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre Therapeutin an.</translation>
+    </message>
+    <message>
+        <source>&amp;Try again</source>
+        <translation>&amp;Erneut versuchen</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Abmelden</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeStartScreen</name>
+    <message numerus="yes">
+        <source>%1: %n set(s) of %2 repetitions, %3 s rest</source>
+        <translation>
+            <numerusform>%1: %n Serie mit %2 Wiederholungen, %3 s Pause</numerusform>
+            <numerusform>%1: %n Serien mit %2 Wiederholungen, %3 s Pause</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Today&apos;s exercises</source>
+        <translation>Heutige Übungen</translation>
+    </message>
+    <message>
+        <source>Hello, %1</source>
+        <translation>Hallo, %1</translation>
+    </message>
+    <message>
+        <source>Your therapist has not given you any exercises yet.</source>
+        <translation>Ihre Therapeutin hat Ihnen noch keine Übungen gegeben.</translation>
+    </message>
+    <message>
+        <source>Today&apos;s exercises:</source>
+        <translation>Heutige Übungen:</translation>
+    </message>
+    <message>
+        <source>(not measured without the camera)</source>
+        <translation>(ohne Kamera nicht gemessen)</translation>
+    </message>
+    <message>
+        <source>What can be measured</source>
+        <translation>Was gemessen werden kann</translation>
+    </message>
+    <message>
+        <source>This set-up has no camera. ArmTrack measures your elbow and forearm well with the two sensors alone. It cannot trust the shoulder&apos;s angles without the camera: they drift slowly about the vertical. Do the shoulder exercises as your therapist showed you; they are recorded for your therapist, but ArmTrack does not count them or show their numbers.%1</source>
+        <translation>Diese Ausstattung hat keine Kamera. Ellbogen und Unterarm misst ArmTrack mit den beiden Sensoren allein gut. Den Winkeln der Schulter kann es ohne Kamera nicht trauen: Sie driften langsam um die Senkrechte. Machen Sie die Schulterübungen so, wie Ihre Therapeutin es Ihnen gezeigt hat; sie werden für sie aufgezeichnet, aber ArmTrack zählt sie nicht und zeigt keine Zahlen dazu.%1</translation>
+    </message>
+    <message>
+        <source>None of today&apos;s exercises needs it.</source>
+        <translation>Keine der heutigen Übungen braucht sie.</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Abmelden</translation>
+    </message>
+    <message>
+        <source>I use the keyboard or the mouse</source>
+        <translation>Ich benutze Tastatur oder Maus</translation>
+    </message>
+    <message>
+        <source>I use one switch: the choices light up in turn</source>
+        <translation>Ich benutze einen Taster: Die Auswahl leuchtet nacheinander auf</translation>
+    </message>
+    <message>
+        <source>I use one switch: press to go on</source>
+        <translation>Ich benutze einen Taster: Drücken heißt weiter</translation>
+    </message>
+    <message>
+        <source>How I press: %1</source>
+        <translation>Wie ich drücke: %1</translation>
+    </message>
+    <message>
+        <source>Press to change how you use ArmTrack</source>
+        <translation>Drücken, um zu ändern, wie Sie ArmTrack bedienen</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeStyle</name>
+    <message>
+        <source>information</source>
+        <translation>Information</translation>
+    </message>
+    <message>
+        <source>well done</source>
+        <translation>gut gemacht</translation>
+    </message>
+    <message>
+        <source>hint</source>
+        <translation>Hinweis</translation>
+    </message>
+    <message>
+        <source>problem</source>
+        <translation>Problem</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeSummaryChart</name>
+    <message>
+        <source>Chart of the range reached</source>
+        <translation>Diagramm des erreichten Bereichs</translation>
+    </message>
+    <message>
+        <source>Last time</source>
+        <translation>Letztes Mal</translation>
+    </message>
+    <message>
+        <source>%1 sessions ago</source>
+        <translation>vor %1 Sitzungen</translation>
+    </message>
+    <message>
+        <source>%1 (not measured)</source>
+        <translation>%1 (nicht gemessen)</translation>
+    </message>
+    <message>
+        <source>Today</source>
+        <translation>Heute</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Farthest angle reached (degrees)</source>
+        <translation>Größter erreichter Winkel (Grad)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeSummaryScreen</name>
+    <message>
+        <source>%1: %L2 of %L3 repetitions</source>
+        <translation>%1: %L2 von %L3 Wiederholungen</translation>
+    </message>
+    <message>
+        <source>%1: %L2 of %L3 sets done (not measured without the camera)</source>
+        <translation>%1: %L2 von %L3 Serien gemacht (ohne Kamera nicht gemessen)</translation>
+    </message>
+    <message>
+        <source>you reached %L1°, the target is %L2°</source>
+        <translation>Sie haben %L1° erreicht, das Ziel ist %L2°</translation>
+    </message>
+    <message>
+        <source>last time %L1°</source>
+        <translation>letztes Mal %L1°</translation>
+    </message>
+    <message>
+        <source>stopped early</source>
+        <translation>vorzeitig beendet</translation>
+    </message>
+    <message>
+        <source>Saving…</source>
+        <translation>Wird gespeichert …</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Zusammenfassung</translation>
+    </message>
+    <message>
+        <source>Well done, %1!</source>
+        <translation>Gut gemacht, %1!</translation>
+    </message>
+    <message>
+        <source>How much pain did you have? 0 is none, 10 the worst.</source>
+        <translation>Wie viel Schmerz hatten Sie? 0 ist keiner, 10 der schlimmste.</translation>
+    </message>
+    <message>
+        <source>Anything to tell your therapist? (You may leave it empty.)</source>
+        <translation>Möchten Sie Ihrer Therapeutin etwas sagen? (Sie können es leer lassen.)</translation>
+    </message>
+    <message>
+        <source>Less pain</source>
+        <translation>Weniger Schmerz</translation>
+    </message>
+    <message>
+        <source>More pain</source>
+        <translation>Mehr Schmerz</translation>
+    </message>
+    <message>
+        <source>Pain score</source>
+        <translation>Schmerzwert</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>keine Angabe</translation>
+    </message>
+    <message>
+        <source>Your comment</source>
+        <translation>Ihr Kommentar</translation>
+    </message>
+    <message>
+        <source>Saved</source>
+        <translation>Gespeichert</translation>
+    </message>
+    <message>
+        <source>&amp;Save and finish</source>
+        <translation>&amp;Speichern und beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>S&amp;chließen</translation>
+    </message>
+    <message>
+        <source>Saved. Your therapist will see it. Thank you!</source>
+        <translation>Gespeichert. Ihre Therapeutin wird es sehen. Danke!</translation>
+    </message>
+    <message>
+        <source>It could not be saved: %1. Press Save to try again.</source>
+        <translation>Es konnte nicht gespeichert werden: %1. Drücken Sie Speichern, um es noch einmal zu versuchen.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeWindow</name>
+    <message>
+        <source>ArmTrack: my exercises</source>
+        <translation>ArmTrack: meine Übungen</translation>
+    </message>
+    <message>
+        <source>My exercises</source>
+        <translation>Meine Übungen</translation>
+    </message>
+    <message>
+        <source>Whose exercises</source>
+        <translation>Wessen Übungen</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Schritt</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::SensorCheckScreen</name>
+    <message>
+        <source>&amp;Start the check</source>
+        <translation>Prüfung &amp;starten</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Weiter</translation>
+    </message>
+    <message>
+        <source>S&amp;kip the check</source>
+        <translation>Prüfung übers&amp;pringen</translation>
+    </message>
+    <message>
+        <source>The sensors could not be started: %1</source>
+        <translation>Die Sensoren konnten nicht gestartet werden: %1</translation>
+    </message>
+    <message>
+        <source>The check could not be recorded: %1</source>
+        <translation>Die Prüfung konnte nicht aufgezeichnet werden: %1</translation>
+    </message>
+    <message>
+        <source>no data came from the sensors</source>
+        <translation>von den Sensoren kamen keine Daten</translation>
+    </message>
+    <message>
+        <source>Sensor check</source>
+        <translation>Sensorprüfung</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Anweisung</translation>
+    </message>
+    <message>
+        <source>Result of the check</source>
+        <translation>Ergebnis der Prüfung</translation>
+    </message>
+    <message>
+        <source>&amp;Check again</source>
+        <translation>&amp;Noch einmal prüfen</translation>
+    </message>
+    <message>
+        <source>&amp;Go on anyway</source>
+        <translation>&amp;Trotzdem weiter</translation>
+    </message>
+    <message>
+        <source>S&amp;top the check</source>
+        <translation>Prüfung a&amp;bbrechen</translation>
+    </message>
+    <message>
+        <source>First, a check of the sensors</source>
+        <translation>Zuerst eine Prüfung der Sensoren</translation>
+    </message>
+    <message>
+        <source>Strap the upper-arm sensor on your upper arm and the forearm sensor on your forearm, each with its arrow pointing up towards your shoulder, as in the picture. Let your arm hang loosely straight down. After Start, keep still for 3 seconds, then bend your elbow up and straighten it again, three times.</source>
+        <translation>Schnallen Sie den Oberarm-Sensor an den Oberarm und den Unterarm-Sensor an den Unterarm, jeweils mit dem Pfeil nach oben zur Schulter, wie im Bild. Lassen Sie den Arm locker gerade herunterhängen. Halten Sie nach Start 3 Sekunden still, dann beugen Sie den Ellbogen und strecken ihn wieder, dreimal.</translation>
+    </message>
+    <message>
+        <source>Starting the sensors…</source>
+        <translation>Sensoren werden gestartet …</translation>
+    </message>
+    <message>
+        <source>Let your arm hang loosely straight down.</source>
+        <translation>Lassen Sie den Arm locker gerade herunterhängen.</translation>
+    </message>
+    <message>
+        <source>Keep still: %1</source>
+        <translation>Stillhalten: %1</translation>
+    </message>
+    <message>
+        <source>Let your arm hang loosely straight down, and keep it still.</source>
+        <translation>Lassen Sie den Arm locker gerade herunterhängen und halten Sie ihn still.</translation>
+    </message>
+    <message>
+        <source>Bend your elbow: %1 of %2</source>
+        <translation>Ellbogen beugen: %1 von %2</translation>
+    </message>
+    <message>
+        <source>Bend your elbow up as far as is comfortable, then straighten it again. Keep your upper arm still.</source>
+        <translation>Beugen Sie den Ellbogen so weit, wie es angenehm ist, und strecken Sie ihn wieder. Halten Sie den Oberarm ruhig.</translation>
+    </message>
+    <message>
+        <source>Keep still</source>
+        <translation>Stillhalten</translation>
+    </message>
+    <message>
+        <source>Let your arm hang down again.</source>
+        <translation>Lassen Sie den Arm wieder herunterhängen.</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Wird geprüft …</translation>
+    </message>
+    <message>
+        <source>You can relax your arm.</source>
+        <translation>Sie können den Arm entspannen.</translation>
+    </message>
+    <message>
+        <source>The sensors are right</source>
+        <translation>Die Sensoren sitzen richtig</translation>
+    </message>
+    <message>
+        <source>Both sensors are on the right places and the right way round.</source>
+        <translation>Beide Sensoren sind an der richtigen Stelle und richtig herum.</translation>
+    </message>
+    <message>
+        <source>Well done.</source>
+        <translation>Gut gemacht.</translation>
+    </message>
+    <message>
+        <source>Please change the sensors</source>
+        <translation>Bitte ändern Sie die Sensoren</translation>
+    </message>
+    <message>
+        <source>Please do the check again</source>
+        <translation>Bitte machen Sie die Prüfung noch einmal</translation>
+    </message>
+    <message>
+        <source>Change them as in the picture, then press Check again.</source>
+        <translation>Ändern Sie sie wie im Bild und drücken Sie dann Noch einmal prüfen.</translation>
+    </message>
+    <message>
+        <source>Press Check again when you are ready.</source>
+        <translation>Drücken Sie Noch einmal prüfen, wenn Sie bereit sind.</translation>
+    </message>
+    <message>
+        <source>No data came from the upper-arm sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>Vom Oberarm-Sensor kamen keine Daten. Prüfen Sie, ob er eingeschaltet und geladen ist, und drücken Sie dann Noch einmal prüfen.</translation>
+    </message>
+    <message>
+        <source>No data came from the forearm sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>Vom Unterarm-Sensor kamen keine Daten. Prüfen Sie, ob er eingeschaltet und geladen ist, und drücken Sie dann Noch einmal prüfen.</translation>
+    </message>
+    <message>
+        <source>Your arm was not still at the start. Let it hang loosely and keep it still until the countdown ends.</source>
+        <translation>Ihr Arm war am Anfang nicht still. Lassen Sie ihn locker hängen und halten Sie ihn still, bis der Countdown endet.</translation>
+    </message>
+    <message>
+        <source>ArmTrack did not see your elbow bend. When asked, bend your elbow up and straighten it again, three times.</source>
+        <translation>ArmTrack hat Ihren Ellbogen nicht beugen sehen. Beugen Sie ihn auf Aufforderung und strecken Sie ihn wieder, dreimal.</translation>
+    </message>
+    <message>
+        <source>Both sensors moved the same way. Keep your upper arm still while you bend the elbow, and check that one sensor is on the upper arm and one on the forearm.</source>
+        <translation>Beide Sensoren haben sich gleich bewegt. Halten Sie den Oberarm ruhig, während Sie den Ellbogen beugen, und prüfen Sie, dass ein Sensor am Oberarm und einer am Unterarm sitzt.</translation>
+    </message>
+    <message>
+        <source>A sensor gives readings that do not make sense. Switch it off and on again; if this happens again, call your therapist.</source>
+        <translation>Ein Sensor liefert unsinnige Werte. Schalten Sie ihn aus und wieder ein; wenn das wieder passiert, rufen Sie Ihre Therapeutin an.</translation>
+    </message>
+    <message>
+        <source>The two sensors are swapped: the upper-arm sensor is on your forearm, and the forearm sensor is on your upper arm. Put each one on the other&apos;s place.</source>
+        <translation>Die beiden Sensoren sind vertauscht: Der Oberarm-Sensor sitzt an Ihrem Unterarm und der Unterarm-Sensor an Ihrem Oberarm. Setzen Sie jeden an die Stelle des anderen.</translation>
+    </message>
+    <message>
+        <source>The sensor on your upper arm is upside down: its arrow points down. Turn it round so that the arrow points up towards your shoulder.</source>
+        <translation>Der Sensor an Ihrem Oberarm steht auf dem Kopf: Sein Pfeil zeigt nach unten. Drehen Sie ihn um, sodass der Pfeil nach oben zur Schulter zeigt.</translation>
+    </message>
+    <message>
+        <source>The sensor on your forearm is upside down: its arrow points down. Turn it round so that the arrow points up towards your shoulder.</source>
+        <translation>Der Sensor an Ihrem Unterarm steht auf dem Kopf: Sein Pfeil zeigt nach unten. Drehen Sie ihn um, sodass der Pfeil nach oben zur Schulter zeigt.</translation>
+    </message>
+    <message>
+        <source>The sensor on your upper arm sits crooked, or your arm was not hanging straight. Straighten the strap and let your arm hang loosely.</source>
+        <translation>Der Sensor an Ihrem Oberarm sitzt schief, oder Ihr Arm hing nicht gerade. Richten Sie das Band gerade und lassen Sie den Arm locker hängen.</translation>
+    </message>
+    <message>
+        <source>The sensor on your forearm sits crooked, or your elbow was not straight. Straighten the strap and let your arm hang loosely.</source>
+        <translation>Der Sensor an Ihrem Unterarm sitzt schief, oder Ihr Ellbogen war nicht gestreckt. Richten Sie das Band gerade und lassen Sie den Arm locker hängen.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::StrapPicture</name>
+    <message>
+        <source>Worn right</source>
+        <translation>Richtig angelegt</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Jetzt</translation>
+    </message>
+    <message>
+        <source>How it should be</source>
+        <translation>So soll es sein</translation>
+    </message>
+    <message>
+        <source>upper-arm sensor</source>
+        <translation>Oberarm-Sensor</translation>
+    </message>
+    <message>
+        <source>forearm sensor</source>
+        <translation>Unterarm-Sensor</translation>
+    </message>
+    <message>
+        <source>The upper-arm sensor on the upper arm and the forearm sensor on the forearm, both with their arrow pointing up towards the shoulder.</source>
+        <translation>Der Oberarm-Sensor am Oberarm und der Unterarm-Sensor am Unterarm, beide mit dem Pfeil nach oben zur Schulter.</translation>
+    </message>
+    <message>
+        <source>Now the two sensors are on each other&apos;s place.</source>
+        <translation>Jetzt sitzen die beiden Sensoren jeweils an der Stelle des anderen.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the upper arm has its arrow pointing down.</source>
+        <translation>Jetzt zeigt der Pfeil des Sensors am Oberarm nach unten.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the forearm has its arrow pointing down.</source>
+        <translation>Jetzt zeigt der Pfeil des Sensors am Unterarm nach unten.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the upper arm sits crooked.</source>
+        <translation>Jetzt sitzt der Sensor am Oberarm schief.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the forearm sits crooked.</source>
+        <translation>Jetzt sitzt der Sensor am Unterarm schief.</translation>
+    </message>
+    <message>
+        <source>Picture of the sensors on the arm</source>
+        <translation>Bild der Sensoren am Arm</translation>
     </message>
 </context>
 <context>

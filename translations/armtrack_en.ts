@@ -104,6 +104,26 @@
     </message>
 </context>
 <context>
+    <name>armtrack::gui::home::ExerciseScreen</name>
+    <message numerus="yes">
+        <source>Then press Start: %n set(s) of %1 repetitions.</source>
+        <translation>
+            <numerusform>Then press Start: %n set of %1 repetitions.</numerusform>
+            <numerusform>Then press Start: %n sets of %1 repetitions.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeStartScreen</name>
+    <message numerus="yes">
+        <source>%1: %n set(s) of %2 repetitions, %3 s rest</source>
+        <translation>
+            <numerusform>%1: %n set of %2 repetitions, %3 s rest</numerusform>
+            <numerusform>%1: %n sets of %2 repetitions, %3 s rest</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>armtrack::reports</name>
     <message numerus="yes">
         <source>... %n more</source>

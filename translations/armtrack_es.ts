@@ -704,18 +704,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>&amp;Omitir el análisis</translation>
     </message>
     <message>
-        <source>Home exercises</source>
-        <translation>Ejercicios en casa</translation>
-    </message>
-    <message>
-        <source>This is a home account. The guided home exercises it opens arrive in a later version of ArmTrack. Until then, your therapist records your sessions at the clinic.</source>
-        <translation>Esta es una cuenta para casa. Los ejercicios guiados en casa que abre llegarán en una versión posterior de ArmTrack. Hasta entonces, su terapeuta graba sus sesiones en la consulta.</translation>
-    </message>
-    <message>
-        <source>Sign &amp;out</source>
-        <translation>&amp;Salir de la cuenta</translation>
-    </message>
-    <message>
         <source>Back the file up, then bring it up to date with: armtrack-cli db migrate</source>
         <translation>Haga una copia de seguridad del archivo y actualícelo después con: armtrack-cli db migrate</translation>
     </message>
@@ -754,6 +742,10 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>home account</source>
         <translation>cuenta para casa</translation>
+    </message>
+    <message>
+        <source>Signing in as the demo patient at home...</source>
+        <translation>Iniciando sesión como la paciente de demostración en casa...</translation>
     </message>
 </context>
 <context>
@@ -1460,6 +1452,22 @@ Puede recalcularla desde su revisión.</translation>
         <source>Target (°)</source>
         <translation>Objetivo (°)</translation>
     </message>
+    <message>
+        <source>Sets</source>
+        <translation>Series</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Descanso</translation>
+    </message>
+    <message>
+        <source>%L1 × %L2</source>
+        <translation>%L1 × %L2</translation>
+    </message>
+    <message>
+        <source>%L1 s</source>
+        <translation>%L1 s</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::PatientTableModel</name>
@@ -2120,6 +2128,38 @@ Puede recalcularla desde su revisión.</translation>
         <source>Notes</source>
         <translation>Notas</translation>
     </message>
+    <message>
+        <source>home</source>
+        <translation>en casa</translation>
+    </message>
+    <message>
+        <source>clinic</source>
+        <translation>consulta</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 repetitions</source>
+        <translation>%L1 de %L2 repeticiones</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 sets (not measured)</source>
+        <translation>%L1 de %L2 series (sin medir)</translation>
+    </message>
+    <message>
+        <source>reached %L1° of %L2°</source>
+        <translation>alcanzó %L1° de %L2°</translation>
+    </message>
+    <message>
+        <source>pain %L1/10</source>
+        <translation>dolor %L1/10</translation>
+    </message>
+    <message>
+        <source>Where</source>
+        <translation>Lugar</translation>
+    </message>
+    <message>
+        <source>Patient&apos;s own account</source>
+        <translation>Lo que dice el paciente</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SettingsDialog</name>
@@ -2347,6 +2387,711 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Wrong user name or password.</source>
         <translation>Nombre de usuario o contraseña incorrectos.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::ExerciseRecording</name>
+    <message>
+        <source>the records</source>
+        <translation>el registro clínico</translation>
+    </message>
+    <message>
+        <source>This exercise cannot be saved: %1</source>
+        <translation>Este ejercicio no se puede guardar: %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::ExerciseScreen</name>
+    <message>
+        <source>The sensors could not start: %1. Check that they are switched on; you can skip this exercise.</source>
+        <translation>Los sensores no pudieron arrancar: %1. Compruebe que están encendidos; puede saltarse este ejercicio.</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Ejercicio</translation>
+    </message>
+    <message>
+        <source>Exercise %L1 of %L2: %3</source>
+        <translation>Ejercicio %L1 de %L2: %3</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Instrucción</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>Your angle now</source>
+        <translation>Su ángulo ahora</translation>
+    </message>
+    <message>
+        <source>Feedback</source>
+        <translation>Indicaciones</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <source>Pause (Escape)</source>
+        <translation>Pausa (Esc)</translation>
+    </message>
+    <message>
+        <source>S&amp;kip this exercise</source>
+        <translation>Sa&amp;ltar este ejercicio</translation>
+    </message>
+    <message>
+        <source>S&amp;top for today</source>
+        <translation>&amp;Terminar por hoy</translation>
+    </message>
+    <message>
+        <source>%1: not measured</source>
+        <translation>%1: sin medir</translation>
+    </message>
+    <message>
+        <source>Raise your arm forward with the elbow straight, up to where the light arm goes, then lower it slowly.</source>
+        <translation>Levante el brazo hacia delante con el codo estirado, hasta donde llega el brazo claro, y bájelo despacio.</translation>
+    </message>
+    <message>
+        <source>Raise your arm out to the side with the elbow straight, up to where the light arm goes, then lower it slowly.</source>
+        <translation>Levante el brazo hacia el lado con el codo estirado, hasta donde llega el brazo claro, y bájelo despacio.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow at your side, bent at a right angle. Turn your hand in towards your belly and out again, as the light arm does.</source>
+        <translation>Mantenga el codo junto al cuerpo, doblado en ángulo recto. Gire la mano hacia el vientre y de nuevo hacia fuera, como el brazo claro.</translation>
+    </message>
+    <message>
+        <source>Bend your elbow up as far as the light arm goes, then straighten it slowly. Keep your upper arm still.</source>
+        <translation>Doble el codo hasta donde llega el brazo claro y estírelo despacio. Mantenga quieto el brazo.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow bent at a right angle. Turn your palm down and up again, as the light arm does.</source>
+        <translation>Mantenga el codo doblado en ángulo recto. Gire la palma hacia abajo y de nuevo hacia arriba, como el brazo claro.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Then press Start: %n set(s) of %1 repetitions.</source>
+        <translation>
+            <numerusform>Después pulse Empezar: %n serie de %1 repeticiones.</numerusform>
+            <numerusform>Después pulse Empezar: %n series de %1 repeticiones.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>ArmTrack cannot measure this exercise without the camera. Do it as shown and count the repetitions yourself; it is recorded for your therapist.</source>
+        <translation>Sin la cámara, ArmTrack no puede medir este ejercicio. Hágalo como se muestra y cuente usted las repeticiones; se graba para su terapeuta.</translation>
+    </message>
+    <message>
+        <source>Your therapist says: %1</source>
+        <translation>Su terapeuta dice: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Start set %1</source>
+        <translation>&amp;Empezar la serie %1</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2: move like the light arm, %3 times. Take your time.</source>
+        <translation>Serie %1 de %2: muévase como el brazo claro, %3 veces. Tómese su tiempo.</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2: do the movement %3 times, then press Done.</source>
+        <translation>Serie %1 de %2: haga el movimiento %3 veces y pulse Hecho.</translation>
+    </message>
+    <message>
+        <source>&amp;Done with this set</source>
+        <translation>Serie &amp;hecha</translation>
+    </message>
+    <message>
+        <source>Rest. The next set starts by itself when the time is up.</source>
+        <translation>Descanso. La siguiente serie empieza sola cuando acabe el tiempo.</translation>
+    </message>
+    <message>
+        <source>&amp;Start the next set now</source>
+        <translation>&amp;Empezar ya la siguiente serie</translation>
+    </message>
+    <message>
+        <source>Paused. Press Go on when you are ready.</source>
+        <translation>En pausa. Pulse Seguir cuando esté listo.</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Seguir</translation>
+    </message>
+    <message>
+        <source>Saving this exercise…</source>
+        <translation>Guardando este ejercicio…</translation>
+    </message>
+    <message>
+        <source>Rest: %1 s</source>
+        <translation>Descanso: %1 s</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 de %2</translation>
+    </message>
+    <message>
+        <source>Count: %1 times</source>
+        <translation>Cuente: %1 veces</translation>
+    </message>
+    <message>
+        <source>Set %1 of %2</source>
+        <translation>Serie %1 de %2</translation>
+    </message>
+    <message>
+        <source>Set %1 done. Well done!</source>
+        <translation>Serie %1 hecha. ¡Muy bien!</translation>
+    </message>
+    <message>
+        <source>The camera does not see you, so ArmTrack cannot measure this shoulder exercise now. Go on as shown, count yourself, and press Done after each set.</source>
+        <translation>La cámara no le ve, así que ArmTrack no puede medir ahora este ejercicio de hombro. Siga como se muestra, cuente usted y pulse Hecho después de cada serie.</translation>
+    </message>
+    <message>
+        <source>%1: %2°</source>
+        <translation>%1: %2°</translation>
+    </message>
+    <message>
+        <source>Target reached!</source>
+        <translation>¡Objetivo alcanzado!</translation>
+    </message>
+    <message>
+        <source>Good: %1 done.</source>
+        <translation>Bien: %1 hechas.</translation>
+    </message>
+    <message>
+        <source>Try to go a little further next time.</source>
+        <translation>Intente llegar un poco más lejos la próxima vez.</translation>
+    </message>
+    <message>
+        <source>Almost: go a little further for it to count.</source>
+        <translation>Casi: llegue un poco más lejos para que cuente.</translation>
+    </message>
+    <message>
+        <source>A little slower, please.</source>
+        <translation>Un poco más despacio, por favor.</translation>
+    </message>
+    <message>
+        <source>Keep your elbow straight; move only your shoulder.</source>
+        <translation>Mantenga el codo estirado; mueva solo el hombro.</translation>
+    </message>
+    <message>
+        <source>Keep your upper arm still; move only your elbow and forearm.</source>
+        <translation>Mantenga quieto el brazo; mueva solo el codo y el antebrazo.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeCalibrationScreen</name>
+    <message>
+        <source>Now ArmTrack learns how the sensors sit on your arm today. It takes about a minute: press Start, then do what the screen says and what the light arm shows.</source>
+        <translation>Ahora ArmTrack aprende cómo están hoy los sensores en su brazo. Tarda un minuto: pulse Empezar y haga lo que dice la pantalla y muestra el brazo claro.</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Calibración</translation>
+    </message>
+    <message>
+        <source>S&amp;kip the calibration</source>
+        <translation>Sa&amp;ltar la calibración</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Seguir</translation>
+    </message>
+    <message>
+        <source>&amp;Go on without it</source>
+        <translation>&amp;Seguir sin ella</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeController</name>
+    <message>
+        <source>One moment</source>
+        <translation>Un momento</translation>
+    </message>
+    <message>
+        <source>Loading today&apos;s exercises…</source>
+        <translation>Cargando los ejercicios de hoy…</translation>
+    </message>
+    <message>
+        <source>Today</source>
+        <translation>Hoy</translation>
+    </message>
+    <message>
+        <source>Sensor check</source>
+        <translation>Comprobación de los sensores</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Calibración</translation>
+    </message>
+    <message>
+        <source>Exercise %L1 of %L2</source>
+        <translation>Ejercicio %L1 de %L2</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Resumen</translation>
+    </message>
+    <message>
+        <source>Something went wrong</source>
+        <translation>Algo ha ido mal</translation>
+    </message>
+    <message>
+        <source>%1
+Please try again. If this happens again, call your therapist.</source>
+        <translation>%1
+Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>&amp;Try again</source>
+        <translation>&amp;Reintentar</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>Cerrar &amp;sesión</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeStartScreen</name>
+    <message numerus="yes">
+        <source>%1: %n set(s) of %2 repetitions, %3 s rest</source>
+        <translation>
+            <numerusform>%1: %n serie de %2 repeticiones, %3 s de descanso</numerusform>
+            <numerusform>%1: %n series de %2 repeticiones, %3 s de descanso</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Today&apos;s exercises</source>
+        <translation>Ejercicios de hoy</translation>
+    </message>
+    <message>
+        <source>Hello, %1</source>
+        <translation>Hola, %1</translation>
+    </message>
+    <message>
+        <source>Your therapist has not given you any exercises yet.</source>
+        <translation>Su terapeuta aún no le ha dado ejercicios.</translation>
+    </message>
+    <message>
+        <source>Today&apos;s exercises:</source>
+        <translation>Ejercicios de hoy:</translation>
+    </message>
+    <message>
+        <source>(not measured without the camera)</source>
+        <translation>(sin la cámara no se mide)</translation>
+    </message>
+    <message>
+        <source>What can be measured</source>
+        <translation>Qué se puede medir</translation>
+    </message>
+    <message>
+        <source>This set-up has no camera. ArmTrack measures your elbow and forearm well with the two sensors alone. It cannot trust the shoulder&apos;s angles without the camera: they drift slowly about the vertical. Do the shoulder exercises as your therapist showed you; they are recorded for your therapist, but ArmTrack does not count them or show their numbers.%1</source>
+        <translation>Este equipo no tiene cámara. ArmTrack mide bien el codo y el antebrazo solo con los dos sensores. Sin la cámara no puede fiarse de los ángulos del hombro: derivan despacio alrededor de la vertical. Haga los ejercicios de hombro como le enseñó su terapeuta; se graban para su terapeuta, pero ArmTrack no los cuenta ni muestra sus números.%1</translation>
+    </message>
+    <message>
+        <source>None of today&apos;s exercises needs it.</source>
+        <translation>Ninguno de los ejercicios de hoy la necesita.</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Empezar</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>Cerrar &amp;sesión</translation>
+    </message>
+    <message>
+        <source>I use the keyboard or the mouse</source>
+        <translation>Uso el teclado o el ratón</translation>
+    </message>
+    <message>
+        <source>I use one switch: the choices light up in turn</source>
+        <translation>Uso un pulsador: las opciones se iluminan por turnos</translation>
+    </message>
+    <message>
+        <source>I use one switch: press to go on</source>
+        <translation>Uso un pulsador: pulsar es seguir</translation>
+    </message>
+    <message>
+        <source>How I press: %1</source>
+        <translation>Cómo pulso: %1</translation>
+    </message>
+    <message>
+        <source>Press to change how you use ArmTrack</source>
+        <translation>Pulse para cambiar cómo usa ArmTrack</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeStyle</name>
+    <message>
+        <source>information</source>
+        <translation>información</translation>
+    </message>
+    <message>
+        <source>well done</source>
+        <translation>muy bien</translation>
+    </message>
+    <message>
+        <source>hint</source>
+        <translation>consejo</translation>
+    </message>
+    <message>
+        <source>problem</source>
+        <translation>problema</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeSummaryChart</name>
+    <message>
+        <source>Chart of the range reached</source>
+        <translation>Gráfico del rango alcanzado</translation>
+    </message>
+    <message>
+        <source>Last time</source>
+        <translation>La última vez</translation>
+    </message>
+    <message>
+        <source>%1 sessions ago</source>
+        <translation>hace %1 sesiones</translation>
+    </message>
+    <message>
+        <source>%1 (not measured)</source>
+        <translation>%1 (sin medir)</translation>
+    </message>
+    <message>
+        <source>Today</source>
+        <translation>Hoy</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Farthest angle reached (degrees)</source>
+        <translation>Mayor ángulo alcanzado (grados)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeSummaryScreen</name>
+    <message>
+        <source>%1: %L2 of %L3 repetitions</source>
+        <translation>%1: %L2 de %L3 repeticiones</translation>
+    </message>
+    <message>
+        <source>%1: %L2 of %L3 sets done (not measured without the camera)</source>
+        <translation>%1: %L2 de %L3 series hechas (sin la cámara no se mide)</translation>
+    </message>
+    <message>
+        <source>you reached %L1°, the target is %L2°</source>
+        <translation>llegó a %L1°, el objetivo es %L2°</translation>
+    </message>
+    <message>
+        <source>last time %L1°</source>
+        <translation>la última vez %L1°</translation>
+    </message>
+    <message>
+        <source>stopped early</source>
+        <translation>terminado antes</translation>
+    </message>
+    <message>
+        <source>Saving…</source>
+        <translation>Guardando…</translation>
+    </message>
+    <message>
+        <source>Summary</source>
+        <translation>Resumen</translation>
+    </message>
+    <message>
+        <source>Well done, %1!</source>
+        <translation>¡Muy bien, %1!</translation>
+    </message>
+    <message>
+        <source>How much pain did you have? 0 is none, 10 the worst.</source>
+        <translation>¿Cuánto dolor ha tenido? 0 es ninguno, 10 el peor.</translation>
+    </message>
+    <message>
+        <source>Anything to tell your therapist? (You may leave it empty.)</source>
+        <translation>¿Algo que decir a su terapeuta? (Puede dejarlo vacío.)</translation>
+    </message>
+    <message>
+        <source>Less pain</source>
+        <translation>Menos dolor</translation>
+    </message>
+    <message>
+        <source>More pain</source>
+        <translation>Más dolor</translation>
+    </message>
+    <message>
+        <source>Pain score</source>
+        <translation>Nivel de dolor</translation>
+    </message>
+    <message>
+        <source>no answer</source>
+        <translation>sin respuesta</translation>
+    </message>
+    <message>
+        <source>Your comment</source>
+        <translation>Su comentario</translation>
+    </message>
+    <message>
+        <source>Saved</source>
+        <translation>Guardado</translation>
+    </message>
+    <message>
+        <source>&amp;Save and finish</source>
+        <translation>&amp;Guardar y terminar</translation>
+    </message>
+    <message>
+        <source>&amp;Close</source>
+        <translation>&amp;Cerrar</translation>
+    </message>
+    <message>
+        <source>Saved. Your therapist will see it. Thank you!</source>
+        <translation>Guardado. Su terapeuta lo verá. ¡Gracias!</translation>
+    </message>
+    <message>
+        <source>It could not be saved: %1. Press Save to try again.</source>
+        <translation>No se pudo guardar: %1. Pulse Guardar para intentarlo de nuevo.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeWindow</name>
+    <message>
+        <source>ArmTrack: my exercises</source>
+        <translation>ArmTrack: mis ejercicios</translation>
+    </message>
+    <message>
+        <source>My exercises</source>
+        <translation>Mis ejercicios</translation>
+    </message>
+    <message>
+        <source>Whose exercises</source>
+        <translation>De quién son los ejercicios</translation>
+    </message>
+    <message>
+        <source>Step</source>
+        <translation>Paso</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::SensorCheckScreen</name>
+    <message>
+        <source>&amp;Start the check</source>
+        <translation>&amp;Empezar la comprobación</translation>
+    </message>
+    <message>
+        <source>&amp;Go on</source>
+        <translation>&amp;Seguir</translation>
+    </message>
+    <message>
+        <source>S&amp;kip the check</source>
+        <translation>Sa&amp;ltar la comprobación</translation>
+    </message>
+    <message>
+        <source>The sensors could not be started: %1</source>
+        <translation>No se pudieron arrancar los sensores: %1</translation>
+    </message>
+    <message>
+        <source>The check could not be recorded: %1</source>
+        <translation>No se pudo grabar la comprobación: %1</translation>
+    </message>
+    <message>
+        <source>no data came from the sensors</source>
+        <translation>no llegaron datos de los sensores</translation>
+    </message>
+    <message>
+        <source>Sensor check</source>
+        <translation>Comprobación de los sensores</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Instrucción</translation>
+    </message>
+    <message>
+        <source>Result of the check</source>
+        <translation>Resultado de la comprobación</translation>
+    </message>
+    <message>
+        <source>&amp;Check again</source>
+        <translation>&amp;Comprobar de nuevo</translation>
+    </message>
+    <message>
+        <source>&amp;Go on anyway</source>
+        <translation>&amp;Seguir de todos modos</translation>
+    </message>
+    <message>
+        <source>S&amp;top the check</source>
+        <translation>&amp;Parar la comprobación</translation>
+    </message>
+    <message>
+        <source>First, a check of the sensors</source>
+        <translation>Primero, una comprobación de los sensores</translation>
+    </message>
+    <message>
+        <source>Strap the upper-arm sensor on your upper arm and the forearm sensor on your forearm, each with its arrow pointing up towards your shoulder, as in the picture. Let your arm hang loosely straight down. After Start, keep still for 3 seconds, then bend your elbow up and straighten it again, three times.</source>
+        <translation>Sujete el sensor del brazo en el brazo y el del antebrazo en el antebrazo, cada uno con la flecha hacia arriba, hacia el hombro, como en la imagen. Deje el brazo colgando suelto y recto. Después de Empezar, quédese quieto 3 segundos; luego doble el codo y estírelo de nuevo, tres veces.</translation>
+    </message>
+    <message>
+        <source>Starting the sensors…</source>
+        <translation>Arrancando los sensores…</translation>
+    </message>
+    <message>
+        <source>Let your arm hang loosely straight down.</source>
+        <translation>Deje el brazo colgando suelto y recto.</translation>
+    </message>
+    <message>
+        <source>Keep still: %1</source>
+        <translation>Quieto: %1</translation>
+    </message>
+    <message>
+        <source>Let your arm hang loosely straight down, and keep it still.</source>
+        <translation>Deje el brazo colgando suelto y recto, y manténgalo quieto.</translation>
+    </message>
+    <message>
+        <source>Bend your elbow: %1 of %2</source>
+        <translation>Doble el codo: %1 de %2</translation>
+    </message>
+    <message>
+        <source>Bend your elbow up as far as is comfortable, then straighten it again. Keep your upper arm still.</source>
+        <translation>Doble el codo hasta donde le resulte cómodo y estírelo de nuevo. Mantenga quieto el brazo.</translation>
+    </message>
+    <message>
+        <source>Keep still</source>
+        <translation>Quieto</translation>
+    </message>
+    <message>
+        <source>Let your arm hang down again.</source>
+        <translation>Deje caer el brazo de nuevo.</translation>
+    </message>
+    <message>
+        <source>Checking…</source>
+        <translation>Comprobando…</translation>
+    </message>
+    <message>
+        <source>You can relax your arm.</source>
+        <translation>Puede relajar el brazo.</translation>
+    </message>
+    <message>
+        <source>The sensors are right</source>
+        <translation>Los sensores están bien</translation>
+    </message>
+    <message>
+        <source>Both sensors are on the right places and the right way round.</source>
+        <translation>Los dos sensores están en su sitio y en la posición correcta.</translation>
+    </message>
+    <message>
+        <source>Well done.</source>
+        <translation>Muy bien.</translation>
+    </message>
+    <message>
+        <source>Please change the sensors</source>
+        <translation>Cambie los sensores, por favor</translation>
+    </message>
+    <message>
+        <source>Please do the check again</source>
+        <translation>Haga la comprobación de nuevo, por favor</translation>
+    </message>
+    <message>
+        <source>Change them as in the picture, then press Check again.</source>
+        <translation>Cámbielos como en la imagen y pulse Comprobar de nuevo.</translation>
+    </message>
+    <message>
+        <source>Press Check again when you are ready.</source>
+        <translation>Pulse Comprobar de nuevo cuando esté listo.</translation>
+    </message>
+    <message>
+        <source>No data came from the upper-arm sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>No llegaron datos del sensor del brazo. Compruebe que está encendido y cargado, y pulse Comprobar de nuevo.</translation>
+    </message>
+    <message>
+        <source>No data came from the forearm sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>No llegaron datos del sensor del antebrazo. Compruebe que está encendido y cargado, y pulse Comprobar de nuevo.</translation>
+    </message>
+    <message>
+        <source>Your arm was not still at the start. Let it hang loosely and keep it still until the countdown ends.</source>
+        <translation>Su brazo no estaba quieto al principio. Déjelo colgar suelto y quieto hasta que acabe la cuenta atrás.</translation>
+    </message>
+    <message>
+        <source>ArmTrack did not see your elbow bend. When asked, bend your elbow up and straighten it again, three times.</source>
+        <translation>ArmTrack no vio doblarse su codo. Cuando se le pida, doble el codo y estírelo de nuevo, tres veces.</translation>
+    </message>
+    <message>
+        <source>Both sensors moved the same way. Keep your upper arm still while you bend the elbow, and check that one sensor is on the upper arm and one on the forearm.</source>
+        <translation>Los dos sensores se movieron igual. Mantenga quieto el brazo mientras dobla el codo, y compruebe que un sensor está en el brazo y otro en el antebrazo.</translation>
+    </message>
+    <message>
+        <source>A sensor gives readings that do not make sense. Switch it off and on again; if this happens again, call your therapist.</source>
+        <translation>Un sensor da lecturas sin sentido. Apáguelo y vuelva a encenderlo; si vuelve a pasar, llame a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>The two sensors are swapped: the upper-arm sensor is on your forearm, and the forearm sensor is on your upper arm. Put each one on the other&apos;s place.</source>
+        <translation>Los dos sensores están intercambiados: el sensor del brazo está en su antebrazo y el del antebrazo en su brazo. Ponga cada uno en el sitio del otro.</translation>
+    </message>
+    <message>
+        <source>The sensor on your upper arm is upside down: its arrow points down. Turn it round so that the arrow points up towards your shoulder.</source>
+        <translation>El sensor de su brazo está al revés: su flecha apunta hacia abajo. Gírelo para que la flecha apunte hacia arriba, hacia el hombro.</translation>
+    </message>
+    <message>
+        <source>The sensor on your forearm is upside down: its arrow points down. Turn it round so that the arrow points up towards your shoulder.</source>
+        <translation>El sensor de su antebrazo está al revés: su flecha apunta hacia abajo. Gírelo para que la flecha apunte hacia arriba, hacia el hombro.</translation>
+    </message>
+    <message>
+        <source>The sensor on your upper arm sits crooked, or your arm was not hanging straight. Straighten the strap and let your arm hang loosely.</source>
+        <translation>El sensor de su brazo está torcido, o su brazo no colgaba recto. Enderece la correa y deje el brazo colgando suelto.</translation>
+    </message>
+    <message>
+        <source>The sensor on your forearm sits crooked, or your elbow was not straight. Straighten the strap and let your arm hang loosely.</source>
+        <translation>El sensor de su antebrazo está torcido, o su codo no estaba estirado. Enderece la correa y deje el brazo colgando suelto.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::StrapPicture</name>
+    <message>
+        <source>Worn right</source>
+        <translation>Bien puestos</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Ahora</translation>
+    </message>
+    <message>
+        <source>How it should be</source>
+        <translation>Cómo debe ser</translation>
+    </message>
+    <message>
+        <source>upper-arm sensor</source>
+        <translation>sensor del brazo</translation>
+    </message>
+    <message>
+        <source>forearm sensor</source>
+        <translation>sensor del antebrazo</translation>
+    </message>
+    <message>
+        <source>The upper-arm sensor on the upper arm and the forearm sensor on the forearm, both with their arrow pointing up towards the shoulder.</source>
+        <translation>El sensor del brazo en el brazo y el del antebrazo en el antebrazo, ambos con la flecha hacia arriba, hacia el hombro.</translation>
+    </message>
+    <message>
+        <source>Now the two sensors are on each other&apos;s place.</source>
+        <translation>Ahora cada sensor está en el sitio del otro.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the upper arm has its arrow pointing down.</source>
+        <translation>Ahora la flecha del sensor del brazo apunta hacia abajo.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the forearm has its arrow pointing down.</source>
+        <translation>Ahora la flecha del sensor del antebrazo apunta hacia abajo.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the upper arm sits crooked.</source>
+        <translation>Ahora el sensor del brazo está torcido.</translation>
+    </message>
+    <message>
+        <source>Now the sensor on the forearm sits crooked.</source>
+        <translation>Ahora el sensor del antebrazo está torcido.</translation>
+    </message>
+    <message>
+        <source>Picture of the sensors on the arm</source>
+        <translation>Imagen de los sensores en el brazo</translation>
     </message>
 </context>
 <context>

@@ -16,6 +16,8 @@ int dbCommand(const std::vector<std::string>& args, std::ostream& out, std::ostr
 int userCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int patientCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// programme: ProgrammeCommands.cpp.
+int programmeCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 /// report and export: ClinicalOutputs.cpp.

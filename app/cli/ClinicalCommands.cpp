@@ -42,7 +42,7 @@ constexpr std::string_view kPatientHelp = R"(Usage: armtrack-cli patient <add|li
               [--side left|right|both|none] [--diagnosis TEXT] [--notes TEXT]
   patient list [--json]      (a home account sees only its own patient)
   patient programme CODE [--json]
-                             the patient's home programme (protocols and sessions per week)
+                             the patient's home programme (as 'programme list')
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -58,12 +58,6 @@ constexpr std::string_view kProtocolHelp = R"(Usage: armtrack-cli protocol <add|
 KEY is a clinical angle such as shoulder_flexion or elbow_flexion.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
-
-// The subcommand (first word) and the words after it; help when there is none.
-std::pair<std::string, std::vector<std::string>> split(const std::vector<std::string>& args) {
-  if (args.empty() || args[0].starts_with("-")) return {"", args};
-  return {args[0], std::vector<std::string>(args.begin() + 1, args.end())};
-}
 
 int dbInit(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("db init", rest, withDb({{"--admin", true}}));
@@ -192,16 +186,7 @@ int patientProgramme(const std::vector<std::string>& rest, std::ostream& out, st
   if (a.help()) return out << kPatientHelp, 0;
   const std::string code = a.single("patient code");
   ClinicalContext c(a, {}, true);
-  QJsonArray list;
-  for (const storage::ProgrammeItem& item : c.store().programme(qs(code))) {
-    if (!a.flag("--json"))
-      out << ss(item.protocolName) << "\t" << item.sessionsPerWeek << "/week\t" << ss(item.notes)
-          << "\n";
-    list.append(QJsonObject{{"protocol", item.protocolName},
-                            {"sessions_per_week", item.sessionsPerWeek},
-                            {"notes", item.notes}});
-  }
-  if (a.flag("--json")) printJson(out, QJsonDocument(list));
+  listProgramme(c.store(), qs(code), a.flag("--json"), out);
   return 0;
 }
 
@@ -262,44 +247,30 @@ int protocolList(const std::vector<std::string>& rest, std::ostream& out, std::o
   return 0;
 }
 
-template <typename Table>
-int dispatchSub(const char* command, std::string_view help, const std::vector<std::string>& args,
-                std::ostream& out, std::ostream& err, const Table& table) {
-  const auto [sub, rest] = split(args);
-  if (sub.empty()) {
-    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) return out << help, 0;
-    throw UsageError(command, "missing subcommand");
-  }
-  for (const auto& [name, fn] : table)
-    if (sub == name) return fn(rest, out, err);
-  throw UsageError(command, "unknown subcommand '" + sub + "'");
-}
-
-using Fn = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
-
 }  // namespace
 
 int dbCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{
       {"init", dbInit}, {"check", dbCheck}, {"migrate", dbMigrate}, {"backup", dbBackup}};
-  return dispatchSub("db", kDbHelp, args, out, err, table);
+  return dispatchSubcommand("db", kDbHelp, args, out, err, table);
 }
 
 int userCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{{"add", userAdd}, {"list", userList}};
-  return dispatchSub("user", kUserHelp, args, out, err, table);
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{{"add", userAdd},
+                                                                       {"list", userList}};
+  return dispatchSubcommand("user", kUserHelp, args, out, err, table);
 }
 
 int patientCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{
       {"add", patientAdd}, {"list", patientList}, {"programme", patientProgramme}};
-  return dispatchSub("patient", kPatientHelp, args, out, err, table);
+  return dispatchSubcommand("patient", kPatientHelp, args, out, err, table);
 }
 
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, Fn>> table{
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{
       {"add", protocolAdd}, {"list", protocolList}, {"assign", protocolAssign}};
-  return dispatchSub("protocol", kProtocolHelp, args, out, err, table);
+  return dispatchSubcommand("protocol", kProtocolHelp, args, out, err, table);
 }
 
 }  // namespace armtrack::cli

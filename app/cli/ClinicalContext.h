@@ -47,6 +47,37 @@ std::string passwordFromUser(const std::string& what);
 void analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
                        std::ostream& err);
 
+/// The subcommand (first word) and the words after it; help when there is none.
+inline std::pair<std::string, std::vector<std::string>> splitSubcommand(
+    const std::vector<std::string>& args) {
+  if (args.empty() || args[0].starts_with("-")) return {"", args};
+  return {args[0], std::vector<std::string>(args.begin() + 1, args.end())};
+}
+
+/// A subcommand's function: the words after it, standard output and error; the exit status.
+using SubcommandFn = int (*)(const std::vector<std::string>&, std::ostream&, std::ostream&);
+
+/// Runs the subcommand of command named by args' first word from table (name, function); prints
+/// help for --help alone; UsageError for a missing or unknown one.
+inline int dispatchSubcommand(const char* command, std::string_view help,
+                              const std::vector<std::string>& args, std::ostream& out,
+                              std::ostream& err,
+                              const std::vector<std::pair<std::string, SubcommandFn>>& table) {
+  const auto [sub, rest] = splitSubcommand(args);
+  if (sub.empty()) {
+    if (!args.empty() && (args[0] == "--help" || args[0] == "-h")) return out << help, 0;
+    throw UsageError(command, "missing subcommand");
+  }
+  for (const auto& [name, fn] : table)
+    if (sub == name) return fn(rest, out, err);
+  throw UsageError(command, "unknown subcommand '" + sub + "'");
+}
+
+/// Prints a patient's home programme in its order (a line per exercise, or JSON), with the
+/// protocol's repetitions and target where the programme has none of its own.
+void listProgramme(storage::ClinicalStore& store, const QString& patientCode, bool json,
+                   std::ostream& out);
+
 /// Writes doc indented, for --json.
 inline void printJson(std::ostream& out, const QJsonDocument& doc) {
   out << doc.toJson(QJsonDocument::Indented).toStdString();

@@ -29,7 +29,9 @@ constexpr std::string_view kSessionHelp =
   session list --patient CODE [--json]
   session show ID [--json]  id, patient, status (complete, interrupted or recording), duration_s,
                             samples (rows with IMU data), rows, chunks, stored_bytes, devices,
-                            filter_settings, and the newest metrics: per clinical angle, repetitions, sparc, ldlj,
+                            filter_settings, setting (clinic or home), a home session's
+                            pain_score, patient_comment and home_summary, and the newest
+                            metrics: per clinical angle, repetitions, sparc, ldlj,
                             estimate_version (docs/cli.md)
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
@@ -59,7 +61,11 @@ QJsonObject sessionJson(const storage::SessionInfo& s) {
                      {"protocol", s.protocolName},
                      {"devices", objectOf(s.devicesJson)},
                      {"filter_settings", objectOf(s.filterJson)},
-                     {"notes", s.notes}};
+                     {"notes", s.notes},
+                     {"setting", s.setting},
+                     {"pain_score", s.painScore ? QJsonValue(*s.painScore) : QJsonValue()},
+                     {"patient_comment", s.patientComment},
+                     {"home_summary", objectOf(s.homeSummaryJson)}};
 }
 
 // Estimates the session and stores its metrics, reporting on err.
@@ -218,7 +224,10 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
               ? std::string("none (the defaults)")
               : ss(QString::fromUtf8(
                     QJsonDocument(objectOf(s.filterJson)).toJson(QJsonDocument::Compact))))
-      << "\nnotes: " << ss(s.notes) << "\n";
+      << "\nnotes: " << ss(s.notes) << "\nrecorded at: " << ss(s.setting) << "\n";
+  if (s.setting == storage::kSettingHome)
+    out << "pain score: " << (s.painScore ? std::to_string(*s.painScore) : std::string("-"))
+        << "\npatient's comment: " << ss(s.patientComment) << "\n";
   if (metrics)
     printMetrics(out, *metrics);
   else

@@ -14,13 +14,13 @@
 #include <system_error>
 
 #include "app/cli/Args.h"
-#include "app/cli/Camera.h"
-#include "app/cli/Live.h"
 #include "app/cli/Calibrate.h"
-#include "app/cli/Clinical.h"
+#include "app/cli/Camera.h"
 #include "app/cli/Cli.h"
+#include "app/cli/Clinical.h"
 #include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
+#include "app/cli/Live.h"
 #include "app/cli/Orientation.h"
 #include "app/cli/TaoHu.h"
 #include "app/cli/Text.h"
@@ -63,6 +63,7 @@ Commands:
   user       add or list accounts (administrators)
   patient    add or list patients
   protocol   add or list exercise protocols
+  programme  a patient's home programme: exercises, sets, repetitions, targets, rest
   session    import a recording into the records (estimated and measured), list, show or
              re-estimate sessions
   export     write a stored session as a recording, clinical CSV, OpenSim .mot or BIDS motion
@@ -490,6 +491,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (cmd == "user") return userCommand(rest, out, err);
     if (cmd == "patient") return patientCommand(rest, out, err);
     if (cmd == "protocol") return protocolCommand(rest, out, err);
+    if (cmd == "programme") return programmeCommand(rest, out, err);
     if (cmd == "session") return sessionCommand(rest, out, err);
     if (cmd == "export") return exportCommand(rest, out, err);
     if (cmd == "audit") return auditCommand(rest, out, err);

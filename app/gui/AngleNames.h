@@ -4,11 +4,11 @@
 
 #include <QString>
 
+#include "app/gui/services/AngleKeys.h"
+
 namespace armtrack::gui {
 
 /// index in clinicalAngleInfo() order: "Shoulder flexion", ... (translated).
 QString angleName(int index);
-/// The index of a key such as "shoulder_flexion", or -1.
-int angleIndex(const QString& key);
 
 }  // namespace armtrack::gui

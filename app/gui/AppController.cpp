@@ -22,6 +22,8 @@
 #include "app/gui/ReviewScreen.h"
 #include "app/gui/SettingsDialog.h"
 #include "app/gui/SignInScreen.h"
+#include "app/gui/home/HomeController.h"
+#include "app/gui/home/HomeWindow.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/PatientRecords.h"
@@ -59,6 +61,7 @@ AppController::AppController(AppOptions options, QObject* parent)
 }
 
 AppController::~AppController() {
+  m_home.reset();
   m_window.reset();  // screens first: their pending answers are dropped
   m_records.reset();
 }
@@ -129,7 +132,8 @@ void AppController::startDemoSession() {
 bool AppController::saveWindowImage(const QString& path) const {
   QApplication::processEvents();
   // From the screen, so the OpenGL views are included.
-  const QPixmap shot = m_window->screen()->grabWindow(m_window->winId());
+  const QWidget* window = m_home ? static_cast<QWidget*>(m_home->window()) : m_window.get();
+  const QPixmap shot = window->screen()->grabWindow(window->winId());
   const bool ok = shot.save(path);
   if (!ok) qWarning("armtrack: cannot write the screenshot %s", qPrintable(path));
   return ok;
@@ -171,6 +175,19 @@ void AppController::startDemo() {
       },
       [this, wait, url](bool built) {
         if (!built) return QApplication::quit();
+        if (m_options.home) {
+          wait->setText([] { return tr("Signing in as the demo patient at home..."); });
+          m_records->signIn(
+              url, QString::fromLatin1(DemoAccounts::kHome),
+              QString::fromLatin1(DemoAccounts::kPassword), wait,
+              [this](const storage::User& user) {
+                emit signedIn(user.name);
+                showHome();
+                emit demoReady();
+              },
+              [this](const RecordsFailure& f) { showDatabaseProblem(f); });
+          return;
+        }
         wait->setText([] { return tr("Signing in as the demo therapist..."); });
         m_records->signIn(
             url, QString::fromLatin1(DemoAccounts::kTherapist),
@@ -324,7 +341,7 @@ void AppController::onSignedIn(const storage::User& user) {
   m_window->setSignedIn(
       [name = user.name, role = user.role] { return tr("%1 (%2)").arg(name, roleText(role)); });
   emit signedIn(user.name);
-  if (user.role == storage::Role::Home) return showHomeModeLater();
+  if (user.role == storage::Role::Home) return showHome();
   showPatients();
 }
 
@@ -437,17 +454,36 @@ void AppController::showReview(qint64 sessionId) {
   m_window->showScreen(screen);
 }
 
-void AppController::showHomeModeLater() {
-  auto* screen = new MessageScreen(
-      [] { return tr("Home exercises"); },
-      [] {
-        return tr(
-            "This is a home account. The guided home exercises it opens arrive in a later "
-            "version of ArmTrack. Until then, your therapist records your sessions at the "
-            "clinic.");
-      });
-  screen->addAction([] { return tr("Sign &out"); }, [this] { signOut(); });
-  m_window->showScreen(screen);
+void AppController::showHome() {
+  if (!m_records->signedIn() || m_home) return;
+  home::HomeSetup setup;
+  // The home set-up: the two IMUs and the computer's own webcam. In the demo the virtual arm
+  // plays them; otherwise the devices the therapist set up on this computer.
+  setup.devices = m_demoUrl
+                      ? QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm+webcam")}
+                      : defaultDevices();
+  setup.configure = [this](const SessionPlan& plan, const QStringList& devices,
+                           const std::optional<Calibration>& calibration) {
+    return liveSessionConfig(plan, devices, m_settings, calibration);
+  };
+  m_home =
+      std::make_unique<home::HomeController>(*m_records, m_plugins, std::move(setup), QString());
+  // Nothing of the main window stays reachable: it is hidden while the home window is open.
+  m_window->hide();
+  connect(m_home.get(), &home::HomeController::signOutRequested, this, &AppController::closeHome);
+  connect(m_home.get(), &home::HomeController::closed, this, &AppController::closeHome);
+  m_home->start();
+  emit homeShown();
+}
+
+void AppController::closeHome() {
+  if (!m_home) return;
+  // Not from inside the controller's own signal.
+  QTimer::singleShot(0, this, [this] {
+    m_window->show();  // first, so that the application does not end with its last window
+    m_home.reset();
+    signOut();
+  });
 }
 
 void AppController::showDatabaseProblem(const RecordsFailure& failure) {

@@ -18,6 +18,10 @@
 
 namespace armtrack::gui {
 
+namespace home {
+class HomeController;
+}
+
 class MainWindow;
 
 class AppController : public QObject {
@@ -30,6 +34,8 @@ class AppController : public QObject {
   void start();
 
   MainWindow* window() const { return m_window.get(); }
+  /// The home window's course while a home account is signed in (else null).
+  home::HomeController* home() const { return m_home.get(); }
   RecordsService& records() { return *m_records; }
   const app::PluginRegistry& plugins() const { return m_plugins; }
   const AppSettings& settings() const { return m_settings; }
@@ -45,6 +51,8 @@ class AppController : public QObject {
   void startNewSession(const QString& code);
   void showReview(qint64 sessionId);
   void showSettings();
+  /// The home window for the signed-in home account, in place of the main window.
+  void showHome();
   /// Saves s (and the theme) and applies what can change at once.
   void applySettings(const AppSettings& s, Theme theme);
   /// `--demo`: fresh demo records, signed in as the demo therapist, then the live session.
@@ -71,6 +79,8 @@ class AppController : public QObject {
   void settingsApplied();
   /// A live session screen was shown (and started).
   void liveSessionShown(QWidget* screen);
+  /// The home window was shown (a home account signed in).
+  void homeShown();
 
  private:
   void loadPlugins();
@@ -79,7 +89,7 @@ class AppController : public QObject {
   storage::DatabaseUrl databaseUrl() const;
   void onSignedIn(const storage::User& user);
   void showDatabaseProblem(const RecordsFailure& failure);
-  void showHomeModeLater();
+  void closeHome();
   storage::DatabaseUrl demoDatabaseUrl() const;
   void startDemoSession();
   /// --quit-when-live: quits (saving --screenshot) once screen has shown 2 s of estimates.
@@ -93,6 +103,7 @@ class AppController : public QObject {
   app::PluginRegistry m_plugins;
   std::unique_ptr<RecordsService> m_records;
   std::unique_ptr<MainWindow> m_window;
+  std::unique_ptr<home::HomeController> m_home;
 };
 
 }  // namespace armtrack::gui

@@ -42,6 +42,8 @@ QString appUsage() {
       "                  data folder chosen at the first start)\n"
       "  --demo          open a demo database (made afresh) as a demo therapist and start a\n"
       "                  live session with the virtual arm\n"
+      "  --home          with --demo: open the home window as the demo patient's home account\n"
+      "                  (two IMUs and a webcam, played by the virtual arm)\n"
       "  --plugins DIR   also look for device plugins in DIR (repeatable)\n"
       "  --lang CODE     language of the windows and reports: en, de or es (default: the\n"
       "                  settings' choice, else the system's)\n"
@@ -87,6 +89,8 @@ AppOptions parseAppOptions(const QStringList& arguments) {
       o.version = true;
     } else if (a == QLatin1String("--demo")) {
       o.demo = true;
+    } else if (a == QLatin1String("--home")) {
+      o.home = true;
     } else if (is("--db")) {
       valueOf(i, QStringLiteral("--db"), o.database);
     } else if (is("--plugins")) {
@@ -114,6 +118,9 @@ AppOptions parseAppOptions(const QStringList& arguments) {
       o.error = text("unknown option or argument '%1' (see armtrack --help)").arg(a);
     }
   }
+  if (o.error.isEmpty() && o.home && !o.demo)
+    o.error =
+        text("--home goes with --demo; a home account opens the home window when it signs in");
   if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0 && !o.quitWhenLive)
     o.error = text("--screenshot needs --quit-after or --quit-when-live");
   if (o.error.isEmpty() && !o.language.isEmpty() && i18n::shippedLanguageFor(o.language).isEmpty())
@@ -153,10 +160,9 @@ bool displayAvailable(QString* why, HeldDisplay* hold) {
     if (ok) return true;
     if (wayland) return true;  // Qt falls back to Wayland when X cannot be reached
     if (why)
-      *why =
-          text("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
-              .arg(QString::fromLocal8Bit(display)) +
-          howTo;
+      *why = text("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
+                 .arg(QString::fromLocal8Bit(display)) +
+             howTo;
     return false;
   }
   if (wayland) return true;

@@ -12,6 +12,7 @@ namespace armtrack::gui {
 struct AppOptions {
   QString database;             ///< --db URL (empty: the settings' or the default)
   bool demo = false;            ///< --demo
+  bool home = false;            ///< --home (with --demo): the demo home account's window
   QStringList pluginFolders;    ///< --plugins DIR, repeatable
   QString language;             ///< --lang CODE (empty: settings, else the system's)
   double quitAfterSeconds = 0;  ///< --quit-after S: quit after S seconds (0: never)

@@ -250,18 +250,20 @@ void PatientScreen::show(const PatientOverview& o, bool again) {
 
   m_programme->clear();
   m_programme->setHorizontalHeaderLabels(
-      {tr("Protocol"), tr("Angle"), tr("Target (\u00b0)"), tr("Per week")});
+      {tr("Protocol"), tr("Angle"), tr("Sets"), tr("Target (\u00b0)"), tr("Rest"),
+       tr("Per week")});
   for (const storage::ProgrammeItem& item : o.programme) {
-    QString angle, target;
+    QString angle, target, sets;
     for (const storage::Protocol& pr : o.protocols) {
       if (pr.name != item.protocolName) continue;
       angle = angleName(angleIndex(pr.angleKey));
-      target = QStringLiteral("%L1\u2013%L2")
-                   .arg(pr.targetMinDeg, 0, 'f', 0)
-                   .arg(pr.targetMaxDeg, 0, 'f', 0);
+      const auto [lo, hi] = storage::effectiveTarget(item, pr);
+      target = QStringLiteral("%L1\u2013%L2").arg(lo, 0, 'f', 0).arg(hi, 0, 'f', 0);
+      sets = tr("%L1 \u00d7 %L2").arg(item.sets).arg(storage::effectiveRepetitions(item, pr));
     }
     m_programme->appendRow({new QStandardItem(item.protocolName), new QStandardItem(angle),
-                            new QStandardItem(target),
+                            new QStandardItem(sets), new QStandardItem(target),
+                            new QStandardItem(tr("%L1 s").arg(item.restS, 0, 'f', 0)),
                             new QStandardItem(QLocale().toString(item.sessionsPerWeek))});
   }
   if (again) return;  // the chart, the sessions' table and the choices in them stay

@@ -1,8 +1,11 @@
 #include "app/gui/SessionTableModel.h"
 
 #include <QDateTime>
+#include <QJsonDocument>
 #include <QLocale>
 #include <cmath>
+
+#include "app/gui/services/HomeRecords.h"
 
 #include "ui/Retranslate.h"
 
@@ -31,6 +34,31 @@ QString SessionTableModel::statusText(const QString& status) {
   if (status == QLatin1String(storage::kStatusInterrupted)) return tr("interrupted");
   if (status == QLatin1String(storage::kStatusRecording)) return tr("recording");
   return status;
+}
+
+QString SessionTableModel::settingText(const QString& setting) {
+  if (setting == QLatin1String(storage::kSettingHome)) return tr("home");
+  if (setting == QLatin1String(storage::kSettingClinic)) return tr("clinic");
+  return setting;
+}
+
+QString SessionTableModel::patientText(const storage::SessionInfo& s) {
+  if (s.setting != QLatin1String(storage::kSettingHome)) return {};
+  QStringList parts;
+  if (const auto r = HomeExerciseResult::fromJson(
+          QJsonDocument::fromJson(s.homeSummaryJson.toUtf8()).object())) {
+    parts << (r->measured
+                  ? tr("%L1 of %L2 repetitions").arg(r->repetitions).arg(r->repetitionsPlanned)
+                  : tr("%L1 of %L2 sets (not measured)").arg(r->setsDone).arg(r->setsPlanned));
+    if (r->rangeMaxDeg)
+      parts << tr("reached %L1\u00b0 of %L2\u00b0")
+                   .arg(*r->rangeMaxDeg, 0, 'f', 0)
+                   .arg(r->targetMaxDeg, 0, 'f', 0);
+  }
+  if (s.painScore) parts << tr("pain %L1/10").arg(*s.painScore);
+  if (!s.patientComment.isEmpty())
+    parts << QStringLiteral("\u201c%1\u201d").arg(s.patientComment.section(u'\n', 0, 0));
+  return parts.join(QStringLiteral("; "));
 }
 
 QString SessionTableModel::durationText(double seconds) {
@@ -72,12 +100,16 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const {
       return localTime(s->startedAt);
     case Protocol:
       return s->protocolName.isEmpty() ? tr("(none)") : s->protocolName;
+    case Where:
+      return settingText(s->setting);
     case Duration:
       return durationText(s->durationS);
     case Status:
       return statusText(s->status);
     case Samples:
       return QLocale().toString(s->imuSamples);
+    case Patient:
+      return patientText(*s);
     case Notes:
       return s->notes.section(u'\n', 0, 0);
     default:
@@ -92,12 +124,16 @@ QVariant SessionTableModel::headerData(int section, Qt::Orientation orientation,
       return tr("Started");
     case Protocol:
       return tr("Protocol");
+    case Where:
+      return tr("Where");
     case Duration:
       return tr("Duration");
     case Status:
       return tr("Status");
     case Samples:
       return tr("IMU samples");
+    case Patient:
+      return tr("Patient's own account");
     case Notes:
       return tr("Notes");
     default:

@@ -1,4 +1,5 @@
-// A patient's sessions as a table: date, protocol, duration, status, samples, notes.
+// A patient's sessions as a table: date, protocol, where (clinic or home), duration, status,
+// samples, what the patient said and counted at home, notes.
 #pragma once
 
 #include <QAbstractTableModel>
@@ -11,7 +12,7 @@ namespace armtrack::gui {
 class SessionTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Started, Protocol, Duration, Status, Samples, Notes, ColumnCount };
+  enum Column { Started, Protocol, Where, Duration, Status, Samples, Patient, Notes, ColumnCount };
   static constexpr int IdRole = Qt::UserRole;  ///< the session id, on any column
 
   using QAbstractTableModel::QAbstractTableModel;
@@ -28,6 +29,11 @@ class SessionTableModel : public QAbstractTableModel {
 
   /// "complete", "interrupted", "recording" in words.
   static QString statusText(const QString& status);
+  /// "clinic" or "home" in words.
+  static QString settingText(const QString& setting);
+  /// A home session's repetitions, pain score and comment: "8 of 10 repetitions; pain 3/10;
+  /// \"stiff today\"" (empty for a clinic session).
+  static QString patientText(const storage::SessionInfo& s);
   /// Seconds as m:ss (or h:mm:ss).
   static QString durationText(double seconds);
   /// An ISO 8601 UTC time as the local date and time in the user's locale.

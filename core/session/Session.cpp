@@ -183,9 +183,10 @@ QString Session::start() {
         columns.camWrist = columns.camElbow = true;
         if (s.info.camera) m_params.meta.camera = s.info.camera;
         if (!m_params.meta.camera)
-          return QStringLiteral("the camera of %1 has no calibration; calibrate it "
-                                "(armtrack-cli camera-calibrate, camera-register) and pass the "
-                                "file to the device")
+          return QStringLiteral(
+                     "the camera of %1 has no calibration; calibrate it "
+                     "(armtrack-cli camera-calibrate, camera-register) and pass the "
+                     "file to the device")
               .arg(m_devices[static_cast<std::size_t>(s.device)].label);
         break;
       case StreamRole::Truth:
@@ -196,15 +197,17 @@ QString Session::start() {
   m_scale = m_devices.front().device->timeScale();
   for (const DeviceEntry& d : m_devices)
     if (d.device->timeScale() != m_scale)
-      return QStringLiteral("%1 runs at %2x and %3 at %4x: a replay faster than real time cannot "
-                            "be mixed with live devices")
+      return QStringLiteral(
+                 "%1 runs at %2x and %3 at %4x: a replay faster than real time cannot "
+                 "be mixed with live devices")
           .arg(m_devices.front().label)
           .arg(m_scale)
           .arg(d.label)
           .arg(d.device->timeScale());
   if (m_params.estimate && !imu)
-    return QStringLiteral("no IMU among the devices: the estimator needs the upper-arm or "
-                          "forearm IMU (or record without estimating)");
+    return QStringLiteral(
+        "no IMU among the devices: the estimator needs the upper-arm or "
+        "forearm IMU (or record without estimating)");
   {
     EstimatorParams e = recordingParams(m_params.meta);
     EstimatorParams p = m_params.estimator;
@@ -273,7 +276,8 @@ QString Session::start() {
 
 void Session::onSamples(int device, const SampleBatch& batch) {
   const int first = m_devices[static_cast<std::size_t>(device)].firstStream;
-  const int count = static_cast<int>(m_devices[static_cast<std::size_t>(device)].device->streams().size());
+  const int count =
+      static_cast<int>(m_devices[static_cast<std::size_t>(device)].device->streams().size());
   bool wake = false;
   std::uint64_t overflow = 0;
   {
@@ -367,6 +371,7 @@ void Session::workerLoop() {
         out.latency = lat;
         out.thStd = e.thStd;
         out.status = r;
+        out.headingFromStartPoseOnly = filter->headingFromStartPoseOnly();
         out.opticalElbow = std::exchange(pendingOptical.opticalElbow, std::nullopt);
         out.opticalWrist = std::exchange(pendingOptical.opticalWrist, std::nullopt);
         out.camElbow = std::exchange(pendingOptical.camElbow, std::nullopt);

@@ -32,8 +32,8 @@ struct SessionParams {
   RecordingMeta meta;
   /// Estimator settings; geometry, gravity and camera are taken from meta at start().
   EstimatorParams estimator;
-  bool estimate = true;                  ///< run the estimator (off: record raw data only)
-  std::filesystem::path recordingPath;   ///< CSV to record into; empty = no recording
+  bool estimate = true;                 ///< run the estimator (off: record raw data only)
+  std::filesystem::path recordingPath;  ///< CSV to record into; empty = no recording
   /// Replace a recording (CSV or sidecar) that already exists at recordingPath. Off (default):
   /// start() refuses, and claims the name atomically so a file appearing meanwhile is not lost.
   bool overwrite = false;
@@ -42,15 +42,15 @@ struct SessionParams {
   /// recorder's thread only. A RecordingError it throws fails start() with its message.
   std::function<std::unique_ptr<RecordingSink>(const RecordingMeta&, const RecordingColumns&)>
       openSink;
-  double latencyWindow = 0.010;          ///< s the synchroniser waits for late samples
-  double mergeWindow = 0.5e-3;           ///< s within which samples share one row
-  double workerPeriod = 0.002;           ///< s between synchroniser polls
-  std::size_t inputCapacity = 1 << 17;   ///< samples queued between devices and the worker
+  double latencyWindow = 0.010;            ///< s the synchroniser waits for late samples
+  double mergeWindow = 0.5e-3;             ///< s within which samples share one row
+  double workerPeriod = 0.002;             ///< s between synchroniser polls
+  std::size_t inputCapacity = 1 << 17;     ///< samples queued between devices and the worker
   std::size_t recorderCapacity = 1 << 17;  ///< rows queued between worker and recorder
-  std::size_t resultCapacity = 1 << 14;  ///< estimates kept for the GUI (oldest overwritten)
-  double flushInterval = 0.5;            ///< s between recorder flushes
-  double syncInterval = 5.0;             ///< s between fsyncs of the recording
-  std::size_t maxEvents = 1000;          ///< session messages kept until taken
+  std::size_t resultCapacity = 1 << 14;    ///< estimates kept for the GUI (oldest overwritten)
+  double flushInterval = 0.5;              ///< s between recorder flushes
+  double syncInterval = 5.0;               ///< s between fsyncs of the recording
+  std::size_t maxEvents = 1000;            ///< session messages kept until taken
   /// s of session time without a refused reading after which the estimator's refusals are
   /// summed up in one message (the first refusal is told at once).
   double refusalQuietSeconds = 0.5;
@@ -62,13 +62,16 @@ struct SessionParams {
 /// started, including rows whose readings were all refused (status Predicted) and rows where it
 /// re-initialised after losing the arm (status Recovered: the angles may jump there).
 struct EstimateRow {
-  double t = 0.0;                        ///< synchronised time (s since the session started)
-  JointVector th = JointVector::Zero();  ///< rad
-  std::optional<JointVector> truth;      ///< rad, simulated devices
-  double latency = 0.0;                  ///< s from the oldest sample's arrival to the estimate
+  double t = 0.0;                           ///< synchronised time (s since the session started)
+  JointVector th = JointVector::Zero();     ///< rad
+  std::optional<JointVector> truth;         ///< rad, simulated devices
+  double latency = 0.0;                     ///< s from the oldest sample's arrival to the estimate
   JointVector thStd = JointVector::Zero();  ///< 1-sigma uncertainty of th (rad)
   /// How the estimate came about: Accepted, Initialised, Predicted or Recovered.
   UpdateResult status = UpdateResult::Accepted;
+  /// No optical measurement has been fused for a while: the arm's heading about the vertical
+  /// rests on the start pose alone, so the shoulder's angles drift (JointEstimator's flag).
+  bool headingFromStartPoseOnly = false;
   /// The newest optical measurements that arrived since the previous estimate (rows without IMU
   /// data get no estimate of their own), for a view to draw beside the estimate: Kinect
   /// positions in the shoulder frame of the arm's side (m), webcam marker pixels.
@@ -97,15 +100,15 @@ struct StreamStats {
   std::string device;  ///< device label
   std::string stream;  ///< stream name
   StreamRole role = StreamRole::UpperArmImu;
-  double rateHz = 0.0;           ///< measured by the device
-  std::uint64_t published = 0;   ///< samples the device emitted
-  std::uint64_t received = 0;    ///< samples the worker took from the device
-  std::uint64_t rejected = 0;    ///< NaN/inf values, payloads not matching the role, bad times
-  std::uint64_t late = 0;        ///< arrived after later samples were processed (time clamped)
+  double rateHz = 0.0;              ///< measured by the device
+  std::uint64_t published = 0;      ///< samples the device emitted
+  std::uint64_t received = 0;       ///< samples the worker took from the device
+  std::uint64_t rejected = 0;       ///< NaN/inf values, payloads not matching the role, bad times
+  std::uint64_t late = 0;           ///< arrived after later samples were processed (time clamped)
   std::uint64_t deviceDropped = 0;  ///< samples the device reports lost on its link
   std::uint64_t deviceCorrupt = 0;  ///< packets the device rejected as malformed
-  double driftPpm = 0.0;         ///< device clock drift the synchroniser estimated
-  double jitterMs = 0.0;         ///< arrival jitter above the fastest delivery (ms)
+  double driftPpm = 0.0;            ///< device clock drift the synchroniser estimated
+  double jitterMs = 0.0;            ///< arrival jitter above the fastest delivery (ms)
 };
 
 struct SessionStats {
@@ -113,20 +116,20 @@ struct SessionStats {
   std::vector<StreamStats> streams;
   std::vector<DeviceState> deviceStates;
   std::vector<std::string> deviceLabels;
-  std::uint64_t inputOverflow = 0;   ///< samples lost because the input queue was full
-  std::uint64_t rows = 0;            ///< rows built from synchronised samples
-  std::uint64_t estimates = 0;       ///< estimates made
-  std::uint64_t rowsToRecord = 0;    ///< rows the recorder was given
+  std::uint64_t inputOverflow = 0;  ///< samples lost because the input queue was full
+  std::uint64_t rows = 0;           ///< rows built from synchronised samples
+  std::uint64_t estimates = 0;      ///< estimates made
+  std::uint64_t rowsToRecord = 0;   ///< rows the recorder was given
   /// Rows that reached the file (RecordingWriter::rowsWritten(): written, whether or not yet
   /// forced to disk). Below rowsToRecord while rows are buffered, or after a write failure.
   std::uint64_t recordedRows = 0;
-  std::uint64_t recorderWaits = 0;   ///< times the worker waited for a full recorder queue
+  std::uint64_t recorderWaits = 0;       ///< times the worker waited for a full recorder queue
   std::uint64_t resultsOverwritten = 0;  ///< GUI rows overwritten before being taken
-  std::size_t maxInputQueued = 0;    ///< most samples ever waiting for the worker
-  std::string recorderError;         ///< the newest recording failure, empty if none
+  std::size_t maxInputQueued = 0;        ///< most samples ever waiting for the worker
+  std::string recorderError;             ///< the newest recording failure, empty if none
   EstimatorCounters estimator;
-  LatencyHistogram latency;          ///< sample arrival to estimate
-  double workerCpuSeconds = 0.0;     ///< CPU time of the estimator worker thread
+  LatencyHistogram latency;       ///< sample arrival to estimate
+  double workerCpuSeconds = 0.0;  ///< CPU time of the estimator worker thread
   /// Samples lost anywhere between the devices and the recorder (input overflow + rejected);
   /// device link losses are counted apart, per stream.
   std::uint64_t lost() const;

@@ -272,8 +272,8 @@ JointMotion CalibrationProtocolTrajectory::at(double t) const {
 
 namespace {
 // Reaching postures (rad): anatomical ranges that keep th1 away from the +-90 deg gimbal lock.
-constexpr std::array<double, kNumJoints> kReachLow{-40 * kDeg, -20 * kDeg, -60 * kDeg,
-                                                   -120 * kDeg, -80 * kDeg};
+constexpr std::array<double, kNumJoints> kReachLow{-40 * kDeg, -20 * kDeg, -60 * kDeg, -120 * kDeg,
+                                                   -80 * kDeg};
 constexpr std::array<double, kNumJoints> kReachHigh{120 * kDeg, 80 * kDeg, 60 * kDeg, 0.0,
                                                     80 * kDeg};
 constexpr double kMinReach = 60 * kDeg;  // the largest joint change of every move
@@ -302,7 +302,8 @@ ReachingTrajectory::ReachingTrajectory(std::uint64_t seed, double peakRate, doub
     JointVector next = posture();
     while ((next - m_path.lastPosture()).cwiseAbs().maxCoeff() < kMinReach) next = posture();
     const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
-    const double seconds = std::max(1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel));
+    const double seconds =
+        std::max(1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel));
     m_path.add(m_path.endTime() + seconds, next);
     m_path.hold(pause(rng));
   }
@@ -313,7 +314,8 @@ JointMotion ReachingTrajectory::at(double t) const {
 }
 
 std::vector<std::string> trajectoryNames() {
-  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration", "reaching"};
+  return {"sinusoid", "multi-joint",  "shoulder-wheel", "calibration",
+          "reaching", "sensor-check", "exercise"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
@@ -330,6 +332,8 @@ std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const Trajec
   if (name == "shoulder-wheel")
     return std::make_unique<ShoulderWheelTrajectory>(opts.geometry, opts.wheelPeriod);
   if (name == "calibration") return std::make_unique<CalibrationProtocolTrajectory>();
+  if (name == "sensor-check") return std::make_unique<SensorCheckTrajectory>();
+  if (name == "exercise") return std::make_unique<ExerciseTrajectory>(opts.exercise);
   if (name == "reaching")
     return std::make_unique<ReachingTrajectory>(opts.seed, opts.peakRate, opts.peakAccel,
                                                 opts.duration);

@@ -137,22 +137,73 @@ class ReachingTrajectory final : public Trajectory {
   MinimumJerkPath m_path;
 };
 
+/// The sensor check before a home session (core/calibration/SensorCheck.h): the arm hangs still,
+/// elbow straight, for restSeconds(), then the elbow bends to 100 deg and straightens
+/// bends() times, each bend bendSeconds() long (minimum jerk), then the arm hangs still again
+/// until duration(). Only the elbow moves, so the forearm's gyroscope sees it and the upper
+/// arm's does not.
+class SensorCheckTrajectory final : public Trajectory {
+ public:
+  SensorCheckTrajectory();
+  JointMotion at(double t) const override;
+  static constexpr double restSeconds() { return 3.0; }
+  static constexpr double bendSeconds() { return 3.0; }
+  static constexpr int bends() { return 3; }
+  static constexpr double bendDeg() { return 100.0; }
+  static constexpr double duration() { return restSeconds() + bends() * bendSeconds() + 1.0; }
+
+ private:
+  MinimumJerkPath m_path;
+};
+
+/// One exercise repeated as a patient at home would do it: one clinical angle goes from fromDeg
+/// to toDeg and back (minimum jerk, periodSeconds per repetition), with a pause at rest between
+/// repetitions, the other angles held in a posture that suits the exercise (the elbow at 90 deg
+/// for forearm rotation, almost straight otherwise). Faults a home window must notice can be
+/// put in: compensationDeg makes another angle move with each repetition (the elbow for a
+/// shoulder exercise, shoulder flexion for an elbow or forearm one).
+struct ExerciseMotion {
+  int angle = 3;               ///< clinical angle index (clinicalAngleInfo() order): elbow flexion
+  double fromDeg = 20;         ///< rest (clinical degrees)
+  double toDeg = 120;          ///< top of each repetition
+  double periodSeconds = 4.0;  ///< up and down, s (> 0)
+  double pauseSeconds = 1.0;   ///< at rest between repetitions, s (>= 0)
+  double startSeconds = 1.0;   ///< still at rest before the first repetition, s (>= 0)
+  double compensationDeg = 0;  ///< another angle's excursion with each repetition (deg)
+};
+
+class ExerciseTrajectory final : public Trajectory {
+ public:
+  /// Throws std::invalid_argument for an angle outside 0-4, a non-finite value, a period <= 0 or
+  /// a negative pause or start.
+  explicit ExerciseTrajectory(const ExerciseMotion& motion);
+  JointMotion at(double t) const override;
+  /// The clinical angle (index) that compensationDeg moves for this exercise.
+  static int compensatingAngle(int exerciseAngle);
+
+ private:
+  ExerciseMotion m_motion;
+  MinimumJerkPath m_cycle;  // one repetition and its pause, from time 0
+  double m_cycleSeconds;
+};
+
 struct TrajectoryOptions {
   std::uint64_t seed = 1;
-  JointVector amplitude = JointVector::Constant(0.5);  ///< sinusoid: rad
-  JointVector frequency = JointVector::Constant(0.5);  ///< sinusoid: Hz
-  JointVector offset = JointVector::Zero();            ///< sinusoid: rad
-  double maxFrequencyHz = 0.8;                         ///< multi-joint
-  double amplitudeScale = 1.0;                         ///< multi-joint
-  double wheelPeriod = 4.0;                            ///< shoulder wheel: s per turn
+  JointVector amplitude = JointVector::Constant(0.5);    ///< sinusoid: rad
+  JointVector frequency = JointVector::Constant(0.5);    ///< sinusoid: Hz
+  JointVector offset = JointVector::Zero();              ///< sinusoid: rad
+  double maxFrequencyHz = 0.8;                           ///< multi-joint
+  double amplitudeScale = 1.0;                           ///< multi-joint
+  double wheelPeriod = 4.0;                              ///< shoulder wheel: s per turn
   double peakRate = 420.0 * std::numbers::pi / 180.0;    ///< reaching: rad/s
   double peakAccel = 4000.0 * std::numbers::pi / 180.0;  ///< reaching: rad/s^2
-  double duration = 600.0;  ///< reaching: s of planned moves
-  ArmGeometry geometry;                                ///< shoulder wheel
+  double duration = 600.0;                               ///< reaching: s of planned moves
+  ArmGeometry geometry;                                  ///< shoulder wheel
+  ExerciseMotion exercise;                               ///< exercise
 };
 
 /// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol),
-/// "reaching".
+/// "reaching", "sensor-check" (SensorCheckTrajectory), "exercise" (ExerciseTrajectory).
 /// Throws std::invalid_argument otherwise.
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts);
 std::vector<std::string> trajectoryNames();

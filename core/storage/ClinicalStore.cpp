@@ -375,51 +375,6 @@ void ClinicalStore::removeProtocol(const QString& name) {
   });
 }
 
-void ClinicalStore::assignProtocol(const QString& patientCode, const QString& protocolName,
-                                   int sessionsPerWeek, const QString& notes) {
-  require(isStaff(), "change home programmes");
-  if (sessionsPerWeek < 0) throw StorageError(Kind::Usage, "sessions per week must be >= 0");
-  const qint64 patientId = visiblePatientId(patientCode);
-  const qint64 protocolId = protocol(protocolName).id;
-  m_db.transaction([&] {
-    m_db.exec("DELETE FROM programmes WHERE patient_id = ? AND protocol_id = ?",
-              {patientId, protocolId});
-    m_db.exec(
-        "INSERT INTO programmes (patient_id, protocol_id, sessions_per_week, notes, "
-        "created_at) VALUES (?, ?, ?, ?, ?)",
-        {patientId, protocolId, sessionsPerWeek, notes, utcNow()});
-    audit("update", "programme", patientCode, "assign " + protocolName);
-  });
-}
-
-void ClinicalStore::unassignProtocol(const QString& patientCode, const QString& protocolName) {
-  require(isStaff(), "change home programmes");
-  const qint64 patientId = visiblePatientId(patientCode);
-  const qint64 protocolId = protocol(protocolName).id;
-  m_db.transaction([&] {
-    if (m_db.exec("DELETE FROM programmes WHERE patient_id = ? AND protocol_id = ?",
-                  {patientId, protocolId})
-            .numRowsAffected() == 0)
-      throw StorageError(
-          Kind::NotFound,
-          text("protocol '" + protocolName + "' is not in the programme of '" + patientCode + "'"));
-    audit("update", "programme", patientCode, "remove " + protocolName);
-  });
-}
-
-std::vector<ProgrammeItem> ClinicalStore::programme(const QString& patientCode) {
-  const qint64 patientId = visiblePatientId(patientCode);
-  std::vector<ProgrammeItem> items;
-  QSqlQuery q = m_db.exec(
-      "SELECT pr.name, g.sessions_per_week, g.notes FROM programmes g JOIN "
-      "protocols pr ON pr.id = g.protocol_id WHERE g.patient_id = ? ORDER BY "
-      "pr.name",
-      {patientId});
-  while (q.next())
-    items.push_back({q.value(0).toString(), q.value(1).toInt(), q.value(2).toString()});
-  return items;
-}
-
 std::vector<AuditEntry> ClinicalStore::auditLog() {
   require(user().role == Role::Admin, "read the audit log");
   std::vector<AuditEntry> log;

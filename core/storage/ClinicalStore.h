@@ -58,14 +58,31 @@ class ClinicalStore {
   void updateProtocol(const Protocol& protocol);  ///< by name
   void removeProtocol(const QString& name);
 
-  // Home programmes (assign/remove: administrators and therapists; read: as the patient).
+  // Home programmes (ClinicalStoreProgrammes.cpp; change: administrators and therapists; read:
+  // as the patient).
+  /// Puts the protocol in the patient's programme with sessions per week and notes, its other
+  /// values at their defaults (one set, the protocol's repetitions and target, 60 s rest). An
+  /// entry for the same protocol is replaced and keeps its place.
   void assignProtocol(const QString& patientCode, const QString& protocolName, int sessionsPerWeek,
                       const QString& notes = {});
+  /// Puts item's protocol in the patient's programme as an exercise, replacing the entry for the
+  /// same protocol. item.position 0 puts it after the last; another position puts it there and
+  /// moves the later ones down (positions stay 1, 2, ...). Throws StorageError(Usage) for a value
+  /// out of range (ProgrammeItem says which), NotFound for an unknown patient or protocol.
+  void setProgrammeExercise(const QString& patientCode, const ProgrammeItem& item);
   void unassignProtocol(const QString& patientCode, const QString& protocolName);
+  /// The programme in its order.
   std::vector<ProgrammeItem> programme(const QString& patientCode);
+  /// The patient's own outcome of a home session: the pain score (0-10, or none), a comment (at
+  /// most 2000 characters) and the summary of what the home window counted (a JSON object,
+  /// docs/storage.md). Only a home account writes it, for its own patient's home sessions: the
+  /// words are the patient's. Throws AccessDenied, NotFound, Usage.
+  void saveHomeOutcome(qint64 sessionId, std::optional<int> painScore, const QString& comment,
+                       const QString& summaryJson);
 
   // Sessions and recordings (ClinicalStoreSessions.cpp).
-  /// Starts a session in status "recording" owned by this process. calibrationJson is the
+  /// Starts a session in status "recording" owned by this process, marked as recorded at home when
+  /// a home account begins it (kSettingHome), else at the clinic. calibrationJson is the
   /// recording's sidecar text; settings says what it is recorded with (StorageError(Usage) when
   /// either is not a JSON object).
   qint64 beginSession(const QString& patientCode, const QString& protocolName,
@@ -121,6 +138,7 @@ class ClinicalStore {
   SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones
   std::optional<qint64> protocolId(const QString& name);
   int markDeadRecordingsInterrupted();
+  void renumberProgramme(qint64 patientId);  // positions 1, 2, ... in their order; in a transaction
 
   Database& m_db;
   std::optional<User> m_user;

@@ -114,12 +114,12 @@ qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& pr
   m_db.transaction([&] {
     id = m_db.insert(
         "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, devices_json, "
-        "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?)",
+        "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid, "
+        "setting) VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?, ?)",
         {patientId, isStaff() ? QVariant(user().id) : QVariant(),
          protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
          calibrationJson, settings.filterJson, columnsMask, QSysInfo::machineHostName(),
-         static_cast<qint64>(::getpid())});
+         static_cast<qint64>(::getpid()), isStaff() ? kSettingClinic : kSettingHome});
     audit("create", "session", QString::number(id), "patient " + patientCode);
   });
   return id;
@@ -201,7 +201,8 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
   QSqlQuery q = m_db.exec(
       "SELECT s.id, s.patient_id, p.code, s.therapist_id, pr.name, s.started_at, s.duration_s, "
       "s.devices_json, s.calibration_json, s.filter_json, s.notes, s.status, s.columns_mask, "
-      "s.sample_rows, s.imu_samples FROM sessions s JOIN patients p ON p.id = s.patient_id "
+      "s.sample_rows, s.imu_samples, s.setting, s.pain_score, s.patient_comment, "
+      "s.home_summary_json FROM sessions s JOIN patients p ON p.id = s.patient_id "
       "LEFT JOIN protocols pr ON pr.id = s.protocol_id WHERE s.id = ?",
       {sessionId});
   const bool found = q.next();
@@ -224,6 +225,10 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
   s.columnsMask = q.value(12).toInt();
   s.sampleRows = q.value(13).toLongLong();
   s.imuSamples = q.value(14).toLongLong();
+  s.setting = q.value(15).toString();
+  if (!q.value(16).isNull()) s.painScore = q.value(16).toInt();
+  s.patientComment = q.value(17).toString();
+  s.homeSummaryJson = q.value(18).toString();
   q.finish();
   QSqlQuery c = m_db.exec(
       "SELECT count(*), coalesce(sum(length(data)), 0) FROM recording_chunks "

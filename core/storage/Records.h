@@ -5,6 +5,7 @@
 #include <QString>
 #include <cstdint>
 #include <optional>
+#include <utility>
 
 namespace armtrack::storage {
 
@@ -42,12 +43,34 @@ struct Protocol {
   QString side = "either";  ///< "left", "right" or "either"
 };
 
-/// One protocol of a patient's home programme.
+/// One exercise of a patient's home programme: a protocol (the movement and its angle), how
+/// often, in what order, and how much (docs/storage.md, "Home programmes").
 struct ProgrammeItem {
   QString protocolName;
   int sessionsPerWeek = 0;
   QString notes;
+  int position = 0;  ///< order in the programme, from 1; 0 when adding: after the last
+  int sets = 1;      ///< 1-20
+  std::optional<int> repetitions;      ///< per set, 1-200; empty: the protocol's
+  std::optional<double> targetMinDeg;  ///< deg; both or neither; empty: the protocol's range
+  std::optional<double> targetMaxDeg;  ///< deg
+  double restS = 60;                   ///< s of rest between sets, 0-3600
 };
+
+/// The repetitions per set an exercise asks for: its own, else its protocol's.
+inline int effectiveRepetitions(const ProgrammeItem& item, const Protocol& protocol) {
+  return item.repetitions.value_or(protocol.repetitions);
+}
+/// The target range (deg) of an exercise's angle: its own, else its protocol's.
+inline std::pair<double, double> effectiveTarget(const ProgrammeItem& item,
+                                                 const Protocol& protocol) {
+  if (item.targetMinDeg && item.targetMaxDeg) return {*item.targetMinDeg, *item.targetMaxDeg};
+  return {protocol.targetMinDeg, protocol.targetMaxDeg};
+}
+
+/// Where a session was recorded: "clinic" (by a therapist) or "home" (by a home account).
+inline constexpr const char* kSettingClinic = "clinic";
+inline constexpr const char* kSettingHome = "home";
 
 /// Status of a session's recording.
 inline constexpr const char* kStatusRecording = "recording";
@@ -77,7 +100,11 @@ struct SessionInfo {
   qint64 sampleRows = 0;  ///< rows stored
   qint64 imuSamples = 0;  ///< rows that carry an IMU reading
   qint64 chunks = 0;
-  qint64 storedBytes = 0;  ///< compressed chunk bytes
+  qint64 storedBytes = 0;            ///< compressed chunk bytes
+  QString setting = kSettingClinic;  ///< kSettingClinic or kSettingHome
+  std::optional<int> painScore;      ///< 0-10, the patient's own, home sessions
+  QString patientComment;            ///< the patient's own words, home sessions
+  QString homeSummaryJson = "{}";    ///< what the home window counted (docs/storage.md)
 };
 
 /// One stored version of a session's estimates (docs/storage.md, "Estimates").

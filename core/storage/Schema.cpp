@@ -131,6 +131,28 @@ const std::vector<MigrationStep>& migrationSteps() {
            " created_at TEXT NOT NULL,"
            " UNIQUE (patient_id, protocol_id))",
        }},
+      {4,
+       "home exercises: each programme entry's order, sets, repetitions, target range and rest; "
+       "sessions marked clinic or home, with the patient's pain score, comment and summary",
+       {
+           "ALTER TABLE programmes ADD COLUMN position INTEGER NOT NULL DEFAULT 0",
+           "ALTER TABLE programmes ADD COLUMN sets INTEGER NOT NULL DEFAULT 1 CHECK (sets >= 1)",
+           // NULL: the protocol's own repetitions and target range.
+           "ALTER TABLE programmes ADD COLUMN repetitions INTEGER CHECK (repetitions >= 1)",
+           "ALTER TABLE programmes ADD COLUMN target_min_deg DOUBLE PRECISION",
+           "ALTER TABLE programmes ADD COLUMN target_max_deg DOUBLE PRECISION",
+           "ALTER TABLE programmes ADD COLUMN rest_s DOUBLE PRECISION NOT NULL DEFAULT 60 "
+           "CHECK (rest_s >= 0)",
+           // Entries made before keep the order they were made in: 1, 2, ... per patient.
+           "UPDATE programmes SET position = (SELECT count(*) FROM programmes p2 WHERE "
+           "p2.patient_id = programmes.patient_id AND p2.id <= programmes.id)",
+           "ALTER TABLE sessions ADD COLUMN setting TEXT NOT NULL DEFAULT 'clinic' "
+           "CHECK (setting IN ('clinic', 'home'))",
+           "ALTER TABLE sessions ADD COLUMN pain_score INTEGER "
+           "CHECK (pain_score >= 0 AND pain_score <= 10)",
+           "ALTER TABLE sessions ADD COLUMN patient_comment TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE sessions ADD COLUMN home_summary_json TEXT NOT NULL DEFAULT '{}'",
+       }},
   };
   return steps;
 }

@@ -1,8 +1,12 @@
 #include "devices/virtual_arm/VirtualArmPlugin.h"
 
+#include <Eigen/Geometry>
+#include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
+#include "core/kinematics/ClinicalAngles.h"
 #include "devices/api/Options.h"
 #include "devices/virtual_arm/VirtualArmDevice.h"
 
@@ -15,7 +19,14 @@ QString VirtualArmPlugin::description() const {
 QString VirtualArmPlugin::optionsHelp() const {
   return QStringLiteral(
       "sensors=upper+forearm+kinect  any of upper, forearm, kinect, webcam joined by '+'\n"
-      "trajectory=multi-joint        sinusoid, multi-joint, shoulder-wheel or calibration\n"
+      "trajectory=multi-joint        sinusoid, multi-joint, shoulder-wheel, calibration,\n"
+      "                              reaching, sensor-check or exercise\n"
+      "exercise=elbow_flexion        trajectory=exercise: the clinical angle repeated\n"
+      "exercise-range=20:120         deg, from rest to the top of each repetition\n"
+      "exercise-period=4             s per repetition (up and down)\n"
+      "exercise-pause=1              s at rest between repetitions\n"
+      "exercise-start=1              s at rest before the first\n"
+      "exercise-compensation=0       deg another joint moves with each repetition\n"
       "seed=1                        noise and trajectory seed\n"
       "imu-rate=1000                 Hz, both IMUs\n"
       "kinect-rate=30                Hz\n"
@@ -34,7 +45,10 @@ QString VirtualArmPlugin::optionsHelp() const {
       "saturate=STREAM@START+SECONDS IMU readings at full scale (2000 deg/s, 16 g)\n"
       "zeros=STREAM@START+SECONDS    readings of exactly zero\n"
       "corrupt=0                     probability that an IMU sample carries NaN\n"
-      "drift=0                       IMU clock rate error, ppm");
+      "drift=0                       IMU clock rate error, ppm\n"
+      "Wearing faults:\n"
+      "swap-imus=off                 each IMU on the other's segment (readings exchanged)\n"
+      "upside-down=                  upper, forearm or both: strapped end over end");
 }
 
 std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QString* error) {
@@ -63,8 +77,45 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   const QString zeros = o.text(QStringLiteral("zeros"));
   p.faults.corruptProbability = o.number(QStringLiteral("corrupt"), 0.0, 0.0, 1.0);
   p.faults.driftPpm = o.number(QStringLiteral("drift"), 0.0, -1000.0, 1000.0);
+  p.swapImus = o.flag(QStringLiteral("swap-imus"), false);
+  const QString upsideDown = o.text(QStringLiteral("upside-down"));
+  const QString exercise = o.text(QStringLiteral("exercise"), QStringLiteral("elbow_flexion"));
+  const QString range = o.text(QStringLiteral("exercise-range"), QStringLiteral("20:120"));
+  ExerciseMotion& motion = p.trajectoryOptions.exercise;
+  motion.periodSeconds = o.number(QStringLiteral("exercise-period"), 4.0, 0.2, 600.0);
+  motion.pauseSeconds = o.number(QStringLiteral("exercise-pause"), 1.0, 0.0, 600.0);
+  motion.startSeconds = o.number(QStringLiteral("exercise-start"), 1.0, 0.0, 600.0);
+  motion.compensationDeg = o.number(QStringLiteral("exercise-compensation"), 0.0, -90.0, 90.0);
   QStringList problems;
   if (!o.error().isEmpty()) problems << o.error();
+  motion.angle = -1;
+  QStringList keys;
+  for (std::size_t i = 0; i < clinicalAngleInfo().size(); ++i) {
+    const std::string_view key = clinicalAngleInfo()[i].key;
+    keys << QString::fromLatin1(key.data(), static_cast<qsizetype>(key.size()));
+    if (keys.back() == exercise) motion.angle = static_cast<int>(i);
+  }
+  if (motion.angle < 0)
+    problems << QStringLiteral("exercise=%1 is not a clinical angle (use %2)")
+                    .arg(exercise, keys.join(QStringLiteral(", ")));
+  const QStringList ends = range.split(u':');
+  bool lowOk = false, highOk = false;
+  if (ends.size() == 2) {
+    motion.fromDeg = ends[0].toDouble(&lowOk);
+    motion.toDeg = ends[1].toDouble(&highOk);
+  }
+  if (!lowOk || !highOk || std::abs(motion.fromDeg) > 360 || std::abs(motion.toDeg) > 360)
+    problems
+        << QStringLiteral("exercise-range=%1: write FROM:TO in degrees, e.g. 20:120").arg(range);
+  // End over end: half a turn about the sensor's z axis, across the segment (the long axis is
+  // the sensor's y in the arm model's mounting, whatever the strap's angle around the arm).
+  const Eigen::Matrix3d flipped =
+      Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  if (upsideDown == u"upper" || upsideDown == u"both") p.sim.upperArm.misalignment = flipped;
+  if (upsideDown == u"forearm" || upsideDown == u"both") p.sim.forearm.misalignment = flipped;
+  if (!upsideDown.isEmpty() && upsideDown != u"upper" && upsideDown != u"forearm" &&
+      upsideDown != u"both")
+    problems << QStringLiteral("upside-down=%1: use upper, forearm or both").arg(upsideDown);
 
   p.sim.upperArm.enabled = sensors.contains(QStringLiteral("upper"));
   p.sim.forearm.enabled = sensors.contains(QStringLiteral("forearm"));
@@ -72,8 +123,9 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.sim.webcam.enabled = sensors.contains(QStringLiteral("webcam"));
   for (const QString& s : sensors)
     if (s != u"upper" && s != u"forearm" && s != u"kinect" && s != u"webcam")
-      problems << QStringLiteral("unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
-                                 "webcam joined by '+')")
+      problems << QStringLiteral(
+                      "unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
+                      "webcam joined by '+')")
                       .arg(s);
   for (ImuSimParams* imu : {&p.sim.upperArm, &p.sim.forearm}) {
     imu->rateHz = imuRate;

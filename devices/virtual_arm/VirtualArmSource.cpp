@@ -28,8 +28,7 @@ double number(const std::string& s, const std::string& what) {
     used = 0;
   }
   if (used == 0 || used != s.size() || !std::isfinite(v))
-    throw std::invalid_argument("'" + what + "' is not a valid fault: '" + s +
-                                "' is not a number");
+    throw std::invalid_argument("'" + what + "' is not a valid fault: '" + s + "' is not a number");
   return v;
 }
 
@@ -219,11 +218,10 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
       dropping = dropping || (d.stream == m_streams[i].name && d.window.contains(t));
     if (dropping != m_inDropout[i]) {
       m_inDropout[i] = dropping;
-      events.push_back({dropping ? SourceEventKind::DropoutStart : SourceEventKind::DropoutEnd, t,
-                        k,
-                        "virtual arm: " + m_streams[i].name +
-                            (dropping ? " dropped out at " : " back at ") + seconds(t) +
-                            (dropping ? " (injected)" : "")});
+      events.push_back(
+          {dropping ? SourceEventKind::DropoutStart : SourceEventKind::DropoutEnd, t, k,
+           "virtual arm: " + m_streams[i].name + (dropping ? " dropped out at " : " back at ") +
+               seconds(t) + (dropping ? " (injected)" : "")});
     }
     if (gone || dropping) {
       if (role != StreamRole::Truth) ++m_dropped[i];
@@ -244,8 +242,10 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
   };
 
   const double imuT = imuClock(t);
-  if (row.upperArm) deliver(StreamRole::UpperArmImu, imuT, *row.upperArm);
-  if (row.forearm) deliver(StreamRole::ForearmImu, imuT, *row.forearm);
+  const std::optional<ImuReading>& upper = m_p.swapImus ? row.forearm : row.upperArm;
+  const std::optional<ImuReading>& forearm = m_p.swapImus ? row.upperArm : row.forearm;
+  if (upper) deliver(StreamRole::UpperArmImu, imuT, *upper);
+  if (forearm) deliver(StreamRole::ForearmImu, imuT, *forearm);
   if (row.elbow || row.wrist)
     deliver(StreamRole::Optical, t, OpticalPositions{row.elbow, row.wrist});
   if (row.camWrist || row.camElbow)

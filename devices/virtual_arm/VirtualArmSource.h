@@ -55,10 +55,10 @@ struct Faults {
   std::vector<Spike> spikes;              ///< single samples of absurd values
   std::vector<StreamWindow> saturations;  ///< IMU readings at full scale for a while
   std::vector<StreamWindow> zeros;        ///< readings of exactly zero for a while
-  std::vector<Window> disappear;  ///< the whole device goes away and comes back
-  bool restartClock = false;      ///< after coming back, the IMU clock restarts from 0
-  std::vector<Window> stalls;     ///< the link holds everything, then delivers it in one burst
-  std::vector<ClockJump> jumps;   ///< steps of the IMU clock
+  std::vector<Window> disappear;          ///< the whole device goes away and comes back
+  bool restartClock = false;              ///< after coming back, the IMU clock restarts from 0
+  std::vector<Window> stalls;       ///< the link holds everything, then delivers it in one burst
+  std::vector<ClockJump> jumps;     ///< steps of the IMU clock
   double corruptProbability = 0.0;  ///< chance that an IMU sample carries NaN
   double driftPpm = 0.0;            ///< IMU clock rate error (ppm; positive runs fast)
 
@@ -82,6 +82,9 @@ struct VirtualArmParams {
   std::string trajectory = "multi-joint";
   TrajectoryOptions trajectoryOptions;
   bool truth = true;  ///< a Truth stream beside the IMUs
+  /// The two IMUs' readings exchanged, as when each sensor is strapped on the other's segment
+  /// (the home window's sensor check must find it).
+  bool swapImus = false;
   Faults faults;
 };
 
@@ -112,9 +115,9 @@ enum class SourceEventKind {
 
 struct SourceEvent {
   SourceEventKind kind = SourceEventKind::LinkLost;
-  double t = 0.0;      ///< simulated time (s)
-  int stream = -1;     ///< for dropouts
-  std::string text;    ///< what to tell the user
+  double t = 0.0;    ///< simulated time (s)
+  int stream = -1;   ///< for dropouts
+  std::string text;  ///< what to tell the user
 };
 
 /// Steps the simulation. Not thread-safe.
@@ -163,8 +166,8 @@ class VirtualArmSource {
   std::vector<bool> m_spikeDone;      // per spike
   std::vector<VirtualSample> m_held;  // samples held by a stall
   bool m_linkUp = true, m_stalled = false, m_finished = false;
-  double m_clockBase = 0.0;    // simulated time at which the IMU clock reads 0
-  double m_jumpOffset = 0.0;   // s added by the clock jumps so far
+  double m_clockBase = 0.0;   // simulated time at which the IMU clock reads 0
+  double m_jumpOffset = 0.0;  // s added by the clock jumps so far
   std::size_t m_nextJump = 0;
   std::mt19937_64 m_rng;
 };

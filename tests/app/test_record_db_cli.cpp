@@ -200,6 +200,43 @@ TEST_P(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
   EXPECT_EQ(exp.code, 0) << exp.err;  // every stored chunk decodes
 }
 
+// A home account's recording (what the home window makes, through the same sink) is marked as
+// recorded at home, and a kill keeps it up to the last second, marked interrupted.
+TEST_P(RecordDb, AHomeAccountsRecordingIsMarkedHomeAndKeptWhenKilled) {
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  const Result add = run({"user", "add", "home1", "--role", "home", "--patient", "P01"});
+  ::unsetenv("ARMTRACK_NEW_PASSWORD");
+  ASSERT_EQ(add.code, 0) << add.err;
+  QStringList args = recordArgs("20");
+  args[args.indexOf("boss")] = "home1";
+  QProcess p;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.insert("ARMTRACK_PASSWORD", "home-pass");
+  p.setProcessEnvironment(env);
+  p.start(ARMTRACK_CLI, args);
+  ASSERT_TRUE(p.waitForStarted());
+  const std::string id = waitForSessionLine(p);
+  ASSERT_FALSE(id.empty()) << p.readAllStandardError().toStdString();
+  const double seen = waitForChunksTo(p, id, 2.0);
+  ASSERT_GE(seen, 2.0) << p.readAllStandardError().toStdString();
+  p.kill();
+  ASSERT_TRUE(p.waitForFinished());
+  const QJsonObject s = show(id);
+  EXPECT_EQ(s["status"].toString(), "interrupted");
+  EXPECT_EQ(s["setting"].toString(), "home");
+  EXPECT_TRUE(s["pain_score"].isNull());
+  const auto spans = chunks(id);
+  ASSERT_FALSE(spans.empty());
+  EXPECT_GE(spans.back().second, seen);
+  // A therapist's recording is marked clinic.
+  QProcess q;
+  q.start(ARMTRACK_CLI, recordArgs("1"));
+  ASSERT_TRUE(q.waitForFinished(60000));
+  const std::string out = q.readAllStandardOutput().toStdString();
+  ASSERT_EQ(q.exitCode(), 0) << out;
+  EXPECT_EQ(show(out.substr(8, out.find('\n') - 8))["setting"].toString(), "clinic");
+}
+
 // SQLite: the file size limit stands in for a full disk (writes past it fail with EFBIG; the
 // signal it would raise is ignored, as a full disk raises none). PostgreSQL: the server refuses
 // the chunks' inserts from the third second on, as it refuses them when its disk is full ("could

@@ -21,85 +21,17 @@
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
-#include "tests/support/DatabaseEngines.h"
+#include "tests/app/CliTestSupport.h"
 
 namespace fs = std::filesystem;
 using armtrack::cli::runCli;
 using armtrack::test::Engine;
 
+using armtrack::cli::test::CliFixture;
+using armtrack::cli::test::kAdminPass;
+using armtrack::cli::test::Result;
+
 namespace {
-
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-constexpr const char* kAdminPass = "admin-pass-1";
-
-// The commands against a database of either engine: a SQLite file, or a database on the shared
-// PostgreSQL test server (tests/support/DatabaseEngines.h; the tests fail with the reason when
-// the server cannot start).
-class CliFixture : public ::testing::Test {
- protected:
-  void init(Engine engine) {
-    ASSERT_TRUE(m_dir.isValid());
-    m_engine = engine;
-    m_db = armtrack::test::newDatabase(engine, m_dir, "clinic").toStdString();
-    ::setenv("ARMTRACK_PASSWORD", kAdminPass, 1);
-    const Result r = run({"db", "init", "--admin", "boss"}, nullptr);
-    ASSERT_EQ(r.code, 0) << r.err;
-  }
-  void TearDown() override {
-    ::unsetenv("ARMTRACK_PASSWORD");
-    ::unsetenv("ARMTRACK_NEW_PASSWORD");
-  }
-  // Runs the tool with --db appended, signed in as user (nullptr: no --user) with password.
-  Result run(std::vector<std::string> args, const char* user = "boss",
-             const char* password = kAdminPass) {
-    args.push_back("--db");
-    args.push_back(m_db);
-    if (user) {
-      args.push_back("--user");
-      args.push_back(user);
-      ::setenv("ARMTRACK_PASSWORD", password, 1);
-    }
-    std::ostringstream out, err;
-    const int code = runCli(args, out, err);
-    return {code, out.str(), err.str()};
-  }
-  std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
-  std::string simulate(const char* name, double seconds) {
-    armtrack::SimulationParams sim;
-    sim.duration = seconds;
-    armtrack::TrajectoryOptions options;
-    const auto trajectory = armtrack::makeTrajectory("multi-joint", options);
-    armtrack::writeRecording(path(name), armtrack::simulateRecording(*trajectory, sim));
-    return path(name);
-  }
-  std::string importFor(const char* patient, const std::string& csv) {
-    const Result r = run({"session", "import", csv, "--patient", patient});
-    EXPECT_EQ(r.code, 0) << r.err;
-    return r.out.substr(0, r.out.find('\n'));
-  }
-  void addPatients() {
-    for (const char* code : {"P01", "P02"}) {
-      const Result r = run({"patient", "add", "--code", code, "--name", std::string("Name ") + code,
-                            "--birth", "1958-03-04", "--sex", "m", "--side", "left"});
-      ASSERT_EQ(r.code, 0) << r.err;
-    }
-  }
-  /// Plain SQL on the database, outside the CLI.
-  void sql(const QStringList& statements) {
-    armtrack::test::rawSql(QString::fromStdString(m_db), statements);
-  }
-  std::vector<QVariantList> query(const QString& sql) {
-    return armtrack::test::rawQuery(QString::fromStdString(m_db), sql);
-  }
-
-  QTemporaryDir m_dir;
-  Engine m_engine = Engine::Sqlite;
-  std::string m_db;
-};
 
 /// On SQLite and on PostgreSQL.
 class StorageCli : public CliFixture, public ::testing::WithParamInterface<Engine> {
@@ -422,13 +354,16 @@ TEST_P(StorageCli, OlderSchemaNeedsDbMigrate) {
   addPatients();
   sql({"ALTER TABLE users DROP COLUMN failed_attempts",
        "ALTER TABLE users DROP COLUMN last_failed_at", "DROP TABLE programmes",
+       "ALTER TABLE sessions DROP COLUMN setting", "ALTER TABLE sessions DROP COLUMN pain_score",
+       "ALTER TABLE sessions DROP COLUMN patient_comment",
+       "ALTER TABLE sessions DROP COLUMN home_summary_json",
        "UPDATE schema_version SET version = 1"});
   Result r = run({"patient", "list"});
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("db migrate"), std::string::npos) << r.err;
   r = run({"db", "migrate"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("2 step(s) applied"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("3 step(s) applied"), std::string::npos) << r.out;
   r = run({"patient", "list"});
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("P02"), std::string::npos);

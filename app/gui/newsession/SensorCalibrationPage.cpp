@@ -196,6 +196,12 @@ QString SensorCalibrationPage::verdictText() const {
   return m_verdictLabel->text();
 }
 
+void SensorCalibrationPage::setIntroduction(std::function<QString()> text) {
+  if (m_state != State::Ready || !text) return;
+  m_instructionText = std::move(text);
+  m_instruction->setText(m_instructionText());
+}
+
 QString SensorCalibrationPage::instructionTitle() const {
   return m_title->text();
 }

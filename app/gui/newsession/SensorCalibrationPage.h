@@ -57,6 +57,9 @@ class SensorCalibrationPage : public QWidget {
   QString instructionTitle() const;
   ui::ArmView* armView() const { return m_arm; }
   QPushButton* startButton() const { return m_start; }
+  /// Replaces the words shown before the protocol starts (the home window speaks to the
+  /// patient); said again when the language changes.
+  void setIntroduction(std::function<QString()> text);
 
  public slots:
   /// Starts (or redoes) the protocol.

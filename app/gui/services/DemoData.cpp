@@ -124,8 +124,27 @@ bool buildDemoDatabase(const storage::DatabaseUrl& url, const std::function<void
     elbow.targetMaxDeg = 130;
     elbow.repetitions = 12;
     store.addProtocol(elbow);
-    store.assignProtocol(QStringLiteral("P001"), flexion.name, 3,
-                         QStringLiteral("Slowly, stop before it hurts."));
+    // Ada's home programme: the elbow first (measured well by the IMUs alone), then the
+    // shoulder; two short sets each.
+    storage::ProgrammeItem homeElbow;
+    homeElbow.protocolName = elbow.name;
+    homeElbow.sessionsPerWeek = 5;
+    homeElbow.sets = 2;
+    homeElbow.repetitions = 5;
+    homeElbow.targetMinDeg = 30;
+    homeElbow.targetMaxDeg = 120;
+    homeElbow.restS = 20;
+    homeElbow.notes = QStringLiteral("Slowly, stop before it hurts.");
+    store.setProgrammeExercise(QStringLiteral("P001"), homeElbow);
+    storage::ProgrammeItem homeFlexion = homeElbow;
+    homeFlexion.protocolName = flexion.name;
+    homeFlexion.sessionsPerWeek = 3;
+    homeFlexion.targetMinDeg = 20;
+    homeFlexion.targetMaxDeg = 110;
+    homeFlexion.notes = QStringLiteral("Keep the elbow straight.");
+    store.setProgrammeExercise(QStringLiteral("P001"), homeFlexion);
+    store.addUser(QString::fromLatin1(DemoAccounts::kHome), storage::Role::Home,
+                  DemoAccounts::kPassword, QStringLiteral("P001"));
     store.assignProtocol(QStringLiteral("P002"), flexion.name, 2);
     report(10);
 

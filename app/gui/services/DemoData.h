@@ -19,6 +19,8 @@ struct DemoAccounts {
   static constexpr const char* kAdmin = "demo-admin";
   static constexpr const char* kTherapist = "demo";
   static constexpr const char* kPassword = "demo-password";
+  /// The home account of the live patient (`armtrack --home --demo` signs in with it).
+  static constexpr const char* kHome = "demo-home";
   /// The patient the demo's live session is recorded for.
   static constexpr const char* kLivePatient = "P001";
   static constexpr const char* kLiveProtocol = "Shoulder flexion";
@@ -45,7 +47,8 @@ qint64 addSimulatedSession(storage::Database& db, storage::ClinicalStore& store,
                            const SimulatedSession& s);
 
 /// Creates a fresh demo database at url (an existing SQLite file there is replaced): accounts,
-/// patients, protocols, programme and about a dozen analysed sessions over six weeks. progress
+/// patients, protocols, a home account and home programme (two exercises) for the live patient,
+/// and about a dozen analysed sessions over six weeks. progress
 /// gets 0-100; cancel (may be null) stops it between sessions (the half-made file is removed).
 /// Returns false when cancelled. Throws StorageError or RecordingError.
 bool buildDemoDatabase(const storage::DatabaseUrl& url, const std::function<void(int)>& progress,

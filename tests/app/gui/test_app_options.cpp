@@ -62,6 +62,10 @@ class TestAppOptions : public QObject {
     QVERIFY(l.quitWhenLive);
     QCOMPARE(l.quitAfterSeconds, 0.0);
     QCOMPARE(l.screenshot, QStringLiteral("s.png"));
+    const auto h = parseAppOptions(line({"--home", "--demo"}));
+    QVERIFY2(h.error.isEmpty(), qPrintable(h.error));
+    QVERIFY(h.home && h.demo);
+    QVERIFY(!o.home);
   }
 
   void leavesQtOptionsForQApplication() {
@@ -84,6 +88,8 @@ class TestAppOptions : public QObject {
     QTest::newRow("quit-after negative")
         << line({"--quit-after=-3"}) << QStringLiteral("positive number");
     QTest::newRow("quit-after nan") << line({"--quit-after", "nan"}) << QStringLiteral("'nan'");
+    QTest::newRow("home without demo")
+        << line({"--home"}) << QStringLiteral("--home goes with --demo");
     QTest::newRow("screenshot alone")
         << line({"--screenshot", "x.png"}) << QStringLiteral("--screenshot needs --quit-after");
     QTest::newRow("quit-when-live with a value")

@@ -59,6 +59,23 @@ class TestDemoData : public QObject {
                               .arg(truth)));
       QVERIFY(s[week].repetitions.has_value() && *s[week].repetitions >= 3);
     }
+    // The home account sees Ada alone, and her programme: two exercises in order.
+    storage::ClinicalStore home(db);
+    QCOMPARE(
+        home.signIn(QString::fromLatin1(gui::DemoAccounts::kHome), gui::DemoAccounts::kPassword)
+            .role,
+        storage::Role::Home);
+    QCOMPARE(home.listPatients().size(), std::size_t{1});
+    QCOMPARE(home.listPatients()[0].code, QStringLiteral("P001"));
+    const auto programme = home.programme(QStringLiteral("P001"));
+    QCOMPARE(programme.size(), std::size_t{2});
+    QCOMPARE(programme[0].protocolName, QStringLiteral("Elbow flexion"));
+    QCOMPARE(programme[1].protocolName, QString::fromLatin1(gui::DemoAccounts::kLiveProtocol));
+    for (const storage::ProgrammeItem& item : programme) {
+      QCOMPARE(item.sets, 2);
+      QCOMPARE(item.repetitions.value_or(0), 5);
+      QVERIFY(item.targetMinDeg && item.targetMaxDeg && *item.targetMinDeg < *item.targetMaxDeg);
+    }
     // Bruno's are of the left arm.
     const auto bruno = store.listSessions(QStringLiteral("P002"));
     QCOMPARE(bruno.size(), std::size_t{4});

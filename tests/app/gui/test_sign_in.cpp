@@ -1,6 +1,7 @@
 // The first-run assistant and sign-in, driven through the real window: the records are made in
 // the folder chosen, validation messages keep what was typed, a wrong password keeps the name
-// and the password, and a home account gets the page that says home mode arrives later.
+// and the password, and a home account gets its own home window (test_home_mode goes through
+// it), from which signing out comes back here.
 #include <QDir>
 #include <QFileInfo>
 #include <QLabel>
@@ -13,6 +14,9 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/MessageScreen.h"
 #include "app/gui/SignInScreen.h"
+#include "app/gui/home/HomeController.h"
+#include "app/gui/home/HomeStartScreen.h"
+#include "app/gui/home/HomeWindow.h"
 #include "app/gui/services/AppSettings.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 
@@ -89,7 +93,7 @@ class TestSignIn : public QObject {
     QTRY_COMPARE(app.window()->currentScreen()->windowTitle(), QStringLiteral("Patients"));
   }
 
-  void aHomeAccountIsToldHomeModeComesLater() {
+  void aHomeAccountGetsTheHomeWindowAlone() {
     AppController app({});
     app.start();
     QTRY_VERIFY(qobject_cast<SignInScreen*>(app.window()->currentScreen()));
@@ -113,10 +117,19 @@ class TestSignIn : public QObject {
     QTRY_VERIFY(qobject_cast<SignInScreen*>(app.window()->currentScreen()));
     emit qobject_cast<SignInScreen*>(app.window()->currentScreen())
         ->signInRequested(QStringLiteral("home1"), QStringLiteral("home-pass-1"));
-    QTRY_COMPARE(app.window()->currentScreen()->windowTitle(), QStringLiteral("Home exercises"));
-    auto* text = findControl<QLabel>(app.window()->currentScreen(), QStringLiteral("Message"));
-    QVERIFY(text && text->text().contains(QStringLiteral("later version")));
-    QVERIFY(findControl<QPushButton>(app.window()->currentScreen(), QStringLiteral("Sign out")));
+    // The home window, in place of the main one: a patient without a programme yet.
+    QTRY_VERIFY(app.home() && app.home()->window()->isVisible());
+    QVERIFY(!app.window()->isVisible());
+    armtrack::gui::home::HomeStartScreen* start = nullptr;
+    QTRY_VERIFY((start = qobject_cast<armtrack::gui::home::HomeStartScreen*>(
+                     app.home()->window()->currentScreen())) != nullptr);
+    QVERIFY(start->exerciseLines().isEmpty());
+    QVERIFY(!findControl<QPushButton>(start, QStringLiteral("Start"))->isEnabled());
+    findControl<QPushButton>(start, QStringLiteral("Sign out"))->click();
+    QTRY_VERIFY(qobject_cast<SignInScreen*>(app.window()->currentScreen()));
+    QTRY_VERIFY(app.home() == nullptr);
+    QVERIFY(app.window()->isVisible());
+    QVERIFY(!app.records().signedIn());
   }
 };
 

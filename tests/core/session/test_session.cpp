@@ -55,7 +55,7 @@ class SessionTest : public ::testing::Test {
   /// Runs a session of the given virtual-arm devices (option strings) for `seconds` and reads
   /// back its recording.
   SessionRun run(const std::vector<QString>& specs, double seconds,
-          const std::function<void(SessionParams&)>& tweak = {}) {
+                 const std::function<void(SessionParams&)>& tweak = {}) {
     devices::DevicePlugin* plugin = test::loadPlugin(QStringLiteral("virtual-arm"));
     if (!plugin) return {};
     SessionParams params;
@@ -117,7 +117,8 @@ class SessionTest : public ::testing::Test {
     for (const ArmSample& s : rec.samples) {
       if (s.t < from || s.t >= to || !s.estimate || !s.trueAngles) continue;
       for (int j = 0; j < kNumJoints; ++j) {
-        const double e = std::remainder((*s.estimate)(j) - (*s.trueAngles)(j), 2 * std::numbers::pi);
+        const double e =
+            std::remainder((*s.estimate)(j) - (*s.trueAngles)(j), 2 * std::numbers::pi);
         sum(j) += e * e;
       }
       ++n;
@@ -194,7 +195,8 @@ TEST_F(SessionTest, EstimatesCarryTheOpticalMeasurementsBesideThem) {
 }
 
 TEST_F(SessionTest, KinectDropoutIsReportedAndFusionResumes) {
-  const SessionRun r = run({QStringLiteral("sensors=upper+forearm+kinect,dropout=kinect@3+2")}, 8.0);
+  const SessionRun r =
+      run({QStringLiteral("sensors=upper+forearm+kinect,dropout=kinect@3+2")}, 8.0);
   expectComplete(r);
   EXPECT_TRUE(mentions(r.events, "kinect dropped out at 3 s")) << r.events.size();
   EXPECT_TRUE(mentions(r.events, "kinect back at 5 s"));
@@ -209,10 +211,30 @@ TEST_F(SessionTest, KinectDropoutIsReportedAndFusionResumes) {
   for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(e(j), 2.0 * kDeg) << "joint " << j;
 }
 
+// The GUI says which angles it cannot trust from the estimates themselves: without optical data
+// the heading rests on the start pose, with a Kinect it does not.
+TEST_F(SessionTest, EstimatesSayWhenTheHeadingRestsOnTheStartPose) {
+  for (const bool optical : {false, true}) {
+    const SessionRun r = run({optical ? QStringLiteral("sensors=upper+forearm+kinect")
+                                      : QStringLiteral("sensors=upper+forearm")},
+                             2.5, [&](SessionParams& p) {
+                               p.recordingPath.replace_filename(optical ? "with.csv" : "none.csv");
+                             });
+    std::size_t later = 0, blind = 0;
+    for (const EstimateRow& e : r.results) {
+      if (e.t < 1.0) continue;
+      ++later;
+      blind += e.headingFromStartPoseOnly;
+    }
+    ASSERT_GT(later, 1000u);
+    EXPECT_EQ(blind, optical ? 0u : later) << (optical ? "with" : "without") << " a Kinect";
+  }
+}
+
 TEST_F(SessionTest, OpticalDeviceDisappearsAndSessionRunsOnImus) {
-  const SessionRun r = run({QStringLiteral("sensors=upper+forearm"),
-                     QStringLiteral("sensors=kinect,disappear=3+2")},
-                    8.0);
+  const SessionRun r =
+      run({QStringLiteral("sensors=upper+forearm"), QStringLiteral("sensors=kinect,disappear=3+2")},
+          8.0);
   expectComplete(r);
   EXPECT_TRUE(mentions(r.events, "connecting (virtual arm: link lost at 3 s"));
   EXPECT_TRUE(mentions(r.events, "streaming (virtual arm: link back at 5 s"));
@@ -224,8 +246,8 @@ TEST_F(SessionTest, OpticalDeviceDisappearsAndSessionRunsOnImus) {
 }
 
 TEST_F(SessionTest, ImuDeviceDisappearsAndComesBackWithARestartedClock) {
-  const SessionRun r = run({QStringLiteral("sensors=upper+forearm+kinect,disappear=3+1.5,restart-clock=on")},
-                    9.0);
+  const SessionRun r =
+      run({QStringLiteral("sensors=upper+forearm+kinect,disappear=3+1.5,restart-clock=on")}, 9.0);
   expectComplete(r);
   EXPECT_TRUE(mentions(r.events, "link lost at 3 s"));
   EXPECT_TRUE(mentions(r.events, "its clock restarted from 0"));

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -237,7 +237,7 @@ TEST(Trajectory, Factory) {
   const std::vector<std::string> names = trajectoryNames();
   ASSERT_EQ(names,
             (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration",
-                                      "reaching"}));
+                                      "reaching", "sensor-check", "exercise"}));
   TrajectoryOptions opts;
   for (const std::string& n : names) EXPECT_NE(makeTrajectory(n, opts), nullptr);
 

@@ -16,6 +16,7 @@
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 #include "core/storage/ClinicalStore.h"
+#include "core/storage/PasswordHash.h"
 #include "tests/support/DatabaseEngines.h"
 
 namespace armtrack::storage::test {
@@ -106,6 +107,79 @@ inline Recording simulateTo(const std::filesystem::path& csv, double seconds,
   Recording rec = simulateRecording(*trajectory, sim);
   writeRecording(csv, rec);
   return readRecording(csv);  // what a reader of the CSV sees, bit for bit
+}
+
+/// Version 1 of the schema exactly as released (a copy, so that later edits to Schema.cpp cannot
+/// hide a broken migration), with a patient, the administrator (kAdminPassword), a session
+/// ("first visit") and its metrics.
+inline QStringList version1Schema(Engine engine) {
+  QStringList v1 = {
+      "CREATE TABLE schema_version (version INTEGER NOT NULL)",
+      "INSERT INTO schema_version VALUES (1)",
+      "CREATE TABLE patients (id INTEGER PRIMARY KEY, code TEXT NOT NULL UNIQUE, name TEXT NOT "
+      "NULL, birth_date TEXT, sex TEXT CHECK (sex IN ('f', 'm', 'x')), affected_side TEXT "
+      "CHECK "
+      "(affected_side IN ('left', 'right', 'both', 'none')), diagnosis TEXT NOT NULL DEFAULT "
+      "'', "
+      "segment_lengths_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', "
+      "created_at TEXT NOT NULL)",
+      "CREATE TABLE users (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, role TEXT NOT "
+      "NULL "
+      "CHECK (role IN ('admin', 'therapist', 'home')), password_hash TEXT NOT NULL, patient_id "
+      "BIGINT REFERENCES patients (id), created_at TEXT NOT NULL, CHECK ((role = 'home') = "
+      "(patient_id IS NOT NULL)))",
+      "CREATE TABLE protocols (id INTEGER PRIMARY KEY, name TEXT NOT NULL UNIQUE, angle_key "
+      "TEXT "
+      "NOT NULL, target_min_deg DOUBLE PRECISION NOT NULL, target_max_deg DOUBLE PRECISION NOT "
+      "NULL, repetitions INTEGER NOT NULL CHECK (repetitions >= 0), side TEXT CHECK (side IN "
+      "('left', 'right', 'either')))",
+      "CREATE TABLE sessions (id INTEGER PRIMARY KEY, patient_id BIGINT NOT NULL REFERENCES "
+      "patients (id), therapist_id BIGINT REFERENCES users (id), protocol_id BIGINT REFERENCES "
+      "protocols (id), started_at TEXT NOT NULL, duration_s DOUBLE PRECISION NOT NULL DEFAULT "
+      "0, "
+      "devices_json TEXT NOT NULL DEFAULT '{}', calibration_json TEXT NOT NULL DEFAULT '{}', "
+      "filter_json TEXT NOT NULL DEFAULT '{}', notes TEXT NOT NULL DEFAULT '', status TEXT NOT "
+      "NULL CHECK (status IN ('complete', 'interrupted', 'recording')), columns_mask INTEGER "
+      "NOT "
+      "NULL DEFAULT 0, sample_rows BIGINT NOT NULL DEFAULT 0, imu_samples BIGINT NOT NULL "
+      "DEFAULT "
+      "0, recorder_host TEXT, recorder_pid BIGINT)",
+      "CREATE INDEX sessions_by_patient ON sessions (patient_id, started_at)",
+      "CREATE TABLE recording_chunks (session_id BIGINT NOT NULL REFERENCES sessions (id) ON "
+      "DELETE CASCADE, seq INTEGER NOT NULL, t_first DOUBLE PRECISION NOT NULL, t_last DOUBLE "
+      "PRECISION NOT NULL, row_count INTEGER NOT NULL, codec TEXT NOT NULL, data BLOB NOT "
+      "NULL, "
+      "PRIMARY KEY (session_id, seq))",
+      "CREATE TABLE estimates (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
+      "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
+      "params_json TEXT NOT NULL DEFAULT '{}', codec TEXT NOT NULL, data BLOB NOT NULL, UNIQUE "
+      "(session_id, version))",
+      "CREATE TABLE metrics (id INTEGER PRIMARY KEY, session_id BIGINT NOT NULL REFERENCES "
+      "sessions (id) ON DELETE CASCADE, version INTEGER NOT NULL, created_at TEXT NOT NULL, "
+      "per_angle_json TEXT NOT NULL DEFAULT '{}', per_repetition_json TEXT NOT NULL DEFAULT "
+      "'[]', "
+      "UNIQUE (session_id, version))",
+      "CREATE TABLE audit_log (id INTEGER PRIMARY KEY, at TEXT NOT NULL, user_name TEXT NOT "
+      "NULL, "
+      "action TEXT NOT NULL, object_type TEXT NOT NULL, object_id TEXT NOT NULL, detail TEXT "
+      "NOT "
+      "NULL DEFAULT '')",
+      "INSERT INTO patients (code, name, birth_date, sex, affected_side, created_at) VALUES "
+      "('OLD1', 'Old Patient', '1950-01-31', 'm', 'left', '2025-01-01T00:00:00.000Z')",
+      QString("INSERT INTO users (name, role, password_hash, created_at) VALUES ('admin', 'admin', "
+              "'%1', '2025-01-01T00:00:00.000Z')")
+          .arg(QString::fromStdString(PasswordHash::hash(kAdminPassword))),
+      "INSERT INTO sessions (patient_id, started_at, status, notes) VALUES (1, "
+      "'2025-01-02T10:00:00.000Z', 'complete', 'first visit')",
+      "INSERT INTO metrics (session_id, version, created_at, per_angle_json) VALUES (1, 1, "
+      "'2025-01-02T10:05:00.000Z', '{\"elbow_flexion\":{\"rom_deg\":91.5}}')",
+  };
+  // Version 1 on PostgreSQL was the same DDL with the dialect's two words (Schema.cpp).
+  if (engine == Engine::Postgres)
+    for (QString& st : v1)
+      st.replace("INTEGER PRIMARY KEY", "BIGINT GENERATED BY DEFAULT AS IDENTITY PRIMARY KEY")
+          .replace("BLOB", "BYTEA");
+  return v1;
 }
 
 inline std::string fileBytes(const std::filesystem::path& p) {

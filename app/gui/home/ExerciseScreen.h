@@ -1,0 +1,136 @@
+// One exercise of the programme, one phase at a time: a demonstration of the movement played on
+// the 3D arm's translucent target, then each set live (the patient's own arm beside the target to
+// reach, repetitions counted, feedback shown and sounded), rests with a countdown between sets,
+// pause and stop at any moment. An exercise whose angle cannot be trusted with this set-up (a
+// shoulder angle without a camera) is still guided and recorded, but not counted: the screen says
+// so instead of showing drifting numbers.
+#pragma once
+
+#include <QElapsedTimer>
+#include <QTimer>
+#include <memory>
+#include <optional>
+
+#include "app/gui/home/HomeScreen.h"
+#include "app/gui/live/LiveSessionConfig.h"
+#include "app/gui/services/HomeRecords.h"
+#include "core/metrics/ExerciseFeedback.h"
+#include "core/session/Session.h"
+#include "core/simulation/Trajectory.h"
+
+class QLabel;
+class QPushButton;
+
+namespace armtrack::ui {
+class ArmView;
+}
+
+namespace armtrack::gui {
+class RecordsService;
+}
+
+namespace armtrack::app {
+class PluginRegistry;
+}
+
+namespace armtrack::gui::home {
+
+class ExerciseRecording;
+class FeedbackSound;
+
+class ExerciseScreen : public HomeScreen {
+  Q_OBJECT
+ public:
+  enum class Phase { Demonstration, Set, Rest, Paused, Finishing, Done };
+
+  /// index, count: which exercise of how many (1-based). optical: a camera or Kinect is set up.
+  /// sound may be null (silent).
+  ExerciseScreen(const app::PluginRegistry& registry, RecordsService& records,
+                 const HomeExercise& exercise, int index, int count, const QString& patientCode,
+                 const app::gui::LiveSessionConfig& config, bool optical, FeedbackSound* sound,
+                 QWidget* parent = nullptr);
+  ~ExerciseScreen() override;
+
+  Phase phase() const { return m_phase; }
+  int currentSet() const { return m_set; }
+  /// What was done so far (complete once finished() was emitted).
+  const HomeExerciseResult& result() const { return m_result; }
+  /// Whether the exercise's angle is counted and shown (trusted with this set-up).
+  bool measured() const { return m_measured; }
+  QString title() const;
+  QString instruction() const;
+  QString counterText() const;
+  QString feedbackText() const;
+  /// Feedback messages shown so far (for tests and the log).
+  const QStringList& feedbackShown() const { return m_shown; }
+  ui::ArmView* armView() const { return m_arm; }
+
+  QList<QAbstractButton*> choices() const override;
+  QAbstractButton* defaultChoice() const override;
+  void escapePressed() override;
+
+ public slots:
+  /// Ends the exercise now (the window closes): the session is finished as interrupted.
+  void cutShort();
+
+ signals:
+  /// The exercise is over and its session finished in the records. stopForToday: the patient
+  /// asked to stop the whole session.
+  void finished(const armtrack::gui::HomeExerciseResult& result, bool stopForToday);
+
+ protected:
+  void retranslate() override;
+
+ private:
+  void buildLayout();
+  void setPhase(Phase p);
+  void startSet();
+  void closeSet();
+  void endSet();
+  void pause();
+  void resume();
+  void finish(bool stoppedEarly, bool stopForToday);
+  void tick();
+  void handleEvents(const std::vector<FeedbackEvent>& events);
+  void showFeedback(const QString& text, int tone);
+  void setMeasured(bool measured);
+  void updateCounter();
+  QString demonstrationText() const;
+
+  HomeExercise m_exercise;
+  int m_index, m_count;
+  bool m_optical;
+  FeedbackSound* m_sound;
+  app::gui::LiveSessionConfig m_config;
+  ExerciseRecording* m_recording;
+  ExerciseTrajectory m_demo;
+  std::optional<ExerciseFeedback> m_feedback;
+  HomeExerciseResult m_result;
+  Phase m_phase = Phase::Demonstration;
+  Phase m_pausedFrom = Phase::Demonstration;
+  int m_set = 1;
+  bool m_measured = true;
+  bool m_stopForToday = false;
+  bool m_closing = false;    // the window is closing: the session is interrupted
+  double m_blindSince = -1;  // session time the heading began resting on the start pose
+  double m_lastT = 0;
+  QElapsedTimer m_clock;  // the demonstration's time, and the rest's
+  double m_restLeftS = 0;
+  QTimer m_timer;
+  QTimer m_setDone;  // a moment after the last repetition, the set ends
+  std::vector<session::EstimateRow> m_rows;
+  QStringList m_shown;
+
+  QLabel* m_title = nullptr;
+  QLabel* m_text = nullptr;
+  QLabel* m_counter = nullptr;
+  QLabel* m_angle = nullptr;
+  QLabel* m_banner = nullptr;
+  ui::ArmView* m_arm = nullptr;
+  QPushButton* m_primary = nullptr;
+  QPushButton* m_pause = nullptr;
+  QPushButton* m_skip = nullptr;
+  QPushButton* m_stop = nullptr;
+};
+
+}  // namespace armtrack::gui::home

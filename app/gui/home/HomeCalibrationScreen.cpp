@@ -1,0 +1,101 @@
+#include "app/gui/home/HomeCalibrationScreen.h"
+
+#include <QHBoxLayout>
+#include <QPushButton>
+#include <QStyle>
+#include <QVBoxLayout>
+
+#include "app/gui/home/HomeStyle.h"
+#include "app/gui/newsession/SensorCalibrationPage.h"
+#include "ui/Retranslate.h"
+
+namespace armtrack::gui::home {
+
+HomeCalibrationScreen::HomeCalibrationScreen(const app::PluginRegistry& registry,
+                                             app::gui::LiveSessionConfig config,
+                                             const QString& folder, QWidget* parent)
+    : HomeScreen(parent),
+      m_page(new app::gui::SensorCalibrationPage(registry, std::move(config), folder.toStdString(),
+                                                 this)),
+      m_goOn(bigButton({}, this, true)),
+      m_skip(bigButton({}, this)) {
+  m_page->setIntroduction([] {
+    return tr(
+        "Now ArmTrack learns how the sensors sit on your arm today. It takes about a "
+        "minute: press Start, then do what the screen says and what the light arm shows.");
+  });
+  setHomeFont(m_page);
+  auto* root = new QVBoxLayout(this);
+  root->addWidget(m_page, 1);
+  auto* buttons = new QHBoxLayout;
+  buttons->addStretch(1);
+  buttons->addWidget(m_goOn, 2);
+  buttons->addWidget(m_skip, 1);
+  root->addLayout(buttons);
+  m_page->startButton()->setProperty("primary", true);
+  m_page->startButton()->setMinimumHeight(m_goOn->sizeHint().height());
+  connect(m_page, &app::gui::SensorCalibrationPage::completeChanged, this,
+          &HomeCalibrationScreen::update);
+  connect(m_goOn, &QPushButton::clicked, this, [this] {
+    std::optional<Calibration> c;
+    if (m_page->isComplete() && m_page->result()) c = m_page->result()->calibration;
+    emit done(c);
+  });
+  connect(m_skip, &QPushButton::clicked, this, [this] {
+    m_page->cancel();
+    emit done(std::nullopt);
+  });
+  retranslate();
+}
+
+void HomeCalibrationScreen::retranslate() {
+  setAccessibleName(tr("Calibration"));
+  ui::setButtonText(m_skip, tr("S&kip the calibration"));
+  m_skip->setAccessibleName(QString(m_skip->text()).remove(u'&'));
+  update();
+}
+
+void HomeCalibrationScreen::update() {
+  using State = app::gui::SensorCalibrationPage::State;
+  const State s = m_page->state();
+  const bool finished = s == State::Done || s == State::Failed;
+  m_goOn->setVisible(finished);
+  ui::setButtonText(m_goOn, m_page->isComplete() ? tr("&Go on") : tr("&Go on without it"));
+  m_goOn->setAccessibleName(QString(m_goOn->text()).remove(u'&'));
+  // After a good verdict going on is the main choice; after a poor one, doing it again.
+  m_goOn->setProperty("primary", m_page->isComplete());
+  m_page->startButton()->setProperty("primary", !m_page->isComplete());
+  for (QWidget* w : {static_cast<QWidget*>(m_goOn), static_cast<QWidget*>(m_page->startButton())}) {
+    w->style()->unpolish(w);
+    w->style()->polish(w);
+  }
+  m_skip->setVisible(!finished || !m_page->isComplete());
+  if (QAbstractButton* main = defaultChoice()) main->setFocus(Qt::OtherFocusReason);
+  emit choicesChanged();
+}
+
+QList<QAbstractButton*> HomeCalibrationScreen::choices() const {
+  return {m_page->startButton(), m_goOn, m_skip};
+}
+
+QAbstractButton* HomeCalibrationScreen::defaultChoice() const {
+  using State = app::gui::SensorCalibrationPage::State;
+  switch (m_page->state()) {
+    case State::Ready:
+      return m_page->startButton();
+    case State::Done:
+      return m_page->isComplete() ? static_cast<QAbstractButton*>(m_goOn) : m_page->startButton();
+    case State::Failed:
+      return m_page->startButton();
+    case State::Recording:
+    case State::Solving:
+      break;
+  }
+  return m_skip;
+}
+
+void HomeCalibrationScreen::escapePressed() {
+  m_page->cancel();
+}
+
+}  // namespace armtrack::gui::home

@@ -1,0 +1,51 @@
+// The calibration protocol after the sensor check, as the therapist's new-session step does it
+// (app/gui/newsession SensorCalibrationPage: guided poses and movements, the fit off the GUI
+// thread, a verdict), in the home window's words, large and driven by the keyboard or a switch.
+#pragma once
+
+#include <optional>
+
+#include "app/gui/home/HomeScreen.h"
+#include "app/gui/live/LiveSessionConfig.h"
+#include "core/calibration/Calibration.h"
+
+class QLabel;
+class QPushButton;
+
+namespace armtrack::app::gui {
+class SensorCalibrationPage;
+}
+
+namespace armtrack::app {
+class PluginRegistry;
+}
+
+namespace armtrack::gui::home {
+
+class HomeCalibrationScreen : public HomeScreen {
+  Q_OBJECT
+ public:
+  HomeCalibrationScreen(const app::PluginRegistry& registry, app::gui::LiveSessionConfig config,
+                        const QString& folder, QWidget* parent = nullptr);
+
+  app::gui::SensorCalibrationPage* page() const { return m_page; }
+  QList<QAbstractButton*> choices() const override;
+  QAbstractButton* defaultChoice() const override;
+  void escapePressed() override;
+
+ signals:
+  /// Go on; the calibration when one was made and is usable.
+  void done(const std::optional<armtrack::Calibration>& calibration);
+
+ protected:
+  void retranslate() override;
+
+ private:
+  void update();
+
+  app::gui::SensorCalibrationPage* m_page;
+  QPushButton* m_goOn;
+  QPushButton* m_skip;
+};
+
+}  // namespace armtrack::gui::home
