@@ -140,8 +140,8 @@ done < <(find "$root" -type f -print0)
 
 # Dependencies: dpkg-shlibdeps' libraries and what is loaded without being linked.
 depends="$(dpkg-deb -f "$deb" Depends)"
-for p in libqt6core6 libqt6widgets6 libqt6charts6 libqt6multimedia6 libvtk9.1 libopencv-core406 libc6 \
-  libqt6sql6-sqlite libqt6sql6-psql libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core; do
+for p in libqt6core6 libqt6widgets6 libqt6charts6 libqt6multimedia6 libvtk9.1 libopencv-core406 \
+  libc6 libqt6sql6-sqlite libqt6sql6-psql libgl1-mesa-dri libglx-mesa0 fonts-dejavu-core; do
   grep -Eq "(^|, )$p( |,|$)" <<<"$depends" || fail "Depends lacks $p: $depends"
 done
 grep -q 'libqt5\|qt5' <<<"$depends" && fail "Depends names Qt 5: $depends"
