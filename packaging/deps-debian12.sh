@@ -15,6 +15,8 @@ packages=(
   qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libvtk9-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev
+  # the package (docs/packaging.md): icons, manual pages, validators, the clean-root install test
+  librsvg2-bin groff-base desktop-file-utils appstream python3-debian lintian mmdebstrap eatmydata
 )
 
 missing=()

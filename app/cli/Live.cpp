@@ -53,7 +53,8 @@ constexpr const char* kDevicesHelp = R"(usage: armtrack-cli devices [--plugins D
 
 Lists the device plugins found, their options, and the plugin files that were refused and why.
 Plugins are looked for in --plugins folders, the settings' devices/pluginPath,
-$ARMTRACK_PLUGIN_PATH, <exe>/../plugins and <exe>/../lib/armtrack/plugins.
+$ARMTRACK_PLUGIN_PATH, <exe>/../plugins (a build) and the installed plugin folder
+(/usr/lib/<multiarch>/armtrack/plugins for /usr/bin/armtrack-cli).
 )";
 
 constexpr const char* kRecordHelp =

@@ -7,6 +7,7 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QTimer>
+#include <cstdio>
 
 #include "app/gui/AngleNames.h"
 #include "app/gui/Appearance.h"
@@ -73,11 +74,39 @@ void AppController::start() {
   loadPlugins();
   m_window->show();
   if (m_options.quitAfterSeconds > 0)
-    QTimer::singleShot(static_cast<int>(m_options.quitAfterSeconds * 1000), this, [this] {
-      if (!m_options.screenshot.isEmpty()) saveWindowImage(m_options.screenshot);
-      QApplication::quit();
-    });
+    QTimer::singleShot(static_cast<int>(m_options.quitAfterSeconds * 1000), this,
+                       &AppController::quitAfterLimit);
+  if (m_options.quitWhenLive)
+    connect(this, &AppController::liveSessionShown, this, &AppController::quitOnceLive);
   m_options.demo ? startDemo() : openRecords();
+}
+
+void AppController::quitAfterLimit() {
+  if (!m_options.screenshot.isEmpty()) saveWindowImage(m_options.screenshot);
+  if (!m_options.quitWhenLive) return QApplication::quit();
+  std::fprintf(stderr, "armtrack: no live session showed estimates within %g s\n",
+               m_options.quitAfterSeconds);
+  QApplication::exit(1);
+}
+
+void AppController::quitOnceLive(QWidget* screen) {
+  auto* live = qobject_cast<app::gui::LiveSessionScreen*>(screen);
+  if (!live) return;
+  connect(live, &app::gui::LiveSessionScreen::sessionFailed, this, [](const QString& why) {
+    std::fprintf(stderr, "armtrack: the live session failed: %s\n", qPrintable(why));
+    QApplication::exit(1);
+  });
+  auto* poll = new QTimer(live);
+  connect(poll, &QTimer::timeout, this, [this, live, poll] {
+    if (live->sessionTime() < 2.0 || live->estimatesDrained() == 0) return;
+    poll->stop();
+    std::fprintf(stderr, "armtrack: the live session is running: %llu estimates in %.1f s\n",
+                 static_cast<unsigned long long>(live->estimatesDrained()), live->sessionTime());
+    if (!m_options.screenshot.isEmpty() && !saveWindowImage(m_options.screenshot))
+      return QApplication::exit(1);
+    QApplication::quit();
+  });
+  poll->start(100);
 }
 
 void AppController::startDemoSession() {

@@ -92,6 +92,10 @@ class AppController : public QObject {
   void closeHome();
   storage::DatabaseUrl demoDatabaseUrl() const;
   void startDemoSession();
+  /// --quit-when-live: quits (saving --screenshot) once screen has shown 2 s of estimates.
+  void quitOnceLive(QWidget* screen);
+  /// --quit-after: saves --screenshot and quits (status 1 with --quit-when-live: not live).
+  void quitAfterLimit();
 
   AppOptions m_options;
   std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode

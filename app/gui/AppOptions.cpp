@@ -48,8 +48,13 @@ QString appUsage() {
       "  --lang CODE     language of the windows and reports: en, de or es (default: the\n"
       "                  settings' choice, else the system's)\n"
       "  --quit-after S  quit after S seconds (for unattended runs)\n"
+      "  --quit-when-live\n"
+      "                  quit once a live session (the demo's, with --demo) has shown 2 s of\n"
+      "                  estimates; with --quit-after S, exit with status 1 if it has not\n"
+      "                  within S seconds (for checking an installation)\n"
       "  --screenshot FILE\n"
-      "                  with --quit-after: save the window as a PNG before quitting\n"
+      "                  with --quit-after or --quit-when-live: save the window as a PNG\n"
+      "                  before quitting\n"
       "  --version       print the version and exit\n"
       "  --help          print this text and exit\n"
       "\n"
@@ -101,6 +106,8 @@ AppOptions parseAppOptions(const QStringList& arguments) {
         if (!ok || !(o.quitAfterSeconds > 0))
           o.error = text("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
       }
+    } else if (a == QLatin1String("--quit-when-live")) {
+      o.quitWhenLive = true;
     } else if (is("--screenshot")) {
       valueOf(i, QStringLiteral("--screenshot"), o.screenshot);
     } else if (isQtOptionWithValue(a) && i + 1 < arguments.size()) {
@@ -114,15 +121,20 @@ AppOptions parseAppOptions(const QStringList& arguments) {
   if (o.error.isEmpty() && o.home && !o.demo)
     o.error =
         text("--home goes with --demo; a home account opens the home window when it signs in");
-  if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0)
-    o.error = text("--screenshot needs --quit-after");
+  if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0 && !o.quitWhenLive)
+    o.error = text("--screenshot needs --quit-after or --quit-when-live");
   if (o.error.isEmpty() && !o.language.isEmpty() && i18n::shippedLanguageFor(o.language).isEmpty())
     o.error = text("--lang: ArmTrack has no translation for '%1'; choose one of %2")
                   .arg(o.language, i18n::shippedLanguageList());
   return o;
 }
 
-bool displayAvailable(QString* why) {
+void HeldDisplay::release() {
+  if (m_connection) xcb_disconnect(m_connection);
+  m_connection = nullptr;
+}
+
+bool displayAvailable(QString* why, HeldDisplay* hold) {
   const QString platform = qEnvironmentVariable("QT_QPA_PLATFORM");
   // Another platform chosen on purpose (e.g. vnc) is the user's business.
   if (!platform.isEmpty() && !platform.startsWith(QLatin1String("xcb")) &&
@@ -139,6 +151,11 @@ bool displayAvailable(QString* why) {
     int screen = 0;
     xcb_connection_t* c = xcb_connect(display.constData(), &screen);
     const bool ok = c && xcb_connection_has_error(c) == 0;
+    if (ok && hold) {
+      hold->release();
+      hold->m_connection = c;
+      return true;
+    }
     if (c) xcb_disconnect(c);
     if (ok) return true;
     if (wayland) return true;  // Qt falls back to Wayland when X cannot be reached

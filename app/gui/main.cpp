@@ -2,6 +2,7 @@
 // plain words before Qt starts, then sets the OpenGL format the 3D view needs and hands over to
 // AppController.
 #include <QApplication>
+#include <QIcon>
 #include <cstdio>
 
 #include "app/gui/AppController.h"
@@ -35,7 +36,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   QString why;
-  if (!armtrack::gui::displayAvailable(&why)) {
+  armtrack::gui::HeldDisplay probe;  // open until Qt has connected (a fresh Xvfb resets otherwise)
+  if (!armtrack::gui::displayAvailable(&why, &probe)) {
     print(stderr, why + u'\n');
     return 2;
   }
@@ -43,10 +45,13 @@ int main(int argc, char** argv) {
   QGuiApplication::setHighDpiScaleFactorRoundingPolicy(
       Qt::HighDpiScaleFactorRoundingPolicy::PassThrough);
   QApplication app(argc, argv);
+  probe.release();
   armtrack::gui::setApplicationIdentity();
   QApplication::setApplicationDisplayName(QStringLiteral("ArmTrack"));
   QApplication::setApplicationVersion(QStringLiteral(ARMTRACK_VERSION));
-  QApplication::setDesktopFileName(QStringLiteral("armtrack"));
+  // The installed desktop entry and icon (packaging/linux, packaging/icons).
+  QApplication::setDesktopFileName(QStringLiteral("org.armtrack.ArmTrack"));
+  QApplication::setWindowIcon(QIcon::fromTheme(QStringLiteral("org.armtrack.ArmTrack")));
   armtrack::gui::AppController controller(std::move(options));
   controller.start();
   return app.exec();

@@ -17,7 +17,7 @@ QStringList PluginRegistry::defaultFolders() {
   for (const QString& f : env.split(u':', Qt::SkipEmptyParts)) folders << f;
   const QString exe = QCoreApplication::applicationDirPath();
   folders << QDir(exe).absoluteFilePath(QStringLiteral("../plugins"))
-          << QDir(exe).absoluteFilePath(QStringLiteral("../lib/armtrack/plugins"));
+          << QDir::cleanPath(QDir(exe).absoluteFilePath(QStringLiteral(ARMTRACK_BIN_TO_PLUGINS)));
   return folders;
 }
 

@@ -23,7 +23,8 @@ struct PluginRecord {
 class PluginRegistry {
  public:
   /// The default folders: $ARMTRACK_PLUGIN_PATH (':'-separated), <exe>/../plugins (build tree)
-  /// and <exe>/../lib/armtrack/plugins (install).
+  /// and the install's plugin folder as seen from the program's, e.g.
+  /// <exe>/../lib/x86_64-linux-gnu/armtrack/plugins (docs/packaging.md).
   static QStringList defaultFolders();
 
   /// Scans the folders (and single files) in order. A second plugin with a name already loaded is

@@ -56,6 +56,12 @@ class TestAppOptions : public QObject {
     QVERIFY2(u.error.isEmpty(), qPrintable(u.error));
     QCOMPARE(u.quitAfterSeconds, 2.5);
     QCOMPARE(u.screenshot, QStringLiteral("/tmp/a.png"));
+    QVERIFY(!u.quitWhenLive);
+    const auto l = parseAppOptions(line({"--demo", "--quit-when-live", "--screenshot", "s.png"}));
+    QVERIFY2(l.error.isEmpty(), qPrintable(l.error));
+    QVERIFY(l.quitWhenLive);
+    QCOMPARE(l.quitAfterSeconds, 0.0);
+    QCOMPARE(l.screenshot, QStringLiteral("s.png"));
     const auto h = parseAppOptions(line({"--home", "--demo"}));
     QVERIFY2(h.error.isEmpty(), qPrintable(h.error));
     QVERIFY(h.home && h.demo);
@@ -86,6 +92,8 @@ class TestAppOptions : public QObject {
         << line({"--home"}) << QStringLiteral("--home goes with --demo");
     QTest::newRow("screenshot alone")
         << line({"--screenshot", "x.png"}) << QStringLiteral("--screenshot needs --quit-after");
+    QTest::newRow("quit-when-live with a value")
+        << line({"--quit-when-live=yes"}) << QStringLiteral("'--quit-when-live=yes'");
   }
   void refusesWhatItDoesNotKnow() {
     QFETCH(QStringList, args);
@@ -119,6 +127,7 @@ class TestAppOptions : public QObject {
     QCOMPARE(help.code, 0);
     QVERIFY(help.out.contains(QStringLiteral("--demo")));
     QVERIFY(help.out.contains(QStringLiteral("--plugins DIR")));
+    QVERIFY(help.out.contains(QStringLiteral("--quit-when-live")));
     const Run version = run({QStringLiteral("--version")}, withoutDisplay());
     QCOMPARE(version.code, 0);
     QVERIFY2(version.out.startsWith(QStringLiteral("armtrack ")), qPrintable(version.out));

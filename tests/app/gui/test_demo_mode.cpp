@@ -4,6 +4,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSignalSpy>
 
 #include "app/gui/AppController.h"
@@ -15,6 +16,29 @@
 #include "tests/app/gui/support/GuiTestSupport.h"
 
 using namespace armtrack::gui;
+
+namespace {
+
+// The program run as a user would, with its exit and what it said on standard error.
+struct GuiRun {
+  bool finished = false;
+  QProcess::ExitStatus status = QProcess::CrashExit;
+  int code = -1;
+  QString err;
+};
+
+GuiRun runGui(const QStringList& args, int timeoutMs) {
+  QProcess p;
+  p.start(QStringLiteral(ARMTRACK_GUI), args);
+  GuiRun r;
+  r.finished = p.waitForFinished(timeoutMs);
+  r.status = p.exitStatus();
+  r.code = p.exitCode();
+  r.err = QString::fromLocal8Bit(p.readAllStandardError());
+  return r;
+}
+
+}  // namespace
 
 class TestDemoMode : public QObject {
   Q_OBJECT
@@ -57,14 +81,14 @@ class TestDemoMode : public QObject {
 
   void runsUnattendedAndSavesItsWindow() {
     const QString shot = m_dir.filePath(QStringLiteral("window.png"));
-    QProcess p;
-    p.start(QStringLiteral(ARMTRACK_GUI),
-            {QStringLiteral("--demo"), QStringLiteral("--db"),
-             m_dir.filePath(QStringLiteral("unattended.db")), QStringLiteral("--quit-after"),
-             QStringLiteral("8"), QStringLiteral("--screenshot"), shot});
-    QVERIFY(p.waitForFinished(60000));
-    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
-    QVERIFY2(p.exitCode() == 0, p.readAllStandardError().constData());
+    const GuiRun r =
+        runGui({QStringLiteral("--demo"), QStringLiteral("--db"),
+                m_dir.filePath(QStringLiteral("unattended.db")), QStringLiteral("--quit-after"),
+                QStringLiteral("8"), QStringLiteral("--screenshot"), shot},
+               60000);
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QVERIFY2(r.code == 0, qPrintable(r.err));
     const QImage image(shot);
     QVERIFY(!image.isNull());
     QVERIFY(image.width() >= 900 && image.height() >= 600);
@@ -73,6 +97,42 @@ class TestDemoMode : public QObject {
     for (int y = 0; y < image.height(); y += 7)
       for (int x = 0; x < image.width(); x += 7) colours.insert(image.pixel(x, y));
     QVERIFY2(colours.size() > 20, qPrintable(QString::number(colours.size())));
+  }
+
+  // --quit-when-live: how the package's install test knows the installed program reached the
+  // live screen (tests/packaging): it quits on the condition, not after a guessed time.
+  void quitsOnceTheLiveSessionShowsEstimates() {
+    const QString shot = m_dir.filePath(QStringLiteral("live.png"));
+    const GuiRun r = runGui({QStringLiteral("--demo"), QStringLiteral("--db"),
+                             m_dir.filePath(QStringLiteral("live.db")),
+                             QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"),
+                             QStringLiteral("120"), QStringLiteral("--screenshot"), shot},
+                            150000);
+    const QString& err = r.err;
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QVERIFY2(r.code == 0, qPrintable(err));
+    const QRegularExpression running(
+        QStringLiteral("the live session is running: (\\d+) "
+                       "estimates in ([0-9.]+) s"));
+    const QRegularExpressionMatch m = running.match(err);
+    QVERIFY2(m.hasMatch(), qPrintable(err));
+    QVERIFY2(m.captured(1).toLongLong() > 100, qPrintable(err));
+    QVERIFY2(m.captured(2).toDouble() >= 2.0, qPrintable(err));
+    QVERIFY(!QImage(shot).isNull());
+  }
+
+  void saysSoWhenNoLiveSessionCame() {
+    // Without --demo the records open at the sign-in (here the first run): no live session.
+    const GuiRun r = runGui(
+        {QStringLiteral("--db"), m_dir.filePath(QStringLiteral("none.db")),
+         QStringLiteral("--quit-when-live"), QStringLiteral("--quit-after"), QStringLiteral("1.5")},
+        60000);
+    QVERIFY(r.finished);
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QCOMPARE(r.code, 1);
+    QVERIFY2(r.err.contains(QStringLiteral("no live session showed estimates within 1.5 s")),
+             qPrintable(r.err));
   }
 };
 
