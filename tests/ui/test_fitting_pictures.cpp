@@ -9,6 +9,7 @@
 // - the webcam's lines of sight drawn by the view meet the elbow and the wrist.
 #include <QPainter>
 #include <QPainterPath>
+#include <QStyle>
 #include <QStyleFactory>
 #include <QWidget>
 #include <cmath>
@@ -46,8 +47,12 @@ bool isRayYellow(QRgb c) {
 /// along the segment, which is the sensor's -y axis (docs/arm-model.md).
 const Eigen::Vector3d kArrowInSensor(0.0, -1.0, 0.0);
 
-/// A label: a white box with a dark frame and a leader line to what it names.
-void drawLabel(QPainter& p, const QRectF& box, const QString& text, QPointF target) {
+/// A label: a white box at topLeft, width wide and as high as its text, with a dark frame and a
+/// leader line to what it names.
+void drawLabel(QPainter& p, QPointF topLeft, double width, const QString& text, QPointF target) {
+  const QRect textRect = p.fontMetrics().boundingRect(
+      QRect(0, 0, static_cast<int>(width) - 20, 1000), Qt::TextWordWrap, text);
+  const QRectF box(topLeft, QSizeF(width, textRect.height() + 14));
   const QPointF from(std::clamp(target.x(), box.left(), box.right()),
                      std::clamp(target.y(), box.top(), box.bottom()));
   p.setPen(QPen(QColor(0x20, 0x20, 0x24), 2.0));
@@ -57,7 +62,7 @@ void drawLabel(QPainter& p, const QRectF& box, const QString& text, QPointF targ
   p.setBrush(QColor(255, 255, 255, 235));
   p.drawRoundedRect(box, 6, 6);
   p.setPen(QColor(0x10, 0x10, 0x12));
-  p.drawText(box.adjusted(10, 6, -10, -6), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
+  p.drawText(box.adjusted(10, 7, -10, -7), Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap,
              text);
 }
 
@@ -86,6 +91,13 @@ QPointF unit(QPointF v) {
 
 double dot(QPointF a, QPointF b) {
   return a.x() * b.x() + a.y() * b.y();
+}
+
+/// Whether p lies along the screen segment from a to b between fractions lo and hi of its length.
+bool between(QPointF p, QPointF a, QPointF b, double lo, double hi) {
+  const QPointF ab = b - a;
+  const double t = dot(p - a, ab) / dot(ab, ab);
+  return t > lo && t < hi;
 }
 
 }  // namespace
@@ -162,9 +174,12 @@ class TestFittingPictures : public QObject {
       for (const Eigen::Isometry3d& imu : {f.upperImu, f.forearmImu}) {
         const Eigen::Vector3d arrow = imu.linear() * kArrowInSensor;
         QVERIFY(arrow.dot(up) > 0.999);
-        const Eigen::Vector3d toShoulder = (f.shoulder - imu.translation()).normalized();
-        QVERIFY(arrow.dot(toShoulder) > 0.99);
       }
+      // Along each segment, towards the shoulder.
+      QVERIFY((f.upperImu.linear() * kArrowInSensor).dot((f.shoulder - f.elbow).normalized()) >
+              0.999);
+      QVERIFY((f.forearmImu.linear() * kArrowInSensor).dot((f.elbow - f.wrist).normalized()) >
+              0.999);
     }
   }
 
@@ -176,8 +191,8 @@ class TestFittingPictures : public QObject {
     m_view->setTargetPose(std::nullopt);
     m_view->setOptical({});
     CameraView v;
-    v.focalPoint = {0.2, 0.0, 0.02};
-    v.position = {-0.25, 0.95, 0.75};  // above the shoulder, in front, to the arm's side
+    v.focalPoint = {0.18, 0.0, 0.03};
+    v.position = {-0.05, 0.55, 0.95};  // in front and to the arm's side, a little above
     v.viewUp = {-1, 0, 0};
     v.viewAngleDeg = 30;
     m_view->setCamera(v);
@@ -187,19 +202,21 @@ class TestFittingPictures : public QObject {
     const auto [upper, upperPixels] = sensorOnScreen(img, at(f.upperImu.translation()), 45);
     QVERIFY2(upperPixels > 150, qPrintable(QString::number(upperPixels)));
     const QPointF arrow = arrowOnScreen(f.upperImu);
-    QVERIFY(dot(arrow, unit(at(f.shoulder) - upper)) > 0.95);  // it points at the shoulder
+    QVERIFY(dot(arrow, unit(at(f.shoulder) - at(f.elbow))) > 0.95);  // up the arm
+    QVERIFY(between(upper, at(f.shoulder), at(f.elbow), 0.3, 0.7));  // about halfway down
 
     QPainter p(&img);
     p.setRenderHint(QPainter::Antialiasing);
     p.scale(m_view->devicePixelRatioF(), m_view->devicePixelRatioF());
     p.setFont(labelFont());
     drawArrow(p, upper, arrow, 30);
-    drawLabel(p, QRectF(upper.x() + 90, upper.y() - 95, 270, 88),
+    drawLabel(p, QPointF(upper.x() - 300, upper.y() - 150), 260,
               QStringLiteral("Upper-arm sensor: on the outside of the upper arm, about halfway "
                              "between shoulder and elbow (here 11 cm below the shoulder)."),
-              upper + QPointF(14, 0));
-    drawLabel(p, QRectF(upper.x() + 90, upper.y() + 20, 270, 66),
-              QStringLiteral("Arrow up, towards the shoulder, along the arm."), upper + arrow * 15);
+              upper + QPointF(-12, -8));
+    drawLabel(p, QPointF(upper.x() - 300, upper.y() + 60), 260,
+              QStringLiteral("Its arrow points up the arm, towards the shoulder."),
+              upper + arrow * 15);
     p.end();
     test::saveScreenshot(img, QStringLiteral("fitting-upper-arm"));
   }
@@ -213,8 +230,8 @@ class TestFittingPictures : public QObject {
     m_view->setArm(geo, Side::Right);
     m_view->setPose(th);
     CameraView v;
-    v.focalPoint = {0.2, 0.14, -0.02};
-    v.position = {-0.35, 0.95, -0.65};  // above, in front, on the body's side of the arm
+    v.focalPoint = {0.2, 0.16, -0.02};
+    v.position = {-0.45, 1.15, -0.45};  // above, in front, on the body's side of the arm
     v.viewUp = {-1, 0, 0};
     v.viewAngleDeg = 30;
     m_view->setCamera(v);
@@ -224,18 +241,19 @@ class TestFittingPictures : public QObject {
     const auto [fore, forePixels] = sensorOnScreen(img, at(f.forearmImu.translation()), 45);
     QVERIFY2(forePixels > 150, qPrintable(QString::number(forePixels)));
     const QPointF arrow = arrowOnScreen(f.forearmImu);
-    QVERIFY(dot(arrow, unit(at(f.elbow) - fore)) > 0.95);  // along the forearm to the elbow
+    QVERIFY(dot(arrow, unit(at(f.elbow) - at(f.wrist))) > 0.95);  // along the forearm to the elbow
+    QVERIFY(between(fore, at(f.elbow), at(f.wrist), 0.75, 1.1));  // near the wrist
 
     QPainter p(&img);
     p.setRenderHint(QPainter::Antialiasing);
     p.scale(m_view->devicePixelRatioF(), m_view->devicePixelRatioF());
     p.setFont(labelFont());
     drawArrow(p, fore, arrow, 30);
-    drawLabel(p, QRectF(fore.x() - 330, fore.y() + 60, 300, 88),
+    drawLabel(p, QPointF(fore.x() - 330, fore.y() + 60), 300,
               QStringLiteral("Forearm sensor: just above the wrist, on the side that faces the "
                              "body when the arm hangs with the thumb forward."),
               fore + QPointF(0, 12));
-    drawLabel(p, QRectF(fore.x() - 330, fore.y() - 150, 300, 88),
+    drawLabel(p, QPointF(fore.x() - 330, fore.y() - 150), 300,
               QStringLiteral("Arrow along the forearm towards the elbow (up, towards the "
                              "shoulder, when the arm hangs)."),
               fore + arrow * 15);
@@ -263,8 +281,8 @@ class TestFittingPictures : public QObject {
     marks.camWrist = wristPx;
     m_view->setOptical(marks);
     CameraView v;
-    v.focalPoint = {0.35, 1.0, 0.0};
-    v.position = {-1.6, 0.4, 3.0};  // above, behind the camera's line, to the patient's right
+    v.focalPoint = {0.15, 1.0, 0.0};
+    v.position = {-1.5, 1.0, 2.7};  // above, to the patient's right, halfway to the camera
     v.viewUp = {-1, 0, 0};
     v.viewAngleDeg = 30;
     m_view->setCamera(v);
@@ -273,18 +291,22 @@ class TestFittingPictures : public QObject {
     // The camera's centre, in the shoulder frame: p_camera = R p + t = 0.
     const Eigen::Vector3d centre = -cam.R.transpose() * cam.t;
     QVERIFY((centre - Eigen::Vector3d(0, 2, 0)).norm() < 1e-9);
-    // The view's yellow lines of sight pass the elbow and the wrist.
+    // The view's yellow lines of sight run from the elbow and the wrist towards the camera (the
+    // joints themselves are inside the drawn arm).
     const double dpr = m_view->devicePixelRatioF();
     for (const Eigen::Vector3d& joint : {f.elbow, f.wrist}) {
-      const QPointF j = at(joint);
+      const Eigen::Vector3d towardsCamera = (centre - joint).normalized();
       int yellow = 0;
-      for (int dy = -12; dy <= 12; ++dy)
-        for (int dx = -12; dx <= 12; ++dx) {
-          const QPoint q(static_cast<int>((j.x() + dx) * dpr),
-                         static_cast<int>((j.y() + dy) * dpr));
-          if (img.rect().contains(q) && isRayYellow(img.pixel(q))) ++yellow;
-        }
-      QVERIFY2(yellow > 3, qPrintable(QStringLiteral("%1 yellow pixels").arg(yellow)));
+      for (double along : {0.12, 0.18, 0.24}) {
+        const QPointF j = at(joint + along * towardsCamera);
+        for (int dy = -4; dy <= 4; ++dy)
+          for (int dx = -4; dx <= 4; ++dx) {
+            const QPoint q(static_cast<int>((j.x() + dx) * dpr),
+                           static_cast<int>((j.y() + dy) * dpr));
+            if (img.rect().contains(q) && isRayYellow(img.pixel(q))) ++yellow;
+          }
+      }
+      QVERIFY2(yellow > 6, qPrintable(QStringLiteral("%1 yellow pixels").arg(yellow)));
     }
 
     QPainter p(&img);
@@ -305,11 +327,11 @@ class TestFittingPictures : public QObject {
     p.drawEllipse(w, 6, 6);
     p.setBrush(QColor(0x20, 0x50, 0xe0));
     p.drawEllipse(e, 6, 6);
-    drawLabel(p, QRectF(c.x() - 150, c.y() + 40, 300, 88),
+    drawLabel(p, QPointF(std::min(c.x() - 150, kWidth - 310.0), c.y() + 40), 300,
               QStringLiteral("Webcam or Kinect: about 2 m in front of the patient, at shoulder "
                              "height, facing the arm; the whole arm in view."),
               c + QPointF(0, 12));
-    drawLabel(p, QRectF(std::max(10.0, w.x() - 340), w.y() + 70, 300, 66),
+    drawLabel(p, QPointF(std::max(10.0, w.x() - 200), w.y() + 90), 280,
               QStringLiteral("Markers facing the camera: green on the wrist, blue on the "
                              "elbow."),
               w);
