@@ -135,10 +135,14 @@ class TestFittingPictures : public QObject {
     return unit(at(imu.translation() + 0.05 * a) - at(imu.translation()));
   }
 
-  QFont labelFont() const {
+  /// A painter on the grabbed picture draws in the view's logical pixels, smoothly, in the
+  /// labels' font.
+  void prepareLabels(QPainter& p) const {
+    p.setRenderHint(QPainter::Antialiasing);
+    p.scale(m_view->devicePixelRatioF(), m_view->devicePixelRatioF());
     QFont f = m_window->font();
     f.setPixelSize(15);
-    return f;
+    p.setFont(f);
   }
 
  private slots:
@@ -206,9 +210,7 @@ class TestFittingPictures : public QObject {
     QVERIFY(between(upper, at(f.shoulder), at(f.elbow), 0.3, 0.7));  // about halfway down
 
     QPainter p(&img);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.scale(m_view->devicePixelRatioF(), m_view->devicePixelRatioF());
-    p.setFont(labelFont());
+    prepareLabels(p);
     drawArrow(p, upper, arrow, 30);
     drawLabel(p, QPointF(upper.x() - 300, upper.y() - 150), 260,
               QStringLiteral("Upper-arm sensor: on the outside of the upper arm, about halfway "
@@ -245,9 +247,7 @@ class TestFittingPictures : public QObject {
     QVERIFY(between(fore, at(f.elbow), at(f.wrist), 0.75, 1.1));  // near the wrist
 
     QPainter p(&img);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.scale(m_view->devicePixelRatioF(), m_view->devicePixelRatioF());
-    p.setFont(labelFont());
+    prepareLabels(p);
     drawArrow(p, fore, arrow, 30);
     drawLabel(p, QPointF(fore.x() - 330, fore.y() + 60), 300,
               QStringLiteral("Forearm sensor: just above the wrist, on the side that faces the "
@@ -310,9 +310,7 @@ class TestFittingPictures : public QObject {
     }
 
     QPainter p(&img);
-    p.setRenderHint(QPainter::Antialiasing);
-    p.scale(dpr, dpr);
-    p.setFont(labelFont());
+    prepareLabels(p);
     // The camera: a box with a lens, facing the patient, and dashed lines of sight.
     const QPointF c = at(centre), e = at(f.elbow), w = at(f.wrist);
     p.setPen(QPen(QColor(0x20, 0x20, 0x24), 1.5, Qt::DashLine));
