@@ -8,29 +8,17 @@
 #include <numbers>
 
 #include "tests/support/GuiTestMain.h"
+#include "tests/ui/ArmViewTesting.h"
 #include "ui/ArmFigure.h"
 #include "ui/ArmView.h"
 
 using namespace armtrack;
 using namespace armtrack::ui;
+using armtrack::test::project;
 
 namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-/// Where a world point appears in a widget of size w x h (logical pixels) seen by camera v, by
-/// the textbook pinhole model (vertical field of view, square pixels), not by VTK's matrices.
-QPointF project(const CameraView& v, const Eigen::Vector3d& p, double w, double h) {
-  const Eigen::Vector3d d = (v.focalPoint - v.position).normalized();
-  const Eigen::Vector3d up = (v.viewUp - v.viewUp.dot(d) * d).normalized();
-  const Eigen::Vector3d right = d.cross(up);
-  const Eigen::Vector3d rel = p - v.position;
-  const double z = rel.dot(d);
-  const double t = std::tan(v.viewAngleDeg * kDeg / 2.0);
-  const double xn = rel.dot(right) / (z * t * (w / h));
-  const double yn = rel.dot(up) / (z * t);
-  return {(xn + 1.0) / 2.0 * w, (1.0 - yn) / 2.0 * h};
-}
 
 /// The arm is drawn in a saturated blue (darker in the light palette), lit and shaded; the
 /// backgrounds are grey-blue gradients of low saturation.
@@ -63,17 +51,7 @@ class TestArmView : public QObject {
   QMainWindow* m_window = nullptr;
   ArmView* m_view = nullptr;
 
-  /// Draws two frames (the second one makes sure the first reached the screen) and returns the
-  /// view as the screen shows it (device pixels); a null image when no frame came in 5 s.
-  QImage freshShot() {
-    for (int i = 0; i < 2; ++i) {
-      const std::uint64_t start = m_view->framesRendered();
-      m_view->scheduleFrame();
-      if (!QTest::qWaitFor([&] { return m_view->framesRendered() > start; }, 5000)) return {};
-    }
-    QCoreApplication::processEvents();
-    return test::grabFromScreen(m_view);
-  }
+  QImage freshShot() { return test::freshShot(m_view); }
 
   QRgb pixelAt(const QImage& img, QPointF logical) {
     const qreal dpr = m_view->devicePixelRatioF();
