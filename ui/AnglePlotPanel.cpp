@@ -1,6 +1,7 @@
 #include "ui/AnglePlotPanel.h"
 
 #include <QEvent>
+#include <QFontMetrics>
 #include <QHeaderView>
 #include <QScrollBar>
 #include <QSplitter>
@@ -219,6 +220,20 @@ void AnglePlotPanel::sizeTable() {
   // The table as wide as its columns (at most 40 % of the panel), the plots the rest.
   m_sized = true;
   m_tableView->resizeColumnsToContents();
+  // The table is sized once, often before the first values arrive: give each number column
+  // room for the widest value it can show, so "-179.9°" is never cut to "-1…".
+  const QFontMetrics metrics(m_tableView->font());
+  const int padding = metrics.horizontalAdvance(QStringLiteral("MM"));
+  const QString widestAngle = formatDegrees(-179.9);
+  for (int c = AngleTableModel::Value; c < AngleTableModel::ColumnCount; ++c) {
+    const QString widest =
+        c == AngleTableModel::Uncertainty ? QStringLiteral("\u00b1") + widestAngle
+        : c == AngleTableModel::Target
+            ? QStringLiteral("%1 \u2013 %2").arg(formatDegrees(-180, 0), formatDegrees(180, 0))
+            : widestAngle;
+    m_tableView->setColumnWidth(
+        c, std::max(m_tableView->columnWidth(c), metrics.horizontalAdvance(widest) + padding));
+  }
   const int table = std::min(m_tableView->horizontalHeader()->length() +
                                  m_tableView->verticalScrollBar()->sizeHint().width() +
                                  2 * m_tableView->frameWidth(),

@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
@@ -75,7 +76,11 @@ SettingsDialog::SettingsDialog(const AppSettings& s, Theme theme, QWidget* paren
   auto* browse = new QPushButton(tr("&Browse..."), this);
   folderRow->addWidget(m_dataFolder, 1);
   folderRow->addWidget(browse);
-  dataForm->addRow(tr("Data &folder:"), folderRow);
+  // A label given as text to addRow() with a layout as its field has no buddy, so its
+  // mnemonic would show as a literal "&": name the line edit as the buddy.
+  auto* folderLabel = new QLabel(tr("Data &folder:"), this);
+  folderLabel->setBuddy(m_dataFolder);
+  dataForm->addRow(folderLabel, folderRow);
   m_database->setPlaceholderText(tr("armtrack.db in the data folder"));
   m_database->setToolTip(tr("A file path, sqlite:PATH, or postgresql://user@host:port/dbname"));
   m_database->setAccessibleName(tr("Database"));
