@@ -257,8 +257,8 @@ class JointEstimator {
   virtual JointEstimate estimate() const = 0;
   virtual const EstimatorCounters& counters() const = 0;
   /// True while no optical measurement (Kinect position or marker pixel) has been fused for
-  /// headingMemory seconds: the arm's heading about the vertical then rests on the start-pose
-  /// assumption alone.
+  /// 5 s (a fixed span, not a setting): the arm's heading about the vertical then rests on the
+  /// start-pose assumption alone.
   virtual bool headingFromStartPoseOnly() const = 0;
   virtual void reset() = 0;
   /// Full state covariance (for tests and diagnostics).
