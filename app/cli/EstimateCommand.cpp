@@ -257,12 +257,6 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
   std::vector<fs::path> csvOut(inputs.size()), reportOut(inputs.size());
   if (a.flag("--out-dir")) {
     outDir = a.required("--out-dir");
-    std::error_code ec;
-    if (fs::exists(*outDir, ec) && !fs::is_directory(*outDir, ec))
-      throw std::runtime_error(outDir->string() + ": is not a folder; give a folder for --out-dir");
-    fs::create_directories(*outDir, ec);
-    if (ec)
-      throw std::runtime_error(outDir->string() + ": cannot make the folder: " + ec.message());
     std::map<std::string, std::string> byStem;
     for (std::size_t i = 0; i < inputs.size(); ++i) {
       const std::string stem = inputs[i].stem().string();
@@ -271,13 +265,21 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
                inQuotes(stem + ".csv") + " in --out-dir");
       csvOut[i] = *outDir / (stem + ".csv");
       reportOut[i] = *outDir / (stem + ".md");
-      for (const fs::path& o : {csvOut[i], reportOut[i]}) {
+      for (const fs::path& o : {csvOut[i], reportOut[i]})
         for (const fs::path& in : inputs)
           if (samePath(o, in) || samePath(o, sidecarPath(in)))
             a.fail("--out-dir: " + inQuotes(o.string()) + " would overwrite the recording " +
                    inQuotes(in.string()));
-        checkOutputPath(o, setup.overwrite);
-      }
+    }
+    std::error_code ec;
+    if (fs::exists(*outDir, ec) && !fs::is_directory(*outDir, ec))
+      throw std::runtime_error(outDir->string() + ": is not a folder; give a folder for --out-dir");
+    fs::create_directories(*outDir, ec);
+    if (ec)
+      throw std::runtime_error(outDir->string() + ": cannot make the folder: " + ec.message());
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      checkOutputPath(csvOut[i], setup.overwrite);
+      checkOutputPath(reportOut[i], setup.overwrite);
     }
   }
   std::optional<Calibration> calibration;
