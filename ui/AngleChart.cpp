@@ -1,7 +1,9 @@
 #include "ui/AngleChart.h"
 
 #include <QAreaSeries>
+#include <QEvent>
 #include <QLineSeries>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QValueAxis>
 #include <algorithm>
@@ -58,15 +60,10 @@ AngleChart::AngleChart(int angle, QWidget* parent)
   m_chart->legend()->hide();
   m_chart->setMargins(QMargins(4, 2, 4, 2));
   m_chart->setBackgroundRoundness(0);
-  m_chart->setTitle(angleDisplayName(angle) + QStringLiteral(" (\u00b0)"));
   m_chart->setTitleFont(scaledFont(m_chart->titleFont(), 0.9));
   setChart(m_chart);
   setRenderHint(QPainter::Antialiasing, false);  // thousands of points at 30 Hz
   setMinimumSize(1, 1);
-  setAccessibleName(angleDisplayName(angle));
-  setAccessibleDescription(tr("Plot of %1 over time in degrees; the table beside it holds the "
-                              "same numbers")
-                               .arg(angleDisplayName(angle)));
   setFocusPolicy(Qt::NoFocus);
 
   m_x = new QValueAxis;
@@ -91,24 +88,40 @@ AngleChart::AngleChart(int angle, QWidget* parent)
   m_targetUpper = new QLineSeries(this);
   m_targetLower = new QLineSeries(this);
   m_target = new QAreaSeries(m_targetUpper, m_targetLower);
-  m_target->setName(tr("Target"));
   attach(m_target);
   m_bandUpper = new QLineSeries(this);
   m_bandLower = new QLineSeries(this);
   m_band = new QAreaSeries(m_bandUpper, m_bandLower);
-  m_band->setName(tr("\u00b12\u03c3"));
   attach(m_band);
   m_overlay = new QLineSeries;
-  m_overlay->setName(tr("Compared session"));
   attach(m_overlay);
   m_line = new QLineSeries;
-  m_line->setName(angleDisplayName(angle));
   attach(m_line);
   m_cursor = new QLineSeries;
   attach(m_cursor);
   m_x->setRange(0, 10);
   m_y->setRange(m_yMin, m_yMax);
   setDark(false);
+  retranslateUi();
+}
+
+void AngleChart::retranslateUi() {
+  const QString name = angleDisplayName(m_angle);
+  m_chart->setTitle(tr("%1 (\u00b0)").arg(name));
+  m_chart->setLocale(QLocale());
+  m_chart->setLocalizeNumbers(true);
+  setAccessibleName(name);
+  setAccessibleDescription(
+      tr("Plot of %1 over time in degrees; the table beside it holds the same numbers").arg(name));
+  m_target->setName(tr("Target"));
+  m_band->setName(tr("±2σ"));
+  m_overlay->setName(tr("Compared session"));
+  m_line->setName(name);
+}
+
+void AngleChart::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QChartView::changeEvent(event);
 }
 
 void AngleChart::setDark(bool dark) {

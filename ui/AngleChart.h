@@ -46,8 +46,10 @@ class AngleChart : public QChartView {
 
  protected:
   void mousePressEvent(QMouseEvent* event) override;
+  void changeEvent(QEvent* event) override;
 
  private:
+  void retranslateUi();
   QLineSeries* verticalLine(std::size_t index);
   void fitY(double lo, double hi);
 

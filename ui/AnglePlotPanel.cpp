@@ -19,7 +19,6 @@ bool isDark(const QPalette& p) {
 }  // namespace
 
 AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_window + 1.0) {
-  setAccessibleName(tr("Joint angle plots"));
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   m_splitter = new QSplitter(Qt::Horizontal, this);
@@ -42,10 +41,6 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   m_table = new AngleTableModel(this);
   m_tableView = new QTableView(m_splitter);
   m_tableView->setModel(m_table);
-  m_tableView->setAccessibleName(tr("Joint angles table"));
-  m_tableView->setAccessibleDescription(
-      tr("The current value of each angle, its uncertainty, the range over the plotted time "
-         "and the target"));
   m_tableView->verticalHeader()->hide();
   m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
   m_tableView->setSelectionBehavior(QAbstractItemView::SelectRows);
@@ -60,6 +55,16 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
     if (m_dirty && isVisible()) refresh();
   });
   setRefreshRate(30.0);
+  retranslateUi();
+}
+
+void AnglePlotPanel::retranslateUi() {
+  setAccessibleName(tr("Joint angle plots"));
+  m_tableView->setAccessibleName(tr("Joint angles table"));
+  m_tableView->setAccessibleDescription(
+      tr("The current value of each angle, its uncertainty, the range over the plotted time "
+         "and the target"));
+  markDirty();
 }
 
 void AnglePlotPanel::setMode(Mode mode) {
@@ -195,6 +200,7 @@ void AnglePlotPanel::refresh() {
 }
 
 void AnglePlotPanel::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
   if (event->type() == QEvent::PaletteChange) {
     const bool dark = isDark(palette());
     for (AngleChart* c : m_charts) c->setDark(dark);

@@ -88,6 +88,7 @@ class AnglePlotPanel : public QWidget {
 
  private:
   void markDirty() { m_dirty = true; }
+  void retranslateUi();
   /// Once, when first shown wide enough: the table as wide as its columns.
   void sizeTable();
 

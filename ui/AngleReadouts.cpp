@@ -11,7 +11,6 @@
 namespace armtrack::ui {
 
 AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
-  setAccessibleName(tr("Current joint angles"));
   auto* grid = new QGridLayout(this);
   grid->setContentsMargins(4, 4, 4, 4);
   grid->setSpacing(6);
@@ -22,7 +21,7 @@ AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
     auto* v = new QVBoxLayout(r.box);
     v->setContentsMargins(8, 4, 8, 4);
     v->setSpacing(0);
-    r.name = new QLabel(angleDisplayName(a), r.box);
+    r.name = new QLabel(r.box);
     r.name->setWordWrap(true);
     r.value = new QLabel(formatDegrees(std::nan("")), r.box);
     r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
@@ -31,9 +30,8 @@ AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
     v->addWidget(r.name);
     v->addWidget(r.value);
     v->addWidget(r.note);
-    r.box->setAccessibleName(angleDisplayName(a));
-    r.value->setAccessibleName(angleDisplayName(a));
   }
+  retranslateUi();
   setColumns(kAngleCount);
   applyFonts();
   applyColours();
@@ -41,6 +39,17 @@ AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
     if (m_dirty) refresh();
   });
   setRefreshRate(10.0);
+}
+
+void AngleReadouts::retranslateUi() {
+  setAccessibleName(tr("Current joint angles"));
+  for (int a = 0; a < kAngleCount; ++a) {
+    Readout& r = m_readouts[static_cast<std::size_t>(a)];
+    r.name->setText(angleDisplayName(a));
+    r.box->setAccessibleName(angleDisplayName(a));
+    r.value->setAccessibleName(angleDisplayName(a));
+  }
+  m_dirty = true;  // the values' number format and the notes' words
 }
 
 void AngleReadouts::setColumns(int columns) {
@@ -122,6 +131,7 @@ void AngleReadouts::applyColours() {
 void AngleReadouts::changeEvent(QEvent* event) {
   if (event->type() == QEvent::PaletteChange) applyColours();
   if (event->type() == QEvent::FontChange) applyFonts();
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
   QWidget::changeEvent(event);
 }
 

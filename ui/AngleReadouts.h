@@ -51,6 +51,7 @@ class AngleReadouts : public QWidget {
   };
   void applyFonts();
   void applyColours();
+  void retranslateUi();
 
   std::array<Readout, kAngleCount> m_readouts;
   std::array<bool, kAngleCount> m_uncertain{};

@@ -5,6 +5,8 @@
 
 #include <QCoreApplication>
 
+#include "ui/Retranslate.h"
+
 namespace armtrack::ui {
 
 QString angleDisplayName(int angle) {
@@ -21,7 +23,7 @@ QString angleDisplayName(int angle) {
 
 QString formatDegrees(double deg, int decimals) {
   if (!std::isfinite(deg)) return QStringLiteral("\u2013");
-  return QStringLiteral("%1\u00b0").arg(deg, 0, 'f', decimals);
+  return QStringLiteral("%L1\u00b0").arg(deg, 0, 'f', decimals);
 }
 
 AngleTableModel::AngleTableModel(QObject* parent) : QAbstractTableModel(parent) {
@@ -75,7 +77,7 @@ QVariant AngleTableModel::headerData(int section, Qt::Orientation orientation, i
     case Value:
       return tr("Now");
     case Uncertainty:
-      return tr("\u00b12\u03c3");
+      return tr("±2σ");
     case Minimum:
       return tr("Min");
     case Maximum:
@@ -85,6 +87,11 @@ QVariant AngleTableModel::headerData(int section, Qt::Orientation orientation, i
     default:
       return {};
   }
+}
+
+bool AngleTableModel::event(QEvent* event) {
+  refreshOnLanguageChange(this, event);
+  return QAbstractTableModel::event(event);
 }
 
 void AngleTableModel::setValues(const AngleSample* current,

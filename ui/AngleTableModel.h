@@ -22,6 +22,8 @@ class AngleTableModel : public QAbstractTableModel {
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   QVariant headerData(int section, Qt::Orientation orientation,
                       int role = Qt::DisplayRole) const override;
+  /// A LanguageChange (passed on by the owning widget) refreshes the views' words.
+  bool event(QEvent* event) override;
 
   /// The current values (the sample, or none), and each angle's min and max over the window
   /// (NaN when unknown). Emits dataChanged for what changed.

@@ -22,24 +22,20 @@ bool isDark(const QPalette& p) {
 }  // namespace
 
 ArmView::ArmView(QWidget* parent, Host host) : VtkView(parent, host), m_scene(new ArmScene) {
-  setAccessibleName(tr("3D view of the arm"));
-  setAccessibleDescription(
-      tr("The estimated arm with its sensors. Arrow keys turn the view, plus and minus zoom, "
-         "Home resets the view."));
-  setToolTip(tr("Drag to turn the view, scroll to zoom; Home resets it"));
   renderWindow()->AddRenderer(m_scene->renderer());
   auto style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
   style->SetDefaultRenderer(m_scene->renderer());
   interactor()->SetInteractorStyle(style);
   setSideLabelFor(Side::Right);
 
-  m_resetView = new QAction(tr("Reset view"), this);
+  m_resetView = new QAction(this);
   m_resetView->setShortcut(QKeySequence(Qt::Key_Home));
   m_resetView->setShortcutContext(Qt::WidgetWithChildrenShortcut);
   connect(m_resetView, &QAction::triggered, this, &ArmView::resetView);
   addAction(m_resetView);
 
   applyPalette();
+  retranslateUi();
   m_refresh.setTimerType(Qt::PreciseTimer);
   connect(&m_refresh, &QTimer::timeout, this, [this] {
     if (m_dirty && isVisible()) scheduleFrame();
@@ -48,6 +44,21 @@ ArmView::ArmView(QWidget* parent, Host host) : VtkView(parent, host), m_scene(ne
 }
 
 ArmView::~ArmView() = default;
+
+void ArmView::retranslateUi() {
+  // (An owner may give the view another accessible name; the description stays general.)
+  if (accessibleName().isEmpty() || accessibleName() == m_defaultName) {
+    m_defaultName = tr("3D view of the arm");
+    setAccessibleName(m_defaultName);
+  }
+  setAccessibleDescription(
+      tr("The estimated arm with its sensors. Arrow keys turn the view, plus and minus zoom, "
+         "Home resets the view."));
+  setToolTip(tr("Drag to turn the view, scroll to zoom; Home resets it"));
+  m_resetView->setText(tr("Reset view"));
+  setSideLabelFor(m_side);
+  markDirty();
+}
 
 void ArmView::setSideLabelFor(Side side) {
   m_scene->setSideLabel(side == Side::Left ? tr("Left arm").toStdString()
@@ -164,6 +175,7 @@ void ArmView::keyPressEvent(QKeyEvent* event) {
 
 void ArmView::changeEvent(QEvent* event) {
   if (event->type() == QEvent::PaletteChange) applyPalette();
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
   VtkView::changeEvent(event);
 }
 

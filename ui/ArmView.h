@@ -88,6 +88,7 @@ class ArmView : public VtkView {
   void markDirty();
   void setSideLabelFor(Side side);
   void applyPalette();
+  void retranslateUi();
 
   std::unique_ptr<ArmScene> m_scene;
   QTimer m_refresh;
@@ -97,6 +98,7 @@ class ArmView : public VtkView {
   Side m_side = Side::Right;
   std::uint64_t m_rejected = 0;
   QAction* m_resetView = nullptr;
+  QString m_defaultName;  // the accessible name given here, in the language it was made in
 };
 
 }  // namespace armtrack::ui

@@ -5,10 +5,13 @@
 #include <QHeaderView>
 #include <QIcon>
 #include <QLabel>
+#include <QLocale>
 #include <QPixmap>
 #include <QTableView>
 #include <QVBoxLayout>
 #include <algorithm>
+
+#include "ui/Retranslate.h"
 
 namespace armtrack::ui {
 
@@ -29,15 +32,15 @@ QColor healthColour(HealthLevel level, bool dark) {
 QString healthWord(HealthLevel level) {
   switch (level) {
     case HealthLevel::Ok:
-      return QObject::tr("OK");
+      return DeviceHealthModel::tr("OK");
     case HealthLevel::Warning:
-      return QObject::tr("warning");
+      return DeviceHealthModel::tr("warning");
     case HealthLevel::Down:
-      return QObject::tr("down");
+      return DeviceHealthModel::tr("down");
     case HealthLevel::Idle:
       break;
   }
-  return QObject::tr("idle");
+  return DeviceHealthModel::tr("idle");
 }
 
 // --- HealthTracker ---------------------------------------------------------------------------
@@ -90,27 +93,27 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
     const double silent = t.seenData ? now - t.lastData : now - m_started;
     if (state == DeviceState::Error) {
       r.level = HealthLevel::Down;
-      r.status = reason.isEmpty() ? QObject::tr("error") : QObject::tr("error: %1").arg(reason);
+      r.status = reason.isEmpty() ? tr("error") : tr("error: %1").arg(reason);
     } else if (state == DeviceState::Disconnected) {
       r.level = t.seenData ? HealthLevel::Down : HealthLevel::Idle;
-      r.status = QObject::tr("disconnected");
+      r.status = tr("disconnected");
     } else if (state == DeviceState::Connecting) {
       r.level = t.seenData ? HealthLevel::Down : HealthLevel::Warning;
-      r.status = t.seenData ? (reason.isEmpty() ? QObject::tr("reconnecting")
-                                                : QObject::tr("reconnecting: %1").arg(reason))
-                            : QObject::tr("connecting");
+      r.status = t.seenData
+                     ? (reason.isEmpty() ? tr("reconnecting") : tr("reconnecting: %1").arg(reason))
+                     : tr("connecting");
     } else if (silent > silentAfter && (t.seenData || silent > 5 * silentAfter)) {
       r.level = HealthLevel::Down;
-      r.status = QObject::tr("no data for %1 s").arg(silent, 0, 'f', 1);
+      r.status = tr("no data for %L1 s").arg(silent, 0, 'f', 1);
     } else if (!t.seenData) {
       r.level = HealthLevel::Warning;
-      r.status = QObject::tr("waiting for data");
+      r.status = tr("waiting for data");
     } else if (now - t.lastProblem < warnWindow) {
       r.level = HealthLevel::Warning;
-      r.status = QObject::tr("streaming, losing samples");
+      r.status = tr("streaming, losing samples");
     } else {
       r.level = HealthLevel::Ok;
-      r.status = QObject::tr("streaming");
+      r.status = tr("streaming");
     }
   }
 }
@@ -122,7 +125,7 @@ bool HealthTracker::allOk() const {
 }
 
 QString HealthTracker::summary() const {
-  if (m_rows.empty()) return QObject::tr("No devices");
+  if (m_rows.empty()) return tr("No devices");
   QStringList down, warn;
   for (const StreamHealthRow& r : m_rows) {
     const QString what = r.device + QLatin1Char(' ') + r.stream + QStringLiteral(": ") + r.status;
@@ -131,7 +134,7 @@ QString HealthTracker::summary() const {
   }
   if (!down.isEmpty()) return down.join(QStringLiteral("; "));
   if (!warn.isEmpty()) return warn.join(QStringLiteral("; "));
-  return QObject::tr("All devices are streaming");
+  return tr("All devices are streaming");
 }
 
 // --- DeviceHealthModel -----------------------------------------------------------------------
@@ -163,11 +166,11 @@ QVariant DeviceHealthModel::data(const QModelIndex& index, int role) const {
       return r.level == HealthLevel::Ok ? r.status
                                         : healthWord(r.level) + QStringLiteral(": ") + r.status;
     case Rate:
-      return QStringLiteral("%1 Hz").arg(r.rateHz, 0, 'f', r.rateHz < 100 ? 1 : 0);
+      return tr("%L1 Hz").arg(r.rateHz, 0, 'f', r.rateHz < 100 ? 1 : 0);
     case Lost:
-      return QString::number(r.lost);
+      return QLocale().toString(static_cast<qulonglong>(r.lost));
     case Rejected:
-      return QString::number(r.rejected);
+      return QLocale().toString(static_cast<qulonglong>(r.rejected));
     default:
       return {};
   }
@@ -191,6 +194,11 @@ QVariant DeviceHealthModel::headerData(int section, Qt::Orientation o, int role)
     default:
       return {};
   }
+}
+
+bool DeviceHealthModel::event(QEvent* event) {
+  refreshOnLanguageChange(this, event);
+  return QAbstractTableModel::event(event);
 }
 
 void DeviceHealthModel::setRows(const std::vector<StreamHealthRow>& rows) {
@@ -230,15 +238,12 @@ void DeviceHealthModel::setDark(bool dark) {
 
 DeviceHealthPanel::DeviceHealthPanel(QWidget* parent)
     : QWidget(parent), m_model(new DeviceHealthModel(this)) {
-  setAccessibleName(tr("Device health"));
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  m_summary = new QLabel(tr("No devices"), this);
+  m_summary = new QLabel(this);
   m_summary->setWordWrap(true);
-  m_summary->setAccessibleName(tr("Device health summary"));
   m_view = new QTableView(this);
   m_view->setModel(m_model);
-  m_view->setAccessibleName(tr("Devices and streams"));
   m_view->verticalHeader()->hide();
   // Sized to the contents when the rows change, not at every update (that measures every cell).
   m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
@@ -249,10 +254,21 @@ DeviceHealthPanel::DeviceHealthPanel(QWidget* parent)
   layout->addWidget(m_summary);
   layout->addWidget(m_view, 1);
   m_model->setDark(palette().color(QPalette::Window).lightness() < 128);
+  retranslateUi();
+}
+
+void DeviceHealthPanel::retranslateUi() {
+  setAccessibleName(tr("Device health"));
+  m_summary->setAccessibleName(tr("Device health summary"));
+  m_view->setAccessibleName(tr("Devices and streams"));
+  // The streams' states in words of the new language, from the figures last seen.
+  if (m_lastStats) m_tracker.update(*m_lastStats, m_lastElapsed);
+  publish();
 }
 
 void DeviceHealthPanel::setStats(const session::SessionStats& stats) {
   m_lastElapsed = stats.elapsed;
+  m_lastStats = stats;
   m_tracker.update(stats, stats.elapsed);
   publish();
 }
@@ -264,6 +280,7 @@ void DeviceHealthPanel::setDeviceState(int device, armtrack::DeviceState state,
 
 void DeviceHealthPanel::clear() {
   m_tracker = HealthTracker{};
+  m_lastStats.reset();
   m_model->setRows({});
   publish();
 }
@@ -294,6 +311,7 @@ void DeviceHealthPanel::publish() {
 void DeviceHealthPanel::changeEvent(QEvent* event) {
   if (event->type() == QEvent::PaletteChange)
     m_model->setDark(palette().color(QPalette::Window).lightness() < 128);
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
   QWidget::changeEvent(event);
 }
 

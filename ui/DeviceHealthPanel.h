@@ -4,6 +4,7 @@
 #pragma once
 
 #include <QAbstractTableModel>
+#include <QCoreApplication>
 #include <QIcon>
 #include <QString>
 #include <QWidget>
@@ -32,13 +33,16 @@ struct StreamHealthRow {
 /// Turns the session's figures, sampled over time, into a level per stream. Plain logic, so the
 /// rules are tested without a window.
 class HealthTracker {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::ui::HealthTracker)
+
  public:
   /// A stream that delivered nothing for this long while its device streams is down (s).
   double silentAfter = 0.6;
   /// Samples lost or rejected within this many seconds make a stream a warning (s).
   double warnWindow = 3.0;
 
-  /// Takes the newest figures; now is any monotonic time (s), e.g. stats.elapsed.
+  /// Takes the newest figures; now is any monotonic time (s), e.g. stats.elapsed. The same
+  /// figures again at the same time change nothing but the words (after a change of language).
   void update(const session::SessionStats& stats, double now);
   /// A state change the session signalled (its reason is kept for the status text).
   void setDeviceState(int device, DeviceState state, const QString& reason);
@@ -70,6 +74,8 @@ class DeviceHealthModel : public QAbstractTableModel {
   int columnCount(const QModelIndex& parent = {}) const override;
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   QVariant headerData(int section, Qt::Orientation o, int role = Qt::DisplayRole) const override;
+  /// A LanguageChange (passed on by the owning widget) refreshes the views' words.
+  bool event(QEvent* event) override;
   void setRows(const std::vector<StreamHealthRow>& rows);
   void setDark(bool dark);
 
@@ -109,9 +115,11 @@ class DeviceHealthPanel : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
+  void retranslateUi();
   void publish();
 
   HealthTracker m_tracker;
+  std::optional<session::SessionStats> m_lastStats;
   DeviceHealthModel* m_model;
   QTableView* m_view;
   QLabel* m_summary;

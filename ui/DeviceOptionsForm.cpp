@@ -1,5 +1,6 @@
 #include "ui/DeviceOptionsForm.h"
 
+#include <QEvent>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -68,6 +69,15 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
     m_form->addRow(label, edit);
     m_edits.push_back(edit);
   }
+}
+
+void DeviceOptionsForm::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) {
+    setAccessibleName(tr("Device options"));
+    for (std::size_t i = 0; i < m_fields.size() && i < m_edits.size(); ++i)
+      if (m_fields[i].placeholder.isEmpty()) m_edits[i]->setPlaceholderText(tr("(not set)"));
+  }
+  QWidget::changeEvent(event);
 }
 
 void DeviceOptionsForm::setValues(const QVariantMap& options) {

@@ -44,6 +44,9 @@ class DeviceOptionsForm : public QWidget {
  signals:
   void changed();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   QFormLayout* m_form;
   std::vector<OptionField> m_fields;

@@ -1,5 +1,6 @@
 #include "ui/RepetitionCounterWidget.h"
 
+#include <QEvent>
 #include <QLabel>
 #include <QProgressBar>
 #include <QVBoxLayout>
@@ -10,22 +11,33 @@
 namespace armtrack::ui {
 
 RepetitionCounterWidget::RepetitionCounterWidget(QWidget* parent) : QWidget(parent) {
-  setAccessibleName(tr("Repetitions"));
   auto* v = new QVBoxLayout(this);
   v->setContentsMargins(4, 4, 4, 4);
-  m_caption = new QLabel(tr("Repetitions"), this);
+  m_caption = new QLabel(this);
   m_count = new QLabel(this);
   setScaledFont(m_count, 2.6);
   m_detail = new QLabel(this);
   m_detail->setWordWrap(true);
   m_progress = new QProgressBar(this);
   m_progress->setTextVisible(false);
-  m_progress->setAccessibleName(tr("Repetitions done of the target"));
   v->addWidget(m_caption);
   v->addWidget(m_count);
   v->addWidget(m_detail);
   v->addWidget(m_progress);
+  retranslateUi();
+}
+
+void RepetitionCounterWidget::retranslateUi() {
+  setAccessibleName(tr("Repetitions"));
+  m_progress->setAccessibleName(tr("Repetitions done of the target"));
+  m_caption->setText(m_angleName.isEmpty() ? tr("Repetitions")
+                                           : tr("Repetitions (%1)").arg(m_angleName));
   render();
+}
+
+void RepetitionCounterWidget::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QWidget::changeEvent(event);
 }
 
 void RepetitionCounterWidget::setTarget(std::optional<int> repetitions) {
@@ -34,6 +46,7 @@ void RepetitionCounterWidget::setTarget(std::optional<int> repetitions) {
 }
 
 void RepetitionCounterWidget::setAngleName(const QString& name) {
+  m_angleName = name;
   m_caption->setText(name.isEmpty() ? tr("Repetitions") : tr("Repetitions (%1)").arg(name));
 }
 

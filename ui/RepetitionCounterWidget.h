@@ -28,7 +28,12 @@ class RepetitionCounterWidget : public QWidget {
   /// The text shown, for tests and screen readers.
   QString text() const;
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
+  QString m_angleName;
   QLabel* m_caption;
   QLabel* m_count;
   QLabel* m_detail;

@@ -61,10 +61,10 @@ VtkBridge::~VtkBridge() {
 
 QString VtkBridge::initialize(QOpenGLContext* context, int widthPx, int heightPx) {
   if (!context || !context->isValid())
-    return QStringLiteral("OpenGL is not available, so the 3D view cannot be shown.");
+    return tr("OpenGL is not available, so the 3D view cannot be shown.");
   const QSurfaceFormat f = context->format();
   if (f.majorVersion() * 10 + f.minorVersion() < 32)
-    return QStringLiteral("The 3D view needs OpenGL 3.2; this display offers %1.%2.")
+    return tr("The 3D view needs OpenGL 3.2; this display offers %1.%2.")
         .arg(f.majorVersion())
         .arg(f.minorVersion());
   m_window->SetReadyForRendering(true);

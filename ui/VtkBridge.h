@@ -8,6 +8,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkSmartPointer.h>
+#include <QCoreApplication>
 
 #include <QPointF>
 #include <QString>
@@ -19,6 +20,8 @@ class QOpenGLContext;
 namespace armtrack::ui {
 
 class VtkBridge {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::ui::VtkBridge)
+
  public:
   struct Hooks {
     std::function<void()> makeCurrent;   ///< the host's context current on its surface

@@ -11,6 +11,7 @@
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
 #include "app/clinical/Outputs.h"
+#include "app/i18n/Language.h"
 #include "core/exports/Exports.h"
 
 namespace armtrack::cli {
@@ -18,15 +19,19 @@ namespace armtrack::cli {
 namespace {
 
 constexpr std::string_view kReportHelp =
-    R"(Usage: armtrack-cli report ID --pdf OUT.pdf [--overwrite]
+    R"(Usage: armtrack-cli report ID --pdf OUT.pdf [--lang CODE] [--overwrite]
        armtrack-cli report --patient CODE --from YYYY-MM-DD --to YYYY-MM-DD --pdf OUT.pdf
-                           [--overwrite]
+                           [--lang CODE] [--overwrite]
 
 The first form writes session ID's report: patient and session details, devices and calibration,
 the metrics per clinical angle, joint-angle plots, repetitions, the angles against normative
 ranges and against the patient's earlier sessions, the notes. The second writes a progress report:
 range of motion per clinical angle against date over the sessions from --from to --to
 (inclusive). Every report is written to the audit log.
+
+--lang CODE writes the report in that language (en, de or es); its numbers, dates and units
+follow that language's conventions. Without it, the system's locale decides (LANG, LC_ALL),
+and a language ArmTrack does not speak gives English.
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -100,8 +105,13 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
                        {"--patient", true},
                        {"--from", true},
                        {"--to", true},
+                       {"--lang", true},
                        {"--overwrite", false}}));
   if (a.help()) return out << kReportHelp, 0;
+  const QString lang = qs(a.value("--lang").value_or(""));
+  if (a.value("--lang") && i18n::shippedLanguageFor(lang).isEmpty())
+    a.fail("--lang: ArmTrack has no translation for '" + ss(lang) + "'; choose one of " +
+           ss(i18n::shippedLanguageList()));
   const std::string pdf = a.required("--pdf");
   const bool progress = a.value("--patient").has_value();
   if (progress && !a.positionals().empty())
@@ -111,6 +121,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   const qint64 id = progress ? 0 : sessionIdArgument(a);
   checkOutputPath(pdf, a.flag("--overwrite"), /*recording=*/false);
   const std::unique_ptr<GuiApplication> gui = guiApplication();
+  const i18n::ScopedLanguage language(lang);  // the words, numbers and dates of the report
   ClinicalContext c(a, {}, true);
   return progress ? progressReport(c, a, pdf, err) : sessionReport(c, id, pdf, err);
 }

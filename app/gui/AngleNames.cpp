@@ -1,22 +1,12 @@
 #include "app/gui/AngleNames.h"
 
-#include <QCoreApplication>
-
 #include "core/kinematics/ClinicalAngles.h"
+#include "ui/AngleTableModel.h"
 
 namespace armtrack::gui {
 
 QString angleName(int index) {
-  static const char* const kNames[] = {
-      QT_TRANSLATE_NOOP("armtrack::gui::AngleNames", "Shoulder flexion"),
-      QT_TRANSLATE_NOOP("armtrack::gui::AngleNames", "Shoulder abduction"),
-      QT_TRANSLATE_NOOP("armtrack::gui::AngleNames", "Shoulder internal rotation"),
-      QT_TRANSLATE_NOOP("armtrack::gui::AngleNames", "Elbow flexion"),
-      QT_TRANSLATE_NOOP("armtrack::gui::AngleNames", "Forearm pronation"),
-  };
-  static_assert(std::size(kNames) == 5);
-  if (index < 0 || index >= 5) return {};
-  return QCoreApplication::translate("armtrack::gui::AngleNames", kNames[index]);
+  return ui::angleDisplayName(index);
 }
 
 int angleIndex(const QString& key) {

@@ -24,12 +24,25 @@
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/PatientRecords.h"
+#include "app/i18n/Language.h"
 #include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
 
 namespace {
 constexpr auto kLastUser = "signIn/lastUser";
+}
+
+QString AppController::roleText(storage::Role role) {
+  switch (role) {
+    case storage::Role::Admin:
+      return tr("administrator");
+    case storage::Role::Therapist:
+      return tr("therapist");
+    case storage::Role::Home:
+      return tr("home account");
+  }
+  return storage::roleName(role);
 }
 
 AppController::AppController(AppOptions options, QObject* parent)
@@ -52,7 +65,7 @@ AppController::~AppController() {
 void AppController::start() {
   QSettings settings;
   m_settings = AppSettings::load(settings);
-  installTranslators(m_options.language.isEmpty() ? m_settings.language : m_options.language);
+  i18n::setLanguage(m_options.language.isEmpty() ? m_settings.language : m_options.language);
   applyTheme(parseTheme(settings.value(QStringLiteral("display/theme")).toString()));
   loadPlugins();
   m_window->show();
@@ -112,10 +125,13 @@ void AppController::startDemo() {
   if (url.engine == storage::DatabaseUrl::Engine::Sqlite)
     QDir().mkpath(QFileInfo(url.path).absolutePath());
   auto* wait = new MessageScreen(
-      tr("Preparing the demo"),
-      tr("Making demo records in %1: three patients, two protocols and six weeks of sessions, "
-         "simulated and analysed the way real ones are. This takes a few seconds.")
-          .arg(url.display()));
+      [] { return tr("Preparing the demo"); },
+      [where = url.display()] {
+        return tr("Making demo records in %1: three patients, two protocols and six weeks of "
+                  "sessions, simulated and analysed the way real ones are. This takes a few "
+                  "seconds.")
+            .arg(where);
+      });
   wait->setProgress(0);
   m_window->showScreen(wait);
   RecordsJob* job = m_records->startJob(
@@ -126,18 +142,22 @@ void AppController::startDemo() {
       },
       [this, wait, url](bool built) {
         if (!built) return QApplication::quit();
-        wait->setText(tr("Signing in as the demo therapist..."));
+        wait->setText([] { return tr("Signing in as the demo therapist..."); });
         m_records->signIn(
             url, QString::fromLatin1(DemoAccounts::kTherapist),
             QString::fromLatin1(DemoAccounts::kPassword), wait,
             [this](const storage::User& user) {
-              m_window->setSignedIn(
-                  tr("%1 (%2, demo)").arg(user.name, storage::roleName(user.role)));
-              m_window->showStatus(tr("Demo records: accounts \"%1\" and \"%2\", password \"%3\".")
-                                       .arg(QString::fromLatin1(DemoAccounts::kTherapist),
-                                            QString::fromLatin1(DemoAccounts::kAdmin),
-                                            QString::fromLatin1(DemoAccounts::kPassword)),
-                                   0);
+              m_window->setSignedIn([name = user.name, role = user.role] {
+                return tr("%1 (%2, demo)").arg(name, roleText(role));
+              });
+              m_window->showStatus(
+                  [] {
+                    return tr("Demo records: accounts \"%1\" and \"%2\", password \"%3\".")
+                        .arg(QString::fromLatin1(DemoAccounts::kTherapist),
+                             QString::fromLatin1(DemoAccounts::kAdmin),
+                             QString::fromLatin1(DemoAccounts::kPassword));
+                  },
+                  0);
               emit signedIn(user.name);
               startDemoSession();
             },
@@ -145,7 +165,7 @@ void AppController::startDemo() {
       },
       [this](const RecordsFailure& f) { showDatabaseProblem(f); });
   connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
-  wait->addAction(tr("&Cancel"), [job] { job->cancel(); });
+  wait->addAction([] { return tr("&Cancel"); }, [job] { job->cancel(); });
 }
 
 void AppController::showSettings() {
@@ -163,15 +183,18 @@ void AppController::applySettings(const AppSettings& s, Theme theme) {
   saveSettings();
   QSettings().setValue(QStringLiteral("display/theme"), themeName(theme));
   applyTheme(theme);
-  if (s.language != before.language)
-    installTranslators(m_options.language.isEmpty() ? s.language : m_options.language);
+  if (s.language != before.language) {
+    // The choice made now wins over --lang; every screen shown switches at once.
+    m_options.language.clear();
+    i18n::setLanguage(s.language);
+  }
   if (s.pluginFolders != before.pluginFolders) m_plugins.load(s.pluginFolders);
-  QString note = tr("Settings saved.");
-  if (s.effectiveDatabase().display() != before.effectiveDatabase().display())
-    note += u' ' + tr("The new records location is used at the next sign-in.");
-  if (s.language != before.language)
-    note += u' ' + tr("Screens opened from now on use the new language.");
-  m_window->showStatus(note);
+  const bool moved = s.effectiveDatabase().display() != before.effectiveDatabase().display();
+  m_window->showStatus([moved] {
+    QString note = tr("Settings saved.");
+    if (moved) note += u' ' + tr("The new records location is used at the next sign-in.");
+    return note;
+  });
   emit settingsApplied();
 }
 
@@ -199,7 +222,9 @@ void AppController::openRecords() {
   } catch (const storage::StorageError& e) {
     return showDatabaseProblem({e.kind(), QString::fromStdString(e.what())});
   }
-  auto* wait = new MessageScreen(tr("Opening the records"), tr("Opening %1...").arg(url.display()));
+  auto* wait =
+      new MessageScreen([] { return tr("Opening the records"); },
+                        [where = url.display()] { return tr("Opening %1...").arg(where); });
   wait->setProgress(-1);
   m_window->showScreen(wait);
   m_records->probe(
@@ -267,7 +292,8 @@ void AppController::showSignIn() {
 }
 
 void AppController::onSignedIn(const storage::User& user) {
-  m_window->setSignedIn(tr("%1 (%2)").arg(user.name, storage::roleName(user.role)));
+  m_window->setSignedIn(
+      [name = user.name, role = user.role] { return tr("%1 (%2)").arg(name, roleText(role)); });
   emit signedIn(user.name);
   if (user.role == storage::Role::Home) return showHomeModeLater();
   showPatients();
@@ -323,7 +349,6 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
       *m_records, plan.patient.code, plan.protocol ? plan.protocol->name : QString());
   auto* screen = new app::gui::LiveSessionScreen(
       m_plugins, liveSessionConfig(plan, choices.devices, m_settings, choices.calibration), target);
-  screen->setWindowTitle(tr("Live session: %1").arg(plan.patient.name));
   const QString code = plan.patient.code;
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
           [this, target, code, calibration = choices.calibration](const QString& summary) {
@@ -340,11 +365,12 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
 
 void AppController::analyseThenReview(qint64 sessionId, const QString& code,
                                       const std::optional<Calibration>& calibration) {
-  auto* wait = new MessageScreen(
-      tr("Analysing the session"),
-      tr("Estimating the joint angles of session %1 again from its recording and computing its "
-         "metrics...")
-          .arg(sessionId));
+  auto* wait = new MessageScreen([] { return tr("Analysing the session"); },
+                                 [sessionId] {
+                                   return tr("Estimating the joint angles of session %1 again "
+                                             "from its recording and computing its metrics...")
+                                       .arg(sessionId);
+                                 });
   wait->setProgress(0);
   m_window->showScreen(wait);
   RecordsJob* job = m_records->startJob(
@@ -360,15 +386,19 @@ void AppController::analyseThenReview(qint64 sessionId, const QString& code,
       [this, wait, sessionId, code](const RecordsFailure& f) {
         // The recording is stored whatever happened: say why it has no analysis yet.
         wait->setProgress(100);
-        wait->setText(tr("Session %1 is saved, but it could not be analysed: %2\nYou can "
-                         "re-estimate it from its review.")
-                          .arg(sessionId)
-                          .arg(f.message));
-        wait->addAction(tr("&Review session"), [this, sessionId] { showReview(sessionId); });
-        wait->addAction(tr("&Back to the patient"), [this, code] { showPatient(code); });
+        wait->setText([sessionId, why = f.message] {
+          return tr("Session %1 is saved, but it could not be analysed: %2\nYou can "
+                    "re-estimate it from its review.")
+              .arg(sessionId)
+              .arg(why);
+        });
+        wait->addAction([] { return tr("&Review session"); },
+                        [this, sessionId] { showReview(sessionId); });
+        wait->addAction([] { return tr("&Back to the patient"); },
+                        [this, code] { showPatient(code); });
       });
   connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
-  wait->addAction(tr("&Skip the analysis"), [job] { job->cancel(); });
+  wait->addAction([] { return tr("&Skip the analysis"); }, [job] { job->cancel(); });
 }
 
 void AppController::showReview(qint64 sessionId) {
@@ -380,37 +410,41 @@ void AppController::showReview(qint64 sessionId) {
 
 void AppController::showHomeModeLater() {
   auto* screen = new MessageScreen(
-      tr("Home exercises"),
-      tr("This is a home account. The guided home exercises it opens arrive in a later version "
-         "of ArmTrack. Until then, your therapist records your sessions at the clinic."));
-  screen->addAction(tr("Sign &out"), [this] { signOut(); });
+      [] { return tr("Home exercises"); },
+      [] {
+        return tr(
+            "This is a home account. The guided home exercises it opens arrive in a later "
+            "version of ArmTrack. Until then, your therapist records your sessions at the "
+            "clinic.");
+      });
+  screen->addAction([] { return tr("Sign &out"); }, [this] { signOut(); });
   m_window->showScreen(screen);
 }
 
 void AppController::showDatabaseProblem(const RecordsFailure& failure) {
   using Kind = storage::StorageError::Kind;
-  QString advice;
-  switch (failure.kind.value_or(Kind::Io)) {
-    case Kind::OlderSchema:
-      advice = tr("Back the file up, then bring it up to date with: armtrack-cli db migrate");
-      break;
-    case Kind::NewerSchema:
-      advice = tr("Install the newer ArmTrack that wrote it.");
-      break;
-    case Kind::Corrupt:
-      advice =
-          tr("The file was left untouched. Restore it from a backup, or choose another "
-             "database in the settings.");
-      break;
-    default:
-      advice =
-          tr("Check the location in the settings (or --db) and that you may read and "
-             "write it, then try again.");
-  }
-  auto* screen = new MessageScreen(tr("The records cannot be opened"),
-                                   failure.message + QStringLiteral("\n\n") + advice);
-  screen->addAction(tr("&Try again"), [this] { openRecords(); });
-  screen->addAction(tr("&Quit"), [] { QApplication::quit(); });
+  const Kind kind = failure.kind.value_or(Kind::Io);
+  const auto advice = [kind] {
+    switch (kind) {
+      case Kind::OlderSchema:
+        return tr("Back the file up, then bring it up to date with: armtrack-cli db migrate");
+      case Kind::NewerSchema:
+        return tr("Install the newer ArmTrack that wrote it.");
+      case Kind::Corrupt:
+        return tr(
+            "The file was left untouched. Restore it from a backup, or choose another "
+            "database in the settings.");
+      default:
+        return tr(
+            "Check the location in the settings (or --db) and that you may read and "
+            "write it, then try again.");
+    }
+  };
+  auto* screen = new MessageScreen(
+      [] { return tr("The records cannot be opened"); },
+      [why = failure.message, advice] { return why + QStringLiteral("\n\n") + advice(); });
+  screen->addAction([] { return tr("&Try again"); }, [this] { openRecords(); });
+  screen->addAction([] { return tr("&Quit"); }, [] { QApplication::quit(); });
   m_window->showScreen(screen);
 }
 

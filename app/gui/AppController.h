@@ -60,6 +60,8 @@ class AppController : public QObject {
   QStringList defaultDevices() const;
   /// Writes what the screen shows of the window to path (PNG).
   bool saveWindowImage(const QString& path) const;
+  /// An account's role in words, in the current language.
+  static QString roleText(storage::Role role);
 
  signals:
   /// Someone signed in (after the first-run assistant too).

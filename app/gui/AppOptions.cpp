@@ -4,12 +4,16 @@
 
 #include <QCoreApplication>
 
+#include "app/i18n/Language.h"
+
 namespace armtrack::gui {
 
 namespace {
 
-QString tr(const char* text) {
-  return QCoreApplication::translate("armtrack::gui::AppOptions", text);
+// This file's texts are printed before Qt starts (no translator can be installed yet), so they
+// are English, like armtrack-cli's; the windows speak the chosen language.
+QString text(const char* english) {
+  return QString::fromUtf8(english);
 }
 
 // Options of QApplication itself that take a value (they stay for it).
@@ -27,7 +31,7 @@ bool isQtOptionWithValue(const QString& a) {
 }  // namespace
 
 QString appUsage() {
-  return tr(
+  return text(
       "Usage: armtrack [options]\n"
       "\n"
       "ArmTrack measures how a patient's arm moves during rehabilitation.\n"
@@ -39,7 +43,8 @@ QString appUsage() {
       "  --demo          open a demo database (made afresh) as a demo therapist and start a\n"
       "                  live session with the virtual arm\n"
       "  --plugins DIR   also look for device plugins in DIR (repeatable)\n"
-      "  --lang CODE     language of the user interface, e.g. en, de, es\n"
+      "  --lang CODE     language of the windows and reports: en, de or es (default: the\n"
+      "                  settings' choice, else the system's)\n"
       "  --quit-after S  quit after S seconds (for unattended runs)\n"
       "  --screenshot FILE\n"
       "                  with --quit-after: save the window as a PNG before quitting\n"
@@ -60,10 +65,10 @@ AppOptions parseAppOptions(const QStringList& arguments) {
     } else if (i + 1 < arguments.size()) {
       into = arguments[++i];
     } else {
-      o.error = tr("%1 needs a value").arg(name);
+      o.error = text("%1 needs a value").arg(name);
       return false;
     }
-    if (into.isEmpty()) o.error = tr("%1 needs a value").arg(name);
+    if (into.isEmpty()) o.error = text("%1 needs a value").arg(name);
     return !into.isEmpty();
   };
   for (qsizetype i = 1; i < arguments.size() && o.error.isEmpty(); ++i) {
@@ -90,7 +95,7 @@ AppOptions parseAppOptions(const QStringList& arguments) {
         bool ok = false;
         o.quitAfterSeconds = v.toDouble(&ok);
         if (!ok || !(o.quitAfterSeconds > 0))
-          o.error = tr("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
+          o.error = text("--quit-after: expected a positive number of seconds, got '%1'").arg(v);
       }
     } else if (is("--screenshot")) {
       valueOf(i, QStringLiteral("--screenshot"), o.screenshot);
@@ -99,11 +104,14 @@ AppOptions parseAppOptions(const QStringList& arguments) {
     } else if (a.startsWith(u'-') && !a.startsWith(QLatin1String("--"))) {
       o.qtArguments << a;  // a Qt option without a value, e.g. -reverse
     } else {
-      o.error = tr("unknown option or argument '%1' (see armtrack --help)").arg(a);
+      o.error = text("unknown option or argument '%1' (see armtrack --help)").arg(a);
     }
   }
   if (o.error.isEmpty() && !o.screenshot.isEmpty() && o.quitAfterSeconds <= 0)
-    o.error = tr("--screenshot needs --quit-after");
+    o.error = text("--screenshot needs --quit-after");
+  if (o.error.isEmpty() && !o.language.isEmpty() && i18n::shippedLanguageFor(o.language).isEmpty())
+    o.error = text("--lang: ArmTrack has no translation for '%1'; choose one of %2")
+                  .arg(o.language, i18n::shippedLanguageList());
   return o;
 }
 
@@ -115,11 +123,11 @@ bool displayAvailable(QString* why) {
     return true;
   const QByteArray display = qgetenv("DISPLAY");
   const bool wayland = !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
-  const QString howTo =
-      tr("To run ArmTrack on a machine without a screen, start it under a virtual display:\n"
-         "  xvfb-run -a -s '-screen 0 1280x800x24' armtrack --demo\n"
-         "(xvfb-run comes with the Debian package xvfb.) The clinical records can also be "
-         "reached without a display through armtrack-cli.");
+  const QString howTo = text(
+      "To run ArmTrack on a machine without a screen, start it under a virtual display:\n"
+      "  xvfb-run -a -s '-screen 0 1280x800x24' armtrack --demo\n"
+      "(xvfb-run comes with the Debian package xvfb.) The clinical records can also be "
+      "reached without a display through armtrack-cli.");
   if (!display.isEmpty() && !platform.startsWith(QLatin1String("wayland"))) {
     int screen = 0;
     xcb_connection_t* c = xcb_connect(display.constData(), &screen);
@@ -128,15 +136,17 @@ bool displayAvailable(QString* why) {
     if (ok) return true;
     if (wayland) return true;  // Qt falls back to Wayland when X cannot be reached
     if (why)
-      *why = tr("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
-                 .arg(QString::fromLocal8Bit(display)) +
-             howTo;
+      *why =
+          text("ArmTrack cannot open the display \"%1\" (DISPLAY): no X server answers there.\n")
+              .arg(QString::fromLocal8Bit(display)) +
+          howTo;
     return false;
   }
   if (wayland) return true;
   if (why)
-    *why = tr("ArmTrack needs a graphical display and found none (neither DISPLAY nor "
-              "WAYLAND_DISPLAY is set).\n") +
+    *why = text(
+               "ArmTrack needs a graphical display and found none (neither DISPLAY nor "
+               "WAYLAND_DISPLAY is set).\n") +
            howTo;
   return false;
 }

@@ -1,13 +1,9 @@
 #include "app/gui/Appearance.h"
 
 #include <QApplication>
-#include <QDir>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QPalette>
 #include <QStyle>
 #include <QStyleFactory>
-#include <QTranslator>
 
 namespace armtrack::gui {
 
@@ -66,36 +62,6 @@ void applyTheme(Theme theme) {
       p.setColor(QPalette::Disabled, role, disabled);
   }
   QApplication::setPalette(p);
-}
-
-bool installTranslators(const QString& language) {
-  static QTranslator* qt = nullptr;
-  static QTranslator* own = nullptr;
-  for (QTranslator** t : {&qt, &own}) {
-    if (*t) {
-      QCoreApplication::removeTranslator(*t);
-      delete *t;
-      *t = nullptr;
-    }
-  }
-  const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
-  if (!language.isEmpty()) QLocale::setDefault(locale);
-  qt = new QTranslator;
-  if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-               QLibraryInfo::path(QLibraryInfo::TranslationsPath)))
-    QCoreApplication::installTranslator(qt);
-  own = new QTranslator;
-  // Built-in (qt_add_translations puts them under :/i18n), else beside the installed program.
-  const QString installed = QDir(QCoreApplication::applicationDirPath())
-                                .absoluteFilePath("../share/armtrack/translations");
-  for (const QString& dir : {QStringLiteral(":/i18n"), installed}) {
-    if (own->load(locale, QStringLiteral("armtrack"), QStringLiteral("_"), dir)) {
-      QCoreApplication::installTranslator(own);
-      return true;
-    }
-  }
-  // English is the source language: nothing to load.
-  return locale.language() == QLocale::English || locale.language() == QLocale::C;
 }
 
 }  // namespace armtrack::gui

@@ -4,6 +4,7 @@
 
 #include <QWidget>
 
+class QGroupBox;
 class QLineEdit;
 class QPushButton;
 class QLabel;
@@ -32,12 +33,24 @@ class FirstRunScreen : public QWidget {
   /// administrator.
   void createRequested(const QString& folder, const QString& admin, const QString& password);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void submit();
   void chooseFolder();
   void updateDatabaseNote();
 
   bool m_fixed;
+  QString m_fixedDatabase;
+  QLabel* m_heading;
+  QLabel* m_intro;
+  QGroupBox* m_where;
+  QGroupBox* m_account;
+  QLabel* m_adminLabel;
+  QLabel* m_passwordLabel;
+  QLabel* m_repeatLabel;
   QLineEdit* m_folder;
   QPushButton* m_browse;
   QLabel* m_databaseNote;

@@ -1,13 +1,20 @@
 #include "app/gui/JobProgress.h"
 
+#include <QCoreApplication>
 #include <QProgressDialog>
 
 #include "app/gui/services/RecordsService.h"
 
 namespace armtrack::gui {
 
+namespace {
+struct Tr {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::gui::JobProgress)
+};
+}  // namespace
+
 void showJobProgress(QWidget* parent, RecordsJob* job, const QString& label) {
-  auto* dialog = new QProgressDialog(label, QObject::tr("Cancel"), 0, 100, parent);
+  auto* dialog = new QProgressDialog(label, Tr::tr("Cancel"), 0, 100, parent);
   dialog->setWindowModality(Qt::WindowModal);
   dialog->setMinimumDuration(500);
   dialog->setAutoClose(false);
@@ -17,7 +24,7 @@ void showJobProgress(QWidget* parent, RecordsJob* job, const QString& label) {
   QObject::connect(job, &RecordsJob::progress, dialog, &QProgressDialog::setValue);
   QObject::connect(dialog, &QProgressDialog::canceled, job, [job, dialog] {
     job->cancel();
-    dialog->setLabelText(QObject::tr("Stopping..."));
+    dialog->setLabelText(Tr::tr("Stopping..."));
     dialog->setCancelButton(nullptr);
     dialog->show();
   });

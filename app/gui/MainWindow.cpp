@@ -9,6 +9,8 @@
 #include <QStackedWidget>
 #include <QStatusBar>
 
+#include "app/gui/Forms.h"
+
 namespace armtrack::gui {
 
 MainWindow::MainWindow(QWidget* parent)
@@ -17,31 +19,55 @@ MainWindow::MainWindow(QWidget* parent)
   setMinimumSize(900, 600);
   resize(1200, 760);  // fits a 1280x800 screen; a window manager may maximise it
   statusBar()->addPermanentWidget(m_who);
-  m_who->setAccessibleName(tr("Signed-in account"));
 
-  QMenu* file = menuBar()->addMenu(tr("&ArmTrack"));
-  m_patients = file->addAction(tr("&Patients"), this, &MainWindow::patientsRequested);
-  m_patients->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
-  m_settings = file->addAction(tr("&Settings..."), this, &MainWindow::settingsRequested);
-  m_settings->setShortcut(QKeySequence::Preferences);
-  if (m_settings->shortcut().isEmpty()) m_settings->setShortcut(QKeySequence(tr("Ctrl+,")));
-  m_signOut = file->addAction(tr("Sign &out"), this, &MainWindow::signOutRequested);
-  file->addSeparator();
-  QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
-  quit->setShortcut(QKeySequence::Quit);
+  m_file = menuBar()->addMenu(QString());
+  m_patients = m_file->addAction(QString(), this, &MainWindow::patientsRequested);
+  m_settings = m_file->addAction(QString(), this, &MainWindow::settingsRequested);
+  m_signOut = m_file->addAction(QString(), this, &MainWindow::signOutRequested);
+  m_file->addSeparator();
+  m_quit = m_file->addAction(QString(), this, &QWidget::close);
+  m_quit->setShortcut(QKeySequence::Quit);
 
-  QMenu* help = menuBar()->addMenu(tr("&Help"));
-  QAction* guide = help->addAction(tr("&User guide"), this, &MainWindow::userGuideRequested);
-  guide->setShortcut(QKeySequence::HelpContents);
-  help->addAction(tr("&About ArmTrack"), this, [this] {
+  m_help = menuBar()->addMenu(QString());
+  m_guide = m_help->addAction(QString(), this, &MainWindow::userGuideRequested);
+  m_guide->setShortcut(QKeySequence::HelpContents);
+  m_about = m_help->addAction(QString(), this, [this] {
     QMessageBox::about(this, tr("About ArmTrack"),
                        tr("<p><b>ArmTrack %1</b></p><p>Measures the shoulder's and elbow's joint "
                           "angles from two wearable IMUs and a Kinect or webcam, for upper-limb "
                           "rehabilitation.</p>")
                            .arg(QApplication::applicationVersion()));
   });
+  retranslateUi();
   setSignedIn({});
+}
+
+void MainWindow::retranslateUi() {
+  m_who->setAccessibleName(tr("Signed-in account"));
+  const QString who = m_whoText ? m_whoText() : QString();
+  m_who->setText(who.isEmpty() ? QString() : tr("Signed in as %1").arg(who));
+  // The status message too, while it is still shown.
+  if (m_statusText && !m_statusShown.isEmpty() && statusBar()->currentMessage() == m_statusShown) {
+    m_statusShown = m_statusText();
+    statusBar()->showMessage(m_statusShown);
+  }
+  m_file->setTitle(tr("&ArmTrack"));
+  m_patients->setText(tr("&Patients"));
+  m_patients->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+  m_settings->setText(tr("&Settings..."));
+  m_settings->setShortcut(QKeySequence::Preferences);
+  if (m_settings->shortcut().isEmpty()) m_settings->setShortcut(QKeySequence(tr("Ctrl+,")));
+  m_signOut->setText(tr("Sign &out"));
+  m_quit->setText(tr("&Quit"));
+  m_help->setTitle(tr("&Help"));
+  m_guide->setText(tr("&User guide"));
+  m_about->setText(tr("&About ArmTrack"));
   updateTitle();
+}
+
+void MainWindow::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QMainWindow::changeEvent(event);
 }
 
 void MainWindow::showScreen(QWidget* screen) {
@@ -65,14 +91,22 @@ QWidget* MainWindow::currentScreen() const {
   return m_current;
 }
 
-void MainWindow::setSignedIn(const QString& who) {
-  m_who->setText(who.isEmpty() ? QString() : tr("Signed in as %1").arg(who));
-  m_patients->setEnabled(!who.isEmpty());
-  m_signOut->setEnabled(!who.isEmpty());
+void MainWindow::setSignedIn(TextFn who) {
+  m_whoText = std::move(who);
+  const QString name = m_whoText ? m_whoText() : QString();
+  m_who->setText(name.isEmpty() ? QString() : tr("Signed in as %1").arg(name));
+  m_patients->setEnabled(!name.isEmpty());
+  m_signOut->setEnabled(!name.isEmpty());
+}
+
+void MainWindow::showStatus(TextFn text, int ms) {
+  m_statusText = std::move(text);
+  m_statusShown = m_statusText ? m_statusText() : QString();
+  statusBar()->showMessage(m_statusShown, ms);
 }
 
 void MainWindow::showStatus(const QString& text, int ms) {
-  statusBar()->showMessage(text, ms);
+  showStatus([text] { return text; }, ms);
 }
 
 void MainWindow::updateTitle() {

@@ -5,8 +5,11 @@
 #include <QMainWindow>
 #include <QPointer>
 
+#include "app/gui/Forms.h"
+
 class QAction;
 class QLabel;
+class QMenu;
 class QStackedWidget;
 
 namespace armtrack::gui {
@@ -22,8 +25,11 @@ class MainWindow : public QMainWindow {
   void showScreen(QWidget* screen);
   QWidget* currentScreen() const;
   /// Shows who is signed in (empty: nobody) and enables the actions that need an account.
-  void setSignedIn(const QString& who);
-  /// A short message in the status bar (ms = 0: until replaced).
+  void setSignedIn(TextFn who);
+  /// A short message in the status bar (ms = 0: until replaced), made again in the new language
+  /// when the language changes while it is shown.
+  void showStatus(TextFn text, int ms = 8000);
+  /// The same with a text that stays as it is.
   void showStatus(const QString& text, int ms = 8000);
 
  signals:
@@ -34,16 +40,26 @@ class MainWindow : public QMainWindow {
 
  protected:
   void closeEvent(QCloseEvent* event) override;
+  void changeEvent(QEvent* event) override;
 
  private:
+  void retranslateUi();
   void updateTitle();
 
   QStackedWidget* m_stack;
   QPointer<QWidget> m_current;
   QLabel* m_who;
+  TextFn m_whoText;
+  TextFn m_statusText;
+  QString m_statusShown;
+  QMenu* m_file;
+  QMenu* m_help;
   QAction* m_patients;
   QAction* m_settings;
   QAction* m_signOut;
+  QAction* m_quit;
+  QAction* m_guide;
+  QAction* m_about;
 };
 
 }  // namespace armtrack::gui

@@ -37,17 +37,18 @@ SessionSetupPage::SessionSetupPage(RecordsService& records, const QString& patie
       m_patient(new QLabel(patientCode, this)),
       m_protocol(new QComboBox(this)),
       m_protocolDetails(new QLabel(this)),
-      m_left(new QRadioButton(tr("&Left arm"), this)),
-      m_right(new QRadioButton(tr("&Right arm"), this)),
+      m_patientLabel(new QLabel(this)),
+      m_protocolLabel(new QLabel(this)),
+      m_armLabel(new QLabel(this)),
+      m_left(new QRadioButton(this)),
+      m_right(new QRadioButton(this)),
       m_message(new MessageLine(this)) {
-  setTitle(tr("Patient, protocol and arm"));
-  setSubTitle(tr("Choose what this session trains and which arm wears the sensors."));
   auto* form = new QFormLayout(this);
   m_patient->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
-  form->addRow(tr("Patient:"), m_patient);
-  m_protocol->setAccessibleName(tr("Protocol"));
-  m_protocol->addItem(tr("(no protocol: free movement)"), QString());
-  form->addRow(tr("&Protocol:"), m_protocol);
+  form->addRow(m_patientLabel, m_patient);
+  m_protocol->addItem(QString(), QString());  // none: free movement
+  m_protocolLabel->setBuddy(m_protocol);
+  form->addRow(m_protocolLabel, m_protocol);
   m_protocolDetails->setWordWrap(true);
   form->addRow(QString(), m_protocolDetails);
   auto* sides = new QHBoxLayout;
@@ -57,13 +58,13 @@ SessionSetupPage::SessionSetupPage(RecordsService& records, const QString& patie
     sides->addWidget(b);
   }
   sides->addStretch();
-  m_left->setAccessibleName(tr("Left arm"));
-  m_right->setAccessibleName(tr("Right arm"));
-  form->addRow(tr("Arm:"), sides);
+  form->addRow(m_armLabel, sides);
   form->addRow(m_message);
+  retranslateUi();
   connect(m_protocol, &QComboBox::currentIndexChanged, this, &SessionSetupPage::protocolChanged);
   connect(m_left, &QRadioButton::toggled, this, &SessionSetupPage::protocolChanged);
-  m_message->showMessage(tr("Reading the patient and the protocols..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Reading the patient and the protocols..."); },
+                         MessageLine::Kind::Notice);
   records.call(
       this,
       [patientCode](storage::ClinicalStore& s) {
@@ -82,10 +83,34 @@ SessionSetupPage::SessionSetupPage(RecordsService& records, const QString& patie
         emit loaded();
       },
       [this](const RecordsFailure& f) {
-        m_message->showMessage(
-            tr("The patient or the protocols could not be read: %1. Go back and try again.")
-                .arg(f.message));
+        m_message->showMessage([why = f.message] {
+          return tr("The patient or the protocols could not be read: %1. Go back and try again.")
+              .arg(why);
+        });
       });
+}
+
+void SessionSetupPage::retranslateUi() {
+  setTitle(tr("Patient, protocol and arm"));
+  setSubTitle(tr("Choose what this session trains and which arm wears the sensors."));
+  m_patientLabel->setText(tr("Patient:"));
+  m_protocolLabel->setText(tr("&Protocol:"));
+  m_protocol->setAccessibleName(tr("Protocol"));
+  m_protocol->setItemText(0, tr("(no protocol: free movement)"));
+  m_armLabel->setText(tr("Arm:"));
+  m_left->setText(tr("&Left arm"));
+  m_right->setText(tr("&Right arm"));
+  m_left->setAccessibleName(tr("Left arm"));
+  m_right->setAccessibleName(tr("Right arm"));
+  if (m_loaded) {
+    m_patient->setText(tr("%1 (%2)").arg(m_plan.patient.name, m_plan.patient.code));
+    protocolChanged();
+  }
+}
+
+void SessionSetupPage::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWizardPage::changeEvent(event);
 }
 
 bool SessionSetupPage::isComplete() const {
@@ -117,10 +142,11 @@ void SessionSetupPage::protocolChanged() {
   m_plan.side = m_left->isChecked() ? Side::Left : Side::Right;
   QString text;
   if (chosen) {
-    text = tr("Trains %1, target %2-%3 deg, %n repetition(s).", nullptr, chosen->repetitions)
-               .arg(angleName(angleIndex(chosen->angleKey)))
-               .arg(chosen->targetMinDeg, 0, 'f', 0)
-               .arg(chosen->targetMaxDeg, 0, 'f', 0);
+    text =
+        tr("Trains %1, target %L2\u2013%L3\u00b0, %n repetition(s).", nullptr, chosen->repetitions)
+            .arg(angleName(angleIndex(chosen->angleKey)))
+            .arg(chosen->targetMinDeg, 0, 'f', 0)
+            .arg(chosen->targetMaxDeg, 0, 'f', 0);
     const QString mine =
         m_plan.side == Side::Left ? QStringLiteral("left") : QStringLiteral("right");
     if (chosen->side != QLatin1String("either") && chosen->side != mine)
@@ -139,11 +165,10 @@ NewSessionScreen::NewSessionScreen(RecordsService& records, const app::PluginReg
                                    const QStringList& devices, QWidget* parent)
     : QWidget(parent), m_wizard(new QWizard(this)) {
   m_choices.devices = devices;
-  setWindowTitle(tr("New session"));
   m_wizard->setWindowFlags(Qt::Widget);  // a step of the main window, not a dialog of its own
   m_wizard->setWizardStyle(QWizard::ClassicStyle);
   m_wizard->setOption(QWizard::NoBackButtonOnStartPage);
-  m_wizard->setButtonText(QWizard::FinishButton, tr("&Start the live session"));
+  retranslateUi();
   m_setup = new SessionSetupPage(records, patientCode, m_wizard);
   m_wizard->addPage(m_setup);
   addDeviceSteps(plugins, settings);
@@ -155,6 +180,16 @@ NewSessionScreen::NewSessionScreen(RecordsService& records, const app::PluginReg
   setFocusProxy(m_wizard);
 }
 
+void NewSessionScreen::retranslateUi() {
+  setWindowTitle(tr("New session"));
+  m_wizard->setButtonText(QWizard::FinishButton, tr("&Start the live session"));
+}
+
+void NewSessionScreen::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
 void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
                                       const AppSettings& settings) {
   using app::gui::CameraCalibrationPage;
@@ -164,26 +199,32 @@ void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
   const auto config = [this, &settings](const QStringList& devices) {
     return liveSessionConfig(plan(), devices, settings);
   };
-  m_devices = new WidgetStep(
-      tr("Devices"),
-      tr("Choose the sensors and their options, then check the connection: every stream should "
-         "turn green and the angles move with the arm."),
-      [this, &plugins, config] {
-        auto* page = new DevicesPage(plugins, config(m_choices.devices));
-        page->setDevices(m_choices.devices);
-        return page;
-      },
-      [](QWidget* w) { return static_cast<DevicesPage*>(w)->isComplete(); },
-      [this](QWidget* w) {
-        auto* page = static_cast<DevicesPage*>(w);
-        page->stopCheck();
-        m_choices.devices = page->devices();
-        return true;
-      });
+  m_devices =
+      new WidgetStep([] { return tr("Devices"); },
+                     [] {
+                       return tr(
+                           "Choose the sensors and their options, then check the connection: every "
+                           "stream should turn green and the angles move with the arm.");
+                     },
+                     [this, &plugins, config] {
+                       auto* page = new DevicesPage(plugins, config(m_choices.devices));
+                       page->setDevices(m_choices.devices);
+                       return page;
+                     },
+                     [](QWidget* w) { return static_cast<DevicesPage*>(w)->isComplete(); },
+                     [this](QWidget* w) {
+                       auto* page = static_cast<DevicesPage*>(w);
+                       page->stopCheck();
+                       m_choices.devices = page->devices();
+                       return true;
+                     });
   m_calibration = new WidgetStep(
-      tr("Sensor calibration"),
-      tr("The patient holds and makes the movements shown; ArmTrack then works out how the "
-         "sensors sit on the arm. About a minute."),
+      [] { return tr("Sensor calibration"); },
+      [] {
+        return tr(
+            "The patient holds and makes the movements shown; ArmTrack then works out how "
+            "the sensors sit on the arm. About a minute.");
+      },
       [this, &plugins, &settings, config] {
         const QString folder =
             QDir(settings.effectiveDataFolder())
@@ -211,17 +252,21 @@ void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
         }
         return true;
       },
-      tr("Skip the calibration (the measured segment lengths are used)"));
+      [] { return tr("Skip the calibration (the measured segment lengths are used)"); });
   m_camera = new WidgetStep(
-      tr("Camera calibration"),
-      tr("Hold the printed chessboard in front of the webcam in different places and angles "
-         "until the grid is covered."),
+      [] { return tr("Camera calibration"); },
+      [] {
+        return tr(
+            "Hold the printed chessboard in front of the webcam in different places and "
+            "angles until the grid is covered.");
+      },
       [this]() -> QWidget* {
         const bool webcam =
             std::any_of(m_choices.devices.begin(), m_choices.devices.end(),
                         [](const QString& d) { return d.startsWith(QLatin1String("webcam")); });
         if (!webcam) {
-          auto* none = new QLabel(tr("No webcam among the devices: nothing to calibrate here."));
+          auto* none = new TranslatedLabel(
+              [] { return tr("No webcam among the devices: nothing to calibrate here."); });
           none->setProperty("complete", true);
           return none;
         }
@@ -233,7 +278,7 @@ void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
         if (auto* page = qobject_cast<CameraCalibrationPage*>(w)) return page->isComplete();
         return w->property("complete").toBool();
       },
-      {}, tr("Skip the camera calibration (use the camera's stored model)"));
+      {}, [] { return tr("Skip the camera calibration (use the camera's stored model)"); });
   for (WidgetStep* step : {m_devices, m_calibration, m_camera}) m_wizard->addPage(step);
 }
 

@@ -39,13 +39,20 @@ class SessionSetupPage : public QWizardPage {
  signals:
   void loaded();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void protocolChanged();
 
   SessionPlan m_plan;
   std::vector<storage::Protocol> m_protocols;
   bool m_loaded = false;
   QLabel* m_patient;
+  QLabel* m_patientLabel;
+  QLabel* m_protocolLabel;
+  QLabel* m_armLabel;
   QComboBox* m_protocol;
   QLabel* m_protocolDetails;
   QRadioButton* m_left;
@@ -75,7 +82,11 @@ class NewSessionScreen : public QWidget {
                 const armtrack::gui::NewSessionChoices& choices);
   void cancelled();
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void addDeviceSteps(const app::PluginRegistry& plugins, const AppSettings& settings);
 
   QWizard* m_wizard;

@@ -6,24 +6,39 @@
 
 namespace armtrack::gui {
 
-WidgetStep::WidgetStep(const QString& title, const QString& subTitle, Make make, Check complete,
-                       Check leave, const QString& skipText, QWidget* parent)
+WidgetStep::WidgetStep(TextFn title, TextFn subTitle, Make make, Check complete, Check leave,
+                       TextFn skipText, QWidget* parent)
     : QWizardPage(parent),
+      m_title(std::move(title)),
+      m_subTitle(std::move(subTitle)),
+      m_skipText(std::move(skipText)),
       m_make(std::move(make)),
       m_complete(std::move(complete)),
       m_leave(std::move(leave)),
       m_layout(new QVBoxLayout(this)) {
-  setTitle(title);
-  setSubTitle(subTitle);
-  if (!skipText.isEmpty()) {
-    m_skip = new QCheckBox(skipText, this);
-    m_skip->setAccessibleName(skipText);
+  if (m_skipText) {
+    m_skip = new QCheckBox(this);
     m_layout->addWidget(m_skip);
     connect(m_skip, &QCheckBox::toggled, this, [this](bool skip) {
       if (m_page) m_page->setEnabled(!skip);
       emit completeChanged();
     });
   }
+  retranslateUi();
+}
+
+void WidgetStep::retranslateUi() {
+  setTitle(m_title ? m_title() : QString());
+  setSubTitle(m_subTitle ? m_subTitle() : QString());
+  if (m_skip) {
+    m_skip->setText(m_skipText());
+    m_skip->setAccessibleName(m_skip->text());
+  }
+}
+
+void WidgetStep::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWizardPage::changeEvent(event);
 }
 
 void WidgetStep::initializePage() {

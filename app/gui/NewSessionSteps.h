@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "app/gui/Forms.h"
 #include "core/calibration/Calibration.h"
 
 class QCheckBox;
@@ -24,9 +25,9 @@ class WidgetStep : public QWizardPage {
   using Check = std::function<bool(QWidget*)>;
   /// make builds the page when the step is entered; complete says whether it may be left;
   /// leave runs when Next is pressed (false keeps the step). skipText, when given, offers a check
-  /// box that makes the step complete without its page.
-  WidgetStep(const QString& title, const QString& subTitle, Make make, Check complete,
-             Check leave = {}, const QString& skipText = {}, QWidget* parent = nullptr);
+  /// box that makes the step complete without its page. The texts follow a change of language.
+  WidgetStep(TextFn title, TextFn subTitle, Make make, Check complete, Check leave = {},
+             TextFn skipText = {}, QWidget* parent = nullptr);
 
   void initializePage() override;
   void cleanupPage() override;
@@ -36,7 +37,13 @@ class WidgetStep : public QWizardPage {
   bool skipped() const;
   void setSkipped(bool skip);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
+
+  TextFn m_title, m_subTitle, m_skipText;
   Make m_make;
   Check m_complete, m_leave;
   QCheckBox* m_skip = nullptr;

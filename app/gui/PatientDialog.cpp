@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QVBoxLayout>
@@ -14,6 +15,7 @@
 #include "app/gui/Forms.h"
 #include "app/gui/PatientTableModel.h"
 #include "app/gui/services/PatientRecords.h"
+#include "core/reports/ReportText.h"
 
 namespace armtrack::gui {
 
@@ -27,8 +29,8 @@ QDoubleSpinBox* lengthBox(QWidget* parent, const QString& name, std::optional<do
   box->setRange(0, 80);
   box->setDecimals(1);
   box->setSingleStep(0.5);
-  box->setSuffix(QObject::tr(" cm"));
-  box->setSpecialValueText(QObject::tr("not measured"));
+  box->setSuffix(PatientDialog::tr(" cm"));
+  box->setSpecialValueText(PatientDialog::tr("not measured"));
   box->setValue(metres ? *metres * 100 : 0);
   box->setAccessibleName(name);
   return box;
@@ -40,7 +42,8 @@ std::optional<double> metresOf(const QDoubleSpinBox* box) {
 
 void fillCombo(QComboBox* box, const QStringList& keys, const QString& current,
                const std::function<QString(const QString&)>& text) {
-  for (const QString& k : keys) box->addItem(k.isEmpty() ? QObject::tr("not given") : text(k), k);
+  for (const QString& k : keys)
+    box->addItem(k.isEmpty() ? PatientDialog::tr("not given") : text(k), k);
   const int i = box->findData(current);
   box->setCurrentIndex(i >= 0 ? i : 0);
 }
@@ -74,7 +77,7 @@ PatientDialog::PatientDialog(const storage::Patient& patient, QWidget* parent)
   m_code->setPlaceholderText(tr("e.g. P001"));
   m_name->setAccessibleName(tr("Patient name"));
   m_birth->setAccessibleName(tr("Birth date"));
-  m_birth->setDisplayFormat(QStringLiteral("yyyy-MM-dd"));
+  m_birth->setDisplayFormat(reports::fullYearDateFormat(QLocale()));
   m_birth->setMinimumDate(kUnknownDate);
   m_birth->setMaximumDate(QDate::currentDate());
   m_birth->setSpecialValueText(tr("not given"));

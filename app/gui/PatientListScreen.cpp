@@ -14,6 +14,7 @@
 #include "app/gui/PatientDialog.h"
 #include "app/gui/PatientTableModel.h"
 #include "app/gui/services/RecordsService.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -25,11 +26,10 @@ PatientListScreen::PatientListScreen(RecordsService& records, const QString& sel
       m_proxy(new QSortFilterProxyModel(this)),
       m_search(new QLineEdit(this)),
       m_table(new QTableView(this)),
-      m_open(new QPushButton(tr("&Open"), this)),
-      m_add(new QPushButton(tr("&New patient..."), this)),
-      m_edit(new QPushButton(tr("&Edit..."), this)),
+      m_open(new QPushButton(this)),
+      m_add(new QPushButton(this)),
+      m_edit(new QPushButton(this)),
       m_message(new MessageLine(this)) {
-  setWindowTitle(tr("Patients"));
   m_canWrite = records.signedIn() && records.user().role != storage::Role::Home;
   m_proxy->setSourceModel(m_model);
   m_proxy->setFilterCaseSensitivity(Qt::CaseInsensitive);
@@ -38,19 +38,17 @@ PatientListScreen::PatientListScreen(RecordsService& records, const QString& sel
   m_proxy->setSortRole(Qt::EditRole);
 
   auto* layout = new QVBoxLayout(this);
-  layout->addWidget(heading(tr("Patients"), this));
+  m_heading = heading(QString(), this);
+  layout->addWidget(m_heading);
   auto* searchRow = new QHBoxLayout;
-  auto* searchLabel = new QLabel(tr("&Search:"), this);
-  searchLabel->setBuddy(m_search);
-  m_search->setPlaceholderText(tr("code, name, diagnosis..."));
-  m_search->setAccessibleName(tr("Search patients"));
+  m_searchLabel = new QLabel(this);
+  m_searchLabel->setBuddy(m_search);
   m_search->setClearButtonEnabled(true);
-  searchRow->addWidget(searchLabel);
+  searchRow->addWidget(m_searchLabel);
   searchRow->addWidget(m_search, 1);
   layout->addLayout(searchRow);
 
   m_table->setModel(m_proxy);
-  m_table->setAccessibleName(tr("Patient list"));
   m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_table->setSelectionMode(QAbstractItemView::SingleSelection);
   m_table->setEditTriggers(QAbstractItemView::NoEditTriggers);
@@ -65,8 +63,6 @@ PatientListScreen::PatientListScreen(RecordsService& records, const QString& sel
 
   auto* buttons = new QHBoxLayout;
   m_add->setShortcut(QKeySequence::New);
-  m_add->setToolTip(tr("Add a patient (%1)")
-                        .arg(QKeySequence(QKeySequence::New).toString(QKeySequence::NativeText)));
   buttons->addWidget(m_add);
   buttons->addWidget(m_edit);
   buttons->addStretch();
@@ -102,12 +98,32 @@ PatientListScreen::PatientListScreen(RecordsService& records, const QString& sel
   setTabOrder(m_add, m_edit);
   setTabOrder(m_edit, m_open);
   setFocusProxy(m_search);
+  retranslateUi();
   updateButtons();
   reload(select);
 }
 
+void PatientListScreen::retranslateUi() {
+  setWindowTitle(tr("Patients"));
+  setHeading(m_heading, tr("Patients"));
+  m_searchLabel->setText(tr("&Search:"));
+  m_search->setPlaceholderText(tr("code, name, diagnosis..."));
+  m_search->setAccessibleName(tr("Search patients"));
+  m_table->setAccessibleName(tr("Patient list"));
+  m_open->setText(tr("&Open"));
+  ui::setButtonText(m_add, tr("&New patient..."));
+  m_add->setToolTip(tr("Add a patient (%1)")
+                        .arg(QKeySequence(QKeySequence::New).toString(QKeySequence::NativeText)));
+  m_edit->setText(tr("&Edit..."));
+}
+
+void PatientListScreen::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
 void PatientListScreen::reload(const QString& select) {
-  m_message->showMessage(tr("Loading the patients..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Loading the patients..."); }, MessageLine::Kind::Notice);
   m_records.call(
       this, [](storage::ClinicalStore& s) { return s.listPatients(); },
       [this, select](std::vector<storage::Patient> patients) {
@@ -116,10 +132,12 @@ void PatientListScreen::reload(const QString& select) {
         m_model->setPatients(std::move(patients));
         m_message->clear();
         if (n == 0)
-          m_message->showMessage(m_canWrite
-                                     ? tr("No patients yet. Add the first with \"New patient\".")
-                                     : tr("No patients."),
-                                 MessageLine::Kind::Notice);
+          m_message->showMessage(
+              [canWrite = m_canWrite] {
+                return canWrite ? tr("No patients yet. Add the first with \"New patient\".")
+                                : tr("No patients.");
+              },
+              MessageLine::Kind::Notice);
         const int row = m_model->rowOf(keep);
         if (row >= 0)
           m_table->selectRow(m_proxy->mapFromSource(m_model->index(row, 0)).row());
@@ -129,7 +147,8 @@ void PatientListScreen::reload(const QString& select) {
         emit loaded(n);
       },
       [this](const RecordsFailure& f) {
-        m_message->showMessage(tr("The patients could not be read: %1").arg(f.message));
+        m_message->showMessage(
+            [why = f.message] { return tr("The patients could not be read: %1").arg(why); });
       });
 }
 

@@ -5,6 +5,7 @@
 
 #include "core/storage/Records.h"
 
+class QLabel;
 class QLineEdit;
 class QPushButton;
 class QSortFilterProxyModel;
@@ -37,12 +38,18 @@ class PatientListScreen : public QWidget {
   /// A list was shown (after every reload), with how many patients.
   void loaded(int patients);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void openSelected();
   void updateButtons();
   void saveFromDialog(class PatientDialog* dialog, const storage::Patient& p, bool adding);
 
   RecordsService& m_records;
+  QLabel* m_heading;
+  QLabel* m_searchLabel;
   PatientTableModel* m_model;
   QSortFilterProxyModel* m_proxy;
   QLineEdit* m_search;

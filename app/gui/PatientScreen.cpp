@@ -26,6 +26,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -39,7 +40,7 @@ QLabel* value(const QString& text, QWidget* parent) {
 }
 
 QString cm(const std::optional<double>& metres) {
-  return metres ? QObject::tr("%1 cm").arg(*metres * 100, 0, 'f', 1) : QString();
+  return metres ? PatientScreen::tr("%L1 cm").arg(*metres * 100, 0, 'f', 1) : QString();
 }
 
 QTableView* plainTable(QAbstractItemModel* model, const QString& name, QWidget* parent) {
@@ -70,12 +71,11 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
       m_sessions(new SessionTableModel(this)),
       m_sessionsSorted(new QSortFilterProxyModel(this)),
       m_message(new MessageLine(this)),
-      m_newSession(new QPushButton(tr("&New session..."), this)),
-      m_review(new QPushButton(tr("&Review session"), this)),
-      m_report(new QPushButton(tr("&Progress report (PDF)..."), this)),
-      m_edit(new QPushButton(tr("&Edit patient..."), this)),
-      m_back(new QPushButton(tr("&Back to patients"), this)) {
-  setWindowTitle(tr("Patient %1").arg(code));
+      m_newSession(new QPushButton(this)),
+      m_review(new QPushButton(this)),
+      m_report(new QPushButton(this)),
+      m_edit(new QPushButton(this)),
+      m_back(new QPushButton(this)) {
   m_chart->setRadians(settings.units == AppSettings::AngleUnit::Radians);
   auto* layout = new QVBoxLayout(this);
   auto* top = new QHBoxLayout;
@@ -89,29 +89,30 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   auto* split = new QSplitter(Qt::Horizontal, this);
   auto* side = new QWidget;
   auto* sideLayout = new QVBoxLayout(side);
-  auto* details = new QGroupBox(tr("Details"), side);
-  auto* detailsForm = new QFormLayout(details);
-  for (const QString& name : {tr("Code:"), tr("Born:"), tr("Sex:"), tr("Affected side:"),
-                              tr("Diagnosis:"), tr("Notes:")}) {
-    m_detailValues.push_back(value({}, details));
-    detailsForm->addRow(name, m_detailValues.back());
+  m_detailsBox = new QGroupBox(side);
+  auto* detailsForm = new QFormLayout(m_detailsBox);
+  for (int i = 0; i < 6; ++i) {
+    m_detailNames.push_back(new QLabel(m_detailsBox));
+    m_detailValues.push_back(value({}, m_detailsBox));
+    detailsForm->addRow(m_detailNames.back(), m_detailValues.back());
   }
-  sideLayout->addWidget(details);
-  auto* lengths = new QGroupBox(tr("Measured segment lengths"), side);
-  auto* lengthsForm = new QFormLayout(lengths);
-  for (const QString& name :
-       {tr("Upper arm:"), tr("Forearm:"), tr("Upper-arm IMU:"), tr("Forearm IMU:")}) {
-    m_lengthValues.push_back(value({}, lengths));
-    lengthsForm->addRow(name, m_lengthValues.back());
+  sideLayout->addWidget(m_detailsBox);
+  m_lengthsBox = new QGroupBox(side);
+  auto* lengthsForm = new QFormLayout(m_lengthsBox);
+  for (int i = 0; i < 4; ++i) {
+    m_lengthNames.push_back(new QLabel(m_lengthsBox));
+    m_lengthValues.push_back(value({}, m_lengthsBox));
+    lengthsForm->addRow(m_lengthNames.back(), m_lengthValues.back());
   }
-  m_lengthsNote = value({}, lengths);
+  m_lengthsNote = value({}, m_lengthsBox);
   m_lengthsNote->hide();
   lengthsForm->addRow(m_lengthsNote);
-  sideLayout->addWidget(lengths);
-  auto* programme = new QGroupBox(tr("Home programme"), side);
-  auto* programmeLayout = new QVBoxLayout(programme);
-  programmeLayout->addWidget(plainTable(m_programme, tr("Home programme"), programme));
-  sideLayout->addWidget(programme);
+  sideLayout->addWidget(m_lengthsBox);
+  m_programmeBox = new QGroupBox(side);
+  auto* programmeLayout = new QVBoxLayout(m_programmeBox);
+  m_programmeTable = plainTable(m_programme, QString(), m_programmeBox);
+  programmeLayout->addWidget(m_programmeTable);
+  sideLayout->addWidget(m_programmeBox);
   sideLayout->addWidget(m_edit);
   sideLayout->addStretch();
   auto* scroll = new QScrollArea;
@@ -122,14 +123,14 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
 
   auto* main = new QWidget;
   auto* mainLayout = new QVBoxLayout(main);
-  auto* progress = new QGroupBox(tr("Progress"), main);
-  (new QVBoxLayout(progress))->addWidget(m_chart);
-  mainLayout->addWidget(progress, 3);
-  auto* sessions = new QGroupBox(tr("Sessions"), main);
-  auto* sessionsLayout = new QVBoxLayout(sessions);
+  m_progressBox = new QGroupBox(main);
+  (new QVBoxLayout(m_progressBox))->addWidget(m_chart);
+  mainLayout->addWidget(m_progressBox, 3);
+  m_sessionsBox = new QGroupBox(main);
+  auto* sessionsLayout = new QVBoxLayout(m_sessionsBox);
   m_sessionsSorted->setSourceModel(m_sessions);
   m_sessionsSorted->setSortRole(Qt::EditRole);
-  m_sessionTable = plainTable(m_sessionsSorted, tr("Sessions"), sessions);
+  m_sessionTable = plainTable(m_sessionsSorted, QString(), m_sessionsBox);
   m_sessionTable->setSortingEnabled(true);
   m_sessionTable->sortByColumn(SessionTableModel::Started, Qt::DescendingOrder);
   sessionsLayout->addWidget(m_sessionTable);
@@ -139,15 +140,13 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   buttons->addStretch();
   buttons->addWidget(m_review);
   sessionsLayout->addLayout(buttons);
-  mainLayout->addWidget(sessions, 2);
+  mainLayout->addWidget(m_sessionsBox, 2);
   split->addWidget(main);
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 3);
   layout->addWidget(split, 1);
 
   m_review->setDefault(true);
-  m_newSession->setShortcut(QKeySequence(tr("Ctrl+R")));
-  m_newSession->setToolTip(tr("Record a new session with this patient (Ctrl+R)"));
   m_newSession->setVisible(m_canWrite);
   m_edit->setVisible(m_canWrite);
   connect(m_back, &QPushButton::clicked, this, &PatientScreen::backRequested);
@@ -167,12 +166,47 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   setTabOrder(m_newSession, m_report);
   setTabOrder(m_report, m_edit);
   setFocusProxy(m_sessionTable);
+  retranslateUi();
   updateButtons();
   reload();
 }
 
+void PatientScreen::retranslateUi() {
+  setWindowTitle(m_loaded ? m_overview.patient.name : tr("Patient %1").arg(m_code));
+  m_newSession->setText(tr("&New session..."));
+  m_newSession->setShortcut(QKeySequence(tr("Ctrl+R")));
+  m_newSession->setToolTip(tr("Record a new session with this patient (%1)")
+                               .arg(m_newSession->shortcut().toString(QKeySequence::NativeText)));
+  m_review->setText(tr("&Review session"));
+  m_report->setText(tr("&Progress report (PDF)..."));
+  m_edit->setText(tr("&Edit patient..."));
+  ui::setButtonText(m_back, tr("&Back to patients"));
+  m_detailsBox->setTitle(tr("Details"));
+  const QStringList details = {tr("Code:"),          tr("Born:"),      tr("Sex:"),
+                               tr("Affected side:"), tr("Diagnosis:"), tr("Notes:")};
+  for (std::size_t i = 0; i < m_detailNames.size(); ++i)
+    m_detailNames[i]->setText(details[static_cast<qsizetype>(i)]);
+  m_lengthsBox->setTitle(tr("Measured segment lengths"));
+  const QStringList lengths = {tr("Upper arm:"), tr("Forearm:"), tr("Upper-arm IMU:"),
+                               tr("Forearm IMU:")};
+  for (std::size_t i = 0; i < m_lengthNames.size(); ++i)
+    m_lengthNames[i]->setText(lengths[static_cast<qsizetype>(i)]);
+  m_programmeBox->setTitle(tr("Home programme"));
+  m_programmeTable->setAccessibleName(tr("Home programme"));
+  m_progressBox->setTitle(tr("Progress"));
+  m_sessionsBox->setTitle(tr("Sessions"));
+  m_sessionTable->setAccessibleName(tr("Sessions"));
+  // What was read, in words of the new language (sex, side, the programme's headers).
+  if (m_loaded) show(m_overview, true);
+}
+
+void PatientScreen::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
 void PatientScreen::reload() {
-  m_message->showMessage(tr("Loading..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Loading..."); }, MessageLine::Kind::Notice);
   m_records.call(
       this, [code = m_code](storage::ClinicalStore& s) { return loadPatientOverview(s, code); },
       [this](const PatientOverview& o) {
@@ -181,12 +215,14 @@ void PatientScreen::reload() {
         emit loaded();
       },
       [this](const RecordsFailure& f) {
-        m_message->showMessage(tr("This patient could not be read: %1").arg(f.message));
+        m_message->showMessage(
+            [why = f.message] { return tr("This patient could not be read: %1").arg(why); });
       });
 }
 
-void PatientScreen::show(const PatientOverview& o) {
+void PatientScreen::show(const PatientOverview& o, bool again) {
   m_overview = o;
+  m_loaded = true;
   const storage::Patient& p = o.patient;
   m_title->setText(tr("%1 (%2)").arg(p.name, p.code));
   setWindowTitle(p.name);
@@ -214,20 +250,23 @@ void PatientScreen::show(const PatientOverview& o) {
 
   m_programme->clear();
   m_programme->setHorizontalHeaderLabels(
-      {tr("Protocol"), tr("Angle"), tr("Target (deg)"), tr("Per week")});
+      {tr("Protocol"), tr("Angle"), tr("Target (\u00b0)"), tr("Per week")});
   for (const storage::ProgrammeItem& item : o.programme) {
     QString angle, target;
     for (const storage::Protocol& pr : o.protocols) {
       if (pr.name != item.protocolName) continue;
       angle = angleName(angleIndex(pr.angleKey));
-      target =
-          QStringLiteral("%1-%2").arg(pr.targetMinDeg, 0, 'f', 0).arg(pr.targetMaxDeg, 0, 'f', 0);
+      target = QStringLiteral("%L1\u2013%L2")
+                   .arg(pr.targetMinDeg, 0, 'f', 0)
+                   .arg(pr.targetMaxDeg, 0, 'f', 0);
     }
     m_programme->appendRow({new QStandardItem(item.protocolName), new QStandardItem(angle),
                             new QStandardItem(target),
-                            new QStandardItem(QString::number(item.sessionsPerWeek))});
+                            new QStandardItem(QLocale().toString(item.sessionsPerWeek))});
   }
+  if (again) return;  // the chart, the sessions' table and the choices in them stay
   m_chart->setSessions(o.progress);
+  m_sessions->setSessions(o.sessions);
   // Open on the angle the latest protocol trains, if any.
   for (const storage::SessionInfo& s : o.sessions) {
     const auto pr = std::find_if(o.protocols.begin(), o.protocols.end(),
@@ -237,7 +276,6 @@ void PatientScreen::show(const PatientOverview& o) {
       break;
     }
   }
-  m_sessions->setSessions(o.sessions);
   m_sessionTable->resizeColumnsToContents();
   if (m_sessionsSorted->rowCount() > 0) m_sessionTable->selectRow(0);
   updateButtons();
@@ -280,7 +318,8 @@ void PatientScreen::askProgressReport() {
 }
 
 void PatientScreen::writeProgressReport(const QString& pdf) {
-  m_message->showMessage(tr("Writing the progress report..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Writing the progress report..."); },
+                         MessageLine::Kind::Notice);
   RecordsJob* job = m_records.startJob(
       this,
       [code = m_code, pdf](JobContext& c) {
@@ -290,17 +329,22 @@ void PatientScreen::writeProgressReport(const QString& pdf) {
         return clinical::writeProgressReport(c.store(), d, pdf);
       },
       [this, pdf](int pages) {
-        m_message->showMessage(tr("Progress report written: %1 (%n page(s)).", nullptr, pages)
-                                   .arg(QDir::toNativeSeparators(pdf)),
-                               MessageLine::Kind::Notice);
+        m_message->showMessage(
+            [pages, pdf] {
+              return tr("Progress report written: %1 (%n page(s)).", nullptr, pages)
+                  .arg(QDir::toNativeSeparators(pdf));
+            },
+            MessageLine::Kind::Notice);
         emit reportWritten(pdf, {});
       },
       [this, pdf](const RecordsFailure& f) {
-        const QString text = tr("The progress report could not be written: %1. Choose another "
-                                "folder or file name and try again.")
-                                 .arg(f.message);
+        const auto text = [why = f.message] {
+          return tr("The progress report could not be written: %1. Choose another folder or "
+                    "file name and try again.")
+              .arg(why);
+        };
         m_message->showMessage(text);
-        emit reportWritten(pdf, text);
+        emit reportWritten(pdf, text());
       });
   showJobProgress(this, job, tr("Writing the progress report..."));
 }

@@ -7,6 +7,7 @@
 
 #include "app/gui/services/PatientRecords.h"
 
+class QGroupBox;
 class QLabel;
 class QPushButton;
 class QSortFilterProxyModel;
@@ -45,8 +46,14 @@ class PatientScreen : public QWidget {
   /// A progress report was written (or failed: message non-empty).
   void reportWritten(const QString& pdf, const QString& message);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
-  void show(const PatientOverview& o);
+  void retranslateUi();
+  /// Shows what was read; again: the same record in words of a new language (the chart's
+  /// angle and the session chosen stay).
+  void show(const PatientOverview& o, bool again = false);
   void editPatient();
   void askProgressReport();
   void updateButtons();
@@ -57,10 +64,17 @@ class PatientScreen : public QWidget {
   PatientOverview m_overview;
   bool m_canWrite;
 
+  bool m_loaded = false;
   QLabel* m_title;
-  std::vector<QLabel*> m_detailValues;  // code, born, sex, side, diagnosis, notes
-  std::vector<QLabel*> m_lengthValues;  // upper arm, forearm, upper strap, forearm strap
+  std::vector<QLabel*> m_detailNames, m_detailValues;  // code, born, sex, side, diagnosis, notes
+  std::vector<QLabel*> m_lengthNames, m_lengthValues;  // upper arm, forearm, both IMUs
   QLabel* m_lengthsNote = nullptr;
+  QGroupBox* m_detailsBox;
+  QGroupBox* m_lengthsBox;
+  QGroupBox* m_programmeBox;
+  QGroupBox* m_progressBox;
+  QGroupBox* m_sessionsBox;
+  QTableView* m_programmeTable;
   QStandardItemModel* m_programme;
   ProgressChart* m_chart;
   SessionTableModel* m_sessions;

@@ -3,6 +3,8 @@
 #include <QDate>
 #include <QLocale>
 
+#include "ui/Retranslate.h"
+
 namespace armtrack::gui {
 
 void PatientTableModel::setPatients(std::vector<storage::Patient> patients) {
@@ -91,6 +93,11 @@ QVariant PatientTableModel::headerData(int section, Qt::Orientation orientation,
     default:
       return {};
   }
+}
+
+bool PatientTableModel::event(QEvent* event) {
+  ui::refreshOnLanguageChange(this, event);
+  return QAbstractTableModel::event(event);
 }
 
 }  // namespace armtrack::gui

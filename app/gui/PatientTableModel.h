@@ -26,6 +26,8 @@ class PatientTableModel : public QAbstractTableModel {
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   QVariant headerData(int section, Qt::Orientation orientation,
                       int role = Qt::DisplayRole) const override;
+  /// A LanguageChange (passed on by the owning widget) refreshes the views' words.
+  bool event(QEvent* event) override;
 
   /// "f", "m", "x" and sides as words for the user.
   static QString sexText(const QString& sex);

@@ -17,6 +17,7 @@
 #include <algorithm>
 
 #include "app/gui/AngleNames.h"
+#include "app/gui/Forms.h"
 #include "core/metrics/NormativeRanges.h"
 
 namespace armtrack::gui {
@@ -34,23 +35,18 @@ ProgressChart::ProgressChart(QWidget* parent)
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   auto* top = new QHBoxLayout;
-  auto* label = new QLabel(tr("&Angle:"), this);
-  label->setBuddy(m_angle);
-  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->addItem(angleName(i), i);
-  m_angle->setAccessibleName(tr("Angle shown in the progress chart"));
-  top->addWidget(label);
+  m_angleLabel = new QLabel(this);
+  m_angleLabel->setBuddy(m_angle);
+  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->addItem(QString(), i);
+  top->addWidget(m_angleLabel);
   top->addWidget(m_angle);
   top->addStretch();
   layout->addLayout(top);
   auto* row = new QHBoxLayout;
   m_view->setRenderHint(QPainter::Antialiasing);
-  m_view->setAccessibleName(tr("Progress chart"));
-  m_view->setAccessibleDescription(
-      tr("Range of motion per session against date; the table beside it holds the same values."));
   m_view->setMinimumHeight(220);
   row->addWidget(m_view, 3);
   m_tableView->setModel(m_table);
-  m_tableView->setAccessibleName(tr("Progress values"));
   m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_tableView->verticalHeader()->hide();
   m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
@@ -58,7 +54,23 @@ ProgressChart::ProgressChart(QWidget* parent)
   row->addWidget(m_tableView, 2);
   layout->addLayout(row, 1);
   connect(m_angle, &QComboBox::currentIndexChanged, this, &ProgressChart::redraw);
-  redraw();
+  retranslateUi();
+}
+
+void ProgressChart::retranslateUi() {
+  m_angleLabel->setText(tr("&Angle:"));
+  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->setItemText(i, angleName(i));
+  m_angle->setAccessibleName(tr("Angle shown in the progress chart"));
+  m_view->setAccessibleName(tr("Progress chart"));
+  m_view->setAccessibleDescription(
+      tr("Range of motion per session against date; the table beside it holds the same values."));
+  m_tableView->setAccessibleName(tr("Progress values"));
+  redraw();  // titles, series, axes and the table's header in the new words and number format
+}
+
+void ProgressChart::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
 }
 
 void ProgressChart::setSessions(std::vector<reports::ProgressSession> sessions) {
@@ -94,10 +106,12 @@ void ProgressChart::redraw() {
   const NormativeRange& normal = aaosNormativeRanges()[static_cast<std::size_t>(a)];
   // Drawn in the unit of the settings: "deg" values are radians * scale.
   const double scale = m_radians ? 1.0 : kRadToDeg;
-  const QString unit = m_radians ? tr("rad") : tr("deg");
+  const QString unit = m_radians ? tr("rad") : tr("\u00b0");
   const double normalDeg = normativeSpanRad(normal) * scale;
 
   auto* chart = new QChart;
+  chart->setLocale(QLocale());
+  chart->setLocalizeNumbers(true);
   chart->setTitle(angleName(a));
   chart->legend()->setAlignment(Qt::AlignBottom);
   chart->setBackgroundRoundness(0);
@@ -128,9 +142,9 @@ void ProgressChart::redraw() {
     ++m_points;
     m_table->appendRow(
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
-         new QStandardItem(QString::number(deg, 'f', m_radians ? 3 : 1)),
-         new QStandardItem(QStringLiteral("%1 %").arg(100.0 * fractionOfNormativeSpan(normal, *rom),
-                                                      0, 'f', 0))});
+         new QStandardItem(QLocale().toString(deg, 'f', m_radians ? 3 : 1)),
+         new QStandardItem(
+             tr("%L1 %").arg(100.0 * fractionOfNormativeSpan(normal, *rom), 0, 'f', 0))});
   }
   if (m_points == 0) {
     chart->setTitle(tr("%1: no analysed session yet").arg(angleName(a)));
@@ -147,7 +161,7 @@ void ProgressChart::redraw() {
   }
   auto* normalArea = new QAreaSeries(normalTop, normalBottom);
   normalArea->setName(
-      tr("Normal (AAOS) %1 %2").arg(normalDeg, 0, 'f', m_radians ? 2 : 0).arg(unit));
+      tr("Normal (AAOS) %L1 %2").arg(normalDeg, 0, 'f', m_radians ? 2 : 0).arg(unit));
   QColor shade = palette().color(QPalette::Highlight);
   shade.setAlpha(45);
   normalArea->setBrush(shade);
@@ -160,8 +174,7 @@ void ProgressChart::redraw() {
   chart->addSeries(dots);
 
   auto* x = new QDateTimeAxis;
-  x->setFormat(QStringLiteral("d MMM"));
-
+  x->setFormat(tr("d MMM", "the date axis' labels, a QDateTime format: day and short month"));
   x->setRange(from, to);
   x->setTickCount(std::clamp(m_points + 1, 3, 6));
   auto* y = new QValueAxis;

@@ -11,6 +11,7 @@
 class QChart;
 class QChartView;
 class QComboBox;
+class QLabel;
 class QStandardItemModel;
 class QTableView;
 
@@ -34,10 +35,15 @@ class ProgressChart : public QWidget {
   /// The numbers drawn: date, range of motion (deg or rad), percent of the normal range.
   const QStandardItemModel* table() const { return m_table; }
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void redraw();
 
   std::vector<reports::ProgressSession> m_sessions;
+  QLabel* m_angleLabel;
   QComboBox* m_angle;
   QChartView* m_view;
   QStandardItemModel* m_table;

@@ -7,18 +7,22 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
 
+#include "app/gui/Forms.h"
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
+
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
 namespace {
 
 QString number(const std::optional<double>& v, int decimals) {
-  return v ? QString::number(*v, 'f', decimals) : QStringLiteral("-");
+  return v ? QLocale().toString(*v, 'f', decimals) : QStringLiteral("-");
 }
 
 }  // namespace
@@ -53,15 +57,15 @@ QVariant RepetitionTableModel::data(const QModelIndex& index, int role) const {
   const double k = m_radians ? 3.14159265358979323846 / 180 : 1.0;
   const int d = m_radians ? 3 : 1;
   const auto angle = [&](const std::optional<double>& deg, int decimals) {
-    return deg ? QString::number(*deg * k, 'f', decimals) : QStringLiteral("-");
+    return deg ? QLocale().toString(*deg * k, 'f', decimals) : QStringLiteral("-");
   };
   switch (index.column()) {
     case Number:
       return index.row() + 1;
     case Start:
-      return QString::number(r.startS, 'f', 1);
+      return QLocale().toString(r.startS, 'f', 1);
     case End:
-      return QString::number(r.endS, 'f', 1);
+      return QLocale().toString(r.endS, 'f', 1);
     case Excursion:
       return angle(r.excursionDeg, d);
     case Rom:
@@ -87,11 +91,11 @@ QVariant RepetitionTableModel::headerData(int section, Qt::Orientation o, int ro
     case End:
       return tr("End (s)");
     case Excursion:
-      return m_radians ? tr("Excursion (rad)") : tr("Excursion (deg)");
+      return m_radians ? tr("Excursion (rad)") : tr("Excursion (\u00b0)");
     case Rom:
-      return m_radians ? tr("Range (rad)") : tr("Range (deg)");
+      return m_radians ? tr("Range (rad)") : tr("Range (\u00b0)");
     case PeakVelocity:
-      return m_radians ? tr("Peak velocity (rad/s)") : tr("Peak velocity (deg/s)");
+      return m_radians ? tr("Peak velocity (rad/s)") : tr("Peak velocity (\u00b0/s)");
     case Sparc:
       return tr("SPARC");
     case Kind:
@@ -101,38 +105,45 @@ QVariant RepetitionTableModel::headerData(int section, Qt::Orientation o, int ro
   }
 }
 
+bool RepetitionTableModel::event(QEvent* event) {
+  ui::refreshOnLanguageChange(this, event);
+  return QAbstractTableModel::event(event);
+}
+
 ReestimatePanel::ReestimatePanel(const AppSettings& settings, QWidget* parent)
     : QWidget(parent),
+      m_currentLabel(new QLabel(this)),
+      m_filterLabel(new QLabel(this)),
+      m_methodLabel(new QLabel(this)),
+      m_calibrationLabel(new QLabel(this)),
       m_filter(new QComboBox(this)),
       m_method(new QComboBox(this)),
-      m_optical(new QCheckBox(tr("Fuse the &optical data (Kinect, webcam)"), this)),
+      m_optical(new QCheckBox(this)),
       m_calibration(new QLineEdit(this)),
-      m_browse(new QPushButton(tr("B&rowse..."), this)),
-      m_run(new QPushButton(tr("Re-&estimate"), this)),
+      m_browse(new QPushButton(this)),
+      m_run(new QPushButton(this)),
       m_current(new QLabel(this)) {
   auto* form = new QFormLayout(this);
   m_current->setWordWrap(true);
-  form->addRow(tr("Shown:"), m_current);
-  m_filter->addItem(tr("EKF (extended Kalman filter)"), static_cast<int>(FilterKind::Ekf));
-  m_filter->addItem(tr("UKF (unscented Kalman filter)"), static_cast<int>(FilterKind::Ukf));
-  m_filter->setAccessibleName(tr("Filter"));
-  form->addRow(tr("&Filter:"), m_filter);
-  m_method->addItem(tr("A: body acceleration modelled"),
-                    static_cast<int>(MeasurementModel::AccelGyro));
-  m_method->addItem(tr("B: body acceleration as states"),
-                    static_cast<int>(MeasurementModel::AugmentedBodyAccel));
-  m_method->addItem(tr("C: no compensation"), static_cast<int>(MeasurementModel::InclinometerGyro));
-  m_method->setAccessibleName(tr("Method"));
-  form->addRow(tr("&Method:"), m_method);
+  form->addRow(m_currentLabel, m_current);
+  m_filter->addItem(QString(), static_cast<int>(FilterKind::Ekf));
+  m_filter->addItem(QString(), static_cast<int>(FilterKind::Ukf));
+  m_filterLabel->setBuddy(m_filter);
+  form->addRow(m_filterLabel, m_filter);
+  m_method->addItem(QString(), static_cast<int>(MeasurementModel::AccelGyro));
+  m_method->addItem(QString(), static_cast<int>(MeasurementModel::AugmentedBodyAccel));
+  m_method->addItem(QString(), static_cast<int>(MeasurementModel::InclinometerGyro));
+  m_methodLabel->setBuddy(m_method);
+  form->addRow(m_methodLabel, m_method);
   m_optical->setChecked(true);
   form->addRow(QString(), m_optical);
   auto* calibration = new QHBoxLayout;
-  m_calibration->setPlaceholderText(tr("none (a file from armtrack-cli calibrate)"));
-  m_calibration->setAccessibleName(tr("Calibration file"));
   calibration->addWidget(m_calibration, 1);
   calibration->addWidget(m_browse);
-  form->addRow(tr("&Calibration:"), calibration);
+  m_calibrationLabel->setBuddy(m_calibration);
+  form->addRow(m_calibrationLabel, calibration);
   form->addRow(QString(), m_run);
+  retranslateUi();
   m_filter->setCurrentIndex(settings.filter == QLatin1String("ukf") ? 1 : 0);
   m_method->setCurrentIndex(settings.method == QLatin1String("B")   ? 1
                             : settings.method == QLatin1String("C") ? 2
@@ -143,6 +154,30 @@ ReestimatePanel::ReestimatePanel(const AppSettings& settings, QWidget* parent)
     if (!f.isEmpty()) m_calibration->setText(f);
   });
   connect(m_run, &QPushButton::clicked, this, [this] { emit reestimateRequested(choice()); });
+}
+
+void ReestimatePanel::retranslateUi() {
+  m_currentLabel->setText(tr("Shown:"));
+  m_filter->setItemText(0, tr("EKF (extended Kalman filter)"));
+  m_filter->setItemText(1, tr("UKF (unscented Kalman filter)"));
+  m_filter->setAccessibleName(tr("Filter"));
+  m_filterLabel->setText(tr("&Filter:"));
+  m_method->setItemText(0, tr("A: body acceleration modelled"));
+  m_method->setItemText(1, tr("B: body acceleration as states"));
+  m_method->setItemText(2, tr("C: no compensation"));
+  m_method->setAccessibleName(tr("Method"));
+  m_methodLabel->setText(tr("&Method:"));
+  m_optical->setText(tr("Fuse the &optical data (Kinect, webcam)"));
+  m_calibration->setPlaceholderText(tr("none (a file from armtrack-cli calibrate)"));
+  m_calibration->setAccessibleName(tr("Calibration file"));
+  m_browse->setText(tr("B&rowse..."));
+  m_calibrationLabel->setText(tr("&Calibration:"));
+  m_run->setText(tr("Re-&estimate"));
+}
+
+void ReestimatePanel::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
 }
 
 ReestimateChoice ReestimatePanel::choice() const {
@@ -174,31 +209,44 @@ void ReestimatePanel::setCurrent(const QString& text) {
 OutputsPanel::OutputsPanel(QWidget* parent) : QWidget(parent), m_result(new QLabel(this)) {
   auto* layout = new QVBoxLayout(this);
   auto* row = new QHBoxLayout;
-  const auto button = [&](const QString& text, const QString& tip, auto&& onClick) {
-    auto* b = new QPushButton(text, this);
-    b->setToolTip(tip);
+  const auto button = [&](auto&& onClick) {
+    auto* b = new QPushButton(this);
     connect(b, &QPushButton::clicked, this, onClick);
     row->addWidget(b);
     m_buttons.push_back(b);
   };
   using clinical::ExportFormat;
-  button(tr("&PDF report..."), tr("The session report: details, metrics, plots, repetitions"),
-         [this] { emit reportRequested(); });
-  button(tr("C&SV..."), tr("Angles (deg) with their uncertainty, and a metrics table"),
-         [this] { emit exportRequested(ExportFormat::Csv); });
-  button(tr("Open&Sim .mot..."), tr("The clinical angles as an OpenSim motion file"),
-         [this] { emit exportRequested(ExportFormat::Mot); });
-  button(tr("&BIDS..."), tr("A BIDS motion data set: IMUs, optical data and angles"),
-         [this] { emit exportRequested(ExportFormat::Bids); });
-  button(tr("Rec&ording..."), tr("The raw recording in the open format, bit for bit"),
-         [this] { emit exportRequested(ExportFormat::Recording); });
+  button([this] { emit reportRequested(); });
+  button([this] { emit exportRequested(ExportFormat::Csv); });
+  button([this] { emit exportRequested(ExportFormat::Mot); });
+  button([this] { emit exportRequested(ExportFormat::Bids); });
+  button([this] { emit exportRequested(ExportFormat::Recording); });
   row->addStretch();
   layout->addLayout(row);
   m_result->setWordWrap(true);
   m_result->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
-  m_result->setAccessibleName(tr("Last output"));
   layout->addWidget(m_result);
   layout->addStretch();
+  retranslateUi();
+}
+
+void OutputsPanel::retranslateUi() {
+  const std::pair<QString, QString> texts[] = {
+      {tr("&PDF report..."), tr("The session report: details, metrics, plots, repetitions")},
+      {tr("C&SV..."), tr("Angles (deg) with their uncertainty, and a metrics table")},
+      {tr("Open&Sim .mot..."), tr("The clinical angles as an OpenSim motion file")},
+      {tr("&BIDS..."), tr("A BIDS motion data set: IMUs, optical data and angles")},
+      {tr("Rec&ording..."), tr("The raw recording in the open format, bit for bit")}};
+  for (std::size_t i = 0; i < m_buttons.size(); ++i) {
+    m_buttons[i]->setText(texts[i].first);
+    m_buttons[i]->setToolTip(texts[i].second);
+  }
+  m_result->setAccessibleName(tr("Last output"));
+}
+
+void OutputsPanel::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
 }
 
 void OutputsPanel::setBusy(bool busy) {

@@ -35,6 +35,8 @@ class RepetitionTableModel : public QAbstractTableModel {
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   QVariant headerData(int section, Qt::Orientation orientation,
                       int role = Qt::DisplayRole) const override;
+  /// A LanguageChange (passed on by the owning widget) refreshes the views' words.
+  bool event(QEvent* event) override;
 
  private:
   std::vector<RepetitionRow> m_rows;
@@ -62,7 +64,16 @@ class ReestimatePanel : public QWidget {
  signals:
   void reestimateRequested(const armtrack::gui::ReestimateChoice& choice);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
+
+  QLabel* m_currentLabel;
+  QLabel* m_filterLabel;
+  QLabel* m_methodLabel;
+  QLabel* m_calibrationLabel;
   QComboBox* m_filter;
   QComboBox* m_method;
   QCheckBox* m_optical;
@@ -84,7 +95,12 @@ class OutputsPanel : public QWidget {
   void reportRequested();
   void exportRequested(armtrack::clinical::ExportFormat format);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
+
   std::vector<QPushButton*> m_buttons;
   QLabel* m_result;
 };

@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QJsonDocument>
 #include <QLabel>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -23,6 +24,7 @@
 #include "app/gui/services/RecordsService.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::gui {
 
@@ -38,22 +40,27 @@ std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a) {
 
 QString clock(double s) {
   const int tenths = static_cast<int>(std::max(0.0, s) * 10 + 0.5);
-  return QStringLiteral("%1:%2.%3")
+  return QStringLiteral("%1:%2%3%4")
       .arg(tenths / 600)
       .arg((tenths / 10) % 60, 2, 10, QLatin1Char('0'))
+      .arg(QLocale().decimalPoint())
       .arg(tenths % 10);
 }
 
 QString howMade(const storage::StoredAnalysis& a, int versions) {
   const QJsonObject p = QJsonDocument::fromJson(a.paramsJson.toUtf8()).object();
-  QString text = QObject::tr("version %1 of %2: %3, method %4")
+  QString text = ReviewScreen::tr("version %1 of %2: %3, method %4")
                      .arg(a.version)
                      .arg(versions)
                      .arg(p["filter"].toString().toUpper(), p["method"].toString());
-  text += p["optical_used"].toBool() ? QObject::tr(", optical data fused")
-                                     : QObject::tr(", no optical data fused");
-  if (p["calibration"].toBool()) text += QObject::tr(", calibrated");
+  text += p["optical_used"].toBool() ? ReviewScreen::tr(", optical data fused")
+                                     : ReviewScreen::tr(", no optical data fused");
+  if (p["calibration"].toBool()) text += ReviewScreen::tr(", calibrated");
   return text;
+}
+
+QString decimals(const QJsonValue& v, int digits) {
+  return v.isDouble() ? QLocale().toString(v.toDouble(), 'f', digits) : QStringLiteral("-");
 }
 
 }  // namespace
@@ -61,8 +68,8 @@ QString howMade(const storage::StoredAnalysis& a, int versions) {
 ReviewScreen::ReviewScreen(RecordsService& records, const AppSettings& settings, qint64 sessionId,
                            QWidget* parent)
     : QWidget(parent), m_records(records), m_settings(settings), m_id(sessionId) {
-  setWindowTitle(tr("Review of session %1").arg(sessionId));
   buildLayout();
+  retranslateUi();
   m_play.setInterval(33);  // 30 Hz: the view and plots redraw from this timer only
   connect(&m_play, &QTimer::timeout, this, &ReviewScreen::tick);
   reload();
@@ -75,8 +82,8 @@ ReviewScreen::~ReviewScreen() {
 void ReviewScreen::buildLayout() {
   auto* layout = new QVBoxLayout(this);
   auto* top = new QHBoxLayout;
-  m_title = heading(tr("Session %1").arg(m_id), this);
-  m_back = new QPushButton(tr("&Back to the patient"), this);
+  m_title = heading(QString(), this);
+  m_back = new QPushButton(this);
   m_back->setShortcut(QKeySequence::Back);
   top->addWidget(m_title, 1);
   top->addWidget(m_back);
@@ -87,7 +94,6 @@ void ReviewScreen::buildLayout() {
   auto* vertical = new QSplitter(Qt::Vertical, this);
   auto* horizontal = new QSplitter(Qt::Horizontal, vertical);
   m_arm = new ui::ArmView(horizontal);
-  m_arm->setAccessibleName(tr("3D arm replay"));
   m_arm->setMinimumSize(320, 280);
   m_plots = new ui::AnglePlotPanel(horizontal);
   m_plots->setMode(ui::AnglePlotPanel::Mode::Review);
@@ -98,19 +104,15 @@ void ReviewScreen::buildLayout() {
   auto* lowerLayout = new QVBoxLayout(lower);
   lowerLayout->setContentsMargins(0, 0, 0, 0);
   auto* transport = new QHBoxLayout;
-  m_playButton = new QPushButton(tr("&Play"), lower);
+  m_playButton = new QPushButton(lower);
   m_playButton->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_Space));
-  m_playButton->setToolTip(tr("Play or pause the replay (Ctrl+Space)"));
   m_slider = new QSlider(Qt::Horizontal, lower);
-  m_slider->setAccessibleName(tr("Replay time"));
   m_slider->setSingleStep(100);  // 0.1 s per arrow key
   m_slider->setPageStep(5000);
   m_time = new QLabel(lower);
-  m_time->setAccessibleName(tr("Replay time"));
   m_speed = new QComboBox(lower);
-  for (double s : {0.25, 0.5, 1.0, 2.0, 4.0}) m_speed->addItem(tr("%1x").arg(s), s);
+  for (double s : {0.25, 0.5, 1.0, 2.0, 4.0}) m_speed->addItem(QString(), s);
   m_speed->setCurrentIndex(2);
-  m_speed->setAccessibleName(tr("Replay speed"));
   transport->addWidget(m_playButton);
   transport->addWidget(m_slider, 1);
   transport->addWidget(m_time);
@@ -118,50 +120,47 @@ void ReviewScreen::buildLayout() {
   lowerLayout->addLayout(transport);
 
   m_tabs = new QTabWidget(lower);
-  auto* repsTab = new QWidget;
-  auto* repsLayout = new QVBoxLayout(repsTab);
-  m_repSummary = new QLabel(repsTab);
+  m_repsTab = new QWidget;
+  auto* repsLayout = new QVBoxLayout(m_repsTab);
+  m_repSummary = new QLabel(m_repsTab);
   m_repSummary->setWordWrap(true);
   repsLayout->addWidget(m_repSummary);
   m_reps = new RepetitionTableModel(this);
   m_reps->setRadians(m_settings.units == AppSettings::AngleUnit::Radians);
-  m_repTable = new QTableView(repsTab);
+  m_repTable = new QTableView(m_repsTab);
   m_repTable->setModel(m_reps);
-  m_repTable->setAccessibleName(tr("Repetitions"));
   m_repTable->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_repTable->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_repTable->setTabKeyNavigation(false);
   m_repTable->verticalHeader()->hide();
   m_repTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   repsLayout->addWidget(m_repTable);
-  m_tabs->addTab(repsTab, tr("&Repetitions"));
+  m_tabs->addTab(m_repsTab, QString());
 
-  auto* compareTab = new QWidget;
-  auto* compareLayout = new QVBoxLayout(compareTab);
-  m_compare = new QComboBox(compareTab);
-  m_compare->setAccessibleName(tr("Session to compare with"));
-  compareLayout->addWidget(new QLabel(
-      tr("Another session of this patient, drawn dashed on the plots and as a translucent arm:"),
-      compareTab));
+  m_compareTab = new QWidget;
+  auto* compareLayout = new QVBoxLayout(m_compareTab);
+  m_compare = new QComboBox(m_compareTab);
+  m_compare->addItem(QString(), qint64{0});  // none
+  m_compareNote = new QLabel(m_compareTab);
+  compareLayout->addWidget(m_compareNote);
   compareLayout->addWidget(m_compare);
   compareLayout->addStretch();
-  m_tabs->addTab(compareTab, tr("Co&mpare"));
+  m_tabs->addTab(m_compareTab, QString());
 
-  auto* notesTab = new QWidget;
-  auto* notesLayout = new QVBoxLayout(notesTab);
-  m_notes = new QPlainTextEdit(notesTab);
-  m_notes->setAccessibleName(tr("Session notes"));
+  m_notesTab = new QWidget;
+  auto* notesLayout = new QVBoxLayout(m_notesTab);
+  m_notes = new QPlainTextEdit(m_notesTab);
   m_notes->setTabChangesFocus(true);
-  m_saveNotes = new QPushButton(tr("Sa&ve notes"), notesTab);
+  m_saveNotes = new QPushButton(m_notesTab);
   m_saveNotes->setShortcut(QKeySequence::Save);
   notesLayout->addWidget(m_notes);
   notesLayout->addWidget(m_saveNotes, 0, Qt::AlignRight);
-  m_tabs->addTab(notesTab, tr("&Notes"));
+  m_tabs->addTab(m_notesTab, QString());
 
   m_reestimate = new ReestimatePanel(m_settings);
-  m_tabs->addTab(m_reestimate, tr("Re-es&timate"));
+  m_tabs->addTab(m_reestimate, QString());
   m_outputs = new OutputsPanel;
-  m_tabs->addTab(m_outputs, tr("Report and e&xport"));
+  m_tabs->addTab(m_outputs, QString());
   lowerLayout->addWidget(m_tabs, 1);
   vertical->setStretchFactor(0, 3);
   vertical->setStretchFactor(1, 2);
@@ -192,8 +191,77 @@ void ReviewScreen::buildLayout() {
   setFocusProxy(m_playButton);
 }
 
+void ReviewScreen::retranslateUi() {
+  ui::setButtonText(m_back, tr("&Back to the patient"));
+  m_arm->setAccessibleName(tr("3D arm replay"));
+  ui::setButtonText(m_playButton, playing() ? tr("&Pause") : tr("&Play"));
+  m_playButton->setToolTip(tr("Play or pause the replay (%1)")
+                               .arg(m_playButton->shortcut().toString(QKeySequence::NativeText)));
+  m_slider->setAccessibleName(tr("Replay time"));
+  m_time->setAccessibleName(tr("Replay time"));
+  for (int i = 0; i < m_speed->count(); ++i)
+    m_speed->setItemText(i, tr("%L1\u00d7").arg(m_speed->itemData(i).toDouble()));
+  m_speed->setAccessibleName(tr("Replay speed"));
+  m_repTable->setAccessibleName(tr("Repetitions"));
+  m_tabs->setTabText(m_tabs->indexOf(m_repsTab), tr("&Repetitions"));
+  m_compare->setAccessibleName(tr("Session to compare with"));
+  m_compareNote->setText(
+      tr("Another session of this patient, drawn dashed on the plots and as a translucent arm:"));
+  m_tabs->setTabText(m_tabs->indexOf(m_compareTab), tr("Co&mpare"));
+  m_notes->setAccessibleName(tr("Session notes"));
+  ui::setButtonText(m_saveNotes, tr("Sa&ve notes"));
+  m_tabs->setTabText(m_tabs->indexOf(m_notesTab), tr("&Notes"));
+  m_tabs->setTabText(m_tabs->indexOf(m_reestimate), tr("Re-es&timate"));
+  m_tabs->setTabText(m_tabs->indexOf(m_outputs), tr("Report and e&xport"));
+  showDataTexts();
+  updateTimeLabel();
+}
+
+void ReviewScreen::changeEvent(QEvent* event) {
+  if (isLanguageChange(event)) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
+void ReviewScreen::showDataTexts() {
+  const ReviewData& d = m_data;
+  m_compare->setItemText(0, tr("(none)"));
+  if (d.info.id == 0) {  // not read yet
+    setWindowTitle(tr("Review of session %1").arg(m_id));
+    setHeading(m_title, tr("Session %1").arg(m_id));
+    return;
+  }
+  const QString side = d.meta.side == Side::Left ? tr("left arm") : tr("right arm");
+  const QString started = SessionTableModel::localTime(d.info.startedAt);
+  setHeading(m_title, tr("%1: session of %2, %3").arg(d.patient.name, started, side));
+  setWindowTitle(tr("Review: %1, %2").arg(d.patient.name, started));
+  m_reestimate->setCurrent(d.analysis && !d.analysis->t.empty() ? howMade(*d.analysis, d.versions)
+                                                                : tr("not analysed yet"));
+  if (d.metrics) {
+    const QJsonObject r = (*d.metrics)["repetitions"].toObject();
+    m_repSummary->setText(
+        tr("%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.", nullptr,
+           r["count"].toInt())
+            .arg(angleName(angleIndex(r["primary_angle"].toString())))
+            .arg(r["full"].toInt())
+            .arg(r["partial"].toInt())
+            .arg(decimals((*d.metrics)["sparc"], 2), decimals((*d.metrics)["ldlj"], 2)) +
+        (m_skippedReps > 0
+             ? u' ' + tr("%n repetition(s) could not be read.", nullptr, m_skippedReps)
+             : QString()));
+  } else {
+    m_repSummary->setText(tr("No metrics yet."));
+  }
+  for (int i = 1; i < m_compare->count(); ++i) {
+    const qint64 id = m_compare->itemData(i).toLongLong();
+    for (const storage::SessionInfo& o : d.others)
+      if (o.id == id)
+        m_compare->setItemText(
+            i, tr("%1 %2").arg(SessionTableModel::localTime(o.startedAt), o.protocolName));
+  }
+}
+
 void ReviewScreen::reload() {
-  m_message->showMessage(tr("Reading the session..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Reading the session..."); }, MessageLine::Kind::Notice);
   m_records.call(
       this, [id = m_id](storage::ClinicalStore& s) { return loadReview(s, id); },
       [this](const ReviewData& d) {
@@ -202,18 +270,14 @@ void ReviewScreen::reload() {
         emit loaded();
       },
       [this](const RecordsFailure& f) {
-        m_message->showMessage(tr("This session could not be read: %1").arg(f.message));
+        m_message->showMessage(
+            [why = f.message] { return tr("This session could not be read: %1").arg(why); });
       });
 }
 
 void ReviewScreen::show(const ReviewData& d) {
   const bool first = m_data.info.id == 0;
   m_data = d;
-  const QString side = d.meta.side == Side::Left ? tr("left arm") : tr("right arm");
-  m_title->setText(tr("%1: session of %2, %3")
-                       .arg(d.patient.name, SessionTableModel::localTime(d.info.startedAt), side));
-  setWindowTitle(
-      tr("Review: %1, %2").arg(d.patient.name, SessionTableModel::localTime(d.info.startedAt)));
   m_arm->setArm(d.meta.geometry, d.meta.side, d.meta.up, d.meta.camera);
   if (d.protocol) {
     const int a = angleIndex(d.protocol->angleKey);
@@ -225,54 +289,40 @@ void ReviewScreen::show(const ReviewData& d) {
     m_plots->setSession(samplesOf(*d.analysis));
     m_t0 = d.analysis->t.front();
     m_t1 = d.analysis->t.back();
-    m_reestimate->setCurrent(howMade(*d.analysis, d.versions));
   } else {
     m_plots->setSession({});
     m_t0 = m_t1 = 0;
-    m_reestimate->setCurrent(tr("not analysed yet"));
-    m_message->showMessage(
-        tr("This session has no analysis yet (it may have been cut short or failed). Open "
-           "\"Re-estimate\" to estimate its joint angles from the recording."));
+    m_message->showMessage([] {
+      return tr(
+          "This session has no analysis yet (it may have been cut short or failed). Open "
+          "\"Re-estimate\" to estimate its joint angles from the recording.");
+    });
     m_tabs->setCurrentWidget(m_reestimate);
   }
   m_slider->setRange(0, static_cast<int>(std::lround((m_t1 - m_t0) * 1000)));
   setCursor(first ? m_t0 : std::clamp(m_cursor, m_t0, m_t1));
 
-  int skipped = 0;
+  m_skippedReps = 0;
   const std::vector<RepetitionRow> reps =
-      d.metrics ? repetitionRows(*d.metrics, &skipped) : std::vector<RepetitionRow>{};
+      d.metrics ? repetitionRows(*d.metrics, &m_skippedReps) : std::vector<RepetitionRow>{};
   m_reps->setRows(reps);
-  if (d.metrics) {
-    const QJsonObject r = (*d.metrics)["repetitions"].toObject();
-    const QJsonValue sparc = (*d.metrics)["sparc"], ldlj = (*d.metrics)["ldlj"];
-    m_repSummary->setText(
-        tr("%1 repetitions on %2 (%3 full, %4 partial). Smoothness: SPARC %5, LDLJ %6.")
-            .arg(r["count"].toInt())
-            .arg(angleName(angleIndex(r["primary_angle"].toString())))
-            .arg(r["full"].toInt())
-            .arg(r["partial"].toInt())
-            .arg(sparc.isDouble() ? QString::number(sparc.toDouble(), 'f', 2) : QStringLiteral("-"))
-            .arg(ldlj.isDouble() ? QString::number(ldlj.toDouble(), 'f', 2) : QStringLiteral("-")) +
-        (skipped > 0 ? u' ' + tr("%n repetition(s) could not be read.", nullptr, skipped)
-                     : QString()));
-  } else {
-    m_repSummary->setText(tr("No metrics yet."));
-  }
 
-  m_compare->clear();
-  m_compare->addItem(tr("(none)"), qint64{0});
-  for (const storage::SessionInfo& o : d.others)
-    m_compare->addItem(tr("%1 %2").arg(SessionTableModel::localTime(o.startedAt), o.protocolName),
-                       o.id);
+  while (m_compare->count() > 1) m_compare->removeItem(1);
+  for (const storage::SessionInfo& o : d.others) m_compare->addItem(QString(), o.id);
+  showDataTexts();
 
   // The stored notes, unless a draft typed earlier was never saved.
   const QString draft = QSettings().value(draftKey()).toString();
   const QSignalBlocker block(m_notes);
   if (!draft.isEmpty() && draft != d.info.notes) {
     m_notes->setPlainText(draft);
-    m_message->showMessage(tr("Notes typed earlier were not saved; they are back in the "
-                              "Notes tab. Save them or edit them."),
-                           MessageLine::Kind::Notice);
+    m_message->showMessage(
+        [] {
+          return tr(
+              "Notes typed earlier were not saved; they are back in the Notes tab. Save "
+              "them or edit them.");
+        },
+        MessageLine::Kind::Notice);
   } else if (first || m_notes->toPlainText() == d.info.notes || draft.isEmpty()) {
     m_notes->setPlainText(d.info.notes);
   }
@@ -304,12 +354,12 @@ void ReviewScreen::play() {
   if (m_cursor >= m_t1) setCursor(m_t0);
   m_clock.start();
   m_play.start();
-  m_playButton->setText(tr("&Pause"));
+  ui::setButtonText(m_playButton, tr("&Pause"));
 }
 
 void ReviewScreen::pause() {
   m_play.stop();
-  m_playButton->setText(tr("&Play"));
+  ui::setButtonText(m_playButton, tr("&Play"));
 }
 
 void ReviewScreen::tick() {
@@ -330,9 +380,11 @@ void ReviewScreen::compareWith(qint64 other) {
       this, [other](storage::ClinicalStore& s) { return storage::latestAnalysis(s, other); },
       [this, other](const std::optional<storage::StoredAnalysis>& a) {
         if (!a || a->t.empty()) {
-          m_message->showMessage(tr("Session %1 has no analysis to compare with. Review it and "
-                                    "re-estimate it first.")
-                                     .arg(other));
+          m_message->showMessage([other] {
+            return tr("Session %1 has no analysis to compare with. Review it and re-estimate it "
+                      "first.")
+                .arg(other);
+          });
           return;
         }
         m_overlay = a;
@@ -343,7 +395,8 @@ void ReviewScreen::compareWith(qint64 other) {
         emit overlayShown(other);
       },
       [this](const RecordsFailure& f) {
-        m_message->showMessage(tr("That session could not be read: %1").arg(f.message));
+        m_message->showMessage(
+            [why = f.message] { return tr("That session could not be read: %1").arg(why); });
       });
 }
 
@@ -370,16 +423,17 @@ void ReviewScreen::saveNotes() {
         m_saveNotes->setEnabled(true);
         m_data.info.notes = text;
         keepDraft();  // the draft is no longer needed
-        m_message->showMessage(tr("Notes saved."), MessageLine::Kind::Notice);
+        m_message->showMessage([] { return tr("Notes saved."); }, MessageLine::Kind::Notice);
         emit notesSaved({});
       },
       [this](const RecordsFailure& f) {
         m_saveNotes->setEnabled(true);
-        const QString text = tr("The notes could not be saved: %1. They stay here and in a "
-                                "draft; try again.")
-                                 .arg(f.message);
+        const auto text = [why = f.message] {
+          return tr("The notes could not be saved: %1. They stay here and in a draft; try again.")
+              .arg(why);
+        };
         m_message->showMessage(text);
-        emit notesSaved(text);
+        emit notesSaved(text());
       });
 }
 
@@ -387,7 +441,8 @@ void ReviewScreen::reestimate(const ReestimateChoice& choice) {
   if (m_busy) return;
   m_busy = true;
   m_reestimate->setBusy(true);
-  m_message->showMessage(tr("Estimating the joint angles again..."), MessageLine::Kind::Notice);
+  m_message->showMessage([] { return tr("Estimating the joint angles again..."); },
+                         MessageLine::Kind::Notice);
   RecordsJob* job = m_records.startJob(
       this,
       [id = m_id, choice](JobContext& c) {
@@ -406,13 +461,14 @@ void ReviewScreen::reestimate(const ReestimateChoice& choice) {
         m_busy = false;
         m_reestimate->setBusy(false);
         if (version == 0) {
-          m_message->showMessage(tr("Re-estimation cancelled; nothing was stored."),
+          m_message->showMessage([] { return tr("Re-estimation cancelled; nothing was stored."); },
                                  MessageLine::Kind::Notice);
           emit reestimated(0, tr("cancelled"));
           return;
         }
-        m_message->showMessage(tr("New estimates stored as version %1.").arg(version),
-                               MessageLine::Kind::Notice);
+        m_message->showMessage(
+            [version] { return tr("New estimates stored as version %1.").arg(version); },
+            MessageLine::Kind::Notice);
         connect(
             this, &ReviewScreen::loaded, this, [this, version] { emit reestimated(version, {}); },
             Qt::SingleShotConnection);
@@ -421,11 +477,13 @@ void ReviewScreen::reestimate(const ReestimateChoice& choice) {
       [this](const RecordsFailure& f) {
         m_busy = false;
         m_reestimate->setBusy(false);
-        const QString text =
-            tr("The session could not be estimated again: %1. The earlier estimates are kept.")
-                .arg(f.message);
+        const auto text = [why = f.message] {
+          return tr("The session could not be estimated again: %1. The earlier estimates are "
+                    "kept.")
+              .arg(why);
+        };
         m_message->showMessage(text);
-        emit reestimated(0, text);
+        emit reestimated(0, text());
       });
   showJobProgress(this, job, tr("Estimating the joint angles again..."));
 }

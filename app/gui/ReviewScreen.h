@@ -73,9 +73,15 @@ class ReviewScreen : public QWidget {
   void notesSaved(const QString& error);
   void overlayShown(qint64 otherSessionId);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void buildLayout();
+  void retranslateUi();
   void show(const ReviewData& d);
+  /// The texts made from the session read (title, summary, the sessions to compare with).
+  void showDataTexts();
   void tick();
   void updateTimeLabel();
   void askReport();
@@ -104,6 +110,11 @@ class ReviewScreen : public QWidget {
   QLabel* m_time = nullptr;
   QComboBox* m_speed = nullptr;
   QTabWidget* m_tabs = nullptr;
+  QWidget* m_repsTab = nullptr;
+  QWidget* m_compareTab = nullptr;
+  QWidget* m_notesTab = nullptr;
+  QLabel* m_compareNote = nullptr;
+  int m_skippedReps = 0;
   QLabel* m_repSummary = nullptr;
   RepetitionTableModel* m_reps = nullptr;
   QTableView* m_repTable = nullptr;

@@ -4,6 +4,8 @@
 #include <QLocale>
 #include <cmath>
 
+#include "ui/Retranslate.h"
+
 namespace armtrack::gui {
 
 void SessionTableModel::setSessions(std::vector<storage::SessionInfo> sessions) {
@@ -101,6 +103,11 @@ QVariant SessionTableModel::headerData(int section, Qt::Orientation orientation,
     default:
       return {};
   }
+}
+
+bool SessionTableModel::event(QEvent* event) {
+  ui::refreshOnLanguageChange(this, event);
+  return QAbstractTableModel::event(event);
 }
 
 }  // namespace armtrack::gui

@@ -23,6 +23,8 @@ class SessionTableModel : public QAbstractTableModel {
   QVariant data(const QModelIndex& index, int role = Qt::DisplayRole) const override;
   QVariant headerData(int section, Qt::Orientation orientation,
                       int role = Qt::DisplayRole) const override;
+  /// A LanguageChange (passed on by the owning widget) refreshes the views' words.
+  bool event(QEvent* event) override;
 
   /// "complete", "interrupted", "recording" in words.
   static QString statusText(const QString& status);

@@ -13,6 +13,7 @@
 #include <QVBoxLayout>
 
 #include "app/gui/Forms.h"
+#include "app/i18n/Language.h"
 #include "core/storage/StorageError.h"
 
 namespace armtrack::gui {
@@ -52,9 +53,9 @@ SettingsDialog::SettingsDialog(const AppSettings& s, Theme theme, QWidget* paren
   m_units->setAccessibleName(tr("Angle units"));
   displayForm->addRow(tr("Angle &units:"), m_units);
   m_language->addItem(tr("as the system"), QString());
-  m_language->addItem(QStringLiteral("English"), QStringLiteral("en"));
-  m_language->addItem(QStringLiteral("Deutsch"), QStringLiteral("de"));
-  m_language->addItem(QStringLiteral("Español"), QStringLiteral("es"));
+  // Each language by its own name, as its speakers look for it.
+  for (const i18n::Language& l : i18n::shippedLanguages())
+    m_language->addItem(l.nativeName, l.code);
   select(m_language, s.language);
   m_language->setAccessibleName(tr("Language"));
   displayForm->addRow(tr("&Language:"), m_language);

@@ -5,6 +5,8 @@
 #include <QTimer>
 #include <QWidget>
 
+#include "app/gui/Forms.h"
+
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -28,10 +30,22 @@ class SignInScreen : public QWidget {
  signals:
   void signInRequested(const QString& name, const QString& password);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void submit();
   void tick();
+  void updateButtonText();
+  /// The store's refusal in the current language (its English words are matched).
+  QString refusalText(const QString& message) const;
 
+  QString m_database;
+  QLabel* m_heading;
+  QLabel* m_where;
+  QLabel* m_nameLabel;
+  QLabel* m_passwordLabel;
   QLineEdit* m_name;
   QLineEdit* m_password;
   MessageLine* m_message;

@@ -1,6 +1,9 @@
 #include "core/reports/Charts.h"
 
+#include "core/reports/ReportText.h"
+
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QPainterPath>
 #include <algorithm>
 #include <cmath>
@@ -26,7 +29,7 @@ struct Frame {
 
 QString number(double v) {
   if (std::abs(v) < 1e-9) v = 0;
-  return QString::number(v, 'g', 6);
+  return reportLocale().toString(v, 'g', 6);
 }
 
 /// Title, grid, frame, ticks and their labels, axis titles.
@@ -140,8 +143,7 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                    f.py(band->loDeg) - f.py(band->hiDeg));
     p.fillRect(b.intersected(f.plot), kBand);
   }
-  drawAxes(w, f, r, title, xTicks, number, QStringLiteral("time (s)"), yTicks,
-           QStringLiteral("deg"));
+  drawAxes(w, f, r, title, xTicks, number, Text::tr("time (s)"), yTicks, Text::tr("deg"));
   if (band) {
     p.setFont(w.fonts().small);
     p.setPen(QColor(40, 110, 40));
@@ -165,7 +167,7 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
     p.drawText(QRectF(f.plot.left(), f.plot.bottom() + fm.height() * 1.5 + w.mm(0.3),
                       f.plot.width() * 0.75, fm.height()),
                Qt::AlignLeft | Qt::AlignTop,
-               QStringLiteral("numbers: repetitions at their peaks (p = partial)"));
+               Text::tr("numbers: repetitions at their peaks (p = partial)"));
   }
   // Min and max per column of about 0.25 mm keep every peak while bounding the path's size. The
   // line breaks at a non-finite value and across a gap: a step over 10 times the median step.
@@ -261,7 +263,7 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
   }
   p.drawText(
       QRectF(f.plot.left(), f.plot.bottom() + w.mm(1) + fm.height(), f.plot.width(), fm.height()),
-      Qt::AlignRight | Qt::AlignTop, QStringLiteral("angle (deg)"));
+      Qt::AlignRight | Qt::AlignTop, Text::tr("angle (deg)"));
   p.restore();
 }
 
@@ -294,18 +296,16 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   const QDate first = origin.date();
   drawAxes(
       w, f, r, title, xTicks,
-      [&](double d) {
-        return first.addDays(static_cast<qint64>(std::lround(d))).toString(Qt::ISODate);
-      },
-      QStringLiteral("date"), yTicks, QStringLiteral("deg"));
+      [&](double d) { return formatDate(first.addDays(static_cast<qint64>(std::lround(d)))); },
+      Text::tr("date"), yTicks, Text::tr("deg"));
   p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
   p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)),
              QPointF(f.plot.right(), f.py(normalSpanDeg)));
   p.setFont(w.fonts().small);
   p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
              Qt::AlignRight | Qt::AlignVCenter,
-             QStringLiteral("shaded: AAOS normal range of motion, 0-%1 deg")
-                 .arg(normalSpanDeg, 0, 'f', 0));
+             Text::tr("shaded: AAOS normal range of motion, 0-%1 deg")
+                 .arg(reportLocale().toString(normalSpanDeg, 'f', 0)));
   QPainterPath path;
   bool open = false;
   p.setPen(QPen(kLine, w.mm(0.35)));
@@ -324,7 +324,7 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   p.drawPath(path);
   if (!open) {
     p.setPen(Qt::black);
-    p.drawText(f.plot, Qt::AlignCenter, QStringLiteral("not measured in this period"));
+    p.drawText(f.plot, Qt::AlignCenter, Text::tr("not measured in this period"));
   }
   p.restore();
 }

@@ -1,6 +1,9 @@
 #include "core/reports/PageWriter.h"
 
+#include "core/reports/ReportText.h"
+
 #include <QFontMetricsF>
+#include <QLocale>
 #include <QTextLayout>
 #include <QTextOption>
 #include <algorithm>
@@ -72,8 +75,8 @@ void PageWriter::startPage() {
   m_painter.drawLine(QPointF(m_left, mm(kHeadTopMm + 7)), QPointF(m_right, mm(kHeadTopMm + 7)));
   m_painter.drawLine(QPointF(m_left, mm(kFootMm - 1.5)), QPointF(m_right, mm(kFootMm - 1.5)));
   const QRectF foot(m_left, mm(kFootMm), textWidth(), mm(6));
-  const QString number = m_total > 0 ? QStringLiteral("Page %1 of %2").arg(m_page).arg(m_total)
-                                     : QStringLiteral("Page %1").arg(m_page);
+  const QString number = m_total > 0 ? Text::tr("Page %1 of %2").arg(m_page).arg(m_total)
+                                     : Text::tr("Page %1").arg(m_page);
   m_painter.drawText(
       foot, Qt::AlignLeft | Qt::AlignVCenter,
       fm.elidedText(m_footer, Qt::ElideMiddle, textWidth() - fm.horizontalAdvance(number) - mm(5)));

@@ -11,34 +11,29 @@
 namespace armtrack::reports {
 namespace {
 
-QString angleName(int i) {
-  const auto name = clinicalAngleInfo()[static_cast<std::size_t>(i)].name;
-  return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-}
-
 std::optional<double> deg(const std::optional<double>& rad) {
   return rad ? std::optional<double>(*rad * kRadToDeg) : std::nullopt;
 }
 
 void draw(PageWriter& w, const ProgressReportData& d,
           const std::vector<ProgressSession>& sessions) {
-  w.title(QStringLiteral("Progress report"));
-  w.heading(QStringLiteral("Patient and period"));
+  w.title(Text::tr("Progress report"));
+  w.heading(Text::tr("Patient and period"));
   const storage::Patient& p = d.patient;
-  w.keyValues({{QStringLiteral("Name"), orDash(p.name)},
-               {QStringLiteral("Patient code"), orDash(p.code)},
-               {QStringLiteral("Date of birth"), orDash(p.birthDate)},
-               {QStringLiteral("Affected side"), orDash(p.affectedSide)},
-               {QStringLiteral("From"), orDash(d.fromDate)},
-               {QStringLiteral("To"), orDash(d.toDate)},
-               {QStringLiteral("Therapist"), orDash(d.therapistName)},
-               {QStringLiteral("Sessions"), QString::number(sessions.size())}});
+  w.keyValues({{Text::tr("Name"), orDash(p.name)},
+               {Text::tr("Patient code"), orDash(p.code)},
+               {Text::tr("Date of birth"), orDash(formatDate(p.birthDate))},
+               {Text::tr("Affected side"), word(p.affectedSide)},
+               {Text::tr("From"), orDash(formatDate(d.fromDate))},
+               {Text::tr("To"), orDash(formatDate(d.toDate))},
+               {Text::tr("Therapist"), orDash(d.therapistName)},
+               {Text::tr("Sessions"), QString::number(sessions.size())}});
 
-  w.heading(QStringLiteral("Range of motion over time"), 50);
+  w.heading(Text::tr("Range of motion over time"), 50);
   if (sessions.empty()) {
-    w.paragraph(
-        QStringLiteral("No sessions between %1 and %2.").arg(orDash(d.fromDate), orDash(d.toDate)),
-        w.fonts().body);
+    w.paragraph(Text::tr("No sessions between %1 and %2.")
+                    .arg(orDash(formatDate(d.fromDate)), orDash(formatDate(d.toDate))),
+                w.fonts().body);
   } else {
     std::vector<QDateTime> when;
     for (const ProgressSession& s : sessions) when.push_back(parseIso(s.startedAt));
@@ -49,24 +44,24 @@ void draw(PageWriter& w, const ProgressReportData& d,
         rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
       const QRectF r = w.reserve(w.mm(44));
       drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
-                    angleName(a) + QStringLiteral(": range of motion (deg)"), when, rom,
+                    Text::tr("%1: range of motion (deg)").arg(angleName(a)), when, rom,
                     normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
     const std::string_view source = ranges[0].source;
-    w.paragraph(QStringLiteral("Normal ranges: %1.")
+    w.paragraph(Text::tr("Normal ranges: %1.")
                     .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size()))),
                 w.fonts().small);
   }
 
-  w.heading(QStringLiteral("Sessions"));
+  w.heading(Text::tr("Sessions"));
   Table t;
   t.small = true;
-  t.header = {QStringLiteral("Date"), QStringLiteral("Id"), QStringLiteral("Protocol"),
-              QStringLiteral("Duration"), QStringLiteral("Reps")};
+  t.header = {Text::tr("Date"), Text::tr("Id"), Text::tr("Protocol"), Text::tr("Duration"),
+              Text::tr("Reps")};
   t.widths = {0.11, 0.06, 0.15, 0.1, 0.06};
   t.rightAligned = {false, true, false, true, true};
   for (int a = 0; a < kNumClinicalAngles; ++a) {
-    t.header << angleName(a) + QStringLiteral(" ROM");
+    t.header << Text::tr("%1 ROM").arg(angleName(a));
     t.widths.push_back(0.104);
     t.rightAligned.push_back(true);
   }
@@ -78,7 +73,7 @@ void draw(PageWriter& w, const ProgressReportData& d,
     t.rows.push_back(row);
   }
   w.table(t);
-  w.paragraph(QStringLiteral("ROM in degrees (maximum minus minimum over the session)."),
+  w.paragraph(Text::tr("ROM in degrees (maximum minus minimum over the session)."),
               w.fonts().small);
 }
 
@@ -90,12 +85,13 @@ int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
                    [](const ProgressSession& a, const ProgressSession& b) {
                      return parseIso(a.startedAt) < parseIso(b.startedAt);
                    });
-  const QString period = QStringLiteral("%1 to %2").arg(orDash(d.fromDate), orDash(d.toDate));
+  const QString period =
+      Text::tr("%1 to %2").arg(orDash(formatDate(d.fromDate)), orDash(formatDate(d.toDate)));
   const QString head =
-      QStringLiteral("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
-  const QString footer = pageFooter(d.patient.name, QStringLiteral("progress report"), d.generatedAt);
-  return writePdf(pdfPath, QStringLiteral("Progress report: %1, %2").arg(d.patient.name, period),
-                  head, footer, [&](PageWriter& w) { draw(w, d, sessions); });
+      Text::tr("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
+  const QString footer = pageFooter(d.patient.name, Text::tr("progress report"), d.generatedAt);
+  return writePdf(pdfPath, Text::tr("Progress report: %1, %2").arg(d.patient.name, period), head,
+                  footer, [&](PageWriter& w) { draw(w, d, sessions); });
 }
 
 }  // namespace armtrack::reports

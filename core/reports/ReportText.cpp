@@ -4,14 +4,27 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QTimeZone>
+#include <array>
 #include <cmath>
+
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/metrics/RangeOfMotion.h"
 
 namespace armtrack::reports {
 namespace {
 
+// clinicalAngleInfo()'s English names, for lupdate.
+constexpr std::array<const char*, kNumClinicalAngles> kAngleNames = {
+    QT_TRANSLATE_NOOP("armtrack::reports", "Shoulder flexion"),
+    QT_TRANSLATE_NOOP("armtrack::reports", "Shoulder abduction"),
+    QT_TRANSLATE_NOOP("armtrack::reports", "Shoulder internal rotation"),
+    QT_TRANSLATE_NOOP("armtrack::reports", "Elbow flexion"),
+    QT_TRANSLATE_NOOP("armtrack::reports", "Forearm pronation"),
+};
+
 QString scalar(const QJsonValue& v) {
-  if (v.isDouble()) return QString::number(v.toDouble(), 'g', 5);
-  if (v.isBool()) return v.toBool() ? QStringLiteral("yes") : QStringLiteral("no");
+  if (v.isDouble()) return reportLocale().toString(v.toDouble(), 'g', 5);
+  if (v.isBool()) return v.toBool() ? Text::tr("yes") : Text::tr("no");
   if (v.isString()) return v.toString();
   if (v.isNull()) return QStringLiteral("-");
   return QString();
@@ -44,10 +57,56 @@ void flatten(const QJsonValue& v, const QString& path, QStringList& out) {
 
 }  // namespace
 
+QString angleName(int index) {
+  if (index < 0 || index >= kNumClinicalAngles) return {};
+  return Text::tr(kAngleNames[static_cast<std::size_t>(index)]);
+}
+
+std::optional<int> angleIndex(const QString& key) {
+  for (int i = 0; i < kNumClinicalAngles; ++i) {
+    const auto k = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
+    if (key == QString::fromUtf8(k.data(), static_cast<qsizetype>(k.size()))) return i;
+  }
+  return std::nullopt;
+}
+
+QString word(const QString& stored) {
+  static const std::pair<const char*, const char*> kWords[] = {
+      {"left", QT_TRANSLATE_NOOP("armtrack::reports", "left")},
+      {"right", QT_TRANSLATE_NOOP("armtrack::reports", "right")},
+      {"both", QT_TRANSLATE_NOOP("armtrack::reports", "both")},
+      {"none", QT_TRANSLATE_NOOP("armtrack::reports", "none")},
+      {"either", QT_TRANSLATE_NOOP("armtrack::reports", "either")},
+      {"f", QT_TRANSLATE_NOOP("armtrack::reports", "female")},
+      {"m", QT_TRANSLATE_NOOP("armtrack::reports", "male")},
+      {"x", QT_TRANSLATE_NOOP("armtrack::reports", "diverse")},
+      {"complete", QT_TRANSLATE_NOOP("armtrack::reports", "complete")},
+      {"interrupted", QT_TRANSLATE_NOOP("armtrack::reports", "interrupted")},
+      {"recording", QT_TRANSLATE_NOOP("armtrack::reports", "recording")},
+  };
+  for (const auto& [key, text] : kWords)
+    if (stored == QLatin1String(key)) return Text::tr(text);
+  return orDash(stored);
+}
+
+QLocale reportLocale() {
+  QLocale locale;
+  if (locale.language() == QLocale::C) locale.setNumberOptions(QLocale::OmitGroupSeparator);
+  return locale;
+}
+
+QString fullYearDateFormat(const QLocale& locale) {
+  if (locale.language() == QLocale::C) return QStringLiteral("yyyy-MM-dd");
+  QString format = locale.dateFormat(QLocale::ShortFormat);
+  if (!format.contains(QLatin1String("yyyy")))
+    format.replace(QLatin1String("yy"), QLatin1String("yyyy"));
+  return format;
+}
+
 QString formatDeg(std::optional<double> deg) {
   if (!deg || !std::isfinite(*deg)) return QStringLiteral("-");
-  const QString text = QString::number(*deg, 'f', 1);
-  return text == QStringLiteral("-0.0") ? QStringLiteral("0.0") : text;
+  const double shown = std::round(*deg * 10) == 0 ? 0.0 : *deg;  // never "-0.0"
+  return reportLocale().toString(shown, 'f', 1);
 }
 
 QDateTime parseIso(const QString& iso) {
@@ -61,14 +120,20 @@ QDateTime parseIso(const QString& iso) {
   return t.isValid() ? t.toUTC() : QDateTime();
 }
 
+QString formatDate(const QDate& date) {
+  const QLocale locale = reportLocale();
+  return locale.toString(date, fullYearDateFormat(locale));
+}
+
 QString formatDate(const QString& iso) {
   const QDateTime t = parseIso(iso);
-  return t.isValid() ? t.date().toString(Qt::ISODate) : iso;
+  return t.isValid() ? formatDate(t.date()) : iso;
 }
 
 QString formatDateTime(const QString& iso) {
   const QDateTime t = parseIso(iso);
-  return t.isValid() ? t.toString(QStringLiteral("yyyy-MM-dd HH:mm")) + QStringLiteral(" UTC")
+  return t.isValid() ? Text::tr("%1 %2 UTC", "a date and a time of day")
+                           .arg(formatDate(t.date()), t.time().toString(QStringLiteral("HH:mm")))
                      : iso;
 }
 
@@ -78,18 +143,16 @@ QString orDash(const QString& s) {
 
 QString pageFooter(const QString& patientName, const QString& kind, const QDateTime& generatedAt) {
   const QDateTime at = generatedAt.isValid() ? generatedAt : QDateTime::currentDateTimeUtc();
-  return QStringLiteral("%1 - %2 - generated %3")
-      .arg(orDash(patientName), kind,
-           at.toUTC().toString(QStringLiteral("yyyy-MM-dd HH:mm 'UTC'")));
+  return Text::tr("%1 - %2 - generated %3")
+      .arg(orDash(patientName), kind, formatDateTime(at.toUTC().toString(Qt::ISODate)));
 }
 
 QString formatDuration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return QStringLiteral("-");
-  if (seconds < 60) return QString::number(seconds, 'f', 1) + QStringLiteral(" s");
+  if (seconds < 60) return Text::tr("%1 s").arg(reportLocale().toString(seconds, 'f', 1));
   const long long s = std::llround(seconds);
-  if (s < 3600)
-    return QStringLiteral("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
-  return QStringLiteral("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
+  if (s < 3600) return Text::tr("%1 min %2 s").arg(s / 60).arg(s % 60, 2, 10, QLatin1Char('0'));
+  return Text::tr("%1 h %2 min").arg(s / 3600).arg((s % 3600) / 60, 2, 10, QLatin1Char('0'));
 }
 
 QStringList summariseJson(const QString& json, int maxLines) {
@@ -99,15 +162,14 @@ QStringList summariseJson(const QString& json, int maxLines) {
   QJsonParseError error;
   const QJsonDocument doc = QJsonDocument::fromJson(trimmed.toUtf8(), &error);
   if (doc.isNull())
-    return {QStringLiteral("(not valid JSON: %1 at offset %2)")
-                .arg(error.errorString())
-                .arg(error.offset)};
+    return {
+        Text::tr("(not valid JSON: %1 at offset %2)").arg(error.errorString()).arg(error.offset)};
   QStringList out;
   flatten(doc.isObject() ? QJsonValue(doc.object()) : QJsonValue(doc.array()), QString(), out);
   if (out.size() > maxLines) {
     const qsizetype more = out.size() - maxLines;
     out = out.mid(0, maxLines);
-    out << QStringLiteral("... %1 more").arg(more);
+    out << Text::tr("... %n more", nullptr, static_cast<int>(more));
   }
   return out;
 }

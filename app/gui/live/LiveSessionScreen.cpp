@@ -1,6 +1,7 @@
 #include "app/gui/live/LiveSessionScreen.h"
 
 #include <QComboBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
@@ -17,6 +18,7 @@
 #include "ui/DeviceHealthPanel.h"
 #include "ui/Fonts.h"
 #include "ui/RepetitionCounterWidget.h"
+#include "ui/Retranslate.h"
 
 namespace armtrack::app::gui {
 
@@ -50,23 +52,26 @@ LiveSessionScreen::LiveSessionScreen(const PluginRegistry& registry, LiveSession
       m_gate(m_target ? std::make_shared<RecordingGate>(m_target) : nullptr),
       m_controller(new SessionController(registry, this)),
       m_counter(counterParams(m_config)) {
-  setAccessibleName(tr("Live session"));
   buildLayout();
+  retranslateUi();
   connect(m_controller, &SessionController::started, this, &LiveSessionScreen::onStarted);
   connect(m_controller, &SessionController::stopped, this, &LiveSessionScreen::onStopped);
   connect(m_controller, &SessionController::deviceStateChanged, m_health,
           &ui::DeviceHealthPanel::setDeviceState);
-  connect(m_health, &ui::DeviceHealthPanel::summaryChanged, this,
-          [this](const QString& summary, bool ok) {
-            if (m_state == State::Failed) return;
-            if (ok)
-              showBanner({}, false);
-            else
-              showBanner(tr("%1. The session goes on with the other sensors; check the device "
-                            "(power, cable or distance).")
-                             .arg(summary),
-                         true);
-          });
+  connect(m_health, &ui::DeviceHealthPanel::summaryChanged, this, [this](const QString&, bool ok) {
+    // (Before a session and after it, there are no devices to worry about.)
+    if (m_state == State::Failed || m_state == State::Idle || m_state == State::Stopped) return;
+    if (ok)
+      showBanner({}, false);
+    else  // the panel's summary, in the language of the moment
+      showBanner(
+          [this] {
+            return tr("%1. The session goes on with the other sensors; check the device "
+                      "(power, cable or distance).")
+                .arg(m_health->tracker().summary());
+          },
+          true);
+  });
   // One timer drives every view, so that a tick repaints the window once (with a QOpenGLWidget
   // in it, each repaint composes the whole window in OpenGL).
   m_arm->setRefreshRate(0);
@@ -89,30 +94,18 @@ void LiveSessionScreen::buildLayout() {
   auto* header = new QHBoxLayout;
   m_title = new QLabel(this);
   ui::setScaledFont(m_title, 1.3);
-  const QString side = m_config.meta.side == Side::Left ? tr("left arm") : tr("right arm");
-  m_title->setText(m_config.patientLabel.isEmpty()
-                       ? tr("Live session, %1").arg(side)
-                       : tr("%1 \u2014 %2").arg(m_config.patientLabel, side));
   m_status = new QLabel(this);
-  m_status->setAccessibleName(tr("Session status"));
-  m_record = new QPushButton(tr("&Record"), this);
+  m_record = new QPushButton(this);
   m_record->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_R));
-  m_record->setToolTip(tr("Start or resume recording (Ctrl+R)"));
-  m_pause = new QPushButton(tr("&Pause"), this);
+  m_pause = new QPushButton(this);
   m_pause->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_P));
-  m_pause->setToolTip(tr("Pause recording; the live view goes on (Ctrl+P)"));
-  m_stop = new QPushButton(tr("S&top"), this);
+  m_stop = new QPushButton(this);
   m_stop->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
-  m_stop->setToolTip(tr("End the session (Ctrl+E)"));
   m_eventLabel = new QComboBox(this);
   m_eventLabel->setEditable(true);
-  m_eventLabel->addItems({tr("Pain"), tr("Rest"), tr("Fatigue"), tr("Compensation"), tr("Note")});
-  m_eventLabel->setAccessibleName(tr("Event label"));
-  m_mark = new QPushButton(tr("&Mark event"), this);
+  for (int i = 0; i < 5; ++i) m_eventLabel->addItem(QString());
+  m_mark = new QPushButton(this);
   m_mark->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_M));
-  m_mark->setToolTip(tr("Mark the chosen event at the current time (Ctrl+M)"));
-  for (QPushButton* b : {m_record, m_pause, m_stop, m_mark})
-    b->setAccessibleName(b->text().remove(u'&'));
   header->addWidget(m_title, 1);
   header->addWidget(m_status);
   header->addSpacing(12);
@@ -130,9 +123,8 @@ void LiveSessionScreen::buildLayout() {
   m_banner->setWordWrap(true);
   m_banner->setAutoFillBackground(true);
   m_banner->setMargin(6);
-  m_banner->setAccessibleName(tr("Problem"));
   m_banner->hide();
-  m_retry = new QPushButton(tr("Try &again"), this);
+  m_retry = new QPushButton(this);
   m_retry->hide();
   bannerRow->addWidget(m_banner, 1);
   bannerRow->addWidget(m_retry);
@@ -168,7 +160,6 @@ void LiveSessionScreen::buildLayout() {
   m_reps->setTarget(m_config.targetRepetitions);
   m_reps->setAngleName(ui::angleDisplayName(m_config.primaryAngle.value_or(0)));
   m_messages = new QListWidget(bottom);
-  m_messages->setAccessibleName(tr("Session messages"));
   m_messages->setWordWrap(true);
   bottomLayout->addWidget(m_health, 3);
   bottomLayout->addWidget(m_reps, 1);
@@ -191,6 +182,49 @@ void LiveSessionScreen::buildLayout() {
   setTabOrder(m_arm, m_plots->tableView());
   setTabOrder(m_plots->tableView(), m_health->view());
   setTabOrder(m_health->view(), m_messages);
+}
+
+void LiveSessionScreen::retranslateUi() {
+  setAccessibleName(tr("Live session"));
+  setWindowTitle(m_config.patientLabel.isEmpty()
+                     ? tr("Live session")
+                     : tr("Live session: %1").arg(m_config.patientLabel));
+  const QString side = m_config.meta.side == Side::Left ? tr("left arm") : tr("right arm");
+  m_title->setText(m_config.patientLabel.isEmpty()
+                       ? tr("Live session, %1").arg(side)
+                       : tr("%1 \u2014 %2").arg(m_config.patientLabel, side));
+  m_status->setAccessibleName(tr("Session status"));
+  const auto shortcut = [](const QPushButton* b) {
+    return b->shortcut().toString(QKeySequence::NativeText);
+  };
+  ui::setButtonText(m_record, tr("&Record"));
+  ui::setButtonText(m_pause, tr("&Pause"));
+  m_pause->setToolTip(tr("Pause recording; the live view goes on (%1)").arg(shortcut(m_pause)));
+  ui::setButtonText(m_stop, tr("S&top"));
+  m_stop->setToolTip(tr("End the session (%1)").arg(shortcut(m_stop)));
+  // The event labels offered (a label typed by hand stays as typed).
+  const QString typed = m_eventLabel->currentIndex() < 0 ? m_eventLabel->currentText() : QString();
+  const QStringList events = {tr("Pain"), tr("Rest"), tr("Fatigue"), tr("Compensation"),
+                              tr("Note")};
+  for (int i = 0; i < events.size(); ++i) m_eventLabel->setItemText(i, events[i]);
+  if (!typed.isEmpty()) m_eventLabel->setEditText(typed);
+  m_eventLabel->setAccessibleName(tr("Event label"));
+  ui::setButtonText(m_mark, tr("&Mark event"));
+  m_mark->setToolTip(tr("Mark the chosen event at the current time (%1)").arg(shortcut(m_mark)));
+  for (QPushButton* b : {m_record, m_pause, m_stop, m_mark})
+    b->setAccessibleName(b->text().remove(u'&'));
+  m_banner->setAccessibleName(tr("Problem"));
+  if (m_bannerText) m_banner->setText(m_bannerText());
+  m_retry->setText(tr("Try &again"));
+  m_messages->setAccessibleName(tr("Session messages"));
+  m_reps->setAngleName(ui::angleDisplayName(m_config.primaryAngle.value_or(0)));
+  updateButtons();
+  updateStatus();
+}
+
+void LiveSessionScreen::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QWidget::changeEvent(event);
 }
 
 void LiveSessionScreen::setDrainRate(double hz) {
@@ -220,7 +254,7 @@ void LiveSessionScreen::start() {
 void LiveSessionScreen::onStarted(const QString& error) {
   if (!error.isEmpty()) {
     setState(State::Failed);
-    showBanner(tr("Could not start the session: %1").arg(error), true);
+    showBanner([error] { return tr("Could not start the session: %1").arg(error); }, true);
     m_retry->show();
     addMessage(error);
     emit sessionFailed(error);
@@ -239,14 +273,14 @@ void LiveSessionScreen::record() {
     const auto layout = m_controller->recordingLayout();
     if (!layout) return;
     if (const QString why = m_target->begin(layout->first, layout->second); !why.isEmpty()) {
-      showBanner(why, true);
+      showBanner([why] { return why; }, true);
       addMessage(why);
       return;
     }
     m_begun = true;
     addMessage(tr("Recording to %1").arg(m_target->describe()));
   } else {
-    addMessage(tr("Recording resumed at %1 s").arg(m_sessionTime, 0, 'f', 1));
+    addMessage(tr("Recording resumed at %L1 s").arg(m_sessionTime, 0, 'f', 1));
   }
   m_gate->setRecording(true);
   m_recordingSince = m_sessionTime;
@@ -258,7 +292,7 @@ void LiveSessionScreen::pause() {
   m_gate->setRecording(false);
   m_recordedSeconds += m_sessionTime - m_recordingSince;
   m_recordingSince = -1;
-  addMessage(tr("Recording paused at %1 s").arg(m_sessionTime, 0, 'f', 1));
+  addMessage(tr("Recording paused at %L1 s").arg(m_sessionTime, 0, 'f', 1));
   setState(State::Paused);
 }
 
@@ -304,7 +338,7 @@ void LiveSessionScreen::markEvent() {
   if (label.isEmpty()) label = tr("Event");
   m_events.emplace_back(m_sessionTime, label);
   m_plots->addEvent(m_sessionTime, label);
-  addMessage(tr("%1 marked at %2 s").arg(label).arg(m_sessionTime, 0, 'f', 1));
+  addMessage(tr("%1 marked at %L2 s").arg(label).arg(m_sessionTime, 0, 'f', 1));
 }
 
 void LiveSessionScreen::drain() {
@@ -343,7 +377,7 @@ void LiveSessionScreen::drain() {
     if (m_gate && m_state == State::Recording && !m_gate->recording()) {
       // The recording could not be opened: say why; the session goes on.
       const QString why = m_gate->openError();
-      showBanner(tr("Recording stopped: %1").arg(why), true);
+      showBanner([why] { return tr("Recording stopped: %1").arg(why); }, true);
       m_recordedSeconds += m_sessionTime - m_recordingSince;
       m_recordingSince = -1;
       setState(State::Paused);
@@ -352,9 +386,11 @@ void LiveSessionScreen::drain() {
   }
 }
 
-void LiveSessionScreen::showBanner(const QString& text, bool error) {
-  m_banner->setText(text);
-  m_banner->setVisible(!text.isEmpty());
+void LiveSessionScreen::showBanner(std::function<QString()> text, bool error) {
+  m_bannerText = std::move(text);
+  const QString shown = m_bannerText ? m_bannerText() : QString();
+  m_banner->setText(shown);
+  m_banner->setVisible(!shown.isEmpty());
   QPalette p = palette();
   const bool dark = p.color(QPalette::Window).lightness() < 128;
   if (error) {
@@ -386,9 +422,10 @@ void LiveSessionScreen::updateButtons() {
       m_state == State::Live || m_state == State::Recording || m_state == State::Paused;
   const bool canRecord = m_gate && (m_state == State::Live || m_state == State::Paused);
   m_record->setEnabled(canRecord);
-  m_record->setToolTip(
-      m_gate ? tr("Start or resume recording to %1 (Ctrl+R)").arg(m_target->describe())
-             : tr("This session is not recorded"));
+  m_record->setToolTip(m_gate ? tr("Start or resume recording to %1 (%2)")
+                                    .arg(m_target->describe(),
+                                         m_record->shortcut().toString(QKeySequence::NativeText))
+                              : tr("This session is not recorded"));
   m_pause->setEnabled(m_gate && m_state == State::Recording);
   m_stop->setEnabled(running || m_state == State::Starting);
   m_mark->setEnabled(running);

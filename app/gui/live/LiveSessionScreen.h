@@ -5,6 +5,7 @@
 
 #include <QTimer>
 #include <QWidget>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -92,11 +93,16 @@ class LiveSessionScreen : public QWidget {
   void sessionStopped(const QString& summary);
   void stateChanged(armtrack::app::gui::LiveSessionScreen::State state);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
   void buildLayout();
+  void retranslateUi();
   void setState(State s);
   void drain();
-  void showBanner(const QString& text, bool error);
+  /// Shows a problem in the banner (empty: hides it), made again when the language changes.
+  void showBanner(std::function<QString()> text, bool error);
   void addMessage(const QString& text);
   void onStarted(const QString& error);
   void onStopped(quint64 recordedRows, quint64 rowsToRecord, const QString& recorderError);
@@ -132,6 +138,7 @@ class LiveSessionScreen : public QWidget {
   QLabel* m_title = nullptr;
   QLabel* m_status = nullptr;
   QLabel* m_banner = nullptr;
+  std::function<QString()> m_bannerText;
   QPushButton* m_retry = nullptr;
   QPushButton* m_record = nullptr;
   QPushButton* m_pause = nullptr;

@@ -9,9 +9,11 @@
 namespace armtrack::app::gui {
 
 namespace {
-QString tr(const char* text) {
-  return QCoreApplication::translate("armtrack::app::gui::RecordingTarget", text);
-}
+// This file's texts (context "armtrack::app::gui::RecordingTarget" in
+// translations/armtrack_<code>.ts).
+struct Tr {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::app::gui::RecordingTarget)
+};
 }  // namespace
 
 QString CsvRecordingTarget::describe() const {
@@ -28,13 +30,13 @@ std::unique_ptr<RecordingSink> CsvRecordingTarget::open(const RecordingMeta& met
   if (std::filesystem::exists(m_csv, ec) || std::filesystem::exists(sidecarPath(m_csv), ec))
     throw RecordingError(
         m_csv.string(), 0, 0,
-        tr("a recording with this name exists; choose another name").toStdString());
+        Tr::tr("a recording with this name exists; choose another name").toStdString());
   return std::make_unique<RecordingWriter>(m_csv, meta, columns);
 }
 
 QString CsvRecordingTarget::finish(std::uint64_t rows, bool complete, const QString&) {
-  return complete ? tr("%1 rows recorded in %2").arg(rows).arg(describe())
-                  : tr("%1 rows recorded in %2; some rows could not be written")
+  return complete ? Tr::tr("%L1 rows recorded in %2").arg(rows).arg(describe())
+                  : Tr::tr("%L1 rows recorded in %2; some rows could not be written")
                         .arg(rows)
                         .arg(describe());
 }
@@ -48,7 +50,7 @@ DatabaseRecordingTarget::DatabaseRecordingTarget(storage::ClinicalStore& store,
       m_protocol(std::move(protocolName)) {}
 
 QString DatabaseRecordingTarget::describe() const {
-  return tr("the records of patient %1").arg(m_patient);
+  return Tr::tr("the records of patient %1").arg(m_patient);
 }
 
 QString DatabaseRecordingTarget::begin(const RecordingMeta& meta, const RecordingColumns& columns) {
@@ -56,7 +58,7 @@ QString DatabaseRecordingTarget::begin(const RecordingMeta& meta, const Recordin
   try {
     m_sessionId = m_store.beginRecording(m_patient, m_protocol, meta, columns);
   } catch (const storage::StorageError& e) {
-    return tr("cannot record into the records: %1").arg(QString::fromStdString(e.what()));
+    return Tr::tr("cannot record into the records: %1").arg(QString::fromStdString(e.what()));
   }
   return {};
 }
@@ -74,12 +76,12 @@ QString DatabaseRecordingTarget::finish(std::uint64_t rows, bool complete, const
     m_store.finishSession(m_sessionId,
                           complete ? storage::kStatusComplete : storage::kStatusInterrupted);
   } catch (const storage::StorageError& e) {
-    return tr("session %1: %2 rows recorded, but it could not be closed: %3")
+    return Tr::tr("session %1: %L2 rows recorded, but it could not be closed: %3")
         .arg(m_sessionId)
         .arg(rows)
         .arg(QString::fromStdString(e.what()));
   }
-  return tr("session %1 saved in the records: %2 rows").arg(m_sessionId).arg(rows);
+  return Tr::tr("session %1 saved in the records: %L2 rows").arg(m_sessionId).arg(rows);
 }
 
 }  // namespace armtrack::app::gui

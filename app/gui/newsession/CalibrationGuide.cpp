@@ -5,11 +5,21 @@
 namespace armtrack::app::gui {
 
 namespace {
-QString tr(const char* text) {
-  return QCoreApplication::translate("armtrack::app::gui::CalibrationGuide", text);
+
+constexpr auto kContext = "armtrack::app::gui::CalibrationGuide";
+
+// The texts are kept in English and translated when shown (CalibrationPhase::shownTitle()).
+struct Guide {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::app::gui::CalibrationGuide)
+ public:
+  static std::vector<CalibrationPhase> makePhases();
+};
+
+QString text(const char* english) {
+  return QString::fromUtf8(english);
 }
 
-std::vector<CalibrationPhase> makePhases() {
+std::vector<CalibrationPhase> Guide::makePhases() {
   using Pose = std::array<double, 5>;
   const Pose start{0, 0, 0, -90, 0};
   std::vector<CalibrationPhase> p;
@@ -19,56 +29,65 @@ std::vector<CalibrationPhase> makePhases() {
     p.push_back({t, t + seconds, hold, title, text, pose});
     t += seconds;
   };
-  const QString startText =
-      tr("Sit upright. Let the upper arm hang at the side, bend the elbow to a right angle, "
-         "forearm pointing straight forward, thumb up. Keep still.");
-  add(4.0, true, tr("Start pose"), startText, start);
+  const QString startText = text(QT_TR_NOOP(
+      "Sit upright. Let the upper arm hang at the side, bend the elbow to a right angle, "
+      "forearm pointing straight forward, thumb up. Keep still."));
+  const QString holdStill = text(QT_TR_NOOP("Hold still."));
+  const QString startPose = text(QT_TR_NOOP("Start pose"));
+  add(4.0, true, startPose, startText, start);
   const struct {
     Pose pose;
-    const char* title;
-    const char* text;
+    QString title;
+    QString text;
   } poses[] = {
       {{90, 0, 0, -10, 0},
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide", "Arm forward"),
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide",
-                         "Raise the arm forward to shoulder height, elbow almost straight.")},
+       text(QT_TR_NOOP("Arm forward")),
+       text(QT_TR_NOOP("Raise the arm forward to shoulder height, elbow almost straight."))},
       {{20, 60, 0, -10, 0},
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide", "Arm to the side"),
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide",
-                         "Lift the arm out to the side, about 60 degrees, elbow almost "
-                         "straight.")},
+       text(QT_TR_NOOP("Arm to the side")),
+       text(QT_TR_NOOP("Lift the arm out to the side, about 60 degrees, elbow almost straight."))},
       {{45, 20, 45, -90, 60},
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide", "Hand across"),
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide",
-                         "Bring the hand across the body, elbow at a right angle, palm down.")},
+       text(QT_TR_NOOP("Hand across")),
+       text(QT_TR_NOOP("Bring the hand across the body, elbow at a right angle, palm down."))},
       {{0, 10, -30, -100, -60},
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide", "Hand out"),
-       QT_TRANSLATE_NOOP("armtrack::app::gui::CalibrationGuide",
-                         "Take the hand out to the side, elbow bent, palm up.")},
+       text(QT_TR_NOOP("Hand out")),
+       text(QT_TR_NOOP("Take the hand out to the side, elbow bent, palm up."))},
   };
   for (const auto& s : poses) {
-    add(2.0, false, tr(s.title), tr(s.text), s.pose);
-    add(2.0, true, tr(s.title), tr("Hold still."), s.pose);
+    add(2.0, false, s.title, s.text, s.pose);
+    add(2.0, true, s.title, holdStill, s.pose);
   }
-  add(8.5, false, tr("Elbow bends"),
-      tr("Bend and straighten the elbow four times, turning the palm down while straightening "
-         "and up while bending."),
+  add(8.5, false, text(QT_TR_NOOP("Elbow bends")),
+      text(QT_TR_NOOP(
+          "Bend and straighten the elbow four times, turning the palm down while straightening "
+          "and up while bending.")),
       std::nullopt);
-  add(6.5, false, tr("Shoulder rotation"),
-      tr("Elbow at a right angle: swing the hand in to the belly and out, three times."),
+  add(6.5, false, text(QT_TR_NOOP("Shoulder rotation")),
+      text(QT_TR_NOOP(
+          "Elbow at a right angle: swing the hand in to the belly and out, three times.")),
       std::nullopt);
-  add(7.2, false, tr("Reach and mouth"),
-      tr("Reach forward and up, then bring the hand to the mouth; three times."), std::nullopt);
-  add(6.0, false, tr("Arm out and across"),
-      tr("Lift the arm out to the side, then bring it back across; three times."), std::nullopt);
-  add(2.0, false, tr("Back to the start pose"), startText, start);
-  add(3.0, true, tr("Start pose"), tr("Hold still."), start);
+  add(7.2, false, text(QT_TR_NOOP("Reach and mouth")),
+      text(QT_TR_NOOP("Reach forward and up, then bring the hand to the mouth; three times.")),
+      std::nullopt);
+  add(6.0, false, text(QT_TR_NOOP("Arm out and across")),
+      text(QT_TR_NOOP("Lift the arm out to the side, then bring it back across; three times.")),
+      std::nullopt);
+  add(2.0, false, text(QT_TR_NOOP("Back to the start pose")), startText, start);
+  add(3.0, true, startPose, holdStill, start);
   return p;
 }
 }  // namespace
 
+QString CalibrationPhase::shownTitle() const {
+  return QCoreApplication::translate(kContext, title.toUtf8().constData());
+}
+
+QString CalibrationPhase::shownInstruction() const {
+  return QCoreApplication::translate(kContext, instruction.toUtf8().constData());
+}
+
 const std::vector<CalibrationPhase>& calibrationPhases() {
-  static const std::vector<CalibrationPhase> phases = makePhases();
+  static const std::vector<CalibrationPhase> phases = Guide::makePhases();
   return phases;
 }
 

@@ -14,11 +14,16 @@ namespace armtrack::app::gui {
 struct CalibrationPhase {
   double startS = 0, endS = 0;  ///< protocol time (s)
   bool hold = false;            ///< keep still (true) or move
-  QString title;                ///< short: "Start pose"
-  QString instruction;          ///< what the patient does
+  QString title;                ///< short, the English source text: "Start pose"
+  QString instruction;          ///< what the patient does, the English source text
   /// The pose to reach or hold, joint angles [th0 th1 th2 th4 th5] in degrees (the movements
   /// have none: they go back and forth).
   std::optional<std::array<double, 5>> poseDeg;
+
+  /// title and instruction in the current language (made when asked, so a change of language
+  /// shows at once).
+  QString shownTitle() const;
+  QString shownInstruction() const;
 };
 
 /// The phases in time order, from 0 to protocolSeconds().

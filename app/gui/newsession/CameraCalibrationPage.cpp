@@ -1,6 +1,7 @@
 #include "app/gui/newsession/CameraCalibrationPage.h"
 
 #include <QCheckBox>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPainter>
@@ -11,6 +12,8 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
+
+#include "ui/Retranslate.h"
 
 namespace armtrack::app::gui {
 
@@ -138,34 +141,26 @@ CameraCalibrationPage::CameraCalibrationPage(FrameProvider provider,
   qRegisterMetaType<std::vector<cv::Point2f>>("std::vector<cv::Point2f>");
   qRegisterMetaType<cv::Size>("cv::Size");
   qRegisterMetaType<devices::webcam::IntrinsicsResult>("devices::webcam::IntrinsicsResult");
-  setAccessibleName(tr("Camera calibration"));
   auto* root = new QHBoxLayout(this);
-  m_preview = new QLabel(tr("Starting the camera\u2026"), this);
+  m_preview = new QLabel(this);
+  m_previewText = [] { return tr("Starting the camera\u2026"); };
   m_preview->setMinimumSize(160, 120);
   m_preview->setAlignment(Qt::AlignCenter);
-  m_preview->setAccessibleName(tr("Camera picture"));
   root->addWidget(m_preview, 3);
   auto* side = new QVBoxLayout;
-  auto* help = new QLabel(
-      tr("Hold the printed chessboard (%1 x %2 inner corners) in front of the camera. Capture "
-         "views with the board in every part of the picture, near and far, tilted a little.")
-          .arg(board.innerCorners.width)
-          .arg(board.innerCorners.height),
-      this);
-  help->setWordWrap(true);
-  m_auto = new QCheckBox(tr("Capture &automatically when the board covers new ground"), this);
+  m_help = new QLabel(this);
+  m_help->setWordWrap(true);
+  m_auto = new QCheckBox(this);
   m_auto->setChecked(true);
-  m_capture = new QPushButton(tr("&Capture view"), this);
+  m_capture = new QPushButton(this);
   m_capture->setShortcut(QKeySequence(Qt::Key_Space));
-  m_calibrate = new QPushButton(tr("Ca&librate"), this);
-  m_reset = new QPushButton(tr("&Start over"), this);
+  m_calibrate = new QPushButton(this);
+  m_reset = new QPushButton(this);
   m_coverageLabel = new QLabel(this);
   m_coverageLabel->setWordWrap(true);
-  m_coverageLabel->setAccessibleName(tr("Coverage"));
   m_verdict = new QLabel(this);
   m_verdict->setWordWrap(true);
-  m_verdict->setAccessibleName(tr("Camera calibration verdict"));
-  side->addWidget(help);
+  side->addWidget(m_help);
   side->addWidget(m_auto);
   side->addWidget(m_capture);
   side->addWidget(m_calibrate);
@@ -181,45 +176,80 @@ CameraCalibrationPage::CameraCalibrationPage(FrameProvider provider,
   m_thread.start();
   connect(m_worker, &CameraCalibrationWorker::frame, this, &CameraCalibrationPage::showFrame);
   connect(m_worker, &CameraCalibrationWorker::cameraProblem, this, [this](const QString& why) {
-    m_preview->setText(why + QLatin1Char(' ') +
-                       tr("Check that the camera is plugged in and not used by another "
-                          "program."));
+    m_previewText = [why] {
+      return why + QLatin1Char(' ') +
+             tr("Check that the camera is plugged in and not used by another program.");
+    };
+    m_preview->setText(m_previewText());
   });
   connect(m_worker, &CameraCalibrationWorker::calibrated, this,
           [this](const IntrinsicsResult& r, const QString& error) {
             m_calibrate->setEnabled(true);
             if (!error.isEmpty()) {
-              m_verdict->setText(tr("Could not calibrate: %1").arg(error));
+              showVerdict([error] { return tr("Could not calibrate: %1").arg(error); });
               emit calibrated(false);
               emit completeChanged();
               return;
             }
             m_result = r;
             const double rms = r.intrinsics.rmsPx;
-            const QString numbers = tr("Reprojection error %1 px over %2 views; fx %3, fy %4 px.")
-                                        .arg(rms, 0, 'f', 2)
-                                        .arg(r.intrinsics.boards)
-                                        .arg(r.intrinsics.fx, 0, 'f', 1)
-                                        .arg(r.intrinsics.fy, 0, 'f', 1);
-            QString verdict;
-            if (rms < 0.5)
-              verdict = tr("Good.");
-            else if (rms < 1.0)
-              verdict = tr("Usable; more views, sharper and better lit, would improve it.");
-            else
-              verdict = tr("Poor: capture the views again, holding the board still and flat.");
-            if (m_coverage.fraction() < 0.6)
-              verdict += QLatin1Char(' ') + tr("The boards covered only %1 % of the picture; "
-                                               "views near the edges help most.")
-                                                .arg(std::lround(100 * m_coverage.fraction()));
-            m_verdict->setText(numbers + QLatin1Char(' ') + verdict);
+            const double covered = m_coverage.fraction();
+            showVerdict([r, rms, covered] {
+              const QString numbers =
+                  tr("Reprojection error %L1 px over %2 views; fx %L3, fy %L4 px.")
+                      .arg(rms, 0, 'f', 2)
+                      .arg(r.intrinsics.boards)
+                      .arg(r.intrinsics.fx, 0, 'f', 1)
+                      .arg(r.intrinsics.fy, 0, 'f', 1);
+              QString verdict;
+              if (rms < 0.5)
+                verdict = tr("Good.");
+              else if (rms < 1.0)
+                verdict = tr("Usable; more views, sharper and better lit, would improve it.");
+              else
+                verdict = tr("Poor: capture the views again, holding the board still and flat.");
+              if (covered < 0.6)
+                verdict += QLatin1Char(' ') + tr("The boards covered only %1 % of the picture; "
+                                                 "views near the edges help most.")
+                                                  .arg(std::lround(100 * covered));
+              return numbers + QLatin1Char(' ') + verdict;
+            });
             emit calibrated(rms < 1.0);
             emit completeChanged();
           });
   connect(m_capture, &QPushButton::clicked, this, &CameraCalibrationPage::capture);
   connect(m_calibrate, &QPushButton::clicked, this, &CameraCalibrationPage::calibrate);
   connect(m_reset, &QPushButton::clicked, this, &CameraCalibrationPage::reset);
+  retranslateUi();
+}
+
+void CameraCalibrationPage::retranslateUi() {
+  setAccessibleName(tr("Camera calibration"));
+  if (m_preview->pixmap().isNull()) m_preview->setText(m_previewText());
+  m_preview->setAccessibleName(tr("Camera picture"));
+  m_help->setText(
+      tr("Hold the printed chessboard (%1 x %2 inner corners) in front of the camera. Capture "
+         "views with the board in every part of the picture, near and far, tilted a little.")
+          .arg(m_board.innerCorners.width)
+          .arg(m_board.innerCorners.height));
+  m_auto->setText(tr("Capture &automatically when the board covers new ground"));
+  ui::setButtonText(m_capture, tr("&Capture view"));
+  m_calibrate->setText(tr("Ca&librate"));
+  m_reset->setText(tr("&Start over"));
+  m_coverageLabel->setAccessibleName(tr("Coverage"));
+  m_verdict->setAccessibleName(tr("Camera calibration verdict"));
+  if (m_verdictText) m_verdict->setText(m_verdictText());
   updateCoverageText();
+}
+
+void CameraCalibrationPage::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
+void CameraCalibrationPage::showVerdict(std::function<QString()> text) {
+  m_verdictText = std::move(text);
+  m_verdict->setText(m_verdictText ? m_verdictText() : QString());
 }
 
 CameraCalibrationPage::~CameraCalibrationPage() {
@@ -292,14 +322,15 @@ void CameraCalibrationPage::capture() {
 
 void CameraCalibrationPage::calibrate() {
   if (m_views < 4) {
-    m_verdict->setText(
-        tr("Capture at least 4 views first (%1 so far); 10 or more spread over the picture "
-           "give a good calibration.")
-            .arg(m_views));
+    showVerdict([views = m_views] {
+      return tr("Capture at least 4 views first (%1 so far); 10 or more spread over the picture "
+                "give a good calibration.")
+          .arg(views);
+    });
     return;
   }
   m_calibrate->setEnabled(false);
-  m_verdict->setText(tr("Calibrating\u2026"));
+  showVerdict([] { return tr("Calibrating\u2026"); });
   QMetaObject::invokeMethod(m_worker, &CameraCalibrationWorker::calibrate);
 }
 
@@ -309,7 +340,7 @@ void CameraCalibrationPage::reset() {
   m_views = 0;
   m_lastCentres.clear();
   m_result.reset();
-  m_verdict->clear();
+  showVerdict({});
   updateCoverageText();
   emit completeChanged();
 }

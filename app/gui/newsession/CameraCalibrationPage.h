@@ -75,15 +75,23 @@ class CameraCalibrationPage : public QWidget {
   void completeChanged();
   void calibrated(bool good);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
   void showFrame(const QImage& preview, const std::vector<cv::Point2f>& corners, bool found,
                  cv::Size size);
   void updateCoverageText();
+  /// Shows the verdict, made again when the language changes.
+  void showVerdict(std::function<QString()> text);
 
   QThread m_thread;
   CameraCalibrationWorker* m_worker;
   devices::webcam::ChessboardSpec m_board;
   QLabel* m_preview;
+  QLabel* m_help;
+  std::function<QString()> m_verdictText, m_previewText;
   QLabel* m_coverageLabel;
   QLabel* m_verdict;
   QPushButton* m_capture;

@@ -1,11 +1,13 @@
 #include "app/gui/newsession/DevicesPage.h"
 
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QVBoxLayout>
+#include <tuple>
 
 #include "app/plugins/PluginRegistry.h"
 #include "devices/api/Options.h"
@@ -27,14 +29,12 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
       m_registry(registry),
       m_base(std::move(base)),
       m_controller(new SessionController(registry, this)) {
-  setAccessibleName(tr("Devices"));
   auto* root = new QHBoxLayout(this);
 
   auto* left = new QVBoxLayout;
-  auto* listLabel = new QLabel(tr("&Devices found (tick the ones to use):"), this);
+  m_listLabel = new QLabel(this);
   m_plugins = new QListWidget(this);
-  m_plugins->setAccessibleName(tr("Device plugins"));
-  listLabel->setBuddy(m_plugins);
+  m_listLabel->setBuddy(m_plugins);
   for (const PluginRecord& r : registry.records()) {
     if (!r.loaded) continue;
     devices::DevicePlugin* p = registry.plugin(r.name);
@@ -44,16 +44,14 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
     item->setToolTip(p ? p->description() : QString());
     item->setData(kOptionsRole, QString());
   }
-  QStringList refused;
   for (const PluginRecord& r : registry.records())
-    if (!r.loaded) refused << QStringLiteral("%1: %2").arg(r.file, r.refusal);
-  left->addWidget(listLabel);
+    if (!r.loaded) m_refusals << QStringLiteral("%1: %2").arg(r.file, r.refusal);
+  left->addWidget(m_listLabel);
   left->addWidget(m_plugins, 1);
-  if (!refused.isEmpty()) {
-    auto* refusedLabel =
-        new QLabel(tr("Not loaded: %1").arg(refused.join(QStringLiteral("; "))), this);
-    refusedLabel->setWordWrap(true);
-    left->addWidget(refusedLabel);
+  if (!m_refusals.isEmpty()) {
+    m_refused = new QLabel(this);
+    m_refused->setWordWrap(true);
+    left->addWidget(m_refused);
   }
   root->addLayout(left, 1);
 
@@ -69,11 +67,9 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
   root->addLayout(middle, 2);
 
   auto* right = new QVBoxLayout;
-  m_check = new QPushButton(tr("&Check connection"), this);
-  m_check->setAccessibleName(tr("Check connection"));
-  m_status = new QLabel(tr("Choose the devices, then check their connection."), this);
+  m_check = new QPushButton(this);
+  m_status = new QLabel(this);
   m_status->setWordWrap(true);
-  m_status->setAccessibleName(tr("Connection check"));
   m_signal = new ui::AngleReadouts(this);
   m_signal->setColumns(2);
   m_health = new ui::DeviceHealthPanel(this);
@@ -97,7 +93,7 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
   });
   connect(m_controller, &SessionController::started, this, [this](const QString& error) {
     if (!error.isEmpty()) {
-      finishCheck(tr("The devices could not start: %1").arg(error));
+      finishCheck([error] { return tr("The devices could not start: %1").arg(error); });
       return;
     }
     m_timer.start(100);
@@ -105,7 +101,31 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
   connect(m_controller, &SessionController::deviceStateChanged, m_health,
           &ui::DeviceHealthPanel::setDeviceState);
   connect(&m_timer, &QTimer::timeout, this, &DevicesPage::drain);
+  showStatus([] { return tr("Choose the devices, then check their connection."); });
+  retranslateUi();
   if (m_plugins->count() > 0) m_plugins->setCurrentRow(0);
+}
+
+void DevicesPage::retranslateUi() {
+  setAccessibleName(tr("Devices"));
+  m_listLabel->setText(tr("&Devices found (tick the ones to use):"));
+  m_plugins->setAccessibleName(tr("Device plugins"));
+  if (m_refused)
+    m_refused->setText(tr("Not loaded: %1").arg(m_refusals.join(QStringLiteral("; "))));
+  m_check->setText(m_checking ? tr("Stop &check") : tr("&Check connection"));
+  m_check->setAccessibleName(tr("Check connection"));
+  m_status->setAccessibleName(tr("Connection check"));
+  if (m_statusText) m_status->setText(m_statusText());
+}
+
+void DevicesPage::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
+void DevicesPage::showStatus(std::function<QString()> text) {
+  m_statusText = std::move(text);
+  m_status->setText(m_statusText());
 }
 
 void DevicesPage::showPlugin(QListWidgetItem* item) {
@@ -144,8 +164,10 @@ void DevicesPage::setDevices(const QStringList& specs) {
     if (found.front() == m_plugins->currentItem()) showPlugin(found.front());
   }
   if (!missing.isEmpty())
-    m_status->setText(tr("Not found: %1. Check the plugin folders in the settings.")
-                          .arg(missing.join(QStringLiteral(", "))));
+    showStatus([missing] {
+      return tr("Not found: %1. Check the plugin folders in the settings.")
+          .arg(missing.join(QStringLiteral(", ")));
+    });
   emit completeChanged();
 }
 
@@ -162,7 +184,7 @@ void DevicesPage::startCheck() {
   LiveSessionConfig c = m_base;
   c.devices = devices();
   if (c.devices.isEmpty()) {
-    m_status->setText(tr("Tick at least one device first."));
+    showStatus([] { return tr("Tick at least one device first."); });
     return;
   }
   m_checking = true;
@@ -171,7 +193,7 @@ void DevicesPage::startCheck() {
   m_health->clear();
   m_signal->setSample(nullptr);
   m_check->setText(tr("Stop &check"));
-  m_status->setText(tr("Starting the devices\u2026"));
+  showStatus([] { return tr("Starting the devices\u2026"); });
   m_controller->start(c, nullptr);
 }
 
@@ -190,35 +212,42 @@ void DevicesPage::drain() {
     if (m_okSince < 0) m_okSince = st.elapsed;
     if (st.elapsed - m_okSince >= kPassAfterSeconds) {
       m_checkPassed = true;
-      QStringList rates;
+      std::vector<std::tuple<QString, QString, double>> rates;
       for (const ui::StreamHealthRow& r : h.rows())
-        rates << QStringLiteral("%1 %2 %3 Hz").arg(r.device, r.stream).arg(r.rateHz, 0, 'f', 0);
-      finishCheck(tr("Connected: %1.").arg(rates.join(QStringLiteral(", "))));
+        rates.emplace_back(r.device, r.stream, r.rateHz);
+      finishCheck([rates] {
+        QStringList shown;
+        for (const auto& [device, stream, hz] : rates)
+          shown << tr("%1 %2 %L3 Hz").arg(device, stream).arg(hz, 0, 'f', 0);
+        return tr("Connected: %1.").arg(shown.join(QStringLiteral(", ")));
+      });
       return;
     }
-    m_status->setText(tr("Receiving from every device\u2026"));
+    showStatus([] { return tr("Receiving from every device\u2026"); });
   } else {
     m_okSince = -1.0;
-    m_status->setText(h.summary());
+    showStatus([this] { return m_health->tracker().summary(); });
     if (st.elapsed > kGiveUpSeconds)
-      finishCheck(tr("Not every device is streaming: %1. Check that each is switched on, "
-                     "charged and within range, then check again.")
-                      .arg(h.summary()));
+      finishCheck([summary = h.summary()] {
+        return tr("Not every device is streaming: %1. Check that each is switched on, charged "
+                  "and within range, then check again.")
+            .arg(summary);
+      });
   }
 }
 
 void DevicesPage::stopCheck() {
   if (!m_checking) return;
-  finishCheck(tr("Check stopped."));
+  finishCheck([] { return tr("Check stopped."); });
 }
 
-void DevicesPage::finishCheck(const QString& message) {
+void DevicesPage::finishCheck(std::function<QString()> message) {
   m_timer.stop();
   m_controller->stop();
   m_checking = false;
   m_check->setText(tr("&Check connection"));
-  m_status->setText(message);
-  emit checkFinished(m_checkPassed, message);
+  showStatus(std::move(message));
+  emit checkFinished(m_checkPassed, m_status->text());
 }
 
 }  // namespace armtrack::app::gui

@@ -5,6 +5,7 @@
 
 #include <QTimer>
 #include <QWidget>
+#include <functional>
 
 #include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/live/SessionController.h"
@@ -54,17 +55,27 @@ class DevicesPage : public QWidget {
   /// The check ended: passed when every stream streamed, message says what was seen.
   void checkFinished(bool passed, const QString& message);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  void retranslateUi();
+  /// Shows the check's state in words, made again when the language changes.
+  void showStatus(std::function<QString()> text);
   void showPlugin(QListWidgetItem* item);
   void drain();
-  void finishCheck(const QString& message);
+  void finishCheck(std::function<QString()> message);
 
   const PluginRegistry& m_registry;
   LiveSessionConfig m_base;
   SessionController* m_controller;
   QListWidget* m_plugins;
   ui::DeviceOptionsForm* m_form;
+  QLabel* m_listLabel;
+  QLabel* m_refused = nullptr;
+  QStringList m_refusals;
   QLabel* m_description;
+  std::function<QString()> m_statusText;
   QLabel* m_status;
   QPushButton* m_check;
   ui::DeviceHealthPanel* m_health;

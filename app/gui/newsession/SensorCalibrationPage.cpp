@@ -2,8 +2,10 @@
 
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QProgressBar>
@@ -24,7 +26,7 @@ namespace {
 constexpr double kGoodRms = 1.5, kUsableRms = 3.0;
 
 QString fixed(double v, int decimals = 2) {
-  return QString::number(v, 'f', decimals);
+  return QLocale().toString(v, 'f', decimals);
 }
 }  // namespace
 
@@ -40,9 +42,7 @@ CalibrationVerdict judgeCalibration(const CalibrationResult& r, QString* why) {
        r.rmsForearmAcc},
       {QT_TRANSLATE_NOOP("armtrack::app::gui::SensorCalibrationPage", "optical positions"),
        r.rmsPosition}};
-  auto tr = [](const char* s) {
-    return QCoreApplication::translate("armtrack::app::gui::SensorCalibrationPage", s);
-  };
+  const auto tr = [](const char* text) { return SensorCalibrationPage::tr(text); };
   double worst = 0;
   QString worstKind;
   for (const auto& [kind, rms] : kinds) {
@@ -58,22 +58,24 @@ CalibrationVerdict judgeCalibration(const CalibrationResult& r, QString* why) {
   CalibrationVerdict v = CalibrationVerdict::Good;
   if (!r.converged) {
     v = CalibrationVerdict::Poor;
-    text =
-        tr("The fit did not settle. Check that both sensors are strapped tight, then redo "
-           "the protocol.");
+    text = SensorCalibrationPage::tr(
+        "The fit did not settle. Check that both sensors are strapped tight, then redo the "
+        "protocol.");
   } else if (worst > kUsableRms) {
     v = CalibrationVerdict::Poor;
-    text = tr("The movements do not fit the arm model well (%1 off by %2 noise levels). Check "
-              "the straps and the start pose, then redo the protocol.")
+    text = SensorCalibrationPage::tr(
+               "The movements do not fit the arm model well (%1 off by %2 noise levels). Check "
+               "the straps and the start pose, then redo the protocol.")
                .arg(worstKind, fixed(worst, 1));
   } else if (worst > kGoodRms || !r.warnings.empty()) {
     v = CalibrationVerdict::Usable;
-    text =
-        tr("Usable, not perfect (worst: %1 at %2 noise levels).").arg(worstKind, fixed(worst, 1));
+    text = SensorCalibrationPage::tr("Usable, not perfect (worst: %1 at %2 noise levels).")
+               .arg(worstKind, fixed(worst, 1));
     for (const std::string& w : r.warnings) text += QLatin1Char(' ') + QString::fromStdString(w);
-    text += QLatin1Char(' ') + tr("Redo the protocol for a better one.");
+    text += QLatin1Char(' ') + SensorCalibrationPage::tr("Redo the protocol for a better one.");
   } else {
-    text = tr("Good: the data fit the arm model to the sensors' noise level (worst: %1 at %2).")
+    text = SensorCalibrationPage::tr(
+               "Good: the data fit the arm model to the sensors' noise level (worst: %1 at %2).")
                .arg(worstKind, fixed(worst, 2));
   }
   if (why) *why = text;
@@ -88,35 +90,26 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
       m_config(std::move(config)),
       m_folder(std::move(folder)),
       m_controller(new SessionController(registry, this)) {
-  setAccessibleName(tr("Sensor calibration"));
   auto* root = new QHBoxLayout(this);
   auto* left = new QVBoxLayout;
-  m_title = new QLabel(tr("Sensor calibration"), this);
+  m_title = new QLabel(this);
   ui::setScaledFont(m_title, 1.6);
-  m_instruction = new QLabel(
-      tr("The patient sits upright with both sensors strapped on. Press Start, then follow the "
-         "instructions for about a minute (docs/calibration.md)."),
-      this);
+  m_instruction = new QLabel(this);
   m_instruction->setWordWrap(true);
-  m_instruction->setAccessibleName(tr("Instruction"));
   m_countdown = new QLabel(this);
   ui::setScaledFont(m_countdown, 2.4);
-  m_countdown->setAccessibleName(tr("Time left in this step"));
   m_progress = new QProgressBar(this);
   m_progress->setRange(0, 1000);
-  m_progress->setAccessibleName(tr("Protocol progress"));
   auto* buttons = new QHBoxLayout;
-  m_start = new QPushButton(tr("&Start"), this);
-  m_cancel = new QPushButton(tr("C&ancel"), this);
+  m_start = new QPushButton(this);
+  m_cancel = new QPushButton(this);
   buttons->addWidget(m_start);
   buttons->addWidget(m_cancel);
   buttons->addStretch(1);
   m_verdictLabel = new QLabel(this);
   m_verdictLabel->setWordWrap(true);
-  m_verdictLabel->setAccessibleName(tr("Calibration verdict"));
   m_details = new QPlainTextEdit(this);
   m_details->setReadOnly(true);
-  m_details->setAccessibleName(tr("Calibration details"));
   left->addWidget(m_title);
   left->addWidget(m_instruction);
   left->addWidget(m_countdown);
@@ -136,7 +129,7 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
   connect(m_controller, &SessionController::started, this, [this](const QString& error) {
     if (m_state != State::Recording) return;
     if (!error.isEmpty()) {
-      m_verdictLabel->setText(tr("The devices could not start: %1").arg(error));
+      showVerdict([error] { return tr("The devices could not start: %1").arg(error); });
       setState(State::Failed);
       emit finished(false);
       return;
@@ -147,8 +140,10 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
           [this](quint64 rows, quint64, const QString& error) {
             if (m_state != State::Recording) return;  // cancelled
             if (!error.isEmpty() || rows == 0) {
-              m_verdictLabel->setText(tr("The protocol could not be recorded: %1")
-                                          .arg(error.isEmpty() ? tr("no data arrived") : error));
+              showVerdict([error] {
+                return tr("The protocol could not be recorded: %1")
+                    .arg(error.isEmpty() ? tr("no data arrived") : error);
+              });
               setState(State::Failed);
               emit finished(false);
               return;
@@ -156,7 +151,45 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
             solve();
           });
   connect(&m_timer, &QTimer::timeout, this, &SensorCalibrationPage::drain);
+  showStep([] { return tr("Sensor calibration"); },
+           [] {
+             return tr(
+                 "The patient sits upright with both sensors strapped on. Press Start, then "
+                 "follow the instructions for about a minute (docs/calibration.md).");
+           });
   setState(State::Ready);
+  retranslateUi();
+}
+
+void SensorCalibrationPage::retranslateUi() {
+  setAccessibleName(tr("Sensor calibration"));
+  m_instruction->setAccessibleName(tr("Instruction"));
+  m_countdown->setAccessibleName(tr("Time left in this step"));
+  m_progress->setAccessibleName(tr("Protocol progress"));
+  m_verdictLabel->setAccessibleName(tr("Calibration verdict"));
+  m_details->setAccessibleName(tr("Calibration details"));
+  m_start->setText(m_state == State::Ready ? tr("&Start") : tr("&Redo"));
+  m_cancel->setText(tr("C&ancel"));
+  if (m_titleText) m_title->setText(m_titleText());
+  if (m_instructionText) m_instruction->setText(m_instructionText());
+  if (m_verdictText) m_verdictLabel->setText(m_verdictText());
+}
+
+void SensorCalibrationPage::changeEvent(QEvent* event) {
+  if (event->type() == QEvent::LanguageChange) retranslateUi();
+  QWidget::changeEvent(event);
+}
+
+void SensorCalibrationPage::showStep(Text title, Text instruction) {
+  m_titleText = std::move(title);
+  if (instruction) m_instructionText = std::move(instruction);
+  m_title->setText(m_titleText());
+  m_instruction->setText(m_instructionText ? m_instructionText() : QString());
+}
+
+void SensorCalibrationPage::showVerdict(Text verdict) {
+  m_verdictText = std::move(verdict);
+  m_verdictLabel->setText(m_verdictText ? m_verdictText() : QString());
 }
 
 QString SensorCalibrationPage::verdictText() const {
@@ -184,7 +217,7 @@ void SensorCalibrationPage::start() {
   ++m_generation;
   m_result.reset();
   m_verdict.reset();
-  m_verdictLabel->clear();
+  showVerdict({});
   m_details->clear();
   std::error_code ec;
   std::filesystem::create_directories(m_folder, ec);
@@ -194,7 +227,7 @@ void SensorCalibrationPage::start() {
   m_gate = std::make_shared<RecordingGate>(std::make_shared<CsvRecordingTarget>(m_csv));
   m_gate->setRecording(true);  // from the first row: the start pose is held from the start
   setState(State::Recording);
-  m_title->setText(tr("Starting the sensors\u2026"));
+  showStep([] { return tr("Starting the sensors\u2026"); }, {});
   m_controller->start(m_config, m_gate);
 }
 
@@ -202,11 +235,13 @@ void SensorCalibrationPage::drain() {
   std::vector<std::string> events;
   if (!m_controller->drainInto(m_rows, events) || m_rows.empty()) return;
   const double t = m_rows.back().t;
-  const CalibrationPhase& phase = phaseAt(t);
-  m_title->setText(phase.title);
-  m_instruction->setText(phase.instruction);
+  const CalibrationPhase& phase = phaseAt(t);  // one of calibrationPhases(), which stay
+  if (m_title->text() != phase.shownTitle() || m_instruction->text() != phase.shownInstruction())
+    showStep([&phase] { return phase.shownTitle(); },
+             [&phase] { return phase.shownInstruction(); });
   const int left = static_cast<int>(std::ceil(std::max(0.0, phase.endS - t)));
-  m_countdown->setText(phase.hold ? tr("Hold still: %1 s").arg(left) : tr("Move: %1 s").arg(left));
+  m_countdown->setText(phase.hold ? tr("Hold still: %n s", nullptr, left)
+                                  : tr("Move: %n s", nullptr, left));
   m_progress->setValue(static_cast<int>(1000 * std::clamp(t / protocolSeconds(), 0.0, 1.0)));
   m_arm->setPose(m_rows.back().th);
   if (phase.poseDeg) {
@@ -219,8 +254,7 @@ void SensorCalibrationPage::drain() {
   m_arm->updateIfChanged();
   if (t >= protocolSeconds() + 0.3) {
     m_timer.stop();
-    m_title->setText(tr("Recorded"));
-    m_instruction->setText(tr("The patient can relax."));
+    showStep([] { return tr("Recorded"); }, [] { return tr("The patient can relax."); });
     m_countdown->clear();
     m_controller->stop();  // solve() follows when the recording is closed
   }
@@ -228,7 +262,7 @@ void SensorCalibrationPage::drain() {
 
 void SensorCalibrationPage::solve() {
   setState(State::Solving);
-  m_title->setText(tr("Calibrating\u2026"));
+  showStep([] { return tr("Calibrating\u2026"); }, {});
   m_details->appendPlainText(
       tr("Fitting the sensors' mounting to the recording (this takes a "
          "few seconds)."));
@@ -242,16 +276,19 @@ void SensorCalibrationPage::solve() {
       if (!line.isEmpty()) self->m_details->appendPlainText(line);
       if (!done) return;
       if (!result) {
-        self->m_verdictLabel->setText(
-            tr("The calibration failed: %1. Redo the protocol.").arg(error));
+        self->showVerdict(
+            [error] { return tr("The calibration failed: %1. Redo the protocol.").arg(error); });
         self->setState(State::Failed);
         emit self->finished(false);
         return;
       }
-      QString why;
-      self->m_verdict = judgeCalibration(*result, &why);
+      self->m_verdict = judgeCalibration(*result, nullptr);
       self->m_result = result;
-      self->m_verdictLabel->setText(why);
+      self->showVerdict([result] {
+        QString why;
+        judgeCalibration(*result, &why);
+        return why;
+      });
       const Calibration& c = result->calibration;
       self->m_details->appendPlainText(
           tr("Upper-arm strap angle %1 deg, forearm strap angle %2 deg; residuals (noise "
@@ -262,7 +299,7 @@ void SensorCalibrationPage::solve() {
                    fixed(result->rmsForearmGyro), fixed(result->rmsForearmAcc),
                    fixed(result->rmsPosition))
               .arg(result->iterations));
-      self->m_title->setText(tr("Calibration done"));
+      self->showStep([] { return tr("Calibration done"); }, {});
       self->setState(State::Done);
       emit self->finished(*self->m_verdict != CalibrationVerdict::Poor);
     });
@@ -292,8 +329,8 @@ void SensorCalibrationPage::cancel() {
     ++m_generation;  // the fit's result will be ignored
     setState(State::Ready);
   }
-  m_title->setText(tr("Sensor calibration"));
-  m_instruction->setText(tr("Cancelled. Press Start to begin the protocol again."));
+  showStep([] { return tr("Sensor calibration"); },
+           [] { return tr("Cancelled. Press Start to begin the protocol again."); });
   m_countdown->clear();
   m_arm->setTargetPose(std::nullopt);
 }

@@ -7,6 +7,7 @@
 #include <QTimer>
 #include <QWidget>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -68,7 +69,15 @@ class SensorCalibrationPage : public QWidget {
   /// The fit is done (or failed); good is false for a Poor verdict or a failure.
   void finished(bool good);
 
+ protected:
+  void changeEvent(QEvent* event) override;
+
  private:
+  using Text = std::function<QString()>;
+  void retranslateUi();
+  /// Shows the step's title and instruction, made again when the language changes.
+  void showStep(Text title, Text instruction);
+  void showVerdict(Text verdict);
   void setState(State s);
   void drain();
   void solve();
@@ -85,6 +94,7 @@ class SensorCalibrationPage : public QWidget {
   QTimer m_timer;
   std::vector<session::EstimateRow> m_rows;
 
+  Text m_titleText, m_instructionText, m_verdictText;
   QLabel* m_title;
   QLabel* m_instruction;
   QLabel* m_countdown;

@@ -13,9 +13,10 @@ namespace armtrack::gui {
 
 namespace {
 
-QString tr(const char* text) {
-  return QCoreApplication::translate("armtrack::gui::PatientRecords", text);
-}
+// This file's texts (context "armtrack::gui::PatientRecords" in translations/armtrack_<code>.ts).
+struct Tr {
+  Q_DECLARE_TR_FUNCTIONS(armtrack::gui::PatientRecords)
+};
 
 struct LengthKey {
   const char* key;
@@ -79,24 +80,25 @@ QString patientProblem(const storage::Patient& p, const QDate& today, QString* f
   };
   static const QRegularExpression codeRe(QStringLiteral("^[A-Za-z0-9][A-Za-z0-9_-]{0,31}$"));
   if (p.code.trimmed().isEmpty())
-    return fail("code", tr("Give the patient a code, e.g. P001: it names the patient in files "
-                           "and exports."));
+    return fail("code", Tr::tr("Give the patient a code, e.g. P001: it names the patient in files "
+                               "and exports."));
   if (!codeRe.match(p.code).hasMatch())
-    return fail("code", tr("The code may hold letters, digits, '-' and '_' (at most 32, starting "
-                           "with a letter or digit): \"%1\" does not.")
-                            .arg(p.code));
-  if (p.name.trimmed().isEmpty()) return fail("name", tr("Give the patient's name."));
+    return fail("code",
+                Tr::tr("The code may hold letters, digits, '-' and '_' (at most 32, starting "
+                       "with a letter or digit): \"%1\" does not.")
+                    .arg(p.code));
+  if (p.name.trimmed().isEmpty()) return fail("name", Tr::tr("Give the patient's name."));
   if (!p.birthDate.isEmpty()) {
     const QDate d = QDate::fromString(p.birthDate, Qt::ISODate);
-    if (!d.isValid()) return fail("birthDate", tr("The birth date is not a date."));
-    if (d > today) return fail("birthDate", tr("The birth date lies in the future."));
-    if (d.year() < 1900) return fail("birthDate", tr("The birth date is before 1900."));
+    if (!d.isValid()) return fail("birthDate", Tr::tr("The birth date is not a date."));
+    if (d > today) return fail("birthDate", Tr::tr("The birth date lies in the future."));
+    if (d.year() < 1900) return fail("birthDate", Tr::tr("The birth date is before 1900."));
   }
   const SegmentLengths s = SegmentLengths::fromJson(p.segmentLengthsJson);
   const auto check = [&](const std::optional<double>& v, double lo, double hi, const char* name,
                          const QString& what) -> QString {
     if (v && (*v < lo || *v > hi))
-      return fail(name, tr("The %1 of %2 cm is outside %3-%4 cm: check the measurement.")
+      return fail(name, Tr::tr("The %1 of %L2 cm is outside %L3-%L4 cm: check the measurement.")
                             .arg(what)
                             .arg(*v * 100, 0, 'f', 1)
                             .arg(lo * 100, 0, 'f', 0)
@@ -104,17 +106,17 @@ QString patientProblem(const storage::Patient& p, const QDate& today, QString* f
     return {};
   };
   for (const QString& problem :
-       {check(s.upperArmM, 0.15, 0.50, "upperArm", tr("upper arm length")),
-        check(s.forearmM, 0.12, 0.45, "forearm", tr("forearm length")),
-        check(s.upperStrapM, 0.02, 0.45, "upperStrap", tr("upper-arm IMU distance")),
-        check(s.forearmStrapM, 0.02, 0.40, "forearmStrap", tr("forearm IMU distance"))})
+       {check(s.upperArmM, 0.15, 0.50, "upperArm", Tr::tr("upper arm length")),
+        check(s.forearmM, 0.12, 0.45, "forearm", Tr::tr("forearm length")),
+        check(s.upperStrapM, 0.02, 0.45, "upperStrap", Tr::tr("upper-arm IMU distance")),
+        check(s.forearmStrapM, 0.02, 0.40, "forearmStrap", Tr::tr("forearm IMU distance"))})
     if (!problem.isEmpty()) return problem;
   if (s.upperArmM && s.upperStrapM && *s.upperStrapM >= *s.upperArmM)
-    return fail("upperStrap", tr("The upper-arm IMU sits farther from the shoulder than the "
-                                 "elbow is: check both measurements."));
+    return fail("upperStrap", Tr::tr("The upper-arm IMU sits farther from the shoulder than the "
+                                     "elbow is: check both measurements."));
   if (s.forearmM && s.forearmStrapM && *s.forearmStrapM >= *s.forearmM)
-    return fail("forearmStrap", tr("The forearm IMU sits farther from the elbow than the wrist "
-                                   "is: check both measurements."));
+    return fail("forearmStrap", Tr::tr("The forearm IMU sits farther from the elbow than the wrist "
+                                       "is: check both measurements."));
   return {};
 }
 

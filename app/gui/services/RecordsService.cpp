@@ -43,7 +43,7 @@ RecordsFailure failureOf(std::exception_ptr e) {
   } catch (const std::exception& x) {
     return {std::nullopt, sentence(x.what())};
   } catch (...) {
-    return {std::nullopt, QStringLiteral("an unexpected error")};
+    return {std::nullopt, RecordsService::tr("an unexpected error")};
   }
 }
 
@@ -207,9 +207,10 @@ void RecordsService::create(const storage::DatabaseUrl& url, const QString& admi
         if (url.engine == storage::DatabaseUrl::Engine::Sqlite) {
           const QString folder = QFileInfo(url.path).absolutePath();
           if (!QDir().mkpath(folder))
-            throw StorageError(StorageError::Kind::Io, "cannot create the folder " +
-                                                           folder.toStdString() +
-                                                           ": choose a folder you may write to");
+            throw StorageError(StorageError::Kind::Io,
+                               tr("cannot create the folder %1: choose a folder you may write to")
+                                   .arg(folder)
+                                   .toStdString());
         }
         c.close();
         {

@@ -6,6 +6,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QListWidget>
+#include <QLocale>
 #include <QPushButton>
 #include <QTemporaryDir>
 #include <cmath>
@@ -152,7 +153,9 @@ class TestNewSessionPages : public QObject {
     QVERIFY(finished.wait(20000));
     QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
     QVERIFY(page.checkPassed());
-    QVERIFY2(page.statusText().contains(QStringLiteral("1000 Hz")), qPrintable(page.statusText()));
+    // The rate in the locale's digits ("1000", "1,000", "1.000").
+    QVERIFY2(page.statusText().contains(QLocale().toString(1000) + QStringLiteral(" Hz")),
+             qPrintable(page.statusText()));
     test::saveScreenshot(test::grabFromScreen(&page), QStringLiteral("new_session_devices"));
     // A bad option: the plugin's own message.
     sensors->setText(QStringLiteral("upper+banana"));

@@ -1,0 +1,3097 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>armtrack::app::gui::CalibrationGuide</name>
+    <message>
+        <source>Arm forward</source>
+        <translation>Arm nach vorn</translation>
+    </message>
+    <message>
+        <source>Raise the arm forward to shoulder height, elbow almost straight.</source>
+        <translation>Den Arm nach vorn auf Schulterhöhe heben, den Ellenbogen fast gestreckt.</translation>
+    </message>
+    <message>
+        <source>Arm to the side</source>
+        <translation>Arm zur Seite</translation>
+    </message>
+    <message>
+        <source>Lift the arm out to the side, about 60 degrees, elbow almost straight.</source>
+        <translation>Den Arm seitlich etwa 60 Grad abspreizen, den Ellenbogen fast gestreckt.</translation>
+    </message>
+    <message>
+        <source>Hand across</source>
+        <translation>Hand zur Gegenseite</translation>
+    </message>
+    <message>
+        <source>Bring the hand across the body, elbow at a right angle, palm down.</source>
+        <translation>Die Hand vor dem Körper zur Gegenseite führen, Ellenbogen rechtwinklig, Handfläche nach unten.</translation>
+    </message>
+    <message>
+        <source>Hand out</source>
+        <translation>Hand nach außen</translation>
+    </message>
+    <message>
+        <source>Take the hand out to the side, elbow bent, palm up.</source>
+        <translation>Die Hand nach außen zur Seite führen, Ellenbogen gebeugt, Handfläche nach oben.</translation>
+    </message>
+    <message>
+        <source>Sit upright. Let the upper arm hang at the side, bend the elbow to a right angle, forearm pointing straight forward, thumb up. Keep still.</source>
+        <translation>Aufrecht sitzen. Den Oberarm seitlich hängen lassen, den Ellenbogen rechtwinklig beugen, der Unterarm zeigt gerade nach vorn, der Daumen nach oben. Ruhig halten.</translation>
+    </message>
+    <message>
+        <source>Hold still.</source>
+        <translation>Ruhig halten.</translation>
+    </message>
+    <message>
+        <source>Start pose</source>
+        <translation>Ausgangsstellung</translation>
+    </message>
+    <message>
+        <source>Elbow bends</source>
+        <translation>Ellenbogen beugen</translation>
+    </message>
+    <message>
+        <source>Bend and straighten the elbow four times, turning the palm down while straightening and up while bending.</source>
+        <translation>Den Ellenbogen viermal beugen und strecken; beim Strecken die Handfläche nach unten drehen, beim Beugen nach oben.</translation>
+    </message>
+    <message>
+        <source>Shoulder rotation</source>
+        <translation>Schulterrotation</translation>
+    </message>
+    <message>
+        <source>Elbow at a right angle: swing the hand in to the belly and out, three times.</source>
+        <translation>Ellenbogen rechtwinklig: die Hand dreimal zum Bauch hin und wieder nach außen schwenken.</translation>
+    </message>
+    <message>
+        <source>Reach and mouth</source>
+        <translation>Greifen und zum Mund</translation>
+    </message>
+    <message>
+        <source>Reach forward and up, then bring the hand to the mouth; three times.</source>
+        <translation>Nach vorn oben greifen, dann die Hand zum Mund führen; dreimal.</translation>
+    </message>
+    <message>
+        <source>Arm out and across</source>
+        <translation>Arm hinaus und zurück</translation>
+    </message>
+    <message>
+        <source>Lift the arm out to the side, then bring it back across; three times.</source>
+        <translation>Den Arm seitlich abspreizen und dann vor dem Körper zurückführen; dreimal.</translation>
+    </message>
+    <message>
+        <source>Back to the start pose</source>
+        <translation>Zurück in die Ausgangsstellung</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::CameraCalibrationPage</name>
+    <message>
+        <source>Camera calibration</source>
+        <translation>Kamerakalibrierung</translation>
+    </message>
+    <message>
+        <source>Starting the camera…</source>
+        <translation>Kamera wird gestartet …</translation>
+    </message>
+    <message>
+        <source>Camera picture</source>
+        <translation>Kamerabild</translation>
+    </message>
+    <message>
+        <source>Hold the printed chessboard (%1 x %2 inner corners) in front of the camera. Capture views with the board in every part of the picture, near and far, tilted a little.</source>
+        <translation>Das gedruckte Schachbrett (%1 × %2 innere Ecken) vor die Kamera halten. Ansichten aufnehmen, in denen das Brett in jedem Teil des Bildes liegt, nah und fern, leicht geneigt.</translation>
+    </message>
+    <message>
+        <source>Capture &amp;automatically when the board covers new ground</source>
+        <translation>&amp;Automatisch aufnehmen, wenn das Brett neue Bildbereiche abdeckt</translation>
+    </message>
+    <message>
+        <source>&amp;Capture view</source>
+        <translation>Ansicht auf&amp;nehmen</translation>
+    </message>
+    <message>
+        <source>Ca&amp;librate</source>
+        <translation>Ka&amp;librieren</translation>
+    </message>
+    <message>
+        <source>&amp;Start over</source>
+        <translation>&amp;Neu beginnen</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Abdeckung</translation>
+    </message>
+    <message>
+        <source>Camera calibration verdict</source>
+        <translation>Ergebnis der Kamerakalibrierung</translation>
+    </message>
+    <message>
+        <source>Check that the camera is plugged in and not used by another program.</source>
+        <translation>Prüfen Sie, ob die Kamera angeschlossen ist und von keinem anderen Programm benutzt wird.</translation>
+    </message>
+    <message>
+        <source>Could not calibrate: %1</source>
+        <translation>Kalibrierung nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>Good.</source>
+        <translation>Gut.</translation>
+    </message>
+    <message>
+        <source>Usable; more views, sharper and better lit, would improve it.</source>
+        <translation>Brauchbar; mehr Ansichten, schärfer und besser beleuchtet, würden sie verbessern.</translation>
+    </message>
+    <message>
+        <source>Poor: capture the views again, holding the board still and flat.</source>
+        <translation>Schlecht: die Ansichten neu aufnehmen und das Brett dabei ruhig und eben halten.</translation>
+    </message>
+    <message>
+        <source>The boards covered only %1 % of the picture; views near the edges help most.</source>
+        <translation>Die Bretter deckten nur %1 % des Bildes ab; Ansichten nahe den Rändern helfen am meisten.</translation>
+    </message>
+    <message>
+        <source>Capture at least 4 views first (%1 so far); 10 or more spread over the picture give a good calibration.</source>
+        <translation>Zuerst mindestens 4 Ansichten aufnehmen (bisher %1); 10 oder mehr, über das Bild verteilt, ergeben eine gute Kalibrierung.</translation>
+    </message>
+    <message>
+        <source>Calibrating…</source>
+        <translation>Kalibrierung läuft …</translation>
+    </message>
+    <message>
+        <source>%1 views kept; the boards cover %2 % of the picture.</source>
+        <translation>%1 Ansichten behalten; die Bretter decken %2 % des Bildes ab.</translation>
+    </message>
+    <message>
+        <source>Reprojection error %L1 px over %2 views; fx %L3, fy %L4 px.</source>
+        <translation>Rückprojektionsfehler %L1 px über %2 Ansichten; fx %L3, fy %L4 px.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::CameraCalibrationWorker</name>
+    <message>
+        <source>No picture from the camera.</source>
+        <translation>Kein Bild von der Kamera.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::DevicesPage</name>
+    <message>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <source>&amp;Devices found (tick the ones to use):</source>
+        <translation>Gefundene &amp;Geräte (die zu verwendenden ankreuzen):</translation>
+    </message>
+    <message>
+        <source>Device plugins</source>
+        <translation>Geräte-Plugins</translation>
+    </message>
+    <message>
+        <source>Not loaded: %1</source>
+        <translation>Nicht geladen: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Check connection</source>
+        <translation>Verbindung &amp;prüfen</translation>
+    </message>
+    <message>
+        <source>Check connection</source>
+        <translation>Verbindung prüfen</translation>
+    </message>
+    <message>
+        <source>Choose the devices, then check their connection.</source>
+        <translation>Geräte auswählen, dann ihre Verbindung prüfen.</translation>
+    </message>
+    <message>
+        <source>Connection check</source>
+        <translation>Verbindungsprüfung</translation>
+    </message>
+    <message>
+        <source>The devices could not start: %1</source>
+        <translation>Die Geräte konnten nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Not found: %1. Check the plugin folders in the settings.</source>
+        <translation>Nicht gefunden: %1. Prüfen Sie die Plugin-Ordner in den Einstellungen.</translation>
+    </message>
+    <message>
+        <source>Tick at least one device first.</source>
+        <translation>Zuerst mindestens ein Gerät ankreuzen.</translation>
+    </message>
+    <message>
+        <source>Stop &amp;check</source>
+        <translation>Prüfung &amp;beenden</translation>
+    </message>
+    <message>
+        <source>Starting the devices…</source>
+        <translation>Geräte werden gestartet …</translation>
+    </message>
+    <message>
+        <source>Connected: %1.</source>
+        <translation>Verbunden: %1.</translation>
+    </message>
+    <message>
+        <source>Receiving from every device…</source>
+        <translation>Daten kommen von allen Geräten …</translation>
+    </message>
+    <message>
+        <source>Not every device is streaming: %1. Check that each is switched on, charged and within range, then check again.</source>
+        <translation>Nicht alle Geräte senden: %1. Prüfen Sie, ob jedes eingeschaltet, geladen und in Reichweite ist, dann erneut prüfen.</translation>
+    </message>
+    <message>
+        <source>Check stopped.</source>
+        <translation>Prüfung beendet.</translation>
+    </message>
+    <message>
+        <source>%1 %2 %L3 Hz</source>
+        <translation>%1 %2 %L3 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::LiveSessionScreen</name>
+    <message>
+        <source>Live session</source>
+        <translation>Live-Sitzung</translation>
+    </message>
+    <message>
+        <source>%1. The session goes on with the other sensors; check the device (power, cable or distance).</source>
+        <translation>%1. Die Sitzung läuft mit den anderen Sensoren weiter; prüfen Sie das Gerät (Strom, Kabel oder Abstand).</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>linker Arm</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>rechter Arm</translation>
+    </message>
+    <message>
+        <source>Live session, %1</source>
+        <translation>Live-Sitzung, %1</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>Session status</source>
+        <translation>Sitzungsstatus</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>Auf&amp;nehmen</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>Pain</source>
+        <translation>Schmerz</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Fatigue</source>
+        <translation>Ermüdung</translation>
+    </message>
+    <message>
+        <source>Compensation</source>
+        <translation>Kompensation</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Notiz</translation>
+    </message>
+    <message>
+        <source>Event label</source>
+        <translation>Ereignisbezeichnung</translation>
+    </message>
+    <message>
+        <source>&amp;Mark event</source>
+        <translation>Ereignis &amp;markieren</translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation>Problem</translation>
+    </message>
+    <message>
+        <source>Try &amp;again</source>
+        <translation>&amp;Erneut versuchen</translation>
+    </message>
+    <message>
+        <source>Session messages</source>
+        <translation>Sitzungsmeldungen</translation>
+    </message>
+    <message>
+        <source>Could not start the session: %1</source>
+        <translation>Die Sitzung konnte nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>Session started</source>
+        <translation>Sitzung gestartet</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Aufnahme in %1</translation>
+    </message>
+    <message>
+        <source>Events: %1</source>
+        <translation>Ereignisse: %1</translation>
+    </message>
+    <message>
+        <source>Last recording problem: %1</source>
+        <translation>Letztes Aufnahmeproblem: %1</translation>
+    </message>
+    <message>
+        <source>Session ended; nothing was recorded.</source>
+        <translation>Sitzung beendet; nichts wurde aufgenommen.</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Ereignis</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Aufnahme angehalten: %1</translation>
+    </message>
+    <message>
+        <source>This session is not recorded</source>
+        <translation>Diese Sitzung wird nicht aufgenommen</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>Nicht gestartet</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Startet …</translation>
+    </message>
+    <message>
+        <source>Live %1 (not recording)</source>
+        <translation>Live %1 (keine Aufnahme)</translation>
+    </message>
+    <message>
+        <source>● Recording %1</source>
+        <translation>● Aufnahme %1</translation>
+    </message>
+    <message>
+        <source>Paused (%1 recorded)</source>
+        <translation>Pausiert (%1 aufgenommen)</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Wird beendet …</translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Beendet</translation>
+    </message>
+    <message>
+        <source>Not running</source>
+        <translation>Läuft nicht</translation>
+    </message>
+    <message>
+        <source>Live session: %1</source>
+        <translation>Live-Sitzung: %1</translation>
+    </message>
+    <message>
+        <source>Pause recording; the live view goes on (%1)</source>
+        <translation>Aufnahme pausieren; die Live-Ansicht läuft weiter (%1)</translation>
+    </message>
+    <message>
+        <source>End the session (%1)</source>
+        <translation>Sitzung beenden (%1)</translation>
+    </message>
+    <message>
+        <source>Mark the chosen event at the current time (%1)</source>
+        <translation>Das gewählte Ereignis zum aktuellen Zeitpunkt markieren (%1)</translation>
+    </message>
+    <message>
+        <source>Recording resumed at %L1 s</source>
+        <translation>Aufnahme bei %L1 s fortgesetzt</translation>
+    </message>
+    <message>
+        <source>Recording paused at %L1 s</source>
+        <translation>Aufnahme bei %L1 s pausiert</translation>
+    </message>
+    <message>
+        <source>%1 marked at %L2 s</source>
+        <translation>%1 bei %L2 s markiert</translation>
+    </message>
+    <message>
+        <source>Start or resume recording to %1 (%2)</source>
+        <translation>Aufnahme in %1 starten oder fortsetzen (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::RecordingTarget</name>
+    <message>
+        <source>a recording with this name exists; choose another name</source>
+        <translation>eine Aufnahme mit diesem Namen gibt es schon; wählen Sie einen anderen Namen</translation>
+    </message>
+    <message>
+        <source>the records of patient %1</source>
+        <translation>die Akte von Patient %1</translation>
+    </message>
+    <message>
+        <source>cannot record into the records: %1</source>
+        <translation>Aufnahme in die Akten nicht möglich: %1</translation>
+    </message>
+    <message>
+        <source>%L1 rows recorded in %2</source>
+        <translation>%L1 Zeilen in %2 aufgenommen</translation>
+    </message>
+    <message>
+        <source>%L1 rows recorded in %2; some rows could not be written</source>
+        <translation>%L1 Zeilen in %2 aufgenommen; einige Zeilen konnten nicht geschrieben werden</translation>
+    </message>
+    <message>
+        <source>session %1: %L2 rows recorded, but it could not be closed: %3</source>
+        <translation>Sitzung %1: %L2 Zeilen aufgenommen, aber sie konnte nicht abgeschlossen werden: %3</translation>
+    </message>
+    <message>
+        <source>session %1 saved in the records: %L2 rows</source>
+        <translation>Sitzung %1 in den Akten gespeichert: %L2 Zeilen</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::SensorCalibrationPage</name>
+    <message>
+        <source>upper-arm gyroscope</source>
+        <translation>Oberarm-Gyroskop</translation>
+    </message>
+    <message>
+        <source>upper-arm accelerometer</source>
+        <translation>Oberarm-Beschleunigungssensor</translation>
+    </message>
+    <message>
+        <source>forearm gyroscope</source>
+        <translation>Unterarm-Gyroskop</translation>
+    </message>
+    <message>
+        <source>forearm accelerometer</source>
+        <translation>Unterarm-Beschleunigungssensor</translation>
+    </message>
+    <message>
+        <source>optical positions</source>
+        <translation>optische Positionen</translation>
+    </message>
+    <message>
+        <source>Sensor calibration</source>
+        <translation>Sensorkalibrierung</translation>
+    </message>
+    <message>
+        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions for about a minute (docs/calibration.md).</source>
+        <translation>Der Patient sitzt aufrecht, beide Sensoren sind angelegt. Auf „Starten“ drücken und dann etwa eine Minute lang den Anweisungen folgen (docs/calibration.md).</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Anweisung</translation>
+    </message>
+    <message>
+        <source>Time left in this step</source>
+        <translation>Verbleibende Zeit in diesem Schritt</translation>
+    </message>
+    <message>
+        <source>Protocol progress</source>
+        <translation>Fortschritt des Protokolls</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Starten</translation>
+    </message>
+    <message>
+        <source>C&amp;ancel</source>
+        <translation>A&amp;bbrechen</translation>
+    </message>
+    <message>
+        <source>Calibration verdict</source>
+        <translation>Ergebnis der Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Calibration details</source>
+        <translation>Einzelheiten der Kalibrierung</translation>
+    </message>
+    <message>
+        <source>The devices could not start: %1</source>
+        <translation>Die Geräte konnten nicht starten: %1</translation>
+    </message>
+    <message>
+        <source>The protocol could not be recorded: %1</source>
+        <translation>Das Protokoll konnte nicht aufgenommen werden: %1</translation>
+    </message>
+    <message>
+        <source>no data arrived</source>
+        <translation>es kamen keine Daten an</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Wiederholen</translation>
+    </message>
+    <message>
+        <source>Starting the sensors…</source>
+        <translation>Sensoren werden gestartet …</translation>
+    </message>
+    <message>
+        <source>Recorded</source>
+        <translation>Aufgenommen</translation>
+    </message>
+    <message>
+        <source>The patient can relax.</source>
+        <translation>Der Patient kann sich entspannen.</translation>
+    </message>
+    <message>
+        <source>Calibrating…</source>
+        <translation>Kalibrierung läuft …</translation>
+    </message>
+    <message>
+        <source>Fitting the sensors&apos; mounting to the recording (this takes a few seconds).</source>
+        <translation>Die Lage der Sensoren wird an die Aufnahme angepasst (das dauert einige Sekunden).</translation>
+    </message>
+    <message>
+        <source>The calibration failed: %1. Redo the protocol.</source>
+        <translation>Die Kalibrierung ist fehlgeschlagen: %1. Wiederholen Sie das Protokoll.</translation>
+    </message>
+    <message>
+        <source>Upper-arm strap angle %1 deg, forearm strap angle %2 deg; residuals (noise levels): upper gyro %3, upper acc %4, forearm gyro %5, forearm acc %6, optical %7; %8 iterations.</source>
+        <translation>Gurtwinkel Oberarm %1°, Gurtwinkel Unterarm %2°; Residuen (Rauschniveaus): Gyro oben %3, Beschl. oben %4, Gyro Unterarm %5, Beschl. Unterarm %6, optisch %7; %8 Iterationen.</translation>
+    </message>
+    <message>
+        <source>Calibration done</source>
+        <translation>Kalibrierung abgeschlossen</translation>
+    </message>
+    <message>
+        <source>Cancelled. Press Start to begin the protocol again.</source>
+        <translation>Abgebrochen. Auf „Starten“ drücken, um das Protokoll neu zu beginnen.</translation>
+    </message>
+    <message>
+        <source>The fit did not settle. Check that both sensors are strapped tight, then redo the protocol.</source>
+        <translation>Die Anpassung kam nicht zur Ruhe. Prüfen Sie, ob beide Sensoren fest sitzen, und wiederholen Sie das Protokoll.</translation>
+    </message>
+    <message>
+        <source>The movements do not fit the arm model well (%1 off by %2 noise levels). Check the straps and the start pose, then redo the protocol.</source>
+        <translation>Die Bewegungen passen schlecht zum Armmodell (%1 weicht um %2 Rauschniveaus ab). Prüfen Sie die Gurte und die Ausgangsstellung und wiederholen Sie das Protokoll.</translation>
+    </message>
+    <message>
+        <source>Usable, not perfect (worst: %1 at %2 noise levels).</source>
+        <translation>Brauchbar, nicht perfekt (am schlechtesten: %1 mit %2 Rauschniveaus).</translation>
+    </message>
+    <message>
+        <source>Redo the protocol for a better one.</source>
+        <translation>Wiederholen Sie das Protokoll für eine bessere.</translation>
+    </message>
+    <message>
+        <source>Good: the data fit the arm model to the sensors&apos; noise level (worst: %1 at %2).</source>
+        <translation>Gut: Die Daten passen bis auf das Rauschen der Sensoren zum Armmodell (am schlechtesten: %1 mit %2).</translation>
+    </message>
+    <message numerus="yes">
+        <source>Hold still: %n s</source>
+        <translation>
+            <numerusform>Ruhig halten: %n s</numerusform>
+            <numerusform>Ruhig halten: %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Move: %n s</source>
+        <translation>
+            <numerusform>Bewegen: %n s</numerusform>
+            <numerusform>Bewegen: %n s</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::SessionController</name>
+    <message>
+        <source>a session is already running; stop it first</source>
+        <translation>es läuft bereits eine Sitzung; beenden Sie sie zuerst</translation>
+    </message>
+    <message>
+        <source>no device chosen: choose at least one device</source>
+        <translation>kein Gerät gewählt: wählen Sie mindestens ein Gerät</translation>
+    </message>
+    <message>
+        <source>no device plugin &quot;%1&quot;; found: %2. Check the plugin folders in the settings.</source>
+        <translation>kein Geräte-Plugin „%1“; gefunden: %2. Prüfen Sie die Plugin-Ordner in den Einstellungen.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the session could not start: %1</source>
+        <translation>die Sitzung konnte nicht starten: %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::AppController</name>
+    <message>
+        <source>Preparing the demo</source>
+        <translation>Demo wird vorbereitet</translation>
+    </message>
+    <message>
+        <source>Making demo records in %1: three patients, two protocols and six weeks of sessions, simulated and analysed the way real ones are. This takes a few seconds.</source>
+        <translation>Demo-Akten werden in %1 angelegt: drei Patienten, zwei Protokolle und sechs Wochen Sitzungen, simuliert und ausgewertet wie echte. Das dauert einige Sekunden.</translation>
+    </message>
+    <message>
+        <source>Signing in as the demo therapist...</source>
+        <translation>Anmeldung als Demo-Therapeut ...</translation>
+    </message>
+    <message>
+        <source>%1 (%2, demo)</source>
+        <translation>%1 (%2, Demo)</translation>
+    </message>
+    <message>
+        <source>Demo records: accounts &quot;%1&quot; and &quot;%2&quot;, password &quot;%3&quot;.</source>
+        <translation>Demo-Akten: Konten „%1“ und „%2“, Passwort „%3“.</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Abbrechen</translation>
+    </message>
+    <message>
+        <source>Settings saved.</source>
+        <translation>Einstellungen gespeichert.</translation>
+    </message>
+    <message>
+        <source>The new records location is used at the next sign-in.</source>
+        <translation>Der neue Speicherort der Akten gilt ab der nächsten Anmeldung.</translation>
+    </message>
+    <message>
+        <source>Opening the records</source>
+        <translation>Akten werden geöffnet</translation>
+    </message>
+    <message>
+        <source>Opening %1...</source>
+        <translation>%1 wird geöffnet ...</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Analysing the session</source>
+        <translation>Sitzung wird ausgewertet</translation>
+    </message>
+    <message>
+        <source>Estimating the joint angles of session %1 again from its recording and computing its metrics...</source>
+        <translation>Die Gelenkwinkel von Sitzung %1 werden aus ihrer Aufnahme neu berechnet, dazu ihre Kennwerte ...</translation>
+    </message>
+    <message>
+        <source>Session %1 is saved, but it could not be analysed: %2
+You can re-estimate it from its review.</source>
+        <translation>Sitzung %1 ist gespeichert, konnte aber nicht ausgewertet werden: %2
+Sie können sie in ihrer Auswertung neu berechnen.</translation>
+    </message>
+    <message>
+        <source>&amp;Review session</source>
+        <translation>Sitzung &amp;auswerten</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the patient</source>
+        <translation>&amp;Zurück zum Patienten</translation>
+    </message>
+    <message>
+        <source>&amp;Skip the analysis</source>
+        <translation>Auswertung ü&amp;berspringen</translation>
+    </message>
+    <message>
+        <source>Home exercises</source>
+        <translation>Heimübungen</translation>
+    </message>
+    <message>
+        <source>This is a home account. The guided home exercises it opens arrive in a later version of ArmTrack. Until then, your therapist records your sessions at the clinic.</source>
+        <translation>Dies ist ein Heimkonto. Die angeleiteten Heimübungen, die es öffnet, kommen in einer späteren Version von ArmTrack. Bis dahin zeichnet Ihr Therapeut Ihre Sitzungen in der Praxis auf.</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Abmelden</translation>
+    </message>
+    <message>
+        <source>Back the file up, then bring it up to date with: armtrack-cli db migrate</source>
+        <translation>Sichern Sie die Datei und bringen Sie sie dann auf den neuesten Stand mit: armtrack-cli db migrate</translation>
+    </message>
+    <message>
+        <source>Install the newer ArmTrack that wrote it.</source>
+        <translation>Installieren Sie die neuere ArmTrack-Version, die sie geschrieben hat.</translation>
+    </message>
+    <message>
+        <source>The file was left untouched. Restore it from a backup, or choose another database in the settings.</source>
+        <translation>Die Datei wurde nicht verändert. Stellen Sie sie aus einer Sicherung wieder her oder wählen Sie in den Einstellungen eine andere Datenbank.</translation>
+    </message>
+    <message>
+        <source>Check the location in the settings (or --db) and that you may read and write it, then try again.</source>
+        <translation>Prüfen Sie den Speicherort in den Einstellungen (oder --db) und ob Sie dort lesen und schreiben dürfen, dann erneut versuchen.</translation>
+    </message>
+    <message>
+        <source>The records cannot be opened</source>
+        <translation>Die Akten können nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>&amp;Try again</source>
+        <translation>&amp;Erneut versuchen</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>administrator</source>
+        <translation>Administrator</translation>
+    </message>
+    <message>
+        <source>therapist</source>
+        <translation>Therapeut</translation>
+    </message>
+    <message>
+        <source>home account</source>
+        <translation>Heimkonto</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::FirstRunScreen</name>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen ...</translation>
+    </message>
+    <message>
+        <source>&amp;Create and sign in</source>
+        <translation>&amp;Anlegen und anmelden</translation>
+    </message>
+    <message>
+        <source>First start</source>
+        <translation>Erster Start</translation>
+    </message>
+    <message>
+        <source>Welcome to ArmTrack</source>
+        <translation>Willkommen bei ArmTrack</translation>
+    </message>
+    <message>
+        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator can then add the therapists&apos; accounts.</source>
+        <translation>ArmTrack speichert Patienten, Sitzungen und Aufnahmen in einer Datenbank. Wählen Sie ihren Speicherort und legen Sie das Administratorkonto an; der Administrator kann danach die Konten der Therapeuten hinzufügen.</translation>
+    </message>
+    <message>
+        <source>Where the data lives</source>
+        <translation>Speicherort der Daten</translation>
+    </message>
+    <message>
+        <source>The database given on the command line: %1</source>
+        <translation>Die auf der Befehlszeile angegebene Datenbank: %1</translation>
+    </message>
+    <message>
+        <source>Data folder</source>
+        <translation>Datenordner</translation>
+    </message>
+    <message>
+        <source>Choose the data folder</source>
+        <translation>Datenordner wählen</translation>
+    </message>
+    <message>
+        <source>Administrator account</source>
+        <translation>Administratorkonto</translation>
+    </message>
+    <message>
+        <source>Administrator name</source>
+        <translation>Name des Administrators</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation>
+            <numerusform>mindestens %n Zeichen</numerusform>
+            <numerusform>mindestens %n Zeichen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Passwort wiederholen</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>Passwort &amp;wiederholen:</translation>
+    </message>
+    <message>
+        <source>Choose a folder.</source>
+        <translation>Wählen Sie einen Ordner.</translation>
+    </message>
+    <message>
+        <source>The records will be kept in %1.</source>
+        <translation>Die Akten werden in %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>Where ArmTrack keeps its data</source>
+        <translation>Wo ArmTrack seine Daten speichert</translation>
+    </message>
+    <message>
+        <source>Choose the folder where ArmTrack keeps its data.</source>
+        <translation>Wählen Sie den Ordner, in dem ArmTrack seine Daten speichert.</translation>
+    </message>
+    <message>
+        <source>Give the data folder as a full path, e.g. %1.</source>
+        <translation>Geben Sie den Datenordner als vollständigen Pfad an, z. B. %1.</translation>
+    </message>
+    <message>
+        <source>Give the administrator a name.</source>
+        <translation>Geben Sie dem Administrator einen Namen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation>
+            <numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform>
+            <numerusform>Das Passwort braucht mindestens %n Zeichen.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The two passwords differ. Type the same password twice.</source>
+        <translation>Die beiden Passwörter unterscheiden sich. Geben Sie zweimal dasselbe Passwort ein.</translation>
+    </message>
+    <message>
+        <source>Creating the records...</source>
+        <translation>Akten werden angelegt ...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::JobProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>Wird angehalten ...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MainWindow</name>
+    <message>
+        <source>Signed-in account</source>
+        <translation>Angemeldetes Konto</translation>
+    </message>
+    <message>
+        <source>&amp;ArmTrack</source>
+        <translation>&amp;ArmTrack</translation>
+    </message>
+    <message>
+        <source>&amp;Patients</source>
+        <translation>&amp;Patienten</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation>&amp;Einstellungen ...</translation>
+    </message>
+    <message>
+        <source>Ctrl+,</source>
+        <translation>Ctrl+,</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Abmelden</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>&amp;About ArmTrack</source>
+        <translation>Ü&amp;ber ArmTrack</translation>
+    </message>
+    <message>
+        <source>About ArmTrack</source>
+        <translation>Über ArmTrack</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;ArmTrack %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Measures the shoulder&apos;s and elbow&apos;s joint angles from two wearable IMUs and a Kinect or webcam, for upper-limb rehabilitation.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;ArmTrack %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Misst die Gelenkwinkel von Schulter und Ellenbogen mit zwei am Körper getragenen IMUs und einer Kinect oder Webcam, für die Rehabilitation der oberen Extremität.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Signed in as %1</source>
+        <translation>Angemeldet als %1</translation>
+    </message>
+    <message>
+        <source>ArmTrack</source>
+        <translation>ArmTrack</translation>
+    </message>
+    <message>
+        <source>%1 - ArmTrack</source>
+        <translation>%1 – ArmTrack</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MessageLine</name>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MessageScreen</name>
+    <message>
+        <source>Message</source>
+        <translation>Meldung</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Fortschritt</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::NewSessionScreen</name>
+    <message>
+        <source>New session</source>
+        <translation>Neue Sitzung</translation>
+    </message>
+    <message>
+        <source>&amp;Start the live session</source>
+        <translation>Live-Sitzung &amp;starten</translation>
+    </message>
+    <message>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <source>Choose the sensors and their options, then check the connection: every stream should turn green and the angles move with the arm.</source>
+        <translation>Sensoren und ihre Optionen wählen, dann die Verbindung prüfen: Jeder Datenstrom sollte grün werden und die Winkel sich mit dem Arm bewegen.</translation>
+    </message>
+    <message>
+        <source>Sensor calibration</source>
+        <translation>Sensorkalibrierung</translation>
+    </message>
+    <message>
+        <source>The patient holds and makes the movements shown; ArmTrack then works out how the sensors sit on the arm. About a minute.</source>
+        <translation>Der Patient hält die gezeigten Stellungen und macht die gezeigten Bewegungen; ArmTrack ermittelt daraus, wie die Sensoren am Arm sitzen. Etwa eine Minute.</translation>
+    </message>
+    <message>
+        <source>Skip the calibration (the measured segment lengths are used)</source>
+        <translation>Kalibrierung überspringen (die gemessenen Segmentlängen werden verwendet)</translation>
+    </message>
+    <message>
+        <source>Camera calibration</source>
+        <translation>Kamerakalibrierung</translation>
+    </message>
+    <message>
+        <source>Hold the printed chessboard in front of the webcam in different places and angles until the grid is covered.</source>
+        <translation>Das gedruckte Schachbrett an verschiedenen Stellen und in verschiedenen Winkeln vor die Webcam halten, bis das Raster abgedeckt ist.</translation>
+    </message>
+    <message>
+        <source>No webcam among the devices: nothing to calibrate here.</source>
+        <translation>Keine Webcam unter den Geräten: hier gibt es nichts zu kalibrieren.</translation>
+    </message>
+    <message>
+        <source>Skip the camera calibration (use the camera&apos;s stored model)</source>
+        <translation>Kamerakalibrierung überspringen (das gespeicherte Kameramodell verwenden)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::OutputsPanel</name>
+    <message>
+        <source>&amp;PDF report...</source>
+        <translation>&amp;PDF-Bericht ...</translation>
+    </message>
+    <message>
+        <source>The session report: details, metrics, plots, repetitions</source>
+        <translation>Der Sitzungsbericht: Angaben, Kennwerte, Diagramme, Wiederholungen</translation>
+    </message>
+    <message>
+        <source>C&amp;SV...</source>
+        <translation>C&amp;SV ...</translation>
+    </message>
+    <message>
+        <source>Angles (deg) with their uncertainty, and a metrics table</source>
+        <translation>Winkel (°) mit ihrer Unsicherheit und eine Tabelle der Kennwerte</translation>
+    </message>
+    <message>
+        <source>Open&amp;Sim .mot...</source>
+        <translation>Open&amp;Sim .mot ...</translation>
+    </message>
+    <message>
+        <source>The clinical angles as an OpenSim motion file</source>
+        <translation>Die klinischen Winkel als OpenSim-Bewegungsdatei</translation>
+    </message>
+    <message>
+        <source>&amp;BIDS...</source>
+        <translation>&amp;BIDS ...</translation>
+    </message>
+    <message>
+        <source>A BIDS motion data set: IMUs, optical data and angles</source>
+        <translation>Ein BIDS-Bewegungsdatensatz: IMUs, optische Daten und Winkel</translation>
+    </message>
+    <message>
+        <source>Rec&amp;ording...</source>
+        <translation>Auf&amp;nahme ...</translation>
+    </message>
+    <message>
+        <source>The raw recording in the open format, bit for bit</source>
+        <translation>Die Rohaufnahme im offenen Format, Bit für Bit</translation>
+    </message>
+    <message>
+        <source>Last output</source>
+        <translation>Letzte Ausgabe</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientDialog</name>
+    <message>
+        <source>New patient</source>
+        <translation>Neuer Patient</translation>
+    </message>
+    <message>
+        <source>Edit patient %1</source>
+        <translation>Patient %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Upper arm length</source>
+        <translation>Oberarmlänge</translation>
+    </message>
+    <message>
+        <source>Forearm length</source>
+        <translation>Unterarmlänge</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU distance from the shoulder</source>
+        <translation>Abstand der Oberarm-IMU von der Schulter</translation>
+    </message>
+    <message>
+        <source>Forearm IMU distance from the elbow</source>
+        <translation>Abstand der Unterarm-IMU vom Ellenbogen</translation>
+    </message>
+    <message>
+        <source>Patient code</source>
+        <translation>Patientenkennung</translation>
+    </message>
+    <message>
+        <source>e.g. P001</source>
+        <translation>z. B. P001</translation>
+    </message>
+    <message>
+        <source>Patient name</source>
+        <translation>Name des Patienten</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Geschlecht</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Betroffene Seite</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnose</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>&amp;Code:</source>
+        <translation>&amp;Kennung:</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Born:</source>
+        <translation>&amp;Geboren:</translation>
+    </message>
+    <message>
+        <source>&amp;Sex:</source>
+        <translation>Ge&amp;schlecht:</translation>
+    </message>
+    <message>
+        <source>Affected &amp;side:</source>
+        <translation>Betroffene &amp;Seite:</translation>
+    </message>
+    <message>
+        <source>&amp;Diagnosis:</source>
+        <translation>&amp;Diagnose:</translation>
+    </message>
+    <message>
+        <source>Measured segment lengths</source>
+        <translation>Gemessene Segmentlängen</translation>
+    </message>
+    <message>
+        <source>&amp;Upper arm (shoulder to elbow):</source>
+        <translation>&amp;Oberarm (Schulter bis Ellenbogen):</translation>
+    </message>
+    <message>
+        <source>&amp;Forearm (elbow to wrist):</source>
+        <translation>&amp;Unterarm (Ellenbogen bis Handgelenk):</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU from the shoulder:</source>
+        <translation>Oberarm-IMU ab der Schulter:</translation>
+    </message>
+    <message>
+        <source>Forearm IMU from the elbow:</source>
+        <translation>Unterarm-IMU ab dem Ellenbogen:</translation>
+    </message>
+    <message>
+        <source>N&amp;otes</source>
+        <translation>N&amp;otizen</translation>
+    </message>
+    <message>
+        <source>Saving...</source>
+        <translation>Wird gespeichert ...</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientListScreen</name>
+    <message>
+        <source>&amp;Open</source>
+        <translation>Ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>&amp;New patient...</source>
+        <translation>&amp;Neuer Patient ...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit...</source>
+        <translation>&amp;Bearbeiten ...</translation>
+    </message>
+    <message>
+        <source>Patients</source>
+        <translation>Patienten</translation>
+    </message>
+    <message>
+        <source>&amp;Search:</source>
+        <translation>&amp;Suchen:</translation>
+    </message>
+    <message>
+        <source>code, name, diagnosis...</source>
+        <translation>Kennung, Name, Diagnose ...</translation>
+    </message>
+    <message>
+        <source>Search patients</source>
+        <translation>Patienten suchen</translation>
+    </message>
+    <message>
+        <source>Patient list</source>
+        <translation>Patientenliste</translation>
+    </message>
+    <message>
+        <source>Add a patient (%1)</source>
+        <translation>Einen Patienten hinzufügen (%1)</translation>
+    </message>
+    <message>
+        <source>Loading the patients...</source>
+        <translation>Patienten werden geladen ...</translation>
+    </message>
+    <message>
+        <source>No patients yet. Add the first with &quot;New patient&quot;.</source>
+        <translation>Noch keine Patienten. Legen Sie den ersten mit „Neuer Patient“ an.</translation>
+    </message>
+    <message>
+        <source>No patients.</source>
+        <translation>Keine Patienten.</translation>
+    </message>
+    <message>
+        <source>The patients could not be read: %1</source>
+        <translation>Die Patienten konnten nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>A patient with the code %1 exists already. Choose another code, or cancel and open that patient from the list.</source>
+        <translation>Einen Patienten mit der Kennung %1 gibt es schon. Wählen Sie eine andere Kennung oder brechen Sie ab und öffnen Sie diesen Patienten aus der Liste.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientRecords</name>
+    <message>
+        <source>Give the patient a code, e.g. P001: it names the patient in files and exports.</source>
+        <translation>Geben Sie dem Patienten eine Kennung, z. B. P001: Sie benennt den Patienten in Dateien und Exporten.</translation>
+    </message>
+    <message>
+        <source>The code may hold letters, digits, &apos;-&apos; and &apos;_&apos; (at most 32, starting with a letter or digit): &quot;%1&quot; does not.</source>
+        <translation>Die Kennung darf Buchstaben, Ziffern, „-“ und „_“ enthalten (höchstens 32, beginnend mit einem Buchstaben oder einer Ziffer): „%1“ erfüllt das nicht.</translation>
+    </message>
+    <message>
+        <source>Give the patient&apos;s name.</source>
+        <translation>Geben Sie den Namen des Patienten an.</translation>
+    </message>
+    <message>
+        <source>The birth date is not a date.</source>
+        <translation>Das Geburtsdatum ist kein Datum.</translation>
+    </message>
+    <message>
+        <source>The birth date lies in the future.</source>
+        <translation>Das Geburtsdatum liegt in der Zukunft.</translation>
+    </message>
+    <message>
+        <source>The birth date is before 1900.</source>
+        <translation>Das Geburtsdatum liegt vor 1900.</translation>
+    </message>
+    <message>
+        <source>upper arm length</source>
+        <translation>Oberarmlänge</translation>
+    </message>
+    <message>
+        <source>forearm length</source>
+        <translation>Unterarmlänge</translation>
+    </message>
+    <message>
+        <source>upper-arm IMU distance</source>
+        <translation>Abstand der Oberarm-IMU</translation>
+    </message>
+    <message>
+        <source>forearm IMU distance</source>
+        <translation>Abstand der Unterarm-IMU</translation>
+    </message>
+    <message>
+        <source>The upper-arm IMU sits farther from the shoulder than the elbow is: check both measurements.</source>
+        <translation>Die Oberarm-IMU sitzt weiter von der Schulter entfernt als der Ellenbogen: prüfen Sie beide Messungen.</translation>
+    </message>
+    <message>
+        <source>The forearm IMU sits farther from the elbow than the wrist is: check both measurements.</source>
+        <translation>Die Unterarm-IMU sitzt weiter vom Ellenbogen entfernt als das Handgelenk: prüfen Sie beide Messungen.</translation>
+    </message>
+    <message>
+        <source>The %1 of %L2 cm is outside %L3-%L4 cm: check the measurement.</source>
+        <translation>%1: %L2 cm liegt außerhalb von %L3–%L4 cm; prüfen Sie die Messung.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientScreen</name>
+    <message>
+        <source>&amp;New session...</source>
+        <translation>&amp;Neue Sitzung ...</translation>
+    </message>
+    <message>
+        <source>&amp;Review session</source>
+        <translation>Sitzung &amp;auswerten</translation>
+    </message>
+    <message>
+        <source>&amp;Progress report (PDF)...</source>
+        <translation>&amp;Verlaufsbericht (PDF) ...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit patient...</source>
+        <translation>Patient &amp;bearbeiten ...</translation>
+    </message>
+    <message>
+        <source>&amp;Back to patients</source>
+        <translation>&amp;Zurück zu den Patienten</translation>
+    </message>
+    <message>
+        <source>Patient %1</source>
+        <translation>Patient %1</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Angaben</translation>
+    </message>
+    <message>
+        <source>Code:</source>
+        <translation>Kennung:</translation>
+    </message>
+    <message>
+        <source>Born:</source>
+        <translation>Geboren:</translation>
+    </message>
+    <message>
+        <source>Sex:</source>
+        <translation>Geschlecht:</translation>
+    </message>
+    <message>
+        <source>Affected side:</source>
+        <translation>Betroffene Seite:</translation>
+    </message>
+    <message>
+        <source>Diagnosis:</source>
+        <translation>Diagnose:</translation>
+    </message>
+    <message>
+        <source>Notes:</source>
+        <translation>Notizen:</translation>
+    </message>
+    <message>
+        <source>Measured segment lengths</source>
+        <translation>Gemessene Segmentlängen</translation>
+    </message>
+    <message>
+        <source>Upper arm:</source>
+        <translation>Oberarm:</translation>
+    </message>
+    <message>
+        <source>Forearm:</source>
+        <translation>Unterarm:</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU:</source>
+        <translation>Oberarm-IMU:</translation>
+    </message>
+    <message>
+        <source>Forearm IMU:</source>
+        <translation>Unterarm-IMU:</translation>
+    </message>
+    <message>
+        <source>Home programme</source>
+        <translation>Heimprogramm</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Fortschritt</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sitzungen</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>Loading...</source>
+        <translation>Wird geladen ...</translation>
+    </message>
+    <message>
+        <source>This patient could not be read: %1</source>
+        <translation>Dieser Patient konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n stored length(s) could not be read.</source>
+        <translation>
+            <numerusform>%n gespeicherte Länge konnte nicht gelesen werden.</numerusform>
+            <numerusform>%n gespeicherte Längen konnten nicht gelesen werden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Per week</source>
+        <translation>Pro Woche</translation>
+    </message>
+    <message>
+        <source>Save the progress report</source>
+        <translation>Verlaufsbericht speichern</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Writing the progress report...</source>
+        <translation>Verlaufsbericht wird geschrieben ...</translation>
+    </message>
+    <message numerus="yes">
+        <source>Progress report written: %1 (%n page(s)).</source>
+        <translation>
+            <numerusform>Verlaufsbericht geschrieben: %1 (%n Seite).</numerusform>
+            <numerusform>Verlaufsbericht geschrieben: %1 (%n Seiten).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The progress report could not be written: %1. Choose another folder or file name and try again.</source>
+        <translation>Der Verlaufsbericht konnte nicht geschrieben werden: %1. Wählen Sie einen anderen Ordner oder Dateinamen und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>%L1 cm</source>
+        <translation>%L1 cm</translation>
+    </message>
+    <message>
+        <source>Record a new session with this patient (%1)</source>
+        <translation>Eine neue Sitzung mit diesem Patienten aufnehmen (%1)</translation>
+    </message>
+    <message>
+        <source>Target (°)</source>
+        <translation>Ziel (°)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientTableModel</name>
+    <message>
+        <source>female</source>
+        <translation>weiblich</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>männlich</translation>
+    </message>
+    <message>
+        <source>diverse</source>
+        <translation>divers</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+    <message>
+        <source>both</source>
+        <translation>beide</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Kennung</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Born</source>
+        <translation>Geboren</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Geschlecht</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Betroffene Seite</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnose</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ProgressChart</name>
+    <message>
+        <source>&amp;Angle:</source>
+        <translation>&amp;Winkel:</translation>
+    </message>
+    <message>
+        <source>Angle shown in the progress chart</source>
+        <translation>Im Verlaufsdiagramm gezeigter Winkel</translation>
+    </message>
+    <message>
+        <source>Progress chart</source>
+        <translation>Verlaufsdiagramm</translation>
+    </message>
+    <message>
+        <source>Range of motion per session against date; the table beside it holds the same values.</source>
+        <translation>Bewegungsausmaß je Sitzung über dem Datum; die Tabelle daneben enthält dieselben Werte.</translation>
+    </message>
+    <message>
+        <source>Progress values</source>
+        <translation>Verlaufswerte</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <translation>rad</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Range (%1)</source>
+        <translation>Bewegungsausmaß (%1)</translation>
+    </message>
+    <message>
+        <source>Of normal</source>
+        <translation>Vom Normwert</translation>
+    </message>
+    <message>
+        <source>Range of motion</source>
+        <translation>Bewegungsausmaß</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sitzungen</translation>
+    </message>
+    <message>
+        <source>%1: no analysed session yet</source>
+        <translation>%1: noch keine ausgewertete Sitzung</translation>
+    </message>
+    <message>
+        <source>ROM (%1)</source>
+        <translation>ROM (%1)</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>%L1 %</source>
+        <translation>%L1 %</translation>
+    </message>
+    <message>
+        <source>Normal (AAOS) %L1 %2</source>
+        <translation>Normbereich (AAOS) %L1 %2</translation>
+    </message>
+    <message>
+        <source>d MMM</source>
+        <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
+        <translation>d. MMM</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RecordsRecordingTarget</name>
+    <message>
+        <source>the records of patient %1</source>
+        <translation>die Akte von Patient %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RecordsService</name>
+    <message>
+        <source>The background connection to the records could not sign in (%1). Reports, exports and analyses will fail until you sign in again.</source>
+        <translation>Die Hintergrundverbindung zu den Akten konnte sich nicht anmelden (%1). Berichte, Exporte und Auswertungen schlagen fehl, bis Sie sich erneut anmelden.</translation>
+    </message>
+    <message>
+        <source>an unexpected error</source>
+        <translation>ein unerwarteter Fehler</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1: choose a folder you may write to</source>
+        <translation>der Ordner %1 kann nicht angelegt werden: wählen Sie einen Ordner, in den Sie schreiben dürfen</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ReestimatePanel</name>
+    <message>
+        <source>Fuse the &amp;optical data (Kinect, webcam)</source>
+        <translation>&amp;Optische Daten einbeziehen (Kinect, Webcam)</translation>
+    </message>
+    <message>
+        <source>B&amp;rowse...</source>
+        <translation>D&amp;urchsuchen ...</translation>
+    </message>
+    <message>
+        <source>Re-&amp;estimate</source>
+        <translation>Neu &amp;berechnen</translation>
+    </message>
+    <message>
+        <source>Shown:</source>
+        <translation>Angezeigt:</translation>
+    </message>
+    <message>
+        <source>EKF (extended Kalman filter)</source>
+        <translation>EKF (erweitertes Kalman-Filter)</translation>
+    </message>
+    <message>
+        <source>UKF (unscented Kalman filter)</source>
+        <translation>UKF (Unscented-Kalman-Filter)</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filter</translation>
+    </message>
+    <message>
+        <source>&amp;Filter:</source>
+        <translation>&amp;Filter:</translation>
+    </message>
+    <message>
+        <source>A: body acceleration modelled</source>
+        <translation>A: Körperbeschleunigung modelliert</translation>
+    </message>
+    <message>
+        <source>B: body acceleration as states</source>
+        <translation>B: Körperbeschleunigung als Zustände</translation>
+    </message>
+    <message>
+        <source>C: no compensation</source>
+        <translation>C: ohne Kompensation</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Methode</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Methode:</translation>
+    </message>
+    <message>
+        <source>none (a file from armtrack-cli calibrate)</source>
+        <translation>keine (eine Datei von armtrack-cli calibrate)</translation>
+    </message>
+    <message>
+        <source>Calibration file</source>
+        <translation>Kalibrierungsdatei</translation>
+    </message>
+    <message>
+        <source>&amp;Calibration:</source>
+        <translation>&amp;Kalibrierung:</translation>
+    </message>
+    <message>
+        <source>Calibrations (*.json)</source>
+        <translation>Kalibrierungen (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RepetitionTableModel</name>
+    <message>
+        <source>partial</source>
+        <translation>teilweise</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <translation>vollständig</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Start (s)</source>
+        <translation>Beginn (s)</translation>
+    </message>
+    <message>
+        <source>End (s)</source>
+        <translation>Ende (s)</translation>
+    </message>
+    <message>
+        <source>Excursion (rad)</source>
+        <translation>Exkursion (rad)</translation>
+    </message>
+    <message>
+        <source>Range (rad)</source>
+        <translation>Bewegungsausmaß (rad)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (rad/s)</source>
+        <translation>Spitzengeschwindigkeit (rad/s)</translation>
+    </message>
+    <message>
+        <source>SPARC</source>
+        <translation>SPARC</translation>
+    </message>
+    <message>
+        <source>Full or partial</source>
+        <translation>Vollständig oder teilweise</translation>
+    </message>
+    <message>
+        <source>Excursion (°)</source>
+        <translation>Exkursion (°)</translation>
+    </message>
+    <message>
+        <source>Range (°)</source>
+        <translation>Bewegungsausmaß (°)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (°/s)</source>
+        <translation>Spitzengeschwindigkeit (°/s)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ReviewScreen</name>
+    <message>
+        <source>Review of session %1</source>
+        <translation>Auswertung von Sitzung %1</translation>
+    </message>
+    <message>
+        <source>Session %1</source>
+        <translation>Sitzung %1</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the patient</source>
+        <translation>&amp;Zurück zum Patienten</translation>
+    </message>
+    <message>
+        <source>3D arm replay</source>
+        <translation>3D-Wiedergabe des Arms</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Wiedergabe</translation>
+    </message>
+    <message>
+        <source>Replay time</source>
+        <translation>Wiedergabezeit</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Wiedergabegeschwindigkeit</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions</source>
+        <translation>Wieder&amp;holungen</translation>
+    </message>
+    <message>
+        <source>Session to compare with</source>
+        <translation>Sitzung zum Vergleich</translation>
+    </message>
+    <message>
+        <source>Another session of this patient, drawn dashed on the plots and as a translucent arm:</source>
+        <translation>Eine andere Sitzung dieses Patienten, gestrichelt in den Diagrammen und als durchscheinender Arm gezeigt:</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>Ver&amp;gleichen</translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation>Sitzungsnotizen</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve notes</source>
+        <translation>Notizen &amp;speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Notes</source>
+        <translation>&amp;Notizen</translation>
+    </message>
+    <message>
+        <source>Re-es&amp;timate</source>
+        <translation>Neu &amp;berechnen</translation>
+    </message>
+    <message>
+        <source>Report and e&amp;xport</source>
+        <translation>Bericht und E&amp;xport</translation>
+    </message>
+    <message>
+        <source>Reading the session...</source>
+        <translation>Sitzung wird gelesen ...</translation>
+    </message>
+    <message>
+        <source>This session could not be read: %1</source>
+        <translation>Diese Sitzung konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>linker Arm</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>rechter Arm</translation>
+    </message>
+    <message>
+        <source>%1: session of %2, %3</source>
+        <translation>%1: Sitzung vom %2, %3</translation>
+    </message>
+    <message>
+        <source>Review: %1, %2</source>
+        <translation>Auswertung: %1, %2</translation>
+    </message>
+    <message>
+        <source>not analysed yet</source>
+        <translation>noch nicht ausgewertet</translation>
+    </message>
+    <message>
+        <source>This session has no analysis yet (it may have been cut short or failed). Open &quot;Re-estimate&quot; to estimate its joint angles from the recording.</source>
+        <translation>Diese Sitzung ist noch nicht ausgewertet (sie wurde vielleicht abgebrochen oder die Auswertung schlug fehl). Öffnen Sie „Neu berechnen“, um ihre Gelenkwinkel aus der Aufnahme zu berechnen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) could not be read.</source>
+        <translation>
+            <numerusform>%n Wiederholung konnte nicht gelesen werden.</numerusform>
+            <numerusform>%n Wiederholungen konnten nicht gelesen werden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No metrics yet.</source>
+        <translation>Noch keine Kennwerte.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Notes typed earlier were not saved; they are back in the Notes tab. Save them or edit them.</source>
+        <translation>Früher eingegebene Notizen wurden nicht gespeichert; sie stehen wieder im Reiter „Notizen“. Speichern oder bearbeiten Sie sie.</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pause</translation>
+    </message>
+    <message>
+        <source>Session %1 has no analysis to compare with. Review it and re-estimate it first.</source>
+        <translation>Sitzung %1 hat keine Auswertung zum Vergleichen. Öffnen Sie sie zuerst und berechnen Sie sie neu.</translation>
+    </message>
+    <message>
+        <source>That session could not be read: %1</source>
+        <translation>Diese Sitzung konnte nicht gelesen werden: %1</translation>
+    </message>
+    <message>
+        <source>Notes saved.</source>
+        <translation>Notizen gespeichert.</translation>
+    </message>
+    <message>
+        <source>The notes could not be saved: %1. They stay here and in a draft; try again.</source>
+        <translation>Die Notizen konnten nicht gespeichert werden: %1. Sie bleiben hier und in einem Entwurf erhalten; versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>Estimating the joint angles again...</source>
+        <translation>Gelenkwinkel werden neu berechnet ...</translation>
+    </message>
+    <message>
+        <source>Re-estimation cancelled; nothing was stored.</source>
+        <translation>Neuberechnung abgebrochen; nichts wurde gespeichert.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>abgebrochen</translation>
+    </message>
+    <message>
+        <source>New estimates stored as version %1.</source>
+        <translation>Neue Berechnung als Version %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>The session could not be estimated again: %1. The earlier estimates are kept.</source>
+        <translation>Die Sitzung konnte nicht neu berechnet werden: %1. Die früheren Ergebnisse bleiben erhalten.</translation>
+    </message>
+    <message>
+        <source>Save the session report</source>
+        <translation>Sitzungsbericht speichern</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>PDF-Dateien (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Folder of the BIDS data set</source>
+        <translation>Ordner des BIDS-Datensatzes</translation>
+    </message>
+    <message>
+        <source>Export as OpenSim motion</source>
+        <translation>Als OpenSim-Bewegung exportieren</translation>
+    </message>
+    <message>
+        <source>OpenSim motion (*.mot)</source>
+        <translation>OpenSim-Bewegung (*.mot)</translation>
+    </message>
+    <message>
+        <source>Export the angles as CSV</source>
+        <translation>Winkel als CSV exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export the recording</source>
+        <translation>Aufnahme exportieren</translation>
+    </message>
+    <message>
+        <source>Recordings (*.csv)</source>
+        <translation>Aufnahmen (*.csv)</translation>
+    </message>
+    <message>
+        <source>the session report</source>
+        <translation>den Sitzungsbericht</translation>
+    </message>
+    <message numerus="yes">
+        <source>Session report written: %1 (%n page(s)).</source>
+        <translation>
+            <numerusform>Sitzungsbericht geschrieben: %1 (%n Seite).</numerusform>
+            <numerusform>Sitzungsbericht geschrieben: %1 (%n Seiten).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the export</source>
+        <translation>den Export</translation>
+    </message>
+    <message>
+        <source>Exported: %1.</source>
+        <translation>Exportiert: %1.</translation>
+    </message>
+    <message>
+        <source>Writing %1...</source>
+        <translation>Schreibe %1 ...</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2. Choose another place and try again.</source>
+        <translation>%1 konnte nicht geschrieben werden: %2. Wählen Sie einen anderen Ort und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>version %1 of %2: %3, method %4</source>
+        <translation>Version %1 von %2: %3, Methode %4</translation>
+    </message>
+    <message>
+        <source>, optical data fused</source>
+        <translation>, optische Daten einbezogen</translation>
+    </message>
+    <message>
+        <source>, no optical data fused</source>
+        <translation>, ohne optische Daten</translation>
+    </message>
+    <message>
+        <source>, calibrated</source>
+        <translation>, kalibriert</translation>
+    </message>
+    <message>
+        <source>Play or pause the replay (%1)</source>
+        <translation>Wiedergabe starten oder anhalten (%1)</translation>
+    </message>
+    <message>
+        <source>%L1×</source>
+        <translation>%L1×</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.</source>
+        <translation>
+            <numerusform>%n Wiederholung bei %1 (%2 vollständig, %3 teilweise). Glattheit: SPARC %4, LDLJ %5.</numerusform>
+            <numerusform>%n Wiederholungen bei %1 (%2 vollständig, %3 teilweise). Glattheit: SPARC %4, LDLJ %5.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SessionSetupPage</name>
+    <message>
+        <source>&amp;Left arm</source>
+        <translation>&amp;Linker Arm</translation>
+    </message>
+    <message>
+        <source>&amp;Right arm</source>
+        <translation>&amp;Rechter Arm</translation>
+    </message>
+    <message>
+        <source>Patient, protocol and arm</source>
+        <translation>Patient, Protokoll und Arm</translation>
+    </message>
+    <message>
+        <source>Choose what this session trains and which arm wears the sensors.</source>
+        <translation>Wählen Sie, was diese Sitzung trainiert und an welchem Arm die Sensoren sitzen.</translation>
+    </message>
+    <message>
+        <source>Patient:</source>
+        <translation>Patient:</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>(no protocol: free movement)</source>
+        <translation>(kein Protokoll: freie Bewegung)</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>Left arm</source>
+        <translation>Linker Arm</translation>
+    </message>
+    <message>
+        <source>Right arm</source>
+        <translation>Rechter Arm</translation>
+    </message>
+    <message>
+        <source>Arm:</source>
+        <translation>Arm:</translation>
+    </message>
+    <message>
+        <source>Reading the patient and the protocols...</source>
+        <translation>Patient und Protokolle werden gelesen ...</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>The patient or the protocols could not be read: %1. Go back and try again.</source>
+        <translation>Der Patient oder die Protokolle konnten nicht gelesen werden: %1. Gehen Sie zurück und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>Note: this protocol is meant for the %1 arm.</source>
+        <translation>Hinweis: Dieses Protokoll ist für den %1 Arm gedacht.</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>linken</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechten</translation>
+    </message>
+    <message numerus="yes">
+        <source>Trains %1, target %L2–%L3°, %n repetition(s).</source>
+        <translation>
+            <numerusform>Trainiert %1, Ziel %L2–%L3°, %n Wiederholung.</numerusform>
+            <numerusform>Trainiert %1, Ziel %L2–%L3°, %n Wiederholungen.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SessionTableModel</name>
+    <message>
+        <source>complete</source>
+        <translation>vollständig</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>unterbrochen</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(keine)</translation>
+    </message>
+    <message>
+        <source>Started</source>
+        <translation>Begonnen</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>IMU samples</source>
+        <translation>IMU-Messwerte</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notizen</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SettingsDialog</name>
+    <message>
+        <source>&amp;Add folder...</source>
+        <translation>Ordner &amp;hinzufügen ...</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Einstellungen</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Anzeige</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>Grad</translation>
+    </message>
+    <message>
+        <source>radians</source>
+        <translation>Radiant</translation>
+    </message>
+    <message>
+        <source>Angle units</source>
+        <translation>Winkeleinheit</translation>
+    </message>
+    <message>
+        <source>Angle &amp;units:</source>
+        <translation>&amp;Winkeleinheit:</translation>
+    </message>
+    <message>
+        <source>as the system</source>
+        <translation>wie das System</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Sprache:</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>hell</translation>
+    </message>
+    <message>
+        <source>dark</source>
+        <translation>dunkel</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>Erscheinungsbild</translation>
+    </message>
+    <message>
+        <source>A&amp;ppearance:</source>
+        <translation>&amp;Erscheinungsbild:</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <source>Data folder</source>
+        <translation>Datenordner</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Durchsuchen ...</translation>
+    </message>
+    <message>
+        <source>Data &amp;folder:</source>
+        <translation>Daten&amp;ordner:</translation>
+    </message>
+    <message>
+        <source>armtrack.db in the data folder</source>
+        <translation>armtrack.db im Datenordner</translation>
+    </message>
+    <message>
+        <source>A file path, sqlite:PATH, or postgresql://user@host:port/dbname</source>
+        <translation>Ein Dateipfad, sqlite:PFAD oder postgresql://benutzer@host:port/dbname</translation>
+    </message>
+    <message>
+        <source>Database</source>
+        <translation>Datenbank</translation>
+    </message>
+    <message>
+        <source>&amp;Database:</source>
+        <translation>&amp;Datenbank:</translation>
+    </message>
+    <message>
+        <source>Device plugin folders (searched before the built-in ones)</source>
+        <translation>Ordner mit Geräte-Plugins (vor den eingebauten durchsucht)</translation>
+    </message>
+    <message>
+        <source>Plugin folders</source>
+        <translation>Plugin-Ordner</translation>
+    </message>
+    <message>
+        <source>Estimation of new sessions</source>
+        <translation>Berechnung neuer Sitzungen</translation>
+    </message>
+    <message>
+        <source>EKF (extended Kalman filter)</source>
+        <translation>EKF (erweitertes Kalman-Filter)</translation>
+    </message>
+    <message>
+        <source>UKF (unscented Kalman filter)</source>
+        <translation>UKF (Unscented-Kalman-Filter)</translation>
+    </message>
+    <message>
+        <source>Default filter</source>
+        <translation>Standardfilter</translation>
+    </message>
+    <message>
+        <source>F&amp;ilter:</source>
+        <translation>F&amp;ilter:</translation>
+    </message>
+    <message>
+        <source>A: body acceleration modelled</source>
+        <translation>A: Körperbeschleunigung modelliert</translation>
+    </message>
+    <message>
+        <source>B: body acceleration as states</source>
+        <translation>B: Körperbeschleunigung als Zustände</translation>
+    </message>
+    <message>
+        <source>C: no compensation</source>
+        <translation>C: ohne Kompensation</translation>
+    </message>
+    <message>
+        <source>Default method</source>
+        <translation>Standardmethode</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Methode:</translation>
+    </message>
+    <message>
+        <source>Plugin folder</source>
+        <translation>Plugin-Ordner</translation>
+    </message>
+    <message>
+        <source>Give the data folder as a full path, e.g. %1.</source>
+        <translation>Geben Sie den Datenordner als vollständigen Pfad an, z. B. %1.</translation>
+    </message>
+    <message>
+        <source>The database location is not one ArmTrack understands: %1</source>
+        <translation>Diesen Speicherort der Datenbank versteht ArmTrack nicht: %1</translation>
+    </message>
+    <message>
+        <source>The plugin folder %1 does not exist.</source>
+        <translation>Der Plugin-Ordner %1 existiert nicht.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SignInScreen</name>
+    <message>
+        <source>&amp;Sign in</source>
+        <translation>&amp;Anmelden</translation>
+    </message>
+    <message>
+        <source>Sign in</source>
+        <translation>Anmelden</translation>
+    </message>
+    <message>
+        <source>Sign in to ArmTrack</source>
+        <translation>Bei ArmTrack anmelden</translation>
+    </message>
+    <message>
+        <source>Records: %1</source>
+        <translation>Akten: %1</translation>
+    </message>
+    <message>
+        <source>Account name</source>
+        <translation>Kontoname</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>Type your account name.</source>
+        <translation>Geben Sie Ihren Kontonamen ein.</translation>
+    </message>
+    <message>
+        <source>Type your password.</source>
+        <translation>Geben Sie Ihr Passwort ein.</translation>
+    </message>
+    <message>
+        <source>Signing in...</source>
+        <translation>Anmeldung läuft ...</translation>
+    </message>
+    <message>
+        <source>Check the name and the password (is Caps Lock on?) and try again. If you have forgotten it, an administrator can set a new one.</source>
+        <translation>Prüfen Sie Namen und Passwort (ist die Feststelltaste aktiv?) und versuchen Sie es erneut. Wenn Sie es vergessen haben, kann ein Administrator ein neues festlegen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wait %n s</source>
+        <translation>
+            <numerusform>Warten: %n s</numerusform>
+            <numerusform>Warten: %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Too many wrong passwords for this account: wait %n s, then try again.</source>
+        <translation>
+            <numerusform>Zu viele falsche Passwörter für dieses Konto: warten Sie %n Sekunde und versuchen Sie es dann erneut.</numerusform>
+            <numerusform>Zu viele falsche Passwörter für dieses Konto: warten Sie %n Sekunden und versuchen Sie es dann erneut.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Wrong user name or password.</source>
+        <translation>Falscher Benutzername oder falsches Passwort.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::reports</name>
+    <message>
+        <source>time (s)</source>
+        <translation>Zeit (s)</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>numbers: repetitions at their peaks (p = partial)</source>
+        <translation>Zahlen: Wiederholungen an ihren Scheitelpunkten (t = teilweise)</translation>
+    </message>
+    <message>
+        <source>angle (deg)</source>
+        <translation>Winkel (°)</translation>
+    </message>
+    <message>
+        <source>date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>not measured in this period</source>
+        <translation>in diesem Zeitraum nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>Page %1</source>
+        <translation>Seite %1</translation>
+    </message>
+    <message>
+        <source>Progress report</source>
+        <translation>Verlaufsbericht</translation>
+    </message>
+    <message>
+        <source>Patient and period</source>
+        <translation>Patient und Zeitraum</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Patient code</source>
+        <translation>Patientenkennung</translation>
+    </message>
+    <message>
+        <source>Date of birth</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Betroffene Seite</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Von</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Bis</translation>
+    </message>
+    <message>
+        <source>Therapist</source>
+        <translation>Therapeut</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sitzungen</translation>
+    </message>
+    <message>
+        <source>Range of motion over time</source>
+        <translation>Bewegungsausmaß im Verlauf</translation>
+    </message>
+    <message>
+        <source>No sessions between %1 and %2.</source>
+        <translation>Keine Sitzungen zwischen %1 und %2.</translation>
+    </message>
+    <message>
+        <source>%1: range of motion (deg)</source>
+        <translation>%1: Bewegungsausmaß (°)</translation>
+    </message>
+    <message>
+        <source>Normal ranges: %1.</source>
+        <translation>Normbereiche: %1.</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Dauer</translation>
+    </message>
+    <message>
+        <source>Reps</source>
+        <translation>Wdh.</translation>
+    </message>
+    <message>
+        <source>%1 ROM</source>
+        <translation>%1 ROM</translation>
+    </message>
+    <message>
+        <source>ROM in degrees (maximum minus minimum over the session).</source>
+        <translation>ROM in Grad (Maximum minus Minimum über die Sitzung).</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 bis %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2), progress %3</source>
+        <translation>%1 (%2), Verlauf %3</translation>
+    </message>
+    <message>
+        <source>progress report</source>
+        <translation>Verlaufsbericht</translation>
+    </message>
+    <message>
+        <source>Progress report: %1, %2</source>
+        <translation>Verlaufsbericht: %1, %2</translation>
+    </message>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Schulterflexion</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Schulterabduktion</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Schulterinnenrotation</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Ellenbogenflexion</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Pronation/Supination</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>links</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>rechts</translation>
+    </message>
+    <message>
+        <source>both</source>
+        <translation>beide</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>either</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>weiblich</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>männlich</translation>
+    </message>
+    <message>
+        <source>diverse</source>
+        <translation>divers</translation>
+    </message>
+    <message>
+        <source>complete</source>
+        <translation>vollständig</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>unterbrochen</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>läuft</translation>
+    </message>
+    <message>
+        <source>%1 %2 UTC</source>
+        <comment>a date and a time of day</comment>
+        <translation>%1, %2 UTC</translation>
+    </message>
+    <message>
+        <source>%1 - %2 - generated %3</source>
+        <translation>%1 – %2 – erstellt am %3</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>(not valid JSON: %1 at offset %2)</source>
+        <translation>(kein gültiges JSON: %1 bei Position %2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>... %n more</source>
+        <translation>
+            <numerusform>... %n weitere</numerusform>
+            <numerusform>... %n weitere</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %2, target %3 to %4 deg, %n repetitions</source>
+        <translation>
+            <numerusform>%1: %2, Ziel %3 bis %4°, %n Wiederholung</numerusform>
+            <numerusform>%1: %2, Ziel %3 bis %4°, %n Wiederholungen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Patient and session</source>
+        <translation>Patient und Sitzung</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Geschlecht</translation>
+    </message>
+    <message>
+        <source>Side measured</source>
+        <translation>Gemessene Seite</translation>
+    </message>
+    <message>
+        <source>Session</source>
+        <translation>Sitzung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnose</translation>
+    </message>
+    <message>
+        <source>Devices and calibration</source>
+        <translation>Geräte und Kalibrierung</translation>
+    </message>
+    <message>
+        <source>Devices</source>
+        <translation>Geräte</translation>
+    </message>
+    <message>
+        <source>No devices were recorded for this session.</source>
+        <translation>Für diese Sitzung wurden keine Geräte gespeichert.</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Kalibrierung</translation>
+    </message>
+    <message>
+        <source>No calibration was recorded for this session.</source>
+        <translation>Für diese Sitzung wurde keine Kalibrierung gespeichert.</translation>
+    </message>
+    <message>
+        <source>%1 not defined</source>
+        <translation>%1 nicht definiert</translation>
+    </message>
+    <message>
+        <source>Metrics per clinical angle</source>
+        <translation>Kennwerte je klinischem Winkel</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Min (deg)</source>
+        <translation>Min. (°)</translation>
+    </message>
+    <message>
+        <source>Max (deg)</source>
+        <translation>Max. (°)</translation>
+    </message>
+    <message>
+        <source>ROM (deg)</source>
+        <translation>ROM (°)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (deg/s)</source>
+        <translation>Spitzengeschwindigkeit (°/s)</translation>
+    </message>
+    <message>
+        <source>Mean velocity (deg/s)</source>
+        <translation>Mittlere Geschwindigkeit (°/s)</translation>
+    </message>
+    <message>
+        <source>Moving time (s)</source>
+        <translation>Bewegungszeit (s)</translation>
+    </message>
+    <message>
+        <source>Joint angles over time</source>
+        <translation>Gelenkwinkel im Zeitverlauf</translation>
+    </message>
+    <message>
+        <source>shaded: protocol target %1 to %2 deg</source>
+        <translation>schattiert: Ziel des Protokolls %1 bis %2°</translation>
+    </message>
+    <message>
+        <source>%1 (deg)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>p</source>
+        <comment>a partial repetition&apos;s mark on the plot</comment>
+        <translation>t</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>No repetitions were detected (0 repetitions).</source>
+        <translation>Es wurden keine Wiederholungen erkannt (0 Wiederholungen).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetitions counted on %1: %2 full, %3 partial (judged against a reference range of %4 deg); %5 cut by the start or end of the recording and not counted.</source>
+        <translation>
+            <numerusform>%n Wiederholung bei %1 gezählt: %2 vollständig, %3 teilweise (beurteilt an einem Referenzbereich von %4°); %5 vom Beginn oder Ende der Aufnahme abgeschnitten und nicht gezählt.</numerusform>
+            <numerusform>%n Wiederholungen bei %1 gezählt: %2 vollständig, %3 teilweise (beurteilt an einem Referenzbereich von %4°); %5 vom Beginn oder Ende der Aufnahme abgeschnitten und nicht gezählt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>Nr.</translation>
+    </message>
+    <message>
+        <source>Start (s)</source>
+        <translation>Beginn (s)</translation>
+    </message>
+    <message>
+        <source>End (s)</source>
+        <translation>Ende (s)</translation>
+    </message>
+    <message>
+        <source>ROM of %1 (deg)</source>
+        <translation>ROM %1 (°)</translation>
+    </message>
+    <message>
+        <source>Partial</source>
+        <translation>Teilweise</translation>
+    </message>
+    <message>
+        <source>Comparison with normative ranges</source>
+        <translation>Vergleich mit Normbereichen</translation>
+    </message>
+    <message>
+        <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
+        <translation>Grau: das normale aktive Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Quelle: %1. Für die Schulteradduktion nennt diese Quelle keinen Normwert; ihr Bereich wird ab 0 gezeigt.</translation>
+    </message>
+    <message>
+        <source>Comparison with earlier sessions</source>
+        <translation>Vergleich mit früheren Sitzungen</translation>
+    </message>
+    <message>
+        <source>Range of motion (deg) of each angle per session.</source>
+        <translation>Bewegungsausmaß (°) jedes Winkels je Sitzung.</translation>
+    </message>
+    <message>
+        <source>%1 this session</source>
+        <translation>%1 diese Sitzung</translation>
+    </message>
+    <message>
+        <source>Change since last</source>
+        <translation>Veränderung seit der letzten</translation>
+    </message>
+    <message>
+        <source>Other side, %1</source>
+        <translation>Andere Seite, %1</translation>
+    </message>
+    <message>
+        <source>No earlier sessions to compare with.</source>
+        <translation>Keine früheren Sitzungen zum Vergleich.</translation>
+    </message>
+    <message>
+        <source>Therapist&apos;s notes</source>
+        <translation>Notizen des Therapeuten</translation>
+    </message>
+    <message>
+        <source>No notes.</source>
+        <translation>Keine Notizen.</translation>
+    </message>
+    <message>
+        <source>%1 (%2), session of %3</source>
+        <translation>%1 (%2), Sitzung vom %3</translation>
+    </message>
+    <message>
+        <source>session report</source>
+        <translation>Sitzungsbericht</translation>
+    </message>
+    <message>
+        <source>Session report: %1, %2</source>
+        <translation>Sitzungsbericht: %1, %2</translation>
+    </message>
+    <message>
+        <source>Session report</source>
+        <translation>Sitzungsbericht</translation>
+    </message>
+    <message>
+        <source>shaded: AAOS normal range of motion, 0-%1 deg</source>
+        <translation>schattiert: normales Bewegungsausmaß nach AAOS, 0–%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 samples used, %2 rows rejected (not finite), %3 gaps. Smoothness of the wrist path: %4, %5.</source>
+        <translation>%1 Messwerte verwendet, %2 Zeilen verworfen (nicht endlich), %3 Lücken. Glattheit der Handgelenksbahn: %4, %5.</translation>
+    </message>
+    <message>
+        <source>ROM %1 of %2 deg (%3 %)</source>
+        <translation>ROM %1 von %2° (%3 %)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleChart</name>
+    <message>
+        <source>Plot of %1 over time in degrees; the table beside it holds the same numbers</source>
+        <translation>Verlauf von %1 in Grad; die Tabelle daneben enthält dieselben Zahlen</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Compared session</source>
+        <translation>Vergleichssitzung</translation>
+    </message>
+    <message>
+        <source>%1 (°)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>±2σ</source>
+        <translation>±2σ</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AnglePlotPanel</name>
+    <message>
+        <source>Joint angle plots</source>
+        <translation>Gelenkwinkel-Diagramme</translation>
+    </message>
+    <message>
+        <source>Joint angles table</source>
+        <translation>Tabelle der Gelenkwinkel</translation>
+    </message>
+    <message>
+        <source>The current value of each angle, its uncertainty, the range over the plotted time and the target</source>
+        <translation>Der aktuelle Wert jedes Winkels, seine Unsicherheit, der Bereich über die gezeigte Zeit und das Ziel</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleReadouts</name>
+    <message>
+        <source>Current joint angles</source>
+        <translation>Aktuelle Gelenkwinkel</translation>
+    </message>
+    <message>
+        <source>uncertain (%1)</source>
+        <translation>unsicher (%1)</translation>
+    </message>
+    <message>
+        <source>uncertain</source>
+        <translation>unsicher</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleTableModel</name>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Jetzt</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max.</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>±2σ</source>
+        <translation>±2σ</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::Angles</name>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Schulterflexion</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Schulterabduktion</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Schulterinnenrotation</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Ellenbogenflexion</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Pronation/Supination</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::ArmView</name>
+    <message>
+        <source>3D view of the arm</source>
+        <translation>3D-Ansicht des Arms</translation>
+    </message>
+    <message>
+        <source>The estimated arm with its sensors. Arrow keys turn the view, plus and minus zoom, Home resets the view.</source>
+        <translation>Der berechnete Arm mit seinen Sensoren. Pfeiltasten drehen die Ansicht, Plus und Minus zoomen, Pos1 setzt die Ansicht zurück.</translation>
+    </message>
+    <message>
+        <source>Drag to turn the view, scroll to zoom; Home resets it</source>
+        <translation>Ziehen dreht die Ansicht, Scrollen zoomt; Pos1 setzt sie zurück</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Ansicht zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Left arm</source>
+        <translation>Linker Arm</translation>
+    </message>
+    <message>
+        <source>Right arm</source>
+        <translation>Rechter Arm</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceHealthModel</name>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Stream</source>
+        <translation>Datenstrom</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Rate</translation>
+    </message>
+    <message>
+        <source>Lost</source>
+        <translation>Verloren</translation>
+    </message>
+    <message>
+        <source>Rejected</source>
+        <translation>Verworfen</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>Warnung</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>ausgefallen</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>inaktiv</translation>
+    </message>
+    <message>
+        <source>%L1 Hz</source>
+        <translation>%L1 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceHealthPanel</name>
+    <message>
+        <source>Device health</source>
+        <translation>Gerätezustand</translation>
+    </message>
+    <message>
+        <source>Device health summary</source>
+        <translation>Zusammenfassung des Gerätezustands</translation>
+    </message>
+    <message>
+        <source>Devices and streams</source>
+        <translation>Geräte und Datenströme</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceOptionsForm</name>
+    <message>
+        <source>Device options</source>
+        <translation>Geräteoptionen</translation>
+    </message>
+    <message>
+        <source>(not set)</source>
+        <translation>(nicht gesetzt)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::HealthTracker</name>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation>Fehler: %1</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>verbindet neu</translation>
+    </message>
+    <message>
+        <source>reconnecting: %1</source>
+        <translation>verbindet neu: %1</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <source>no data for %L1 s</source>
+        <translation>seit %L1 s keine Daten</translation>
+    </message>
+    <message>
+        <source>waiting for data</source>
+        <translation>wartet auf Daten</translation>
+    </message>
+    <message>
+        <source>streaming, losing samples</source>
+        <translation>sendet, verliert Messwerte</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>sendet</translation>
+    </message>
+    <message>
+        <source>No devices</source>
+        <translation>Keine Geräte</translation>
+    </message>
+    <message>
+        <source>All devices are streaming</source>
+        <translation>Alle Geräte senden</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::RepetitionCounterWidget</name>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Repetitions done of the target</source>
+        <translation>Erledigte Wiederholungen vom Ziel</translation>
+    </message>
+    <message>
+        <source>Repetitions (%1)</source>
+        <translation>Wiederholungen (%1)</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 von %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n partial</source>
+        <translation>
+            <numerusform>%n teilweise</numerusform>
+            <numerusform>%n teilweise</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>in Bewegung</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>Ziel erreicht</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::VtkBridge</name>
+    <message>
+        <source>OpenGL is not available, so the 3D view cannot be shown.</source>
+        <translation>OpenGL ist nicht verfügbar, daher kann die 3D-Ansicht nicht gezeigt werden.</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
+        <translation>Die 3D-Ansicht braucht OpenGL 3.2; diese Anzeige bietet %1.%2.</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,3097 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="es" sourcelanguage="en">
+<context>
+    <name>armtrack::app::gui::CalibrationGuide</name>
+    <message>
+        <source>Arm forward</source>
+        <translation>Brazo hacia delante</translation>
+    </message>
+    <message>
+        <source>Raise the arm forward to shoulder height, elbow almost straight.</source>
+        <translation>Elevar el brazo hacia delante hasta la altura del hombro, con el codo casi extendido.</translation>
+    </message>
+    <message>
+        <source>Arm to the side</source>
+        <translation>Brazo al lado</translation>
+    </message>
+    <message>
+        <source>Lift the arm out to the side, about 60 degrees, elbow almost straight.</source>
+        <translation>Separar el brazo hacia el lado unos 60 grados, con el codo casi extendido.</translation>
+    </message>
+    <message>
+        <source>Hand across</source>
+        <translation>Mano cruzada</translation>
+    </message>
+    <message>
+        <source>Bring the hand across the body, elbow at a right angle, palm down.</source>
+        <translation>Llevar la mano por delante del cuerpo hacia el otro lado, con el codo en ángulo recto y la palma hacia abajo.</translation>
+    </message>
+    <message>
+        <source>Hand out</source>
+        <translation>Mano hacia fuera</translation>
+    </message>
+    <message>
+        <source>Take the hand out to the side, elbow bent, palm up.</source>
+        <translation>Llevar la mano hacia fuera, al lado, con el codo flexionado y la palma hacia arriba.</translation>
+    </message>
+    <message>
+        <source>Sit upright. Let the upper arm hang at the side, bend the elbow to a right angle, forearm pointing straight forward, thumb up. Keep still.</source>
+        <translation>Siéntese erguido. Deje colgar el brazo junto al cuerpo, flexione el codo en ángulo recto con el antebrazo apuntando al frente y el pulgar hacia arriba. Quédese quieto.</translation>
+    </message>
+    <message>
+        <source>Hold still.</source>
+        <translation>Quédese quieto.</translation>
+    </message>
+    <message>
+        <source>Start pose</source>
+        <translation>Posición inicial</translation>
+    </message>
+    <message>
+        <source>Elbow bends</source>
+        <translation>Flexiones de codo</translation>
+    </message>
+    <message>
+        <source>Bend and straighten the elbow four times, turning the palm down while straightening and up while bending.</source>
+        <translation>Flexionar y extender el codo cuatro veces, girando la palma hacia abajo al extender y hacia arriba al flexionar.</translation>
+    </message>
+    <message>
+        <source>Shoulder rotation</source>
+        <translation>Rotación de hombro</translation>
+    </message>
+    <message>
+        <source>Elbow at a right angle: swing the hand in to the belly and out, three times.</source>
+        <translation>Con el codo en ángulo recto, llevar la mano hacia el abdomen y hacia fuera, tres veces.</translation>
+    </message>
+    <message>
+        <source>Reach and mouth</source>
+        <translation>Alcanzar y a la boca</translation>
+    </message>
+    <message>
+        <source>Reach forward and up, then bring the hand to the mouth; three times.</source>
+        <translation>Alcanzar hacia delante y arriba y luego llevar la mano a la boca; tres veces.</translation>
+    </message>
+    <message>
+        <source>Arm out and across</source>
+        <translation>Brazo fuera y cruzado</translation>
+    </message>
+    <message>
+        <source>Lift the arm out to the side, then bring it back across; three times.</source>
+        <translation>Separar el brazo hacia el lado y luego cruzarlo por delante del cuerpo; tres veces.</translation>
+    </message>
+    <message>
+        <source>Back to the start pose</source>
+        <translation>Volver a la posición inicial</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::CameraCalibrationPage</name>
+    <message>
+        <source>Camera calibration</source>
+        <translation>Calibración de la cámara</translation>
+    </message>
+    <message>
+        <source>Starting the camera…</source>
+        <translation>Iniciando la cámara…</translation>
+    </message>
+    <message>
+        <source>Camera picture</source>
+        <translation>Imagen de la cámara</translation>
+    </message>
+    <message>
+        <source>Hold the printed chessboard (%1 x %2 inner corners) in front of the camera. Capture views with the board in every part of the picture, near and far, tilted a little.</source>
+        <translation>Sostenga el tablero de ajedrez impreso (%1 × %2 esquinas interiores) delante de la cámara. Capture vistas con el tablero en todas las zonas de la imagen, cerca y lejos, ligeramente inclinado.</translation>
+    </message>
+    <message>
+        <source>Capture &amp;automatically when the board covers new ground</source>
+        <translation>Capturar &amp;automáticamente cuando el tablero cubra zonas nuevas</translation>
+    </message>
+    <message>
+        <source>&amp;Capture view</source>
+        <translation>&amp;Capturar vista</translation>
+    </message>
+    <message>
+        <source>Ca&amp;librate</source>
+        <translation>Ca&amp;librar</translation>
+    </message>
+    <message>
+        <source>&amp;Start over</source>
+        <translation>&amp;Empezar de nuevo</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Cobertura</translation>
+    </message>
+    <message>
+        <source>Camera calibration verdict</source>
+        <translation>Resultado de la calibración de la cámara</translation>
+    </message>
+    <message>
+        <source>Check that the camera is plugged in and not used by another program.</source>
+        <translation>Compruebe que la cámara está conectada y que ningún otro programa la está usando.</translation>
+    </message>
+    <message>
+        <source>Could not calibrate: %1</source>
+        <translation>No se pudo calibrar: %1</translation>
+    </message>
+    <message>
+        <source>Good.</source>
+        <translation>Buena.</translation>
+    </message>
+    <message>
+        <source>Usable; more views, sharper and better lit, would improve it.</source>
+        <translation>Aceptable; más vistas, más nítidas y mejor iluminadas, la mejorarían.</translation>
+    </message>
+    <message>
+        <source>Poor: capture the views again, holding the board still and flat.</source>
+        <translation>Deficiente: capture de nuevo las vistas sosteniendo el tablero quieto y plano.</translation>
+    </message>
+    <message>
+        <source>The boards covered only %1 % of the picture; views near the edges help most.</source>
+        <translation>Los tableros cubrieron solo el %1 % de la imagen; las vistas cerca de los bordes son las que más ayudan.</translation>
+    </message>
+    <message>
+        <source>Capture at least 4 views first (%1 so far); 10 or more spread over the picture give a good calibration.</source>
+        <translation>Capture primero al menos 4 vistas (hasta ahora %1); 10 o más repartidas por la imagen dan una buena calibración.</translation>
+    </message>
+    <message>
+        <source>Calibrating…</source>
+        <translation>Calibrando…</translation>
+    </message>
+    <message>
+        <source>%1 views kept; the boards cover %2 % of the picture.</source>
+        <translation>%1 vistas guardadas; los tableros cubren el %2 % de la imagen.</translation>
+    </message>
+    <message>
+        <source>Reprojection error %L1 px over %2 views; fx %L3, fy %L4 px.</source>
+        <translation>Error de reproyección de %L1 px en %2 vistas; fx %L3, fy %L4 px.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::CameraCalibrationWorker</name>
+    <message>
+        <source>No picture from the camera.</source>
+        <translation>La cámara no da imagen.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::DevicesPage</name>
+    <message>
+        <source>Devices</source>
+        <translation>Dispositivos</translation>
+    </message>
+    <message>
+        <source>&amp;Devices found (tick the ones to use):</source>
+        <translation>&amp;Dispositivos encontrados (marque los que va a usar):</translation>
+    </message>
+    <message>
+        <source>Device plugins</source>
+        <translation>Complementos de dispositivos</translation>
+    </message>
+    <message>
+        <source>Not loaded: %1</source>
+        <translation>No cargados: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Check connection</source>
+        <translation>&amp;Comprobar conexión</translation>
+    </message>
+    <message>
+        <source>Check connection</source>
+        <translation>Comprobar conexión</translation>
+    </message>
+    <message>
+        <source>Choose the devices, then check their connection.</source>
+        <translation>Elija los dispositivos y después compruebe su conexión.</translation>
+    </message>
+    <message>
+        <source>Connection check</source>
+        <translation>Comprobación de la conexión</translation>
+    </message>
+    <message>
+        <source>The devices could not start: %1</source>
+        <translation>Los dispositivos no pudieron arrancar: %1</translation>
+    </message>
+    <message>
+        <source>Not found: %1. Check the plugin folders in the settings.</source>
+        <translation>No encontrados: %1. Revise las carpetas de complementos en los ajustes.</translation>
+    </message>
+    <message>
+        <source>Tick at least one device first.</source>
+        <translation>Marque primero al menos un dispositivo.</translation>
+    </message>
+    <message>
+        <source>Stop &amp;check</source>
+        <translation>Detener la &amp;comprobación</translation>
+    </message>
+    <message>
+        <source>Starting the devices…</source>
+        <translation>Iniciando los dispositivos…</translation>
+    </message>
+    <message>
+        <source>Connected: %1.</source>
+        <translation>Conectado: %1.</translation>
+    </message>
+    <message>
+        <source>Receiving from every device…</source>
+        <translation>Recibiendo de todos los dispositivos…</translation>
+    </message>
+    <message>
+        <source>Not every device is streaming: %1. Check that each is switched on, charged and within range, then check again.</source>
+        <translation>No todos los dispositivos transmiten: %1. Compruebe que cada uno está encendido, cargado y dentro del alcance, y vuelva a comprobar.</translation>
+    </message>
+    <message>
+        <source>Check stopped.</source>
+        <translation>Comprobación detenida.</translation>
+    </message>
+    <message>
+        <source>%1 %2 %L3 Hz</source>
+        <translation>%1 %2 %L3 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::LiveSessionScreen</name>
+    <message>
+        <source>Live session</source>
+        <translation>Sesión en directo</translation>
+    </message>
+    <message>
+        <source>%1. The session goes on with the other sensors; check the device (power, cable or distance).</source>
+        <translation>%1. La sesión continúa con los demás sensores; revise el dispositivo (alimentación, cable o distancia).</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>brazo derecho</translation>
+    </message>
+    <message>
+        <source>Live session, %1</source>
+        <translation>Sesión en directo, %1</translation>
+    </message>
+    <message>
+        <source>%1 — %2</source>
+        <translation>%1 — %2</translation>
+    </message>
+    <message>
+        <source>Session status</source>
+        <translation>Estado de la sesión</translation>
+    </message>
+    <message>
+        <source>&amp;Record</source>
+        <translation>&amp;Grabar</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <source>S&amp;top</source>
+        <translation>&amp;Detener</translation>
+    </message>
+    <message>
+        <source>Pain</source>
+        <translation>Dolor</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Descanso</translation>
+    </message>
+    <message>
+        <source>Fatigue</source>
+        <translation>Fatiga</translation>
+    </message>
+    <message>
+        <source>Compensation</source>
+        <translation>Compensación</translation>
+    </message>
+    <message>
+        <source>Note</source>
+        <translation>Nota</translation>
+    </message>
+    <message>
+        <source>Event label</source>
+        <translation>Etiqueta del evento</translation>
+    </message>
+    <message>
+        <source>&amp;Mark event</source>
+        <translation>&amp;Marcar evento</translation>
+    </message>
+    <message>
+        <source>Problem</source>
+        <translation>Problema</translation>
+    </message>
+    <message>
+        <source>Try &amp;again</source>
+        <translation>&amp;Reintentar</translation>
+    </message>
+    <message>
+        <source>Session messages</source>
+        <translation>Mensajes de la sesión</translation>
+    </message>
+    <message>
+        <source>Could not start the session: %1</source>
+        <translation>No se pudo iniciar la sesión: %1</translation>
+    </message>
+    <message>
+        <source>Session started</source>
+        <translation>Sesión iniciada</translation>
+    </message>
+    <message>
+        <source>Recording to %1</source>
+        <translation>Grabando en %1</translation>
+    </message>
+    <message>
+        <source>Events: %1</source>
+        <translation>Eventos: %1</translation>
+    </message>
+    <message>
+        <source>Last recording problem: %1</source>
+        <translation>Último problema de grabación: %1</translation>
+    </message>
+    <message>
+        <source>Session ended; nothing was recorded.</source>
+        <translation>Sesión terminada; no se grabó nada.</translation>
+    </message>
+    <message>
+        <source>Event</source>
+        <translation>Evento</translation>
+    </message>
+    <message>
+        <source>Recording stopped: %1</source>
+        <translation>Grabación detenida: %1</translation>
+    </message>
+    <message>
+        <source>This session is not recorded</source>
+        <translation>Esta sesión no se graba</translation>
+    </message>
+    <message>
+        <source>Not started</source>
+        <translation>Sin iniciar</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Iniciando…</translation>
+    </message>
+    <message>
+        <source>Live %1 (not recording)</source>
+        <translation>En directo %1 (sin grabar)</translation>
+    </message>
+    <message>
+        <source>● Recording %1</source>
+        <translation>● Grabando %1</translation>
+    </message>
+    <message>
+        <source>Paused (%1 recorded)</source>
+        <translation>En pausa (%1 grabado)</translation>
+    </message>
+    <message>
+        <source>Stopping…</source>
+        <translation>Deteniendo…</translation>
+    </message>
+    <message>
+        <source>Ended</source>
+        <translation>Terminada</translation>
+    </message>
+    <message>
+        <source>Not running</source>
+        <translation>Detenida</translation>
+    </message>
+    <message>
+        <source>Live session: %1</source>
+        <translation>Sesión en directo: %1</translation>
+    </message>
+    <message>
+        <source>Pause recording; the live view goes on (%1)</source>
+        <translation>Pausar la grabación; la vista en directo continúa (%1)</translation>
+    </message>
+    <message>
+        <source>End the session (%1)</source>
+        <translation>Terminar la sesión (%1)</translation>
+    </message>
+    <message>
+        <source>Mark the chosen event at the current time (%1)</source>
+        <translation>Marcar el evento elegido en el momento actual (%1)</translation>
+    </message>
+    <message>
+        <source>Recording resumed at %L1 s</source>
+        <translation>Grabación reanudada a los %L1 s</translation>
+    </message>
+    <message>
+        <source>Recording paused at %L1 s</source>
+        <translation>Grabación en pausa a los %L1 s</translation>
+    </message>
+    <message>
+        <source>%1 marked at %L2 s</source>
+        <translation>%1 marcado a los %L2 s</translation>
+    </message>
+    <message>
+        <source>Start or resume recording to %1 (%2)</source>
+        <translation>Iniciar o reanudar la grabación en %1 (%2)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::RecordingTarget</name>
+    <message>
+        <source>a recording with this name exists; choose another name</source>
+        <translation>ya existe una grabación con este nombre; elija otro nombre</translation>
+    </message>
+    <message>
+        <source>the records of patient %1</source>
+        <translation>el historial del paciente %1</translation>
+    </message>
+    <message>
+        <source>cannot record into the records: %1</source>
+        <translation>no se puede grabar en los registros clínicos: %1</translation>
+    </message>
+    <message>
+        <source>%L1 rows recorded in %2</source>
+        <translation>%L1 filas grabadas en %2</translation>
+    </message>
+    <message>
+        <source>%L1 rows recorded in %2; some rows could not be written</source>
+        <translation>%L1 filas grabadas en %2; algunas filas no se pudieron escribir</translation>
+    </message>
+    <message>
+        <source>session %1: %L2 rows recorded, but it could not be closed: %3</source>
+        <translation>sesión %1: %L2 filas grabadas, pero no se pudo cerrar: %3</translation>
+    </message>
+    <message>
+        <source>session %1 saved in the records: %L2 rows</source>
+        <translation>sesión %1 guardada en los registros clínicos: %L2 filas</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::SensorCalibrationPage</name>
+    <message>
+        <source>upper-arm gyroscope</source>
+        <translation>giroscopio del brazo</translation>
+    </message>
+    <message>
+        <source>upper-arm accelerometer</source>
+        <translation>acelerómetro del brazo</translation>
+    </message>
+    <message>
+        <source>forearm gyroscope</source>
+        <translation>giroscopio del antebrazo</translation>
+    </message>
+    <message>
+        <source>forearm accelerometer</source>
+        <translation>acelerómetro del antebrazo</translation>
+    </message>
+    <message>
+        <source>optical positions</source>
+        <translation>posiciones ópticas</translation>
+    </message>
+    <message>
+        <source>Sensor calibration</source>
+        <translation>Calibración de los sensores</translation>
+    </message>
+    <message>
+        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions for about a minute (docs/calibration.md).</source>
+        <translation>El paciente está sentado erguido con los dos sensores colocados. Pulse «Iniciar» y siga las instrucciones durante un minuto aproximadamente (docs/calibration.md).</translation>
+    </message>
+    <message>
+        <source>Instruction</source>
+        <translation>Instrucción</translation>
+    </message>
+    <message>
+        <source>Time left in this step</source>
+        <translation>Tiempo restante de este paso</translation>
+    </message>
+    <message>
+        <source>Protocol progress</source>
+        <translation>Progreso del protocolo</translation>
+    </message>
+    <message>
+        <source>&amp;Start</source>
+        <translation>&amp;Iniciar</translation>
+    </message>
+    <message>
+        <source>C&amp;ancel</source>
+        <translation>C&amp;ancelar</translation>
+    </message>
+    <message>
+        <source>Calibration verdict</source>
+        <translation>Resultado de la calibración</translation>
+    </message>
+    <message>
+        <source>Calibration details</source>
+        <translation>Detalles de la calibración</translation>
+    </message>
+    <message>
+        <source>The devices could not start: %1</source>
+        <translation>Los dispositivos no pudieron arrancar: %1</translation>
+    </message>
+    <message>
+        <source>The protocol could not be recorded: %1</source>
+        <translation>No se pudo grabar el protocolo: %1</translation>
+    </message>
+    <message>
+        <source>no data arrived</source>
+        <translation>no llegaron datos</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>&amp;Repetir</translation>
+    </message>
+    <message>
+        <source>Starting the sensors…</source>
+        <translation>Iniciando los sensores…</translation>
+    </message>
+    <message>
+        <source>Recorded</source>
+        <translation>Grabado</translation>
+    </message>
+    <message>
+        <source>The patient can relax.</source>
+        <translation>El paciente puede relajarse.</translation>
+    </message>
+    <message>
+        <source>Calibrating…</source>
+        <translation>Calibrando…</translation>
+    </message>
+    <message>
+        <source>Fitting the sensors&apos; mounting to the recording (this takes a few seconds).</source>
+        <translation>Ajustando la colocación de los sensores a la grabación (tarda unos segundos).</translation>
+    </message>
+    <message>
+        <source>The calibration failed: %1. Redo the protocol.</source>
+        <translation>La calibración ha fallado: %1. Repita el protocolo.</translation>
+    </message>
+    <message>
+        <source>Upper-arm strap angle %1 deg, forearm strap angle %2 deg; residuals (noise levels): upper gyro %3, upper acc %4, forearm gyro %5, forearm acc %6, optical %7; %8 iterations.</source>
+        <translation>Ángulo de la correa del brazo %1°, ángulo de la correa del antebrazo %2°; residuos (niveles de ruido): giro brazo %3, acel. brazo %4, giro antebrazo %5, acel. antebrazo %6, óptico %7; %8 iteraciones.</translation>
+    </message>
+    <message>
+        <source>Calibration done</source>
+        <translation>Calibración terminada</translation>
+    </message>
+    <message>
+        <source>Cancelled. Press Start to begin the protocol again.</source>
+        <translation>Cancelado. Pulse «Iniciar» para empezar de nuevo el protocolo.</translation>
+    </message>
+    <message>
+        <source>The fit did not settle. Check that both sensors are strapped tight, then redo the protocol.</source>
+        <translation>El ajuste no convergió. Compruebe que los dos sensores están bien sujetos y repita el protocolo.</translation>
+    </message>
+    <message>
+        <source>The movements do not fit the arm model well (%1 off by %2 noise levels). Check the straps and the start pose, then redo the protocol.</source>
+        <translation>Los movimientos no encajan bien con el modelo del brazo (%1 se desvía %2 niveles de ruido). Revise las correas y la posición inicial y repita el protocolo.</translation>
+    </message>
+    <message>
+        <source>Usable, not perfect (worst: %1 at %2 noise levels).</source>
+        <translation>Aceptable, no perfecta (lo peor: %1 con %2 niveles de ruido).</translation>
+    </message>
+    <message>
+        <source>Redo the protocol for a better one.</source>
+        <translation>Repita el protocolo para obtener una mejor.</translation>
+    </message>
+    <message>
+        <source>Good: the data fit the arm model to the sensors&apos; noise level (worst: %1 at %2).</source>
+        <translation>Buena: los datos encajan con el modelo del brazo hasta el nivel de ruido de los sensores (lo peor: %1 con %2).</translation>
+    </message>
+    <message numerus="yes">
+        <source>Hold still: %n s</source>
+        <translation>
+            <numerusform>Quieto: %n s</numerusform>
+            <numerusform>Quieto: %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Move: %n s</source>
+        <translation>
+            <numerusform>Mover: %n s</numerusform>
+            <numerusform>Mover: %n s</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::app::gui::SessionController</name>
+    <message>
+        <source>a session is already running; stop it first</source>
+        <translation>ya hay una sesión en curso; deténgala primero</translation>
+    </message>
+    <message>
+        <source>no device chosen: choose at least one device</source>
+        <translation>no se ha elegido ningún dispositivo: elija al menos uno</translation>
+    </message>
+    <message>
+        <source>no device plugin &quot;%1&quot;; found: %2. Check the plugin folders in the settings.</source>
+        <translation>no hay ningún complemento de dispositivo «%1»; encontrados: %2. Revise las carpetas de complementos en los ajustes.</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>the session could not start: %1</source>
+        <translation>la sesión no pudo iniciarse: %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::AppController</name>
+    <message>
+        <source>Preparing the demo</source>
+        <translation>Preparando la demostración</translation>
+    </message>
+    <message>
+        <source>Making demo records in %1: three patients, two protocols and six weeks of sessions, simulated and analysed the way real ones are. This takes a few seconds.</source>
+        <translation>Creando registros de demostración en %1: tres pacientes, dos protocolos y seis semanas de sesiones, simuladas y analizadas como las reales. Tarda unos segundos.</translation>
+    </message>
+    <message>
+        <source>Signing in as the demo therapist...</source>
+        <translation>Entrando como terapeuta de demostración...</translation>
+    </message>
+    <message>
+        <source>%1 (%2, demo)</source>
+        <translation>%1 (%2, demostración)</translation>
+    </message>
+    <message>
+        <source>Demo records: accounts &quot;%1&quot; and &quot;%2&quot;, password &quot;%3&quot;.</source>
+        <translation>Registros de demostración: cuentas «%1» y «%2», contraseña «%3».</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>&amp;Cancelar</translation>
+    </message>
+    <message>
+        <source>Settings saved.</source>
+        <translation>Ajustes guardados.</translation>
+    </message>
+    <message>
+        <source>The new records location is used at the next sign-in.</source>
+        <translation>La nueva ubicación de los registros se usará en el próximo acceso.</translation>
+    </message>
+    <message>
+        <source>Opening the records</source>
+        <translation>Abriendo los registros clínicos</translation>
+    </message>
+    <message>
+        <source>Opening %1...</source>
+        <translation>Abriendo %1...</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Analysing the session</source>
+        <translation>Analizando la sesión</translation>
+    </message>
+    <message>
+        <source>Estimating the joint angles of session %1 again from its recording and computing its metrics...</source>
+        <translation>Recalculando los ángulos articulares de la sesión %1 a partir de su grabación y calculando sus métricas...</translation>
+    </message>
+    <message>
+        <source>Session %1 is saved, but it could not be analysed: %2
+You can re-estimate it from its review.</source>
+        <translation>La sesión %1 está guardada, pero no se pudo analizar: %2
+Puede recalcularla desde su revisión.</translation>
+    </message>
+    <message>
+        <source>&amp;Review session</source>
+        <translation>&amp;Revisar la sesión</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the patient</source>
+        <translation>&amp;Volver al paciente</translation>
+    </message>
+    <message>
+        <source>&amp;Skip the analysis</source>
+        <translation>&amp;Omitir el análisis</translation>
+    </message>
+    <message>
+        <source>Home exercises</source>
+        <translation>Ejercicios en casa</translation>
+    </message>
+    <message>
+        <source>This is a home account. The guided home exercises it opens arrive in a later version of ArmTrack. Until then, your therapist records your sessions at the clinic.</source>
+        <translation>Esta es una cuenta para casa. Los ejercicios guiados en casa que abre llegarán en una versión posterior de ArmTrack. Hasta entonces, su terapeuta graba sus sesiones en la consulta.</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Salir de la cuenta</translation>
+    </message>
+    <message>
+        <source>Back the file up, then bring it up to date with: armtrack-cli db migrate</source>
+        <translation>Haga una copia de seguridad del archivo y actualícelo después con: armtrack-cli db migrate</translation>
+    </message>
+    <message>
+        <source>Install the newer ArmTrack that wrote it.</source>
+        <translation>Instale la versión más reciente de ArmTrack que lo escribió.</translation>
+    </message>
+    <message>
+        <source>The file was left untouched. Restore it from a backup, or choose another database in the settings.</source>
+        <translation>El archivo no se ha tocado. Restáurelo desde una copia de seguridad o elija otra base de datos en los ajustes.</translation>
+    </message>
+    <message>
+        <source>Check the location in the settings (or --db) and that you may read and write it, then try again.</source>
+        <translation>Compruebe la ubicación en los ajustes (o --db) y que tiene permiso de lectura y escritura, y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>The records cannot be opened</source>
+        <translation>No se pueden abrir los registros clínicos</translation>
+    </message>
+    <message>
+        <source>&amp;Try again</source>
+        <translation>&amp;Reintentar</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>administrator</source>
+        <translation>administrador</translation>
+    </message>
+    <message>
+        <source>therapist</source>
+        <translation>terapeuta</translation>
+    </message>
+    <message>
+        <source>home account</source>
+        <translation>cuenta para casa</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::FirstRunScreen</name>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Examinar...</translation>
+    </message>
+    <message>
+        <source>&amp;Create and sign in</source>
+        <translation>&amp;Crear y entrar</translation>
+    </message>
+    <message>
+        <source>First start</source>
+        <translation>Primer inicio</translation>
+    </message>
+    <message>
+        <source>Welcome to ArmTrack</source>
+        <translation>Bienvenido a ArmTrack</translation>
+    </message>
+    <message>
+        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator can then add the therapists&apos; accounts.</source>
+        <translation>ArmTrack guarda pacientes, sesiones y grabaciones en una base de datos. Elija dónde se guarda y cree la cuenta de administrador; después, el administrador puede añadir las cuentas de los terapeutas.</translation>
+    </message>
+    <message>
+        <source>Where the data lives</source>
+        <translation>Dónde se guardan los datos</translation>
+    </message>
+    <message>
+        <source>The database given on the command line: %1</source>
+        <translation>La base de datos indicada en la línea de órdenes: %1</translation>
+    </message>
+    <message>
+        <source>Data folder</source>
+        <translation>Carpeta de datos</translation>
+    </message>
+    <message>
+        <source>Choose the data folder</source>
+        <translation>Elegir la carpeta de datos</translation>
+    </message>
+    <message>
+        <source>Administrator account</source>
+        <translation>Cuenta de administrador</translation>
+    </message>
+    <message>
+        <source>Administrator name</source>
+        <translation>Nombre del administrador</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message numerus="yes">
+        <source>at least %n characters</source>
+        <translation>
+            <numerusform>al menos %n carácter</numerusform>
+            <numerusform>al menos %n caracteres</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Repetir la contraseña</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Contraseña:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>&amp;Repetir la contraseña:</translation>
+    </message>
+    <message>
+        <source>Choose a folder.</source>
+        <translation>Elija una carpeta.</translation>
+    </message>
+    <message>
+        <source>The records will be kept in %1.</source>
+        <translation>Los registros clínicos se guardarán en %1.</translation>
+    </message>
+    <message>
+        <source>Where ArmTrack keeps its data</source>
+        <translation>Dónde guarda ArmTrack sus datos</translation>
+    </message>
+    <message>
+        <source>Choose the folder where ArmTrack keeps its data.</source>
+        <translation>Elija la carpeta donde ArmTrack guarda sus datos.</translation>
+    </message>
+    <message>
+        <source>Give the data folder as a full path, e.g. %1.</source>
+        <translation>Indique la carpeta de datos con su ruta completa, p. ej. %1.</translation>
+    </message>
+    <message>
+        <source>Give the administrator a name.</source>
+        <translation>Dé un nombre al administrador.</translation>
+    </message>
+    <message numerus="yes">
+        <source>The password needs at least %n characters.</source>
+        <translation>
+            <numerusform>La contraseña necesita al menos %n carácter.</numerusform>
+            <numerusform>La contraseña necesita al menos %n caracteres.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The two passwords differ. Type the same password twice.</source>
+        <translation>Las dos contraseñas no coinciden. Escriba dos veces la misma contraseña.</translation>
+    </message>
+    <message>
+        <source>Creating the records...</source>
+        <translation>Creando los registros clínicos...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::JobProgress</name>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Stopping...</source>
+        <translation>Deteniendo...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MainWindow</name>
+    <message>
+        <source>Signed-in account</source>
+        <translation>Cuenta en uso</translation>
+    </message>
+    <message>
+        <source>&amp;ArmTrack</source>
+        <translation>&amp;ArmTrack</translation>
+    </message>
+    <message>
+        <source>&amp;Patients</source>
+        <translation>&amp;Pacientes</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+P</source>
+        <translation>Ctrl+Shift+P</translation>
+    </message>
+    <message>
+        <source>&amp;Settings...</source>
+        <translation>&amp;Ajustes...</translation>
+    </message>
+    <message>
+        <source>Ctrl+,</source>
+        <translation>Ctrl+,</translation>
+    </message>
+    <message>
+        <source>Sign &amp;out</source>
+        <translation>&amp;Salir de la cuenta</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Salir</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>A&amp;yuda</translation>
+    </message>
+    <message>
+        <source>&amp;User guide</source>
+        <translation>&amp;Guía de usuario</translation>
+    </message>
+    <message>
+        <source>&amp;About ArmTrack</source>
+        <translation>A&amp;cerca de ArmTrack</translation>
+    </message>
+    <message>
+        <source>About ArmTrack</source>
+        <translation>Acerca de ArmTrack</translation>
+    </message>
+    <message>
+        <source>&lt;p&gt;&lt;b&gt;ArmTrack %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Measures the shoulder&apos;s and elbow&apos;s joint angles from two wearable IMUs and a Kinect or webcam, for upper-limb rehabilitation.&lt;/p&gt;</source>
+        <translation>&lt;p&gt;&lt;b&gt;ArmTrack %1&lt;/b&gt;&lt;/p&gt;&lt;p&gt;Mide los ángulos articulares del hombro y del codo con dos IMU portátiles y una Kinect o una webcam, para la rehabilitación del miembro superior.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Signed in as %1</source>
+        <translation>Cuenta: %1</translation>
+    </message>
+    <message>
+        <source>ArmTrack</source>
+        <translation>ArmTrack</translation>
+    </message>
+    <message>
+        <source>%1 - ArmTrack</source>
+        <translation>%1 – ArmTrack</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MessageLine</name>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::MessageScreen</name>
+    <message>
+        <source>Message</source>
+        <translation>Mensaje</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Progreso</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::NewSessionScreen</name>
+    <message>
+        <source>New session</source>
+        <translation>Nueva sesión</translation>
+    </message>
+    <message>
+        <source>&amp;Start the live session</source>
+        <translation>&amp;Iniciar la sesión en directo</translation>
+    </message>
+    <message>
+        <source>Devices</source>
+        <translation>Dispositivos</translation>
+    </message>
+    <message>
+        <source>Choose the sensors and their options, then check the connection: every stream should turn green and the angles move with the arm.</source>
+        <translation>Elija los sensores y sus opciones y compruebe la conexión: cada flujo de datos debe ponerse en verde y los ángulos deben moverse con el brazo.</translation>
+    </message>
+    <message>
+        <source>Sensor calibration</source>
+        <translation>Calibración de los sensores</translation>
+    </message>
+    <message>
+        <source>The patient holds and makes the movements shown; ArmTrack then works out how the sensors sit on the arm. About a minute.</source>
+        <translation>El paciente mantiene las posiciones y hace los movimientos indicados; ArmTrack calcula después cómo están colocados los sensores en el brazo. Aproximadamente un minuto.</translation>
+    </message>
+    <message>
+        <source>Skip the calibration (the measured segment lengths are used)</source>
+        <translation>Omitir la calibración (se usan las longitudes de los segmentos medidas)</translation>
+    </message>
+    <message>
+        <source>Camera calibration</source>
+        <translation>Calibración de la cámara</translation>
+    </message>
+    <message>
+        <source>Hold the printed chessboard in front of the webcam in different places and angles until the grid is covered.</source>
+        <translation>Sostenga el tablero de ajedrez impreso delante de la webcam en distintos lugares y ángulos hasta cubrir la cuadrícula.</translation>
+    </message>
+    <message>
+        <source>No webcam among the devices: nothing to calibrate here.</source>
+        <translation>No hay ninguna webcam entre los dispositivos: aquí no hay nada que calibrar.</translation>
+    </message>
+    <message>
+        <source>Skip the camera calibration (use the camera&apos;s stored model)</source>
+        <translation>Omitir la calibración de la cámara (usar el modelo guardado de la cámara)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::OutputsPanel</name>
+    <message>
+        <source>&amp;PDF report...</source>
+        <translation>Informe &amp;PDF...</translation>
+    </message>
+    <message>
+        <source>The session report: details, metrics, plots, repetitions</source>
+        <translation>El informe de la sesión: datos, métricas, gráficas, repeticiones</translation>
+    </message>
+    <message>
+        <source>C&amp;SV...</source>
+        <translation>C&amp;SV...</translation>
+    </message>
+    <message>
+        <source>Angles (deg) with their uncertainty, and a metrics table</source>
+        <translation>Ángulos (°) con su incertidumbre y una tabla de métricas</translation>
+    </message>
+    <message>
+        <source>Open&amp;Sim .mot...</source>
+        <translation>Open&amp;Sim .mot...</translation>
+    </message>
+    <message>
+        <source>The clinical angles as an OpenSim motion file</source>
+        <translation>Los ángulos clínicos como archivo de movimiento de OpenSim</translation>
+    </message>
+    <message>
+        <source>&amp;BIDS...</source>
+        <translation>&amp;BIDS...</translation>
+    </message>
+    <message>
+        <source>A BIDS motion data set: IMUs, optical data and angles</source>
+        <translation>Un conjunto de datos de movimiento BIDS: IMU, datos ópticos y ángulos</translation>
+    </message>
+    <message>
+        <source>Rec&amp;ording...</source>
+        <translation>&amp;Grabación...</translation>
+    </message>
+    <message>
+        <source>The raw recording in the open format, bit for bit</source>
+        <translation>La grabación en bruto en el formato abierto, bit a bit</translation>
+    </message>
+    <message>
+        <source>Last output</source>
+        <translation>Última salida</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientDialog</name>
+    <message>
+        <source>New patient</source>
+        <translation>Nuevo paciente</translation>
+    </message>
+    <message>
+        <source>Edit patient %1</source>
+        <translation>Editar el paciente %1</translation>
+    </message>
+    <message>
+        <source>Upper arm length</source>
+        <translation>Longitud del brazo</translation>
+    </message>
+    <message>
+        <source>Forearm length</source>
+        <translation>Longitud del antebrazo</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU distance from the shoulder</source>
+        <translation>Distancia de la IMU del brazo al hombro</translation>
+    </message>
+    <message>
+        <source>Forearm IMU distance from the elbow</source>
+        <translation>Distancia de la IMU del antebrazo al codo</translation>
+    </message>
+    <message>
+        <source>Patient code</source>
+        <translation>Código del paciente</translation>
+    </message>
+    <message>
+        <source>e.g. P001</source>
+        <translation>p. ej. P001</translation>
+    </message>
+    <message>
+        <source>Patient name</source>
+        <translation>Nombre del paciente</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Fecha de nacimiento</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>sin indicar</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Sexo</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Lado afectado</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnóstico</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Paciente</translation>
+    </message>
+    <message>
+        <source>&amp;Code:</source>
+        <translation>&amp;Código:</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Born:</source>
+        <translation>&amp;Nacimiento:</translation>
+    </message>
+    <message>
+        <source>&amp;Sex:</source>
+        <translation>&amp;Sexo:</translation>
+    </message>
+    <message>
+        <source>Affected &amp;side:</source>
+        <translation>&amp;Lado afectado:</translation>
+    </message>
+    <message>
+        <source>&amp;Diagnosis:</source>
+        <translation>&amp;Diagnóstico:</translation>
+    </message>
+    <message>
+        <source>Measured segment lengths</source>
+        <translation>Longitudes de los segmentos medidas</translation>
+    </message>
+    <message>
+        <source>&amp;Upper arm (shoulder to elbow):</source>
+        <translation>&amp;Brazo (hombro a codo):</translation>
+    </message>
+    <message>
+        <source>&amp;Forearm (elbow to wrist):</source>
+        <translation>&amp;Antebrazo (codo a muñeca):</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU from the shoulder:</source>
+        <translation>IMU del brazo desde el hombro:</translation>
+    </message>
+    <message>
+        <source>Forearm IMU from the elbow:</source>
+        <translation>IMU del antebrazo desde el codo:</translation>
+    </message>
+    <message>
+        <source>N&amp;otes</source>
+        <translation>N&amp;otas</translation>
+    </message>
+    <message>
+        <source>Saving...</source>
+        <translation>Guardando...</translation>
+    </message>
+    <message>
+        <source> cm</source>
+        <translation> cm</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>sin medir</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientListScreen</name>
+    <message>
+        <source>&amp;Open</source>
+        <translation>&amp;Abrir</translation>
+    </message>
+    <message>
+        <source>&amp;New patient...</source>
+        <translation>&amp;Nuevo paciente...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit...</source>
+        <translation>&amp;Editar...</translation>
+    </message>
+    <message>
+        <source>Patients</source>
+        <translation>Pacientes</translation>
+    </message>
+    <message>
+        <source>&amp;Search:</source>
+        <translation>&amp;Buscar:</translation>
+    </message>
+    <message>
+        <source>code, name, diagnosis...</source>
+        <translation>código, nombre, diagnóstico...</translation>
+    </message>
+    <message>
+        <source>Search patients</source>
+        <translation>Buscar pacientes</translation>
+    </message>
+    <message>
+        <source>Patient list</source>
+        <translation>Lista de pacientes</translation>
+    </message>
+    <message>
+        <source>Add a patient (%1)</source>
+        <translation>Añadir un paciente (%1)</translation>
+    </message>
+    <message>
+        <source>Loading the patients...</source>
+        <translation>Cargando los pacientes...</translation>
+    </message>
+    <message>
+        <source>No patients yet. Add the first with &quot;New patient&quot;.</source>
+        <translation>Todavía no hay pacientes. Añada el primero con «Nuevo paciente».</translation>
+    </message>
+    <message>
+        <source>No patients.</source>
+        <translation>No hay pacientes.</translation>
+    </message>
+    <message>
+        <source>The patients could not be read: %1</source>
+        <translation>No se pudieron leer los pacientes: %1</translation>
+    </message>
+    <message>
+        <source>A patient with the code %1 exists already. Choose another code, or cancel and open that patient from the list.</source>
+        <translation>Ya existe un paciente con el código %1. Elija otro código o cancele y abra ese paciente desde la lista.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientRecords</name>
+    <message>
+        <source>Give the patient a code, e.g. P001: it names the patient in files and exports.</source>
+        <translation>Dé un código al paciente, p. ej. P001: identifica al paciente en archivos y exportaciones.</translation>
+    </message>
+    <message>
+        <source>The code may hold letters, digits, &apos;-&apos; and &apos;_&apos; (at most 32, starting with a letter or digit): &quot;%1&quot; does not.</source>
+        <translation>El código puede contener letras, dígitos, «-» y «_» (32 como máximo, empezando por una letra o un dígito): «%1» no lo cumple.</translation>
+    </message>
+    <message>
+        <source>Give the patient&apos;s name.</source>
+        <translation>Indique el nombre del paciente.</translation>
+    </message>
+    <message>
+        <source>The birth date is not a date.</source>
+        <translation>La fecha de nacimiento no es una fecha.</translation>
+    </message>
+    <message>
+        <source>The birth date lies in the future.</source>
+        <translation>La fecha de nacimiento está en el futuro.</translation>
+    </message>
+    <message>
+        <source>The birth date is before 1900.</source>
+        <translation>La fecha de nacimiento es anterior a 1900.</translation>
+    </message>
+    <message>
+        <source>upper arm length</source>
+        <translation>Longitud del brazo</translation>
+    </message>
+    <message>
+        <source>forearm length</source>
+        <translation>Longitud del antebrazo</translation>
+    </message>
+    <message>
+        <source>upper-arm IMU distance</source>
+        <translation>Distancia de la IMU del brazo</translation>
+    </message>
+    <message>
+        <source>forearm IMU distance</source>
+        <translation>Distancia de la IMU del antebrazo</translation>
+    </message>
+    <message>
+        <source>The upper-arm IMU sits farther from the shoulder than the elbow is: check both measurements.</source>
+        <translation>La IMU del brazo está más lejos del hombro que el codo: revise las dos mediciones.</translation>
+    </message>
+    <message>
+        <source>The forearm IMU sits farther from the elbow than the wrist is: check both measurements.</source>
+        <translation>La IMU del antebrazo está más lejos del codo que la muñeca: revise las dos mediciones.</translation>
+    </message>
+    <message>
+        <source>The %1 of %L2 cm is outside %L3-%L4 cm: check the measurement.</source>
+        <translation>%1: %L2 cm está fuera del intervalo %L3–%L4 cm; revise la medición.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientScreen</name>
+    <message>
+        <source>&amp;New session...</source>
+        <translation>&amp;Nueva sesión...</translation>
+    </message>
+    <message>
+        <source>&amp;Review session</source>
+        <translation>&amp;Revisar la sesión</translation>
+    </message>
+    <message>
+        <source>&amp;Progress report (PDF)...</source>
+        <translation>Informe de e&amp;volución (PDF)...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit patient...</source>
+        <translation>&amp;Editar el paciente...</translation>
+    </message>
+    <message>
+        <source>&amp;Back to patients</source>
+        <translation>&amp;Volver a los pacientes</translation>
+    </message>
+    <message>
+        <source>Patient %1</source>
+        <translation>Paciente %1</translation>
+    </message>
+    <message>
+        <source>Details</source>
+        <translation>Datos</translation>
+    </message>
+    <message>
+        <source>Code:</source>
+        <translation>Código:</translation>
+    </message>
+    <message>
+        <source>Born:</source>
+        <translation>Nacimiento:</translation>
+    </message>
+    <message>
+        <source>Sex:</source>
+        <translation>Sexo:</translation>
+    </message>
+    <message>
+        <source>Affected side:</source>
+        <translation>Lado afectado:</translation>
+    </message>
+    <message>
+        <source>Diagnosis:</source>
+        <translation>Diagnóstico:</translation>
+    </message>
+    <message>
+        <source>Notes:</source>
+        <translation>Notas:</translation>
+    </message>
+    <message>
+        <source>Measured segment lengths</source>
+        <translation>Longitudes de los segmentos medidas</translation>
+    </message>
+    <message>
+        <source>Upper arm:</source>
+        <translation>Brazo:</translation>
+    </message>
+    <message>
+        <source>Forearm:</source>
+        <translation>Antebrazo:</translation>
+    </message>
+    <message>
+        <source>Upper-arm IMU:</source>
+        <translation>IMU del brazo:</translation>
+    </message>
+    <message>
+        <source>Forearm IMU:</source>
+        <translation>IMU del antebrazo:</translation>
+    </message>
+    <message>
+        <source>Home programme</source>
+        <translation>Programa en casa</translation>
+    </message>
+    <message>
+        <source>Progress</source>
+        <translation>Progreso</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sesiones</translation>
+    </message>
+    <message>
+        <source>Ctrl+R</source>
+        <translation>Ctrl+R</translation>
+    </message>
+    <message>
+        <source>Loading...</source>
+        <translation>Cargando...</translation>
+    </message>
+    <message>
+        <source>This patient could not be read: %1</source>
+        <translation>No se pudo leer este paciente: %1</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>sin medir</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n stored length(s) could not be read.</source>
+        <translation>
+            <numerusform>No se pudo leer %n longitud guardada.</numerusform>
+            <numerusform>No se pudieron leer %n longitudes guardadas.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocolo</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Per week</source>
+        <translation>Por semana</translation>
+    </message>
+    <message>
+        <source>Save the progress report</source>
+        <translation>Guardar el informe de evolución</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Archivos PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Writing the progress report...</source>
+        <translation>Escribiendo el informe de evolución...</translation>
+    </message>
+    <message numerus="yes">
+        <source>Progress report written: %1 (%n page(s)).</source>
+        <translation>
+            <numerusform>Informe de evolución escrito: %1 (%n página).</numerusform>
+            <numerusform>Informe de evolución escrito: %1 (%n páginas).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>The progress report could not be written: %1. Choose another folder or file name and try again.</source>
+        <translation>No se pudo escribir el informe de evolución: %1. Elija otra carpeta u otro nombre de archivo y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>%L1 cm</source>
+        <translation>%L1 cm</translation>
+    </message>
+    <message>
+        <source>Record a new session with this patient (%1)</source>
+        <translation>Grabar una nueva sesión con este paciente (%1)</translation>
+    </message>
+    <message>
+        <source>Target (°)</source>
+        <translation>Objetivo (°)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::PatientTableModel</name>
+    <message>
+        <source>female</source>
+        <translation>femenino</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>masculino</translation>
+    </message>
+    <message>
+        <source>diverse</source>
+        <translation>diverso</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>izquierdo</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>derecho</translation>
+    </message>
+    <message>
+        <source>both</source>
+        <translation>ambos</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>Code</source>
+        <translation>Código</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Born</source>
+        <translation>Nacimiento</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Sexo</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Lado afectado</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnóstico</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ProgressChart</name>
+    <message>
+        <source>&amp;Angle:</source>
+        <translation>Á&amp;ngulo:</translation>
+    </message>
+    <message>
+        <source>Angle shown in the progress chart</source>
+        <translation>Ángulo mostrado en la gráfica de evolución</translation>
+    </message>
+    <message>
+        <source>Progress chart</source>
+        <translation>Gráfica de evolución</translation>
+    </message>
+    <message>
+        <source>Range of motion per session against date; the table beside it holds the same values.</source>
+        <translation>Rango de movimiento de cada sesión según la fecha; la tabla de al lado contiene los mismos valores.</translation>
+    </message>
+    <message>
+        <source>Progress values</source>
+        <translation>Valores de la evolución</translation>
+    </message>
+    <message>
+        <source>rad</source>
+        <translation>rad</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Fecha</translation>
+    </message>
+    <message>
+        <source>Range (%1)</source>
+        <translation>Rango (%1)</translation>
+    </message>
+    <message>
+        <source>Of normal</source>
+        <translation>Del normal</translation>
+    </message>
+    <message>
+        <source>Range of motion</source>
+        <translation>Rango de movimiento</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sesiones</translation>
+    </message>
+    <message>
+        <source>%1: no analysed session yet</source>
+        <translation>%1: todavía no hay ninguna sesión analizada</translation>
+    </message>
+    <message>
+        <source>ROM (%1)</source>
+        <translation>ROM (%1)</translation>
+    </message>
+    <message>
+        <source>°</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>%L1 %</source>
+        <translation>%L1 %</translation>
+    </message>
+    <message>
+        <source>Normal (AAOS) %L1 %2</source>
+        <translation>Normal (AAOS) %L1 %2</translation>
+    </message>
+    <message>
+        <source>d MMM</source>
+        <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
+        <translation>d MMM</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RecordsRecordingTarget</name>
+    <message>
+        <source>the records of patient %1</source>
+        <translation>el historial del paciente %1</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RecordsService</name>
+    <message>
+        <source>The background connection to the records could not sign in (%1). Reports, exports and analyses will fail until you sign in again.</source>
+        <translation>La conexión en segundo plano con los registros clínicos no pudo acceder (%1). Los informes, las exportaciones y los análisis fallarán hasta que vuelva a entrar.</translation>
+    </message>
+    <message>
+        <source>an unexpected error</source>
+        <translation>un error inesperado</translation>
+    </message>
+    <message>
+        <source>cannot create the folder %1: choose a folder you may write to</source>
+        <translation>no se puede crear la carpeta %1: elija una carpeta en la que pueda escribir</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ReestimatePanel</name>
+    <message>
+        <source>Fuse the &amp;optical data (Kinect, webcam)</source>
+        <translation>Fusionar los datos ó&amp;pticos (Kinect, webcam)</translation>
+    </message>
+    <message>
+        <source>B&amp;rowse...</source>
+        <translation>E&amp;xaminar...</translation>
+    </message>
+    <message>
+        <source>Re-&amp;estimate</source>
+        <translation>Re&amp;calcular</translation>
+    </message>
+    <message>
+        <source>Shown:</source>
+        <translation>Mostrado:</translation>
+    </message>
+    <message>
+        <source>EKF (extended Kalman filter)</source>
+        <translation>EKF (filtro de Kalman extendido)</translation>
+    </message>
+    <message>
+        <source>UKF (unscented Kalman filter)</source>
+        <translation>UKF (filtro de Kalman sin aroma)</translation>
+    </message>
+    <message>
+        <source>Filter</source>
+        <translation>Filtro</translation>
+    </message>
+    <message>
+        <source>&amp;Filter:</source>
+        <translation>&amp;Filtro:</translation>
+    </message>
+    <message>
+        <source>A: body acceleration modelled</source>
+        <translation>A: aceleración corporal modelada</translation>
+    </message>
+    <message>
+        <source>B: body acceleration as states</source>
+        <translation>B: aceleración corporal como estados</translation>
+    </message>
+    <message>
+        <source>C: no compensation</source>
+        <translation>C: sin compensación</translation>
+    </message>
+    <message>
+        <source>Method</source>
+        <translation>Método</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Método:</translation>
+    </message>
+    <message>
+        <source>none (a file from armtrack-cli calibrate)</source>
+        <translation>ninguna (un archivo de armtrack-cli calibrate)</translation>
+    </message>
+    <message>
+        <source>Calibration file</source>
+        <translation>Archivo de calibración</translation>
+    </message>
+    <message>
+        <source>&amp;Calibration:</source>
+        <translation>&amp;Calibración:</translation>
+    </message>
+    <message>
+        <source>Calibrations (*.json)</source>
+        <translation>Calibraciones (*.json)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::RepetitionTableModel</name>
+    <message>
+        <source>partial</source>
+        <translation>parcial</translation>
+    </message>
+    <message>
+        <source>full</source>
+        <translation>completa</translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Start (s)</source>
+        <translation>Inicio (s)</translation>
+    </message>
+    <message>
+        <source>End (s)</source>
+        <translation>Fin (s)</translation>
+    </message>
+    <message>
+        <source>Excursion (rad)</source>
+        <translation>Excursión (rad)</translation>
+    </message>
+    <message>
+        <source>Range (rad)</source>
+        <translation>Rango (rad)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (rad/s)</source>
+        <translation>Velocidad máxima (rad/s)</translation>
+    </message>
+    <message>
+        <source>SPARC</source>
+        <translation>SPARC</translation>
+    </message>
+    <message>
+        <source>Full or partial</source>
+        <translation>Completa o parcial</translation>
+    </message>
+    <message>
+        <source>Excursion (°)</source>
+        <translation>Excursión (°)</translation>
+    </message>
+    <message>
+        <source>Range (°)</source>
+        <translation>Rango (°)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (°/s)</source>
+        <translation>Velocidad máxima (°/s)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::ReviewScreen</name>
+    <message>
+        <source>Review of session %1</source>
+        <translation>Revisión de la sesión %1</translation>
+    </message>
+    <message>
+        <source>Session %1</source>
+        <translation>Sesión %1</translation>
+    </message>
+    <message>
+        <source>&amp;Back to the patient</source>
+        <translation>&amp;Volver al paciente</translation>
+    </message>
+    <message>
+        <source>3D arm replay</source>
+        <translation>Reproducción 3D del brazo</translation>
+    </message>
+    <message>
+        <source>&amp;Play</source>
+        <translation>&amp;Reproducir</translation>
+    </message>
+    <message>
+        <source>Replay time</source>
+        <translation>Tiempo de reproducción</translation>
+    </message>
+    <message>
+        <source>Replay speed</source>
+        <translation>Velocidad de reproducción</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions</source>
+        <translation>Re&amp;peticiones</translation>
+    </message>
+    <message>
+        <source>Session to compare with</source>
+        <translation>Sesión con la que comparar</translation>
+    </message>
+    <message>
+        <source>Another session of this patient, drawn dashed on the plots and as a translucent arm:</source>
+        <translation>Otra sesión de este paciente, dibujada con línea discontinua en las gráficas y como brazo translúcido:</translation>
+    </message>
+    <message>
+        <source>Co&amp;mpare</source>
+        <translation>Co&amp;mparar</translation>
+    </message>
+    <message>
+        <source>Session notes</source>
+        <translation>Notas de la sesión</translation>
+    </message>
+    <message>
+        <source>Sa&amp;ve notes</source>
+        <translation>&amp;Guardar las notas</translation>
+    </message>
+    <message>
+        <source>&amp;Notes</source>
+        <translation>&amp;Notas</translation>
+    </message>
+    <message>
+        <source>Re-es&amp;timate</source>
+        <translation>Re&amp;calcular</translation>
+    </message>
+    <message>
+        <source>Report and e&amp;xport</source>
+        <translation>Informe y e&amp;xportación</translation>
+    </message>
+    <message>
+        <source>Reading the session...</source>
+        <translation>Leyendo la sesión...</translation>
+    </message>
+    <message>
+        <source>This session could not be read: %1</source>
+        <translation>No se pudo leer esta sesión: %1</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>brazo derecho</translation>
+    </message>
+    <message>
+        <source>%1: session of %2, %3</source>
+        <translation>%1: sesión del %2, %3</translation>
+    </message>
+    <message>
+        <source>Review: %1, %2</source>
+        <translation>Revisión: %1, %2</translation>
+    </message>
+    <message>
+        <source>not analysed yet</source>
+        <translation>todavía sin analizar</translation>
+    </message>
+    <message>
+        <source>This session has no analysis yet (it may have been cut short or failed). Open &quot;Re-estimate&quot; to estimate its joint angles from the recording.</source>
+        <translation>Esta sesión aún no tiene análisis (quizá se interrumpió o falló). Abra «Recalcular» para calcular sus ángulos articulares a partir de la grabación.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) could not be read.</source>
+        <translation>
+            <numerusform>No se pudo leer %n repetición.</numerusform>
+            <numerusform>No se pudieron leer %n repeticiones.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>No metrics yet.</source>
+        <translation>Todavía no hay métricas.</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguna)</translation>
+    </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>Notes typed earlier were not saved; they are back in the Notes tab. Save them or edit them.</source>
+        <translation>Las notas escritas antes no se guardaron; vuelven a estar en la pestaña «Notas». Guárdelas o edítelas.</translation>
+    </message>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>&amp;Pause</source>
+        <translation>&amp;Pausa</translation>
+    </message>
+    <message>
+        <source>Session %1 has no analysis to compare with. Review it and re-estimate it first.</source>
+        <translation>La sesión %1 no tiene análisis con el que comparar. Revísela y recalcúlela primero.</translation>
+    </message>
+    <message>
+        <source>That session could not be read: %1</source>
+        <translation>No se pudo leer esa sesión: %1</translation>
+    </message>
+    <message>
+        <source>Notes saved.</source>
+        <translation>Notas guardadas.</translation>
+    </message>
+    <message>
+        <source>The notes could not be saved: %1. They stay here and in a draft; try again.</source>
+        <translation>No se pudieron guardar las notas: %1. Se quedan aquí y en un borrador; vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>Estimating the joint angles again...</source>
+        <translation>Recalculando los ángulos articulares...</translation>
+    </message>
+    <message>
+        <source>Re-estimation cancelled; nothing was stored.</source>
+        <translation>Recálculo cancelado; no se guardó nada.</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>cancelado</translation>
+    </message>
+    <message>
+        <source>New estimates stored as version %1.</source>
+        <translation>Nuevos cálculos guardados como versión %1.</translation>
+    </message>
+    <message>
+        <source>The session could not be estimated again: %1. The earlier estimates are kept.</source>
+        <translation>No se pudo recalcular la sesión: %1. Se conservan los cálculos anteriores.</translation>
+    </message>
+    <message>
+        <source>Save the session report</source>
+        <translation>Guardar el informe de la sesión</translation>
+    </message>
+    <message>
+        <source>PDF files (*.pdf)</source>
+        <translation>Archivos PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>Folder of the BIDS data set</source>
+        <translation>Carpeta del conjunto de datos BIDS</translation>
+    </message>
+    <message>
+        <source>Export as OpenSim motion</source>
+        <translation>Exportar como movimiento de OpenSim</translation>
+    </message>
+    <message>
+        <source>OpenSim motion (*.mot)</source>
+        <translation>Movimiento de OpenSim (*.mot)</translation>
+    </message>
+    <message>
+        <source>Export the angles as CSV</source>
+        <translation>Exportar los ángulos como CSV</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>Archivos CSV (*.csv)</translation>
+    </message>
+    <message>
+        <source>Export the recording</source>
+        <translation>Exportar la grabación</translation>
+    </message>
+    <message>
+        <source>Recordings (*.csv)</source>
+        <translation>Grabaciones (*.csv)</translation>
+    </message>
+    <message>
+        <source>the session report</source>
+        <translation>el informe de la sesión</translation>
+    </message>
+    <message numerus="yes">
+        <source>Session report written: %1 (%n page(s)).</source>
+        <translation>
+            <numerusform>Informe de la sesión escrito: %1 (%n página).</numerusform>
+            <numerusform>Informe de la sesión escrito: %1 (%n páginas).</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>the export</source>
+        <translation>la exportación</translation>
+    </message>
+    <message>
+        <source>Exported: %1.</source>
+        <translation>Exportado: %1.</translation>
+    </message>
+    <message>
+        <source>Writing %1...</source>
+        <translation>Escribiendo %1...</translation>
+    </message>
+    <message>
+        <source>%1 could not be written: %2. Choose another place and try again.</source>
+        <translation>No se pudo escribir %1: %2. Elija otro lugar y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>version %1 of %2: %3, method %4</source>
+        <translation>versión %1 de %2: %3, método %4</translation>
+    </message>
+    <message>
+        <source>, optical data fused</source>
+        <translation>, con datos ópticos fusionados</translation>
+    </message>
+    <message>
+        <source>, no optical data fused</source>
+        <translation>, sin datos ópticos fusionados</translation>
+    </message>
+    <message>
+        <source>, calibrated</source>
+        <translation>, calibrado</translation>
+    </message>
+    <message>
+        <source>Play or pause the replay (%1)</source>
+        <translation>Reproducir o pausar la reproducción (%1)</translation>
+    </message>
+    <message>
+        <source>%L1×</source>
+        <translation>%L1×</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) on %1 (%2 full, %3 partial). Smoothness: SPARC %4, LDLJ %5.</source>
+        <translation>
+            <numerusform>%n repetición de %1 (%2 completas, %3 parciales). Suavidad: SPARC %4, LDLJ %5.</numerusform>
+            <numerusform>%n repeticiones de %1 (%2 completas, %3 parciales). Suavidad: SPARC %4, LDLJ %5.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SessionSetupPage</name>
+    <message>
+        <source>&amp;Left arm</source>
+        <translation>Brazo &amp;izquierdo</translation>
+    </message>
+    <message>
+        <source>&amp;Right arm</source>
+        <translation>Brazo &amp;derecho</translation>
+    </message>
+    <message>
+        <source>Patient, protocol and arm</source>
+        <translation>Paciente, protocolo y brazo</translation>
+    </message>
+    <message>
+        <source>Choose what this session trains and which arm wears the sensors.</source>
+        <translation>Elija qué entrena esta sesión y en qué brazo van los sensores.</translation>
+    </message>
+    <message>
+        <source>Patient:</source>
+        <translation>Paciente:</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocolo</translation>
+    </message>
+    <message>
+        <source>(no protocol: free movement)</source>
+        <translation>(sin protocolo: movimiento libre)</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protocolo:</translation>
+    </message>
+    <message>
+        <source>Left arm</source>
+        <translation>Brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>Right arm</source>
+        <translation>Brazo derecho</translation>
+    </message>
+    <message>
+        <source>Arm:</source>
+        <translation>Brazo:</translation>
+    </message>
+    <message>
+        <source>Reading the patient and the protocols...</source>
+        <translation>Leyendo el paciente y los protocolos...</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>The patient or the protocols could not be read: %1. Go back and try again.</source>
+        <translation>No se pudieron leer el paciente o los protocolos: %1. Vuelva atrás e inténtelo de nuevo.</translation>
+    </message>
+    <message>
+        <source>Note: this protocol is meant for the %1 arm.</source>
+        <translation>Nota: este protocolo está pensado para el brazo %1.</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>izquierdo</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>derecho</translation>
+    </message>
+    <message numerus="yes">
+        <source>Trains %1, target %L2–%L3°, %n repetition(s).</source>
+        <translation>
+            <numerusform>Entrena %1, objetivo %L2–%L3°, %n repetición.</numerusform>
+            <numerusform>Entrena %1, objetivo %L2–%L3°, %n repeticiones.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SessionTableModel</name>
+    <message>
+        <source>complete</source>
+        <translation>completa</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>interrumpida</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>grabando</translation>
+    </message>
+    <message>
+        <source>(none)</source>
+        <translation>(ninguna)</translation>
+    </message>
+    <message>
+        <source>Started</source>
+        <translation>Inicio</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocolo</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Duración</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>IMU samples</source>
+        <translation>Muestras de IMU</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SettingsDialog</name>
+    <message>
+        <source>&amp;Add folder...</source>
+        <translation>&amp;Añadir carpeta...</translation>
+    </message>
+    <message>
+        <source>&amp;Remove</source>
+        <translation>&amp;Quitar</translation>
+    </message>
+    <message>
+        <source>Settings</source>
+        <translation>Ajustes</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Pantalla</translation>
+    </message>
+    <message>
+        <source>degrees</source>
+        <translation>grados</translation>
+    </message>
+    <message>
+        <source>radians</source>
+        <translation>radianes</translation>
+    </message>
+    <message>
+        <source>Angle units</source>
+        <translation>Unidad de los ángulos</translation>
+    </message>
+    <message>
+        <source>Angle &amp;units:</source>
+        <translation>&amp;Unidad de los ángulos:</translation>
+    </message>
+    <message>
+        <source>as the system</source>
+        <translation>como el sistema</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Idioma</translation>
+    </message>
+    <message>
+        <source>&amp;Language:</source>
+        <translation>&amp;Idioma:</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>claro</translation>
+    </message>
+    <message>
+        <source>dark</source>
+        <translation>oscuro</translation>
+    </message>
+    <message>
+        <source>Appearance</source>
+        <translation>Apariencia</translation>
+    </message>
+    <message>
+        <source>A&amp;ppearance:</source>
+        <translation>A&amp;pariencia:</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>Datos</translation>
+    </message>
+    <message>
+        <source>Data folder</source>
+        <translation>Carpeta de datos</translation>
+    </message>
+    <message>
+        <source>&amp;Browse...</source>
+        <translation>&amp;Examinar...</translation>
+    </message>
+    <message>
+        <source>Data &amp;folder:</source>
+        <translation>&amp;Carpeta de datos:</translation>
+    </message>
+    <message>
+        <source>armtrack.db in the data folder</source>
+        <translation>armtrack.db en la carpeta de datos</translation>
+    </message>
+    <message>
+        <source>A file path, sqlite:PATH, or postgresql://user@host:port/dbname</source>
+        <translation>Una ruta de archivo, sqlite:RUTA o postgresql://usuario@host:puerto/nombrebd</translation>
+    </message>
+    <message>
+        <source>Database</source>
+        <translation>Base de datos</translation>
+    </message>
+    <message>
+        <source>&amp;Database:</source>
+        <translation>&amp;Base de datos:</translation>
+    </message>
+    <message>
+        <source>Device plugin folders (searched before the built-in ones)</source>
+        <translation>Carpetas de complementos de dispositivos (se buscan antes que las incorporadas)</translation>
+    </message>
+    <message>
+        <source>Plugin folders</source>
+        <translation>Carpetas de complementos</translation>
+    </message>
+    <message>
+        <source>Estimation of new sessions</source>
+        <translation>Cálculo de las sesiones nuevas</translation>
+    </message>
+    <message>
+        <source>EKF (extended Kalman filter)</source>
+        <translation>EKF (filtro de Kalman extendido)</translation>
+    </message>
+    <message>
+        <source>UKF (unscented Kalman filter)</source>
+        <translation>UKF (filtro de Kalman sin aroma)</translation>
+    </message>
+    <message>
+        <source>Default filter</source>
+        <translation>Filtro predeterminado</translation>
+    </message>
+    <message>
+        <source>F&amp;ilter:</source>
+        <translation>F&amp;iltro:</translation>
+    </message>
+    <message>
+        <source>A: body acceleration modelled</source>
+        <translation>A: aceleración corporal modelada</translation>
+    </message>
+    <message>
+        <source>B: body acceleration as states</source>
+        <translation>B: aceleración corporal como estados</translation>
+    </message>
+    <message>
+        <source>C: no compensation</source>
+        <translation>C: sin compensación</translation>
+    </message>
+    <message>
+        <source>Default method</source>
+        <translation>Método predeterminado</translation>
+    </message>
+    <message>
+        <source>&amp;Method:</source>
+        <translation>&amp;Método:</translation>
+    </message>
+    <message>
+        <source>Plugin folder</source>
+        <translation>Carpeta de complementos</translation>
+    </message>
+    <message>
+        <source>Give the data folder as a full path, e.g. %1.</source>
+        <translation>Indique la carpeta de datos con su ruta completa, p. ej. %1.</translation>
+    </message>
+    <message>
+        <source>The database location is not one ArmTrack understands: %1</source>
+        <translation>ArmTrack no entiende esta ubicación de la base de datos: %1</translation>
+    </message>
+    <message>
+        <source>The plugin folder %1 does not exist.</source>
+        <translation>La carpeta de complementos %1 no existe.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::SignInScreen</name>
+    <message>
+        <source>&amp;Sign in</source>
+        <translation>&amp;Entrar</translation>
+    </message>
+    <message>
+        <source>Sign in</source>
+        <translation>Acceso</translation>
+    </message>
+    <message>
+        <source>Sign in to ArmTrack</source>
+        <translation>Acceder a ArmTrack</translation>
+    </message>
+    <message>
+        <source>Records: %1</source>
+        <translation>Registros clínicos: %1</translation>
+    </message>
+    <message>
+        <source>Account name</source>
+        <translation>Nombre de la cuenta</translation>
+    </message>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Contraseña:</translation>
+    </message>
+    <message>
+        <source>Type your account name.</source>
+        <translation>Escriba el nombre de su cuenta.</translation>
+    </message>
+    <message>
+        <source>Type your password.</source>
+        <translation>Escriba su contraseña.</translation>
+    </message>
+    <message>
+        <source>Signing in...</source>
+        <translation>Entrando...</translation>
+    </message>
+    <message>
+        <source>Check the name and the password (is Caps Lock on?) and try again. If you have forgotten it, an administrator can set a new one.</source>
+        <translation>Compruebe el nombre y la contraseña (¿está activado Bloq Mayús?) y vuelva a intentarlo. Si la ha olvidado, un administrador puede asignarle una nueva.</translation>
+    </message>
+    <message numerus="yes">
+        <source>Wait %n s</source>
+        <translation>
+            <numerusform>Espere %n s</numerusform>
+            <numerusform>Espere %n s</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Too many wrong passwords for this account: wait %n s, then try again.</source>
+        <translation>
+            <numerusform>Demasiadas contraseñas incorrectas para esta cuenta: espere %n segundo y vuelva a intentarlo.</numerusform>
+            <numerusform>Demasiadas contraseñas incorrectas para esta cuenta: espere %n segundos y vuelva a intentarlo.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Wrong user name or password.</source>
+        <translation>Nombre de usuario o contraseña incorrectos.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::reports</name>
+    <message>
+        <source>time (s)</source>
+        <translation>tiempo (s)</translation>
+    </message>
+    <message>
+        <source>deg</source>
+        <translation>°</translation>
+    </message>
+    <message>
+        <source>numbers: repetitions at their peaks (p = partial)</source>
+        <translation>números: repeticiones en sus picos (p = parcial)</translation>
+    </message>
+    <message>
+        <source>angle (deg)</source>
+        <translation>ángulo (°)</translation>
+    </message>
+    <message>
+        <source>date</source>
+        <translation>fecha</translation>
+    </message>
+    <message>
+        <source>not measured in this period</source>
+        <translation>no medido en este periodo</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Página %1 de %2</translation>
+    </message>
+    <message>
+        <source>Page %1</source>
+        <translation>Página %1</translation>
+    </message>
+    <message>
+        <source>Progress report</source>
+        <translation>Informe de evolución</translation>
+    </message>
+    <message>
+        <source>Patient and period</source>
+        <translation>Paciente y periodo</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Patient code</source>
+        <translation>Código del paciente</translation>
+    </message>
+    <message>
+        <source>Date of birth</source>
+        <translation>Fecha de nacimiento</translation>
+    </message>
+    <message>
+        <source>Affected side</source>
+        <translation>Lado afectado</translation>
+    </message>
+    <message>
+        <source>From</source>
+        <translation>Desde</translation>
+    </message>
+    <message>
+        <source>To</source>
+        <translation>Hasta</translation>
+    </message>
+    <message>
+        <source>Therapist</source>
+        <translation>Terapeuta</translation>
+    </message>
+    <message>
+        <source>Sessions</source>
+        <translation>Sesiones</translation>
+    </message>
+    <message>
+        <source>Range of motion over time</source>
+        <translation>Rango de movimiento a lo largo del tiempo</translation>
+    </message>
+    <message>
+        <source>No sessions between %1 and %2.</source>
+        <translation>No hay sesiones entre el %1 y el %2.</translation>
+    </message>
+    <message>
+        <source>%1: range of motion (deg)</source>
+        <translation>%1: rango de movimiento (°)</translation>
+    </message>
+    <message>
+        <source>Normal ranges: %1.</source>
+        <translation>Rangos normales: %1.</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Fecha</translation>
+    </message>
+    <message>
+        <source>Id</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocolo</translation>
+    </message>
+    <message>
+        <source>Duration</source>
+        <translation>Duración</translation>
+    </message>
+    <message>
+        <source>Reps</source>
+        <translation>Rep.</translation>
+    </message>
+    <message>
+        <source>%1 ROM</source>
+        <translation>%1 ROM</translation>
+    </message>
+    <message>
+        <source>ROM in degrees (maximum minus minimum over the session).</source>
+        <translation>ROM en grados (máximo menos mínimo de la sesión).</translation>
+    </message>
+    <message>
+        <source>%1 to %2</source>
+        <translation>%1 a %2</translation>
+    </message>
+    <message>
+        <source>%1 (%2), progress %3</source>
+        <translation>%1 (%2), evolución %3</translation>
+    </message>
+    <message>
+        <source>progress report</source>
+        <translation>informe de evolución</translation>
+    </message>
+    <message>
+        <source>Progress report: %1, %2</source>
+        <translation>Informe de evolución: %1, %2</translation>
+    </message>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Flexión de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Abducción de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Rotación interna de hombro</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Flexión de codo</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Pronosupinación</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>left</source>
+        <translation>izquierdo</translation>
+    </message>
+    <message>
+        <source>right</source>
+        <translation>derecho</translation>
+    </message>
+    <message>
+        <source>both</source>
+        <translation>ambos</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>ninguno</translation>
+    </message>
+    <message>
+        <source>either</source>
+        <translation>cualquiera</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>femenino</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>masculino</translation>
+    </message>
+    <message>
+        <source>diverse</source>
+        <translation>diverso</translation>
+    </message>
+    <message>
+        <source>complete</source>
+        <translation>completa</translation>
+    </message>
+    <message>
+        <source>interrupted</source>
+        <translation>interrumpida</translation>
+    </message>
+    <message>
+        <source>recording</source>
+        <translation>grabando</translation>
+    </message>
+    <message>
+        <source>%1 %2 UTC</source>
+        <comment>a date and a time of day</comment>
+        <translation>%1 %2 UTC</translation>
+    </message>
+    <message>
+        <source>%1 - %2 - generated %3</source>
+        <translation>%1 – %2 – generado el %3</translation>
+    </message>
+    <message>
+        <source>%1 min %2 s</source>
+        <translation>%1 min %2 s</translation>
+    </message>
+    <message>
+        <source>%1 h %2 min</source>
+        <translation>%1 h %2 min</translation>
+    </message>
+    <message>
+        <source>(not valid JSON: %1 at offset %2)</source>
+        <translation>(JSON no válido: %1 en la posición %2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>... %n more</source>
+        <translation>
+            <numerusform>... %n más</numerusform>
+            <numerusform>... %n más</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %2, target %3 to %4 deg, %n repetitions</source>
+        <translation>
+            <numerusform>%1: %2, objetivo de %3 a %4°, %n repetición</numerusform>
+            <numerusform>%1: %2, objetivo de %3 a %4°, %n repeticiones</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Patient and session</source>
+        <translation>Paciente y sesión</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Sexo</translation>
+    </message>
+    <message>
+        <source>Side measured</source>
+        <translation>Lado medido</translation>
+    </message>
+    <message>
+        <source>Session</source>
+        <translation>Sesión</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Diagnosis</source>
+        <translation>Diagnóstico</translation>
+    </message>
+    <message>
+        <source>Devices and calibration</source>
+        <translation>Dispositivos y calibración</translation>
+    </message>
+    <message>
+        <source>Devices</source>
+        <translation>Dispositivos</translation>
+    </message>
+    <message>
+        <source>No devices were recorded for this session.</source>
+        <translation>No se registró ningún dispositivo para esta sesión.</translation>
+    </message>
+    <message>
+        <source>Calibration</source>
+        <translation>Calibración</translation>
+    </message>
+    <message>
+        <source>No calibration was recorded for this session.</source>
+        <translation>No se registró ninguna calibración para esta sesión.</translation>
+    </message>
+    <message>
+        <source>%1 not defined</source>
+        <translation>%1 no definido</translation>
+    </message>
+    <message>
+        <source>Metrics per clinical angle</source>
+        <translation>Métricas por ángulo clínico</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Min (deg)</source>
+        <translation>Mín. (°)</translation>
+    </message>
+    <message>
+        <source>Max (deg)</source>
+        <translation>Máx. (°)</translation>
+    </message>
+    <message>
+        <source>ROM (deg)</source>
+        <translation>ROM (°)</translation>
+    </message>
+    <message>
+        <source>Peak velocity (deg/s)</source>
+        <translation>Velocidad máxima (°/s)</translation>
+    </message>
+    <message>
+        <source>Mean velocity (deg/s)</source>
+        <translation>Velocidad media (°/s)</translation>
+    </message>
+    <message>
+        <source>Moving time (s)</source>
+        <translation>Tiempo en movimiento (s)</translation>
+    </message>
+    <message>
+        <source>Joint angles over time</source>
+        <translation>Ángulos articulares a lo largo del tiempo</translation>
+    </message>
+    <message>
+        <source>shaded: protocol target %1 to %2 deg</source>
+        <translation>sombreado: objetivo del protocolo de %1 a %2°</translation>
+    </message>
+    <message>
+        <source>%1 (deg)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>p</source>
+        <comment>a partial repetition&apos;s mark on the plot</comment>
+        <translation>p</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>No repetitions were detected (0 repetitions).</source>
+        <translation>No se detectó ninguna repetición (0 repeticiones).</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetitions counted on %1: %2 full, %3 partial (judged against a reference range of %4 deg); %5 cut by the start or end of the recording and not counted.</source>
+        <translation>
+            <numerusform>%n repetición contada en %1: %2 completas, %3 parciales (valoradas frente a un rango de referencia de %4°); %5 cortadas por el inicio o el final de la grabación y no contadas.</numerusform>
+            <numerusform>%n repeticiones contadas en %1: %2 completas, %3 parciales (valoradas frente a un rango de referencia de %4°); %5 cortadas por el inicio o el final de la grabación y no contadas.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>#</source>
+        <translation>N.º</translation>
+    </message>
+    <message>
+        <source>Start (s)</source>
+        <translation>Inicio (s)</translation>
+    </message>
+    <message>
+        <source>End (s)</source>
+        <translation>Fin (s)</translation>
+    </message>
+    <message>
+        <source>ROM of %1 (deg)</source>
+        <translation>ROM de %1 (°)</translation>
+    </message>
+    <message>
+        <source>Partial</source>
+        <translation>Parcial</translation>
+    </message>
+    <message>
+        <source>Comparison with normative ranges</source>
+        <translation>Comparación con los rangos normativos</translation>
+    </message>
+    <message>
+        <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
+        <translation>Gris: el rango de movimiento activo normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Fuente: %1. Esa fuente no da un límite normal para la aducción de hombro; su rango se muestra desde 0.</translation>
+    </message>
+    <message>
+        <source>Comparison with earlier sessions</source>
+        <translation>Comparación con sesiones anteriores</translation>
+    </message>
+    <message>
+        <source>Range of motion (deg) of each angle per session.</source>
+        <translation>Rango de movimiento (°) de cada ángulo por sesión.</translation>
+    </message>
+    <message>
+        <source>%1 this session</source>
+        <translation>%1 esta sesión</translation>
+    </message>
+    <message>
+        <source>Change since last</source>
+        <translation>Cambio desde la anterior</translation>
+    </message>
+    <message>
+        <source>Other side, %1</source>
+        <translation>Otro lado, %1</translation>
+    </message>
+    <message>
+        <source>No earlier sessions to compare with.</source>
+        <translation>No hay sesiones anteriores con las que comparar.</translation>
+    </message>
+    <message>
+        <source>Therapist&apos;s notes</source>
+        <translation>Notas del terapeuta</translation>
+    </message>
+    <message>
+        <source>No notes.</source>
+        <translation>Sin notas.</translation>
+    </message>
+    <message>
+        <source>%1 (%2), session of %3</source>
+        <translation>%1 (%2), sesión del %3</translation>
+    </message>
+    <message>
+        <source>session report</source>
+        <translation>informe de la sesión</translation>
+    </message>
+    <message>
+        <source>Session report: %1, %2</source>
+        <translation>Informe de la sesión: %1, %2</translation>
+    </message>
+    <message>
+        <source>Session report</source>
+        <translation>Informe de la sesión</translation>
+    </message>
+    <message>
+        <source>shaded: AAOS normal range of motion, 0-%1 deg</source>
+        <translation>sombreado: rango de movimiento normal según la AAOS, 0–%1°</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>%1 samples used, %2 rows rejected (not finite), %3 gaps. Smoothness of the wrist path: %4, %5.</source>
+        <translation>%1 muestras usadas, %2 filas descartadas (no finitas), %3 huecos. Suavidad de la trayectoria de la muñeca: %4, %5.</translation>
+    </message>
+    <message>
+        <source>ROM %1 of %2 deg (%3 %)</source>
+        <translation>ROM %1 de %2° (%3 %)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleChart</name>
+    <message>
+        <source>Plot of %1 over time in degrees; the table beside it holds the same numbers</source>
+        <translation>Gráfica de %1 en grados a lo largo del tiempo; la tabla de al lado contiene los mismos números</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Compared session</source>
+        <translation>Sesión comparada</translation>
+    </message>
+    <message>
+        <source>%1 (°)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>±2σ</source>
+        <translation>±2σ</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AnglePlotPanel</name>
+    <message>
+        <source>Joint angle plots</source>
+        <translation>Gráficas de los ángulos articulares</translation>
+    </message>
+    <message>
+        <source>Joint angles table</source>
+        <translation>Tabla de los ángulos articulares</translation>
+    </message>
+    <message>
+        <source>The current value of each angle, its uncertainty, the range over the plotted time and the target</source>
+        <translation>El valor actual de cada ángulo, su incertidumbre, el rango en el tiempo mostrado y el objetivo</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleReadouts</name>
+    <message>
+        <source>Current joint angles</source>
+        <translation>Ángulos articulares actuales</translation>
+    </message>
+    <message>
+        <source>uncertain (%1)</source>
+        <translation>incierto (%1)</translation>
+    </message>
+    <message>
+        <source>uncertain</source>
+        <translation>incierto</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::AngleTableModel</name>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Now</source>
+        <translation>Ahora</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Mín.</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Máx.</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>±2σ</source>
+        <translation>±2σ</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::Angles</name>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Flexión de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Abducción de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Rotación interna de hombro</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Flexión de codo</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Pronosupinación</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::ArmView</name>
+    <message>
+        <source>3D view of the arm</source>
+        <translation>Vista 3D del brazo</translation>
+    </message>
+    <message>
+        <source>The estimated arm with its sensors. Arrow keys turn the view, plus and minus zoom, Home resets the view.</source>
+        <translation>El brazo calculado con sus sensores. Las flechas giran la vista, más y menos hacen zoom, Inicio restablece la vista.</translation>
+    </message>
+    <message>
+        <source>Drag to turn the view, scroll to zoom; Home resets it</source>
+        <translation>Arrastre para girar la vista, use la rueda para el zoom; Inicio la restablece</translation>
+    </message>
+    <message>
+        <source>Reset view</source>
+        <translation>Restablecer la vista</translation>
+    </message>
+    <message>
+        <source>Left arm</source>
+        <translation>Brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>Right arm</source>
+        <translation>Brazo derecho</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceHealthModel</name>
+    <message>
+        <source>Device</source>
+        <translation>Dispositivo</translation>
+    </message>
+    <message>
+        <source>Stream</source>
+        <translation>Flujo</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Rate</source>
+        <translation>Frecuencia</translation>
+    </message>
+    <message>
+        <source>Lost</source>
+        <translation>Perdidas</translation>
+    </message>
+    <message>
+        <source>Rejected</source>
+        <translation>Rechazadas</translation>
+    </message>
+    <message>
+        <source>OK</source>
+        <translation>OK</translation>
+    </message>
+    <message>
+        <source>warning</source>
+        <translation>aviso</translation>
+    </message>
+    <message>
+        <source>down</source>
+        <translation>caído</translation>
+    </message>
+    <message>
+        <source>idle</source>
+        <translation>inactivo</translation>
+    </message>
+    <message>
+        <source>%L1 Hz</source>
+        <translation>%L1 Hz</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceHealthPanel</name>
+    <message>
+        <source>Device health</source>
+        <translation>Estado de los dispositivos</translation>
+    </message>
+    <message>
+        <source>Device health summary</source>
+        <translation>Resumen del estado de los dispositivos</translation>
+    </message>
+    <message>
+        <source>Devices and streams</source>
+        <translation>Dispositivos y flujos</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceOptionsForm</name>
+    <message>
+        <source>Device options</source>
+        <translation>Opciones del dispositivo</translation>
+    </message>
+    <message>
+        <source>(not set)</source>
+        <translation>(sin definir)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::HealthTracker</name>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>error: %1</source>
+        <translation>error: %1</translation>
+    </message>
+    <message>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <source>reconnecting</source>
+        <translation>reconectando</translation>
+    </message>
+    <message>
+        <source>reconnecting: %1</source>
+        <translation>reconectando: %1</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>conectando</translation>
+    </message>
+    <message>
+        <source>no data for %L1 s</source>
+        <translation>sin datos desde hace %L1 s</translation>
+    </message>
+    <message>
+        <source>waiting for data</source>
+        <translation>esperando datos</translation>
+    </message>
+    <message>
+        <source>streaming, losing samples</source>
+        <translation>transmitiendo, con pérdida de muestras</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>transmitiendo</translation>
+    </message>
+    <message>
+        <source>No devices</source>
+        <translation>No hay dispositivos</translation>
+    </message>
+    <message>
+        <source>All devices are streaming</source>
+        <translation>Todos los dispositivos transmiten</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::RepetitionCounterWidget</name>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>Repetitions done of the target</source>
+        <translation>Repeticiones hechas del objetivo</translation>
+    </message>
+    <message>
+        <source>Repetitions (%1)</source>
+        <translation>Repeticiones (%1)</translation>
+    </message>
+    <message>
+        <source>%1 of %2</source>
+        <translation>%1 de %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n partial</source>
+        <translation>
+            <numerusform>%n parcial</numerusform>
+            <numerusform>%n parciales</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>moving</source>
+        <translation>en movimiento</translation>
+    </message>
+    <message>
+        <source>target reached</source>
+        <translation>objetivo alcanzado</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::VtkBridge</name>
+    <message>
+        <source>OpenGL is not available, so the 3D view cannot be shown.</source>
+        <translation>OpenGL no está disponible, así que no se puede mostrar la vista 3D.</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 3.2; this display offers %1.%2.</source>
+        <translation>La vista 3D necesita OpenGL 3.2; esta pantalla ofrece %1.%2.</translation>
+    </message>
+</context>
+</TS>
