@@ -11,6 +11,7 @@
 #include <iostream>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 #include <thread>
 
 namespace armtrack::cli {
@@ -44,6 +45,11 @@ bool isTerminal(const std::ostream& err) {
 
 std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned threads,
                                    const BatchWork& work, const BatchDisplay& display) {
+  return runBatch(jobs, threads, BatchWorkFactory([&work] { return work; }), display);
+}
+
+std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned threads,
+                                   const BatchWorkFactory& makeWork, const BatchDisplay& display) {
   const std::size_t n = jobs.size();
   std::vector<BatchOutcome> outcomes(n);
   if (n == 0) return outcomes;
@@ -58,10 +64,21 @@ std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned t
   const unsigned poolSize = static_cast<unsigned>(std::min<std::size_t>(std::max(threads, 1u), n));
   shared.running = poolSize;
   const auto worker = [&] {
+    BatchWork work;
+    std::string setupError;
+    try {
+      work = makeWork();
+    } catch (const std::exception& e) {
+      setupError = oneLine(e.what());
+    } catch (...) {
+      setupError = "unexpected failure";
+    }
+    if (!work && setupError.empty()) setupError = "the batch's thread has no work";
     for (std::size_t i; (i = next.fetch_add(1)) < n;) {
       const auto start = Clock::now();
       BatchOutcome& o = outcomes[i];
       try {
+        if (!work) throw std::runtime_error(setupError);
         work(i, [&progress, i](double f) {
           const double c = std::clamp(f, 0.0, 1.0);
           progress[i].store(static_cast<std::uint32_t>(c * 1e6), std::memory_order_relaxed);
@@ -78,6 +95,7 @@ std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned t
       shared.finished.push_back(i);
       shared.changed.notify_one();
     }
+    work = nullptr;  // what makeWork made ends on this thread
     const std::lock_guard lock(shared.mutex);
     --shared.running;
     shared.changed.notify_one();

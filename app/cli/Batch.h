@@ -31,6 +31,11 @@ using BatchProgress = std::function<void(double fraction)>;
 /// time, so it must touch only what belongs to its job.
 using BatchWork = std::function<void(std::size_t index, const BatchProgress& progress)>;
 
+/// Makes the work of one pool thread, on that thread, before its first job: what must belong to
+/// one thread (a database connection) lives in what it returns, which is destroyed on that thread
+/// after its last job. When it throws, every job that thread takes fails with its error.
+using BatchWorkFactory = std::function<BatchWork()>;
+
 struct BatchDisplay {
   std::ostream* err = nullptr;  ///< progress and failures go here (the calling thread writes)
   /// A terminal: one progress line redrawn in place (with \r) and failures on lines of their
@@ -44,6 +49,9 @@ struct BatchDisplay {
 /// job's failure.
 std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned threads,
                                    const BatchWork& work, const BatchDisplay& display);
+/// The same with work made on each pool thread by makeWork.
+std::vector<BatchOutcome> runBatch(const std::vector<BatchJob>& jobs, unsigned threads,
+                                   const BatchWorkFactory& makeWork, const BatchDisplay& display);
 
 /// The number of threads a batch runs on when none is asked for: every core.
 unsigned defaultBatchThreads();

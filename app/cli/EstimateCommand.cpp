@@ -219,15 +219,6 @@ int estimateOne(const Args& a, std::ostream& out, std::ostream& err) {
 // ---------------------------------------------------------------------------------------------
 // Several recordings
 
-std::string tableCell(std::string s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '|') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 void writeTextFile(const fs::path& path, const std::string& text) {
   try {
     AtomicFile f(path);

@@ -115,8 +115,7 @@ void applyCalibration(const Calibration& c, ArmSample& s) {
 void applyCalibration(const Calibration& c, RecordingMeta& meta) {
   if (meta.side != c.side) {
     throw std::invalid_argument("the calibration is for the " + sideName(c.side) +
-                                " arm but the recording is of the " + sideName(meta.side) +
-                                " arm");
+                                " arm but the recording is of the " + sideName(meta.side) + " arm");
   }
   meta.geometry = c.geometry;
 }

@@ -317,8 +317,8 @@ bool ClinicalStore::readRecordingChunks(
   }
   if (rows != s.sampleRows)
     throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
-                                          std::to_string(rows) + " rows, " +
-                                          "the session says " + std::to_string(s.sampleRows));
+                                          std::to_string(rows) + " rows, " + "the session says " +
+                                          std::to_string(s.sampleRows));
   return true;
 }
 
