@@ -10,6 +10,7 @@
 
 #include "core/Strings.h"
 #include "core/camera/PinholeCamera.h"
+#include "core/estimation/Heading.h"
 #include "core/estimation/Initializer.h"
 #include "core/estimation/WindowFit.h"
 
@@ -36,60 +37,6 @@ std::string methodName(MeasurementModel m) {
       return "inclinometer";
   }
   return "?";
-}
-
-namespace {
-// Joint rates that turn the whole arm about `up` at 1 rad/s: J_s h = up, where J_s's columns are
-// the three shoulder axes in frame 0 (z0, z1, z2). The damping only guards the gimbal lock; it is
-// small enough that h stays the exact rotation elsewhere.
-JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
-  // Rows 1-2 of the tables give z1 = Rz(th0) Rx(pi/2) z and z2 = z1's frame turned by th1 + pi/2.
-  const double c0 = std::cos(th(0)), s0 = std::sin(th(0));
-  const double c1 = std::cos(th(1)), s1 = std::sin(th(1));
-  Eigen::Matrix3d j;
-  j.col(0) = Eigen::Vector3d::UnitZ();
-  j.col(1) = Eigen::Vector3d(s0, -c0, 0.0);
-  j.col(2) = Eigen::Vector3d(c1 * c0, c1 * s0, s1);
-  const Eigen::Vector3d rate =
-      j.transpose() * (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).ldlt().solve(up);
-  JointVector d = JointVector::Zero();
-  d.head<3>() = rate;
-  return d;
-}
-}  // namespace
-
-JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
-  const JointVector d = headingGenerator(th, up);
-  const double n = d.norm();
-  return n > 0 ? JointVector(d / n) : d;
-}
-
-Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
-                                             const Eigen::Vector3d& up) {
-  // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
-  // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
-  const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
-  const JointVector h = headingGenerator(th, up);
-  auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
-    const double n = dir.norm();
-    first.setZero();
-    second.setZero();
-    if (n < 1e-12) return;
-    const double e = 1e-4 / n;  // step of 1e-4 rad along dir
-    const JointVector hp = headingGenerator(th + e * dir, up);
-    const JointVector hm = headingGenerator(th - e * dir, up);
-    first = (hp - hm) / (2 * e);
-    second = (hp - 2 * h + hm) / (e * e);
-  };
-  JointVector dhThd, d2hThd, dhThdd, unused;
-  along(thd, dhThd, d2hThd);
-  along(thdd, dhThdd, unused);
-  Eigen::Matrix<double, 15, 1> v;
-  v.segment<5>(0) = dhThdd + d2hThd;
-  v.segment<5>(5) = dhThd;
-  v.segment<5>(10) = h;
-  const double n = h.norm();
-  return n > 0 ? Eigen::Matrix<double, 15, 1>(v / n) : v;
 }
 
 namespace {
@@ -270,9 +217,10 @@ class ArmFilter final : public JointEstimator {
     e.th = m_x.template segment<5>(10);
     const Vec u = headingAngles(m_x);
     const JointVector hu = u.template segment<5>(10);
-    e.thStd = (m_P.diagonal().template segment<5>(10) + headingShortfall(u) * hu.cwiseAbs2())
-                  .cwiseMax(0.0)
-                  .cwiseSqrt();
+    const double shortfall = headingShortfall(u);
+    JointVector var = m_P.diagonal().template segment<5>(10) + shortfall * hu.cwiseAbs2();
+    addHeadingCurvature(e.th, u.dot(m_P * u) + shortfall, hu, var);
+    e.thStd = var.cwiseMax(0.0).cwiseSqrt();
     return e;
   }
 
@@ -724,9 +672,13 @@ class ArmFilter final : public JointEstimator {
   // a random turn while start-up settles. Only for Method A: B and C leave body acceleration out
   // of their model, so their IMU innovations carry model error whose correlations with the
   // heading the filter needs to bleed off.
+  bool headingBlind() const {
+    return m_p.headingBlindImuUpdates && headingIsFree() &&
+           m_p.model == MeasurementModel::AccelGyro;
+  }
+
   void prepareHeadingBlind() {
-    m_headingBlind.active =
-        m_p.headingBlindImuUpdates && headingIsFree() && m_p.model == MeasurementModel::AccelGyro;
+    m_headingBlind.active = headingBlind();
     if (!m_headingBlind.active) return;
     m_headingBlind.v.setZero();
     m_headingBlind.v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
@@ -889,6 +841,29 @@ class ArmFilter final : public JointEstimator {
     return u;
   }
 
+  // P holds the heading's variance to first order: a turn of the whole arm about the vertical
+  // moves the shoulder angles along hu. Far from small, the turn bends through joint space (near
+  // the gimbal lock a 40 deg turn can move flexion 14 deg where the first-order step says 1), so
+  // when the heading is uncertain by more than a degree or two the reported variance takes the
+  // joints' actual excursion under a turn of two standard deviations each way, halved, in place
+  // of the first-order part.
+  void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
+                           JointVector& var) const {
+    const double rate = headingGenerator(th, m_up).norm();  // joint rad per rad of turn
+    if (!(rate > 0.0) || !(headingVar > 0.0)) return;
+    const double turnStd = std::sqrt(headingVar) / rate;
+    constexpr double kFirstOrderEnough = 1.0 * kDeg;
+    if (turnStd < kFirstOrderEnough) return;
+    const double turn = std::min(2.0 * turnStd, std::numbers::pi);
+    const JointVector plus = turnAboutVertical(th, turn, m_up);
+    const JointVector minus = turnAboutVertical(th, -turn, m_up);
+    for (int j = 0; j < 3; ++j) {
+      const double reach = 0.5 * std::max(std::abs(wrapAngle(plus(j) - th(j))),
+                                          std::abs(wrapAngle(minus(j) - th(j))));
+      var(j) += std::max(0.0, reach * reach - headingVar * hu(j) * hu(j));
+    }
+  }
+
   // Heading honesty. The projection of the IMU rows keeps IMU-only updates from moving the
   // heading, but information still leaks in (through correlations, and because the linearisation
   // point moves with the noisy joint accelerations), so P's heading variance shrinks below what
@@ -898,7 +873,10 @@ class ArmFilter final : public JointEstimator {
   // optical heading correction is taken at once. Changing P during IMU-only updates instead makes
   // the filter unstable.
   double headingShortfall(const Vec& u) const {
-    return std::max(0.0, std::max(m_headingFloor, m_headingMatch) - u.dot(m_P * u));
+    // Heading-blind IMU updates keep P's heading variance honest by themselves; the floor is for
+    // Methods B and C, whose IMU updates leak information into it.
+    const double floor = headingBlind() ? 0.0 : m_headingFloor;
+    return std::max(0.0, std::max(floor, m_headingMatch) - u.dot(m_P * u));
   }
 
   void afterUpdate(bool optical) {
@@ -1055,10 +1033,11 @@ class ArmFilter final : public JointEstimator {
     std::vector<Vec15> states;
     const std::vector<ArmSample> w = recentSince(since, &states);
     if (w.size() < 2) return false;
-    // A window without optical data after an optical fix: the fit cannot see the heading, so it
-    // holds the running state's (the fix's), and the heading keeps the variance it had.
+    // A window without optical data: the fit cannot see the heading, so it holds the running
+    // state's (an optical fix's, or the start pose's), and the heading keeps the variance it had.
+    // Left free, it would take whichever heading its seed had.
     std::optional<JointVector> anchor;
-    if (!anyOptical(w) && std::isfinite(m_lastOpticalT)) anchor = m_x.template segment<5>(10);
+    if (!anyOptical(w)) anchor = m_x.template segment<5>(10);
     const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back(), w), anchor);
     if (!fit.explains(kGoodFitRms) || !inAnatomicalRange(fit.x)) return false;
     if (!(fit.rms < kRefitGain * trajectoryRms(m_p, w, states))) return false;

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/estimation/Heading.h"
 #include "core/estimation/SampleGate.h"
 #include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
@@ -71,10 +72,12 @@ struct EstimatorParams {
   double jointAccelCorrelationTime = std::numeric_limits<double>::infinity();
   /// Random walk of the arm's heading, as a turn of the whole arm about the vertical (rad^2/s of
   /// turn; in joint space it grows near the shoulder's gimbal lock, where a small turn moves
-  /// flexion and rotation far). It keeps the filter willing to accept optical heading
-  /// corrections (docs/estimator.md, "Heading"). Method A's heading only drifts by gyroscope
-  /// noise and linearisation, so its rate is small: (0.17 deg)^2/s.
-  double headingVarianceRate = 0.03 * kDeg * kDeg;
+  /// flexion and rotation far), so the filter stays willing to accept optical heading
+  /// corrections (docs/estimator.md, "Heading"). With heading-blind IMU updates (Method A) the
+  /// heading only drifts as the gyroscopes' white noise integrates: Table 5's 0.1 (deg/s)^2 at
+  /// 1 kHz gives 1e-4 (deg)^2/s. A real sensor's bias and misalignment turn it faster; heading
+  /// matching opens the heading up when the optics see that.
+  double headingVarianceRate = 1e-4 * kDeg * kDeg;
   /// The same for Methods B and C, whose accelerometer model leaves body acceleration out: the
   /// tilt errors that leaves turn into heading errors as the arm rotates. 1 (deg)^2/s.
   double inclinometerHeadingVarianceRate = 1.0 * kDeg * kDeg;
@@ -275,16 +278,6 @@ struct BatchResult {
   EstimatorCounters counters;
 };
 BatchResult estimateSamples(const std::vector<ArmSample>& samples, const EstimatorParams& params);
-
-/// The heading direction in joint space at th: the joint-rate direction that turns the whole arm
-/// about the vertical through the shoulder (unit norm, elbow entries zero).
-JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);
-
-/// The full-state direction (15 = [th'' th' th]) along which turning the whole arm about the
-/// vertical moves the state: th along h, and the rates and accelerations as the turn carries
-/// them. Scaled so its th part has unit norm. IMU readings are constant along it.
-Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
-                                             const Eigen::Vector3d& up);
 
 /// Measurement function and its Jacobian, exposed for the tests: the stacked predicted readings
 /// [ua gyro, ua acc, fa gyro, fa acc, elbow, wrist] (18) for a 15-state x = [thdd thd th] under

@@ -1,0 +1,131 @@
+#include "core/estimation/Heading.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace armtrack {
+
+namespace {
+// The shoulder axes in frame 0 (columns z0, z1, z2): the spatial angular velocity of the upper
+// arm is J_s th'.head<3>().
+Eigen::Matrix3d shoulderAxes(const JointVector& th) {
+  // Rows 1-2 of the tables give z1 = Rz(th0) Rx(pi/2) z and z2 = z1's frame turned by th1 + pi/2.
+  const double c0 = std::cos(th(0)), s0 = std::sin(th(0));
+  const double c1 = std::cos(th(1)), s1 = std::sin(th(1));
+  Eigen::Matrix3d j;
+  j.col(0) = Eigen::Vector3d::UnitZ();
+  j.col(1) = Eigen::Vector3d(s0, -c0, 0.0);
+  j.col(2) = Eigen::Vector3d(c1 * c0, c1 * s0, s1);
+  return j;
+}
+
+// The upper arm's orientation in frame 0 up to a constant rotation on the right (which a turn
+// on the left leaves alone): the shoulder rows' Rz(th0) Rx(pi/2) Rz(th1 + pi/2) Rx(pi/2) Rz(th2).
+// Its spatial angular velocity is shoulderAxes(th) th'.
+Eigen::Matrix3d shoulderRotation(const JointVector& th) {
+  using Eigen::AngleAxisd;
+  using Eigen::Vector3d;
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  return (AngleAxisd(th(0), Vector3d::UnitZ()) * AngleAxisd(kHalfPi, Vector3d::UnitX()) *
+          AngleAxisd(th(1) + kHalfPi, Vector3d::UnitZ()) * AngleAxisd(kHalfPi, Vector3d::UnitX()) *
+          AngleAxisd(th(2), Vector3d::UnitZ()))
+      .toRotationMatrix();
+}
+
+// Inverse of shoulderRotation: the angle triple of orientation r nearest `near` (wrapped
+// distance). z2 = r z = (c1 c0, c1 s0, s1) gives th1 and th0 on each branch; th2 is what turns
+// the rest of the chain onto r.
+Eigen::Vector3d shoulderAnglesNear(const Eigen::Matrix3d& r, const Eigen::Vector3d& near) {
+  const Eigen::Vector3d z2 = r.col(2);
+  const double s1 = std::clamp(z2(2), -1.0, 1.0);
+  const double a1 = std::asin(s1);
+  const double horizontal = std::hypot(z2(0), z2(1));
+  Eigen::Vector3d best = near;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (const double th1 : {a1, wrapAngle(std::numbers::pi - a1)}) {
+    const double c1 = std::cos(th1);
+    // At the gimbal lock th0 is free: keep the one the arm had.
+    const double th0 = horizontal > 1e-9 ? std::atan2(z2(1) / c1, z2(0) / c1) : near(0);
+    const Eigen::Matrix3d m =
+        shoulderRotation(JointVector(th0, th1, 0.0, 0.0, 0.0)).transpose() * r;
+    const double th2 = std::atan2(m(1, 0), m(0, 0));
+    const Eigen::Vector3d cand(wrapAngle(th0), wrapAngle(th1), wrapAngle(th2));
+    double d = 0.0;
+    for (int j = 0; j < 3; ++j) d += std::abs(wrapAngle(cand(j) - near(j)));
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = cand;
+    }
+  }
+  return best;
+}
+
+Eigen::Vector3d dampedSolve(const Eigen::Matrix3d& j, const Eigen::Vector3d& w) {
+  return j.transpose() * (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).ldlt().solve(w);
+}
+}  // namespace
+
+// J_s h = up, where J_s's columns are the three shoulder axes in frame 0 (z0, z1, z2). The damping
+// only guards the gimbal lock; it is small enough that h stays the exact rotation elsewhere.
+JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
+  const Eigen::Vector3d rate = dampedSolve(shoulderAxes(th), up);
+  JointVector d = JointVector::Zero();
+  d.head<3>() = rate;
+  return d;
+}
+
+JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
+  const JointVector d = headingGenerator(th, up);
+  const double n = d.norm();
+  return n > 0 ? JointVector(d / n) : d;
+}
+
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up) {
+  // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
+  // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
+  const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
+  const JointVector h = headingGenerator(th, up);
+  auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
+    const double n = dir.norm();
+    first.setZero();
+    second.setZero();
+    if (n < 1e-12) return;
+    const double e = 1e-4 / n;  // step of 1e-4 rad along dir
+    const JointVector hp = headingGenerator(th + e * dir, up);
+    const JointVector hm = headingGenerator(th - e * dir, up);
+    first = (hp - hm) / (2 * e);
+    second = (hp - 2 * h + hm) / (e * e);
+  };
+  JointVector dhThd, d2hThd, dhThdd, unused;
+  along(thd, dhThd, d2hThd);
+  along(thdd, dhThdd, unused);
+  Eigen::Matrix<double, 15, 1> v;
+  v.segment<5>(0) = dhThdd + d2hThd;
+  v.segment<5>(5) = dhThd;
+  v.segment<5>(10) = h;
+  const double n = h.norm();
+  return n > 0 ? Eigen::Matrix<double, 15, 1>(v / n) : v;
+}
+
+JointVector turnAboutVertical(const JointVector& th, double angle, const Eigen::Vector3d& up) {
+  // Each shoulder orientation has two angle triples (th1 and pi - th1, with th0 and th2 turned by
+  // pi) and, at the gimbal lock, a line of them. Turning in steps of at most 15 deg and taking at
+  // each step the triple nearest the last one follows the branch a continuous turn reaches.
+  const Eigen::Vector3d axis = up.normalized();
+  const Eigen::Matrix3d start = shoulderRotation(th);
+  constexpr double kStep = 15.0 * std::numbers::pi / 180.0;
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(angle) / kStep)));
+  JointVector t = th;
+  for (int k = 1; k <= steps; ++k) {
+    const Eigen::Matrix3d goal = Eigen::AngleAxisd(angle * k / steps, axis) * start;
+    t.head<3>() = shoulderAnglesNear(goal, t.head<3>());
+  }
+  return t;
+}
+
+}  // namespace armtrack

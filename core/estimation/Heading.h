@@ -1,0 +1,33 @@
+// The arm's heading: turning the whole arm about the vertical through the shoulder changes no IMU
+// reading (gravity and the arm's own motion turn with it), so only optical data can see it.
+// These functions describe that turn in joint space, to first order for the filter's updates and
+// exactly for the uncertainty it reports (docs/estimator.md, "Heading").
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// Joint rates that turn the whole arm about `up` (frame 0) at 1 rad/s; elbow entries zero.
+/// Damped at the shoulder's gimbal lock, exact elsewhere.
+JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up);
+
+/// The heading direction in joint space at th: the joint-rate direction that turns the whole arm
+/// about the vertical through the shoulder (unit norm, elbow entries zero).
+JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);
+
+/// The full-state direction (15 = [th'' th' th]) along which turning the whole arm about the
+/// vertical moves the state: th along h, and the rates and accelerations as the turn carries
+/// them. Scaled so its th part has unit norm. IMU readings are constant along it.
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up);
+
+/// The joint angles of the same arm turned by `angle` (rad, right-handed about `up`) about the
+/// vertical through the shoulder: the finite turn whose first-order step is headingGenerator.
+/// The elbow angles are unchanged; the shoulder angles are the branch reached by turning
+/// continuously from th, so they stay near th for small turns. Angles are wrapped to (-pi, pi].
+JointVector turnAboutVertical(const JointVector& th, double angle, const Eigen::Vector3d& up);
+
+}  // namespace armtrack
