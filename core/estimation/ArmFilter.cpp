@@ -7,11 +7,13 @@
 #include <deque>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
+#include <utility>
 
 #include "core/Strings.h"
 #include "core/camera/PinholeCamera.h"
 #include "core/estimation/Heading.h"
 #include "core/estimation/Initializer.h"
+#include "core/estimation/MeasurementJacobian.h"
 #include "core/estimation/WindowFit.h"
 
 namespace armtrack {
@@ -409,7 +411,8 @@ class ArmFilter final : public JointEstimator {
         }
         const Eigen::Vector3d r = b.z.template segment<3>(b.offset[i]) - all.segment<3>(3 * blk);
         const Eigen::Matrix<double, 3, kBase> jac = allJac.middleRows<3>(3 * blk);
-        Eigen::Matrix3d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+        Eigen::Matrix3d sm = jac.lazyProduct(m_P.template topLeftCorner<kBase, kBase>())
+                                 .lazyProduct(jac.transpose());
         sm.diagonal().array() += m_p.positionVariance;
         const Eigen::LLT<Eigen::Matrix3d> llt(sm);
         if (llt.info() != Eigen::Success) return false;
@@ -443,7 +446,8 @@ class ArmFilter final : public JointEstimator {
         continue;
       }
       const Eigen::Vector2d r = b.z.template segment<2>(b.offset[i]) - px;
-      Eigen::Matrix2d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+      Eigen::Matrix2d sm =
+          jac.lazyProduct(m_P.template topLeftCorner<kBase, kBase>()).lazyProduct(jac.transpose());
       sm.diagonal().array() += m_p.pixelVariance;
       const Eigen::LLT<Eigen::Matrix2d> llt(sm);
       if (llt.info() != Eigen::Success) return false;
@@ -545,7 +549,7 @@ class ArmFilter final : public JointEstimator {
     // The heading random walk is a turn of the whole arm about the vertical: in joint space its
     // variance grows with the squared joint-space length of a unit turn, which is large near the
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
-    const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
+    const Vec15 v = headingSymmetryAtState();
     const double turnRate =
         headingTurnRate() * headingGenerator(m_x.template segment<5>(10), m_up).squaredNorm();
     m_P.template topLeftCorner<kBase, kBase>() += turnRate * dt * v * v.transpose();
@@ -562,10 +566,15 @@ class ArmFilter final : public JointEstimator {
     Eigen::Matrix<double, kModelRows, 1> all;
     Eigen::Matrix<double, kModelRows, kBase> allJac;
     const Vec15 base = x.template head<kBase>();
-    if (jac)
-      predictBaseWithJacobian(m_p, base, all, allJac);
-    else
+    if (jac && m_prior && m_prior->at == base) {
+      all = m_prior->readings;  // the first iteration linearises where the gate did
+      allJac = m_prior->jacobian;
+    } else if (jac) {
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, all,
+                      &allJac);
+    } else {
       predictBase<double>(m_p, base, all);
+    }
     h.resize(b.rows());
     if (jac) {
       jac->resize(b.rows(), N);
@@ -644,7 +653,11 @@ class ArmFilter final : public JointEstimator {
       const Eigen::Matrix<double, N, M> kb =
           k - m_headingBlind.v * (m_headingBlind.u.transpose() * k);
       dx.noalias() += kb * r;
-      p += kb * sj * kb.transpose() - kb * w - w.transpose() * kb.transpose();
+      // kb S kb^T - kb W - W^T kb^T = d kb^T + kb d^T with d = kb S / 2 - W^T, as thin
+      // coefficient-based products (Eigen's blocked kernels cost 15 % of a step here).
+      const Eigen::Matrix<double, N, M> d = 0.5 * kb.lazyProduct(sj) - w.transpose();
+      p.noalias() += d.lazyProduct(kb.transpose());
+      p.noalias() += kb.lazyProduct(d.transpose());
       p = 0.5 * (p + p.transpose()).eval();
       return true;
     }
@@ -677,11 +690,18 @@ class ArmFilter final : public JointEstimator {
            m_p.model == MeasurementModel::AccelGyro;
   }
 
+  // headingSymmetry at the present state, computed once for predict() and the update after it.
+  const Vec15& headingSymmetryAtState() {
+    const Vec15 x = m_x.template head<kBase>();
+    if (!m_heading || m_heading->first != x) m_heading.emplace(x, headingSymmetry(x, m_up));
+    return m_heading->second;
+  }
+
   void prepareHeadingBlind() {
     m_headingBlind.active = headingBlind();
     if (!m_headingBlind.active) return;
     m_headingBlind.v.setZero();
-    m_headingBlind.v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
+    m_headingBlind.v.template head<kBase>() = headingSymmetryAtState();
     m_headingBlind.u = headingAngles(m_x);
   }
 
@@ -892,14 +912,16 @@ class ArmFilter final : public JointEstimator {
   // The six blocks' predicted readings and their Jacobian at the predicted state, which the
   // optical gate and heading matching both read before the update: computed once per sample.
   struct Prediction {
+    Vec15 at;  // the state they were computed at
     Eigen::Matrix<double, kModelRows, 1> readings;
     Eigen::Matrix<double, kModelRows, kBase> jacobian;
   };
   const Prediction& priorPrediction() {
     if (!m_prior) {
       m_prior.emplace();
-      predictBaseWithJacobian(m_p, m_x.template head<kBase>(), m_prior->readings,
-                              m_prior->jacobian);
+      m_prior->at = m_x.template head<kBase>();
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, m_prior->at,
+                      m_prior->readings, &m_prior->jacobian);
     }
     return *m_prior;
   }
@@ -1212,6 +1234,7 @@ class ArmFilter final : public JointEstimator {
     Vec u = Vec::Zero();              // unit heading direction among the angles
   } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
+  std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
