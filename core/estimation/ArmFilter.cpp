@@ -410,8 +410,9 @@ class ArmFilter final : public JointEstimator {
           continue;
         }
         const Eigen::Vector3d r = b.z.template segment<3>(b.offset[i]) - all.segment<3>(3 * blk);
-        const Eigen::Matrix<double, 3, kBase> jac = allJac.middleRows<3>(3 * blk);
-        Eigen::Matrix3d sm = jac.lazyProduct(m_P.template topLeftCorner<kBase, kBase>())
+        // Positions read the angles only (columns 10-14 of the Jacobian).
+        const Eigen::Matrix<double, 3, kNumJoints> jac = allJac.block<3, kNumJoints>(3 * blk, 10);
+        Eigen::Matrix3d sm = jac.lazyProduct(m_P.template block<kNumJoints, kNumJoints>(10, 10))
                                  .lazyProduct(jac.transpose());
         sm.diagonal().array() += m_p.positionVariance;
         const Eigen::LLT<Eigen::Matrix3d> llt(sm);
@@ -446,8 +447,9 @@ class ArmFilter final : public JointEstimator {
         continue;
       }
       const Eigen::Vector2d r = b.z.template segment<2>(b.offset[i]) - px;
-      Eigen::Matrix2d sm =
-          jac.lazyProduct(m_P.template topLeftCorner<kBase, kBase>()).lazyProduct(jac.transpose());
+      const Eigen::Matrix<double, 2, kNumJoints> ja = jac.rightCols<kNumJoints>();  // angles only
+      Eigen::Matrix2d sm = ja.lazyProduct(m_P.template block<kNumJoints, kNumJoints>(10, 10))
+                               .lazyProduct(ja.transpose());
       sm.diagonal().array() += m_p.pixelVariance;
       const Eigen::LLT<Eigen::Matrix2d> llt(sm);
       if (llt.info() != Eigen::Success) return false;
@@ -630,40 +632,51 @@ class ArmFilter final : public JointEstimator {
   template <int M>
   bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i, Mat& p,
                    Vec& dx) {
+    const int row = b.offset[i];
+    // Optical rows (positions, marker pixels) read the angles only: their Jacobian is zero left
+    // of column 10 and right of 15, and the products skip those columns.
+    if (isOptical(b.block[i]))
+      return updateBlock<M, kNumJoints>(jac.template block<M, kNumJoints>(row, 10), 10, innov, b, i,
+                                        p, dx);
+    return updateBlock<M, N>(jac.template middleRows<M>(row), 0, innov, b, i, p, dx);
+  }
+
+  // The update for block i whose Jacobian rows are zero outside columns [col, col + K), given as
+  // hj (M x K).
+  template <int M, int K>
+  bool updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
+                   const BlockList& b, int i, Mat& p, Vec& dx) {
     using SMat = Eigen::Matrix<double, M, M>;
     const int row = b.offset[i];
-    const Eigen::Matrix<double, M, N> hj = jac.template middleRows<M>(row);
     // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
-    const Eigen::Matrix<double, M, N> w = hj.lazyProduct(p);
-    SMat sj = w.lazyProduct(hj.transpose());
+    const Eigen::Matrix<double, M, N> w = hj.lazyProduct(p.template middleRows<K>(col));  // H P
+    SMat sj = w.template middleCols<K>(col).lazyProduct(hj.transpose());
     sj.diagonal() += b.variance.template segment<M>(row);
     const Eigen::LLT<SMat> llt(sj);
     if (llt.info() != Eigen::Success) return false;
-    const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
+    const Eigen::Matrix<double, M, 1> r =
+        innov.template segment<M>(row) - hj.lazyProduct(dx.template segment<K>(col));
     const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
     if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
+    const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
+    p.noalias() -= v.transpose().lazyProduct(v);
     if (m_headingBlind.active && !isOptical(b.block[i])) {
       // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
       // say nothing about the turn of the arm about the vertical, so their gain must not move the
       // state along it. The optimal gain would, through P's correlations, whenever the motion
       // outruns the process model (at the start and end of a fast reach the joint accelerations
       // jump), and every such step stays, because nothing but optics can undo it. The gain has
-      // its heading component removed and P follows that gain exactly (Joseph form).
-      const Eigen::Matrix<double, N, M> k = llt.solve(w).transpose();
-      const Eigen::Matrix<double, N, M> kb =
-          k - m_headingBlind.v * (m_headingBlind.u.transpose() * k);
-      dx.noalias() += kb * r;
-      // kb S kb^T - kb W - W^T kb^T = d kb^T + kb d^T with d = kb S / 2 - W^T, as thin
-      // coefficient-based products (Eigen's blocked kernels cost 15 % of a step here).
-      const Eigen::Matrix<double, N, M> d = 0.5 * kb.lazyProduct(sj) - w.transpose();
-      p.noalias() += d.lazyProduct(kb.transpose());
-      p.noalias() += kb.lazyProduct(d.transpose());
-      p = 0.5 * (p + p.transpose()).eval();
+      // its heading component removed, Kb = (I - v u^T) K, and P follows that gain exactly: the
+      // Joseph form P + Kb S Kb^T - Kb W - W^T Kb^T with W = H P equals, because K S K^T = K W =
+      // V^T V, the optimal update P - V^T V plus (u^T V^T V u) v v^T. So a rank-M downdate and
+      // a rank-1 update, each exactly symmetric, in place of four N x N products.
+      const Eigen::Matrix<double, N, 1> g = w.transpose() * sr;  // K r
+      dx.noalias() += g - m_headingBlind.v * m_headingBlind.u.dot(g);
+      const Vec a = (v * m_headingBlind.u).norm() * m_headingBlind.v;
+      p.noalias() += a * a.transpose();
       return true;
     }
     dx.noalias() += w.transpose() * sr;
-    const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
-    p.noalias() -= v.transpose().lazyProduct(v);
     return true;
   }
 
@@ -690,12 +703,13 @@ class ArmFilter final : public JointEstimator {
            m_p.model == MeasurementModel::AccelGyro;
   }
 
-  // headingSymmetry at the present state, computed once for predict() and the update after it.
-  const Vec15& headingSymmetryAtState() {
-    const Vec15 x = m_x.template head<kBase>();
+  // headingSymmetry at x, remembered for the last state asked: predict(), the heading-blind
+  // update and the projection of the first iteration all ask at the same predicted state.
+  const Vec15& headingSymmetryAt(const Vec15& x) {
     if (!m_heading || m_heading->first != x) m_heading.emplace(x, headingSymmetry(x, m_up));
     return m_heading->second;
   }
+  const Vec15& headingSymmetryAtState() { return headingSymmetryAt(m_x.template head<kBase>()); }
 
   void prepareHeadingBlind() {
     m_headingBlind.active = headingBlind();
@@ -718,7 +732,8 @@ class ArmFilter final : public JointEstimator {
       projectHeading(xi, b, jac);
       // Gauss-Newton step of the iterated EKF, from the prior each time; one iteration is the
       // plain EKF.
-      const MeasVec innov = b.z - h - jac * (x0 - xi);
+      // At the first iteration xi = x0 and the Jacobian term is zero.
+      const MeasVec innov = it == 0 ? MeasVec(b.z - h) : MeasVec(b.z - h - jac * (x0 - xi));
       p = m_P;
       if (!sequentialUpdate(jac, innov, b, p, dx)) return false;
       const Vec next = x0 + dx;
@@ -837,9 +852,9 @@ class ArmFilter final : public JointEstimator {
   // Observability constraint: IMU rows must not see the heading (turning the whole arm about the
   // vertical changes no IMU reading). Linearisation at a moving state would otherwise make the
   // heading look observable and its variance collapse. Returns whether any row was changed.
-  bool projectHeading(const Vec& x, const BlockList& b, Jac& jac) const {
+  bool projectHeading(const Vec& x, const BlockList& b, Jac& jac) {
     Vec v = Vec::Zero();
-    v.template head<kBase>() = headingSymmetry(x.template head<kBase>(), m_up);
+    v.template head<kBase>() = headingSymmetryAt(x.template head<kBase>());
     const double vv = v.squaredNorm();
     if (vv <= 0.0) return false;
     bool changed = false;
