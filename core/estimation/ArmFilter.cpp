@@ -553,7 +553,7 @@ class ArmFilter final : public JointEstimator {
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
     const Vec15 v = headingSymmetryAtState();
     const double turnRate =
-        headingTurnRate() * headingGenerator(m_x.template segment<5>(10), m_up).squaredNorm();
+        headingTurnRate() * generatorAt(m_x.template segment<5>(10)).squaredNorm();
     m_P.template topLeftCorner<kBase, kBase>() += turnRate * dt * v * v.transpose();
     m_headingFloor += turnRate * dt;
     if constexpr (kAugmented) {
@@ -659,7 +659,9 @@ class ArmFilter final : public JointEstimator {
     const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
     if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
     const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
-    p.noalias() -= v.transpose().lazyProduct(v);
+    // P -= V^T V, the lower triangle computed and mirrored: half the work, exactly symmetric.
+    for (int c = 0; c < N; ++c)
+      for (int r = c; r < N; ++r) p(r, c) = p(c, r) = p(r, c) - v.col(r).dot(v.col(c));
     if (m_headingBlind.active && !isOptical(b.block[i])) {
       // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
       // say nothing about the turn of the arm about the vertical, so their gain must not move the
@@ -706,7 +708,8 @@ class ArmFilter final : public JointEstimator {
   // headingSymmetry at x, remembered for the last state asked: predict(), the heading-blind
   // update and the projection of the first iteration all ask at the same predicted state.
   const Vec15& headingSymmetryAt(const Vec15& x) {
-    if (!m_heading || m_heading->first != x) m_heading.emplace(x, headingSymmetry(x, m_up));
+    if (!m_heading || m_heading->first != x)
+      m_heading.emplace(x, headingSymmetry(x, m_up, generatorAt(x.template segment<5>(10))));
     return m_heading->second;
   }
   const Vec15& headingSymmetryAtState() { return headingSymmetryAt(m_x.template head<kBase>()); }
@@ -872,8 +875,19 @@ class ArmFilter final : public JointEstimator {
   // vertical, rates and accelerations held (zero elsewhere).
   Vec headingAngles(const Vec& x) const {
     Vec u = Vec::Zero();
-    u.template segment<5>(10) = headingDirection(x.template segment<5>(10), m_up);
+    const JointVector& d = generatorAt(x.template segment<5>(10));  // headingDirection, cached
+    const double n = d.norm();
+    u.template segment<5>(10) = n > 0 ? JointVector(d / n) : d;
     return u;
+  }
+
+  // headingGenerator at th, remembered for the last angles asked: a step asks at the predicted
+  // angles (process noise, heading symmetry, heading matching, the optical and heading-blind
+  // updates) and then at the updated ones (heading floor, estimate()) up to eight times.
+  const JointVector& generatorAt(const JointVector& th) const {
+    if (!m_generator || m_generator->first != th)
+      m_generator.emplace(th, headingGenerator(th, m_up));
+    return m_generator->second;
   }
 
   // P holds the heading's variance to first order: a turn of the whole arm about the vertical
@@ -884,7 +898,7 @@ class ArmFilter final : public JointEstimator {
   // of the first-order part.
   void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
                            JointVector& var) const {
-    const double rate = headingGenerator(th, m_up).norm();  // joint rad per rad of turn
+    const double rate = generatorAt(th).norm();  // joint rad per rad of turn
     if (!(rate > 0.0) || !(headingVar > 0.0)) return;
     const double turnStd = std::sqrt(headingVar) / rate;
     constexpr double kFirstOrderEnough = 1.0 * kDeg;
@@ -915,7 +929,10 @@ class ArmFilter final : public JointEstimator {
   }
 
   void afterUpdate(bool optical) {
-    if (optical) m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
+    if (optical) {
+      const Vec u = headingAngles(m_x);
+      m_headingFloor = u.dot(m_P * u);
+    }
   }
 
   void beforeOpticalUpdate() {
@@ -1250,6 +1267,7 @@ class ArmFilter final : public JointEstimator {
   } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
   std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry
+  mutable std::optional<std::pair<JointVector, JointVector>> m_generator;  // th, headingGenerator
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
