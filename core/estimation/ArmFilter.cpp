@@ -11,6 +11,7 @@
 
 #include "core/Strings.h"
 #include "core/camera/PinholeCamera.h"
+#include "core/estimation/BlockUpdate.h"
 #include "core/estimation/Heading.h"
 #include "core/estimation/Initializer.h"
 #include "core/estimation/MeasurementJacobian.h"
@@ -642,43 +643,25 @@ class ArmFilter final : public JointEstimator {
   }
 
   // The update for block i whose Jacobian rows are zero outside columns [col, col + K), given as
-  // hj (M x K).
+  // hj (M x K); the arithmetic is fuseBlock's (BlockUpdate.h).
   template <int M, int K>
   bool updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
                    const BlockList& b, int i, Mat& p, Vec& dx) {
-    using SMat = Eigen::Matrix<double, M, M>;
     const int row = b.offset[i];
-    // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
-    const Eigen::Matrix<double, M, N> w = hj.lazyProduct(p.template middleRows<K>(col));  // H P
-    SMat sj = w.template middleCols<K>(col).lazyProduct(hj.transpose());
-    sj.diagonal() += b.variance.template segment<M>(row);
-    const Eigen::LLT<SMat> llt(sj);
-    if (llt.info() != Eigen::Success) return false;
-    const Eigen::Matrix<double, M, 1> r =
-        innov.template segment<M>(row) - hj.lazyProduct(dx.template segment<K>(col));
-    const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
-    if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
-    const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
-    // P -= V^T V, the lower triangle computed and mirrored: half the work, exactly symmetric.
-    for (int c = 0; c < N; ++c)
-      for (int r = c; r < N; ++r) p(r, c) = p(c, r) = p(r, c) - v.col(r).dot(v.col(c));
-    if (m_headingBlind.active && !isOptical(b.block[i])) {
-      // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
-      // say nothing about the turn of the arm about the vertical, so their gain must not move the
-      // state along it. The optimal gain would, through P's correlations, whenever the motion
-      // outruns the process model (at the start and end of a fast reach the joint accelerations
-      // jump), and every such step stays, because nothing but optics can undo it. The gain has
-      // its heading component removed, Kb = (I - v u^T) K, and P follows that gain exactly: the
-      // Joseph form P + Kb S Kb^T - Kb W - W^T Kb^T with W = H P equals, because K S K^T = K W =
-      // V^T V, the optimal update P - V^T V plus (u^T V^T V u) v v^T. So a rank-M downdate and
-      // a rank-1 update, each exactly symmetric, in place of four N x N products.
-      const Eigen::Matrix<double, N, 1> g = w.transpose() * sr;  // K r
-      dx.noalias() += g - m_headingBlind.v * m_headingBlind.u.dot(g);
-      const Vec a = (v * m_headingBlind.u).norm() * m_headingBlind.v;
-      p.noalias() += a * a.transpose();
-      return true;
-    }
-    dx.noalias() += w.transpose() * sr;
+    // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
+    // say nothing about the turn of the arm about the vertical, so their gain must not move the
+    // state along it. The optimal gain would, through P's correlations, whenever the motion
+    // outruns the process model (at the start and end of a fast reach the joint accelerations
+    // jump), and every such step stays, because nothing but optics can undo it. The gain has
+    // its heading component removed, and P follows that gain exactly.
+    const BlindDirection<N> heading{m_headingBlind.v, m_headingBlind.u};
+    const bool blind = m_headingBlind.active && !isOptical(b.block[i]);
+    double nis = 0.0;
+    if (!fuseBlock<M, K, N>(hj, col, innov.template segment<M>(row),
+                            b.variance.template segment<M>(row), blind ? &heading : nullptr, p, dx,
+                            nis))
+      return false;
+    if (watched(b.block[i])) m_updateNis += nis, m_updateDof += M;
     return true;
   }
 
