@@ -170,20 +170,30 @@ int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, st
   return 0;
 }
 
-Calibration applyCalibrationFile(const fs::path& path, Recording& rec, std::ostream& err) {
-  const Calibration c = readCalibration(path);
-  if (c.side != rec.meta.side) {
+Calibration loadCalibrationFor(const fs::path& path, RecordingMeta& meta, std::ostream& err) {
+  Calibration c = readCalibration(path);
+  useCalibration(c, path, meta, err);
+  return c;
+}
+
+void useCalibration(const Calibration& c, const fs::path& path, RecordingMeta& meta,
+                    std::ostream& err) {
+  if (c.side != meta.side) {
     throw std::runtime_error(path.string() + ": the calibration is for the " + sideName(c.side) +
-                             " arm but the recording is of the " + sideName(rec.meta.side) +
-                             " arm");
+                             " arm but the recording is of the " + sideName(meta.side) + " arm");
   }
-  applyCalibration(c, rec);
+  meta.geometry = c.geometry;
   err << "calibration: applied " << path.string() << " (" << sideName(c.side) << " arm, "
       << (c.opticalUsed ? "made with optical data" : "made without optical data") << ")\n";
   if (c.headingFromStartPoseOnly) {
     err << "calibration: its heading about the vertical rested on the start-pose assumption "
            "alone\n";
   }
+}
+
+Calibration applyCalibrationFile(const fs::path& path, Recording& rec, std::ostream& err) {
+  const Calibration c = loadCalibrationFor(path, rec.meta, err);
+  for (ArmSample& s : rec.samples) applyCalibration(c, s);
   return c;
 }
 

@@ -28,6 +28,15 @@ int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, st
 Calibration applyCalibrationFile(const std::filesystem::path& path, Recording& rec,
                                  std::ostream& err);
 
+/// The same for a recording read row by row: reads the file, checks the side against meta, puts
+/// the calibrated geometry into meta and writes the same lines to err; the caller corrects each
+/// sample (applyCalibration(c, sample)).
+Calibration loadCalibrationFor(const std::filesystem::path& path, RecordingMeta& meta,
+                               std::ostream& err);
+/// The same with the file already read (c, from path): for a batch of recordings.
+void useCalibration(const Calibration& c, const std::filesystem::path& path, RecordingMeta& meta,
+                    std::ostream& err);
+
 /// The same for filter parameters already made: sets params.geometry (checks the side).
 void applyCalibrationToParams(const Calibration& calibration, EstimatorParams& params);
 

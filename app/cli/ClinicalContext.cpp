@@ -22,15 +22,30 @@ ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options optio
   QCoreApplication::setApplicationName("ArmTrack");
   std::string user;
   if (signIn) user = a.required("--user");  // a usage error before any file is touched
-  const auto url = a.value("--db") ? storage::DatabaseUrl::parse(qs(*a.value("--db")))
-                                   : storage::DatabaseUrl::defaultLocation();
-  m_db = std::make_unique<storage::Database>(url, options);
+  m_url = a.value("--db") ? storage::DatabaseUrl::parse(qs(*a.value("--db")))
+                          : storage::DatabaseUrl::defaultLocation();
+  m_db = std::make_unique<storage::Database>(m_url, options);
   m_store = std::make_unique<storage::ClinicalStore>(*m_db);
-  if (signIn) m_store->signIn(qs(user), passwordFromUser("account '" + user + "'"));
+  if (signIn) {
+    m_password = passwordFromUser("account '" + user + "'");
+    m_store->signIn(qs(user), m_password);
+    m_user = user;
+  }
+}
+
+ClinicalContext::Connection ClinicalContext::connectAgain() const {
+  Connection c;
+  c.db = std::make_unique<storage::Database>(m_url, storage::Database::Options{});
+  c.store = std::make_unique<storage::ClinicalStore>(*c.db);
+  if (!m_user.empty()) c.store->signIn(qs(m_user), m_password);
+  return c;
 }
 
 qint64 sessionIdArgument(const Args& a) {
-  const std::string text = a.single("session id");
+  return sessionIdFrom(a, a.single("session id"));
+}
+
+qint64 sessionIdFrom(const Args& a, const std::string& text) {
   qint64 id = 0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), id);
   if (r.ec != std::errc() || r.ptr != text.data() + text.size() || id <= 0)

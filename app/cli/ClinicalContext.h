@@ -28,14 +28,27 @@ class ClinicalContext {
   storage::Database& db() { return *m_db; }
   storage::ClinicalStore& store() { return *m_store; }
 
+  /// A connection of its own, for work on another thread.
+  struct Connection {
+    std::unique_ptr<storage::Database> db;
+    std::unique_ptr<storage::ClinicalStore> store;  // ends before db
+  };
+  /// Opens the same database again, signed in as the same user when this context signed in. Call
+  /// it on the thread that will use the connection (Qt Sql connections belong to one thread).
+  Connection connectAgain() const;
+
  private:
   std::unique_ptr<QCoreApplication> m_app;
+  storage::DatabaseUrl m_url;
+  std::string m_user, m_password;  // empty when not signed in
   std::unique_ptr<storage::Database> m_db;
   std::unique_ptr<storage::ClinicalStore> m_store;
 };
 
 /// The one positional argument, a session id (a positive whole number); a usage error otherwise.
 qint64 sessionIdArgument(const Args& a);
+/// text as a session id (a positive whole number); a usage error of a otherwise.
+qint64 sessionIdFrom(const Args& a, const std::string& text);
 
 /// ARMTRACK_PASSWORD, else a prompt on the terminal (echo off) when standard input is one; throws
 /// std::runtime_error saying how to give it otherwise. what names the account, for the prompt.

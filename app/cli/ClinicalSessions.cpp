@@ -3,9 +3,11 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
+#include "app/cli/Batch.h"
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
+#include "app/cli/SessionBatch.h"
 #include "app/cli/Text.h"
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/storage/SessionAnalysis.h"
@@ -26,6 +28,11 @@ constexpr std::string_view kSessionHelp =
                             else the defaults, with these overrides) and store the estimates and
                             metrics as a new version; earlier versions are kept. Overrides become
                             the session's filter settings. Prints the version
+  session reestimate ID... | --patient CODE [--jobs N] [options as above]
+                            several sessions (or every finished session of a patient) in
+                            parallel, N at a time (default: every core), with a progress line and
+                            a summary table; a session that fails is reported and does not stop
+                            the others (exit status 1)
   session list --patient CODE [--json]
   session show ID [--json]  id, patient, status (complete, interrupted or recording), duration_s,
                             samples (rows with IMU data), rows, chunks, stored_bytes, devices,
@@ -114,9 +121,27 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
 
 int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session reestimate", rest,
-               withDb({{"--filter", true}, {"--method", true}, {"--no-optical", false}}));
+               withDb({{"--filter", true},
+                       {"--method", true},
+                       {"--no-optical", false},
+                       {"--patient", true},
+                       {"--jobs", true}}));
   if (a.help()) return out << kSessionHelp, 0;
-  const qint64 id = sessionIdArgument(a);
+  const bool batch = a.positionals().size() > 1 || a.flag("--patient") || a.flag("--jobs");
+  std::vector<qint64> ids;
+  if (batch) {
+    if (a.flag("--patient") && !a.positionals().empty())
+      a.fail("give session ids or --patient CODE, not both");
+    for (const std::string& text : a.positionals()) ids.push_back(sessionIdFrom(a, text));
+  } else {
+    ids.push_back(sessionIdArgument(a));
+  }
+  unsigned threads = defaultBatchThreads();
+  if (a.flag("--jobs")) {
+    const std::uint64_t j = a.integer("--jobs", threads);
+    if (j < 1 || j > 1024) a.fail("--jobs: must be between 1 and 1024");
+    threads = static_cast<unsigned>(j);
+  }
   storage::AnalysisOptions options;
   if (const auto f = a.value("--filter")) {
     if (*f == "ekf")
@@ -135,6 +160,19 @@ int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, s
   }
   options.noOptical = a.flag("--no-optical");
   ClinicalContext c(a, {}, true);
+  if (batch) {
+    if (const auto patient = a.value("--patient")) {
+      // Every session with a recording; one still being recorded is left to its recorder.
+      for (const storage::SessionInfo& s : c.store().listSessions(qs(*patient)))
+        if (s.status != storage::kStatusRecording) ids.push_back(s.id);
+      if (ids.empty()) {
+        err << "session reestimate: patient " << *patient << " has no finished sessions\n";
+        return 0;
+      }
+    }
+    return reestimateSessions(c, ids, threads, options, out, err);
+  }
+  const qint64 id = ids.front();
   const storage::AnalysisResult r = analyse(c.store(), id, options, "session reestimate", err);
   // What was chosen here becomes the session's filter settings: later analyses and session show
   // use them.

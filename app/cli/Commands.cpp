@@ -1,9 +1,7 @@
 // Command dispatch and the simulate / estimate / study commands of armtrack-cli.
 #include <algorithm>
 #include <cerrno>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <exception>
 #include <filesystem>
 #include <memory>
@@ -22,7 +20,6 @@
 #include "app/cli/Estimate.h"
 #include "app/cli/Live.h"
 #include "app/cli/Orientation.h"
-#include "app/cli/TaoHu.h"
 #include "app/cli/Text.h"
 #include "core/camera/PinholeCamera.h"
 #include "core/io/Recording.h"
@@ -108,30 +105,6 @@ Options:
   --peak-accel DEG_S2  reaching: fastest joint acceleration of a move (default 4000)
 )";
 
-constexpr std::string_view kEstimateHelp = R"(Usage: armtrack-cli estimate REC.csv [options]
-
-Runs the joint-angle filter over a recording, with the geometry and gravity of its sidecar.
-Writes the angles (rad) as CSV "t,th0,th1,th2,th4,th5", one row per IMU sample. When the
-recording holds true angles, prints RMSE and peak error per joint (deg).
-
-Options:
-  --filter ekf|ukf         filter (default ekf)
-  --method A|B|C|inclinometer|tao-hu
-                           IMU measurement model (default A). tao-hu instead runs the webcam +
-                           forearm-IMU tracker of Tao & Hu (needs a camera block and the forearm
-                           IMU): one row per camera frame, "t,wrist_x,wrist_y,wrist_z,elbow_x,
-                           elbow_y,elbow_z,th0,th1,th2,th4,th5" (m, shoulder frame; rad), and
-                           wrist/elbow position errors in cm when there is truth
-  --no-kinect              ignore the Kinect's elbow/wrist positions
-  --no-webcam              ignore the webcam's marker pixels (used when the sidecar has a
-                           camera block)
-  --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
-  --calibration FILE       apply a calibration made by "armtrack-cli calibrate" (IMU mounting,
-                           gyroscope biases, segment lengths; docs/calibration.md)
-  --out FILE               write the angles here (default: statistics only)
-  --overwrite              replace the --out file if it exists (otherwise an error)
-)";
-
 constexpr std::string_view kStudyHelp =
     R"(Usage: armtrack-cli study table6|fig5|fig7|fig8|sensors [options]
 
@@ -148,13 +121,6 @@ Options:
   --duration S      seconds per run, the first second is start-up (default 10; fig7 and
                     sensors: 30, fig7 measures the steady state over the second half)
 )";
-
-FilterKind parseFilter(const Args& a) {
-  const auto v = a.value("--filter");
-  if (!v || *v == "ekf" || *v == "EKF") return FilterKind::Ekf;
-  if (*v == "ukf" || *v == "UKF") return FilterKind::Ukf;
-  a.fail("--filter: expected ekf or ukf, got " + inQuotes(*v));
-}
 
 void noPositionals(const Args& a) {
   if (!a.positionals().empty()) a.fail("unexpected argument " + inQuotes(a.positionals()[0]));
@@ -264,135 +230,6 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
 // ---------------------------------------------------------------------------------------------
 
-int estimate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const Args a("estimate", args,
-               {{"--filter", true},
-                {"--method", true},
-                {"--no-kinect", false},
-                {"--no-webcam", false},
-                {"--joint-accel-std", true},
-                {"--calibration", true},
-                {"--out", true},
-                {"--overwrite", false}});
-  if (a.help()) {
-    out << kEstimateHelp;
-    return 0;
-  }
-  const fs::path input = a.single("the recording to read (estimate REC.csv)");
-
-  const bool taoHu = a.value("--method") == std::optional<std::string>("tao-hu");
-  EstimateOptions opt;
-  opt.filter = parseFilter(a);
-  if (const auto m = a.value("--method"); m && !taoHu) {
-    try {
-      opt.model = parseMethod(*m);
-    } catch (const std::invalid_argument& e) {
-      a.fail(std::string("--method: ") + e.what());
-    }
-  }
-  opt.useOptical = !a.flag("--no-kinect");
-  opt.useCamera = !a.flag("--no-webcam");
-  if (a.flag("--joint-accel-std")) opt.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
-  std::optional<fs::path> outPath;
-  if (a.flag("--out")) {
-    outPath = a.required("--out");
-    if (samePath(*outPath, input) || samePath(*outPath, sidecarPath(input)))
-      a.fail("--out: " + inQuotes(outPath->string()) + " would overwrite the recording");
-    checkOutputPath(*outPath, a.flag("--overwrite"));
-  }
-
-  std::error_code ec;
-  if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
-  Recording rec = readRecording(input);
-  for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
-  if (a.flag("--calibration")) applyCalibrationFile(a.required("--calibration"), rec, err);
-  std::size_t imuRows = 0;
-  for (const ArmSample& s : rec.samples) imuRows += s.hasImu();
-  if (imuRows == 0) throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
-
-  if (taoHu) {
-    for (std::string_view o : {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std"}) {
-      if (a.flag(o)) err << "warning: " << o << " does not apply to --method tao-hu; ignored\n";
-    }
-    std::optional<CsvOutput> writer;
-    if (outPath) writer.emplace(kTaoHuHeader, *outPath);
-    const TaoHuRun run = runTaoHuRecording(rec, writer ? &*writer : nullptr);
-    if (writer) writer->commit();
-    const TaoHuCounters& c = run.result.counters;
-    err << "estimate: " << run.result.frames.size() << " camera-frame estimates from " << c.samples
-        << " rows, method tao-hu (" << c.wristUpdates << " wrist and " << c.elbowUpdates
-        << " elbow pixels fused, " << c.wristGated + c.elbowGated << " gated), "
-        << fixed(run.seconds, 2) << " s";
-    if (outPath) err << "; wrote " << outPath->string();
-    err << "\n";
-    if (c.rejectedNonFinite || c.rejectedTime || c.restarts || c.initFailures || c.lmFailures) {
-      err << "tao-hu: rejected non-finite " << c.rejectedNonFinite << ", rejected time "
-          << c.rejectedTime << ", restarts " << c.restarts << ", alignment failures "
-          << c.initFailures << ", LM failures " << c.lmFailures << "\n";
-    }
-    if (run.result.frames.empty())
-      err << "estimate: the tracker never started (no frame with both markers after the "
-             "orientation warm-up)\n";
-    else if (run.errors.count == 0)
-      err << "estimate: no true angles in the recording, so no error statistics\n";
-    out << formatTaoHuReport(run);
-    return 0;
-  }
-
-  const EstimatorParams params = makeParams(rec.meta, opt);
-  std::optional<CsvOutput> writer;
-  if (outPath) writer.emplace(kEstimateHeader, *outPath);
-  const auto start = std::chrono::steady_clock::now();
-  const EstimateStats st = estimateRecording(rec, params, writer ? &*writer : nullptr,
-                                             [&](int p) { err << "progress: " << p << "%\n"; });
-  if (writer) writer->commit();
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  char timing[32];
-  std::snprintf(timing, sizeof timing, "%.2f", seconds);
-  err << "estimate: " << st.estimates << " estimates from " << st.rows << " rows ("
-      << shortest(st.tFirst) << " to " << shortest(st.tLast) << " s), "
-      << (opt.filter == FilterKind::Ekf ? "EKF" : "UKF") << ", method " << methodName(opt.model)
-      << (st.opticalUsed ? ", optical fused" : ", no optical data") << ", " << timing << " s";
-  if (outPath) err << "; wrote " << outPath->string();
-  err << "\n";
-  const EstimatorCounters& c = st.counters;
-  if (c.implausible.total() > 0) {
-    err << "filter: " << c.implausible.summary() << "; " << st.predicted
-        << " rows were estimated by prediction alone (status 1 in --out)\n";
-  }
-  if (c.rejectedTime || c.restarts || c.skippedUpdates || c.recoveries) {
-    err << "filter: rejected time " << c.rejectedTime << ", restarts after gaps " << c.restarts
-        << " (status 2 in --out), recoveries after losing the arm " << c.recoveries
-        << " (status 3), skipped updates " << c.skippedUpdates << "\n";
-  }
-  if (st.estimates < st.imuRows) {
-    err << "warning: " << st.imuRows - st.estimates << " of " << st.imuRows
-        << " rows with IMU data got no estimate (before start-up, or in stretches of refused "
-           "readings longer than "
-        << shortest(params.maxGap) << " s)\n";
-  }
-  const std::uint64_t gatedPixels = c.rejectedOutliers - c.gatedPositions;
-  if (c.gatedPositions > 0)
-    err << "kinect: " << c.opticalUpdates << " positions fused, " << c.gatedPositions
-        << " gated as outliers\n";
-  if (c.cameraUpdates || gatedPixels || c.cameraNotVisible) {
-    err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << gatedPixels
-        << " gated as outliers, " << c.cameraNotVisible
-        << " with the marker predicted out of view\n";
-  }
-  if (st.truthCount == 0 && st.truthRows > 0)
-    err << "estimate: no error statistics: every estimate with true angles lies in the first "
-        << shortest(1.0) << " s after a (re)start, which the statistics leave out\n";
-  else if (st.truthCount == 0 && st.opticalUsed)
-    err << "estimate: no true angles in the recording, so no error statistics\n";
-  out << formatReport(st);
-  return 0;
-}
-
-// ---------------------------------------------------------------------------------------------
-
 int study(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   const Args a("study", args, {{"--runs", true}, {"--filter", true}, {"--duration", true}});
   if (a.help()) {
@@ -478,7 +315,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
       return 0;
     }
     if (cmd == "simulate") return simulate(rest, out, err);
-    if (cmd == "estimate") return estimate(rest, out, err);
+    if (cmd == "estimate") return estimateCommand(rest, out, err);
     if (cmd == "study") return study(rest, out, err);
     if (cmd == "calibrate") return calibrateWithOutputCheck(rest, out, err);
     if (cmd == "orientation") return orientationCommand(rest, out, err);

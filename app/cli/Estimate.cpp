@@ -16,24 +16,107 @@ constexpr const char* kJointLabels[kNumJoints] = {
 
 }  // namespace
 
+FilterKind parseFilter(const Args& a) {
+  const auto v = a.value("--filter");
+  if (!v || *v == "ekf" || *v == "EKF") return FilterKind::Ekf;
+  if (*v == "ukf" || *v == "UKF") return FilterKind::Ukf;
+  a.fail("--filter: expected ekf or ukf, got " + inQuotes(*v));
+}
+
 EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& options) {
   return estimatorParamsFor(meta, options);
 }
 
+namespace {
+
+/// The values of one output row after its time, as CsvOutput::row takes them.
+using RowValues = std::array<double, 2 * kNumJoints + 1>;
+
+void fillValues(const EstimateRow& r, RowValues& values) {
+  std::copy(r.th.data(), r.th.data() + kNumJoints, values.begin());
+  std::copy(r.sd.data(), r.sd.data() + kNumJoints, values.begin() + kNumJoints);
+  values.back() = r.status;
+}
+
+// Rows between two looks at the cancel flag and the progress.
+constexpr std::uint64_t kCheckRows = 4096;
+
+}  // namespace
+
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
                                 CsvOutput* writer, const EstimateProgress& progress) {
   EstimateCallbacks callbacks;
-  std::array<double, 2 * kNumJoints + 1> values{};
+  RowValues values{};
   if (writer) {
     callbacks.row = [&](const EstimateRow& r) {
-      std::copy(r.th.data(), r.th.data() + kNumJoints, values.begin());
-      std::copy(r.sd.data(), r.sd.data() + kNumJoints, values.begin() + kNumJoints);
-      values.back() = r.status;
+      fillValues(r, values);
       writer->row(r.t, values.data(), static_cast<int>(values.size()));
     };
   }
   if (progress && recording.samples.size() > kProgressRows) callbacks.progress = progress;
   return armtrack::estimateRecording(recording, params, callbacks);
+}
+
+EstimateStats estimateStream(RecordingReader& reader, const EstimatorParams& params,
+                             const Calibration* calibration, CsvOutput* writer,
+                             const FileProgress& progress, const std::atomic<bool>* cancel) {
+  StreamingEstimator estimator(params);
+  ArmSample sample;
+  EstimateRow row;
+  RowValues values{};
+  bool cancelled = false;
+  std::uint64_t n = 0;
+  while (reader.next(sample)) {
+    if (calibration) applyCalibration(*calibration, sample);
+    if (estimator.push(sample, row) && writer) {
+      fillValues(row, values);
+      writer->row(row.t, values.data(), static_cast<int>(values.size()));
+    }
+    if (++n % kCheckRows == 0) {
+      if (cancel && cancel->load(std::memory_order_relaxed)) {
+        cancelled = true;
+        break;
+      }
+      if (progress) progress(n, reader.bytesRead(), reader.fileSize());
+    }
+  }
+  if (progress && !cancelled) progress(n, reader.bytesRead(), reader.bytesRead());
+  EstimateStats st = estimator.stats();
+  st.cancelled = cancelled;
+  return st;
+}
+
+void writeDiagnostics(std::ostream& err, const EstimateStats& st, const EstimatorParams& params) {
+  const EstimatorCounters& c = st.counters;
+  if (c.implausible.total() > 0) {
+    err << "filter: " << c.implausible.summary() << "; " << st.predicted
+        << " rows were estimated by prediction alone (status 1 in --out)\n";
+  }
+  if (c.rejectedTime || c.restarts || c.skippedUpdates || c.recoveries) {
+    err << "filter: rejected time " << c.rejectedTime << ", restarts after gaps " << c.restarts
+        << " (status 2 in --out), recoveries after losing the arm " << c.recoveries
+        << " (status 3), skipped updates " << c.skippedUpdates << "\n";
+  }
+  if (st.estimates < st.imuRows) {
+    err << "warning: " << st.imuRows - st.estimates << " of " << st.imuRows
+        << " rows with IMU data got no estimate (before start-up, or in stretches of refused "
+           "readings longer than "
+        << shortest(params.maxGap) << " s)\n";
+  }
+  const std::uint64_t gatedPixels = c.rejectedOutliers - c.gatedPositions;
+  if (c.gatedPositions > 0)
+    err << "kinect: " << c.opticalUpdates << " positions fused, " << c.gatedPositions
+        << " gated as outliers\n";
+  if (c.cameraUpdates || gatedPixels || c.cameraNotVisible) {
+    err << "webcam: " << c.cameraUpdates << " marker pixels fused, " << gatedPixels
+        << " gated as outliers, " << c.cameraNotVisible
+        << " with the marker predicted out of view\n";
+  }
+  if (st.truthCount == 0 && st.truthRows > 0)
+    err << "estimate: no error statistics: every estimate with true angles lies in the first "
+        << shortest(1.0) << " s after a (re)start, which the statistics leave out\n";
+  else if (st.truthCount == 0 && st.opticalUsed)
+    err << "estimate: no true angles in the recording, so no error statistics\n";
 }
 
 std::string formatReport(const EstimateStats& st) {

@@ -17,7 +17,6 @@ inline std::string inQuotes(std::string_view s) {
   return "\"" + std::string(s) + "\"";
 }
 
-
 /// The shortest decimal form of v that reads back to the same double (std::to_chars).
 inline std::string shortest(double v) {
   char buf[32];
@@ -30,6 +29,16 @@ inline std::string fixed(double v, int decimals) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
   return buf;
+}
+
+/// s as one cell of a Markdown table: '|' escaped.
+inline std::string tableCell(std::string_view s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
 }
 
 /// Whether a and b name the same file (after resolving what exists of them); false on error.

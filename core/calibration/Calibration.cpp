@@ -112,14 +112,17 @@ void applyCalibration(const Calibration& c, ArmSample& s) {
   if (s.forearm) s.forearm = applyCalibration(c.forearm, *s.forearm);
 }
 
-void applyCalibration(const Calibration& c, Recording& rec) {
-  if (rec.meta.side != c.side) {
+void applyCalibration(const Calibration& c, RecordingMeta& meta) {
+  if (meta.side != c.side) {
     throw std::invalid_argument("the calibration is for the " + sideName(c.side) +
-                                " arm but the recording is of the " + sideName(rec.meta.side) +
-                                " arm");
+                                " arm but the recording is of the " + sideName(meta.side) + " arm");
   }
+  meta.geometry = c.geometry;
+}
+
+void applyCalibration(const Calibration& c, Recording& rec) {
+  applyCalibration(c, rec.meta);
   for (ArmSample& s : rec.samples) applyCalibration(c, s);
-  rec.meta.geometry = c.geometry;
 }
 
 void applyCalibration(const Calibration& c, EstimatorParams& params) {

@@ -58,6 +58,10 @@ JointVector protocolStartPose();
 ImuReading applyCalibration(const ImuCalibration& c, const ImuReading& r);
 /// Corrects both IMU readings of a sample in place (optical positions are left as they are).
 void applyCalibration(const Calibration& c, ArmSample& s);
+/// Puts the calibrated geometry into a recording's metadata, for a recording whose samples are
+/// corrected one by one as they are read. Throws std::invalid_argument when the recording's side
+/// differs from the calibration's.
+void applyCalibration(const Calibration& c, RecordingMeta& meta);
 /// Corrects every sample and puts the calibrated geometry into the sidecar metadata, so filter
 /// parameters made from rec.meta afterwards use it. Throws std::invalid_argument when the
 /// recording's side differs from the calibration's.

@@ -7,11 +7,14 @@
 #include <deque>
 #include <stdexcept>
 #include <unsupported/Eigen/AutoDiff>
+#include <utility>
 
 #include "core/Strings.h"
 #include "core/camera/PinholeCamera.h"
+#include "core/estimation/BlockUpdate.h"
 #include "core/estimation/Heading.h"
 #include "core/estimation/Initializer.h"
+#include "core/estimation/MeasurementJacobian.h"
 #include "core/estimation/WindowFit.h"
 
 namespace armtrack {
@@ -408,8 +411,10 @@ class ArmFilter final : public JointEstimator {
           continue;
         }
         const Eigen::Vector3d r = b.z.template segment<3>(b.offset[i]) - all.segment<3>(3 * blk);
-        const Eigen::Matrix<double, 3, kBase> jac = allJac.middleRows<3>(3 * blk);
-        Eigen::Matrix3d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+        // Positions read the angles only (columns 10-14 of the Jacobian).
+        const Eigen::Matrix<double, 3, kNumJoints> jac = allJac.block<3, kNumJoints>(3 * blk, 10);
+        Eigen::Matrix3d sm = jac.lazyProduct(m_P.template block<kNumJoints, kNumJoints>(10, 10))
+                                 .lazyProduct(jac.transpose());
         sm.diagonal().array() += m_p.positionVariance;
         const Eigen::LLT<Eigen::Matrix3d> llt(sm);
         if (llt.info() != Eigen::Success) return false;
@@ -443,7 +448,9 @@ class ArmFilter final : public JointEstimator {
         continue;
       }
       const Eigen::Vector2d r = b.z.template segment<2>(b.offset[i]) - px;
-      Eigen::Matrix2d sm = jac * m_P.template topLeftCorner<kBase, kBase>() * jac.transpose();
+      const Eigen::Matrix<double, 2, kNumJoints> ja = jac.rightCols<kNumJoints>();  // angles only
+      Eigen::Matrix2d sm = ja.lazyProduct(m_P.template block<kNumJoints, kNumJoints>(10, 10))
+                               .lazyProduct(ja.transpose());
       sm.diagonal().array() += m_p.pixelVariance;
       const Eigen::LLT<Eigen::Matrix2d> llt(sm);
       if (llt.info() != Eigen::Success) return false;
@@ -545,9 +552,9 @@ class ArmFilter final : public JointEstimator {
     // The heading random walk is a turn of the whole arm about the vertical: in joint space its
     // variance grows with the squared joint-space length of a unit turn, which is large near the
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
-    const Vec15 v = headingSymmetry(m_x.template head<kBase>(), m_up);
+    const Vec15 v = headingSymmetryAtState();
     const double turnRate =
-        headingTurnRate() * headingGenerator(m_x.template segment<5>(10), m_up).squaredNorm();
+        headingTurnRate() * generatorAt(m_x.template segment<5>(10)).squaredNorm();
     m_P.template topLeftCorner<kBase, kBase>() += turnRate * dt * v * v.transpose();
     m_headingFloor += turnRate * dt;
     if constexpr (kAugmented) {
@@ -562,10 +569,15 @@ class ArmFilter final : public JointEstimator {
     Eigen::Matrix<double, kModelRows, 1> all;
     Eigen::Matrix<double, kModelRows, kBase> allJac;
     const Vec15 base = x.template head<kBase>();
-    if (jac)
-      predictBaseWithJacobian(m_p, base, all, allJac);
-    else
+    if (jac && m_prior && m_prior->at == base) {
+      all = m_prior->readings;  // the first iteration linearises where the gate did
+      allJac = m_prior->jacobian;
+    } else if (jac) {
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, all,
+                      &allJac);
+    } else {
       predictBase<double>(m_p, base, all);
+    }
     h.resize(b.rows());
     if (jac) {
       jac->resize(b.rows(), N);
@@ -621,36 +633,35 @@ class ArmFilter final : public JointEstimator {
   template <int M>
   bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i, Mat& p,
                    Vec& dx) {
-    using SMat = Eigen::Matrix<double, M, M>;
     const int row = b.offset[i];
-    const Eigen::Matrix<double, M, N> hj = jac.template middleRows<M>(row);
-    // Thin products: coefficient-based evaluation beats Eigen's blocked kernels here.
-    const Eigen::Matrix<double, M, N> w = hj.lazyProduct(p);
-    SMat sj = w.lazyProduct(hj.transpose());
-    sj.diagonal() += b.variance.template segment<M>(row);
-    const Eigen::LLT<SMat> llt(sj);
-    if (llt.info() != Eigen::Success) return false;
-    const Eigen::Matrix<double, M, 1> r = innov.template segment<M>(row) - hj * dx;
-    const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
-    if (watched(b.block[i])) m_updateNis += r.dot(sr), m_updateDof += M;
-    if (m_headingBlind.active && !isOptical(b.block[i])) {
-      // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
-      // say nothing about the turn of the arm about the vertical, so their gain must not move the
-      // state along it. The optimal gain would, through P's correlations, whenever the motion
-      // outruns the process model (at the start and end of a fast reach the joint accelerations
-      // jump), and every such step stays, because nothing but optics can undo it. The gain has
-      // its heading component removed and P follows that gain exactly (Joseph form).
-      const Eigen::Matrix<double, N, M> k = llt.solve(w).transpose();
-      const Eigen::Matrix<double, N, M> kb =
-          k - m_headingBlind.v * (m_headingBlind.u.transpose() * k);
-      dx.noalias() += kb * r;
-      p += kb * sj * kb.transpose() - kb * w - w.transpose() * kb.transpose();
-      p = 0.5 * (p + p.transpose()).eval();
-      return true;
-    }
-    dx.noalias() += w.transpose() * sr;
-    const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
-    p.noalias() -= v.transpose().lazyProduct(v);
+    // Optical rows (positions, marker pixels) read the angles only: their Jacobian is zero left
+    // of column 10 and right of 15, and the products skip those columns.
+    if (isOptical(b.block[i]))
+      return updateBlock<M, kNumJoints>(jac.template block<M, kNumJoints>(row, 10), 10, innov, b, i,
+                                        p, dx);
+    return updateBlock<M, N>(jac.template middleRows<M>(row), 0, innov, b, i, p, dx);
+  }
+
+  // The update for block i whose Jacobian rows are zero outside columns [col, col + K), given as
+  // hj (M x K); the arithmetic is fuseBlock's (BlockUpdate.h).
+  template <int M, int K>
+  bool updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
+                   const BlockList& b, int i, Mat& p, Vec& dx) {
+    const int row = b.offset[i];
+    // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
+    // say nothing about the turn of the arm about the vertical, so their gain must not move the
+    // state along it. The optimal gain would, through P's correlations, whenever the motion
+    // outruns the process model (at the start and end of a fast reach the joint accelerations
+    // jump), and every such step stays, because nothing but optics can undo it. The gain has
+    // its heading component removed, and P follows that gain exactly.
+    const BlindDirection<N> heading{m_headingBlind.v, m_headingBlind.u};
+    const bool blind = m_headingBlind.active && !isOptical(b.block[i]);
+    double nis = 0.0;
+    if (!fuseBlock<M, K, N>(hj, col, innov.template segment<M>(row),
+                            b.variance.template segment<M>(row), blind ? &heading : nullptr, p, dx,
+                            nis))
+      return false;
+    if (watched(b.block[i])) m_updateNis += nis, m_updateDof += M;
     return true;
   }
 
@@ -677,11 +688,20 @@ class ArmFilter final : public JointEstimator {
            m_p.model == MeasurementModel::AccelGyro;
   }
 
+  // headingSymmetry at x, remembered for the last state asked: predict(), the heading-blind
+  // update and the projection of the first iteration all ask at the same predicted state.
+  const Vec15& headingSymmetryAt(const Vec15& x) {
+    if (!m_heading || m_heading->first != x)
+      m_heading.emplace(x, headingSymmetry(x, m_up, generatorAt(x.template segment<5>(10))));
+    return m_heading->second;
+  }
+  const Vec15& headingSymmetryAtState() { return headingSymmetryAt(m_x.template head<kBase>()); }
+
   void prepareHeadingBlind() {
     m_headingBlind.active = headingBlind();
     if (!m_headingBlind.active) return;
     m_headingBlind.v.setZero();
-    m_headingBlind.v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
+    m_headingBlind.v.template head<kBase>() = headingSymmetryAtState();
     m_headingBlind.u = headingAngles(m_x);
   }
 
@@ -698,7 +718,8 @@ class ArmFilter final : public JointEstimator {
       projectHeading(xi, b, jac);
       // Gauss-Newton step of the iterated EKF, from the prior each time; one iteration is the
       // plain EKF.
-      const MeasVec innov = b.z - h - jac * (x0 - xi);
+      // At the first iteration xi = x0 and the Jacobian term is zero.
+      const MeasVec innov = it == 0 ? MeasVec(b.z - h) : MeasVec(b.z - h - jac * (x0 - xi));
       p = m_P;
       if (!sequentialUpdate(jac, innov, b, p, dx)) return false;
       const Vec next = x0 + dx;
@@ -817,9 +838,9 @@ class ArmFilter final : public JointEstimator {
   // Observability constraint: IMU rows must not see the heading (turning the whole arm about the
   // vertical changes no IMU reading). Linearisation at a moving state would otherwise make the
   // heading look observable and its variance collapse. Returns whether any row was changed.
-  bool projectHeading(const Vec& x, const BlockList& b, Jac& jac) const {
+  bool projectHeading(const Vec& x, const BlockList& b, Jac& jac) {
     Vec v = Vec::Zero();
-    v.template head<kBase>() = headingSymmetry(x.template head<kBase>(), m_up);
+    v.template head<kBase>() = headingSymmetryAt(x.template head<kBase>());
     const double vv = v.squaredNorm();
     if (vv <= 0.0) return false;
     bool changed = false;
@@ -837,8 +858,19 @@ class ArmFilter final : public JointEstimator {
   // vertical, rates and accelerations held (zero elsewhere).
   Vec headingAngles(const Vec& x) const {
     Vec u = Vec::Zero();
-    u.template segment<5>(10) = headingDirection(x.template segment<5>(10), m_up);
+    const JointVector& d = generatorAt(x.template segment<5>(10));  // headingDirection, cached
+    const double n = d.norm();
+    u.template segment<5>(10) = n > 0 ? JointVector(d / n) : d;
     return u;
+  }
+
+  // headingGenerator at th, remembered for the last angles asked: a step asks at the predicted
+  // angles (process noise, heading symmetry, heading matching, the optical and heading-blind
+  // updates) and then at the updated ones (heading floor, estimate()) up to eight times.
+  const JointVector& generatorAt(const JointVector& th) const {
+    if (!m_generator || m_generator->first != th)
+      m_generator.emplace(th, headingGenerator(th, m_up));
+    return m_generator->second;
   }
 
   // P holds the heading's variance to first order: a turn of the whole arm about the vertical
@@ -849,7 +881,7 @@ class ArmFilter final : public JointEstimator {
   // of the first-order part.
   void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
                            JointVector& var) const {
-    const double rate = headingGenerator(th, m_up).norm();  // joint rad per rad of turn
+    const double rate = generatorAt(th).norm();  // joint rad per rad of turn
     if (!(rate > 0.0) || !(headingVar > 0.0)) return;
     const double turnStd = std::sqrt(headingVar) / rate;
     constexpr double kFirstOrderEnough = 1.0 * kDeg;
@@ -880,7 +912,10 @@ class ArmFilter final : public JointEstimator {
   }
 
   void afterUpdate(bool optical) {
-    if (optical) m_headingFloor = headingAngles(m_x).dot(m_P * headingAngles(m_x));
+    if (optical) {
+      const Vec u = headingAngles(m_x);
+      m_headingFloor = u.dot(m_P * u);
+    }
   }
 
   void beforeOpticalUpdate() {
@@ -892,14 +927,16 @@ class ArmFilter final : public JointEstimator {
   // The six blocks' predicted readings and their Jacobian at the predicted state, which the
   // optical gate and heading matching both read before the update: computed once per sample.
   struct Prediction {
+    Vec15 at;  // the state they were computed at
     Eigen::Matrix<double, kModelRows, 1> readings;
     Eigen::Matrix<double, kModelRows, kBase> jacobian;
   };
   const Prediction& priorPrediction() {
     if (!m_prior) {
       m_prior.emplace();
-      predictBaseWithJacobian(m_p, m_x.template head<kBase>(), m_prior->readings,
-                              m_prior->jacobian);
+      m_prior->at = m_x.template head<kBase>();
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, m_prior->at,
+                      m_prior->readings, &m_prior->jacobian);
     }
     return *m_prior;
   }
@@ -1212,6 +1249,8 @@ class ArmFilter final : public JointEstimator {
     Vec u = Vec::Zero();              // unit heading direction among the angles
   } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
+  std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry
+  mutable std::optional<std::pair<JointVector, JointVector>> m_generator;  // th, headingGenerator
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.

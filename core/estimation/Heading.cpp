@@ -86,10 +86,14 @@ JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
 
 Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
                                              const Eigen::Vector3d& up) {
+  return headingSymmetry(x, up, headingGenerator(x.segment<5>(10), up));
+}
+
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up, const JointVector& h) {
   // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
   // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
   const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
-  const JointVector h = headingGenerator(th, up);
   auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
     const double n = dir.norm();
     first.setZero();

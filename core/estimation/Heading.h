@@ -23,6 +23,9 @@ JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);
 /// them. Scaled so its th part has unit norm. IMU readings are constant along it.
 Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
                                              const Eigen::Vector3d& up);
+/// The same, given h = headingGenerator(x's angles, up) already computed.
+Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
+                                             const Eigen::Vector3d& up, const JointVector& h);
 
 /// The joint angles of the same arm turned by `angle` (rad, right-handed about `up`) about the
 /// vertical through the shoulder: the finite turn whose first-order step is headingGenerator.

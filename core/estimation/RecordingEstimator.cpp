@@ -1,6 +1,7 @@
 #include "core/estimation/RecordingEstimator.h"
 
 #include <algorithm>
+#include <deque>
 #include <limits>
 
 #include "core/metrics/Accuracy.h"
@@ -34,25 +35,98 @@ EstimatorParams estimatorParamsFor(const RecordingMeta& meta, const EstimateOpti
   return p;
 }
 
+// One error sample of the last drift window, held until the window is known.
+struct RecentError {
+  double t;
+  JointVector th, truth;
+};
+
+struct StreamingEstimator::Impl {
+  explicit Impl(const EstimatorParams& params) : filter(makeEstimator(params)) {}
+
+  std::unique_ptr<JointEstimator> filter;
+  ErrorAccumulator all, first;
+  std::deque<RecentError> recent;  // error samples of the last kWindowSeconds, in time order
+  bool started = false;
+  double tStart = 0.0;                                         // time of the latest (re)start
+  double tLastImu = std::numeric_limits<double>::quiet_NaN();  // the latest IMU sample's time
+  double firstFrom = 0.0, firstTo = 0.0;  // the first window, before it is cut at the data's end
+};
+
+StreamingEstimator::StreamingEstimator(const EstimatorParams& params)
+    : m_impl(std::make_unique<Impl>(params)) {}
+
+StreamingEstimator::~StreamingEstimator() = default;
+
+bool StreamingEstimator::push(const ArmSample& s, EstimateRow& row) {
+  Impl& d = *m_impl;
+  ++m_st.rows;
+  const UpdateResult r = d.filter->update(s);
+  if (!s.hasImu()) return false;
+  ++m_st.imuRows;
+  d.tLastImu = s.t;
+  if (!hasEstimate(r)) return false;
+  const JointEstimate e = d.filter->estimate();
+  if (r == UpdateResult::Initialised) d.tStart = e.t;
+  if (!d.started) {
+    d.started = true;
+    m_st.tFirst = e.t;
+    d.firstFrom = m_st.tFirst + kStartupSeconds;
+    d.firstTo = d.firstFrom + kWindowSeconds;
+  }
+  m_st.tLast = e.t;
+  ++m_st.estimates;
+  m_st.predicted += r == UpdateResult::Predicted;
+  row.t = e.t;
+  row.th = e.th;
+  row.sd = e.thStd;
+  row.status = statusOf(r);
+  m_st.truthRows += s.trueAngles.has_value();
+  if (s.trueAngles && e.t >= d.tStart + kStartupSeconds) {
+    d.all.add(e.th, *s.trueAngles);
+    // Estimates are never later than the last IMU sample, so the first window's end can be
+    // applied when that sample is known (stats()); until then, its full length is used.
+    if (e.t >= d.firstFrom && e.t <= d.firstTo) d.first.add(e.th, *s.trueAngles);
+    d.recent.push_back({e.t, e.th, *s.trueAngles});
+  }
+  // What lies kWindowSeconds before the latest IMU sample cannot be in the last window.
+  while (!d.recent.empty() && d.recent.front().t <= d.tLastImu - kWindowSeconds)
+    d.recent.pop_front();
+  return true;
+}
+
+EstimateStats StreamingEstimator::stats() const {
+  const Impl& d = *m_impl;
+  EstimateStats st = m_st;
+  ErrorAccumulator last;
+  if (d.started) {
+    // Windows within the data: the first after start-up, the last after the first.
+    const double tEnd = d.tLastImu;
+    st.firstWindow.from = std::min(st.tFirst + kStartupSeconds, tEnd);
+    st.firstWindow.to = std::min(st.firstWindow.from + kWindowSeconds, tEnd);
+    st.lastWindow.to = tEnd;
+    st.lastWindow.from = std::max(tEnd - kWindowSeconds, st.firstWindow.to);
+    for (const RecentError& e : d.recent)
+      if (e.t > st.lastWindow.from && e.t <= st.lastWindow.to) last.add(e.th, e.truth);
+  }
+  st.counters = d.filter->counters();
+  st.opticalUsed = st.counters.opticalUpdates > 0 || st.counters.cameraUpdates > 0;
+  st.truthCount = d.all.count();
+  st.rmseDeg = d.all.rmse() / kDeg;
+  st.peakDeg = d.all.peak() / kDeg;
+  st.firstWindow.count = d.first.count();
+  st.firstWindow.rmseDeg = d.first.rmse() / kDeg;
+  st.lastWindow.count = last.count();
+  st.lastWindow.rmseDeg = last.rmse() / kDeg;
+  return st;
+}
+
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
                                 const EstimateCallbacks& callbacks) {
   const std::vector<ArmSample>& samples = recording.samples;
   const std::size_t n = samples.size();
-  EstimateStats st;
-  st.rows = n;
-
-  double tLastImu = std::numeric_limits<double>::quiet_NaN();
-  for (auto it = samples.rbegin(); it != samples.rend(); ++it) {
-    if (it->hasImu()) {
-      tLastImu = it->t;
-      break;
-    }
-  }
-
-  const auto filter = makeEstimator(params);
-  ErrorAccumulator all, first, last;
-  bool started = false;
-  double tStart = 0.0;  // time of the latest (re)start
+  StreamingEstimator estimator(params);
+  bool cancelled = false;
   int nextPercent = 10;
   std::size_t nextRow = callbacks.progress ? n / 10 : std::numeric_limits<std::size_t>::max();
 
@@ -60,41 +134,10 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
   for (std::size_t i = 0; i < n; ++i) {
     if (callbacks.cancel && i % kCancelCheckRows == 0 &&
         callbacks.cancel->load(std::memory_order_relaxed)) {
-      st.cancelled = true;
+      cancelled = true;
       break;
     }
-    const ArmSample& s = samples[i];
-    const UpdateResult r = filter->update(s);
-    st.imuRows += s.hasImu();
-    if (hasEstimate(r) && s.hasImu()) {
-      const JointEstimate e = filter->estimate();
-      if (r == UpdateResult::Initialised) tStart = e.t;
-      if (!started) {
-        started = true;
-        st.tFirst = e.t;
-        // Windows within the data: the first after start-up, the last after the first.
-        st.firstWindow.from = std::min(st.tFirst + kStartupSeconds, tLastImu);
-        st.firstWindow.to = std::min(st.firstWindow.from + kWindowSeconds, tLastImu);
-        st.lastWindow.to = tLastImu;
-        st.lastWindow.from = std::max(tLastImu - kWindowSeconds, st.firstWindow.to);
-      }
-      st.tLast = e.t;
-      ++st.estimates;
-      st.predicted += r == UpdateResult::Predicted;
-      if (callbacks.row) {
-        row.t = e.t;
-        row.th = e.th;
-        row.sd = e.thStd;
-        row.status = statusOf(r);
-        callbacks.row(row);
-      }
-      st.truthRows += s.trueAngles.has_value();
-      if (s.trueAngles && e.t >= tStart + kStartupSeconds) {
-        all.add(e.th, *s.trueAngles);
-        if (e.t >= st.firstWindow.from && e.t <= st.firstWindow.to) first.add(e.th, *s.trueAngles);
-        if (e.t > st.lastWindow.from && e.t <= st.lastWindow.to) last.add(e.th, *s.trueAngles);
-      }
-    }
+    if (estimator.push(samples[i], row) && callbacks.row) callbacks.row(row);
     if (i + 1 >= nextRow) {
       callbacks.progress(nextPercent);
       nextPercent += 10;
@@ -102,16 +145,9 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
                                    : std::numeric_limits<std::size_t>::max();
     }
   }
-
-  st.counters = filter->counters();
-  st.opticalUsed = st.counters.opticalUpdates > 0 || st.counters.cameraUpdates > 0;
-  st.truthCount = all.count();
-  st.rmseDeg = all.rmse() / kDeg;
-  st.peakDeg = all.peak() / kDeg;
-  st.firstWindow.count = first.count();
-  st.firstWindow.rmseDeg = first.rmse() / kDeg;
-  st.lastWindow.count = last.count();
-  st.lastWindow.rmseDeg = last.rmse() / kDeg;
+  EstimateStats st = estimator.stats();
+  st.rows = n;
+  st.cancelled = cancelled;
   return st;
 }
 

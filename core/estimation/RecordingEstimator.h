@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <optional>
 
 #include "core/estimation/ArmFilter.h"
@@ -93,9 +94,37 @@ struct EstimateCallbacks {
   const std::atomic<bool>* cancel = nullptr;
 };
 
-/// Runs the filter sample by sample. Each sample that carries IMU data and gets an estimate yields
-/// one output row and, when it carries true angles, one error sample. Deterministic: the same
-/// recording and params give bit-identical rows. Any thread (one call per thread).
+/// The offline estimation loop fed one sample at a time, so a recording never has to be in
+/// memory whole (a file read row by row, a session's chunks decoded as they come). Each sample
+/// that carries IMU data and gets an estimate yields one output row and, when it carries true
+/// angles, one error sample. Memory does not grow with the recording: the statistics are summed
+/// as the rows go, and only the error samples of the last 10 s are held (the last drift window
+/// is known only at the end). Deterministic: the same samples and params give bit-identical rows
+/// and statistics, whether pushed one by one or given as a Recording to estimateRecording.
+/// Not thread-safe: one thread feeds it; separate instances may run on separate threads.
+class StreamingEstimator {
+ public:
+  explicit StreamingEstimator(const EstimatorParams& params);
+  ~StreamingEstimator();
+  StreamingEstimator(const StreamingEstimator&) = delete;
+  StreamingEstimator& operator=(const StreamingEstimator&) = delete;
+
+  /// Feeds the next sample (in recording order). True when it yields an output row, which is
+  /// then written to row.
+  bool push(const ArmSample& sample, EstimateRow& row);
+  /// The statistics of the samples pushed so far (the drift windows end at the last IMU sample
+  /// pushed). May be called at any time, more than once.
+  EstimateStats stats() const;
+  /// Samples pushed.
+  std::size_t rows() const { return m_st.rows; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> m_impl;
+  EstimateStats m_st;  // the running counts; stats() completes them
+};
+
+/// Runs a whole recording through a StreamingEstimator. Any thread (one call per thread).
 EstimateStats estimateRecording(const Recording& recording, const EstimatorParams& params,
                                 const EstimateCallbacks& callbacks = {});
 

@@ -4,6 +4,7 @@
 
 #include <QString>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <span>
 #include <string>
@@ -113,6 +114,12 @@ class ClinicalStore {
   /// The stored recording. Throws StorageError(Corrupt) naming the session and chunk when a
   /// chunk cannot be decoded.
   Recording readRecording(qint64 sessionId);
+  /// The stored recording chunk by chunk, for work that must not hold it whole (an hour at 1 kHz
+  /// is 1.3 GB as samples): chunk gets each chunk's samples in time order (valid during the call)
+  /// and returns false to stop; the result is then false. Checks and throws as readRecording,
+  /// the row count after the last chunk.
+  bool readRecordingChunks(qint64 sessionId,
+                           const std::function<bool(std::span<const ArmSample>)>& chunk);
   /// Writes the stored recording in the open format (CSV + sidecar) and audits the export.
   void exportRecording(qint64 sessionId, const std::filesystem::path& csv);
 

@@ -6,6 +6,7 @@
 #include <QTemporaryDir>
 #include <cerrno>
 #include <csignal>
+#include <limits>
 
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
@@ -286,39 +287,61 @@ void ClinicalStore::removeSession(qint64 sessionId) {
   });
 }
 
+bool ClinicalStore::readRecordingChunks(
+    qint64 sessionId, const std::function<bool(std::span<const ArmSample>)>& chunk) {
+  const SessionInfo s = visibleSession(sessionId);
+  struct Stop {};  // thrown out of readChunks when the caller has had enough
+  int expectedSeq = 0;
+  qint64 rows = 0;
+  double lastT = -std::numeric_limits<double>::infinity();
+  try {
+    readChunks(m_db, sessionId, [&](const StoredChunk& c) {
+      const std::string where =
+          "session " + std::to_string(sessionId) + ", chunk " + std::to_string(c.seq) + ": ";
+      if (c.seq != expectedSeq)
+        throw StorageError(Kind::Corrupt,
+                           where + "chunk " + std::to_string(expectedSeq) + " is missing");
+      ++expectedSeq;
+      if (!ChunkCodec::knows(c.codec))
+        throw StorageError(Kind::Corrupt, where + "unknown codec '" + c.codec + "'");
+      std::vector<ArmSample> samples;
+      try {
+        samples = ChunkCodec::decode(std::string(c.data), c.rows, c.codec);
+        if (!samples.empty() && samples.front().t < lastT)
+          throw std::runtime_error("starts before the previous chunk ends");
+      } catch (const std::runtime_error& e) {
+        throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
+      }
+      if (samples.empty()) return;
+      lastT = samples.back().t;
+      rows += static_cast<qint64>(samples.size());
+      if (!chunk(samples)) throw Stop{};
+    });
+  } catch (const Stop&) {
+    return false;
+  }
+  if (rows != s.sampleRows)
+    throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
+                                          std::to_string(rows) + " rows, " + "the session says " +
+                                          std::to_string(s.sampleRows));
+  return true;
+}
+
 Recording ClinicalStore::readRecording(qint64 sessionId) {
   const SessionInfo s = visibleSession(sessionId);
   Recording rec;
   rec.meta = metaFromText(s.calibrationJson, sessionId);
   rec.samples.reserve(static_cast<std::size_t>(s.sampleRows));
-  int expectedSeq = 0;
-  readChunks(m_db, sessionId, [&](const StoredChunk& c) {
-    const std::string where =
-        "session " + std::to_string(sessionId) + ", chunk " + std::to_string(c.seq) + ": ";
-    if (c.seq != expectedSeq)
-      throw StorageError(Kind::Corrupt,
-                         where + "chunk " + std::to_string(expectedSeq) + " is missing");
-    ++expectedSeq;
-    if (!ChunkCodec::knows(c.codec))
-      throw StorageError(Kind::Corrupt, where + "unknown codec '" + c.codec + "'");
-    try {
-      auto samples = ChunkCodec::decode(std::string(c.data), c.rows, c.codec);
-      if (!rec.samples.empty() && !samples.empty() && samples.front().t < rec.samples.back().t)
-        throw std::runtime_error("starts before the previous chunk ends");
-      rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
-    } catch (const std::runtime_error& e) {
-      throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
-    }
+  readRecordingChunks(sessionId, [&](std::span<const ArmSample> samples) {
+    rec.samples.insert(rec.samples.end(), samples.begin(), samples.end());
+    return true;
   });
-  if (static_cast<qint64>(rec.samples.size()) != s.sampleRows)
-    throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
-                                          std::to_string(rec.samples.size()) + " rows, " +
-                                          "the session says " + std::to_string(s.sampleRows));
   return rec;
 }
 
 void ClinicalStore::exportRecording(qint64 sessionId, const std::filesystem::path& csv) {
   const SessionInfo s = visibleSession(sessionId);
+  // Read whole before the file is opened, so a corrupt session leaves no half-written file.
   const Recording rec = readRecording(sessionId);
   {
     RecordingWriter writer(csv, rec.meta, columnsOf(s.columnsMask));

@@ -418,16 +418,32 @@ qint64 Database::insert(const QString& sql, const QVariantList& binds) {
 }
 
 void Database::transaction(const std::function<void()>& body) {
-  if (!m_db.transaction()) fail(Kind::Io, "cannot start a transaction", m_db.lastError().text());
+  if (isPostgres()) {
+    if (!m_db.transaction()) fail(Kind::Io, "cannot start a transaction", m_db.lastError().text());
+  } else {
+    // SQLite: take the write lock at the start. A deferred transaction (Qt's BEGIN) that reads
+    // and then writes fails at once with "database is locked", without waiting, when another
+    // connection wrote in between (its snapshot is stale); two analyses storing their versions at
+    // the same time did. BEGIN IMMEDIATE waits for the lock (the busy timeout) instead.
+    exec("BEGIN IMMEDIATE");
+  }
+  const auto rollback = [&] {
+    if (isPostgres())
+      m_db.rollback();
+    else
+      QSqlQuery(m_db).exec("ROLLBACK");
+  };
   try {
     body();
   } catch (...) {
-    m_db.rollback();
+    rollback();
     throw;
   }
-  if (!m_db.commit()) {
-    const QString why = m_db.lastError().text();
-    m_db.rollback();
+  QSqlQuery commit(m_db);
+  const bool committed = isPostgres() ? m_db.commit() : commit.exec("COMMIT");
+  if (!committed) {
+    const QString why = isPostgres() ? m_db.lastError().text() : commit.lastError().text();
+    rollback();
     fail(Kind::Io, "cannot commit", why);
   }
 }

@@ -3,8 +3,10 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonValue>
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include "core/kinematics/ClinicalAngles.h"
@@ -19,6 +21,8 @@ namespace armtrack::storage {
 namespace {
 
 using Kind = StorageError::Kind;
+
+constexpr std::size_t kCancelCheckRows = 1024;  // rows between two looks at the cancel flag
 
 std::string sessionText(qint64 id) {
   return "session " + std::to_string(id);
@@ -253,27 +257,58 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   EstimatorParams params;
   EstimateColumns rows;
   {
-    // The recording (352 bytes a row in memory) goes as soon as it is estimated, before the
-    // metrics and the blob are made (docs/storage.md, "Memory of an analysis").
-    Recording recording = store.readRecording(sessionId);
+    // The chunks are decoded as the filter goes: the recording (352 bytes a row as samples) is
+    // never in memory whole (docs/storage.md, "Memory of an analysis").
+    RecordingMeta meta = store.recordingMeta(sessionId);
     if (options.calibration) {
       try {
-        applyCalibration(*options.calibration, recording);  // the geometry goes into the meta
+        applyCalibration(*options.calibration, meta);  // the calibrated geometry
       } catch (const std::invalid_argument& e) {
         throw StorageError(Kind::Usage,
                            sessionText(sessionId) + ": the calibration does not fit: " + e.what());
       }
     }
-    params = estimatorParamsFor(recording.meta, result.settings);
-    rows.t.reserve(recording.samples.size());
-    rows.th.reserve(recording.samples.size());
-    rows.sd.reserve(recording.samples.size());
-    rows.status.reserve(recording.samples.size());
-    EstimateCallbacks callbacks;
-    callbacks.row = [&](const EstimateRow& r) { rows.append(r); };
-    callbacks.progress = [&](int p) { progress(p * 9 / 10); };
-    callbacks.cancel = options.cancel;
-    result.stats = estimateRecording(recording, params, callbacks);
+    params = estimatorParamsFor(meta, result.settings);
+    const auto n = static_cast<std::size_t>(std::max<qint64>(info.sampleRows, 0));
+    const auto imuRows = static_cast<std::size_t>(std::max<qint64>(info.imuSamples, 0));
+    rows.t.reserve(imuRows);
+    rows.th.reserve(imuRows);
+    rows.sd.reserve(imuRows);
+    rows.status.reserve(imuRows);
+    StreamingEstimator estimator(params);
+    EstimateRow row;
+    ArmSample corrected;
+    std::size_t done = 0;
+    int nextPercent = 10;
+    std::size_t nextRow = n / 10;
+    bool cancelled = false;
+    const auto one = [&](const ArmSample& s) {
+      if (estimator.push(s, row)) rows.append(row);
+      if (++done >= nextRow) {
+        progress(nextPercent * 9 / 10);
+        nextPercent += 10;
+        nextRow = nextPercent <= 100 ? n * static_cast<std::size_t>(nextPercent) / 100
+                                     : std::numeric_limits<std::size_t>::max();
+      }
+    };
+    store.readRecordingChunks(sessionId, [&](std::span<const ArmSample> samples) {
+      for (const ArmSample& s : samples) {
+        if (options.cancel && done % kCancelCheckRows == 0 && options.cancel->load()) {
+          cancelled = true;
+          return false;
+        }
+        if (options.calibration) {
+          corrected = s;
+          applyCalibration(*options.calibration, corrected);
+          one(corrected);
+        } else {
+          one(s);
+        }
+      }
+      return true;
+    });
+    result.stats = estimator.stats();
+    result.stats.cancelled = cancelled;
   }
   if (result.stats.cancelled) {
     result.cancelled = true;

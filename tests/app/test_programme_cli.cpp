@@ -6,10 +6,10 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 
-#include "tests/app/CliTestSupport.h"
+#include "tests/app/StorageCliFixture.h"
 
-using armtrack::cli::test::CliFixture;
-using armtrack::cli::test::Result;
+using armtrack::test::CliFixture;
+using armtrack::test::Result;
 using armtrack::test::Engine;
 
 namespace {
@@ -35,7 +35,7 @@ class ProgrammeCli : public CliFixture, public ::testing::WithParamInterface<Eng
     }
   }
   QJsonArray list(const char* patient, const char* user = "boss",
-                  const char* password = armtrack::cli::test::kAdminPass) {
+                  const char* password = armtrack::test::kAdminPass) {
     const Result r = run({"programme", "list", "--patient", patient, "--json"}, user, password);
     EXPECT_EQ(r.code, 0) << r.err;
     return QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).array();

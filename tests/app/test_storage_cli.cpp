@@ -21,23 +21,19 @@
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
-#include "tests/app/CliTestSupport.h"
+#include "tests/app/StorageCliFixture.h"
+#include "tests/support/DatabaseEngines.h"
 
 namespace fs = std::filesystem;
 using armtrack::cli::runCli;
 using armtrack::test::Engine;
 
-using armtrack::cli::test::CliFixture;
-using armtrack::cli::test::kAdminPass;
-using armtrack::cli::test::Result;
-
 namespace {
 
-/// On SQLite and on PostgreSQL.
-class StorageCli : public CliFixture, public ::testing::WithParamInterface<Engine> {
- protected:
-  void SetUp() override { init(GetParam()); }
-};
+using armtrack::test::CliFixture;
+using armtrack::test::kAdminPass;
+using armtrack::test::Result;
+using armtrack::test::StorageCli;
 
 /// What only a SQLite file has: the default location, a file that is not a database.
 class StorageCliSqlite : public CliFixture {

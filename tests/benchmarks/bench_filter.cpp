@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/MeasurementJacobian.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 
@@ -114,6 +115,21 @@ void BM_MeasurementJacobian(benchmark::State& state) {
   }
 }
 
+// The same Jacobian differentiated by hand through the recursion (MeasurementJacobian.h).
+void BM_MeasurementJacobianByHand(benchmark::State& state) {
+  const EstimatorParams p = params(FilterKind::Ekf, MeasurementModel::AccelGyro);
+  const auto xs = randomStates();
+  ModelReadings h;
+  ModelJacobian jac;
+  std::size_t i = 0;
+  for (auto _ : state) {
+    predictReadings(p.geometry, p.gUp, true, xs[i], h, &jac);
+    benchmark::DoNotOptimize(jac.data());
+    benchmark::ClobberMemory();
+    i = (i + 1) % xs.size();
+  }
+}
+
 void BM_MeasurementPrediction(benchmark::State& state) {
   const EstimatorParams p = params(FilterKind::Ekf, MeasurementModel::AccelGyro);
   const auto xs = randomStates();
@@ -131,6 +147,7 @@ BENCHMARK(BM_EkfStep_TwoImusKinectAndWebcam)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_UkfStep_TwoImusKinectAndWebcam)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_EkfStep_MethodB)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MeasurementJacobian)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MeasurementJacobianByHand)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MeasurementPrediction)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

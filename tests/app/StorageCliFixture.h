@@ -1,5 +1,5 @@
-// The clinical-records commands of armtrack-cli run in-process against a fresh database of either
-// engine, for the CLI tests (test_storage_cli, test_programme_cli).
+// The fixture of the clinical-records CLI tests: armtrack-cli run in-process against a fresh
+// database of either engine (tests/support/DatabaseEngines.h), signed in as its administrator.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -16,9 +16,7 @@
 #include "core/simulation/Trajectory.h"
 #include "tests/support/DatabaseEngines.h"
 
-namespace armtrack::cli::test {
-
-using armtrack::test::Engine;
+namespace armtrack::test {
 
 struct Result {
   int code;
@@ -55,7 +53,7 @@ class CliFixture : public ::testing::Test {
       ::setenv("ARMTRACK_PASSWORD", password, 1);
     }
     std::ostringstream out, err;
-    const int code = runCli(args, out, err);
+    const int code = armtrack::cli::runCli(args, out, err);
     return {code, out.str(), err.str()};
   }
   std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
@@ -92,4 +90,10 @@ class CliFixture : public ::testing::Test {
   std::string m_db;
 };
 
-}  // namespace armtrack::cli::test
+/// On SQLite and on PostgreSQL.
+class StorageCli : public CliFixture, public ::testing::WithParamInterface<Engine> {
+ protected:
+  void SetUp() override { init(GetParam()); }
+};
+
+}  // namespace armtrack::test

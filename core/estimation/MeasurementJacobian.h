@@ -1,0 +1,32 @@
+// The filter's measurement model with its Jacobian, differentiated by hand through the arm's
+// recursion (core/kinematics/ArmModel.h): the same predictions as armKinematics, and the same
+// derivatives as automatic differentiation over the 15 states, at a fraction of the cost.
+// Qt-free; no allocation.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/kinematics/ArmModel.h"
+
+namespace armtrack {
+
+/// Rows of the model: upper-arm gyroscope, upper-arm accelerometer, forearm gyroscope, forearm
+/// accelerometer, elbow position, wrist position (3 each, eq. 16's order).
+inline constexpr int kMeasurementModelRows = 18;
+/// The state [th'' th' th] (rad/s^2, rad/s, rad), 5 joints each.
+inline constexpr int kMeasurementStates = 15;
+
+using ModelReadings = Eigen::Matrix<double, kMeasurementModelRows, 1>;
+using ModelJacobian = Eigen::Matrix<double, kMeasurementModelRows, kMeasurementStates>;
+
+/// Predicted readings h(x) for the state x (gyroscopes rad/s, accelerometers m/s^2 as specific
+/// force: g up plus, when bodyAccel, the body acceleration; positions m in frame 0), and when jac
+/// is given, dh/dx. gUp is g times the unit vector up in frame 0 (m/s^2). Forward-mode
+/// differentiation written out for the arm: each frame carries its motion's derivatives only with
+/// respect to the joints before it, angular velocity none with respect to accelerations, gravity
+/// only with respect to angles, and positions only with respect to angles.
+void predictReadings(const ArmGeometry& geometry, const Eigen::Vector3d& gUp, bool bodyAccel,
+                     const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
+                     ModelJacobian* jac);
+
+}  // namespace armtrack
