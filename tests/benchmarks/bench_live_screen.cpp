@@ -18,6 +18,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/plugins/PluginRegistry.h"
@@ -57,11 +59,60 @@ class PaintCounter : public QObject {
   }
 };
 
+/// Times every event the GUI thread delivers (outermost deliveries only) and keeps, per kind of
+/// receiver and event, the longest and the total: which work makes the GUI thread stall.
+class ProfilingApplication : public QApplication {
+ public:
+  using QApplication::QApplication;
+  bool profiling = false;
+  struct Figure {
+    double maxMs = 0, totalMs = 0;
+    std::uint64_t count = 0;
+  };
+  std::map<std::string, Figure> figures;
+
+  bool notify(QObject* receiver, QEvent* e) override {
+    if (!profiling || m_depth > 0) return QApplication::notify(receiver, e);
+    // Named before delivery: a DeferredDelete leaves the receiver gone.
+    const char* cls = receiver->metaObject()->className();
+    const char* parent = receiver->parent() ? receiver->parent()->metaObject()->className() : "";
+    const int type = static_cast<int>(e->type());
+    ++m_depth;
+    QElapsedTimer t;
+    t.start();
+    const bool r = QApplication::notify(receiver, e);
+    const double ms = t.nsecsElapsed() * 1e-6;
+    --m_depth;
+    if (ms >= 0.05) {
+      Figure& f = figures[std::string(cls) + "<" + parent + " " + std::to_string(type)];
+      f.maxMs = std::max(f.maxMs, ms);
+      f.totalMs += ms;
+      ++f.count;
+    }
+    return r;
+  }
+
+  /// The slowest kinds of work since the last call, longest first.
+  void print(double seconds) {
+    std::vector<std::pair<std::string, Figure>> v(figures.begin(), figures.end());
+    std::sort(v.begin(), v.end(),
+              [](const auto& a, const auto& b) { return a.second.maxMs > b.second.maxMs; });
+    for (std::size_t i = 0; i < std::min<std::size_t>(6, v.size()); ++i)
+      std::printf("    %-58s max %6.1f ms, %6.1f ms/s, %5.1f /s\n", v[i].first.c_str(),
+                  v[i].second.maxMs, v[i].second.totalMs / seconds,
+                  static_cast<double>(v[i].second.count) / seconds);
+    figures.clear();
+  }
+
+ private:
+  int m_depth = 0;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   armtrack::ui::setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
+  ProfilingApplication app(argc, argv);
   QCommandLineParser cli;
   cli.addHelpOption();
   cli.addOption({QStringLiteral("seconds"), QStringLiteral("Length of the run (s)."),
@@ -75,7 +126,11 @@ int main(int argc, char** argv) {
   cli.addOption({QStringLiteral("hide"),
                  QStringLiteral("Hide a part to see what it costs: 3d, plots, table."),
                  QStringLiteral("part")});
+  cli.addOption({QStringLiteral("profile"),
+                 QStringLiteral("Print, each interval, the GUI thread's slowest kinds of work "
+                                "(receiver class < parent class, event type).")});
   cli.process(app);
+  app.profiling = cli.isSet(QStringLiteral("profile"));
   const double seconds = cli.value(QStringLiteral("seconds")).toDouble();
   const double interval = cli.value(QStringLiteral("interval")).toDouble();
   const QStringList wh = cli.value(QStringLiteral("size")).split(u'x');
@@ -155,6 +210,7 @@ int main(int argc, char** argv) {
                 (m.drains - prev.drains) / dt, maxStallMs, 100.0 * (m.cpu - prev.cpu) / dt,
                 residentMb(), heapInUseMb());
     std::fflush(stdout);
+    if (app.profiling) app.print(dt);
     maxStallAllMs = std::max(maxStallAllMs, maxStallMs);
     maxStallMs = 0;
     prev = m;
