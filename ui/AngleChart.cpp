@@ -200,16 +200,25 @@ void AngleChart::draw(const AngleTrace& trace, const AngleTrace* overlay, double
   if (!(t1 > t0)) t1 = t0 + 1.0;
   const int columns = std::max(1, static_cast<int>(m_chart->plotArea().width() / 2));
   m_columns = columns;
-  decimateAngle(trace, m_angle, t0, t1, columns, m_points, kAxisLimitDeg);
+  if (m_incremental) {
+    m_decimator.update(trace, m_angle, (t1 - t0) / columns, decor.sigmaFactor, kAxisLimitDeg);
+    m_decimator.points(t0, t1, m_points, m_upper, m_lower);
+  } else {
+    decimateAngle(trace, m_angle, t0, t1, columns, m_points, kAxisLimitDeg);
+    decimateBand(trace, m_angle, t0, t1, columns, decor.sigmaFactor, m_upper, m_lower,
+                 kAxisLimitDeg);
+  }
   m_pointsDrawn = static_cast<int>(m_points.size());
   m_line->replace(toList(m_points));
-  decimateBand(trace, m_angle, t0, t1, columns, decor.sigmaFactor, m_upper, m_lower, kAxisLimitDeg);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const QPointF& p : m_points) {
     if (p.x() < t0 || p.x() > t1) continue;
     lo = std::min(lo, p.y());
     hi = std::max(hi, p.y());
   }
+  m_plotted = std::isfinite(lo) ? std::make_pair(lo, hi)
+                                : std::make_pair(std::numeric_limits<double>::quiet_NaN(),
+                                                 std::numeric_limits<double>::quiet_NaN());
   // The band widens the axis only as far as the data themselves reach plus 30 deg, so a
   // sigma of 1e3 deg (no optical data for a long time) does not squash the angle flat.
   for (std::size_t i = 0; i < m_upper.size(); ++i) {
@@ -259,6 +268,11 @@ void AngleChart::draw(const AngleTrace& trace, const AngleTrace* overlay, double
     m_x->setRange(t0, t1);
     m_x->setTickInterval(niceStep(t1 - t0, 6, {1, 2, 5, 10, 15, 30, 60, 120, 300, 600}));
   }
+}
+
+void AngleChart::setIncremental(bool on) {
+  m_incremental = on;
+  m_decimator.clear();
 }
 
 void AngleChart::mousePressEvent(QMouseEvent* event) {

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace armtrack::ui {
 
@@ -32,6 +33,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   for (int a = 0; a < kAngleCount; ++a) {
     auto* c = new AngleChart(a, plots);
     c->setMinimumHeight(0);
+    c->setIncremental(m_mode == Mode::Live);
     connect(c, &AngleChart::clicked, this, [this](double t) {
       if (m_mode == Mode::Review) emit cursorRequested(t);
     });
@@ -69,6 +71,7 @@ void AnglePlotPanel::retranslateUi() {
 
 void AnglePlotPanel::setMode(Mode mode) {
   m_mode = mode;
+  for (AngleChart* c : m_charts) c->setIncremental(mode == Mode::Live);
   m_trace.setKeepSeconds(mode == Mode::Live ? m_window + 1.0
                                             : std::numeric_limits<double>::infinity());
   markDirty();
@@ -182,13 +185,20 @@ void AnglePlotPanel::refresh() {
   lo.fill(std::numeric_limits<double>::infinity());
   hi.fill(-std::numeric_limits<double>::infinity());
   const auto& rows = m_trace.samples();
-  for (std::size_t i = m_trace.lowerBound(m_t0); i < rows.size() && rows[i].t <= m_t1; ++i)
-    for (std::size_t a = 0; a < kAngleCount; ++a) {
-      const double v = rows[i].deg[a];
-      if (!std::isfinite(v)) continue;
-      lo[a] = std::min(lo[a], v);
-      hi[a] = std::max(hi[a], v);
-    }
+  // A plotted angle's extremes are those of its drawn columns; a hidden one is scanned.
+  std::array<bool, kAngleCount> scan{};
+  for (std::size_t a = 0; a < kAngleCount; ++a) {
+    scan[a] = !m_charts[a]->isVisible();
+    if (!scan[a]) std::tie(lo[a], hi[a]) = m_charts[a]->plottedRange();
+  }
+  if (std::find(scan.begin(), scan.end(), true) != scan.end())
+    for (std::size_t i = m_trace.lowerBound(m_t0); i < rows.size() && rows[i].t <= m_t1; ++i)
+      for (std::size_t a = 0; a < kAngleCount; ++a) {
+        const double v = rows[i].deg[a];
+        if (!scan[a] || !std::isfinite(v)) continue;
+        lo[a] = std::min(lo[a], v);
+        hi[a] = std::max(hi[a], v);
+      }
   for (std::size_t a = 0; a < kAngleCount; ++a)
     if (!std::isfinite(lo[a])) lo[a] = hi[a] = std::numeric_limits<double>::quiet_NaN();
   const AngleSample* current = nullptr;
