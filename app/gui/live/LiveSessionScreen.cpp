@@ -1,6 +1,7 @@
 #include "app/gui/live/LiveSessionScreen.h"
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -342,9 +343,19 @@ void LiveSessionScreen::markEvent() {
 }
 
 void LiveSessionScreen::drain() {
+  QElapsedTimer clock;
+  clock.start();
+  double mark = 0;
+  const auto lap = [&](double& longest) {
+    const double now = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
+    longest = std::max(longest, now - mark);
+    mark = now;
+  };
   if (!m_controller->drainInto(m_rows, m_sessionEvents)) return;
   const std::shared_ptr<session::Session>& s = m_controller->session();
   ++m_drains;
+  lap(m_times.takeMs);
+  m_times.mostRows = std::max(m_times.mostRows, m_rows.size());
   if (!m_rows.empty()) {
     m_estimates += m_rows.size();
     m_samples.clear();
@@ -369,8 +380,11 @@ void LiveSessionScreen::drain() {
     m_reps->showCount(m_counter);
   }
   for (const std::string& e : m_sessionEvents) addMessage(QString::fromStdString(e));
+  lap(m_times.feedMs);
   m_plots->refreshIfChanged();
+  lap(m_times.plotsMs);
   m_arm->updateIfChanged();
+  lap(m_times.armMs);
   if (m_drains % kStatsEveryTicks == 0) {
     m_readouts->refreshIfChanged();
     m_health->setStats(s->stats());
@@ -383,7 +397,9 @@ void LiveSessionScreen::drain() {
       setState(State::Paused);
     }
     updateStatus();
+    lap(m_times.statsMs);
   }
+  m_times.wholeMs = std::max(m_times.wholeMs, static_cast<double>(clock.nsecsElapsed()) * 1e-6);
 }
 
 void LiveSessionScreen::showBanner(std::function<QString()> text, bool error) {

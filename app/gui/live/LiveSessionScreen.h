@@ -63,6 +63,16 @@ class LiveSessionScreen : public QWidget {
   std::uint64_t drains() const { return m_drains; }
   std::uint64_t estimatesDrained() const { return m_estimates; }
 
+  /// The longest time (ms) each part of a drain took since the last resetDrainTimes(), timed
+  /// with QElapsedTimer: taking the results, feeding the views and the counter, redrawing the
+  /// plots, updating the 3D view, and the device figures (for the benchmark).
+  struct DrainTimes {
+    double takeMs = 0, feedMs = 0, plotsMs = 0, armMs = 0, statsMs = 0, wholeMs = 0;
+    std::size_t mostRows = 0;  ///< the largest batch of estimates drained at once
+  };
+  const DrainTimes& drainTimes() const { return m_times; }
+  void resetDrainTimes() { m_times = {}; }
+
   ui::ArmView* armView() const { return m_arm; }
   ui::AnglePlotPanel* plots() const { return m_plots; }
   ui::AngleReadouts* readouts() const { return m_readouts; }
@@ -119,6 +129,7 @@ class LiveSessionScreen : public QWidget {
   QTimer m_drainTimer;
   double m_drainHz = 40.0;
   std::uint64_t m_drains = 0, m_estimates = 0;
+  DrainTimes m_times;
   double m_sessionTime = 0.0;
   double m_lastOptical = -1e9;
   double m_recordedSeconds = 0.0, m_recordingSince = -1.0;
