@@ -16,6 +16,8 @@ class QValueAxis;
 
 namespace armtrack::ui {
 
+class AngleTraceItem;
+
 /// What is drawn over the angle besides its samples.
 struct ChartDecor {
   std::optional<std::pair<double, double>> targetDeg;  ///< min, max
@@ -73,6 +75,7 @@ class AngleChart : public QChartView {
   QLineSeries* m_targetLower;
   QAreaSeries* m_target;
   QLineSeries* m_cursor;
+  AngleTraceItem* m_trace;
   std::vector<QLineSeries*> m_markers;
   double m_yMin = -30.0, m_yMax = 120.0;  // a multiple of the initial 30 deg step
   bool m_dark = false;
