@@ -54,7 +54,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   const bool dark = isDark(palette());
   for (AngleChart* c : m_charts) c->setDark(dark);
   connect(&m_timer, &QTimer::timeout, this, [this] {
-    if (m_dirty && isVisible()) refresh();
+    if (m_dirty && isVisible()) redraw(false);
   });
   setRefreshRate(30.0);
   retranslateUi();
@@ -159,7 +159,7 @@ void AnglePlotPanel::setRefreshRate(double hz) {
   }
 }
 
-void AnglePlotPanel::refresh() {
+void AnglePlotPanel::redraw(bool table) {
   m_dirty = false;
   ++m_redraws;
   if (m_mode == Mode::Live) {
@@ -181,6 +181,10 @@ void AnglePlotPanel::refresh() {
     if (m_charts[a]->isVisible()) m_charts[a]->draw(m_trace, overlay, m_t0, m_t1, decor);
   }
   // The table: the value at the cursor (review) or the newest (live), and the plotted range.
+  if (m_mode == Mode::Live && !table && m_tableClock.isValid() &&
+      m_tableClock.elapsed() < 1000.0 / kTableHz)
+    return;
+  m_tableClock.start();
   std::array<double, kAngleCount> lo, hi;
   lo.fill(std::numeric_limits<double>::infinity());
   hi.fill(-std::numeric_limits<double>::infinity());

@@ -301,7 +301,8 @@ void LiveSessionScreen::stop() {
   if (m_state != State::Live && m_state != State::Recording && m_state != State::Paused &&
       m_state != State::Starting)
     return;
-  drain();  // what has arrived so far
+  drain();             // what has arrived so far
+  m_plots->refresh();  // the table too (live, it is refreshed a few times a second)
   if (m_gate) m_gate->setRecording(false);
   if (m_recordingSince >= 0) m_recordedSeconds += m_sessionTime - m_recordingSince;
   m_recordingSince = -1;
