@@ -36,8 +36,8 @@ namespace armtrack::app::gui {
 /// the plots, readouts, counter and 3D view in batches; messages to the list; figures to the
 /// device health a few times a second. Nothing on the GUI thread waits for a device, the disk or
 /// the database: the session starts and stops in SessionController's thread, rows are written
-/// by the session's recorder thread. (Record and Stop each make one short call into the
-/// records' store, which lives on this thread.) GUI thread only.
+/// by the session's recorder thread, and the recording target begins and finishes without the
+/// GUI thread waiting (RecordingTarget::beginAsync, finishAsync). GUI thread only.
 class LiveSessionScreen : public QWidget {
   Q_OBJECT
  public:
@@ -116,6 +116,9 @@ class LiveSessionScreen : public QWidget {
   void addMessage(const QString& text);
   void onStarted(const QString& error);
   void onStopped(quint64 recordedRows, quint64 rowsToRecord, const QString& recorderError);
+  void finishStopping(const QString& summary);
+  /// Rows reach the recording from now on.
+  void openGate();
   void updateButtons();
   void updateStatus();
 
@@ -125,7 +128,8 @@ class LiveSessionScreen : public QWidget {
   std::shared_ptr<RecordingGate> m_gate;
   SessionController* m_controller;
   State m_state = State::Idle;
-  bool m_begun = false;  // the recording target was begun
+  bool m_begun = false;      // the recording target was begun
+  bool m_beginning = false;  // it is beginning (Record was pressed; rows flow once it has)
   QTimer m_drainTimer;
   double m_drainHz = 40.0;
   std::uint64_t m_drains = 0, m_estimates = 0;
