@@ -21,17 +21,30 @@ QString RecordsRecordingTarget::describe() const {
       .arg(m_patient);
 }
 
+std::function<QString(storage::ClinicalStore&)> RecordsRecordingTarget::beginJob(
+    const RecordingMeta& meta, const RecordingColumns& columns) const {
+  // Holds the state, not the target: a queued call may outlive the screen that asked for it.
+  return [state = m_state, url = m_records.url(), patient = m_patient, protocol = m_protocol, meta,
+          columns](storage::ClinicalStore& store) {
+    if (!state->inner)
+      state->inner =
+          std::make_unique<app::gui::DatabaseRecordingTarget>(store, url, patient, protocol);
+    const QString why = state->inner->begin(meta, columns);
+    state->sessionId = state->inner->sessionId();
+    return why;
+  };
+}
+
+std::function<QString(storage::ClinicalStore&)> RecordsRecordingTarget::finishJob(
+    std::uint64_t rows, bool complete, const QString& events) const {
+  return [state = m_state, rows, complete, events](storage::ClinicalStore&) {
+    return state->inner->finish(rows, complete, events);
+  };
+}
+
 QString RecordsRecordingTarget::begin(const RecordingMeta& meta, const RecordingColumns& columns) {
   try {
-    return m_records.callBlocking([&, state = m_state,
-                                   url = m_records.url()](storage::ClinicalStore& store) {
-      if (!state->inner)
-        state->inner =
-            std::make_unique<app::gui::DatabaseRecordingTarget>(store, url, m_patient, m_protocol);
-      const QString why = state->inner->begin(meta, columns);
-      state->sessionId = state->inner->sessionId();
-      return why;
-    });
+    return m_records.callBlocking(beginJob(meta, columns));
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
@@ -40,17 +53,7 @@ QString RecordsRecordingTarget::begin(const RecordingMeta& meta, const Recording
 void RecordsRecordingTarget::beginAsync(const RecordingMeta& meta, const RecordingColumns& columns,
                                         QObject* context, Done done) {
   m_records.call(
-      context,
-      [state = m_state, url = m_records.url(), patient = m_patient, protocol = m_protocol, meta,
-       columns](storage::ClinicalStore& store) {
-        if (!state->inner)
-          state->inner =
-              std::make_unique<app::gui::DatabaseRecordingTarget>(store, url, patient, protocol);
-        const QString why = state->inner->begin(meta, columns);
-        state->sessionId = state->inner->sessionId();
-        return why;
-      },
-      [done](const QString& why) { done(why); },
+      context, beginJob(meta, columns), [done](const QString& why) { done(why); },
       [done](const RecordsFailure& f) { done(f.message); });
 }
 
@@ -65,9 +68,7 @@ std::unique_ptr<RecordingSink> RecordsRecordingTarget::open(const RecordingMeta&
 QString RecordsRecordingTarget::finish(std::uint64_t rows, bool complete, const QString& events) {
   if (m_state->sessionId == 0) return {};
   try {
-    return m_records.callBlocking([&, state = m_state](storage::ClinicalStore&) {
-      return state->inner->finish(rows, complete, events);
-    });
+    return m_records.callBlocking(finishJob(rows, complete, events));
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
@@ -77,11 +78,7 @@ void RecordsRecordingTarget::finishAsync(std::uint64_t rows, bool complete, cons
                                          QObject* context, Done done) {
   if (m_state->sessionId == 0) return done({});
   m_records.call(
-      context,
-      [state = m_state, rows, complete, events](storage::ClinicalStore&) {
-        return state->inner->finish(rows, complete, events);
-      },
-      [done](const QString& line) { done(line); },
+      context, finishJob(rows, complete, events), [done](const QString& line) { done(line); },
       [done](const RecordsFailure& f) { done(f.message); });
 }
 

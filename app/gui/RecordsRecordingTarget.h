@@ -4,6 +4,7 @@
 #pragma once
 
 #include <atomic>
+#include <functional>
 #include <memory>
 
 #include "app/gui/live/RecordingTarget.h"
@@ -38,6 +39,11 @@ class RecordsRecordingTarget final : public app::gui::RecordingTarget {
     std::unique_ptr<app::gui::DatabaseRecordingTarget> inner;  // used on the records thread
     std::atomic<qint64> sessionId{0};
   };
+  /// The work begin and finish do on the records thread.
+  std::function<QString(storage::ClinicalStore&)> beginJob(const RecordingMeta& meta,
+                                                           const RecordingColumns& columns) const;
+  std::function<QString(storage::ClinicalStore&)> finishJob(std::uint64_t rows, bool complete,
+                                                            const QString& events) const;
   RecordsService& m_records;
   QString m_patient, m_protocol;
   std::shared_ptr<State> m_state;
