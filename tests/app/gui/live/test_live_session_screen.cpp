@@ -257,9 +257,11 @@ class TestLiveSessionScreen : public QObject {
     screen.start();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Recording, 10000);
     QVERIFY(target->sessionId() > 0);
-    QVERIFY(waitForSessionTime(screen, 1.0));
+    // 2.5 s of recording (it starts once the session has begun in the records).
+    const double since = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, since + 1.0));
     screen.markEvent();
-    QVERIFY(waitForSessionTime(screen, 2.5));
+    QVERIFY(waitForSessionTime(screen, since + 2.5));
     QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
     screen.stop();
     QVERIFY(stopped.wait(15000));
