@@ -248,6 +248,18 @@
         <source>%1 %2 %L3 Hz</source>
         <translation>%1 %2 %L3 Hz</translation>
     </message>
+    <message>
+        <source>%1 %L2 % (low: charge it after the session)</source>
+        <translation>%1 %L2 % (schwach: nach der Sitzung laden)</translation>
+    </message>
+    <message>
+        <source>%1 %L2 %</source>
+        <translation>%1 %L2 %</translation>
+    </message>
+    <message>
+        <source>Battery: %1.</source>
+        <translation>Akku: %1.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::LiveSessionScreen</name>
@@ -3715,6 +3727,30 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>%L1 Hz</source>
         <translation>%L1 Hz</translation>
+    </message>
+    <message>
+        <source>Battery low: charge the device after the session</source>
+        <translation>Akku schwach: Gerät nach der Sitzung laden</translation>
+    </message>
+    <message>
+        <source>The device does not report its battery</source>
+        <translation>Das Gerät meldet seinen Akkustand nicht</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>nicht gemeldet</translation>
+    </message>
+    <message>
+        <source>%L1 %, low</source>
+        <translation>%L1 %, schwach</translation>
+    </message>
+    <message>
+        <source>%L1 %</source>
+        <translation>%L1 %</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Akku</translation>
     </message>
 </context>
 <context>

@@ -248,6 +248,18 @@
         <source>%1 %2 %L3 Hz</source>
         <translation>%1 %2 %L3 Hz</translation>
     </message>
+    <message>
+        <source>%1 %L2 % (low: charge it after the session)</source>
+        <translation>%1 %L2 % (baja: cárguela después de la sesión)</translation>
+    </message>
+    <message>
+        <source>%1 %L2 %</source>
+        <translation>%1 %L2 %</translation>
+    </message>
+    <message>
+        <source>Battery: %1.</source>
+        <translation>Batería: %1.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::LiveSessionScreen</name>
@@ -3715,6 +3727,30 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>%L1 Hz</source>
         <translation>%L1 Hz</translation>
+    </message>
+    <message>
+        <source>Battery low: charge the device after the session</source>
+        <translation>Batería baja: cargue el dispositivo después de la sesión</translation>
+    </message>
+    <message>
+        <source>The device does not report its battery</source>
+        <translation>El dispositivo no informa de su batería</translation>
+    </message>
+    <message>
+        <source>not reported</source>
+        <translation>no informado</translation>
+    </message>
+    <message>
+        <source>%L1 %, low</source>
+        <translation>%L1 %, baja</translation>
+    </message>
+    <message>
+        <source>%L1 %</source>
+        <translation>%L1 %</translation>
+    </message>
+    <message>
+        <source>Battery</source>
+        <translation>Batería</translation>
     </message>
 </context>
 <context>

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "ui/AngleTableModel.h"
+#include "ui/AngleTraceItem.h"
 #include "ui/Fonts.h"
 
 namespace armtrack::ui {
@@ -95,8 +96,11 @@ AngleChart::AngleChart(int angle, QWidget* parent)
   attach(m_band);
   m_overlay = new QLineSeries;
   attach(m_overlay);
-  m_line = new QLineSeries;
+  m_line = new QLineSeries;  // empty: placed for mapToValue(); AngleTraceItem draws the angle
   attach(m_line);
+  m_trace = new AngleTraceItem(m_chart);
+  m_trace->setZValue(1000);  // above the series (the target band, the overlay)
+  connect(m_chart, &QChart::plotAreaChanged, this, [this] { m_trace->relayout(); });
   m_cursor = new QLineSeries;
   attach(m_cursor);
   m_x->setRange(0, 10);
@@ -139,10 +143,12 @@ void AngleChart::setDark(bool dark) {
   }
   const QColor c = angleColour(m_angle, dark);
   setPen(m_line, c, 2.0);
+  m_trace->setLinePen(m_line->pen());
   QColor band = c;
   band.setAlpha(dark ? 70 : 55);
   m_band->setBrush(band);
   m_band->setPen(Qt::NoPen);
+  m_trace->setBandColour(band);
   QColor target = dark ? QColor(0x4c, 0xc2, 0x6a) : QColor(0x2e, 0x9e, 0x4f);
   target.setAlpha(dark ? 60 : 45);
   m_target->setBrush(target);
@@ -200,24 +206,31 @@ void AngleChart::draw(const AngleTrace& trace, const AngleTrace* overlay, double
   if (!(t1 > t0)) t1 = t0 + 1.0;
   const int columns = std::max(1, static_cast<int>(m_chart->plotArea().width() / 2));
   m_columns = columns;
-  decimateAngle(trace, m_angle, t0, t1, columns, m_points, kAxisLimitDeg);
+  if (m_incremental) {
+    m_decimator.update(trace, m_angle, (t1 - t0) / columns, decor.sigmaFactor, kAxisLimitDeg);
+    m_decimator.points(t0, t1, m_points, m_upper, m_lower);
+  } else {
+    decimateAngle(trace, m_angle, t0, t1, columns, m_points, kAxisLimitDeg);
+    decimateBand(trace, m_angle, t0, t1, columns, decor.sigmaFactor, m_upper, m_lower,
+                 kAxisLimitDeg);
+  }
   m_pointsDrawn = static_cast<int>(m_points.size());
-  m_line->replace(toList(m_points));
-  decimateBand(trace, m_angle, t0, t1, columns, decor.sigmaFactor, m_upper, m_lower, kAxisLimitDeg);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const QPointF& p : m_points) {
     if (p.x() < t0 || p.x() > t1) continue;
     lo = std::min(lo, p.y());
     hi = std::max(hi, p.y());
   }
+  m_plotted = std::isfinite(lo) ? std::make_pair(lo, hi)
+                                : std::make_pair(std::numeric_limits<double>::quiet_NaN(),
+                                                 std::numeric_limits<double>::quiet_NaN());
   // The band widens the axis only as far as the data themselves reach plus 30 deg, so a
   // sigma of 1e3 deg (no optical data for a long time) does not squash the angle flat.
   for (std::size_t i = 0; i < m_upper.size(); ++i) {
     m_upper[i].setY(std::min(m_upper[i].y(), hi + 30.0));
     m_lower[i].setY(std::max(m_lower[i].y(), lo - 30.0));
   }
-  m_bandUpper->replace(toList(m_upper));
-  m_bandLower->replace(toList(m_lower));
+  m_trace->setPoints(m_points, m_upper, m_lower);
 
   std::vector<QPointF> ov;
   if (overlay) decimateAngle(*overlay, m_angle, t0, t1, columns, ov, kAxisLimitDeg);
@@ -259,6 +272,11 @@ void AngleChart::draw(const AngleTrace& trace, const AngleTrace* overlay, double
     m_x->setRange(t0, t1);
     m_x->setTickInterval(niceStep(t1 - t0, 6, {1, 2, 5, 10, 15, 30, 60, 120, 300, 600}));
   }
+}
+
+void AngleChart::setIncremental(bool on) {
+  m_incremental = on;
+  m_decimator.clear();
 }
 
 void AngleChart::mousePressEvent(QMouseEvent* event) {

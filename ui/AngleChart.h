@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QChartView>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -14,6 +15,8 @@ class QAreaSeries;
 class QValueAxis;
 
 namespace armtrack::ui {
+
+class AngleTraceItem;
 
 /// What is drawn over the angle besides its samples.
 struct ChartDecor {
@@ -39,6 +42,12 @@ class AngleChart : public QChartView {
   int pointsDrawn() const { return m_pointsDrawn; }
   /// Pixel columns the last draw decimated to (two pixels each).
   int columnsDrawn() const { return m_columns; }
+  /// Live: decimate incrementally (ColumnDecimator, columns anchored to time) instead of the
+  /// whole window at every draw. For a trace that only grows at its end and loses its oldest.
+  void setIncremental(bool on);
+  /// The smallest and largest value of the angle's line in [t0, t1] at the last draw (NaN when
+  /// none): the samples the decimation kept, so the extremes of the plotted columns.
+  std::pair<double, double> plottedRange() const { return m_plotted; }
 
  signals:
   /// The user clicked at time t (s) on the plot (review: moves the cursor).
@@ -66,12 +75,17 @@ class AngleChart : public QChartView {
   QLineSeries* m_targetLower;
   QAreaSeries* m_target;
   QLineSeries* m_cursor;
+  AngleTraceItem* m_trace;
   std::vector<QLineSeries*> m_markers;
   double m_yMin = -30.0, m_yMax = 120.0;  // a multiple of the initial 30 deg step
   bool m_dark = false;
   int m_pointsDrawn = 0;
   int m_columns = 0;
   std::vector<QPointF> m_points, m_upper, m_lower;
+  bool m_incremental = false;
+  ColumnDecimator m_decimator;
+  std::pair<double, double> m_plotted{std::numeric_limits<double>::quiet_NaN(),
+                                      std::numeric_limits<double>::quiet_NaN()};
 };
 
 /// The colour of each angle's line (distinct in both palettes).

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace armtrack::ui {
 
@@ -33,6 +34,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   for (int a = 0; a < kAngleCount; ++a) {
     auto* c = new AngleChart(a, plots);
     c->setMinimumHeight(0);
+    c->setIncremental(m_mode == Mode::Live);
     connect(c, &AngleChart::clicked, this, [this](double t) {
       if (m_mode == Mode::Review) emit cursorRequested(t);
     });
@@ -53,7 +55,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   const bool dark = isDark(palette());
   for (AngleChart* c : m_charts) c->setDark(dark);
   connect(&m_timer, &QTimer::timeout, this, [this] {
-    if (m_dirty && isVisible()) refresh();
+    if (m_dirty && isVisible()) redraw(false);
   });
   setRefreshRate(30.0);
   retranslateUi();
@@ -70,6 +72,7 @@ void AnglePlotPanel::retranslateUi() {
 
 void AnglePlotPanel::setMode(Mode mode) {
   m_mode = mode;
+  for (AngleChart* c : m_charts) c->setIncremental(mode == Mode::Live);
   m_trace.setKeepSeconds(mode == Mode::Live ? m_window + 1.0
                                             : std::numeric_limits<double>::infinity());
   markDirty();
@@ -157,7 +160,7 @@ void AnglePlotPanel::setRefreshRate(double hz) {
   }
 }
 
-void AnglePlotPanel::refresh() {
+void AnglePlotPanel::redraw(bool table) {
   m_dirty = false;
   ++m_redraws;
   if (m_mode == Mode::Live) {
@@ -179,17 +182,28 @@ void AnglePlotPanel::refresh() {
     if (m_charts[a]->isVisible()) m_charts[a]->draw(m_trace, overlay, m_t0, m_t1, decor);
   }
   // The table: the value at the cursor (review) or the newest (live), and the plotted range.
+  if (m_mode == Mode::Live && !table && m_tableClock.isValid() &&
+      m_tableClock.elapsed() < 1000.0 / kTableHz)
+    return;
+  m_tableClock.start();
   std::array<double, kAngleCount> lo, hi;
   lo.fill(std::numeric_limits<double>::infinity());
   hi.fill(-std::numeric_limits<double>::infinity());
   const auto& rows = m_trace.samples();
-  for (std::size_t i = m_trace.lowerBound(m_t0); i < rows.size() && rows[i].t <= m_t1; ++i)
-    for (std::size_t a = 0; a < kAngleCount; ++a) {
-      const double v = rows[i].deg[a];
-      if (!std::isfinite(v)) continue;
-      lo[a] = std::min(lo[a], v);
-      hi[a] = std::max(hi[a], v);
-    }
+  // A plotted angle's extremes are those of its drawn columns; a hidden one is scanned.
+  std::array<bool, kAngleCount> scan{};
+  for (std::size_t a = 0; a < kAngleCount; ++a) {
+    scan[a] = !m_charts[a]->isVisible();
+    if (!scan[a]) std::tie(lo[a], hi[a]) = m_charts[a]->plottedRange();
+  }
+  if (std::find(scan.begin(), scan.end(), true) != scan.end())
+    for (std::size_t i = m_trace.lowerBound(m_t0); i < rows.size() && rows[i].t <= m_t1; ++i)
+      for (std::size_t a = 0; a < kAngleCount; ++a) {
+        const double v = rows[i].deg[a];
+        if (!scan[a] || !std::isfinite(v)) continue;
+        lo[a] = std::min(lo[a], v);
+        hi[a] = std::max(hi[a], v);
+      }
   for (std::size_t a = 0; a < kAngleCount; ++a)
     if (!std::isfinite(lo[a])) lo[a] = hi[a] = std::numeric_limits<double>::quiet_NaN();
   const AngleSample* current = nullptr;

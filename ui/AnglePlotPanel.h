@@ -4,6 +4,7 @@
 // review: a whole session with a time cursor and a second session overlaid.
 #pragma once
 
+#include <QElapsedTimer>
 #include <QTimer>
 #include <QWidget>
 #include <array>
@@ -57,6 +58,8 @@ class AnglePlotPanel : public QWidget {
   /// Shows or hides the numeric table beside the plots.
   void setTableVisible(bool visible);
 
+  /// Live, the table's figures change at most this many times a second (refreshIfChanged()).
+  static constexpr double kTableHz = 5.0;
   /// At most this many redraws a second (default 30); 0 redraws only on refresh().
   void setRefreshRate(double hz);
 
@@ -69,12 +72,14 @@ class AnglePlotPanel : public QWidget {
   std::uint64_t redraws() const { return m_redraws; }
 
  public slots:
-  /// Redraws now.
-  void refresh();
+  /// Redraws now, the table too.
+  void refresh() { redraw(true); }
   /// Redraws if something changed since the last redraw (for an owner that drives the redraws
-  /// from its own timer, with setRefreshRate(0), so that every view repaints in one pass).
+  /// from its own timer, with setRefreshRate(0), so that every view repaints in one pass). Live,
+  /// the table's figures change at most kTableHz times a second: enough to read, and the table
+  /// repainting at the plots' rate cost as much as a plot.
   void refreshIfChanged() {
-    if (m_dirty) refresh();
+    if (m_dirty) redraw(false);
   }
 
  signals:
@@ -102,7 +107,9 @@ class AnglePlotPanel : public QWidget {
   AngleTableModel* m_table = nullptr;
   ChartDecor m_decor;
   std::optional<int> m_targetAngle;
+  void redraw(bool table);
   QTimer m_timer;
+  QElapsedTimer m_tableClock;
   bool m_dirty = true;
   double m_t0 = 0.0, m_t1 = 20.0;
   std::uint64_t m_redraws = 0;

@@ -54,6 +54,7 @@ std::size_t AngleTrace::append(const std::vector<AngleSample>& rows) {
     }
     m_rows.push_back(r);
     ++kept;
+    ++m_appended;
   }
   if (std::isfinite(m_keep) && !m_rows.empty()) {
     const double oldest = m_rows.back().t - m_keep;
@@ -64,6 +65,7 @@ std::size_t AngleTrace::append(const std::vector<AngleSample>& rows) {
 
 void AngleTrace::clear() {
   m_rows.clear();
+  ++m_clears;
   m_refused = 0;
 }
 
@@ -174,6 +176,90 @@ void decimateBand(const AngleTrace& trace, int angle, double t0, double t1, int 
     ++count;
   }
   flush();
+}
+
+void ColumnDecimator::clear() {
+  m_columns.clear();
+  m_width = 0;
+}
+
+void ColumnDecimator::update(const AngleTrace& trace, int angle, double columnSeconds, double k,
+                             double limitDeg) {
+  if (!(columnSeconds > 0) || !std::isfinite(columnSeconds)) return clear();
+  const auto& rows = trace.samples();
+  std::uint64_t fresh = trace.appended() - m_seen;
+  if (columnSeconds != m_width || k != m_k || limitDeg != m_limit || angle != m_angle ||
+      trace.clears() != m_clears || fresh > rows.size() || trace.appended() < m_seen) {
+    m_columns.clear();
+    m_width = columnSeconds;
+    m_k = k;
+    m_limit = limitDeg;
+    m_angle = angle;
+    m_clears = trace.clears();
+    fresh = rows.size();
+  }
+  for (std::size_t i = rows.size() - static_cast<std::size_t>(fresh); i < rows.size(); ++i)
+    fold(rows[i]);
+  m_seen = trace.appended();
+  if (!rows.empty()) {
+    const auto first = static_cast<std::int64_t>(std::floor(rows.front().t / m_width));
+    while (!m_columns.empty() && m_columns.front().index < first - 1) m_columns.pop_front();
+  }
+}
+
+void ColumnDecimator::fold(const AngleSample& s) {
+  if (m_angle < 0 || m_angle >= kAngleCount) return;
+  const double v = s.deg[static_cast<std::size_t>(m_angle)];
+  const double sd = s.sigmaDeg[static_cast<std::size_t>(m_angle)];
+  if (!std::isfinite(v)) return;
+  const auto index = static_cast<std::int64_t>(std::floor(s.t / m_width));
+  if (m_columns.empty() || m_columns.back().index != index) {
+    m_columns.push_back({});
+    m_columns.back().index = index;
+  }
+  Column& c = m_columns.back();
+  const QPointF p(s.t, clampDeg(v, m_limit));
+  if (c.count == 0) {
+    c.lo = c.hi = p;
+  } else {
+    if (p.y() < c.lo.y()) c.lo = p;
+    if (p.y() > c.hi.y()) c.hi = p;
+  }
+  ++c.count;
+  if (!std::isfinite(sd)) return;
+  const double up = v + m_k * sd, down = v - m_k * sd;
+  c.bandHi = c.bandCount == 0 ? up : std::max(c.bandHi, up);
+  c.bandLo = c.bandCount == 0 ? down : std::min(c.bandLo, down);
+  c.tSum += s.t;
+  ++c.bandCount;
+}
+
+void ColumnDecimator::points(double t0, double t1, std::vector<QPointF>& line,
+                             std::vector<QPointF>& upper, std::vector<QPointF>& lower) const {
+  line.clear();
+  upper.clear();
+  lower.clear();
+  if (m_columns.empty() || !(m_width > 0)) return;
+  const auto first = static_cast<std::int64_t>(std::floor(t0 / m_width)) - 1;
+  const auto last = static_cast<std::int64_t>(std::floor(t1 / m_width));
+  for (const Column& c : m_columns) {
+    if (c.index < first) continue;
+    if (c.index > last) break;
+    if (c.count == 1 || c.lo == c.hi) {
+      line.push_back(c.lo);
+    } else if (c.lo.x() <= c.hi.x()) {
+      line.push_back(c.lo);
+      line.push_back(c.hi);
+    } else {
+      line.push_back(c.hi);
+      line.push_back(c.lo);
+    }
+    if (c.bandCount > 0) {
+      const double t = c.tSum / c.bandCount;
+      upper.emplace_back(t, clampDeg(c.bandHi, m_limit));
+      lower.emplace_back(t, clampDeg(c.bandLo, m_limit));
+    }
+  }
 }
 
 }  // namespace armtrack::ui

@@ -6,6 +6,7 @@
 #include <QPointF>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <limits>
 #include <vector>
@@ -40,6 +41,10 @@ class AngleTrace {
       : m_keep(keepSeconds) {}
 
   void setKeepSeconds(double s) { m_keep = s; }
+  /// Samples kept by append() since construction (never decreases, also not on clear()): with
+  /// clears(), how an incremental reader (ColumnDecimator) finds what is new.
+  std::uint64_t appended() const { return m_appended; }
+  std::uint64_t clears() const { return m_clears; }
   /// Appends in time order; returns how many were kept.
   std::size_t append(const std::vector<AngleSample>& rows);
   void clear();
@@ -59,6 +64,7 @@ class AngleTrace {
   std::deque<AngleSample> m_rows;
   double m_keep;
   std::size_t m_refused = 0;
+  std::uint64_t m_appended = 0, m_clears = 0;
 };
 
 /// One angle of a trace reduced for a plot of `columns` pixel columns spanning [t0, t1]: per
@@ -74,5 +80,39 @@ void decimateAngle(const AngleTrace& trace, int angle, double t0, double t1, int
 void decimateBand(const AngleTrace& trace, int angle, double t0, double t1, int columns, double k,
                   std::vector<QPointF>& upper, std::vector<QPointF>& lower,
                   double limitDeg = 720.0);
+
+/// The live plots' decimation, kept from one redraw to the next. Its columns are anchored to
+/// absolute time (column k spans [k w, (k + 1) w)), so a finished column never changes and a
+/// redraw only folds in the samples appended since the last one, whatever the window's length.
+/// Per column it keeps what decimateAngle() and decimateBand() keep: the smallest and largest
+/// value in time order, and the widest +-k sigma extent at the column's mean sample time.
+class ColumnDecimator {
+ public:
+  /// Folds in the trace's new samples of one angle. A different column width, band factor or
+  /// limit, or a cleared trace, starts again from the trace's samples. Columns older than the
+  /// trace's first sample are forgotten.
+  void update(const AngleTrace& trace, int angle, double columnSeconds, double k,
+              double limitDeg = 720.0);
+  /// The points of the columns that reach into [t0, t1], plus the column before (so a line
+  /// runs to the left edge), in time order: at most 2 per column for the line, 1 for each band.
+  void points(double t0, double t1, std::vector<QPointF>& line, std::vector<QPointF>& upper,
+              std::vector<QPointF>& lower) const;
+  std::size_t columns() const { return m_columns.size(); }
+  void clear();
+
+ private:
+  struct Column {
+    std::int64_t index = 0;
+    QPointF lo, hi;  // the line's extremes (count > 0)
+    int count = 0;
+    double bandHi = 0, bandLo = 0, tSum = 0;
+    int bandCount = 0;
+  };
+  void fold(const AngleSample& s);
+  std::deque<Column> m_columns;
+  double m_width = 0, m_k = 0, m_limit = 0;
+  int m_angle = -1;
+  std::uint64_t m_seen = 0, m_clears = 0;
+};
 
 }  // namespace armtrack::ui

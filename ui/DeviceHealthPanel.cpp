@@ -70,6 +70,9 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
     r.rateHz = s.rateHz;
     r.lost = s.deviceDropped;
     r.rejected = s.rejected + s.late;
+    r.batteryPercent = s.batteryPercent && *s.batteryPercent >= 0 && *s.batteryPercent <= 100
+                           ? s.batteryPercent
+                           : std::nullopt;
     if (s.received > t.received || (s.received > 0 && !t.seenData)) {
       t.lastData = now;
       t.seenData = true;
@@ -155,6 +158,12 @@ QVariant DeviceHealthModel::data(const QModelIndex& index, int role) const {
     return healthColour(r.level, m_dark);
   if (role == Qt::TextAlignmentRole && index.column() >= Rate)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  if (index.column() == Battery && r.batteryPercent && *r.batteryPercent <= kLowBatteryPercent) {
+    if (role == Qt::ForegroundRole) return healthColour(HealthLevel::Warning, m_dark);
+    if (role == Qt::ToolTipRole) return tr("Battery low: charge the device after the session");
+  }
+  if (index.column() == Battery && !r.batteryPercent && role == Qt::ToolTipRole)
+    return tr("The device does not report its battery");
   if (role != Qt::DisplayRole && role != Qt::AccessibleTextRole) return {};
   switch (index.column()) {
     case Device:
@@ -167,6 +176,12 @@ QVariant DeviceHealthModel::data(const QModelIndex& index, int role) const {
                                         : healthWord(r.level) + QStringLiteral(": ") + r.status;
     case Rate:
       return tr("%L1 Hz").arg(r.rateHz, 0, 'f', r.rateHz < 100 ? 1 : 0);
+    case Battery:
+      if (!r.batteryPercent)
+        return role == Qt::AccessibleTextRole ? tr("not reported") : QStringLiteral("\u2013");
+      return *r.batteryPercent <= kLowBatteryPercent && role == Qt::AccessibleTextRole
+                 ? tr("%L1 %, low").arg(*r.batteryPercent, 0, 'f', 0)
+                 : tr("%L1 %").arg(*r.batteryPercent, 0, 'f', 0);
     case Lost:
       return QLocale().toString(static_cast<qulonglong>(r.lost));
     case Rejected:
@@ -187,6 +202,8 @@ QVariant DeviceHealthModel::headerData(int section, Qt::Orientation o, int role)
       return tr("Status");
     case Rate:
       return tr("Rate");
+    case Battery:
+      return tr("Battery");
     case Lost:
       return tr("Lost");
     case Rejected:

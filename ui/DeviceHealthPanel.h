@@ -9,6 +9,7 @@
 #include <QString>
 #include <QWidget>
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "core/devices/Stream.h"
@@ -28,6 +29,8 @@ struct StreamHealthRow {
   double rateHz = 0.0;
   std::uint64_t lost = 0;      ///< lost on the link (the device's count)
   std::uint64_t rejected = 0;  ///< refused by the session (NaN, wrong payload) and late
+  /// The device's battery (0-100 %) where it reports one; a value out of range is not shown.
+  std::optional<double> batteryPercent;
 };
 
 /// Turns the session's figures, sampled over time, into a level per stream. Plain logic, so the
@@ -68,7 +71,9 @@ class HealthTracker {
 class DeviceHealthModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Device, Stream, Status, Rate, Lost, Rejected, ColumnCount };
+  enum Column { Device, Stream, Status, Rate, Battery, Lost, Rejected, ColumnCount };
+  /// A battery at or below this level (%) is shown in the warning colour.
+  static constexpr double kLowBatteryPercent = 20.0;
   explicit DeviceHealthModel(QObject* parent = nullptr) : QAbstractTableModel(parent) {}
   int rowCount(const QModelIndex& parent = {}) const override;
   int columnCount(const QModelIndex& parent = {}) const override;

@@ -122,7 +122,8 @@ void AppController::startDemoSession() {
       },
       [this](const SessionPlan& plan) {
         NewSessionChoices demo;
-        demo.devices = app::gui::demoDevices();
+        // The virtual arm makes the protocol's exercise, so the counter counts.
+        demo.devices = demoDevicesFor(plan);
         showLiveSession(plan, demo);
         emit demoReady();
       },

@@ -1,6 +1,7 @@
 #include "app/gui/LiveConfig.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "app/gui/AngleNames.h"
 #include "app/gui/services/PatientRecords.h"
@@ -40,6 +41,19 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
     if (plan.protocol->repetitions > 0) c.targetRepetitions = plan.protocol->repetitions;
   }
   return c;
+}
+
+QStringList demoDevicesFor(const SessionPlan& plan) {
+  QStringList devices = app::gui::demoDevices();
+  if (!plan.protocol || angleIndex(plan.protocol->angleKey) < 0) return devices;
+  const double lo = plan.protocol->targetMinDeg, hi = plan.protocol->targetMaxDeg;
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo)) return devices;
+  const double rest = std::min(20.0, lo), top = lo + 0.85 * (hi - lo);
+  devices.front() += QStringLiteral(",trajectory=exercise,exercise=%1,exercise-range=%2:%3")
+                         .arg(plan.protocol->angleKey)
+                         .arg(rest, 0, 'f', 1)
+                         .arg(top, 0, 'f', 1);
+  return devices;
 }
 
 }  // namespace armtrack::gui

@@ -19,4 +19,11 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
                                               const AppSettings& settings,
                                               const std::optional<Calibration>& calibration = {});
 
+/// The demo's devices for a plan: the virtual arm with both IMUs, a Kinect and a webcam, and,
+/// when the plan has a protocol, making its exercise: repetitions of the protocol's angle from
+/// rest (20 deg, or the target's lower end if that is lower) to 85 % into the target range, so
+/// the live screen's counter counts every one as a full repetition (RepetitionCounter: it enters
+/// at 35 % of the target range, leaves below 15 %, and calls one partial below 80 %).
+QStringList demoDevicesFor(const SessionPlan& plan);
+
 }  // namespace armtrack::gui

@@ -107,7 +107,9 @@ void ProgressChart::redraw() {
   // Drawn in the unit of the settings: "deg" values are radians * scale.
   const double scale = m_radians ? 1.0 : kRadToDeg;
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
-  const double normalDeg = normativeSpanRad(normal) * scale;
+  // The range of motion of the named motion (flexion, not flexion + extension) against that
+  // motion's normal range from the neutral position.
+  const double normalDeg = namedMotionNormalRad(normal) * scale;
 
   auto* chart = new QChart;
   chart->setLocale(QLocale());
@@ -144,7 +146,7 @@ void ProgressChart::redraw() {
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
          new QStandardItem(QLocale().toString(deg, 'f', m_radians ? 3 : 1)),
          new QStandardItem(
-             tr("%L1 %").arg(100.0 * fractionOfNormativeSpan(normal, *rom), 0, 'f', 0))});
+             tr("%L1 %").arg(100.0 * fractionOfNamedMotionNormal(normal, *rom), 0, 'f', 0))});
   }
   if (m_points == 0) {
     chart->setTitle(tr("%1: no analysed session yet").arg(angleName(a)));

@@ -8,11 +8,12 @@ namespace armtrack::gui {
 
 RecordsRecordingTarget::RecordsRecordingTarget(RecordsService& records, QString patientCode,
                                                QString protocolName)
-    : m_records(records), m_patient(std::move(patientCode)), m_protocol(std::move(protocolName)) {}
+    : m_records(records),
+      m_patient(std::move(patientCode)),
+      m_protocol(std::move(protocolName)),
+      m_state(std::make_shared<State>()) {}
 
-RecordsRecordingTarget::~RecordsRecordingTarget() {
-  // The inner target holds a reference to the records thread's store; it owns nothing else.
-}
+RecordsRecordingTarget::~RecordsRecordingTarget() = default;
 
 QString RecordsRecordingTarget::describe() const {
   return QCoreApplication::translate("armtrack::gui::RecordsRecordingTarget",
@@ -20,39 +21,69 @@ QString RecordsRecordingTarget::describe() const {
       .arg(m_patient);
 }
 
+std::function<QString(storage::ClinicalStore&)> RecordsRecordingTarget::beginJob(
+    const RecordingMeta& meta, const RecordingColumns& columns) const {
+  // Holds the state, not the target: a queued call may outlive the screen that asked for it.
+  return [state = m_state, url = m_records.url(), patient = m_patient, protocol = m_protocol, meta,
+          columns](storage::ClinicalStore& store) {
+    if (!state->inner)
+      state->inner =
+          std::make_unique<app::gui::DatabaseRecordingTarget>(store, url, patient, protocol);
+    const QString why = state->inner->begin(meta, columns);
+    state->sessionId = state->inner->sessionId();
+    return why;
+  };
+}
+
+std::function<QString(storage::ClinicalStore&)> RecordsRecordingTarget::finishJob(
+    std::uint64_t rows, bool complete, const QString& events) const {
+  return [state = m_state, rows, complete, events](storage::ClinicalStore&) {
+    return state->inner->finish(rows, complete, events);
+  };
+}
+
 QString RecordsRecordingTarget::begin(const RecordingMeta& meta, const RecordingColumns& columns) {
   try {
-    // One insert on the records thread; the GUI waits for it as the live screen's interface
-    // asks (app/gui/live/RecordingTarget.h).
-    return m_records.callBlocking([&](storage::ClinicalStore& store) {
-      if (!m_inner)
-        m_inner = std::make_unique<app::gui::DatabaseRecordingTarget>(store, m_records.url(),
-                                                                      m_patient, m_protocol);
-      return m_inner->begin(meta, columns);
-    });
+    return m_records.callBlocking(beginJob(meta, columns));
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
+}
+
+void RecordsRecordingTarget::beginAsync(const RecordingMeta& meta, const RecordingColumns& columns,
+                                        QObject* context, Done done) {
+  m_records.call(
+      context, beginJob(meta, columns), [done](const QString& why) { done(why); },
+      [done](const RecordsFailure& f) { done(f.message); });
 }
 
 std::unique_ptr<RecordingSink> RecordsRecordingTarget::open(const RecordingMeta& meta,
                                                             const RecordingColumns& columns) {
-  if (!m_inner) throw RecordingError("", 0, 0, "the session was not begun in the records");
-  return m_inner->open(meta, columns);  // opens its own connection on the recorder thread
+  // The session thread opens the sink once the gate opened, after begin was done.
+  if (!m_state->inner || m_state->sessionId == 0)
+    throw RecordingError("", 0, 0, "the session was not begun in the records");
+  return m_state->inner->open(meta, columns);  // opens its own connection on the recorder thread
 }
 
 QString RecordsRecordingTarget::finish(std::uint64_t rows, bool complete, const QString& events) {
-  if (!m_inner) return {};
+  if (m_state->sessionId == 0) return {};
   try {
-    return m_records.callBlocking(
-        [&](storage::ClinicalStore&) { return m_inner->finish(rows, complete, events); });
+    return m_records.callBlocking(finishJob(rows, complete, events));
   } catch (const std::exception& e) {
     return QString::fromStdString(e.what());
   }
 }
 
+void RecordsRecordingTarget::finishAsync(std::uint64_t rows, bool complete, const QString& events,
+                                         QObject* context, Done done) {
+  if (m_state->sessionId == 0) return done({});
+  m_records.call(
+      context, finishJob(rows, complete, events), [done](const QString& line) { done(line); },
+      [done](const RecordsFailure& f) { done(f.message); });
+}
+
 qint64 RecordsRecordingTarget::sessionId() const {
-  return m_inner ? m_inner->sessionId() : 0;
+  return m_state->sessionId;
 }
 
 }  // namespace armtrack::gui

@@ -29,4 +29,12 @@ double fractionOfNormativeSpan(const NormativeRange& r, double romRad) {
   return romRad / normativeSpanRad(r);
 }
 
+double namedMotionNormalRad(const NormativeRange& r) {
+  return r.maxRad;
+}
+
+double fractionOfNamedMotionNormal(const NormativeRange& r, double romRad) {
+  return romRad / namedMotionNormalRad(r);
+}
+
 }  // namespace armtrack

@@ -34,4 +34,13 @@ double normativeSpanRad(const NormativeRange& r);
 /// A patient's range of motion as a fraction of the normative span (1 = the full normal range).
 double fractionOfNormativeSpan(const NormativeRange& r, double romRad);
 
+/// The normal range of the motion the angle is named after, from the neutral position (rad):
+/// flexion 180, abduction 180, internal rotation 70, elbow flexion 150, pronation 80 deg. What a
+/// "flexion range of motion" is compared with; the span above adds the opposite motion
+/// (extension, external rotation, supination), which belongs to the full arc only.
+double namedMotionNormalRad(const NormativeRange& r);
+
+/// A patient's range of motion of the named motion as a fraction of its normal range.
+double fractionOfNamedMotionNormal(const NormativeRange& r, double romRad);
+
 }  // namespace armtrack

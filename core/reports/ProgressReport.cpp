@@ -45,7 +45,7 @@ void draw(PageWriter& w, const ProgressReportData& d,
       const QRectF r = w.reserve(w.mm(44));
       drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
                     Text::tr("%1: range of motion (deg)").arg(angleName(a)), when, rom,
-                    normativeSpanRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
+                    namedMotionNormalRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
     const std::string_view source = ranges[0].source;
     w.paragraph(Text::tr("Normal ranges: %1.")

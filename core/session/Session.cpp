@@ -602,6 +602,7 @@ SessionStats Session::stats() const {
       s.streams[i].published = sh.samples;
       s.streams[i].deviceDropped = sh.dropped;
       s.streams[i].deviceCorrupt = sh.corrupt;
+      s.streams[i].batteryPercent = h.batteryPercent;
     }
   }
   s.deviceStates.clear();

@@ -109,6 +109,8 @@ struct StreamStats {
   std::uint64_t deviceCorrupt = 0;  ///< packets the device rejected as malformed
   double driftPpm = 0.0;            ///< device clock drift the synchroniser estimated
   double jitterMs = 0.0;            ///< arrival jitter above the fastest delivery (ms)
+  /// The stream's device's battery (0-100 %), where the device reports one (DeviceHealth).
+  std::optional<double> batteryPercent;
 };
 
 struct SessionStats {

@@ -1,5 +1,6 @@
 #include "devices/virtual_arm/VirtualArmDevice.h"
 
+#include <algorithm>
 #include <mutex>
 
 namespace armtrack::devices::virtualarm {
@@ -52,6 +53,9 @@ void VirtualArmDevice::start() {
   m_epoch = acquireEpoch();
   m_source->skipTo(hostNow() - m_epoch);
   m_reportedDrops.assign(streams().size(), 0);
+  m_started = hostNow();
+  m_batteryShown = -1e9;
+  setBattery(m_params.batteryPercent);
   m_timer = new QTimer(this);
   m_timer->setTimerType(Qt::PreciseTimer);
   m_timer->setInterval(std::max(1, static_cast<int>(m_tick * 1000.0 + 0.5)));
@@ -87,6 +91,11 @@ void VirtualArmDevice::tick() {
     m_reportedDrops[i] = d;
   }
   publish(batch);
+  if (m_params.batteryPercent && arrival - m_batteryShown >= 1.0) {  // a real one: every second
+    m_batteryShown = arrival;
+    const double minutes = (arrival - m_started) / 60.0;
+    setBattery(std::max(0.0, *m_params.batteryPercent - m_params.batteryDrainPerMinute * minutes));
+  }
   for (const SourceEvent& e : events) {
     const QString text = QString::fromStdString(e.text);
     switch (e.kind) {

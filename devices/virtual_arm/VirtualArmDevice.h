@@ -44,6 +44,7 @@ class VirtualArmDevice final : public Device {
   std::unique_ptr<VirtualArmSource> m_source;
   QTimer* m_timer = nullptr;
   double m_epoch = 0.0;
+  double m_started = 0.0, m_batteryShown = -1e9;  // hostNow() at start, at the last report
   std::vector<std::uint64_t> m_reportedDrops;
 };
 

@@ -35,6 +35,8 @@ QString VirtualArmPlugin::optionsHelp() const {
       "truth=on                      a stream of the true joint angles beside the IMUs\n"
       "duration=0                    s of simulation, 0 = endless\n"
       "tick=0.002                    s between deliveries (the link's batching)\n"
+      "battery=80                    % at the start, reported as a device's battery (off: none)\n"
+      "battery-drain=1               % the battery loses per minute\n"
       "Faults (START and SECONDS in simulated seconds, several joined by '|'):\n"
       "dropout=STREAM@START+SECONDS  one stream goes silent\n"
       "disappear=START+SECONDS       the whole device goes away and comes back\n"
@@ -79,6 +81,8 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.faults.driftPpm = o.number(QStringLiteral("drift"), 0.0, -1000.0, 1000.0);
   p.swapImus = o.flag(QStringLiteral("swap-imus"), false);
   const QString upsideDown = o.text(QStringLiteral("upside-down"));
+  const QString battery = o.text(QStringLiteral("battery"), QStringLiteral("80"));
+  p.batteryDrainPerMinute = o.number(QStringLiteral("battery-drain"), 1.0, 0.0, 100.0);
   const QString exercise = o.text(QStringLiteral("exercise"), QStringLiteral("elbow_flexion"));
   const QString range = o.text(QStringLiteral("exercise-range"), QStringLiteral("20:120"));
   ExerciseMotion& motion = p.trajectoryOptions.exercise;
@@ -88,6 +92,15 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   motion.compensationDeg = o.number(QStringLiteral("exercise-compensation"), 0.0, -90.0, 90.0);
   QStringList problems;
   if (!o.error().isEmpty()) problems << o.error();
+  if (battery == u"off") {
+    p.batteryPercent.reset();
+  } else {
+    bool ok = false;
+    p.batteryPercent = battery.toDouble(&ok);
+    if (!ok || !std::isfinite(*p.batteryPercent) || *p.batteryPercent < 0 ||
+        *p.batteryPercent > 100)
+      problems << QStringLiteral("battery=%1: give a level from 0 to 100 (%), or off").arg(battery);
+  }
   motion.angle = -1;
   QStringList keys;
   for (std::size_t i = 0; i < clinicalAngleInfo().size(); ++i) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -86,6 +87,10 @@ struct VirtualArmParams {
   /// (the home window's sensor check must find it).
   bool swapImus = false;
   Faults faults;
+  /// The simulated battery: its level at the start (0-100 %; empty = not reported) and how
+  /// fast it drains (% per minute of session).
+  std::optional<double> batteryPercent = 80.0;
+  double batteryDrainPerMinute = 1.0;
 };
 
 /// One stream of the virtual arm.

@@ -1,7 +1,8 @@
 // The live session screen under load (not a ctest test; figures for the README). Runs a virtual
 // arm session (1 kHz IMUs, 30 Hz Kinect and webcam, EKF) in the real screen and prints, every
 // report interval: frames per second of the 3D view and of the plots, the longest stall of the
-// GUI thread (a 2 ms watchdog timer: the longest time the event loop did not get round to it),
+// GUI thread (a 2 ms watchdog timer: the longest time the event loop did not get round to it)
+// with how much of it the thread ran, waited for a core or was blocked (the kernel's schedstat),
 // the whole process's CPU use and its resident memory.
 //
 //   tests/support/run-gui-test.sh build/tests/benchmarks/bench_live_screen [--seconds 600]
@@ -18,6 +19,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <string>
 
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/plugins/PluginRegistry.h"
@@ -47,6 +50,22 @@ double heapInUseMb() {
   return static_cast<double>(m.uordblks + m.hblkhd) / (1024.0 * 1024.0);
 }
 
+/// The calling thread's time on a CPU and waiting in a run queue for one (ms), from the
+/// scheduler's statistics: a stall spent waiting for a core is the machine's, not the program's.
+std::pair<double, double> threadCpuAndWaitMs() {
+  std::ifstream f("/proc/thread-self/schedstat");
+  double cpuNs = 0, waitNs = 0;
+  f >> cpuNs >> waitNs;
+  return {cpuNs * 1e-6, waitNs * 1e-6};
+}
+
+double loadAverage() {
+  std::ifstream f("/proc/loadavg");
+  double one = 0;
+  f >> one;
+  return one;
+}
+
 /// Counts the paints of the charts' viewports (what the user sees refresh).
 class PaintCounter : public QObject {
  public:
@@ -57,11 +76,60 @@ class PaintCounter : public QObject {
   }
 };
 
+/// Times every event the GUI thread delivers (outermost deliveries only) and keeps, per kind of
+/// receiver and event, the longest and the total: which work makes the GUI thread stall.
+class ProfilingApplication : public QApplication {
+ public:
+  using QApplication::QApplication;
+  bool profiling = false;
+  struct Figure {
+    double maxMs = 0, totalMs = 0;
+    std::uint64_t count = 0;
+  };
+  std::map<std::string, Figure> figures;
+
+  bool notify(QObject* receiver, QEvent* e) override {
+    if (!profiling || m_depth > 0) return QApplication::notify(receiver, e);
+    // Named before delivery: a DeferredDelete leaves the receiver gone.
+    const char* cls = receiver->metaObject()->className();
+    const char* parent = receiver->parent() ? receiver->parent()->metaObject()->className() : "";
+    const int type = static_cast<int>(e->type());
+    ++m_depth;
+    QElapsedTimer t;
+    t.start();
+    const bool r = QApplication::notify(receiver, e);
+    const double ms = t.nsecsElapsed() * 1e-6;
+    --m_depth;
+    if (ms >= 0.05) {
+      Figure& f = figures[std::string(cls) + "<" + parent + " " + std::to_string(type)];
+      f.maxMs = std::max(f.maxMs, ms);
+      f.totalMs += ms;
+      ++f.count;
+    }
+    return r;
+  }
+
+  /// The slowest kinds of work since the last call, longest first.
+  void print(double seconds) {
+    std::vector<std::pair<std::string, Figure>> v(figures.begin(), figures.end());
+    std::sort(v.begin(), v.end(),
+              [](const auto& a, const auto& b) { return a.second.maxMs > b.second.maxMs; });
+    for (std::size_t i = 0; i < std::min<std::size_t>(6, v.size()); ++i)
+      std::printf("    %-58s max %6.1f ms, %6.1f ms/s, %5.1f /s\n", v[i].first.c_str(),
+                  v[i].second.maxMs, v[i].second.totalMs / seconds,
+                  static_cast<double>(v[i].second.count) / seconds);
+    figures.clear();
+  }
+
+ private:
+  int m_depth = 0;
+};
+
 }  // namespace
 
 int main(int argc, char** argv) {
   armtrack::ui::setDefaultSurfaceFormat();
-  QApplication app(argc, argv);
+  ProfilingApplication app(argc, argv);
   QCommandLineParser cli;
   cli.addHelpOption();
   cli.addOption({QStringLiteral("seconds"), QStringLiteral("Length of the run (s)."),
@@ -75,7 +143,11 @@ int main(int argc, char** argv) {
   cli.addOption({QStringLiteral("hide"),
                  QStringLiteral("Hide a part to see what it costs: 3d, plots, table."),
                  QStringLiteral("part")});
+  cli.addOption({QStringLiteral("profile"),
+                 QStringLiteral("Print, each interval, the GUI thread's slowest kinds of work "
+                                "(receiver class < parent class, event type).")});
   cli.process(app);
+  app.profiling = cli.isSet(QStringLiteral("profile"));
   const double seconds = cli.value(QStringLiteral("seconds")).toDouble();
   const double interval = cli.value(QStringLiteral("interval")).toDouble();
   const QStringList wh = cli.value(QStringLiteral("size")).split(u'x');
@@ -102,13 +174,29 @@ int main(int argc, char** argv) {
   // The watchdog: a 2 ms timer on the GUI thread; a late tick is a stall.
   QElapsedTimer clock;
   clock.start();
-  double lastTick = 0, maxStallMs = 0, maxStallAllMs = 0;
+  // Of the longest stall, how long the GUI thread ran on a core, waited in the run queue for
+  // one (other processes had them), and was blocked (on the OpenGL rasteriser's threads or the
+  // X server, themselves waiting for cores when the machine is loaded); and the most CPU time
+  // any stall took, which is the work the program does in one go.
+  struct Stall {
+    double ms = 0, cpuMs = 0, queueMs = 0;
+  };
+  Stall longest, longestAll;
+  double mostCpuMs = 0, mostCpuAllMs = 0;
+  double lastTick = 0, lastCpu = 0, lastWait = 0;
   QTimer watchdog;
   watchdog.setTimerType(Qt::PreciseTimer);
   QObject::connect(&watchdog, &QTimer::timeout, [&] {
     const double now = clock.nsecsElapsed() * 1e-6;
-    if (lastTick > 0) maxStallMs = std::max(maxStallMs, now - lastTick - 2.0);
+    const auto [cpu, wait] = threadCpuAndWaitMs();
+    if (lastTick > 0) {
+      const Stall st{now - lastTick - 2.0, cpu - lastCpu, wait - lastWait};
+      if (st.ms > longest.ms) longest = st;
+      mostCpuMs = std::max(mostCpuMs, st.cpuMs);
+    }
     lastTick = now;
+    lastCpu = cpu;
+    lastWait = wait;
   });
 
   struct Mark {
@@ -133,14 +221,16 @@ int main(int argc, char** argv) {
     QTimer::singleShot(1000, [&] {
       start = prev = mark();
       lastTick = 0;
-      maxStallMs = 0;
+      longest = {};
+      mostCpuMs = 0;
       watchdog.start(2);
       std::printf(
           "Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
           "webcam), EKF, drained at %.0f Hz\n",
           screen.width(), screen.height(), screen.drainRate());
-      std::printf("%8s %9s %11s %12s %10s %13s %9s %10s %10s\n", "time s", "3D fps", "plot fps",
-                  "plot paint/s", "drains/s", "max stall ms", "CPU %", "RSS MB", "heap MB");
+      std::printf("%6s %6s %8s %8s %8s %9s %24s %8s %6s %7s %7s %5s\n", "time s", "3D fps",
+                  "plot fps", "paint/s", "drains/s", "stall ms", "(cpu/queue/blocked ms)",
+                  "cpu max", "CPU %", "RSS MB", "heap MB", "load");
       std::fflush(stdout);
     });
   });
@@ -149,21 +239,37 @@ int main(int argc, char** argv) {
     if (start.t == 0) return;
     const Mark m = mark();
     const double dt = m.t - prev.t;
-    std::printf("%8.0f %9.1f %11.1f %12.1f %10.1f %13.1f %9.1f %10.1f %10.1f\n", m.t - start.t,
-                (m.frames - prev.frames) / dt, (m.redraws - prev.redraws) / dt,
-                (m.paints - prev.paints) / dt / std::max<qsizetype>(1, charts.size()),
-                (m.drains - prev.drains) / dt, maxStallMs, 100.0 * (m.cpu - prev.cpu) / dt,
-                residentMb(), heapInUseMb());
+    std::printf(
+        "%6.0f %6.1f %8.1f %8.1f %8.1f %9.1f %8.1f/%6.1f/%7.1f %8.1f %6.1f %7.1f %7.1f %5.2f\n",
+        m.t - start.t, (m.frames - prev.frames) / dt, (m.redraws - prev.redraws) / dt,
+        (m.paints - prev.paints) / dt / std::max<qsizetype>(1, charts.size()),
+        (m.drains - prev.drains) / dt, longest.ms, longest.cpuMs, longest.queueMs,
+        longest.ms - longest.cpuMs - longest.queueMs, mostCpuMs, 100.0 * (m.cpu - prev.cpu) / dt,
+        residentMb(), heapInUseMb(), loadAverage());
     std::fflush(stdout);
-    maxStallAllMs = std::max(maxStallAllMs, maxStallMs);
-    maxStallMs = 0;
+    if (app.profiling) {
+      const auto& d = screen.drainTimes();
+      std::printf(
+          "    drain, longest parts: take %.1f, feed %.1f, plots %.1f, 3D %.1f, device figures "
+          "%.1f, whole %.1f ms; largest batch %zu estimates\n",
+          d.takeMs, d.feedMs, d.plotsMs, d.armMs, d.statsMs, d.wholeMs, d.mostRows);
+      screen.resetDrainTimes();
+      app.print(dt);
+    }
+    if (longest.ms > longestAll.ms) longestAll = longest;
+    mostCpuAllMs = std::max(mostCpuAllMs, mostCpuMs);
+    longest = {};
+    mostCpuMs = 0;
     prev = m;
     if (m.t - start.t >= seconds - 1e-3) {
       const double total = m.t - start.t;
       std::printf(
-          "whole run: 3D %.1f fps, plots %.1f fps, longest GUI stall %.1f ms, CPU %.0f %% "
-          "of one core, %llu estimates drained\n",
-          (m.frames - start.frames) / total, (m.redraws - start.redraws) / total, maxStallAllMs,
+          "whole run: 3D %.1f fps, plots %.1f fps, longest GUI stall %.1f ms (on a core %.1f, "
+          "in the run queue %.1f, blocked %.1f), most CPU in one stall %.1f ms, CPU %.0f %% of "
+          "one core, %llu estimates drained\n",
+          (m.frames - start.frames) / total, (m.redraws - start.redraws) / total, longestAll.ms,
+          longestAll.cpuMs, longestAll.queueMs,
+          longestAll.ms - longestAll.cpuMs - longestAll.queueMs, mostCpuAllMs,
           100.0 * (m.cpu - start.cpu) / total,
           static_cast<unsigned long long>(m.estimates - start.estimates));
       std::fflush(stdout);

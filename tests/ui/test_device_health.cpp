@@ -3,6 +3,8 @@
 // says which stream and why.
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "ui/DeviceHealthPanel.h"
 
 namespace armtrack::ui {
@@ -129,6 +131,47 @@ TEST(DeviceHealthModel, SaysTheLevelInWordsNotOnlyInColour) {
   EXPECT_EQ(m.data(m.index(0, DeviceHealthModel::Status)).toString(),
             QStringLiteral("down: no data for 2.0 s"));
   EXPECT_TRUE(m.data(m.index(0, DeviceHealthModel::Status), Qt::DecorationRole).isValid());
+}
+
+TEST(DeviceHealthModel, ShowsTheBatteryWhereTheDeviceReportsIt) {
+  session::SessionStats s = twoDevices();
+  s.streams[0].batteryPercent = 64.4;  // the IMU's device reports one, the Kinect's does not
+  HealthTracker t;
+  advance(s, 0.1);
+  t.update(s, s.elapsed);
+  ASSERT_EQ(t.rows().size(), 2u);
+  EXPECT_EQ(t.rows()[0].batteryPercent, std::optional<double>(64.4));
+  EXPECT_FALSE(t.rows()[1].batteryPercent);
+  DeviceHealthModel m;
+  m.setRows(t.rows());
+  const QModelIndex imu = m.index(0, DeviceHealthModel::Battery);
+  const QModelIndex kinect = m.index(1, DeviceHealthModel::Battery);
+  EXPECT_EQ(m.headerData(DeviceHealthModel::Battery, Qt::Horizontal).toString(),
+            QStringLiteral("Battery"));
+  EXPECT_EQ(m.data(imu).toString(), QStringLiteral("64 %"));
+  EXPECT_FALSE(m.data(imu, Qt::ForegroundRole).isValid());
+  EXPECT_EQ(m.data(kinect).toString(), QStringLiteral("\u2013"));
+  EXPECT_EQ(m.data(kinect, Qt::AccessibleTextRole).toString(), QStringLiteral("not reported"));
+  EXPECT_FALSE(m.data(kinect, Qt::ToolTipRole).toString().isEmpty());
+
+  // Low: in the warning colour and said in words; the stream itself stays OK.
+  s.streams[0].batteryPercent = 12.0;
+  advance(s, 0.1);
+  t.update(s, s.elapsed);
+  m.setRows(t.rows());
+  EXPECT_EQ(m.data(imu).toString(), QStringLiteral("12 %"));
+  EXPECT_EQ(m.data(imu, Qt::ForegroundRole).value<QColor>(),
+            healthColour(HealthLevel::Warning, false));
+  EXPECT_EQ(m.data(imu, Qt::AccessibleTextRole).toString(), QStringLiteral("12 %, low"));
+  EXPECT_EQ(t.rows()[0].level, HealthLevel::Ok);
+
+  // What no battery reports is not shown.
+  for (const double absurd : {-1.0, 100.5, 1e9, std::numeric_limits<double>::quiet_NaN(),
+                              std::numeric_limits<double>::infinity()}) {
+    s.streams[0].batteryPercent = absurd;
+    t.update(s, s.elapsed);
+    EXPECT_FALSE(t.rows()[0].batteryPercent) << absurd;
+  }
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "app/gui/live/LiveSessionScreen.h"
 
 #include <QComboBox>
+#include <QElapsedTimer>
 #include <QEvent>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -246,6 +247,7 @@ void LiveSessionScreen::start() {
   m_recordedSeconds = 0;
   m_recordingSince = -1;
   m_begun = false;
+  m_beginning = false;
   setState(State::Starting);
   if (m_gate) m_gate->setRecording(false);
   m_controller->start(m_config, m_gate);
@@ -269,19 +271,38 @@ void LiveSessionScreen::onStarted(const QString& error) {
 
 void LiveSessionScreen::record() {
   if (!m_gate || (m_state != State::Live && m_state != State::Paused)) return;
-  if (!m_begun) {
-    const auto layout = m_controller->recordingLayout();
-    if (!layout) return;
-    if (const QString why = m_target->begin(layout->first, layout->second); !why.isEmpty()) {
+  if (m_begun) {
+    addMessage(tr("Recording resumed at %L1 s").arg(m_sessionTime, 0, 'f', 1));
+    openGate();
+    return;
+  }
+  if (m_beginning) return;
+  const auto layout = m_controller->recordingLayout();
+  if (!layout) return;
+  // The target begins (the records: the session's row) without the GUI thread waiting; rows
+  // flow once it has.
+  m_beginning = true;
+  updateButtons();
+  m_target->beginAsync(layout->first, layout->second, this, [this](const QString& why) {
+    m_beginning = false;
+    if (!why.isEmpty()) {
       showBanner([why] { return why; }, true);
       addMessage(why);
+      updateButtons();
       return;
     }
     m_begun = true;
+    if (m_state != State::Live && m_state != State::Paused) {
+      // Stopped while it began: close what was begun, with nothing in it.
+      m_target->finishAsync(0, false, {}, this, [this](const QString& line) { addMessage(line); });
+      return;
+    }
     addMessage(tr("Recording to %1").arg(m_target->describe()));
-  } else {
-    addMessage(tr("Recording resumed at %L1 s").arg(m_sessionTime, 0, 'f', 1));
-  }
+    openGate();
+  });
+}
+
+void LiveSessionScreen::openGate() {
   m_gate->setRecording(true);
   m_recordingSince = m_sessionTime;
   setState(State::Recording);
@@ -300,7 +321,8 @@ void LiveSessionScreen::stop() {
   if (m_state != State::Live && m_state != State::Recording && m_state != State::Paused &&
       m_state != State::Starting)
     return;
-  drain();  // what has arrived so far
+  drain();             // what has arrived so far
+  m_plots->refresh();  // the table too (live, it is refreshed a few times a second)
   if (m_gate) m_gate->setRecording(false);
   if (m_recordingSince >= 0) m_recordedSeconds += m_sessionTime - m_recordingSince;
   m_recordingSince = -1;
@@ -311,22 +333,24 @@ void LiveSessionScreen::stop() {
 
 void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
                                   const QString& recorderError) {
-  QString summary;
-  if (m_target && m_begun) {
-    QStringList events;
-    for (const auto& [t, label] : m_events)
-      events << QStringLiteral("%1 s: %2").arg(t, 0, 'f', 1).arg(label);
-    // Rows the gate dropped while paused were never meant for the recording.
-    const bool complete =
-        recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
-    summary =
-        m_target->finish(recordedRows, complete,
-                         events.isEmpty() ? QString() : tr("Events: %1").arg(events.join(u"; ")));
-    if (!recorderError.isEmpty())
-      summary += QStringLiteral(" ") + tr("Last recording problem: %1").arg(recorderError);
-  } else {
-    summary = tr("Session ended; nothing was recorded.");
-  }
+  if (!m_target || !m_begun) return finishStopping(tr("Session ended; nothing was recorded."));
+  QStringList events;
+  for (const auto& [t, label] : m_events)
+    events << QStringLiteral("%1 s: %2").arg(t, 0, 'f', 1).arg(label);
+  // Rows the gate dropped while paused were never meant for the recording.
+  const bool complete = recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
+  m_target->finishAsync(recordedRows, complete,
+                        events.isEmpty() ? QString() : tr("Events: %1").arg(events.join(u"; ")),
+                        this, [this, recorderError](const QString& line) {
+                          QString summary = line;
+                          if (!recorderError.isEmpty())
+                            summary += QStringLiteral(" ") +
+                                       tr("Last recording problem: %1").arg(recorderError);
+                          finishStopping(summary);
+                        });
+}
+
+void LiveSessionScreen::finishStopping(const QString& summary) {
   addMessage(summary);
   setState(State::Stopped);
   emit sessionStopped(summary);
@@ -342,9 +366,19 @@ void LiveSessionScreen::markEvent() {
 }
 
 void LiveSessionScreen::drain() {
+  QElapsedTimer clock;
+  clock.start();
+  double mark = 0;
+  const auto lap = [&](double& longest) {
+    const double now = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
+    longest = std::max(longest, now - mark);
+    mark = now;
+  };
   if (!m_controller->drainInto(m_rows, m_sessionEvents)) return;
   const std::shared_ptr<session::Session>& s = m_controller->session();
   ++m_drains;
+  lap(m_times.takeMs);
+  m_times.mostRows = std::max(m_times.mostRows, m_rows.size());
   if (!m_rows.empty()) {
     m_estimates += m_rows.size();
     m_samples.clear();
@@ -369,8 +403,11 @@ void LiveSessionScreen::drain() {
     m_reps->showCount(m_counter);
   }
   for (const std::string& e : m_sessionEvents) addMessage(QString::fromStdString(e));
+  lap(m_times.feedMs);
   m_plots->refreshIfChanged();
+  lap(m_times.plotsMs);
   m_arm->updateIfChanged();
+  lap(m_times.armMs);
   if (m_drains % kStatsEveryTicks == 0) {
     m_readouts->refreshIfChanged();
     m_health->setStats(s->stats());
@@ -383,7 +420,9 @@ void LiveSessionScreen::drain() {
       setState(State::Paused);
     }
     updateStatus();
+    lap(m_times.statsMs);
   }
+  m_times.wholeMs = std::max(m_times.wholeMs, static_cast<double>(clock.nsecsElapsed()) * 1e-6);
 }
 
 void LiveSessionScreen::showBanner(std::function<QString()> text, bool error) {
@@ -420,7 +459,8 @@ void LiveSessionScreen::setState(State s) {
 void LiveSessionScreen::updateButtons() {
   const bool running =
       m_state == State::Live || m_state == State::Recording || m_state == State::Paused;
-  const bool canRecord = m_gate && (m_state == State::Live || m_state == State::Paused);
+  const bool canRecord =
+      m_gate && !m_beginning && (m_state == State::Live || m_state == State::Paused);
   m_record->setEnabled(canRecord);
   m_record->setToolTip(m_gate ? tr("Start or resume recording to %1 (%2)")
                                     .arg(m_target->describe(),

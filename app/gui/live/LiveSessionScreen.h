@@ -36,8 +36,8 @@ namespace armtrack::app::gui {
 /// the plots, readouts, counter and 3D view in batches; messages to the list; figures to the
 /// device health a few times a second. Nothing on the GUI thread waits for a device, the disk or
 /// the database: the session starts and stops in SessionController's thread, rows are written
-/// by the session's recorder thread. (Record and Stop each make one short call into the
-/// records' store, which lives on this thread.) GUI thread only.
+/// by the session's recorder thread, and the recording target begins and finishes without the
+/// GUI thread waiting (RecordingTarget::beginAsync, finishAsync). GUI thread only.
 class LiveSessionScreen : public QWidget {
   Q_OBJECT
  public:
@@ -62,6 +62,16 @@ class LiveSessionScreen : public QWidget {
   /// Timer ticks that drained the session, and estimates drained (for tests and the benchmark).
   std::uint64_t drains() const { return m_drains; }
   std::uint64_t estimatesDrained() const { return m_estimates; }
+
+  /// The longest time (ms) each part of a drain took since the last resetDrainTimes(), timed
+  /// with QElapsedTimer: taking the results, feeding the views and the counter, redrawing the
+  /// plots, updating the 3D view, and the device figures (for the benchmark).
+  struct DrainTimes {
+    double takeMs = 0, feedMs = 0, plotsMs = 0, armMs = 0, statsMs = 0, wholeMs = 0;
+    std::size_t mostRows = 0;  ///< the largest batch of estimates drained at once
+  };
+  const DrainTimes& drainTimes() const { return m_times; }
+  void resetDrainTimes() { m_times = {}; }
 
   ui::ArmView* armView() const { return m_arm; }
   ui::AnglePlotPanel* plots() const { return m_plots; }
@@ -106,6 +116,9 @@ class LiveSessionScreen : public QWidget {
   void addMessage(const QString& text);
   void onStarted(const QString& error);
   void onStopped(quint64 recordedRows, quint64 rowsToRecord, const QString& recorderError);
+  void finishStopping(const QString& summary);
+  /// Rows reach the recording from now on.
+  void openGate();
   void updateButtons();
   void updateStatus();
 
@@ -115,10 +128,12 @@ class LiveSessionScreen : public QWidget {
   std::shared_ptr<RecordingGate> m_gate;
   SessionController* m_controller;
   State m_state = State::Idle;
-  bool m_begun = false;  // the recording target was begun
+  bool m_begun = false;      // the recording target was begun
+  bool m_beginning = false;  // it is beginning (Record was pressed; rows flow once it has)
   QTimer m_drainTimer;
   double m_drainHz = 40.0;
   std::uint64_t m_drains = 0, m_estimates = 0;
+  DrainTimes m_times;
   double m_sessionTime = 0.0;
   double m_lastOptical = -1e9;
   double m_recordedSeconds = 0.0, m_recordingSince = -1.0;

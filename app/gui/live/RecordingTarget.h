@@ -6,10 +6,13 @@
 #include <QString>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 
 #include "core/io/Recording.h"
 #include "core/storage/DatabaseUrl.h"
+
+class QObject;
 
 namespace armtrack::storage {
 class ClinicalStore;
@@ -32,6 +35,22 @@ class RecordingTarget {
   /// GUI thread, after the session has stopped (the sink is closed): rows recorded, whether
   /// every row reached the storage, and event markers as text. Returns a line for the user.
   virtual QString finish(std::uint64_t rows, bool complete, const QString& events) = 0;
+
+  /// What the live screen calls: begin() and finish() without waiting. done gets begin()'s
+  /// error (empty: begun) or finish()'s line, later, on context's thread, and not at all when
+  /// context is gone by then. By default they call begin() and finish() at once; a target whose
+  /// storage lives on another thread (the GUI's records) runs them there.
+  using Done = std::function<void(const QString&)>;
+  virtual void beginAsync(const RecordingMeta& meta, const RecordingColumns& columns,
+                          QObject* context, Done done) {
+    (void)context;
+    done(begin(meta, columns));
+  }
+  virtual void finishAsync(std::uint64_t rows, bool complete, const QString& events,
+                           QObject* context, Done done) {
+    (void)context;
+    done(finish(rows, complete, events));
+  }
 };
 
 /// A recording file; never replaces one that exists (the user picks another name).
@@ -49,7 +68,9 @@ class CsvRecordingTarget final : public RecordingTarget {
 };
 
 /// A new session of a patient in the clinical records, as `armtrack-cli record --db` makes
-/// one: begun on the store's thread (the GUI's, where the signed-in store lives), its rows
+/// one: begun on the store's thread (the caller's: with a store on the GUI thread, as in tests,
+/// begin and finish are short calls there; the application's RecordsRecordingTarget makes
+/// them on the records' own thread), its rows
 /// committed by a DatabaseRecordingSink on the recorder thread, finished as complete or
 /// interrupted, event markers saved in its notes.
 class DatabaseRecordingTarget final : public RecordingTarget {

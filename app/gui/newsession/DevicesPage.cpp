@@ -213,13 +213,26 @@ void DevicesPage::drain() {
     if (st.elapsed - m_okSince >= kPassAfterSeconds) {
       m_checkPassed = true;
       std::vector<std::tuple<QString, QString, double>> rates;
-      for (const ui::StreamHealthRow& r : h.rows())
+      std::vector<std::pair<QString, double>> batteries;  // per device, where reported
+      for (const ui::StreamHealthRow& r : h.rows()) {
         rates.emplace_back(r.device, r.stream, r.rateHz);
-      finishCheck([rates] {
-        QStringList shown;
+        if (r.batteryPercent && (batteries.empty() || batteries.back().first != r.device))
+          batteries.emplace_back(r.device, *r.batteryPercent);
+      }
+      finishCheck([rates, batteries] {
+        QStringList shown, charged;
         for (const auto& [device, stream, hz] : rates)
           shown << tr("%1 %2 %L3 Hz").arg(device, stream).arg(hz, 0, 'f', 0);
-        return tr("Connected: %1.").arg(shown.join(QStringLiteral(", ")));
+        for (const auto& [device, percent] : batteries)
+          charged << (percent <= ui::DeviceHealthModel::kLowBatteryPercent
+                          ? tr("%1 %L2 % (low: charge it after the session)")
+                          : tr("%1 %L2 %"))
+                         .arg(device)
+                         .arg(percent, 0, 'f', 0);
+        QString text = tr("Connected: %1.").arg(shown.join(QStringLiteral(", ")));
+        if (!charged.isEmpty())
+          text += QLatin1Char(' ') + tr("Battery: %1.").arg(charged.join(QStringLiteral(", ")));
+        return text;
       });
       return;
     }

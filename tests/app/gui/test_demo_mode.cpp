@@ -6,6 +6,7 @@
 #include <QProcess>
 #include <QRegularExpression>
 #include <QSignalSpy>
+#include <cmath>
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
@@ -14,6 +15,7 @@
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
+#include "ui/RepetitionCounterWidget.h"
 
 using namespace armtrack::gui;
 
@@ -71,6 +73,27 @@ class TestDemoMode : public QObject {
           timer.elapsed() / 1000.0);
     QVERIFY(live->estimatesDrained() > 100);
     QVERIFY(live->bannerText().isEmpty());
+    // The virtual arm makes the demo protocol's exercise (shoulder flexion, target 90-150 deg):
+    // one repetition every 5 s (4 s up and down, 1 s at rest), each a full one for the counter.
+    const armtrack::RepetitionCounter& counter = live->repetitionCounter();
+    QCOMPARE(counter.primaryAngle(), 0);
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        counter.count() >= 3,
+        qPrintable(
+            QStringLiteral("%1 repetitions at %2 s").arg(counter.count()).arg(live->sessionTime())),
+        30000);
+    QCOMPARE(counter.partialCount(), std::size_t{0});
+    const auto& reps = counter.repetitions();
+    for (std::size_t i = 1; i < reps.size(); ++i)
+      QVERIFY2(std::abs(reps[i].peakS - reps[i - 1].peakS - 5.0) < 0.3,
+               qPrintable(QString::number(reps[i].peakS - reps[i - 1].peakS)));
+    QVERIFY(counter.count() <= static_cast<std::size_t>(live->sessionTime() / 5.0) + 1);
+    for (const armtrack::CountedRepetition& r : reps)  // 20 deg to 141 deg
+      QVERIFY2(std::abs(r.excursionRad * 180 / M_PI - 121) < 8,
+               qPrintable(QString::number(r.excursionRad * 180 / M_PI)));
+    QVERIFY2(
+        live->repetitions()->text().startsWith(QStringLiteral("%1 of 10").arg(counter.count())),
+        qPrintable(live->repetitions()->text()));
     test::saveScreenshot(app.window(), QStringLiteral("demo-live"));
     live->stop();
     QTRY_VERIFY_WITH_TIMEOUT(qobject_cast<PatientScreen*>(app.window()->currentScreen()), 20000);

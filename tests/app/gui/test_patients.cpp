@@ -160,13 +160,25 @@ class TestPatients : public QObject {
       const double rom = table->item(week, 1)->text().toDouble();
       QVERIFY2(std::abs(rom - (70 + 11 * week)) < 2, qPrintable(table->item(week, 1)->text()));
     }
-    // The normal range is shaded up to the AAOS span of flexion + extension: 240 deg.
-    QAreaSeries* area = nullptr;
-    for (QAbstractSeries* s : chart->chart()->series())
-      if (auto* a = qobject_cast<QAreaSeries*>(s)) area = a;
-    QVERIFY(area);
-    QCOMPARE(area->upperSeries()->at(0).y(), 240.0);
-    QCOMPARE(area->lowerSeries()->at(0).y(), 0.0);
+    // Each angle's range of motion against the normal range of the same motion from the
+    // neutral position (AAOS via Norkin & White, Table A.1): flexion 0-180 deg, not the 240
+    // deg arc of flexion and extension; and the table's "of normal" against the same.
+    const double namedNormalDeg[] = {180, 180, 70, 150, 80};
+    for (int a = 0; a < 5; ++a) {
+      chart->setAngle(a);
+      QAreaSeries* area = nullptr;
+      for (QAbstractSeries* s : chart->chart()->series())
+        if (auto* found = qobject_cast<QAreaSeries*>(s)) area = found;
+      QVERIFY(area);
+      QCOMPARE(area->upperSeries()->at(0).y(), namedNormalDeg[a]);
+      QCOMPARE(area->lowerSeries()->at(0).y(), 0.0);
+      for (int row = 0; row < chart->table()->rowCount(); ++row) {
+        const double rom = chart->table()->item(row, 1)->text().toDouble();
+        const double percent = chart->table()->item(row, 2)->text().remove(u'%').toDouble();
+        QVERIFY2(std::abs(percent - 100 * rom / namedNormalDeg[a]) <= 1.0,
+                 qPrintable(chart->table()->item(row, 2)->text()));
+      }
+    }
     // Another angle redraws with its own values.
     chart->setAngle(3);
     QCOMPARE(chart->points(), 6);

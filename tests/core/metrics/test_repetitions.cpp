@@ -380,6 +380,11 @@ TEST(NormativeRanges, AaosValuesAndSpans) {
   EXPECT_NEAR(normativeSpanRad(n[3]) * kRadToDeg, 150, 1e-9);
   EXPECT_NEAR(normativeSpanRad(n[4]) * kRadToDeg, 160, 1e-9);
   EXPECT_NEAR(fractionOfNormativeSpan(n[3], 75 * kDegToRad), 0.5, 1e-12);
+  // The named motion alone, from the neutral position (Norkin & White, Table A.1).
+  const double named[] = {180, 180, 70, 150, 80};
+  for (int a = 0; a < kNumClinicalAngles; ++a)
+    EXPECT_NEAR(namedMotionNormalRad(n[a]) * kRadToDeg, named[a], 1e-9) << a;
+  EXPECT_NEAR(fractionOfNamedMotionNormal(n[0], 90 * kDegToRad), 0.5, 1e-12);
   for (int a = 0; a < kNumClinicalAngles; ++a) {
     EXPECT_EQ(n[a].angle, a);
     EXPECT_FALSE(n[a].source.empty());

@@ -4,9 +4,11 @@
 // cannot start says why; keys drive every control.
 #include <QListWidget>
 #include <QPushButton>
+#include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
 #include <cmath>
+#include <optional>
 
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/plugins/PluginRegistry.h"
@@ -54,6 +56,35 @@ bool hasBluePixels(const QImage& img) {
     }
   return n > 50;
 }
+
+/// A recording target whose storage answers only when the test says so: a slow or busy
+/// database. Its rows go to a CSV file.
+class SlowTarget final : public RecordingTarget {
+ public:
+  explicit SlowTarget(std::filesystem::path csv) : m_csv(std::move(csv)) {}
+  QString describe() const override { return QStringLiteral("the slow records"); }
+  QString begin(const RecordingMeta&, const RecordingColumns&) override { return {}; }
+  std::unique_ptr<RecordingSink> open(const RecordingMeta& meta,
+                                      const RecordingColumns& columns) override {
+    return m_csv.open(meta, columns);
+  }
+  QString finish(std::uint64_t, bool, const QString&) override { return {}; }
+  void beginAsync(const RecordingMeta&, const RecordingColumns&, QObject*, Done done) override {
+    pendingBegin = std::move(done);
+  }
+  void finishAsync(std::uint64_t rows, bool complete, const QString&, QObject*,
+                   Done done) override {
+    finishedRows = rows;
+    finishedComplete = complete;
+    pendingFinish = std::move(done);
+  }
+  Done pendingBegin, pendingFinish;
+  std::optional<std::uint64_t> finishedRows;
+  bool finishedComplete = true;
+
+ private:
+  CsvRecordingTarget m_csv;
+};
 
 }  // namespace
 
@@ -226,9 +257,11 @@ class TestLiveSessionScreen : public QObject {
     screen.start();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Recording, 10000);
     QVERIFY(target->sessionId() > 0);
-    QVERIFY(waitForSessionTime(screen, 1.0));
+    // 2.5 s of recording (it starts once the session has begun in the records).
+    const double since = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, since + 1.0));
     screen.markEvent();
-    QVERIFY(waitForSessionTime(screen, 2.5));
+    QVERIFY(waitForSessionTime(screen, since + 2.5));
     QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
     screen.stop();
     QVERIFY(stopped.wait(15000));
@@ -237,6 +270,63 @@ class TestLiveSessionScreen : public QObject {
     QVERIFY2(info.sampleRows > 2000, qPrintable(QString::number(info.sampleRows)));
     QVERIFY2(info.notes.contains(QStringLiteral("Pain")), qPrintable(info.notes));
     QVERIFY(stopped.at(0).at(0).toString().contains(QString::number(target->sessionId())));
+  }
+
+  // The records answer late (a busy database): the screen goes on drawing meanwhile, records
+  // once the session is begun, and ends once it is finished; stopped while beginning, what was
+  // begun is closed as interrupted with nothing in it.
+  void aSlowRecordingTargetNeverHoldsTheScreen() {
+    QTemporaryDir dir;
+    auto target =
+        std::make_shared<SlowTarget>(dir.filePath(QStringLiteral("slow.csv")).toStdString());
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()), target);
+    screen.resize(900, 600);
+    screen.show();
+    screen.start();
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QVERIFY(waitForSessionTime(screen, 0.5));
+    screen.record();
+    QVERIFY(target->pendingBegin);
+    QCOMPARE(screen.state(), State::Live);
+    QVERIFY(!screen.recordButton()->isEnabled());  // once is enough
+    const double asked = screen.sessionTime();
+    QVERIFY(waitForSessionTime(screen, asked + 1.0));  // estimates keep coming
+    QCOMPARE(screen.state(), State::Live);
+    target->pendingBegin({});
+    QCOMPARE(screen.state(), State::Recording);
+    QVERIFY(waitForSessionTime(screen, screen.sessionTime() + 1.0));
+    QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
+    screen.stop();
+    QTRY_VERIFY_WITH_TIMEOUT(target->pendingFinish, 15000);
+    QCOMPARE(screen.state(), State::Stopping);
+    QVERIFY(stopped.isEmpty());
+    QVERIFY2(*target->finishedRows > 500, qPrintable(QString::number(*target->finishedRows)));
+    QVERIFY(target->finishedComplete);
+    target->pendingFinish(QStringLiteral("saved slowly"));
+    QCOMPARE(stopped.count(), 1);
+    QCOMPARE(stopped.at(0).at(0).toString(), QStringLiteral("saved slowly"));
+    QCOMPARE(screen.state(), State::Stopped);
+
+    // Stopped before the records answered.
+    auto late =
+        std::make_shared<SlowTarget>(dir.filePath(QStringLiteral("late.csv")).toStdString());
+    LiveSessionScreen again(m_registry, config(gui::demoDevices()), late);
+    again.show();
+    again.start();
+    QTRY_COMPARE_WITH_TIMEOUT(again.state(), State::Live, 10000);
+    again.record();
+    QVERIFY(late->pendingBegin);
+    QSignalSpy ended(&again, &LiveSessionScreen::sessionStopped);
+    again.stop();
+    QVERIFY(ended.wait(15000));
+    QVERIFY2(ended.at(0).at(0).toString().contains(QStringLiteral("nothing was recorded")),
+             qPrintable(ended.at(0).at(0).toString()));
+    QVERIFY(!late->finishedRows);
+    late->pendingBegin({});  // the answer comes after all: it is closed, empty, interrupted
+    QVERIFY(late->finishedRows);
+    QCOMPARE(*late->finishedRows, std::uint64_t{0});
+    QVERIFY(!late->finishedComplete);
+    QCOMPARE(again.state(), State::Stopped);
   }
 
   void sessionsThatCannotStartSayWhy() {
