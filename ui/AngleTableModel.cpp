@@ -23,6 +23,8 @@ QString angleDisplayName(int angle) {
 
 QString formatDegrees(double deg, int decimals) {
   if (!std::isfinite(deg)) return QStringLiteral("\u2013");
+  // A value that rounds to zero is shown as 0, never "-0" (a sign that says nothing).
+  if (std::abs(deg) < 0.5 * std::pow(10.0, -decimals)) deg = 0.0;
   return QStringLiteral("%L1\u00b0").arg(deg, 0, 'f', decimals);
 }
 

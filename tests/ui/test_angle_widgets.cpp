@@ -1,6 +1,7 @@
 // The plot panel, readouts and repetition counter on screen: a 1 kHz stream appended in batches
 // costs a bounded number of redraws and points; the window scrolls; NaN and absurd values, tiny
 // sizes and review mode with a cursor, an overlay, a target and events all hold up.
+#include <QLocale>
 #include <QTableView>
 #include <cmath>
 #include <limits>
@@ -46,6 +47,17 @@ class TestAngleWidgets : public QObject {
   Q_OBJECT
 
  private slots:
+  void degreesNeverShowANegativeZero() {
+    const QLocale before;
+    QLocale::setDefault(QLocale::c());
+    QCOMPARE(formatDegrees(-0.4, 0), QStringLiteral("0\u00b0"));
+    QCOMPARE(formatDegrees(-0.04, 1), QStringLiteral("0.0\u00b0"));
+    QCOMPARE(formatDegrees(-0.06, 1), QStringLiteral("-0.1\u00b0"));
+    QCOMPARE(formatDegrees(-0.6, 0), QStringLiteral("-1\u00b0"));
+    QCOMPARE(formatDegrees(12.34), QStringLiteral("12.3\u00b0"));
+    QLocale::setDefault(before);
+  }
+
   void liveStreamIsDecimatedAndScrolls() {
     AnglePlotPanel panel;
     panel.resize(900, 700);
