@@ -13,9 +13,12 @@
 
 #include "core/camera/PinholeCamera.h"
 #include "core/estimation/ArmFilter.h"
+#include "tests/core/estimation/JacobianTesting.h"
 
 namespace armtrack {
 namespace {
+
+using test::randomState;
 
 using Vec15 = Eigen::Matrix<double, 15, 1>;
 using Vec18 = Eigen::Matrix<double, 18, 1>;
@@ -25,18 +28,6 @@ constexpr double kPi = std::numbers::pi;
 // Rows of predictAll: [ua gyro, ua acc, fa gyro, fa acc, elbow, wrist]; columns [thdd thd th].
 constexpr int kUaGyr = 0, kUaAcc = 3, kFaGyr = 6, kFaAcc = 9, kElbow = 12, kWrist = 15;
 constexpr int kThdd = 0, kThd = 5, kTh = 10;
-
-// Random state: angles in [-pi, pi], rates up to 3 rad/s, accelerations up to 30 rad/s^2.
-Vec15 randomState(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Vec15 x;
-  for (int j = 0; j < 5; ++j) {
-    x(kThdd + j) = 30.0 * u(rng);
-    x(kThd + j) = 3.0 * u(rng);
-    x(kTh + j) = kPi * u(rng);
-  }
-  return x;
-}
 
 // Central differences, 4-point stencil: f' = (f(-2h) - 8 f(-h) + 8 f(h) - f(2h)) / 12h.
 Jac finiteDifferenceJacobian(const EstimatorParams& p, const Vec15& x, double h) {
@@ -50,19 +41,6 @@ Jac finiteDifferenceJacobian(const EstimatorParams& p, const Vec15& x, double h)
     jac.col(c) = (at(-2) - 8.0 * at(-1) + 8.0 * at(1) - at(2)) / (12.0 * h);
   }
   return jac;
-}
-
-ArmGeometry unusualGeometry() {
-  ArmGeometry g;
-  g.l3 = 0.31;
-  g.l6 = 0.27;
-  g.lu3 = 0.17;
-  g.thu4 = 0.4;
-  g.lu5 = 0.045;
-  g.lf6 = 0.12;
-  g.thf7 = -1.1;
-  g.lf8 = 0.03;
-  return g;
 }
 
 struct ModelCase {
@@ -82,7 +60,7 @@ TEST_P(JacobianVsFiniteDifferences, AgreeAtRandomStates) {
   EstimatorParams p;
   p.model = GetParam().model;
   if (!GetParam().defaultGeometry) {
-    p.geometry = unusualGeometry();
+    p.geometry = test::unusualGeometry();
     p.gUp = 9.81 * Eigen::Vector3d(-0.9, 0.3, 0.2).normalized();  // a tilted trunk
   }
   std::mt19937_64 rng(42);
@@ -118,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(AllModels, JacobianVsFiniteDifferences,
 
 TEST(MeasurementStructure, GyroRowsIgnoreJointAccelerations) {
   EstimatorParams p;
-  p.geometry = unusualGeometry();
+  p.geometry = test::unusualGeometry();
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 50; ++trial) {
     const Vec15 x = randomState(rng);
@@ -154,7 +132,7 @@ TEST(MeasurementStructure, GravityOnlyAccelerometerIgnoresRatesAndAccelerations)
 
 TEST(MeasurementStructure, OpticalRowsDependOnAnglesOnly) {
   EstimatorParams p;
-  p.geometry = unusualGeometry();
+  p.geometry = test::unusualGeometry();
   std::mt19937_64 rng(3);
   for (int trial = 0; trial < 50; ++trial) {
     const Jac jac = predictAllJacobian(p, randomState(rng));
@@ -178,7 +156,7 @@ TEST(MeasurementStructure, ElbowPositionIgnoresElbowJoints) {
 // gyro = J(th) thd exactly: linear (and homogeneous) in the joint rates, whatever thdd is.
 TEST(MeasurementStructure, GyroRowsAreLinearInRates) {
   EstimatorParams p;
-  p.geometry = unusualGeometry();
+  p.geometry = test::unusualGeometry();
   std::mt19937_64 rng(9);
   for (int trial = 0; trial < 50; ++trial) {
     const Vec15 x = randomState(rng);
@@ -336,7 +314,7 @@ class MarkerPixel : public testing::TestWithParam<Side> {};
 TEST_P(MarkerPixel, IsTheProjectionOfTheMarkerAndItsJacobianMatchesFiniteDifferences) {
   EstimatorParams p;
   p.side = GetParam();
-  p.geometry = unusualGeometry();
+  p.geometry = test::unusualGeometry();
   p.camera = frontCamera(1.5);
   const PinholeCamera camera(*p.camera);
   std::mt19937_64 rng(11);

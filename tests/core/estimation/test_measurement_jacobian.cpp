@@ -12,37 +12,16 @@
 
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/MeasurementJacobian.h"
+#include "tests/core/estimation/JacobianTesting.h"
 
 namespace armtrack {
 namespace {
 
+using test::randomState;
+
 using Vec15 = Eigen::Matrix<double, 15, 1>;
 
 constexpr double kPi = std::numbers::pi;
-
-Vec15 randomState(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Vec15 x;
-  for (int j = 0; j < 5; ++j) {
-    x(j) = 30.0 * u(rng);      // rad/s^2
-    x(5 + j) = 3.0 * u(rng);   // rad/s
-    x(10 + j) = kPi * u(rng);  // rad
-  }
-  return x;
-}
-
-ArmGeometry otherGeometry() {
-  ArmGeometry g;
-  g.l3 = 0.31;
-  g.l6 = 0.27;
-  g.lu3 = 0.17;
-  g.thu4 = 0.4;
-  g.lu5 = 0.045;
-  g.lf6 = 0.12;
-  g.thf7 = -1.1;
-  g.lf8 = 0.03;
-  return g;
-}
 
 struct Case {
   MeasurementModel model;
@@ -53,7 +32,7 @@ EstimatorParams paramsFor(const Case& c) {
   EstimatorParams p;
   p.model = c.model;
   if (c.otherGeometry) {
-    p.geometry = otherGeometry();
+    p.geometry = test::unusualGeometry();
     p.gUp = 9.81 * Eigen::Vector3d(-0.9, 0.3, 0.2).normalized();
   }
   return p;
