@@ -16,7 +16,11 @@ if [ -z "$cxx" ] || [ -z "$cc" ]; then
   exit 1
 fi
 
+# Line tables are all a sanitizer's report needs; full debug information would put a copy of
+# the core library's in every fuzzer.
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
+  -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG" \
   -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" \
   -DARMTRACK_BUILD_FUZZERS=ON >/dev/null
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
