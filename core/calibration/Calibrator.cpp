@@ -24,6 +24,7 @@
 
 #include "core/calibration/CalibrationCosts.h"
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/Heading.h"
 #include "core/estimation/SampleGate.h"
 #include "core/kinematics/Side.h"
 
@@ -145,40 +146,12 @@ double rmsOf(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>&
   return n ? std::sqrt(sum / n) : 0.0;
 }
 
-/// Orientation of frame 3 (the upper arm) in frame 0 for shoulder angles th0..th2.
-Eigen::Matrix3d shoulderRotation(const JointVector& th) {
-  const auto rz = [](double a) { return Eigen::AngleAxisd(a, Vec3::UnitZ()).toRotationMatrix(); };
-  const Eigen::Matrix3d rx =
-      Eigen::AngleAxisd(std::numbers::pi / 2, Vec3::UnitX()).toRotationMatrix();
-  return rz(th(0)) * rx * rz(th(1) + std::numbers::pi / 2) * rx * rz(th(2));
-}
-
-/// th with the whole arm turned by alpha (rad) about the vertical through the shoulder: the
-/// shoulder angles that give Rot(up, alpha) * R03(th), by Gauss-Newton from th (elbow unchanged).
-/// guess: where Gauss-Newton starts (default th), so that consecutive knots stay on one branch.
-JointVector turnAboutVertical(const JointVector& th, double alpha, const Vec3& up,
-                              const JointVector* guess = nullptr) {
-  const Eigen::Matrix3d target =
-      Eigen::AngleAxisd(alpha, up.normalized()).toRotationMatrix() * shoulderRotation(th);
-  JointVector x = guess ? *guess : th;
-  x.tail<2>() = th.tail<2>();
-  auto residual = [&](const JointVector& q) {
-    const Eigen::AngleAxisd e(shoulderRotation(q).transpose() * target);
-    return Vec3(e.angle() * e.axis());
-  };
-  for (int it = 0; it < 20; ++it) {
-    const Vec3 r = residual(x);
-    if (r.norm() < 1e-12) break;
-    Eigen::Matrix3d jac;
-    for (int k = 0; k < 3; ++k) {
-      JointVector q = x;
-      const double h = 1e-7;
-      q(k) += h;
-      jac.col(k) = (residual(q) - r) / h;
-    }
-    x.head<3>() -= jac.completeOrthogonalDecomposition().solve(r);
-  }
-  return x;
+/// `turned` moved by whole turns, joint by joint, to lie within half a turn of `near`: the finite
+/// turn about the vertical gives wrapped angles, a spline's control points must stay continuous.
+JointVector unwrappedNear(const JointVector& turned, const JointVector& near) {
+  JointVector out = turned;
+  for (int j = 0; j < kNumJoints; ++j) out(j) = near(j) + wrapAngle(turned(j) - near(j));
+  return out;
 }
 
 /// Continues a solved trajectory by integrating the joint rates that best explain both
@@ -287,7 +260,7 @@ void turnKnots(std::vector<double>& ctrl, int from, double alpha, const Vec3& up
     Eigen::Map<JointVector> c(ctrl.data() + kNumJoints * i);
     const JointVector orig = c;
     const JointVector guess = i == from && !seeded ? orig : JointVector(prevTurned + (orig - prev));
-    const JointVector turned = turnAboutVertical(orig, alpha, up, &guess);
+    const JointVector turned = unwrappedNear(turnAboutVertical(orig, alpha, up), guess);
     prev = orig;
     prevTurned = turned;
     c = turned;
@@ -680,7 +653,9 @@ class CalibrationFit {
     if (!m_in.optical) {
       const JointVector th = thAt(m_priorWeights);
       const JointVector d = headingDirection(pose, m_in.up);
-      auto f = [&](double a) { return d.dot(turnAboutVertical(th, a, m_in.up) - pose); };
+      auto f = [&](double a) {
+        return d.dot(unwrappedNear(turnAboutVertical(th, a, m_in.up), pose) - pose);
+      };
       double a0 = 0.0, a1 = 0.02, f0 = f(a0), f1 = f(a1);
       for (int it = 0; it < 30 && std::abs(f1) > 1e-10 && f1 != f0; ++it) {
         const double a2 = a1 - f1 * (a1 - a0) / (f1 - f0);
