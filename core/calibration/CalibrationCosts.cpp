@@ -90,4 +90,55 @@ ceres::CostFunction* normalPrior(const Eigen::VectorXd& mean, const Eigen::Vecto
   return new ceres::NormalPrior(a, mean);
 }
 
+std::vector<ImuBin> binImu(const std::vector<ArmSample>& samples, bool forearm, double t0,
+                           double binSeconds, const Vec3& bias) {
+  std::vector<ImuBin> bins;
+  long current = -1;
+  ImuBin acc;
+  auto flush = [&] {
+    if (acc.count > 0) {
+      acc.t /= acc.count;
+      acc.gyr /= acc.count;
+      acc.acc /= acc.count;
+      bins.push_back(acc);
+    }
+    acc = ImuBin{};
+  };
+  for (const ArmSample& s : samples) {
+    const std::optional<ImuReading>& r = forearm ? s.forearm : s.upperArm;
+    if (!r || !r->gyr.allFinite() || !r->acc.allFinite() || !std::isfinite(s.t)) continue;
+    const long k = static_cast<long>(std::floor((s.t - t0) / binSeconds));
+    if (k != current) {
+      flush();
+      current = k;
+    }
+    acc.t += s.t;
+    acc.gyr += r->gyr - bias;
+    acc.acc += r->acc;
+    ++acc.count;
+  }
+  flush();
+  // The bias guess is subtracted for binning only; the residual adds the fitted bias back.
+  for (ImuBin& b : bins) b.gyr += bias;
+  return bins;
+}
+
+StillStats stillStats(const std::vector<ArmSample>& samples, bool forearm, double from, double to) {
+  StillStats st;
+  Vec3 sum = Vec3::Zero(), sumSq = Vec3::Zero();
+  for (const ArmSample& s : samples) {
+    if (s.t < from || s.t > to) continue;
+    const std::optional<ImuReading>& r = forearm ? s.forearm : s.upperArm;
+    if (!r || !r->gyr.allFinite()) continue;
+    sum += r->gyr;
+    sumSq += r->gyr.cwiseProduct(r->gyr);
+    ++st.count;
+  }
+  if (st.count == 0) return st;
+  st.mean = sum / st.count;
+  const Vec3 var = (sumSq / st.count - st.mean.cwiseProduct(st.mean)).cwiseMax(0.0);
+  st.maxStd = std::sqrt(var.maxCoeff());
+  return st;
+}
+
 }  // namespace armtrack::calib

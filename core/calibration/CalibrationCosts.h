@@ -73,6 +73,20 @@ struct ImuBin {
   int count = 0;
 };
 
+/// One IMU's readings averaged over bins of binSeconds from t0 (the forearm's or the upper arm's);
+/// `bias` is taken out while binning and put back, so only the binning sees the guess.
+std::vector<ImuBin> binImu(const std::vector<ArmSample>& samples, bool forearm, double t0,
+                           double binSeconds, const Vec3& bias);
+
+/// Mean and per-axis standard deviation of one IMU's gyroscope over [from, to].
+struct StillStats {
+  Vec3 mean = Vec3::Zero();
+  double maxStd = 0.0;
+  int count = 0;
+};
+
+StillStats stillStats(const std::vector<ArmSample>& samples, bool forearm, double from, double to);
+
 struct ImuCost {
   ImuCost(const SplineWeights& w, const ImuBin& bin, const ArmGeometry& nominal, const Vec3& gUp,
           double gyroStd, double accelStd, bool forearm)

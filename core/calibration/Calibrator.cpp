@@ -23,6 +23,7 @@
 #include <stdexcept>
 
 #include "core/calibration/CalibrationCosts.h"
+#include "core/calibration/TrajectoryMoves.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/Heading.h"
 #include "core/estimation/SampleGate.h"
@@ -36,6 +37,8 @@ constexpr double kMinDuration = 10.0;  // s
 // a stiff one keeps the solver's damped steps from drifting along them (rad).
 constexpr double kGaugeStd = 0.01 * std::numbers::pi / 180.0;
 
+using calib::binImu;
+using calib::DeadReckoning;
 using calib::evalSpline;
 using calib::fitSpline;
 using calib::ImuBin;
@@ -46,70 +49,12 @@ using calib::SplineGrid;
 using calib::splineWeights;
 using calib::SplineWeights;
 using calib::StartPoseCost;
-using calib::toSensor;
+using calib::StillStats;
+using calib::stillStats;
+using calib::turnKnots;
+using calib::unwrappedNear;
 using calib::Vec3;
 using calib::Vec5T;
-
-// ---------------------------------------------------------------------------------------------
-// Preparation.
-
-std::vector<ImuBin> binImu(const std::vector<ArmSample>& samples, bool forearm, double t0,
-                           double binSeconds, const Vec3& bias) {
-  std::vector<ImuBin> bins;
-  long current = -1;
-  ImuBin acc;
-  auto flush = [&] {
-    if (acc.count > 0) {
-      acc.t /= acc.count;
-      acc.gyr /= acc.count;
-      acc.acc /= acc.count;
-      bins.push_back(acc);
-    }
-    acc = ImuBin{};
-  };
-  for (const ArmSample& s : samples) {
-    const std::optional<ImuReading>& r = forearm ? s.forearm : s.upperArm;
-    if (!r || !r->gyr.allFinite() || !r->acc.allFinite() || !std::isfinite(s.t)) continue;
-    const long k = static_cast<long>(std::floor((s.t - t0) / binSeconds));
-    if (k != current) {
-      flush();
-      current = k;
-    }
-    acc.t += s.t;
-    acc.gyr += r->gyr - bias;
-    acc.acc += r->acc;
-    ++acc.count;
-  }
-  flush();
-  // The bias guess is subtracted for binning only; the residual adds the fitted bias back.
-  for (ImuBin& b : bins) b.gyr += bias;
-  return bins;
-}
-
-/// Mean and per-axis standard deviation of one IMU's gyroscope over [from, to].
-struct StillStats {
-  Vec3 mean = Vec3::Zero();
-  double maxStd = 0.0;
-  int count = 0;
-};
-
-StillStats stillStats(const std::vector<ArmSample>& samples, bool forearm, double from, double to) {
-  StillStats st;
-  Vec3 sum = Vec3::Zero(), sumSq = Vec3::Zero();
-  for (const ArmSample& s : samples) {
-    if (s.t < from || s.t > to) continue;
-    const std::optional<ImuReading>& r = forearm ? s.forearm : s.upperArm;
-    if (!r || !r->gyr.allFinite()) continue;
-    sum += r->gyr;
-    sumSq += r->gyr.cwiseProduct(r->gyr);
-    ++st.count;
-  }
-  if (st.count == 0) return st;
-  st.mean = sum / st.count;
-  const Vec3 var = (sumSq / st.count - st.mean.cwiseProduct(st.mean)).cwiseMax(0.0);
-  st.maxStd = std::sqrt(var.maxCoeff());
-  return st;
-}
 
 class ProgressCallback final : public ceres::IterationCallback {
  public:
@@ -144,127 +89,6 @@ double rmsOf(ceres::Problem& problem, const std::vector<ceres::ResidualBlockId>&
     n += count;
   }
   return n ? std::sqrt(sum / n) : 0.0;
-}
-
-/// `turned` moved by whole turns, joint by joint, to lie within half a turn of `near`: the finite
-/// turn about the vertical gives wrapped angles, a spline's control points must stay continuous.
-JointVector unwrappedNear(const JointVector& turned, const JointVector& near) {
-  JointVector out = turned;
-  for (int j = 0; j < kNumJoints; ++j) out(j) = near(j) + wrapAngle(turned(j) - near(j));
-  return out;
-}
-
-/// Continues a solved trajectory by integrating the joint rates that best explain both
-/// gyroscopes (least squares, 6 readings for 5 rates), with the current calibration.
-struct DeadReckoning {
-  const SplineGrid& grid;
-  const std::vector<ImuBin> (&bins)[2];
-  const ArmGeometry& nominal;
-  const Vec3& gUp;
-  const double* mountUa;
-  const double* mountFa;
-  const double* biasUa;
-  const double* biasFa;
-  const double* seg;
-
-  /// Gyro reading of one IMU at time t, bias removed, linearly interpolated between bins.
-  Vec3 gyro(int imu, double t) const {
-    const std::vector<ImuBin>& b = bins[imu];
-    const double* bias = imu == 0 ? biasUa : biasFa;
-    const auto it =
-        std::lower_bound(b.begin(), b.end(), t, [](const ImuBin& x, double v) { return x.t < v; });
-    Vec3 g;
-    if (it == b.begin()) {
-      g = b.front().gyr;
-    } else if (it == b.end()) {
-      g = b.back().gyr;
-    } else {
-      const ImuBin& hi = *it;
-      const ImuBin& lo = *(it - 1);
-      const double u = (t - lo.t) / (hi.t - lo.t);
-      g = (1.0 - u) * lo.gyr + u * hi.gyr;
-    }
-    return g - Vec3(bias[0], bias[1], bias[2]);
-  }
-
-  /// Predicted gyros [upper; forearm] in the sensors' axes for angles th and rates thd.
-  Eigen::Matrix<double, 6, 1> predict(const JointVector& th, const JointVector& thd) const {
-    ArmGeometryT<double> geo = geometryAs<double>(nominal);
-    geo.l3 = seg[0];
-    geo.l6 = seg[1];
-    geo.lu3 = mountUa[0];
-    geo.lu5 = mountUa[1];
-    geo.thu4 = mountUa[2];
-    geo.lf6 = mountFa[0];
-    geo.lf8 = mountFa[1];
-    geo.thf7 = mountFa[2];
-    const JointVector zero = JointVector::Zero();
-    const FrameState<double> f3 = shoulderKinematics<double>(th, thd, zero, gUp);
-    const FrameState<double> u = upperImuKinematics<double>(f3, geo);
-    const FrameState<double> f = forearmImuKinematics<double>(f3, th, thd, zero, geo);
-    Eigen::Matrix<double, 6, 1> out;
-    out.head<3>() = toSensor<double>(u.omega, mountUa[3], mountUa[4]);
-    out.tail<3>() = toSensor<double>(f.omega, mountFa[3], mountFa[4]);
-    return out;
-  }
-
-  JointVector rates(const JointVector& th, double t) const {
-    Eigen::Matrix<double, 6, kNumJoints> a;
-    for (int k = 0; k < kNumJoints; ++k) a.col(k) = predict(th, JointVector::Unit(k));
-    Eigen::Matrix<double, 6, 1> b;
-    b << gyro(0, t), gyro(1, t);
-    const Eigen::Matrix<double, kNumJoints, kNumJoints> n =
-        a.transpose() * a + 1e-6 * Eigen::Matrix<double, kNumJoints, kNumJoints>::Identity();
-    return n.ldlt().solve(a.transpose() * b);
-  }
-
-  /// Sets the control points whose knot time lies in (from, to] by integrating from the
-  /// trajectory's value at `from` (midpoint rule, steps of at most a quarter knot spacing).
-  /// Knot i is tied to time t0 + (i - 1) dt, where th ~ c_i.
-  void extend(std::vector<double>& ctrl, double from, double to) const {
-    const int n = grid.controlPoints();
-    const SplineWeights w0 = splineWeights(grid, from);
-    const double* const c[4] = {ctrl.data() + 5 * w0.first, ctrl.data() + 5 * (w0.first + 1),
-                                ctrl.data() + 5 * (w0.first + 2), ctrl.data() + 5 * (w0.first + 3)};
-    Vec5T<double> th5, thd5, thdd5;
-    evalSpline(w0, c, th5, thd5, thdd5);
-    JointVector th = th5;
-    double t = from;
-    for (int i = w0.first + 4; i < n; ++i) {
-      const double knotTime = grid.t0 + (i - 1) * grid.dt;
-      if (knotTime > to) break;
-      const int steps = std::max(1, static_cast<int>(std::ceil((knotTime - t) / (grid.dt / 4))));
-      const double h = (knotTime - t) / steps;
-      for (int k = 0; k < steps; ++k) {
-        const JointVector r1 = rates(th, t);
-        const JointVector mid = th + 0.5 * h * r1;
-        th += h * rates(mid, t + 0.5 * h);
-        t += h;
-      }
-      Eigen::Map<JointVector>(ctrl.data() + 5 * i) = th;
-    }
-  }
-};
-
-/// Turns knots [from, end) of a control-point vector about the vertical by alpha. Each knot
-/// starts Gauss-Newton from its turned predecessor, so the result stays on one branch of the
-/// shoulder angles and continuous.
-/// seedOrig/seedTurned: a knot before `from` and its turned value, to start the chain from.
-void turnKnots(std::vector<double>& ctrl, int from, double alpha, const Vec3& up,
-               const JointVector* seedOrig = nullptr, const JointVector* seedTurned = nullptr) {
-  const int n = static_cast<int>(ctrl.size()) / kNumJoints;
-  const bool seeded = seedOrig && seedTurned;
-  JointVector prev = seeded ? *seedOrig : JointVector::Zero();
-  JointVector prevTurned = seeded ? *seedTurned : JointVector::Zero();
-  for (int i = from; i < n; ++i) {
-    Eigen::Map<JointVector> c(ctrl.data() + kNumJoints * i);
-    const JointVector orig = c;
-    const JointVector guess = i == from && !seeded ? orig : JointVector(prevTurned + (orig - prev));
-    const JointVector turned = unwrappedNear(turnAboutVertical(orig, alpha, up), guess);
-    prev = orig;
-    prevTurned = turned;
-    c = turned;
-  }
 }
 
 }  // namespace
