@@ -26,10 +26,20 @@ std::optional<int> digits(std::string_view s) {
   return v;
 }
 
+/// Which limit of which clinical angle a motion of the study is.
+struct MotionLimit {
+  int angle;      ///< clinicalAngleInfo() order
+  bool negative;  ///< the minimum, as -value; else the maximum
+};
+/// In SoucieMotion order: shoulder flexion, elbow flexion, elbow extension (past straight),
+/// pronation, supination.
+constexpr std::array<MotionLimit, 5> kMotionLimits{
+    {{0, false}, {3, false}, {3, true}, {4, false}, {4, true}}};
+
 // The reference values read from the CDC's page. None are entered yet: the page could not be
 // read past its first age group's hip, knee and ankle rows where this was written (docs/metrics.md,
-// "Normative ranges"). Enter each value as "mean (low - high)" is printed there, for example
-// {SoucieMotion::ElbowFlexion, 2, Sex::Female, mean, low, high} for women aged 20-44.
+// "By age and sex: Soucie et al. 2011"). Enter each value as "mean (low - high)" is printed there,
+// for example {SoucieMotion::ElbowFlexion, 2, Sex::Female, mean, low, high} for women aged 20-44.
 constexpr std::array<SoucieValue, 0> kSoucieValues{};
 
 }  // namespace
@@ -101,31 +111,15 @@ PatientNorms patientNorms(std::optional<CivilDate> birth, const CivilDate& on, S
   }
   for (const SoucieValue& v : table) {
     if (v.ageGroup != *n.ageGroup || v.sex != sex) continue;
+    const MotionLimit l = kMotionLimits[static_cast<std::size_t>(v.motion)];
+    NormativeRange& r = n.ranges[static_cast<std::size_t>(l.angle)];
     const double rad = v.meanDeg * kDegToRad;
-    auto setMax = [&](int angle) {
-      n.ranges[static_cast<std::size_t>(angle)].maxRad = rad;
-      n.ranges[static_cast<std::size_t>(angle)].maxSource = NormSource::Soucie2011;
-    };
-    auto setMin = [&](int angle) {
-      n.ranges[static_cast<std::size_t>(angle)].minRad = -rad;
-      n.ranges[static_cast<std::size_t>(angle)].minSource = NormSource::Soucie2011;
-    };
-    switch (v.motion) {
-      case SoucieMotion::ShoulderFlexion:
-        setMax(0);
-        break;
-      case SoucieMotion::ElbowFlexion:
-        setMax(3);
-        break;
-      case SoucieMotion::ElbowExtension:
-        setMin(3);
-        break;
-      case SoucieMotion::ForearmPronation:
-        setMax(4);
-        break;
-      case SoucieMotion::ForearmSupination:
-        setMin(4);
-        break;
+    if (l.negative) {
+      r.minRad = -rad;
+      r.minSource = NormSource::Soucie2011;
+    } else {
+      r.maxRad = rad;
+      r.maxSource = NormSource::Soucie2011;
     }
   }
   if (!n.usesSoucie()) n.fallback = NormFallback::NoValues;
