@@ -3484,10 +3484,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Vergleich mit Normbereichen</translation>
     </message>
     <message>
-        <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
-        <translation>Grau: das normale aktive Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Quelle: %1. Für die Schulteradduktion nennt diese Quelle keinen Normwert; ihr Bereich wird ab 0 gezeigt.</translation>
-    </message>
-    <message>
         <source>Comparison with earlier sessions</source>
         <translation>Vergleich mit früheren Sitzungen</translation>
     </message>
@@ -3550,6 +3546,50 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>ROM %1 of %2 deg (%3 %)</source>
         <translation>ROM %1 von %2° (%3 %)</translation>
+    </message>
+    <message>
+        <source>females aged %1-%2</source>
+        <translation>Frauen im Alter von %1-%2 Jahren</translation>
+    </message>
+    <message>
+        <source>males aged %1-%2</source>
+        <translation>Männer im Alter von %1-%2 Jahren</translation>
+    </message>
+    <message>
+        <source>%1 (maximum); %2 (minimum)</source>
+        <translation>%1 (Maximum); %2 (Minimum)</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the date of birth is not recorded.</source>
+        <translation>Referenzwerte nach Alter und Geschlecht (Soucie et al. 2011) werden nicht verwendet: Das Geburtsdatum ist nicht erfasst.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the patient was %1 on the day of the session, outside the study&apos;s 2 to 69 years.</source>
+        <translation>Referenzwerte nach Alter und Geschlecht (Soucie et al. 2011) werden nicht verwendet: Der Patient war am Tag der Sitzung %1 Jahre alt, außerhalb der 2 bis 69 Jahre der Studie.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the patient&apos;s sex is not recorded as female or male.</source>
+        <translation>Referenzwerte nach Alter und Geschlecht (Soucie et al. 2011) werden nicht verwendet: Das Geschlecht des Patienten ist nicht als weiblich oder männlich erfasst.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: this version has none for %1.</source>
+        <translation>Referenzwerte nach Alter und Geschlecht (Soucie et al. 2011) werden nicht verwendet: Diese Version enthält keine für %1.</translation>
+    </message>
+    <message>
+        <source>Normal range (deg)</source>
+        <translation>Normbereich (Grad)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Quelle</translation>
+    </message>
+    <message>
+        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Sources: %1.</source>
+        <translation>Grau: das normale Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Für die Schulteradduktion nennen die Quellen keinen Normwert; ihr Bereich wird ab 0 gezeigt. Quellen: %1.</translation>
+    </message>
+    <message>
+        <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
+        <translation>Soucie et al. geben das mittlere passive Bewegungsausmaß gesunder %1 an; der Patient war am Tag der Sitzung %2 Jahre alt.</translation>
     </message>
 </context>
 <context>

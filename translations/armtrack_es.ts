@@ -3484,10 +3484,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Comparación con los rangos normativos</translation>
     </message>
     <message>
-        <source>Grey: the normal active range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Source: %1. Shoulder adduction has no normal limit in that source; its range is shown from 0.</source>
-        <translation>Gris: el rango de movimiento activo normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Fuente: %1. Esa fuente no da un límite normal para la aducción de hombro; su rango se muestra desde 0.</translation>
-    </message>
-    <message>
         <source>Comparison with earlier sessions</source>
         <translation>Comparación con sesiones anteriores</translation>
     </message>
@@ -3550,6 +3546,50 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>ROM %1 of %2 deg (%3 %)</source>
         <translation>ROM %1 de %2° (%3 %)</translation>
+    </message>
+    <message>
+        <source>females aged %1-%2</source>
+        <translation>mujeres de %1 a %2 años</translation>
+    </message>
+    <message>
+        <source>males aged %1-%2</source>
+        <translation>hombres de %1 a %2 años</translation>
+    </message>
+    <message>
+        <source>%1 (maximum); %2 (minimum)</source>
+        <translation>%1 (máximo); %2 (mínimo)</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the date of birth is not recorded.</source>
+        <translation>No se usan los valores de referencia por edad y sexo (Soucie et al. 2011): la fecha de nacimiento no está registrada.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the patient was %1 on the day of the session, outside the study&apos;s 2 to 69 years.</source>
+        <translation>No se usan los valores de referencia por edad y sexo (Soucie et al. 2011): el paciente tenía %1 años el día de la sesión, fuera de los 2 a 69 años del estudio.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: the patient&apos;s sex is not recorded as female or male.</source>
+        <translation>No se usan los valores de referencia por edad y sexo (Soucie et al. 2011): el sexo del paciente no está registrado como femenino o masculino.</translation>
+    </message>
+    <message>
+        <source>Reference values by age and sex (Soucie et al. 2011) are not used: this version has none for %1.</source>
+        <translation>No se usan los valores de referencia por edad y sexo (Soucie et al. 2011): esta versión no tiene ninguno para %1.</translation>
+    </message>
+    <message>
+        <source>Normal range (deg)</source>
+        <translation>Rango normal (grados)</translation>
+    </message>
+    <message>
+        <source>Source</source>
+        <translation>Fuente</translation>
+    </message>
+    <message>
+        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Sources: %1.</source>
+        <translation>Gris: el rango de movimiento normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Las fuentes no dan un límite normal para la aducción del hombro; su rango se muestra desde 0. Fuentes: %1.</translation>
+    </message>
+    <message>
+        <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
+        <translation>Soucie et al. dan el rango de movimiento pasivo medio de personas sanas (%1); el paciente tenía %2 años el día de la sesión.</translation>
     </message>
 </context>
 <context>

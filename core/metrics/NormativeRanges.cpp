@@ -2,21 +2,34 @@
 
 namespace armtrack {
 
-namespace {
-constexpr std::string_view kAaos =
-    "AAOS 1965, Joint Motion: Method of Measuring and Recording; via Norkin & White, "
-    "Measurement of Joint Motion, Table A.1";
-}  // namespace
+std::string_view normSourceCitation(NormSource s) {
+  switch (s) {
+    case NormSource::Soucie2011:
+      return "Soucie JM et al., Range of motion measurements: reference values and a database "
+             "for comparison studies, Haemophilia 2011;17(3):500-507, "
+             "doi:10.1111/j.1365-2516.2010.02399.x; values from the CDC's Joint Range of Motion "
+             "Study, archive.cdc.gov/www_cdc_gov/ncbddd/jointrom/index.html";
+    case NormSource::Aaos:
+      break;
+  }
+  return "AAOS 1965, Joint Motion: Method of Measuring and Recording; via Norkin & White, "
+         "Measurement of Joint Motion, Table A.1";
+}
+
+std::string_view normSourceShortName(NormSource s) {
+  return s == NormSource::Soucie2011 ? "Soucie et al. 2011" : "AAOS";
+}
 
 const std::array<NormativeRange, kNumClinicalAngles>& aaosNormativeRanges() {
+  using enum NormSource;
   static const std::array<NormativeRange, kNumClinicalAngles> ranges{{
-      {0, -60.0 * kDegToRad, 180.0 * kDegToRad, kAaos, "flexion 180, extension 60 deg"},
-      {1, std::nullopt, 180.0 * kDegToRad, kAaos,
+      {0, -60.0 * kDegToRad, 180.0 * kDegToRad, Aaos, Aaos, "flexion 180, extension 60 deg"},
+      {1, std::nullopt, 180.0 * kDegToRad, Aaos, Aaos,
        "abduction 180 deg; adduction is not given in the source table"},
-      {2, -90.0 * kDegToRad, 70.0 * kDegToRad, kAaos,
+      {2, -90.0 * kDegToRad, 70.0 * kDegToRad, Aaos, Aaos,
        "internal (medial) rotation 70, external (lateral) rotation 90 deg"},
-      {3, 0.0, 150.0 * kDegToRad, kAaos, "flexion 150 deg from full extension (0)"},
-      {4, -80.0 * kDegToRad, 80.0 * kDegToRad, kAaos, "pronation 80, supination 80 deg"},
+      {3, 0.0, 150.0 * kDegToRad, Aaos, Aaos, "flexion 150 deg from full extension (0)"},
+      {4, -80.0 * kDegToRad, 80.0 * kDegToRad, Aaos, Aaos, "pronation 80, supination 80 deg"},
   }};
   return ranges;
 }

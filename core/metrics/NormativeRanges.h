@@ -10,14 +10,28 @@
 
 namespace armtrack {
 
+/// Where a normal limit comes from.
+enum class NormSource {
+  Aaos,        ///< aaosNormativeRanges(): one value for everyone
+  Soucie2011,  ///< the CDC's reference values by age group and sex (core/metrics/PatientNorms.h)
+};
+
+/// The source's citation, for reports and docs.
+std::string_view normSourceCitation(NormSource s);
+/// A short name ("AAOS", "Soucie et al. 2011") for a table cell or a caption.
+std::string_view normSourceShortName(NormSource s);
+
 /// Normal limits of one clinical angle on its signed axis (rad): the motion in the negative
-/// direction (extension, adduction, external rotation, supination) as a negative limit.
+/// direction (extension, adduction, external rotation, supination) as a negative limit. Each
+/// limit names its own source, since a source may give one direction of an angle and not the
+/// other (Soucie et al. give shoulder flexion but not extension).
 struct NormativeRange {
   int angle = 0;                 ///< index in clinicalAngleInfo() order
   std::optional<double> minRad;  ///< limit of the negative direction; empty = not in source
   double maxRad = 0;             ///< limit of the positive direction
-  std::string_view source;       ///< short citation
-  std::string_view note;         ///< what the values mean, and what is missing
+  NormSource minSource = NormSource::Aaos;  ///< where minRad comes from
+  NormSource maxSource = NormSource::Aaos;  ///< where maxRad comes from
+  std::string_view note;                    ///< what the AAOS values mean, and what is missing
 };
 
 /// AAOS values (American Academy of Orthopaedic Surgeons, "Joint Motion: Method of Measuring and
@@ -27,8 +41,7 @@ struct NormativeRange {
 /// pronation 80 / supination 80 degrees. Adduction is not in that table (minRad empty).
 const std::array<NormativeRange, kNumClinicalAngles>& aaosNormativeRanges();
 
-/// The AAOS range's span (rad): maxRad - minRad, or maxRad when the source gives no negative
-/// limit.
+/// The range's span (rad): maxRad - minRad, or maxRad when the source gives no negative limit.
 double normativeSpanRad(const NormativeRange& r);
 
 /// A patient's range of motion as a fraction of the normative span (1 = the full normal range).

@@ -47,7 +47,7 @@ void draw(PageWriter& w, const ProgressReportData& d,
                     Text::tr("%1: range of motion (deg)").arg(angleName(a)), when, rom,
                     namedMotionNormalRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
-    const std::string_view source = ranges[0].source;
+    const std::string_view source = normSourceCitation(NormSource::Aaos);
     w.paragraph(Text::tr("Normal ranges: %1.")
                     .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size()))),
                 w.fonts().small);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/metrics/ClinicalMetrics.h"
+#include "core/metrics/PatientNorms.h"
 #include "core/metrics/RangeOfMotion.h"
 #include "core/storage/Records.h"
 
@@ -41,6 +42,10 @@ struct SessionReportData {
   std::optional<RomSnapshot> otherSide;
   /// Time printed in the footer; invalid = now (UTC).
   QDateTime generatedAt;
+  /// The age- and sex-specific reference values the normative comparison picks from with the
+  /// patient's birth date and sex on the session's (UTC) date (patientNorms()); the limits they
+  /// do not give are AAOS.
+  std::span<const SoucieValue> soucieValues = soucieReferenceValues();
 };
 
 /// One session of a progress report.

@@ -5,6 +5,7 @@
 
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/metrics/NormativeRanges.h"
+#include "core/metrics/PatientNorms.h"
 #include "core/reports/Charts.h"
 #include "core/reports/PdfOutput.h"
 #include "core/reports/ReportText.h"
@@ -171,12 +172,73 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
   w.table(t);
 }
 
+QString sourceName(NormSource s) {
+  const std::string_view n = normSourceShortName(s);
+  return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
+}
+
+/// "females aged 45-69" for the patient's Soucie group.
+QString soucieGroup(const PatientNorms& n) {
+  if (!n.ageGroup) return {};
+  const SoucieAgeGroup& g = kSoucieAgeGroups[static_cast<std::size_t>(*n.ageGroup)];
+  return (n.sex == Sex::Female ? Text::tr("females aged %1-%2") : Text::tr("males aged %1-%2"))
+      .arg(g.fromYears)
+      .arg(g.toYears);
+}
+
+/// Where one angle's normal range comes from, in a table cell.
+QString sourceCell(const NormativeRange& r, const PatientNorms& n) {
+  auto name = [&](NormSource s) {
+    return s == NormSource::Soucie2011 ? QStringLiteral("%1, %2").arg(sourceName(s), soucieGroup(n))
+                                       : sourceName(s);
+  };
+  if (!r.minRad || r.minSource == r.maxSource) return name(r.maxSource);
+  return Text::tr("%1 (maximum); %2 (minimum)").arg(name(r.maxSource), name(r.minSource));
+}
+
+/// Why the age- and sex-specific values were not used ("" when they were).
+QString fallbackSentence(const PatientNorms& n) {
+  switch (n.fallback) {
+    case NormFallback::None:
+      return {};
+    case NormFallback::AgeUnknown:
+      return Text::tr(
+          "Reference values by age and sex (Soucie et al. 2011) are not used: the "
+          "date of birth is not recorded.");
+    case NormFallback::AgeOutsideStudy:
+      return Text::tr(
+                 "Reference values by age and sex (Soucie et al. 2011) are not used: the "
+                 "patient was %1 on the day of the session, outside the study's 2 to 69 "
+                 "years.")
+          .arg(*n.ageYears);
+    case NormFallback::SexUnknown:
+      return Text::tr(
+          "Reference values by age and sex (Soucie et al. 2011) are not used: the "
+          "patient's sex is not recorded as female or male.");
+    case NormFallback::NoValues:
+      break;
+  }
+  return Text::tr(
+             "Reference values by age and sex (Soucie et al. 2011) are not used: this "
+             "version has none for %1.")
+      .arg(soucieGroup(n));
+}
+
 void normative(PageWriter& w, const SessionReportData& d) {
   w.heading(Text::tr("Comparison with normative ranges"), 50);
-  const auto& ranges = aaosNormativeRanges();
+  const std::optional<CivilDate> on = parseIsoDate(d.session.startedAt.toStdString());
+  const PatientNorms norms =
+      patientNorms(parseIsoDate(d.patient.birthDate.toStdString()), on.value_or(CivilDate{}),
+                   sexFromCode(d.patient.sex.toStdString()), d.soucieValues);
   std::vector<NormativeBar> bars;
+  Table sources;
+  sources.small = true;
+  sources.header = {Text::tr("Angle"), Text::tr("Normal range (deg)"), Text::tr("Source")};
+  sources.widths = {0.28, 0.2, 0.52};
+  sources.rightAligned = {false, true, false};
+  bool aaos = false;
   for (int a = 0; a < kNumClinicalAngles; ++a) {
-    const NormativeRange& n = ranges[static_cast<std::size_t>(a)];
+    const NormativeRange& n = norms.ranges[static_cast<std::size_t>(a)];
     const AngleMetrics& m = d.metrics.session.angle[static_cast<std::size_t>(a)];
     NormativeBar b;
     b.name = angleName(a);
@@ -190,16 +252,37 @@ void normative(PageWriter& w, const SessionReportData& d) {
                  reportLocale().toString(static_cast<qlonglong>(
                      std::lround(100 * fractionOfNormativeSpan(n, m.romRad)))));
     bars.push_back(b);
+    sources.rows.push_back({b.name,
+                            QStringLiteral("%1 – %2").arg(formatDeg(b.normalLoDeg.value_or(0)),
+                                                          formatDeg(b.normalHiDeg)),
+                            sourceCell(n, norms)});
+    aaos = aaos || n.maxSource == NormSource::Aaos || (n.minRad && n.minSource == NormSource::Aaos);
   }
   const QRectF r = w.reserve(normativeBarsHeight(w, bars.size()));
   drawNormativeBars(w, r, bars);
-  const std::string_view source = ranges[0].source;
-  w.paragraph(Text::tr("Grey: the normal active range of motion; blue: this session's range "
-                       "(negative = extension, external rotation, supination). Source: %1. "
-                       "Shoulder adduction has no normal limit in that source; its range is "
-                       "shown from 0.")
-                  .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size()))),
-              w.fonts().small);
+  w.table(sources);
+  QStringList cited;
+  for (const NormSource s : {NormSource::Soucie2011, NormSource::Aaos}) {
+    if (s == NormSource::Soucie2011 ? !norms.usesSoucie() : !aaos) continue;
+    const std::string_view c = normSourceCitation(s);
+    cited << sourceName(s) + QStringLiteral(": ") +
+                 QString::fromUtf8(c.data(), static_cast<qsizetype>(c.size()));
+  }
+  QString text = Text::tr(
+                     "Grey: the normal range of motion; blue: this session's range "
+                     "(negative = extension, external rotation, supination). Shoulder "
+                     "adduction has no normal limit in the sources; its range is shown from "
+                     "0. Sources: %1.")
+                     .arg(cited.join(QStringLiteral("; ")));
+  if (norms.usesSoucie())
+    text += ' ' + Text::tr(
+                      "Soucie et al. give the mean passive range of motion of healthy %1; "
+                      "the patient was %2 on the day of the session.")
+                      .arg(soucieGroup(norms))
+                      .arg(*norms.ageYears);
+  else
+    text += ' ' + fallbackSentence(norms);
+  w.paragraph(text, w.fonts().small);
 }
 
 void earlier(PageWriter& w, const SessionReportData& d) {

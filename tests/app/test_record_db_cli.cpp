@@ -1,20 +1,25 @@
 // `record --db`: a live session recorded straight into the clinical records (issue 10), on SQLite
 // and on PostgreSQL: the rows arrive as chunks of under a second, a SIGKILL loses at most the last
 // second and leaves the session marked interrupted, a write the database refuses (a full disk) is
-// told and leaves what was written intact, and the recorded session's PDF report has every section.
+// told and leaves what was written intact, and the recorded session's PDF report has every section
+// with the stored metrics, which match the virtual arm's true angles.
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 
+#include <QFile>
 #include <QImage>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QProcess>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <array>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
+#include <limits>
 #include <sstream>
 
 #include "app/cli/Cli.h"
@@ -30,6 +35,11 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 constexpr const char* kPass = "admin-pass-1";
+
+/// How far a recorded session's minimum, maximum and range of motion may be from the virtual
+/// arm's true ones (deg): issue 10's 1 deg. Measured on 8 s of its default multi-joint motion:
+/// ROM within 0.13 deg, minimum and maximum within 0.24 deg, on both engines.
+constexpr double kTruthTolDeg = 1.0;
 
 struct Result {
   int code;
@@ -317,17 +327,75 @@ TEST_P(RecordDb, ReportOfARecordedVirtualArmSessionHasEverySection) {
   EXPECT_TRUE(all.contains("virtual-arm#1.plugin: virtual-arm")) << all.left(3000);
   EXPECT_TRUE(all.contains(QRegularExpression("upper.arm[^\\n]*1000 Hz"))) << all.left(3000);
   EXPECT_FALSE(all.contains("No devices were recorded"));
-  // Each angle's range of motion as session show gives it, on that angle's row of the table.
-  const QJsonObject metrics = s["metrics"].toObject();
-  for (const armtrack::ClinicalAngleInfo& info : armtrack::clinicalAngleInfo()) {
-    const QString name = QString::fromUtf8(info.name.data(), info.name.size());
-    const double rom =
-        metrics[QString::fromUtf8(info.key.data(), info.key.size())]["rom_deg"].toDouble();
-    const QRegularExpression row("\\n\\s*" + QRegularExpression::escape(name) +
-                                 "\\s+-?[0-9.]+\\s+-?[0-9.]+\\s+" +
-                                 QRegularExpression::escape(QString::number(rom, 'f', 1)) + "\\s");
-    EXPECT_TRUE(all.contains(row)) << name.toStdString() << " ROM " << rom;
+  // Each angle's row of the metrics table is what session show gives (min, max, ROM and peak
+  // velocity, printed to 0.1), and the stored range is that of the virtual arm's own trajectory:
+  // the true angles it records beside its sensors (true_th*), truth independent of the
+  // estimator and the metrics, over the span the analysis covers (it leaves out the filter's
+  // start-up second): the first and last time of the exported clinical angles.
+  const QString anglesCsv = m_dir.filePath("angles.csv");
+  ASSERT_EQ(run({"export", id, "--format", "csv", "--out", anglesCsv.toStdString()}).code, 0);
+  QFile anglesFile(anglesCsv);
+  ASSERT_TRUE(anglesFile.open(QIODevice::ReadOnly));
+  const QList<QByteArray> lines = anglesFile.readAll().trimmed().split('\n');
+  ASSERT_GT(lines.size(), 1000);
+  const double analysedFrom = lines[1].split(',')[0].toDouble();
+  const double analysedTo = lines.back().split(',')[0].toDouble();
+  ASSERT_LT(analysedFrom, 2.0);
+  ASSERT_GT(analysedTo, 7.5);
+  const std::string csv = m_dir.filePath("recorded.csv").toStdString();
+  ASSERT_EQ(run({"export", id, "--format", "recording", "--out", csv}).code, 0);
+  const armtrack::Recording recorded = armtrack::readRecording(csv);
+  std::array<double, 5> trueLo, trueHi;
+  trueLo.fill(std::numeric_limits<double>::infinity());
+  trueHi.fill(-std::numeric_limits<double>::infinity());
+  std::size_t truthRows = 0;
+  for (const armtrack::ArmSample& row : recorded.samples) {
+    // The exported times are rounded to 1 us.
+    if (!row.trueAngles || row.t < analysedFrom - 1e-6 || row.t > analysedTo + 1e-6) continue;
+    ++truthRows;
+    const std::array<double, 5> c = armtrack::asArray(armtrack::toClinical(*row.trueAngles));
+    for (std::size_t a = 0; a < c.size(); ++a) {
+      trueLo[a] = std::min(trueLo[a], c[a]);
+      trueHi[a] = std::max(trueHi[a], c[a]);
+    }
   }
+  ASSERT_GT(truthRows, 5500u) << "1 kHz over the analysed span";
+  const QJsonObject metrics = s["metrics"].toObject();
+  const auto& infos = armtrack::clinicalAngleInfo();
+  for (std::size_t a = 0; a < infos.size(); ++a) {
+    const QString name = QString::fromUtf8(infos[a].name.data(), infos[a].name.size());
+    const QString key = QString::fromUtf8(infos[a].key.data(), infos[a].key.size());
+    SCOPED_TRACE(name.toStdString());
+    const QJsonObject m = metrics[key].toObject();
+    // name, then min, max, ROM, peak velocity, mean velocity, moving time.
+    const QRegularExpressionMatch row =
+        QRegularExpression("\\n\\s*" + QRegularExpression::escape(name) +
+                           "((?:\\s+-?[0-9][0-9,]*\\.[0-9]){6})\\s*\\n")
+            .match(all);
+    ASSERT_TRUE(row.hasMatch()) << "no row for " << name.toStdString();
+    std::vector<double> v;
+    for (const QString& cell : row.captured(1).split(' ', Qt::SkipEmptyParts))
+      v.push_back(QString(cell).remove(',').toDouble());
+    ASSERT_EQ(v.size(), 6u);
+    EXPECT_NEAR(v[0], m["min_deg"].toDouble(), 0.051);
+    EXPECT_NEAR(v[1], m["max_deg"].toDouble(), 0.051);
+    EXPECT_NEAR(v[2], m["rom_deg"].toDouble(), 0.051);
+    EXPECT_NEAR(v[3], m["peak_velocity_deg_s"].toDouble(), 0.051);
+    const double trueRom = trueHi[a] - trueLo[a];
+    std::cout << name.toStdString() << ": ROM stored " << m["rom_deg"].toDouble() << " deg, true "
+              << trueRom << " deg; min " << m["min_deg"].toDouble() << " / " << trueLo[a]
+              << ", max " << m["max_deg"].toDouble() << " / " << trueHi[a] << "\n";
+    EXPECT_NEAR(m["rom_deg"].toDouble(), trueRom, kTruthTolDeg);
+    EXPECT_NEAR(m["min_deg"].toDouble(), trueLo[a], kTruthTolDeg);
+    EXPECT_NEAR(m["max_deg"].toDouble(), trueHi[a], kTruthTolDeg);
+  }
+  // The patient (born 1950) is past the study's 69 years: every normal range is AAOS, and the
+  // report says why.
+  EXPECT_TRUE(all.simplified().contains(QRegularExpression(
+      "the patient was \\d+ on the day of the session, outside the study's 2 to 69 years")))
+      << all.toStdString();
+  EXPECT_TRUE(
+      all.contains(QRegularExpression("\\n\\s*Shoulder flexion\\s+-60.0 – 180.0\\s+AAOS\\s*\\n")));
   const int reps = s["repetitions"].toObject()["count"].toInt();
   EXPECT_TRUE(all.contains(QString("%1 repetitions counted on").arg(reps)) ||
               (reps == 0 && all.contains("No repetitions")))

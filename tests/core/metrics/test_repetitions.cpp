@@ -385,9 +385,11 @@ TEST(NormativeRanges, AaosValuesAndSpans) {
   for (int a = 0; a < kNumClinicalAngles; ++a)
     EXPECT_NEAR(namedMotionNormalRad(n[a]) * kRadToDeg, named[a], 1e-9) << a;
   EXPECT_NEAR(fractionOfNamedMotionNormal(n[0], 90 * kDegToRad), 0.5, 1e-12);
+  EXPECT_NE(normSourceCitation(NormSource::Aaos).find("AAOS 1965"), std::string_view::npos);
   for (int a = 0; a < kNumClinicalAngles; ++a) {
     EXPECT_EQ(n[a].angle, a);
-    EXPECT_FALSE(n[a].source.empty());
+    EXPECT_EQ(n[a].maxSource, NormSource::Aaos);
+    EXPECT_EQ(n[a].minSource, NormSource::Aaos);
   }
 }
 

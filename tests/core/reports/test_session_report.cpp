@@ -1,6 +1,7 @@
 // The session report, read back as a reader would: the text through pdftotext (every section,
 // the patient on every page, page numbers, the printed ranges against the metrics and the
 // simulated truth) and the pages through pdftoppm (not blank, plots drawn).
+#include <QDir>
 #include <QFile>
 #include <QFileInfo>
 #include <QRegularExpression>
@@ -109,6 +110,143 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
   // The counted angle's plot numbers the repetitions; the partial fifth is "5p".
   EXPECT_TRUE(all.contains("numbers: repetitions at their peaks (p = partial)"));
   EXPECT_TRUE(all.contains(QRegularExpression("\\b4\\s+5p\\b")));
+}
+
+/// The grey normal-range bars of the normative comparison on a rendered page: per bar (top to
+/// bottom), the first and last column (px) of its grey. A row's grey is split by the grid lines
+/// under it (darker) and by the patient's blue bar, so runs less than 4 px apart are joined and
+/// the bar's extent is that of its widest row (a row above or below the blue bar).
+std::vector<std::pair<int, int>> normalBars(const QImage& img) {
+  auto barGrey = [](QRgb c) {
+    return std::abs(qRed(c) - qGreen(c)) < 4 && std::abs(qGreen(c) - qBlue(c)) < 4 &&
+           qRed(c) >= 205 && qRed(c) <= 232;
+  };
+  std::vector<std::pair<int, int>> bars;
+  std::pair<int, int> widest{0, -1};
+  int bandRows = 0;
+  for (int y = 0; y <= img.height(); ++y) {
+    std::pair<int, int> best{0, -1}, cur{0, -1};
+    for (int x = 0; y < img.height() && x < img.width(); ++x) {
+      if (!barGrey(img.pixel(x, y))) continue;
+      if (cur.second >= 0 && x - cur.second <= 4)
+        cur.second = x;
+      else
+        cur = {x, x};
+      if (cur.second - cur.first > best.second - best.first) best = cur;
+    }
+    if (best.second - best.first >= 30) {
+      if (bandRows++ == 0 || best.second - best.first > widest.second - widest.first) widest = best;
+    } else {
+      if (bandRows >= 6) bars.push_back(widest);  // a bar is 5.5 mm (13 px) tall
+      bandRows = 0;
+    }
+  }
+  return bars;
+}
+
+// The normal ranges by age and sex: a 65-year-old woman's session picks the values of women aged
+// 45-69 where the table gives them, AAOS for the rest, and the report says which source each
+// limit comes from; the bars are drawn to those limits. The values are the test's own (made up,
+// not the study's), so what is checked is the picking and the drawing.
+TEST_F(SessionReport, NormalRangesByAgeAndSexNameTheirSourcePerAngle) {
+  const SimulatedSession sim = simulateSession({110, 120, 115});
+  SessionReportData d = sessionData(sim);  // born 1961-03-14, female, session 2026-11-20: 65
+  const std::vector<SoucieValue> table = {
+      {SoucieMotion::ShoulderFlexion, 3, Sex::Female, 160.5, 158.0, 163.0},
+      {SoucieMotion::ElbowFlexion, 3, Sex::Female, 145.5, 144.0, 147.0},
+      {SoucieMotion::ElbowExtension, 3, Sex::Female, 2.5, 1.5, 3.5},
+      {SoucieMotion::ForearmPronation, 3, Sex::Female, 75.5, 74.0, 77.0},
+      {SoucieMotion::ForearmSupination, 3, Sex::Female, 85.5, 84.0, 87.0},
+      {SoucieMotion::ShoulderFlexion, 3, Sex::Male, 150.5, 148.0, 153.0},  // not her row
+      {SoucieMotion::ShoulderFlexion, 2, Sex::Female, 170.5, 168.0, 173.0},
+  };
+  d.soucieValues = table;
+  const QString pdf = path("soucie.pdf");
+  writeSessionReport(d, pdf);
+  const QString all = pageTexts(pdf).join('\n').simplified();
+  const QString soucie = "Soucie et al. 2011, females aged 45-69";
+  for (const QString& row :
+       {QString("Shoulder flexion -60.0 – 160.5 %1 (maximum); AAOS (minimum)").arg(soucie),
+        QString("Shoulder abduction 0.0 – 180.0 AAOS"),
+        QString("Shoulder internal rotation -90.0 – 70.0 AAOS"),
+        QString("Elbow flexion -2.5 – 145.5 %1").arg(soucie),
+        QString("Forearm pronation -85.5 – 75.5 %1").arg(soucie)})
+    EXPECT_TRUE(all.contains(row)) << row;
+  EXPECT_TRUE(all.contains("of 220.5 deg"));  // flexion's span: 160.5 + 60
+  EXPECT_TRUE(all.contains("healthy females aged 45-69; the patient was 65 on the day"));
+  EXPECT_TRUE(all.contains("Haemophilia 2011;17(3):500-507, doi:10.1111/j."));  // the line breaks
+  EXPECT_TRUE(all.contains("archive.cdc.gov/www_cdc_gov/ncbddd/jointrom/"));
+  EXPECT_TRUE(all.contains("AAOS: AAOS 1965"));
+  EXPECT_FALSE(all.contains("are not used"));
+
+  // Drawn to those limits: against the same report with the AAOS values, the flexion bar ends
+  // 19.5 deg earlier, abduction's and rotation's bars are the same.
+  SessionReportData aaos = d;
+  aaos.soucieValues = {};
+  writeSessionReport(aaos, path("aaos.pdf"));
+  const QString aaosText = pageTexts(path("aaos.pdf")).join('\n').simplified();
+  EXPECT_TRUE(aaosText.contains("this version has none for females aged 45-69"));
+  EXPECT_TRUE(aaosText.contains("Shoulder flexion -60.0 – 180.0 AAOS"));
+  // The page of the comparison; its first five grey bands are the bars (the table under them
+  // has no grey fill).
+  auto barsOf = [&](const QString& file) {
+    QDir(dir.path()).mkpath(file);
+    const QStringList text = pageTexts(path(file + ".pdf"));
+    const std::vector<QImage> images = renderPages(path(file + ".pdf"), path(file));
+    for (qsizetype i = 0; i < text.size() && i < static_cast<qsizetype>(images.size()); ++i) {
+      if (!text[i].contains("Comparison with normative ranges")) continue;
+      std::vector<std::pair<int, int>> bars = normalBars(images[static_cast<std::size_t>(i)]);
+      if (bars.size() > 5) bars.resize(5);
+      return bars;
+    }
+    return std::vector<std::pair<int, int>>{};
+  };
+  const auto withSoucie = barsOf("soucie");
+  const auto withAaos = barsOf("aaos");
+  ASSERT_EQ(withSoucie.size(), 5u) << "the normative bars were not found on any page";
+  ASSERT_EQ(withAaos.size(), 5u);
+  const double pxPerDeg = (withAaos[1].second - withAaos[1].first) / 180.0;  // abduction 0-180
+  ASSERT_GT(pxPerDeg, 0.3);
+  EXPECT_NEAR(withAaos[0].second - withSoucie[0].second, 19.5 * pxPerDeg, 1.5);
+  EXPECT_NEAR(withAaos[0].first, withSoucie[0].first, 1.0);  // extension: AAOS in both
+  for (int a : {1, 2}) {
+    EXPECT_NEAR(withAaos[a].first, withSoucie[a].first, 1.0) << a;
+    EXPECT_NEAR(withAaos[a].second, withSoucie[a].second, 1.0) << a;
+  }
+  EXPECT_NEAR(withAaos[4].second - withSoucie[4].second, 4.5 * pxPerDeg, 1.5);  // pronation 75.5
+  EXPECT_NEAR(withAaos[4].first - withSoucie[4].first, 5.5 * pxPerDeg, 1.5);    // supination 85.5
+}
+
+// Out of the study's reach every range is AAOS and the report says why.
+TEST_F(SessionReport, NormalRangesFallBackToAaosAndSayWhy) {
+  const SimulatedSession sim = simulateSession({110});
+  const std::vector<SoucieValue> table = {
+      {SoucieMotion::ShoulderFlexion, 3, Sex::Female, 160.5, 158.0, 163.0},
+      {SoucieMotion::ShoulderFlexion, 3, Sex::Male, 150.5, 148.0, 153.0}};
+  struct Case {
+    QString birth, sex, says;
+  };
+  const Case cases[] = {
+      {"1950-01-02", "f",
+       "the patient was 76 on the day of the session, outside the study's 2 to "
+       "69 years"},
+      {"1961-03-14", "x", "the patient's sex is not recorded as female or male"},
+      {"", "m", "the date of birth is not recorded"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.says.toStdString());
+    SessionReportData d = sessionData(sim);
+    d.patient.birthDate = c.birth;
+    d.patient.sex = c.sex;
+    d.soucieValues = table;
+    const QString pdf = path("fallback.pdf");
+    writeSessionReport(d, pdf);
+    const QString all = pageTexts(pdf).join('\n').simplified();
+    EXPECT_TRUE(all.contains(c.says));
+    EXPECT_TRUE(all.contains("Shoulder flexion -60.0 – 180.0 AAOS"));
+    EXPECT_FALSE(all.contains("Soucie et al. 2011,"));
+    EXPECT_FALSE(all.contains("doi:10.1111"));  // cited only when used
+  }
 }
 
 TEST_F(SessionReport, PagesRenderNotBlankWithPlotsDrawn) {

@@ -91,6 +91,18 @@ inline Patient makePatient(const QString& code) {
   return p;
 }
 
+/// A protocol on one clinical angle (its key), with a target range (deg) and a repetition count.
+inline Protocol makeProtocol(const QString& name, const QString& angle, double lo, double hi,
+                             int reps) {
+  Protocol p;
+  p.name = name;
+  p.angleKey = angle;
+  p.targetMinDeg = lo;
+  p.targetMaxDeg = hi;
+  p.repetitions = reps;
+  return p;
+}
+
 /// A simulated recording (two IMUs at imuRate, Kinect at 30 Hz, true angles) written to csv.
 inline Recording simulateTo(const std::filesystem::path& csv, double seconds,
                             double imuRate = 1000.0, bool truth = true) {

@@ -124,13 +124,7 @@ const std::vector<double> kPeaks{120, 120, 70, 120, 120};
 TEST(SessionAnalysis, ExerciseFromTheDatabaseMatchesTheTruth) {
   Fixture f;
   f.store->addPatient(makePatient("P1"));
-  Protocol flexion;
-  flexion.name = "flexion";
-  flexion.angleKey = "shoulder_flexion";
-  flexion.targetMinDeg = 30;
-  flexion.targetMaxDeg = 120;
-  flexion.repetitions = 5;
-  f.store->addProtocol(flexion);
+  f.store->addProtocol(makeProtocol("flexion", "shoulder_flexion", 30, 120, 5));
   const Exercise exercise(kPeaks);
   const Recording rec = simulateExercise(f.file("ex.csv"), exercise);
   const qint64 id = f.store->importRecording(f.file("ex.csv"), "P1", "flexion");

@@ -230,12 +230,7 @@ TEST_P(Crud, HostileTextAndBytesRoundTrip) {
 
 TEST_P(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   Fixture f(GetParam());
-  Protocol pr;
-  pr.name = "elbow reps";
-  pr.angleKey = "elbow_flexion";
-  pr.targetMinDeg = 10;
-  pr.targetMaxDeg = 120;
-  pr.repetitions = 10;
+  Protocol pr = makeProtocol("elbow reps", "elbow_flexion", 10, 120, 10);
   pr.side = "right";
   f.store->addProtocol(pr);
   expectError([&] { f.store->addProtocol(pr); }, Kind::Exists);

@@ -19,16 +19,6 @@ using Programmes = Engines;
 using HomeSessions = Engines;
 using MigrationToHome = Engines;
 
-Protocol makeProtocol(const QString& name, const QString& angle, double lo, double hi, int reps) {
-  Protocol p;
-  p.name = name;
-  p.angleKey = angle;
-  p.targetMinDeg = lo;
-  p.targetMaxDeg = hi;
-  p.repetitions = reps;
-  return p;
-}
-
 ProgrammeItem exercise(const QString& protocol, int position = 0) {
   ProgrammeItem item;
   item.protocolName = protocol;
