@@ -1551,10 +1551,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Gráfica de evolución</translation>
     </message>
     <message>
-        <source>Range of motion per session against date; the table beside it holds the same values.</source>
-        <translation>Rango de movimiento de cada sesión según la fecha; la tabla de al lado contiene los mismos valores.</translation>
-    </message>
-    <message>
         <source>Progress values</source>
         <translation>Valores de la evolución</translation>
     </message>
@@ -1567,16 +1563,8 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Fecha</translation>
     </message>
     <message>
-        <source>Range (%1)</source>
-        <translation>Rango (%1)</translation>
-    </message>
-    <message>
         <source>Of normal</source>
         <translation>Del normal</translation>
-    </message>
-    <message>
-        <source>Range of motion</source>
-        <translation>Rango de movimiento</translation>
     </message>
     <message>
         <source>Sessions</source>
@@ -1585,10 +1573,6 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>%1: no analysed session yet</source>
         <translation>%1: todavía no hay ninguna sesión analizada</translation>
-    </message>
-    <message>
-        <source>ROM (%1)</source>
-        <translation>ROM (%1)</translation>
     </message>
     <message>
         <source>°</source>
@@ -1606,6 +1590,22 @@ Puede recalcularla desde su revisión.</translation>
         <source>d MMM</source>
         <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
         <translation>d MMM</translation>
+    </message>
+    <message>
+        <source>The largest angle reached per session, in the direction of the angle&apos;s name, against date; the table beside it holds the same values.</source>
+        <translation>Ángulo máximo alcanzado en cada sesión, en la dirección que da nombre al ángulo, según la fecha; la tabla de al lado contiene los mismos valores.</translation>
+    </message>
+    <message>
+        <source>Largest (%1)</source>
+        <translation>Máximo (%1)</translation>
+    </message>
+    <message>
+        <source>Largest angle reached</source>
+        <translation>Ángulo máximo alcanzado</translation>
+    </message>
+    <message>
+        <source>Largest angle (%1)</source>
+        <translation>Ángulo máximo (%1)</translation>
     </message>
 </context>
 <context>
