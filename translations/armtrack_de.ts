@@ -474,6 +474,10 @@
         <source>session %1 saved in the records: %L2 rows</source>
         <translation>Sitzung %1 in den Akten gespeichert: %L2 Zeilen</translation>
     </message>
+    <message>
+        <source>cannot create the folder %1 (%2): choose a folder you may write to</source>
+        <translation>der Ordner %1 kann nicht angelegt werden (%2): wählen Sie einen Ordner, in den Sie schreiben dürfen</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SensorCalibrationPage</name>
@@ -2660,6 +2664,10 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Sign &amp;out</source>
         <translation>&amp;Abmelden</translation>
+    </message>
+    <message>
+        <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
+        <translation>für die Sensorprüfung kann kein temporärer Ordner angelegt werden (%1): geben Sie Speicherplatz frei</translation>
     </message>
 </context>
 <context>

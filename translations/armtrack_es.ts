@@ -474,6 +474,10 @@
         <source>session %1 saved in the records: %L2 rows</source>
         <translation>sesión %1 guardada en los registros clínicos: %L2 filas</translation>
     </message>
+    <message>
+        <source>cannot create the folder %1 (%2): choose a folder you may write to</source>
+        <translation>no se puede crear la carpeta %1 (%2): elija una carpeta en la que pueda escribir</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SensorCalibrationPage</name>
@@ -2660,6 +2664,10 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Sign &amp;out</source>
         <translation>Cerrar &amp;sesión</translation>
+    </message>
+    <message>
+        <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
+        <translation>no se puede crear una carpeta temporal para la comprobación de los sensores (%1): libere espacio en el disco</translation>
     </message>
 </context>
 <context>

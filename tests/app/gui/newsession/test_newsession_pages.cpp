@@ -258,7 +258,9 @@ class TestNewSessionPages : public QObject {
     QTemporaryDir dir;
     gui::LiveSessionConfig c;
     c.devices = {QStringLiteral("virtual-arm:sensors=upper+forearm+kinect,trajectory=calibration")};
-    SensorCalibrationPage page(m_registry, c, dir.path().toStdString());
+    // A folder that does not exist yet: the recording makes it (off the GUI thread).
+    SensorCalibrationPage page(m_registry, c,
+                               dir.filePath(QStringLiteral("calibration/today")).toStdString());
     page.resize(1100, 650);
     page.show();
     QVERIFY(QTest::qWaitForWindowExposed(&page));
