@@ -474,6 +474,10 @@
         <source>session %1 saved in the records: %L2 rows</source>
         <translation>Sitzung %1 in den Akten gespeichert: %L2 Zeilen</translation>
     </message>
+    <message>
+        <source>cannot create the folder %1 (%2): choose a folder you may write to</source>
+        <translation>der Ordner %1 kann nicht angelegt werden (%2): wählen Sie einen Ordner, in den Sie schreiben dürfen</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SensorCalibrationPage</name>
@@ -1551,10 +1555,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Verlaufsdiagramm</translation>
     </message>
     <message>
-        <source>Range of motion per session against date; the table beside it holds the same values.</source>
-        <translation>Bewegungsausmaß je Sitzung über dem Datum; die Tabelle daneben enthält dieselben Werte.</translation>
-    </message>
-    <message>
         <source>Progress values</source>
         <translation>Verlaufswerte</translation>
     </message>
@@ -1567,16 +1567,8 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>Datum</translation>
     </message>
     <message>
-        <source>Range (%1)</source>
-        <translation>Bewegungsausmaß (%1)</translation>
-    </message>
-    <message>
         <source>Of normal</source>
         <translation>Vom Normwert</translation>
-    </message>
-    <message>
-        <source>Range of motion</source>
-        <translation>Bewegungsausmaß</translation>
     </message>
     <message>
         <source>Sessions</source>
@@ -1585,10 +1577,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>%1: no analysed session yet</source>
         <translation>%1: noch keine ausgewertete Sitzung</translation>
-    </message>
-    <message>
-        <source>ROM (%1)</source>
-        <translation>ROM (%1)</translation>
     </message>
     <message>
         <source>°</source>
@@ -1606,6 +1594,22 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>d MMM</source>
         <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
         <translation>d. MMM</translation>
+    </message>
+    <message>
+        <source>The largest angle reached per session, in the direction of the angle&apos;s name, against date; the table beside it holds the same values.</source>
+        <translation>Größter erreichter Winkel je Sitzung, in der Richtung, nach der der Winkel benannt ist, über dem Datum; die Tabelle daneben enthält dieselben Werte.</translation>
+    </message>
+    <message>
+        <source>Largest (%1)</source>
+        <translation>Größter Winkel (%1)</translation>
+    </message>
+    <message>
+        <source>Largest angle reached</source>
+        <translation>Größter erreichter Winkel</translation>
+    </message>
+    <message>
+        <source>Largest angle (%1)</source>
+        <translation>Größter Winkel (%1)</translation>
     </message>
 </context>
 <context>
@@ -2660,6 +2664,10 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Sign &amp;out</source>
         <translation>&amp;Abmelden</translation>
+    </message>
+    <message>
+        <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
+        <translation>für die Sensorprüfung kann kein temporärer Ordner angelegt werden (%1): geben Sie Speicherplatz frei</translation>
     </message>
 </context>
 <context>

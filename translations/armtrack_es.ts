@@ -474,6 +474,10 @@
         <source>session %1 saved in the records: %L2 rows</source>
         <translation>sesión %1 guardada en los registros clínicos: %L2 filas</translation>
     </message>
+    <message>
+        <source>cannot create the folder %1 (%2): choose a folder you may write to</source>
+        <translation>no se puede crear la carpeta %1 (%2): elija una carpeta en la que pueda escribir</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SensorCalibrationPage</name>
@@ -1551,10 +1555,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Gráfica de evolución</translation>
     </message>
     <message>
-        <source>Range of motion per session against date; the table beside it holds the same values.</source>
-        <translation>Rango de movimiento de cada sesión según la fecha; la tabla de al lado contiene los mismos valores.</translation>
-    </message>
-    <message>
         <source>Progress values</source>
         <translation>Valores de la evolución</translation>
     </message>
@@ -1567,16 +1567,8 @@ Puede recalcularla desde su revisión.</translation>
         <translation>Fecha</translation>
     </message>
     <message>
-        <source>Range (%1)</source>
-        <translation>Rango (%1)</translation>
-    </message>
-    <message>
         <source>Of normal</source>
         <translation>Del normal</translation>
-    </message>
-    <message>
-        <source>Range of motion</source>
-        <translation>Rango de movimiento</translation>
     </message>
     <message>
         <source>Sessions</source>
@@ -1585,10 +1577,6 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>%1: no analysed session yet</source>
         <translation>%1: todavía no hay ninguna sesión analizada</translation>
-    </message>
-    <message>
-        <source>ROM (%1)</source>
-        <translation>ROM (%1)</translation>
     </message>
     <message>
         <source>°</source>
@@ -1606,6 +1594,22 @@ Puede recalcularla desde su revisión.</translation>
         <source>d MMM</source>
         <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
         <translation>d MMM</translation>
+    </message>
+    <message>
+        <source>The largest angle reached per session, in the direction of the angle&apos;s name, against date; the table beside it holds the same values.</source>
+        <translation>Ángulo máximo alcanzado en cada sesión, en la dirección que da nombre al ángulo, según la fecha; la tabla de al lado contiene los mismos valores.</translation>
+    </message>
+    <message>
+        <source>Largest (%1)</source>
+        <translation>Máximo (%1)</translation>
+    </message>
+    <message>
+        <source>Largest angle reached</source>
+        <translation>Ángulo máximo alcanzado</translation>
+    </message>
+    <message>
+        <source>Largest angle (%1)</source>
+        <translation>Ángulo máximo (%1)</translation>
     </message>
 </context>
 <context>
@@ -2660,6 +2664,10 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Sign &amp;out</source>
         <translation>Cerrar &amp;sesión</translation>
+    </message>
+    <message>
+        <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
+        <translation>no se puede crear una carpeta temporal para la comprobación de los sensores (%1): libere espacio en el disco</translation>
     </message>
 </context>
 <context>

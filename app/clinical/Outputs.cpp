@@ -22,16 +22,21 @@ std::string ss(const QString& s) {
 
 }  // namespace
 
-std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics) {
-  std::array<std::optional<double>, kNumClinicalAngles> rom{};
+std::array<std::optional<double>, kNumClinicalAngles> angleFieldOf(const QJsonObject& metrics,
+                                                                   const char* fieldDeg) {
+  std::array<std::optional<double>, kNumClinicalAngles> values{};
   const QJsonObject angles = metrics["angles"].toObject();
   for (int i = 0; i < kNumClinicalAngles; ++i) {
     const std::string_view key = clinicalAngleInfo()[static_cast<std::size_t>(i)].key;
     const QJsonValue v = angles[QString::fromUtf8(key.data(), static_cast<qsizetype>(key.size()))]
-                             .toObject()["rom_deg"];
-    if (v.isDouble()) rom[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
+                             .toObject()[QLatin1String(fieldDeg)];
+    if (v.isDouble()) values[static_cast<std::size_t>(i)] = v.toDouble() * kDegToRad;
   }
-  return rom;
+  return values;
+}
+
+std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics) {
+  return angleFieldOf(metrics, "rom_deg");
 }
 
 reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint64 id) {

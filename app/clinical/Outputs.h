@@ -18,8 +18,12 @@
 
 namespace armtrack::clinical {
 
-/// The ranges of motion (rad) of the five clinical angles in a stored metrics JSON
-/// (docs/storage.md, "Metrics"), in clinicalAngleInfo() order; empty where not measured.
+/// One field in degrees of the five clinical angles in a stored metrics JSON (docs/storage.md,
+/// "Metrics": "min_deg", "max_deg", "rom_deg", ...), in rad and clinicalAngleInfo() order; empty
+/// where not measured.
+std::array<std::optional<double>, kNumClinicalAngles> angleFieldOf(const QJsonObject& metrics,
+                                                                   const char* fieldDeg);
+/// The ranges of motion (rad): angleFieldOf(metrics, "rom_deg").
 std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& metrics);
 
 /// A session report's data: the session's newest analysis, the patient, the protocol, the

@@ -6,15 +6,15 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
-#include <QStackedWidget>
 #include <QStatusBar>
 
 #include "app/gui/Forms.h"
+#include "ui/ScreenStack.h"
 
 namespace armtrack::gui {
 
 MainWindow::MainWindow(QWidget* parent)
-    : QMainWindow(parent), m_stack(new QStackedWidget(this)), m_who(new QLabel(this)) {
+    : QMainWindow(parent), m_stack(new ui::ScreenStack(this)), m_who(new QLabel(this)) {
   setCentralWidget(m_stack);
   setMinimumSize(900, 600);
   resize(1200, 760);  // fits a 1280x800 screen; a window manager may maximise it
@@ -71,13 +71,7 @@ void MainWindow::changeEvent(QEvent* event) {
 }
 
 void MainWindow::showScreen(QWidget* screen) {
-  if (m_current) {
-    m_stack->removeWidget(m_current);
-    m_current->deleteLater();
-  }
-  m_current = screen;
-  m_stack->addWidget(screen);
-  m_stack->setCurrentWidget(screen);
+  m_stack->showScreen(screen);
   connect(screen, &QWidget::windowTitleChanged, this, &MainWindow::updateTitle);
   updateTitle();
   QWidget* focus = screen->focusProxy();
@@ -88,7 +82,7 @@ void MainWindow::showScreen(QWidget* screen) {
 }
 
 QWidget* MainWindow::currentScreen() const {
-  return m_current;
+  return m_stack->screen();
 }
 
 void MainWindow::setSignedIn(TextFn who) {
@@ -110,13 +104,14 @@ void MainWindow::showStatus(const QString& text, int ms) {
 }
 
 void MainWindow::updateTitle() {
-  const QString screen = m_current ? m_current->windowTitle() : QString();
+  const QWidget* current = m_stack->screen();
+  const QString screen = current ? current->windowTitle() : QString();
   setWindowTitle(screen.isEmpty() ? tr("ArmTrack") : tr("%1 - ArmTrack").arg(screen));
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
   // A screen with unsaved work (a recording, typed notes) may refuse to be closed.
-  if (m_current && !m_current->close()) {
+  if (QWidget* current = m_stack->screen(); current && !current->close()) {
     event->ignore();
     return;
   }

@@ -3,14 +3,16 @@
 #pragma once
 
 #include <QMainWindow>
-#include <QPointer>
 
 #include "app/gui/Forms.h"
 
 class QAction;
 class QLabel;
 class QMenu;
-class QStackedWidget;
+
+namespace armtrack::ui {
+class ScreenStack;
+}
 
 namespace armtrack::gui {
 
@@ -46,8 +48,7 @@ class MainWindow : public QMainWindow {
   void retranslateUi();
   void updateTitle();
 
-  QStackedWidget* m_stack;
-  QPointer<QWidget> m_current;
+  ui::ScreenStack* m_stack;
   QLabel* m_who;
   TextFn m_whoText;
   TextFn m_statusText;

@@ -35,11 +35,11 @@ SessionSetupPage::SessionSetupPage(RecordsService& records, const QString& patie
                                    QWidget* parent)
     : QWizardPage(parent),
       m_patient(new QLabel(patientCode, this)),
-      m_protocol(new QComboBox(this)),
-      m_protocolDetails(new QLabel(this)),
       m_patientLabel(new QLabel(this)),
       m_protocolLabel(new QLabel(this)),
       m_armLabel(new QLabel(this)),
+      m_protocol(new QComboBox(this)),
+      m_protocolDetails(new QLabel(this)),
       m_left(new QRadioButton(this)),
       m_right(new QRadioButton(this)),
       m_message(new MessageLine(this)) {

@@ -63,7 +63,8 @@ void ProgressChart::retranslateUi() {
   m_angle->setAccessibleName(tr("Angle shown in the progress chart"));
   m_view->setAccessibleName(tr("Progress chart"));
   m_view->setAccessibleDescription(
-      tr("Range of motion per session against date; the table beside it holds the same values."));
+      tr("The largest angle reached per session, in the direction of the angle's name, against "
+         "date; the table beside it holds the same values."));
   m_tableView->setAccessibleName(tr("Progress values"));
   redraw();  // titles, series, axes and the table's header in the new words and number format
 }
@@ -73,7 +74,7 @@ void ProgressChart::changeEvent(QEvent* event) {
   QWidget::changeEvent(event);
 }
 
-void ProgressChart::setSessions(std::vector<reports::ProgressSession> sessions) {
+void ProgressChart::setSessions(std::vector<SessionExtremes> sessions) {
   std::sort(sessions.begin(), sessions.end(),
             [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
   m_sessions = std::move(sessions);
@@ -107,7 +108,7 @@ void ProgressChart::redraw() {
   // Drawn in the unit of the settings: "deg" values are radians * scale.
   const double scale = m_radians ? 1.0 : kRadToDeg;
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
-  // The range of motion of the named motion (flexion, not flexion + extension) against that
+  // The largest angle in the named direction (flexion, not flexion + extension) against that
   // motion's normal range from the neutral position.
   const double normalDeg = namedMotionNormalRad(normal) * scale;
 
@@ -121,32 +122,33 @@ void ProgressChart::redraw() {
                                                                       : QChart::ChartThemeLight);
 
   m_table->clear();
-  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Range (%1)").arg(unit), tr("Of normal")});
+  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Largest (%1)").arg(unit), tr("Of normal")});
   auto* line = new QLineSeries;
-  line->setName(tr("Range of motion"));
+  line->setName(tr("Largest angle reached"));
   auto* dots = new QScatterSeries;
   dots->setMarkerSize(9);
   dots->setName(tr("Sessions"));
   QDateTime first, last;
-  double highest = normalDeg;
+  double highest = normalDeg, lowest = 0;
   m_points = 0;
-  for (const reports::ProgressSession& s : m_sessions) {
-    const auto& rom = s.romRad[static_cast<std::size_t>(a)];
-    if (!rom) continue;
+  for (const SessionExtremes& s : m_sessions) {
+    const auto& peak = s.maxRad[static_cast<std::size_t>(a)];
+    if (!peak) continue;
     const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
     if (!when.isValid()) continue;
-    const double deg = *rom * scale;
+    const double deg = *peak * scale;
     line->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
     dots->append(static_cast<qreal>(when.toMSecsSinceEpoch()), deg);
     if (!first.isValid()) first = when;
     last = when;
     highest = std::max(highest, deg);
+    lowest = std::min(lowest, deg);  // below 0: the session never reached the neutral position
     ++m_points;
     m_table->appendRow(
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
          new QStandardItem(QLocale().toString(deg, 'f', m_radians ? 3 : 1)),
-         new QStandardItem(
-             tr("%L1 %").arg(100.0 * fractionOfNamedMotionNormal(normal, *rom), 0, 'f', 0))});
+         new QStandardItem(tr("%L1 %").arg(
+             100.0 * std::max(0.0, fractionOfNamedMotionNormal(normal, *peak)), 0, 'f', 0))});
   }
   if (m_points == 0) {
     chart->setTitle(tr("%1: no analysed session yet").arg(angleName(a)));
@@ -180,10 +182,10 @@ void ProgressChart::redraw() {
   x->setRange(from, to);
   x->setTickCount(std::clamp(m_points + 1, 3, 6));
   auto* y = new QValueAxis;
-  y->setTitleText(tr("ROM (%1)").arg(unit));
-  const double highestDeg = highest / scale * kRadToDeg;
-  const double step = (highestDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
-  y->setRange(0, std::ceil(highest * 1.05 / step) * step);
+  y->setTitleText(tr("Largest angle (%1)").arg(unit));
+  const double spanDeg = (highest - lowest) / scale * kRadToDeg;
+  const double step = (spanDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
+  y->setRange(std::floor(lowest * 1.05 / step) * step, std::ceil(highest * 1.05 / step) * step);
   y->setTickType(QValueAxis::TicksDynamic);
   y->setTickAnchor(0);
   y->setTickInterval(step);

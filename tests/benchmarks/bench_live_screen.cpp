@@ -3,10 +3,11 @@
 // report interval: frames per second of the 3D view and of the plots, the longest stall of the
 // GUI thread (a 2 ms watchdog timer: the longest time the event loop did not get round to it)
 // with how much of it the thread ran, waited for a core or was blocked (the kernel's schedstat),
-// the whole process's CPU use and its resident memory.
+// the whole process's CPU use and its resident memory; at the end, each thread's CPU and time
+// waiting for a core, and whether the estimator kept up.
 //
 //   tests/support/run-gui-test.sh build/tests/benchmarks/bench_live_screen [--seconds 600]
-//       [--interval 30] [--size 1280x800]
+//       [--interval 30] [--size 1280x800] [--worker-nice N]
 #include <malloc.h>
 #include <sys/resource.h>
 #include <unistd.h>
@@ -17,12 +18,15 @@
 #include <QElapsedTimer>
 #include <QTimer>
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <string>
 
 #include "app/gui/live/LiveSessionScreen.h"
+#include "app/gui/live/SessionController.h"
 #include "app/plugins/PluginRegistry.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/OpenGlSetup.h"
@@ -57,6 +61,46 @@ std::pair<double, double> threadCpuAndWaitMs() {
   double cpuNs = 0, waitNs = 0;
   f >> cpuNs >> waitNs;
   return {cpuNs * 1e-6, waitNs * 1e-6};
+}
+
+/// One thread of this process as the scheduler counts it (ms on a CPU and waiting for one).
+struct ThreadTimes {
+  std::string name;
+  double cpuMs = 0, queueMs = 0;
+};
+
+/// Every thread of this process by id.
+std::map<int, ThreadTimes> threadTimes() {
+  std::map<int, ThreadTimes> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator("/proc/self/task", ec)) {
+    ThreadTimes t;
+    std::ifstream comm(e.path() / "comm");
+    std::getline(comm, t.name);
+    std::ifstream stat(e.path() / "schedstat");
+    double cpuNs = 0, waitNs = 0;
+    if (!(stat >> cpuNs >> waitNs)) continue;  // ended meanwhile
+    t.cpuMs = cpuNs * 1e-6;
+    t.queueMs = waitNs * 1e-6;
+    out[std::stoi(e.path().filename().string())] = t;
+  }
+  return out;
+}
+
+/// A thread's kind: its name without a trailing number ("llvmpipe-1" -> "llvmpipe-"); the main
+/// thread is the GUI thread.
+std::string threadKind(int tid, const std::string& name) {
+  if (tid == getpid()) return "GUI thread";
+  std::string kind = name;
+  while (!kind.empty() && std::isdigit(static_cast<unsigned char>(kind.back()))) kind.pop_back();
+  return kind;
+}
+
+/// The application's own worker threads (estimator, recorder, devices, session control,
+/// records), by the names it gives them (15 characters at most on Linux).
+bool isAppWorker(const std::string& name) {
+  return name.rfind("armtrack-", 0) == 0 || name.rfind("device ", 0) == 0 ||
+         name.rfind("records", 0) == 0;
 }
 
 double loadAverage() {
@@ -143,6 +187,11 @@ int main(int argc, char** argv) {
   cli.addOption({QStringLiteral("hide"),
                  QStringLiteral("Hide a part to see what it costs: 3d, plots, table."),
                  QStringLiteral("part")});
+  cli.addOption({QStringLiteral("worker-nice"),
+                 QStringLiteral("Once the session runs, set the nice value of the application's "
+                                "own worker threads (estimator, recorder, devices, session "
+                                "control, records) to n; the GUI thread keeps 0."),
+                 QStringLiteral("n")});
   cli.addOption({QStringLiteral("profile"),
                  QStringLiteral("Print, each interval, the GUI thread's slowest kinds of work "
                                 "(receiver class < parent class, event type).")});
@@ -183,6 +232,8 @@ int main(int argc, char** argv) {
   };
   Stall longest, longestAll;
   double mostCpuMs = 0, mostCpuAllMs = 0;
+  // Stalls over 20 and 50 ms, in the interval and in the whole run: steadier than the longest.
+  std::uint64_t over20 = 0, over50 = 0, over20All = 0, over50All = 0, ticks = 0;
   double lastTick = 0, lastCpu = 0, lastWait = 0;
   QTimer watchdog;
   watchdog.setTimerType(Qt::PreciseTimer);
@@ -193,6 +244,9 @@ int main(int argc, char** argv) {
       const Stall st{now - lastTick - 2.0, cpu - lastCpu, wait - lastWait};
       if (st.ms > longest.ms) longest = st;
       mostCpuMs = std::max(mostCpuMs, st.cpuMs);
+      over20 += st.ms > 20 ? 1 : 0;
+      over50 += st.ms > 50 ? 1 : 0;
+      ++ticks;
     }
     lastTick = now;
     lastCpu = cpu;
@@ -209,7 +263,10 @@ int main(int argc, char** argv) {
                 screen.estimatesDrained()};
   };
   Mark start{}, prev{};
+  std::map<int, ThreadTimes> threadsAtStart;
   bool failed = false;
+  const bool renice = cli.isSet(QStringLiteral("worker-nice"));
+  const int workerNice = cli.value(QStringLiteral("worker-nice")).toInt();
   QObject::connect(&screen, &armtrack::app::gui::LiveSessionScreen::sessionFailed,
                    [&](const QString& why) {
                      std::fprintf(stderr, "bench_live_screen: %s\n", qPrintable(why));
@@ -219,18 +276,28 @@ int main(int argc, char** argv) {
   QObject::connect(&screen, &armtrack::app::gui::LiveSessionScreen::sessionStarted, [&] {
     // Skip the first second (start-up), then measure.
     QTimer::singleShot(1000, [&] {
+      if (renice) {
+        for (const auto& [tid, t] : threadTimes()) {
+          if (!isAppWorker(t.name)) continue;
+          const int r = setpriority(PRIO_PROCESS, static_cast<id_t>(tid), workerNice);
+          std::printf("nice %d for thread %d (%s)%s\n", workerNice, tid, t.name.c_str(),
+                      r == 0 ? "" : ": refused");
+        }
+      }
       start = prev = mark();
+      threadsAtStart = threadTimes();
       lastTick = 0;
       longest = {};
       mostCpuMs = 0;
+      over20 = over50 = ticks = 0;
       watchdog.start(2);
       std::printf(
           "Live session screen, %dx%d, virtual arm (1 kHz IMUs, 30 Hz Kinect and "
           "webcam), EKF, drained at %.0f Hz\n",
           screen.width(), screen.height(), screen.drainRate());
-      std::printf("%6s %6s %8s %8s %8s %9s %24s %8s %6s %7s %7s %5s\n", "time s", "3D fps",
-                  "plot fps", "paint/s", "drains/s", "stall ms", "(cpu/queue/blocked ms)",
-                  "cpu max", "CPU %", "RSS MB", "heap MB", "load");
+      std::printf("%6s %6s %8s %8s %8s %9s %24s %5s %5s %8s %6s %7s %7s %5s\n", "time s", "3D fps",
+                  "plot fps", "paint/s", "drains/s", "stall ms", "(cpu/queue/blocked ms)", ">20ms",
+                  ">50ms", "cpu max", "CPU %", "RSS MB", "heap MB", "load");
       std::fflush(stdout);
     });
   });
@@ -240,12 +307,17 @@ int main(int argc, char** argv) {
     const Mark m = mark();
     const double dt = m.t - prev.t;
     std::printf(
-        "%6.0f %6.1f %8.1f %8.1f %8.1f %9.1f %8.1f/%6.1f/%7.1f %8.1f %6.1f %7.1f %7.1f %5.2f\n",
+        "%6.0f %6.1f %8.1f %8.1f %8.1f %9.1f %8.1f/%6.1f/%7.1f %5llu %5llu %8.1f %6.1f %7.1f "
+        "%7.1f %5.2f\n",
         m.t - start.t, (m.frames - prev.frames) / dt, (m.redraws - prev.redraws) / dt,
         (m.paints - prev.paints) / dt / std::max<qsizetype>(1, charts.size()),
         (m.drains - prev.drains) / dt, longest.ms, longest.cpuMs, longest.queueMs,
-        longest.ms - longest.cpuMs - longest.queueMs, mostCpuMs, 100.0 * (m.cpu - prev.cpu) / dt,
+        longest.ms - longest.cpuMs - longest.queueMs, static_cast<unsigned long long>(over20),
+        static_cast<unsigned long long>(over50), mostCpuMs, 100.0 * (m.cpu - prev.cpu) / dt,
         residentMb(), heapInUseMb(), loadAverage());
+    over20All += over20;
+    over50All += over50;
+    over20 = over50 = 0;
     std::fflush(stdout);
     if (app.profiling) {
       const auto& d = screen.drainTimes();
@@ -272,6 +344,37 @@ int main(int argc, char** argv) {
           longestAll.ms - longestAll.cpuMs - longestAll.queueMs, mostCpuAllMs,
           100.0 * (m.cpu - start.cpu) / total,
           static_cast<unsigned long long>(m.estimates - start.estimates));
+      std::printf("stalls over 20 ms: %llu, over 50 ms: %llu (watchdog ticks %llu)\n",
+                  static_cast<unsigned long long>(over20All),
+                  static_cast<unsigned long long>(over50All),
+                  static_cast<unsigned long long>(ticks));
+      // Each kind of thread's share of a core and its time waiting for one over the run.
+      std::map<std::string, ThreadTimes> kinds;
+      for (const auto& [tid, t] : threadTimes()) {
+        const auto before = threadsAtStart.find(tid);
+        ThreadTimes& k = kinds[threadKind(tid, t.name)];
+        k.cpuMs += t.cpuMs - (before != threadsAtStart.end() ? before->second.cpuMs : 0.0);
+        k.queueMs += t.queueMs - (before != threadsAtStart.end() ? before->second.queueMs : 0.0);
+      }
+      std::printf("threads (CPU %% of one core, waiting for a core %%):\n");
+      for (const auto& [kind, t] : kinds)
+        if (t.cpuMs > 0.001 * total * 1000)
+          std::printf("  %-18s %5.1f %% %5.1f %%%s\n", kind.c_str(), t.cpuMs / total / 10.0,
+                      t.queueMs / total / 10.0, isAppWorker(kind) ? "  (worker)" : "");
+      // Whether the estimator kept up: samples lost, the most waiting, rows without estimate.
+      if (const auto* c = screen.findChild<armtrack::app::gui::SessionController*>();
+          c && c->session()) {
+        const armtrack::session::SessionStats st = c->session()->stats();
+        std::printf(
+            "estimator: %llu rows, %llu estimates, input overflow %llu, lost %llu, most samples "
+            "queued %zu, GUI rows overwritten %llu, latency p99 %.1f ms, max %.1f ms, worker "
+            "CPU %.1f %%\n",
+            static_cast<unsigned long long>(st.rows), static_cast<unsigned long long>(st.estimates),
+            static_cast<unsigned long long>(st.inputOverflow),
+            static_cast<unsigned long long>(st.lost()), st.maxInputQueued,
+            static_cast<unsigned long long>(st.resultsOverwritten), st.latency.quantile(0.99) * 1e3,
+            st.latency.max() * 1e3, 100.0 * st.workerCpuSeconds / st.elapsed);
+      }
       std::fflush(stdout);
       screen.stop();
     }

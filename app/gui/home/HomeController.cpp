@@ -1,6 +1,8 @@
 #include "app/gui/home/HomeController.h"
 
 #include <QSettings>
+#include <QTemporaryDir>
+#include <QThreadPool>
 
 #include "app/gui/home/ExerciseScreen.h"
 #include "app/gui/home/FeedbackSound.h"
@@ -28,7 +30,6 @@ HomeController::HomeController(RecordsService& records, const app::PluginRegistr
       m_patient(std::move(patientCode)),
       m_window(std::make_unique<HomeWindow>()),
       m_sound(new FeedbackSound(this)) {
-  if (m_setup.workFolder.isEmpty() && m_work.isValid()) m_setup.workFolder = m_work.path();
   m_window->access()->setMode(
       parseAccessMode(QSettings().value(QLatin1String(kAccessKey)).toString()));
   connect(m_window.get(), &HomeWindow::closeRequested, this, &HomeController::onCloseRequested);
@@ -36,6 +37,10 @@ HomeController::HomeController(RecordsService& records, const app::PluginRegistr
 
 HomeController::~HomeController() {
   m_window.reset();  // the screens first: their pending answers are dropped
+  // The recordings in the temporary folder are removed on a pool thread (the application waits
+  // for the pool when it ends).
+  if (m_work)
+    QThreadPool::globalInstance()->start([work = std::move(m_work)]() mutable { work.reset(); });
 }
 
 template <class Screen>
@@ -59,9 +64,22 @@ void HomeController::loadPlan() {
   setStep({});
   show(new HomeMessageScreen([] { return tr("One moment"); },
                              [] { return tr("Loading today's exercises\u2026"); }));
+  // The temporary folder, when one is needed, is made on the records' thread with the plan.
+  const bool makeWork = m_setup.workFolder.isEmpty() && !m_work;
   m_records.call(
       m_window.get(),
-      [code = m_patient](storage::ClinicalStore& s) {
+      [code = m_patient, makeWork](storage::ClinicalStore& s) {
+        std::shared_ptr<QTemporaryDir> work;
+        if (makeWork) {
+          work = std::make_shared<QTemporaryDir>();
+          if (!work->isValid())
+            throw storage::StorageError(
+                storage::StorageError::Kind::Io,
+                tr("cannot create a temporary folder for the sensor check (%1): free some disk "
+                   "space")
+                    .arg(work->errorString())
+                    .toStdString());
+        }
         QString patient = code;
         if (patient.isEmpty()) {
           // A home account sees its own patient only.
@@ -71,9 +89,14 @@ void HomeController::loadPlan() {
                                         "this account is not linked to one patient");
           patient = own.front().code;
         }
-        return loadHomePlan(s, patient);
+        return std::make_pair(loadHomePlan(s, patient), work);
       },
-      [this](const HomePlan& plan) {
+      [this](const std::pair<HomePlan, std::shared_ptr<QTemporaryDir>>& loaded) {
+        const auto& [plan, work] = loaded;
+        if (work) {
+          m_work = work;
+          m_setup.workFolder = work->path();
+        }
         m_plan = plan;
         m_patient = plan.patient.code;
         emit planLoaded();

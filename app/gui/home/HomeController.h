@@ -1,12 +1,12 @@
 // The home window's course: today's programme, the sensor check, the calibration, each exercise
 // in turn, the summary with the patient's pain score and comment, saved for the therapist. It
 // owns the window and hands the screens what they need; the screens know nothing of each other.
-// Everything it asks of the records runs on the records' threads (RecordsService).
+// Everything it asks of the records runs on the records' threads (RecordsService), and so do its
+// temporary folder's making and (QThreadPool) removal: the GUI thread never waits for the disk.
 #pragma once
 
 #include <QObject>
 #include <QPointer>
-#include <QTemporaryDir>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -14,6 +14,8 @@
 
 #include "app/gui/home/HomeSetup.h"
 #include "app/gui/services/HomeRecords.h"
+
+class QTemporaryDir;
 
 namespace armtrack::app {
 class PluginRegistry;
@@ -78,7 +80,9 @@ class HomeController : public QObject {
   const app::PluginRegistry& m_registry;
   HomeSetup m_setup;
   QString m_patient;
-  QTemporaryDir m_work;
+  /// The check's and the calibration's recordings when the set-up names no folder: made with
+  /// the plan, removed with everything in it after the window (off the GUI thread).
+  std::shared_ptr<QTemporaryDir> m_work;
   std::unique_ptr<HomeWindow> m_window;
   FeedbackSound* m_sound;
   HomePlan m_plan;

@@ -3,13 +3,13 @@
 #include <QCloseEvent>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QStackedWidget>
 #include <QVBoxLayout>
 
 #include "app/gui/home/HomeScreen.h"
 #include "app/gui/home/HomeStyle.h"
 #include "app/gui/home/SwitchAccess.h"
 #include "ui/Fonts.h"
+#include "ui/ScreenStack.h"
 
 namespace armtrack::gui::home {
 
@@ -17,7 +17,7 @@ HomeWindow::HomeWindow(QWidget* parent)
     : QWidget(parent, Qt::Window),
       m_who(new QLabel(this)),
       m_step(new QLabel(this)),
-      m_stack(new QStackedWidget(this)),
+      m_stack(new ui::ScreenStack(this)),
       m_access(new SwitchAccess(this, this)) {
   applyHomeStyle(this);
   auto* root = new QVBoxLayout(this);
@@ -49,19 +49,13 @@ void HomeWindow::changeEvent(QEvent* event) {
 }
 
 void HomeWindow::showScreen(HomeScreen* screen) {
-  if (m_current) {
-    m_stack->removeWidget(m_current);
-    m_current->deleteLater();
-  }
-  m_current = screen;
-  m_stack->addWidget(screen);
-  m_stack->setCurrentWidget(screen);
+  m_stack->showScreen(screen);
   m_access->setScreen(screen);
   if (QAbstractButton* main = screen->defaultChoice()) main->setFocus(Qt::OtherFocusReason);
 }
 
 HomeScreen* HomeWindow::currentScreen() const {
-  return m_current;
+  return qobject_cast<HomeScreen*>(m_stack->screen());
 }
 
 void HomeWindow::setHeading(const QString& who, std::function<QString()> step) {

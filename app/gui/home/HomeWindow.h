@@ -3,12 +3,14 @@
 // high contrast, usable with the keyboard alone or a single switch (SwitchAccess).
 #pragma once
 
-#include <QPointer>
 #include <QWidget>
 #include <functional>
 
 class QLabel;
-class QStackedWidget;
+
+namespace armtrack::ui {
+class ScreenStack;
+}
 
 namespace armtrack::gui::home {
 
@@ -45,8 +47,7 @@ class HomeWindow : public QWidget {
   QLabel* m_who;
   QLabel* m_step;
   std::function<QString()> m_stepText;
-  QStackedWidget* m_stack;
-  QPointer<HomeScreen> m_current;
+  ui::ScreenStack* m_stack;
   SwitchAccess* m_access;
   bool m_closeAllowed = false;
 };

@@ -177,8 +177,6 @@ void SensorCheckScreen::start() {
   ++m_generation;
   m_result.reset();
   m_banner->hide();
-  std::error_code ec;
-  std::filesystem::create_directories(m_folder, ec);
   m_csv = m_folder /
           ("check-" +
            QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss")).toStdString() +

@@ -31,6 +31,17 @@ std::unique_ptr<RecordingSink> CsvRecordingTarget::open(const RecordingMeta& met
     throw RecordingError(
         m_csv.string(), 0, 0,
         Tr::tr("a recording with this name exists; choose another name").toStdString());
+  // Its folder is made here, on the recorder thread, not by the screen on the GUI thread.
+  if (const std::filesystem::path folder = m_csv.parent_path(); !folder.empty()) {
+    std::filesystem::create_directories(folder, ec);
+    if (ec)
+      throw RecordingError(
+          m_csv.string(), 0, 0,
+          Tr::tr("cannot create the folder %1 (%2): choose a folder you may "
+                 "write to")
+              .arg(QString::fromStdString(folder.string()), QString::fromStdString(ec.message()))
+              .toStdString());
+  }
   return std::make_unique<RecordingWriter>(m_csv, meta, columns);
 }
 

@@ -53,7 +53,8 @@ class RecordingTarget {
   }
 };
 
-/// A recording file; never replaces one that exists (the user picks another name).
+/// A recording file; never replaces one that exists (the user picks another name). open() makes
+/// its folder when there is none yet.
 class CsvRecordingTarget final : public RecordingTarget {
  public:
   explicit CsvRecordingTarget(std::filesystem::path csv) : m_csv(std::move(csv)) {}

@@ -225,8 +225,6 @@ void SensorCalibrationPage::start() {
   m_verdict.reset();
   showVerdict({});
   m_details->clear();
-  std::error_code ec;
-  std::filesystem::create_directories(m_folder, ec);
   const QString stamp = QDateTime::currentDateTime().toString(QStringLiteral("yyyyMMdd-HHmmss"));
   m_csv = m_folder /
           ("calibration-" + stamp.toStdString() + "-" + std::to_string(m_generation) + ".csv");

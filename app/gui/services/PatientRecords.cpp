@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "app/clinical/Outputs.h"
+#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
 
@@ -64,12 +65,14 @@ PatientOverview loadPatientOverview(storage::ClinicalStore& store, const QString
   std::sort(o.sessions.begin(), o.sessions.end(), [](const auto& a, const auto& b) {
     return a.startedAt != b.startedAt ? a.startedAt > b.startedAt : a.id > b.id;
   });
-  reports::ProgressReportData progress = clinical::progressReportData(store, code);
-  for (const reports::ProgressSession& p : progress.sessions)
-    if (std::any_of(p.romRad.begin(), p.romRad.end(), [](const auto& v) { return v.has_value(); }))
-      o.progress.push_back(p);
-  std::sort(o.progress.begin(), o.progress.end(),
-            [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
+  for (auto e = o.sessions.rbegin(); e != o.sessions.rend(); ++e) {  // oldest first
+    const std::optional<QJsonObject> metrics = storage::latestMetricsJson(store, e->id);
+    if (!metrics) continue;
+    SessionExtremes x{e->id, e->startedAt, clinical::angleFieldOf(*metrics, "min_deg"),
+                      clinical::angleFieldOf(*metrics, "max_deg")};
+    if (std::any_of(x.maxRad.begin(), x.maxRad.end(), [](const auto& v) { return v.has_value(); }))
+      o.progress.push_back(std::move(x));
+  }
   return o;
 }
 

@@ -5,10 +5,11 @@
 
 #include <QJsonObject>
 #include <QString>
+#include <array>
 #include <optional>
 #include <vector>
 
-#include "core/reports/ReportData.h"
+#include "core/metrics/RangeOfMotion.h"
 #include "core/storage/ClinicalStore.h"
 
 namespace armtrack::gui {
@@ -28,14 +29,23 @@ struct SegmentLengths {
   QString toJson() const;
 };
 
+/// An analysed session's smallest and largest smoothed clinical angles (rad, signs of
+/// ClinicalAngles), from its newest metrics: what the progress chart plots.
+struct SessionExtremes {
+  qint64 id = 0;
+  QString startedAt;  ///< ISO 8601 UTC (storage::SessionInfo::startedAt)
+  /// Per angle (clinicalAngleInfo() order); empty where not measured.
+  std::array<std::optional<double>, kNumClinicalAngles> minRad{}, maxRad{};
+};
+
 /// What the patient page shows.
 struct PatientOverview {
   storage::Patient patient;
   std::vector<storage::ProgrammeItem> programme;
   std::vector<storage::Protocol> protocols;    ///< every protocol (for the programme's details)
   std::vector<storage::SessionInfo> sessions;  ///< newest first
-  /// Range of motion per analysed session (oldest first), as the progress report has it.
-  std::vector<reports::ProgressSession> progress;
+  /// The angles' extremes per analysed session, oldest first.
+  std::vector<SessionExtremes> progress;
 };
 
 /// Loads it (records thread). Throws StorageError (NotFound for an unknown code).

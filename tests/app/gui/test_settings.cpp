@@ -81,7 +81,7 @@ class TestSettings : public QObject {
     QVERIFY(page);
     QTRY_COMPARE(page->progressChart()->points(), 6);
     const QStandardItemModel* t = page->progressChart()->table();
-    QCOMPARE(t->horizontalHeaderItem(1)->text(), QStringLiteral("Range (rad)"));
+    QCOMPARE(t->horizontalHeaderItem(1)->text(), QStringLiteral("Largest (rad)"));
     const double rad = t->item(5, 1)->text().toDouble();  // week 5: 125 deg simulated
     QVERIFY2(std::abs(rad - 125.0 * M_PI / 180) < 0.01, qPrintable(t->item(5, 1)->text()));
     test::saveScreenshot(app.window(), QStringLiteral("patient-dark"));

@@ -10,6 +10,8 @@
 //   a pain score and a comment saved;
 // then the therapist finds those sessions, marked home, with the pain score, in the patient's
 // page. The screenshots are the user guide's "At home" pictures (docs/user-guide.md).
+#include <QDir>
+#include <QFileInfo>
 #include <QJsonDocument>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -216,6 +218,12 @@ class TestHomeMode : public QObject {
   }
 
   void closingDuringAnExerciseKeepsItInterrupted() {
+    // The check's recording went into the home window's temporary folder (made with the plan, off
+    // the GUI thread), which goes when the window does.
+    const QString work = m_app->home()->setup().workFolder;
+    QVERIFY(!work.isEmpty());
+    QVERIFY2(!QDir(work).entryList({QStringLiteral("check-*.csv")}, QDir::Files).isEmpty(),
+             qPrintable(work));
     // Going on anyway, without the calibration, into the first exercise.
     findControl<QPushButton>(current<SensorCheckScreen>(), QStringLiteral("Go on anyway"))->click();
     QTRY_VERIFY(current<HomeCalibrationScreen>());
@@ -229,6 +237,7 @@ class TestHomeMode : public QObject {
     window()->close();  // the window's close button
     QTRY_VERIFY_WITH_TIMEOUT(m_app->home() == nullptr, kSlowMs);
     QTRY_VERIFY(m_app->window()->isVisible());
+    QTRY_VERIFY2(!QFileInfo::exists(work), qPrintable(work));
     signInAs(DemoAccounts::kTherapist);
     const auto after = sessions();
     QCOMPARE(after.size(), before + 1);

@@ -188,6 +188,24 @@ class TestLiveSessionScreen : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Stopped, 15000);
   }
 
+  void aRecordingFileWhoseFolderCannotBeMadeSaysWhere() {
+    // The folder is made by open(), on the recorder thread; a file in its way is named.
+    QTemporaryDir dir;
+    QFile blocker(dir.filePath(QStringLiteral("not-a-folder")));
+    QVERIFY(blocker.open(QIODevice::WriteOnly));
+    blocker.close();
+    CsvRecordingTarget target(
+        dir.filePath(QStringLiteral("not-a-folder/day/live.csv")).toStdString());
+    try {
+      target.open(RecordingMeta{}, RecordingColumns{});
+      QFAIL("open() made a recording under a file");
+    } catch (const RecordingError& e) {
+      QVERIFY2(
+          QString::fromStdString(e.what()).contains(QStringLiteral("cannot create the folder")),
+          e.what());
+    }
+  }
+
   void recordPauseRecordStopIntoACsv() {
     QTemporaryDir dir;
     const std::filesystem::path csv = dir.filePath(QStringLiteral("live.csv")).toStdString();

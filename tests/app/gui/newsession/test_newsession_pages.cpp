@@ -192,11 +192,14 @@ class TestNewSessionPages : public QObject {
     QVERIFY2(page.statusText().contains(QStringLiteral("Battery: virtual-arm#1 12 % (low")),
              qPrintable(page.statusText()));
     battery->setText(QString());
-    // A bad option: the plugin's own message.
+    // A bad option: the plugin's own message, once the previous check has let go of its devices
+    // (until then the controller refuses to start).
     sensors->setText(QStringLiteral("upper+banana"));
-    finished.clear();
     QTRY_VERIFY_WITH_TIMEOUT(!page.checking(), 5000);
-    QTest::qWait(200);  // the previous session lets go of the controller
+    const auto* controller = page.findChild<gui::SessionController*>();
+    QVERIFY(controller);
+    QTRY_VERIFY_WITH_TIMEOUT(!controller->busy(), 10000);
+    finished.clear();
     page.startCheck();
     QVERIFY(finished.wait(20000));
     QVERIFY(!finished.at(0).at(0).toBool());
@@ -255,7 +258,9 @@ class TestNewSessionPages : public QObject {
     QTemporaryDir dir;
     gui::LiveSessionConfig c;
     c.devices = {QStringLiteral("virtual-arm:sensors=upper+forearm+kinect,trajectory=calibration")};
-    SensorCalibrationPage page(m_registry, c, dir.path().toStdString());
+    // A folder that does not exist yet: the recording makes it (off the GUI thread).
+    SensorCalibrationPage page(m_registry, c,
+                               dir.filePath(QStringLiteral("calibration/today")).toStdString());
     page.resize(1100, 650);
     page.show();
     QVERIFY(QTest::qWaitForWindowExposed(&page));
@@ -289,7 +294,10 @@ class TestNewSessionPages : public QObject {
     QCOMPARE(page.state(), SensorCalibrationPage::State::Ready);
     QVERIFY(!page.isComplete());
     QVERIFY(page.startButton()->isEnabled());
-    QTest::qWait(300);
+    // Started again once the cancelled run has let go of its devices.
+    const auto* controller = page.findChild<gui::SessionController*>();
+    QVERIFY(controller);
+    QTRY_VERIFY_WITH_TIMEOUT(!controller->busy(), 10000);
     page.start();
     QTRY_VERIFY_WITH_TIMEOUT(page.instructionTitle() == QStringLiteral("Start pose"), 10000);
     page.cancel();
