@@ -3197,8 +3197,8 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Keine Sitzungen zwischen %1 und %2.</translation>
     </message>
     <message>
-        <source>%1: range of motion (deg)</source>
-        <translation>%1: Bewegungsausmaß (°)</translation>
+        <source>%1: largest angle reached (deg)</source>
+        <translation>%1: größter erreichter Winkel (°)</translation>
     </message>
     <message>
         <source>Normal ranges: %1.</source>

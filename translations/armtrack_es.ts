@@ -3197,8 +3197,8 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>No hay sesiones entre el %1 y el %2.</translation>
     </message>
     <message>
-        <source>%1: range of motion (deg)</source>
-        <translation>%1: rango de movimiento (°)</translation>
+        <source>%1: largest angle reached (deg)</source>
+        <translation>%1: mayor ángulo alcanzado (°)</translation>
     </message>
     <message>
         <source>Normal ranges: %1.</source>

@@ -269,20 +269,23 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
 
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
                    const std::vector<QDateTime>& when,
-                   const std::vector<std::optional<double>>& romDeg, double normalSpanDeg) {
+                   const std::vector<std::optional<double>>& valuesDeg, double normalSpanDeg) {
   Frame f = frameIn(w, r);
-  const std::size_t n = std::min(when.size(), romDeg.size());
+  const std::size_t n = std::min(when.size(), valuesDeg.size());
   // Days since the first session, so the x axis is proportional to time.
   const QDateTime origin = n > 0 ? when.front() : QDateTime::currentDateTimeUtc();
   auto day = [&](const QDateTime& t) { return origin.msecsTo(t) / 86400000.0; };
-  double last = 0, top = normalSpanDeg;
+  double last = 0, top = normalSpanDeg, bottom = 0;
   for (std::size_t i = 0; i < n; ++i) {
     last = std::max(last, day(when[i]));
-    if (romDeg[i]) top = std::max(top, *romDeg[i]);
+    if (valuesDeg[i]) {
+      top = std::max(top, *valuesDeg[i]);
+      bottom = std::min(bottom, *valuesDeg[i]);  // below 0: never reached the neutral position
+    }
   }
   f.xlo = -0.5;
   f.xhi = std::max(last, 1.0) + 0.5;
-  f.ylo = 0;
+  f.ylo = bottom < 0 ? bottom * 1.1 - 1 : 0;
   f.yhi = top * 1.1 + 1;
   std::vector<double> xTicks;
   for (double d : niceTicks(0, f.xhi, 5))
@@ -290,9 +293,9 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
   QPainter& p = w.painter();
   p.save();
-  p.fillRect(QRectF(f.plot.left(), f.py(normalSpanDeg), f.plot.width(),
-                    f.plot.bottom() - f.py(normalSpanDeg)),
-             kNormalSpan);
+  p.fillRect(
+      QRectF(f.plot.left(), f.py(normalSpanDeg), f.plot.width(), f.py(0) - f.py(normalSpanDeg)),
+      kNormalSpan);
   const QDate first = origin.date();
   drawAxes(
       w, f, r, title, xTicks,
@@ -311,8 +314,8 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   p.setPen(QPen(kLine, w.mm(0.35)));
   p.setBrush(kLine);
   for (std::size_t i = 0; i < n; ++i) {
-    if (!romDeg[i]) continue;
-    const QPointF pt(f.px(day(when[i])), f.py(*romDeg[i]));
+    if (!valuesDeg[i]) continue;
+    const QPointF pt(f.px(day(when[i])), f.py(*valuesDeg[i]));
     if (open)
       path.lineTo(pt);
     else

@@ -52,10 +52,11 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
 /// Height (device units) drawNormativeBars needs for n bars.
 double normativeBarsHeight(const PageWriter& w, std::size_t n);
 
-/// Range of motion (deg) against date in rect r; the normal span (0 to normalSpanDeg) shaded and
-/// its limit dashed. Points with no value are skipped.
+/// Values (deg, e.g. the largest angle reached per session) against date in rect r; the normal
+/// span (0 to normalSpanDeg) shaded and its limit dashed. Points with no value are skipped; the
+/// axis goes below 0 when a value does.
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
                    const std::vector<QDateTime>& when,
-                   const std::vector<std::optional<double>>& romDeg, double normalSpanDeg);
+                   const std::vector<std::optional<double>>& valuesDeg, double normalSpanDeg);
 
 }  // namespace armtrack::reports

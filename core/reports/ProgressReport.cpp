@@ -39,12 +39,14 @@ void draw(PageWriter& w, const ProgressReportData& d,
     for (const ProgressSession& s : sessions) when.push_back(parseIso(s.startedAt));
     const auto& ranges = aaosNormativeRanges();
     for (int a = 0; a < kNumClinicalAngles; ++a) {
-      std::vector<std::optional<double>> rom;
+      // The largest angle in the named direction, which is what the named motion's normal range
+      // measures; a range of motion would add the opposite motion (extension to flexion) to it.
+      std::vector<std::optional<double>> largest;
       for (const ProgressSession& s : sessions)
-        rom.push_back(deg(s.romRad[static_cast<std::size_t>(a)]));
+        largest.push_back(deg(s.maxRad[static_cast<std::size_t>(a)]));
       const QRectF r = w.reserve(w.mm(44));
       drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
-                    Text::tr("%1: range of motion (deg)").arg(angleName(a)), when, rom,
+                    Text::tr("%1: largest angle reached (deg)").arg(angleName(a)), when, largest,
                     namedMotionNormalRad(ranges[static_cast<std::size_t>(a)]) * kRadToDeg);
     }
     const std::string_view source = normSourceCitation(NormSource::Aaos);

@@ -19,7 +19,10 @@ ProgressSession progressSession(const storage::SessionInfo& session,
   p.protocolName = session.protocolName;
   p.durationS = session.durationS > 0 ? session.durationS : metrics.durationS;
   p.repetitions = static_cast<int>(metrics.repetitions.repetitions.size());
-  for (std::size_t a = 0; a < p.romRad.size(); ++a) p.romRad[a] = metrics.session.angle[a].romRad;
+  for (std::size_t a = 0; a < p.romRad.size(); ++a) {
+    p.romRad[a] = metrics.session.angle[a].romRad;
+    p.maxRad[a] = metrics.session.angle[a].maxRad;
+  }
   return p;
 }
 

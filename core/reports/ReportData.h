@@ -55,7 +55,11 @@ struct ProgressSession {
   QString protocolName;            ///< "" without a protocol
   double durationS = 0;            ///< s
   std::optional<int> repetitions;  ///< full + partial repetitions, when computed
-  std::array<std::optional<double>, kNumClinicalAngles> romRad{};  ///< rad
+  std::array<std::optional<double>, kNumClinicalAngles> romRad{};  ///< rad, max - min
+  /// rad, the largest angle reached: the peak in the direction the angle is named after
+  /// (flexion, abduction, internal rotation, elbow flexion, pronation), which the normal range of
+  /// the named motion (namedMotionNormalRad) measures.
+  std::array<std::optional<double>, kNumClinicalAngles> maxRad{};
 };
 
 /// A patient's range of motion over a date range.

@@ -23,7 +23,8 @@ ProgressReportData progressData() {
   d.fromDate = "2026-10-01";
   d.toDate = "2026-11-30";
   d.therapistName = "Dr. Jane Smith";
-  // Given out of order: the report sorts by date. Shoulder flexion ROM 60, 75, 90, 104.5 deg.
+  // Given out of order: the report sorts by date. Shoulder flexion ROM 60, 75, 90, 104.5 deg,
+  // from 10 deg of extension, so the largest flexion reached is 10 deg less.
   const double romDeg[4] = {60, 75, 90, 104.5};
   const char* dates[4] = {"2026-10-02T09:00:00Z", "2026-10-16T09:00:00Z", "2026-11-01T09:00:00Z",
                           "2026-11-20T09:00:00Z"};
@@ -35,6 +36,7 @@ ProgressReportData progressData() {
     s.durationS = 300 + i;
     s.repetitions = 10 + i;
     s.romRad = {romDeg[i] * kDegToRad, 0.5, 0.4, 1.2, std::nullopt};
+    s.maxRad = {(romDeg[i] - 10) * kDegToRad, 0.3, 0.2, 1.0, std::nullopt};
     d.sessions.push_back(s);
   }
   return d;
@@ -56,7 +58,7 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
   }
   for (int a = 0; a < kNumClinicalAngles; ++a)
     EXPECT_TRUE(all.contains(QString::fromUtf8(clinicalAngleInfo()[a].name.data()) +
-                             ": range of motion (deg)"));
+                             ": largest angle reached (deg)"));
   // The table lists the sessions in date order with their ROM in degrees.
   int last = -1;
   for (const char* row : {"2026-10-02", "2026-10-16", "2026-11-01", "2026-11-20"}) {
@@ -95,6 +97,9 @@ TEST_F(ProgressReport, FromSimulatedSessions) {
     EXPECT_DOUBLE_EQ(row.durationS, sim.metrics.durationS);
     romDeg.push_back(*row.romRad[0] * kRadToDeg);
     EXPECT_NEAR(romDeg.back(), peaks[i] - 10, 1.0);
+    // The chart's value: the largest flexion reached, not the ROM from the 10 deg rest.
+    ASSERT_TRUE(row.maxRad[0].has_value());
+    EXPECT_NEAR(*row.maxRad[0] * kRadToDeg, peaks[i], 1.0);
     d.sessions.push_back(row);
   }
   const QString pdf = dir.filePath("simulated.pdf");
@@ -117,7 +122,7 @@ TEST_F(ProgressReport, NoSessionsSaysSo) {
   const QString all = pageTexts(pdf).join('\n');
   EXPECT_TRUE(all.contains("No sessions between 2026-10-01 and 2026-11-30."));
   EXPECT_TRUE(all.contains("Page 1 of 1"));
-  EXPECT_FALSE(all.contains("range of motion (deg)")) << "no empty charts";
+  EXPECT_FALSE(all.contains("largest angle reached (deg)")) << "no empty charts";
 }
 
 TEST_F(ProgressReport, UnwritablePathIsNamed) {
