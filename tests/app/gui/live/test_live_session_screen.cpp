@@ -137,18 +137,23 @@ class TestLiveSessionScreen : public QObject {
   }
 
   void deviceDropsOutTurnsRedAndRecovers() {
-    // The Kinect, a device of its own, goes away from 2 s to 5 s.
+    // The Kinect, a device of its own, goes away from 3 s to 6 s.
     LiveSessionScreen screen(m_registry,
                              config({QStringLiteral("virtual-arm:sensors=upper+forearm"),
-                                     QStringLiteral("virtual-arm:sensors=kinect,disappear=2+3")}));
+                                     QStringLiteral("virtual-arm:sensors=kinect,disappear=3+3")}));
     screen.resize(1100, 700);
     screen.show();
     screen.start();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
-    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 5000);
+    // The Kinect streams before it goes away. Only its row: on a loaded machine the IMUs' rates,
+    // measured over a second, can take longer to read as healthy (CI saw 11 s for all rows).
+    auto kinectOk = [&] {
+      const int row = rowOf(screen.health()->tracker(), QStringLiteral("kinect"));
+      return row >= 0 && screen.health()->tracker().rows()[static_cast<std::size_t>(row)].level ==
+                             ui::HealthLevel::Ok;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(kinectOk(), 5000);
     const int kinect = rowOf(screen.health()->tracker(), QStringLiteral("kinect"));
-    if (kinect < 0)
-      for (const auto& r : screen.health()->tracker().rows()) qWarning() << r.device << r.stream;
     QVERIFY(kinect >= 0);
     QTRY_VERIFY_WITH_TIMEOUT(
         screen.health()->tracker().rows()[static_cast<std::size_t>(kinect)].level ==
@@ -159,10 +164,9 @@ class TestLiveSessionScreen : public QObject {
     test::saveScreenshot(test::grabFromScreen(&screen), QStringLiteral("live_session_dropout"));
     // The session goes on meanwhile: the IMUs keep the estimates coming.
     const std::uint64_t before = screen.estimatesDrained();
-    QTest::qWait(500);
-    QVERIFY(screen.estimatesDrained() > before + 300);
+    QTRY_VERIFY_WITH_TIMEOUT(screen.estimatesDrained() > before + 300, 5000);
     QCOMPARE(screen.state(), State::Live);
-    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 8000);
+    QTRY_VERIFY_WITH_TIMEOUT(screen.health()->tracker().allOk(), 15000);
     QVERIFY(screen.bannerText().isEmpty());
     bool told = false;
     for (int i = 0; i < screen.messages()->count(); ++i)
