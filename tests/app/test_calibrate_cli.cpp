@@ -215,7 +215,9 @@ TEST_F(CalibrateCliTest, EstimateWithTheCalibrationMatchesPerfectMounting) {
     if (calibrated) args.insert(args.end(), {"--calibration", path("calib.json").string()});
     const CliResult r = runCli(args);
     EXPECT_EQ(r.code, 0) << r.err;
-    if (calibrated) EXPECT_NE(r.err.find("calibration: applied"), std::string::npos) << r.err;
+    if (calibrated) {
+      EXPECT_NE(r.err.find("calibration: applied"), std::string::npos) << r.err;
+    }
     return reportedRmse(r.out);
   };
   const std::vector<double> perfect = estimate("perfect.csv", false);

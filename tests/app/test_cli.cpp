@@ -90,7 +90,9 @@ TEST_F(CliTest, SimulateThenEstimateRoundTrip) {
     for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
     ASSERT_EQ(v.size(), 12u) << lines[i];
     for (int j = 6; j < 11; ++j) EXPECT_GT(v[j], 0.0) << lines[i];
-    if (i == 1) EXPECT_EQ(v[11], 2.0) << lines[i];
+    if (i == 1) {
+      EXPECT_EQ(v[11], 2.0) << lines[i];
+    }
     fused += v[11] == 0.0;
   }
   EXPECT_GE(fused, lines.size() - 3);

@@ -158,7 +158,9 @@ TEST_P(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   ASSERT_GE(spans.size(), 3u);
   for (std::size_t i = 0; i < spans.size(); ++i) {
     EXPECT_LT(spans[i].second - spans[i].first, 1.0) << "chunk " << i;
-    if (i > 0) EXPECT_GE(spans[i].first, spans[i - 1].second) << "chunk " << i;
+    if (i > 0) {
+      EXPECT_GE(spans[i].first, spans[i - 1].second) << "chunk " << i;
+    }
   }
   // The rows read back as a recording, in time order, with the live estimates beside them.
   const std::string csv = m_dir.filePath("back.csv").toStdString();

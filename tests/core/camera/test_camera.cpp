@@ -169,8 +169,8 @@ TEST(PinholeCamera, PointsBehindTheCameraDoNotProject) {
   const Eigen::Vector2d sentinel(-7, -7);
   Eigen::Vector2d px = sentinel;
   Eigen::Matrix<double, 2, 3> J = Eigen::Matrix<double, 2, 3>::Constant(-7);
-  for (const Eigen::Vector3d p : {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d(0.5, 2.5, -0.2),
-                                  Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(0.1, 2 - 1e-7, 0)}) {
+  for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d(0.5, 2.5, -0.2),
+                                   Eigen::Vector3d(0, 2, 0), Eigen::Vector3d(0.1, 2 - 1e-7, 0)}) {
     EXPECT_FALSE(cam.project(p, px)) << p.transpose();
     EXPECT_FALSE(cam.project(p, px, J)) << p.transpose();
   }

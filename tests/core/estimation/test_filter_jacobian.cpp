@@ -349,7 +349,9 @@ TEST_P(MarkerPixel, IsTheProjectionOfTheMarkerAndItsJacobianMatchesFiniteDiffere
       EXPECT_LT((jac - fd).cwiseAbs().maxCoeff(), 1e-5 * std::max(1.0, fd.cwiseAbs().maxCoeff()));
       // Only the angles move a marker; the elbow marker ignores the elbow joints.
       EXPECT_EQ(jac.leftCols<10>().cwiseAbs().maxCoeff(), 0.0);
-      if (!wrist) EXPECT_EQ(jac.rightCols<2>().cwiseAbs().maxCoeff(), 0.0);
+      if (!wrist) {
+        EXPECT_EQ(jac.rightCols<2>().cwiseAbs().maxCoeff(), 0.0);
+      }
       ++checked;
     }
   }

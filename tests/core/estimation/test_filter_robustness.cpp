@@ -171,8 +171,9 @@ TEST_P(ByFilter, NonFiniteBlocksAreDroppedAndCounted) {
         int(s.elbow.has_value() && !ref.elbow) + int(s.wrist.has_value() && !ref.wrist);
     ASSERT_EQ(dropped, static_cast<std::uint64_t>(expected)) << "t = " << s.t;
     // A row whose every reading is refused is predicted through (after start-up), not dropped.
-    if (!ref.hasImu() && !ref.elbow && !ref.wrist)
+    if (!ref.hasImu() && !ref.elbow && !ref.wrist) {
       EXPECT_TRUE(r == UpdateResult::Predicted || r == UpdateResult::Rejected);
+    }
     const JointEstimate e = f->estimate();
     ASSERT_TRUE(e.th.allFinite() && e.thd.allFinite() && e.thdd.allFinite()) << "t = " << s.t;
     ASSERT_TRUE(f->covariance().allFinite());

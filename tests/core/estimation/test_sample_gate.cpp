@@ -119,7 +119,9 @@ TEST(SampleGate, RefusesAFrozenSensorOnlyAfterManyIdenticalRepeats) {
     const ArmSample out = gate.check(s);
     EXPECT_TRUE(out.forearm);
     if (!out.upperArm && refusedFrom < 0) refusedFrom = i;
-    if (refusedFrom >= 0) EXPECT_FALSE(out.upperArm) << i;
+    if (refusedFrom >= 0) {
+      EXPECT_FALSE(out.upperArm) << i;
+    }
   }
   EXPECT_EQ(refusedFrom, 9);  // the tenth identical reading in a row
   EXPECT_EQ(gate.counters().byReason(Implausible::Stuck), 21u);

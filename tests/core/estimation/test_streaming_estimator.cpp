@@ -103,8 +103,12 @@ TEST(StreamingEstimator, DriftWindowsFollowTheirDefinition) {
     const StreamRun run = stream(rec.samples, paramsFor(rec));
     ASSERT_GT(run.rows.size(), 100u);
     EXPECT_GT(run.stats.firstWindow.count, 0u);
-    if (duration > 21.0) EXPECT_GT(run.stats.lastWindow.count, 2000u);
-    if (duration < 11.0) EXPECT_EQ(run.stats.lastWindow.count, 0u);
+    if (duration > 21.0) {
+      EXPECT_GT(run.stats.lastWindow.count, 2000u);
+    }
+    if (duration < 11.0) {
+      EXPECT_EQ(run.stats.lastWindow.count, 0u);
+    }
     expectWindows(run, rec.samples.back().t);
   }
 }

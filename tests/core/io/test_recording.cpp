@@ -729,7 +729,9 @@ TEST_F(RecordingTest, WriterRowsReadBackBitExactWithEstimates) {
     EXPECT_EQ(got.wrist.has_value(), want.wrist.has_value());
     EXPECT_EQ(*got.trueAngles, *want.trueAngles);
     ASSERT_EQ(got.estimate.has_value(), i > 0);
-    if (i > 0) EXPECT_EQ(*got.estimate, *want.estimate);
+    if (i > 0) {
+      EXPECT_EQ(*got.estimate, *want.estimate);
+    }
     EXPECT_FALSE(got.forearm.has_value());
   }
 }

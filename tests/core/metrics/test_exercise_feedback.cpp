@@ -105,7 +105,9 @@ TEST(ExerciseFeedback, TooFastIsToldForEachFastRepetition) {
   ASSERT_GE(f.repetitions(), 5u);
   EXPECT_EQ(run.count(FeedbackKind::TooFast), f.repetitions());
   for (const FeedbackEvent& e : run.events)
-    if (e.kind == FeedbackKind::TooFast) EXPECT_GT(e.value / kDeg, 250);
+    if (e.kind == FeedbackKind::TooFast) {
+      EXPECT_GT(e.value / kDeg, 250);
+    }
   // The same exercise at 3 s a repetition (125 deg/s) is not too fast.
   ExerciseFeedback slow(spec(3, 30, 120));
   feed(slow, elbowMotion(120, 3.0), 20.0);
@@ -173,7 +175,9 @@ TEST(ExerciseFeedback, TheElbowBendingDuringAShoulderExerciseIsCompensation) {
   run = feed(e, lift, 26.5);
   EXPECT_EQ(run.count(FeedbackKind::Compensation), 5u);
   for (const FeedbackEvent& ev : run.events)
-    if (ev.kind == FeedbackKind::Compensation) EXPECT_EQ(ev.angle, 0);
+    if (ev.kind == FeedbackKind::Compensation) {
+      EXPECT_EQ(ev.angle, 0);
+    }
 }
 
 // The angles a live session gives: the EKF on simulated IMUs and a Kinect with the paper's noise.

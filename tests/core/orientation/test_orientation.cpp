@@ -128,7 +128,9 @@ TEST(OrientationFilter, StaticTiltConvergesQuickly) {
     const Eigen::Vector3d acc =
         gravityInSensor(truth) + Eigen::Vector3d(accNoise(rng), accNoise(rng), accNoise(rng));
     ASSERT_TRUE(f.update(gyr, acc, dt));
-    if (k == 100) EXPECT_LT(inclinationError(f.orientation(), truth), 1.0 * kToRad);  // 1 s
+    if (k == 100) {
+      EXPECT_LT(inclinationError(f.orientation(), truth), 1.0 * kToRad);
+    }  // 1 s
   }
   EXPECT_LT(inclinationError(f.orientation(), truth), 0.2 * kToRad);
   EXPECT_TRUE(f.restDetected());

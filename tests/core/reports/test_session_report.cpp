@@ -62,9 +62,8 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
     EXPECT_TRUE(text[i].contains("2026-11-20"));
     EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(pages)));
   }
-  for (const QString& s :
-       {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm", "upper_arm_m",
-        "Frozen shoulder", "Continue the programme twice a week."})
+  for (const char* s : {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm",
+                        "upper_arm_m", "Frozen shoulder", "Continue the programme twice a week."})
     EXPECT_TRUE(all.contains(s)) << s;
   EXPECT_TRUE(all.contains(QRegularExpression("Duration\\s+\\d+\\.\\d s"))) << "duration";
 

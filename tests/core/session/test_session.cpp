@@ -104,9 +104,15 @@ class SessionTest : public ::testing::Test {
     for (const StreamStats& st : r.stats.streams) {
       EXPECT_EQ(st.received, st.published) << st.stream;
       const std::uint64_t valid = st.received - st.rejected;
-      if (st.stream == "upper") EXPECT_EQ(upper, valid);
-      if (st.stream == "forearm") EXPECT_EQ(forearm, valid);
-      if (st.stream == "kinect") EXPECT_EQ(kinect, valid);
+      if (st.stream == "upper") {
+        EXPECT_EQ(upper, valid);
+      }
+      if (st.stream == "forearm") {
+        EXPECT_EQ(forearm, valid);
+      }
+      if (st.stream == "kinect") {
+        EXPECT_EQ(kinect, valid);
+      }
     }
   }
 

@@ -96,8 +96,12 @@ TEST(SimulatedWebcam, OffByDefaultAndDoesNotChangeOtherSensorsNoise) {
     ASSERT_LT(j, without.samples.size());
     const ArmSample& r = without.samples[j++];
     ASSERT_EQ(s.t, r.t);
-    if (s.upperArm) EXPECT_EQ(s.upperArm->gyr, r.upperArm->gyr);
-    if (s.elbow) EXPECT_EQ(*s.elbow, *r.elbow);
+    if (s.upperArm) {
+      EXPECT_EQ(s.upperArm->gyr, r.upperArm->gyr);
+    }
+    if (s.elbow) {
+      EXPECT_EQ(*s.elbow, *r.elbow);
+    }
   }
   EXPECT_EQ(j, without.samples.size());
 }

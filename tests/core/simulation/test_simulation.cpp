@@ -611,13 +611,21 @@ TEST(SensorStream, EndlessStreamStartsLikeAFiniteRecording) {
     ASSERT_TRUE(got.has_value());
     EXPECT_EQ(got->t, want.t);
     ASSERT_EQ(got->upperArm.has_value(), want.upperArm.has_value());
-    if (want.upperArm) EXPECT_EQ(got->upperArm->acc, want.upperArm->acc);
+    if (want.upperArm) {
+      EXPECT_EQ(got->upperArm->acc, want.upperArm->acc);
+    }
     ASSERT_EQ(got->forearm.has_value(), want.forearm.has_value());
-    if (want.forearm) EXPECT_EQ(got->forearm->gyr, want.forearm->gyr);
+    if (want.forearm) {
+      EXPECT_EQ(got->forearm->gyr, want.forearm->gyr);
+    }
     ASSERT_EQ(got->wrist.has_value(), want.wrist.has_value());
-    if (want.wrist) EXPECT_EQ(*got->wrist, *want.wrist);
+    if (want.wrist) {
+      EXPECT_EQ(*got->wrist, *want.wrist);
+    }
     ASSERT_EQ(got->camWrist.has_value(), want.camWrist.has_value());
-    if (want.camWrist) EXPECT_EQ(*got->camWrist, *want.camWrist);
+    if (want.camWrist) {
+      EXPECT_EQ(*got->camWrist, *want.camWrist);
+    }
   }
   // And it goes on past the finite recording's end.
   EXPECT_GT(stream.nextTime(), 2.0);

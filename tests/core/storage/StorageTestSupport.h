@@ -49,8 +49,9 @@ StorageError expectError(F&& f, Kind kind, const std::string& mustSay = {}) {
     f();
   } catch (const StorageError& e) {
     EXPECT_EQ(static_cast<int>(e.kind()), static_cast<int>(kind)) << e.what();
-    if (!mustSay.empty())
+    if (!mustSay.empty()) {
       EXPECT_NE(std::string(e.what()).find(mustSay), std::string::npos) << e.what();
+    }
     return e;
   }
   ADD_FAILURE() << "no StorageError";

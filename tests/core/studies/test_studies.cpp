@@ -61,9 +61,10 @@ TEST(Fig8, DynamicErrorIsBelowStaticAndPositionsNeverHurt) {
   // Unperturbed, the error grows with frequency (linearisation, as in Fig. 5).
   EXPECT_GT(at(3.0, Perturbation::None, false), at(1.0, Perturbation::None, false));
   for (const Fig8Point& p : points)
-    if (p.positions)
+    if (p.positions) {
       EXPECT_LE(p.rmse.mean, at(p.frequencyHz, p.perturbation, false) + 0.02)
           << p.frequencyHz << " Hz, " << perturbationName(p.perturbation);
+    }
 }
 
 TEST(SensorStudy, OpticalSensorsFixTheShoulderAndEveryRowIsFilled) {

@@ -221,7 +221,9 @@ TEST(TimeSyncClock, ForwardLeapIsAJumpAndASingleBadTimestampIsAGlitch) {
     if (i == 5000) td += 1000.0;  // one corrupted timestamp
     if (i >= 12000) td += 60.0;   // the clock leaps forward by a minute
     const ClockUpdate u = clock.update(td, s.arrival);
-    if (i == 5000) EXPECT_EQ(u.status, ClockStatus::Provisional);
+    if (i == 5000) {
+      EXPECT_EQ(u.status, ClockStatus::Provisional);
+    }
     if (i >= 13000) worst = std::max(worst, std::abs(u.hostTime - (s.trueHost + d.floor)));
   }
   EXPECT_EQ(clock.counters().glitches, 1u);
@@ -405,7 +407,9 @@ void expectOrderedExactlyOnce(const std::vector<SyncEvent<std::uint64_t>>& event
   std::vector<std::vector<int>> seen(counts.size());
   for (std::size_t d = 0; d < counts.size(); ++d) seen[d].assign(counts[d], 0);
   for (std::size_t i = 0; i < events.size(); ++i) {
-    if (i > 0) ASSERT_GE(events[i].t, events[i - 1].t) << "at event " << i;
+    if (i > 0) {
+      ASSERT_GE(events[i].t, events[i - 1].t) << "at event " << i;
+    }
     const auto& e = events[i];
     ASSERT_LT(e.payload, counts[static_cast<std::size_t>(e.device)]);
     ++seen[static_cast<std::size_t>(e.device)][e.payload];

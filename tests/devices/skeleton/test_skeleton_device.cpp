@@ -84,8 +84,12 @@ void expectFrame(const DeviceSample& s, int k, bool relative, bool elbow = true,
   ASSERT_EQ(p.wrist.has_value(), wrist);
   for (int i = 0; i < 3; ++i) {
     const double o = relative ? j.shoulder[i] : 0.0;
-    if (elbow) EXPECT_NEAR((*p.elbow)[i], j.elbow[i] - o, 1e-12);
-    if (wrist) EXPECT_NEAR((*p.wrist)[i], j.wrist[i] - o, 1e-12);
+    if (elbow) {
+      EXPECT_NEAR((*p.elbow)[i], j.elbow[i] - o, 1e-12);
+    }
+    if (wrist) {
+      EXPECT_NEAR((*p.wrist)[i], j.wrist[i] - o, 1e-12);
+    }
   }
 }
 

@@ -39,7 +39,10 @@ std::vector<ArmSample> play(const VirtualArmParams& p) {
   std::vector<ArmSample> rows;
   for (const VirtualSample& s : out) {
     const StreamRole role = source.streams()[static_cast<std::size_t>(s.stream)].role;
-    if (rows.empty() || rows.back().t != s.deviceTime) rows.push_back({.t = s.deviceTime});
+    if (rows.empty() || rows.back().t != s.deviceTime) {
+      rows.emplace_back();
+      rows.back().t = s.deviceTime;
+    }
     if (role == StreamRole::UpperArmImu) rows.back().upperArm = std::get<ImuReading>(s.payload);
     if (role == StreamRole::ForearmImu) rows.back().forearm = std::get<ImuReading>(s.payload);
   }

@@ -75,7 +75,8 @@ TEST(ColourMarkers, HueRangeWrapsThroughRed) {
   ColourMarkerParams params;
   params.wrist = *parseHsvRange("170-10:120-255:70-255");
   ColourMarkerDetector detector(params);
-  for (const cv::Scalar red : {cv::Scalar(20, 10, 220), cv::Scalar(60, 10, 220)}) {  // hue ~2, ~170
+  for (const cv::Scalar& red :
+       {cv::Scalar(20, 10, 220), cv::Scalar(60, 10, 220)}) {  // hue ~2, ~170
     cv::Mat img = background();
     drawDisc(img, {150.25, 90.5}, 8, red);
     const MarkerPair p = detector.detect(img);
