@@ -211,8 +211,9 @@ BENCHMARK(BM_Reestimate)
 // 1: Shimmer3 counts (gyroscope 65.5 counts per deg/s at +-500 deg/s, low-noise accelerometer
 // 83 counts per m/s^2 around 2047 on a 12-bit converter, as devices/shimmer3 converts them);
 // 2: NGIMU float32 (deg/s and g, converted as devices/ngimu does); 3: the DIY line protocol
-// printing 4 decimals. Counters: the chunks against the CSV, and the least a coder storing the
-// counts as integers could spend on the IMU values (the noise's entropy in counts), against it.
+// printing 4 decimals. Counters: the chunks (ATC3, and ATC2 before it) against the CSV, and the
+// least a coder storing the counts as integers could spend on the IMU values (the noise's entropy
+// in counts), against it.
 void BM_RealSensorResolution(benchmark::State& state) {
   const int variant = static_cast<int>(state.range(0));
   constexpr double kGyroCounts = 65.5 * 180.0 / M_PI;  // counts per rad/s
@@ -244,17 +245,18 @@ void BM_RealSensorResolution(benchmark::State& state) {
       if (*imu) quantise(**imu);
   QTemporaryDir dir;
   const std::filesystem::path csv = dir.filePath("q.csv").toStdString();
-  double stored = 0;
+  double stored = 0, storedAtc2 = 0;
   for (auto _ : state) {
     writeRecording(csv, rec);
-    stored = 0;
+    stored = storedAtc2 = 0;
     std::size_t begin = 0;
     while (begin < rec.samples.size()) {
       std::size_t end = begin;
       while (end < rec.samples.size() && rec.samples[end].t < rec.samples[begin].t + 1.0) ++end;
-      stored += static_cast<double>(
-          ChunkCodec::encode(std::span<const ArmSample>(rec.samples.data() + begin, end - begin))
-              .size());
+      const std::span<const ArmSample> chunk(rec.samples.data() + begin, end - begin);
+      stored += static_cast<double>(ChunkCodec::encode(chunk).size());
+      storedAtc2 +=
+          static_cast<double>(ChunkCodec::encodeLegacy(chunk, ChunkCodec::kAtc2Name).size());
       begin = end;
     }
   }
@@ -271,6 +273,7 @@ void BM_RealSensorResolution(benchmark::State& state) {
                         3.0 * (std::log2(Table5::accelStd() * kAccCounts) + gauss) / 8.0;
   state.counters["CSV_MB_per_hour"] = csvBytes * 3600.0 / kSeconds / 1e6;
   state.counters["vs_csv"] = stored / csvBytes;
+  state.counters["vs_csv_atc2"] = storedAtc2 / csvBytes;
   state.counters["count_floor_imu_vs_csv"] = floorBytes / csvBytes;
 }
 BENCHMARK(BM_RealSensorResolution)
