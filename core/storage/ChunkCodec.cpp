@@ -257,43 +257,45 @@ std::size_t zstdSize(const std::string& raw) {
 // its part plus its raw low bits); predictive always can. ATC3 adds the lattice mode.
 void appendColumn2(std::string& raw, detail::BitWriter& bits, const std::vector<double>& values,
                    int version) {
+  // The predictive part, and the lattice part when the values lie on a step, are written once
+  // (their raw bytes and low bits) and the smaller one is appended as it is.
+  std::string part;
+  detail::BitWriter partBits;
+  detail::appendPredictiveColumn(part, partBits, values);
+  ColumnMode mode = kPredictive;
   std::vector<std::uint8_t> exponents;
   std::vector<std::uint64_t> words;
   const bool decimal = !values.empty() && decimalColumn(values, exponents, words);
   const std::optional<double> step =
       version >= 3 && !values.empty() ? detail::findLatticeStep(values) : std::nullopt;
-  ColumnMode mode = kPredictive;
   if (decimal || step) {
-    std::string predictive;
-    detail::BitWriter trial;
-    detail::appendPredictiveColumn(predictive, trial, values);
-    std::size_t best = zstdSize(predictive) + trial.finish().size();
+    std::size_t best = zstdSize(part) + partBits.bytes();
     if (step) {
       std::string lattice;
       detail::BitWriter latticeBits;
       detail::appendLatticeColumn(lattice, latticeBits, values, *step);
-      const std::size_t size = zstdSize(lattice) + latticeBits.finish().size();
+      const std::size_t size = zstdSize(lattice) + latticeBits.bytes();
       if (size < best) {
         best = size;
         mode = kLattice;
+        part = std::move(lattice);
+        partBits = std::move(latticeBits);
       }
     }
     if (decimal) {
       std::string text;
       appendPlanes(text, exponents);
       appendPlanes(text, words);
-      if (zstdSize(text) <= best) mode = kDecimal;
+      if (zstdSize(text) <= best) {
+        mode = kDecimal;
+        part = std::move(text);
+        partBits = {};
+      }
     }
   }
   raw.push_back(static_cast<char>(mode));
-  if (mode == kDecimal) {
-    appendPlanes(raw, exponents);
-    appendPlanes(raw, words);
-  } else if (mode == kLattice) {
-    detail::appendLatticeColumn(raw, bits, values, *step);
-  } else {
-    detail::appendPredictiveColumn(raw, bits, values);
-  }
+  raw += part;
+  bits.append(partBits);
 }
 
 // A column of a chunk of the given version (1: ATC1, without bits; 2: ATC2; 3: ATC3).

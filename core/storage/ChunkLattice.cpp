@@ -31,9 +31,10 @@ struct Fit {
   std::size_t off = 0;    // values more than kNear doubles away (or not finite)
 };
 
-Fit fit(const std::vector<double>& values, double q) {
+Fit fit(const std::vector<double>& values, double q, std::size_t count) {
   Fit f;
-  for (const double v : values) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const double v = values[i];
     const auto n = countOf(v, q);
     const std::uint64_t z = n ? zigzagWord(distance(v, *n, q)) : ~0ull;
     f.exact += z == 0 ? 1 : 0;
@@ -42,9 +43,43 @@ Fit fit(const std::vector<double>& values, double q) {
   return f;
 }
 
-}  // namespace
+// The neighbouring double of q (up to two each way) that puts the most values on n * q exactly:
+// the plugin's operations round differently from n * q. f becomes that step's fit.
+double polish(const std::vector<double>& values, double q, Fit& f) {
+  const double centre = q;
+  f = fit(values, q, values.size());
+  for (int step = -2; step <= 2; ++step) {
+    double c = centre;
+    for (int s = 0; s < std::abs(step); ++s) c = std::nextafter(c, step < 0 ? 0.0 : INFINITY);
+    if (step == 0 || !std::isnormal(c)) continue;
+    const Fit g = fit(values, c, values.size());
+    if (g.exact > f.exact) {
+      f = g;
+      q = c;
+    }
+  }
+  return q;
+}
 
-std::optional<double> findLatticeStep(const std::vector<double>& values) {
+// q refined on the largest value that lies on it: v / round(v / q) has v's relative precision.
+double refine(const std::vector<double>& values, double q) {
+  double best = 0.0, m = 0.0;
+  for (const double v : values) {
+    const double a = std::fabs(v), r = a / q;
+    if (!(r <= kMaxLatticeCount) || a <= best) continue;
+    const double n = std::nearbyint(r);
+    if (n >= 1.0 && std::fabs(r - n) < 0.05) {
+      best = a;
+      m = n;
+    }
+  }
+  return best > 0.0 ? best / m : q;
+}
+
+// The step of a short column, from its smallest gap between distinct values (or a fraction of
+// it, up to 1/kFractions, when no two values are neighbours), refined on ever larger values.
+std::optional<double> searchStep(const std::vector<double>& values) {
+  constexpr int kFractions = 16;
   std::vector<double> magnitudes;
   magnitudes.reserve(values.size());
   for (const double v : values)
@@ -61,14 +96,12 @@ std::optional<double> findLatticeStep(const std::vector<double>& values) {
     gap = std::min(gap, distinct[i] - distinct[i - 1]);
   std::sort(magnitudes.begin(), magnitudes.end());
 
-  // The smallest gap may be a few steps when no two values are neighbours: try its fractions.
   std::optional<double> best;
   Fit bestFit;
-  for (int k = 1; k <= 4; ++k) {
+  for (int k = 1; k <= kFractions; ++k) {
     double q = gap / k;
     if (!std::isnormal(q)) break;
-    // Refine on ever larger values that lie on the step: v / m has the relative precision of v,
-    // so the largest one fixes q to about a double's precision.
+    // Refine on ever larger values that lie on the step, so that each step's count is sure.
     for (const double v : magnitudes) {
       const double r = v / q;
       if (r > kMaxLatticeCount) break;
@@ -76,20 +109,8 @@ std::optional<double> findLatticeStep(const std::vector<double>& values) {
       if (m >= 1.0 && std::fabs(r - m) < 0.05) q = v / m;
     }
     if (!std::isnormal(q)) continue;
-    // The plugin's operations round differently from n * q: take the neighbouring double of q
-    // that puts the most values on it exactly.
-    double centre = q;
-    Fit f = fit(values, q);
-    for (int step = -2; step <= 2; ++step) {
-      double c = centre;
-      for (int s = 0; s < std::abs(step); ++s) c = std::nextafter(c, step < 0 ? 0.0 : INFINITY);
-      if (step == 0 || !std::isnormal(c)) continue;
-      const Fit g = fit(values, c);
-      if (g.exact > f.exact) {
-        f = g;
-        q = c;
-      }
-    }
+    Fit f;
+    q = polish(values, q, f);
     if (!best || f.off < bestFit.off || (f.off == bestFit.off && f.exact > bestFit.exact)) {
       best = q;
       bestFit = f;
@@ -99,6 +120,28 @@ std::optional<double> findLatticeStep(const std::vector<double>& values) {
   // A few values off the lattice (a spike, NaN) are stored whole; most must lie on it.
   if (!best || bestFit.off * 8 > values.size()) return std::nullopt;
   return best;
+}
+
+}  // namespace
+
+std::optional<double> findLatticeStep(const std::vector<double>& values) {
+  // The step is looked for among the first values (cheap to sort, and most columns, of
+  // full-precision noise, lie on no lattice), then refined on the whole column's largest value
+  // on it and judged on every value.
+  constexpr std::size_t kHead = 64;
+  if (values.size() <= 2 * kHead) return searchStep(values);
+  const auto head = searchStep(std::vector<double>(values.begin(), values.begin() + kHead));
+  if (!head) return std::nullopt;
+  // The rest may need half or a quarter of the head's step (float32 readings that cross a power
+  // of two: below it their spacing halves).
+  for (const double fraction : {1.0, 0.5, 0.25}) {
+    const double q = refine(values, *head * fraction);
+    if (!std::isnormal(q)) continue;
+    Fit f;
+    const double polished = polish(values, q, f);
+    if (f.off * 8 <= values.size()) return polished;
+  }
+  return std::nullopt;
 }
 
 void appendLatticeColumn(std::string& raw, BitWriter& bits, const std::vector<double>& values,

@@ -95,6 +95,14 @@ void BitWriter::put(std::uint64_t value, int bits) {
   }
 }
 
+void BitWriter::append(const BitWriter& other) {
+  if (m_fill == 0)
+    m_bytes += other.m_bytes;  // byte-aligned: the bytes as they are
+  else
+    for (const char c : other.m_bytes) put(static_cast<unsigned char>(c), 8);
+  put(other.m_acc, other.m_fill);
+}
+
 std::string BitWriter::finish() {
   std::string out = m_bytes;
   if (m_fill > 0) out.push_back(static_cast<char>(m_acc & 0xff));

@@ -18,6 +18,10 @@ class BitWriter {
   void put(std::uint64_t value, int bits);
   /// The bytes written so far (the last one padded with zero bits).
   std::string finish();
+  /// How many bytes finish() gives.
+  std::size_t bytes() const { return m_bytes.size() + (m_fill > 0 ? 1 : 0); }
+  /// Appends the bits another writer holds, as if they had been put here.
+  void append(const BitWriter& other);
 
  private:
   std::string m_bytes;
