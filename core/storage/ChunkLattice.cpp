@@ -177,7 +177,8 @@ std::vector<double> readLatticeColumn(const std::string& raw, std::size_t& pos, 
   pos += 8;
   const double q = std::bit_cast<double>(qBits);
   if (!std::isnormal(q) || q < 0.0)
-    throw std::runtime_error("lattice step " + std::to_string(q) + " is not a positive number");
+    throw std::runtime_error("lattice step " + std::to_string(q) + " (bits " +
+                             std::to_string(qBits) + ") is not a positive normal double");
   const std::vector<std::uint64_t> counts = readPredictiveIntegers(raw, pos, bits, count);
   if (raw.size() - pos < count) throw std::runtime_error("chunk content ends early");
   const char* marks = raw.data() + pos;
