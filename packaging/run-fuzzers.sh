@@ -7,7 +7,7 @@ set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_FUZZ_BUILD_DIR:-$root/build-fuzz}"
 seconds="${1:-10}"
-targets=(fuzz_shimmer3 fuzz_lineimu fuzz_ngimu fuzz_skeleton fuzz_webcam_frame fuzz_recording)
+targets=(fuzz_shimmer3 fuzz_lineimu fuzz_ngimu fuzz_skeleton fuzz_webcam_frame fuzz_recording fuzz_chunk)
 
 cxx="$(command -v clang++ || command -v clang++-14 || true)"
 cc="$(command -v clang || command -v clang-14 || true)"

@@ -1,5 +1,6 @@
 #include "core/storage/ChunkCodec.h"
 
+#include "core/storage/ChunkLattice.h"
 #include "core/storage/ChunkPredictive.h"
 
 #include <zstd.h>
@@ -11,6 +12,7 @@
 #include <climits>
 #include <cmath>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
 namespace armtrack::storage {
@@ -19,6 +21,7 @@ namespace {
 
 constexpr std::uint32_t kMagic = 0x31435441;   // "ATC1" little-endian
 constexpr std::uint32_t kMagic2 = 0x32435441;  // "ATC2" little-endian
+constexpr std::uint32_t kMagic3 = 0x33435441;  // "ATC3" little-endian
 constexpr std::uint32_t kMaxRows = 1u << 24;   // a chunk holds about a second; this is far beyond
 constexpr int kGroups = 8;
 
@@ -160,7 +163,9 @@ class Reader {
 //    column is such a short decimal (a 16-bit sensor, a file written with 7 digits), where it
 //    takes a few bytes a value instead of the ~6.5 of a double's noisy mantissa. Exact because
 //    the shortest decimal reads back to the same double.
-enum ColumnMode : std::uint8_t { kBinary = 0, kDecimal = 1, kPredictive = 2 };
+//  - kPredictive (ATC2 on): see ChunkPredictive.h. Always exact.
+//  - kLattice (ATC3 on): counts on a step, see ChunkLattice.h. Always exact.
+enum ColumnMode : std::uint8_t { kBinary = 0, kDecimal = 1, kPredictive = 2, kLattice = 3 };
 constexpr int kNoExponent = 1000;
 constexpr std::int64_t kLongDigits = 10'000'000'000'000;  // 14 significant digits
 
@@ -248,30 +253,59 @@ std::size_t zstdSize(const std::string& raw) {
   return ZSTD_isError(size) ? raw.size() : size;
 }
 
-// ATC2: decimal when every value is a short decimal and that is smaller, else predictive.
-void appendColumn2(std::string& raw, detail::BitWriter& bits, const std::vector<double>& values) {
+// ATC2 and ATC3: whichever of the modes the values allow takes the fewest bytes (the zstd size of
+// its part plus its raw low bits); predictive always can. ATC3 adds the lattice mode.
+void appendColumn2(std::string& raw, detail::BitWriter& bits, const std::vector<double>& values,
+                   int version) {
+  // The predictive part, and the lattice part when the values lie on a step, are written once
+  // (their raw bytes and low bits) and the smaller one is appended as it is.
+  std::string part;
+  detail::BitWriter partBits;
+  detail::appendPredictiveColumn(part, partBits, values);
+  ColumnMode mode = kPredictive;
   std::vector<std::uint8_t> exponents;
   std::vector<std::uint64_t> words;
-  if (!values.empty() && decimalColumn(values, exponents, words)) {
-    std::string decimal, predictive;
-    appendPlanes(decimal, exponents);
-    appendPlanes(decimal, words);
-    detail::BitWriter trial;
-    detail::appendPredictiveColumn(predictive, trial, values);
-    if (zstdSize(decimal) <= zstdSize(predictive) + trial.finish().size()) {
-      raw.push_back(static_cast<char>(kDecimal));
-      raw += decimal;
-      return;
+  const bool decimal = !values.empty() && decimalColumn(values, exponents, words);
+  const std::optional<double> step =
+      version >= 3 && !values.empty() ? detail::findLatticeStep(values) : std::nullopt;
+  if (decimal || step) {
+    std::size_t best = zstdSize(part) + partBits.bytes();
+    if (step) {
+      std::string lattice;
+      detail::BitWriter latticeBits;
+      detail::appendLatticeColumn(lattice, latticeBits, values, *step);
+      const std::size_t size = zstdSize(lattice) + latticeBits.bytes();
+      if (size < best) {
+        best = size;
+        mode = kLattice;
+        part = std::move(lattice);
+        partBits = std::move(latticeBits);
+      }
+    }
+    if (decimal) {
+      std::string text;
+      appendPlanes(text, exponents);
+      appendPlanes(text, words);
+      if (zstdSize(text) <= best) {
+        mode = kDecimal;
+        part = std::move(text);
+        partBits = {};
+      }
     }
   }
-  raw.push_back(static_cast<char>(kPredictive));
-  detail::appendPredictiveColumn(raw, bits, values);
+  raw.push_back(static_cast<char>(mode));
+  raw += part;
+  bits.append(partBits);
 }
 
-std::vector<double> readColumn(Reader& in, std::size_t count, detail::BitReader* bits) {
+// A column of a chunk of the given version (1: ATC1, without bits; 2: ATC2; 3: ATC3).
+std::vector<double> readColumn(Reader& in, std::size_t count, detail::BitReader* bits,
+                               int version) {
   const std::uint8_t mode = in.u8();
   if (mode == kPredictive && bits)
     return detail::readPredictiveColumn(in.data(), in.position(), *bits, count);
+  if (mode == kLattice && bits && version >= 3)
+    return detail::readLatticeColumn(in.data(), in.position(), *bits, count);
   std::vector<double> values(count);
   if (mode == kBinary && !bits) {
     std::uint64_t prev = 0;
@@ -367,7 +401,7 @@ std::string decompress(const char* data, std::size_t bytes, std::uint64_t bound,
 }
 
 std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
-                             std::uint64_t expectedRows, detail::BitReader* bits) {
+                             std::uint64_t expectedRows, detail::BitReader* bits, int version) {
   Reader in(raw);
   if (in.u32() != magic) throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
   const std::uint32_t n = in.u32();
@@ -375,7 +409,7 @@ std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
     throw std::runtime_error("holds " + std::to_string(n) + " rows, the index says " +
                              std::to_string(expectedRows));
   const auto presence = in.planes<std::uint16_t>(n);
-  const auto times = readColumn(in, n, bits);
+  const auto times = readColumn(in, n, bits, version);
   std::vector<ArmSample> samples(n);
   for (std::size_t i = 0; i < n; ++i) {
     if (presence[i] >> kGroups) throw std::runtime_error("unknown sensor group in a row");
@@ -385,7 +419,7 @@ std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i) count += (presence[i] >> g) & 1u;
     std::vector<std::vector<double>> cols;
-    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(readColumn(in, count, bits));
+    for (int c = 0; c < kGroupSize[g]; ++c) cols.push_back(readColumn(in, count, bits, version));
     std::size_t k = 0;
     double v[6];
     for (std::size_t i = 0; i < n; ++i) {
@@ -422,41 +456,29 @@ constexpr std::size_t kHeader2 = 16;  // magic, frame length, checksum of the re
 
 }  // namespace
 
-bool ChunkCodec::knows(std::string_view codec) {
-  return codec == kName || codec == kLegacyName;
-}
+namespace {
 
-std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
+// ATC2 and ATC3 chunks: header (magic, frame length, checksum), zstd frame, raw low bits.
+std::string encodeWithBits(std::span<const ArmSample> samples, std::uint32_t magic, int version,
+                           int level) {
   detail::BitWriter bits;
-  const std::string raw = content(samples, kMagic2, [&](std::string& out, const auto& values) {
-    appendColumn2(out, bits, values);
+  const std::string raw = content(samples, magic, [&](std::string& out, const auto& values) {
+    appendColumn2(out, bits, values, version);
   });
   const std::string frame = compress(raw, level);
-  const std::string low = bits.finish();
-  const std::string body = frame + low;
+  const std::string body = frame + bits.finish();
   std::string blob;
   blob.reserve(kHeader2 + body.size());
-  appendPlanes(blob, std::vector<std::uint32_t>{kMagic2});
+  appendPlanes(blob, std::vector<std::uint32_t>{magic});
   appendPlanes(blob, std::vector<std::uint32_t>{static_cast<std::uint32_t>(frame.size())});
   const std::uint64_t sum = fnv1a(body.data(), body.size());
   for (int b = 0; b < 8; ++b) blob.push_back(static_cast<char>((sum >> (8 * b)) & 0xff));
   return blob + body;
 }
 
-std::string ChunkCodec::encodeLegacy(std::span<const ArmSample> samples, int level) {
-  return compress(content(samples, kMagic, appendColumn), level);
-}
-
-std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_t expectedRows,
-                                          std::string_view codec) {
-  // Header + presence + time + at most every value of every row (9 bytes each at most, plus a
-  // few per column): a bound that a forged size field cannot push past.
-  const std::uint64_t bound = 8 + 34 * 3 + expectedRows * (2 + 9 * 33);
-  if (codec == kLegacyName)
-    return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic, expectedRows,
-                 nullptr);
-  if (codec != kName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
-  if (frame.size() < kHeader2 || le32(frame.data()) != kMagic2)
+std::vector<ArmSample> decodeWithBits(const std::string& frame, std::uint64_t expectedRows,
+                                      std::uint32_t magic, int version, std::uint64_t bound) {
+  if (frame.size() < kHeader2 || le32(frame.data()) != magic)
     throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
   const std::uint32_t frameBytes = le32(frame.data() + 4);
   if (frameBytes > frame.size() - kHeader2)
@@ -468,7 +490,39 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
   const std::string raw = decompress(frame.data() + kHeader2, frameBytes, bound, expectedRows);
   detail::BitReader bits(frame.data() + kHeader2 + frameBytes,
                          frame.size() - kHeader2 - frameBytes);
-  return parse(raw, kMagic2, expectedRows, &bits);
+  return parse(raw, magic, expectedRows, &bits, version);
+}
+
+}  // namespace
+
+bool ChunkCodec::knows(std::string_view codec) {
+  return codec == kName || codec == kAtc2Name || codec == kLegacyName;
+}
+
+std::string ChunkCodec::encode(std::span<const ArmSample> samples, int level) {
+  return encodeWithBits(samples, kMagic3, 3, level);
+}
+
+std::string ChunkCodec::encodeLegacy(std::span<const ArmSample> samples, std::string_view codec,
+                                     int level) {
+  if (codec == kAtc2Name) return encodeWithBits(samples, kMagic2, 2, level);
+  if (codec != kLegacyName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
+  return compress(content(samples, kMagic, appendColumn), level);
+}
+
+std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_t expectedRows,
+                                          std::string_view codec) {
+  // Header + presence + time + at most every value of every row (9 bytes each at most, plus a
+  // few per column): a bound that a forged size field cannot push past. A lattice column may
+  // take 18 bytes a value (count and distance, each stored whole) and 11 of its own.
+  const std::uint64_t bound = 8 + 34 * 3 + expectedRows * (2 + 9 * 33);
+  const std::uint64_t bound3 = 8 + 34 * 11 + expectedRows * (2 + 18 * 34);
+  if (codec == kLegacyName)
+    return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic, expectedRows,
+                 nullptr, 1);
+  if (codec == kAtc2Name) return decodeWithBits(frame, expectedRows, kMagic2, 2, bound);
+  if (codec != kName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
+  return decodeWithBits(frame, expectedRows, kMagic3, 3, bound3);
 }
 
 }  // namespace armtrack::storage

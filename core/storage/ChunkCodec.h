@@ -14,14 +14,17 @@ namespace armtrack::storage {
 /// Encodes and decodes one recording chunk (docs/storage.md, "Recording chunks"). Every double is
 /// kept bit for bit: the decoded samples equal the encoded ones exactly. The layout is columnar
 /// (time, then each sensor value across the rows that have it); a column of short decimals is
-/// kept as decimal exponents and significand steps, any other (ATC2) as the residuals of a
-/// per-column predictor on the doubles' ordered bit patterns, split into a zstd-compressed high
-/// byte and raw low bits. ATC1 chunks (64-bit patterns XORed with the previous one, as byte
-/// planes) are still read. Stateless; any thread.
+/// kept as decimal exponents and significand steps, a column of counts times a step (a real
+/// sensor's converted readings, ATC3) as predicted counts plus each value's distance in doubles
+/// from count x step, any other (ATC2 on) as the residuals of a per-column predictor on the
+/// doubles' ordered bit patterns, split into a zstd-compressed high byte and raw low bits. ATC2
+/// and ATC1 chunks (64-bit patterns XORed with the previous one, as byte planes) are still read.
+/// Stateless; any thread.
 class ChunkCodec {
  public:
-  /// The codec names of the recording_chunks.codec column: kName is written, both are read.
-  static constexpr const char* kName = "atc2-zstd";
+  /// The codec names of the recording_chunks.codec column: kName is written, all three are read.
+  static constexpr const char* kName = "atc3-zstd";
+  static constexpr const char* kAtc2Name = "atc2-zstd";
   static constexpr const char* kLegacyName = "atc1-zstd";
   /// zstd level of the structured part (the low noise bits are stored raw beside it).
   static constexpr int kDefaultLevel = 3;
@@ -32,9 +35,10 @@ class ChunkCodec {
   /// The chunk for samples in the current format (kName): times must not decrease (not checked
   /// here).
   static std::string encode(std::span<const ArmSample> samples, int level = kDefaultLevel);
-  /// The format written before (kLegacyName), kept so tests can make the chunks old databases
-  /// hold.
-  static std::string encodeLegacy(std::span<const ArmSample> samples, int level = kDefaultLevel);
+  /// A format written before (kLegacyName or kAtc2Name), kept so tests can make the chunks old
+  /// databases hold. Throws std::runtime_error for another codec name.
+  static std::string encodeLegacy(std::span<const ArmSample> samples,
+                                  std::string_view codec = kLegacyName, int level = kDefaultLevel);
 
   /// The samples of a chunk of the given codec. Throws std::runtime_error naming what is wrong
   /// (unknown codec, not a zstd frame, truncated, wrong size, bad header, row count other than

@@ -12,7 +12,6 @@ namespace {
 
 constexpr std::uint64_t kTop = 1ull << 63;
 constexpr int kPredictors = 6;  // 1..5: polynomial extrapolation of that order; 6: mean of 4
-constexpr unsigned kEscape = 255;
 
 // A double as an integer that orders as the double does (for non-NaN), so that the difference
 // of two close values counts the doubles between them. A bijection on all 2^64 patterns.
@@ -96,6 +95,14 @@ void BitWriter::put(std::uint64_t value, int bits) {
   }
 }
 
+void BitWriter::append(const BitWriter& other) {
+  if (m_fill == 0)
+    m_bytes += other.m_bytes;  // byte-aligned: the bytes as they are
+  else
+    for (const char c : other.m_bytes) put(static_cast<unsigned char>(c), 8);
+  put(other.m_acc, other.m_fill);
+}
+
 std::string BitWriter::finish() {
   std::string out = m_bytes;
   if (m_fill > 0) out.push_back(static_cast<char>(m_acc & 0xff));
@@ -124,11 +131,9 @@ void BitReader::expectEnd() const {
   if ((m_bit + 7) / 8 != m_size) throw std::runtime_error("low-bit stream longer than its values");
 }
 
-void appendPredictiveColumn(std::string& raw, BitWriter& bits, const std::vector<double>& values) {
-  const std::size_t n = values.size();
-  std::vector<std::uint64_t> s(n);
-  for (std::size_t i = 0; i < n; ++i) s[i] = ordered(values[i]) ^ kTop;
-
+void appendPredictiveIntegers(std::string& raw, BitWriter& bits,
+                              const std::vector<std::uint64_t>& s) {
+  const std::size_t n = s.size();
   int bestPredictor = 1, bestK = 0;
   double bestCost = INFINITY;
   std::vector<std::uint64_t> z(n), bestZ, sorted;
@@ -162,12 +167,11 @@ void appendPredictiveColumn(std::string& raw, BitWriter& bits, const std::vector
       bits.put(bestZ[i] & mask, bestK);
     }
   }
-  for (const std::uint64_t e : escaped)
-    for (int b = 0; b < 8; ++b) raw.push_back(static_cast<char>((e >> (8 * b)) & 0xff));
+  appendEscaped(raw, escaped);
 }
 
-std::vector<double> readPredictiveColumn(const std::string& raw, std::size_t& pos, BitReader& bits,
-                                         std::size_t count) {
+std::vector<std::uint64_t> readPredictiveIntegers(const std::string& raw, std::size_t& pos,
+                                                  BitReader& bits, std::size_t count) {
   if (raw.size() - pos < 2 + count) throw std::runtime_error("chunk content ends early");
   const int predictor = static_cast<unsigned char>(raw[pos]);
   const int k = static_cast<unsigned char>(raw[pos + 1]);
@@ -176,30 +180,67 @@ std::vector<double> readPredictiveColumn(const std::string& raw, std::size_t& po
   if (k > 63) throw std::runtime_error("low-bit count " + std::to_string(k) + " out of range");
   const char* high = raw.data() + pos + 2;
   pos += 2 + count;
-  std::size_t escapes = 0;
-  for (std::size_t i = 0; i < count; ++i)
-    escapes += static_cast<unsigned char>(high[i]) == kEscape ? 1 : 0;
-  if ((raw.size() - pos) / 8 < escapes) throw std::runtime_error("chunk content ends early");
-  const char* escaped = raw.data() + pos;
-  pos += escapes * 8;
+  const EscapedWords escaped = readEscaped(raw, pos, high, count);
 
   std::vector<std::uint64_t> s(count);
-  std::vector<double> values(count);
   std::size_t e = 0;
   for (std::size_t i = 0; i < count; ++i) {
     const unsigned h = static_cast<unsigned char>(high[i]);
-    std::uint64_t z = 0;
-    if (h == kEscape) {
-      for (int b = 0; b < 8; ++b)
-        z |= static_cast<std::uint64_t>(static_cast<unsigned char>(escaped[8 * e + b])) << (8 * b);
-      ++e;
-    } else {
-      z = (static_cast<std::uint64_t>(h) << k) | bits.get(k);
-    }
+    const std::uint64_t z =
+        h == kEscape ? escaped.word(e++) : (static_cast<std::uint64_t>(h) << k) | bits.get(k);
     s[i] = predict(s.data(), i, predictor) + unzigzag(z);
-    values[i] = unordered(s[i] ^ kTop);
   }
+  return s;
+}
+
+void appendPredictiveColumn(std::string& raw, BitWriter& bits, const std::vector<double>& values) {
+  std::vector<std::uint64_t> s(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i) s[i] = ordered(values[i]) ^ kTop;
+  appendPredictiveIntegers(raw, bits, s);
+}
+
+std::vector<double> readPredictiveColumn(const std::string& raw, std::size_t& pos, BitReader& bits,
+                                         std::size_t count) {
+  const std::vector<std::uint64_t> s = readPredictiveIntegers(raw, pos, bits, count);
+  std::vector<double> values(count);
+  for (std::size_t i = 0; i < count; ++i) values[i] = unordered(s[i] ^ kTop);
   return values;
+}
+
+void appendEscaped(std::string& raw, const std::vector<std::uint64_t>& words) {
+  for (const std::uint64_t e : words)
+    for (int b = 0; b < 8; ++b) raw.push_back(static_cast<char>((e >> (8 * b)) & 0xff));
+}
+
+EscapedWords readEscaped(const std::string& raw, std::size_t& pos, const char* marks,
+                         std::size_t count) {
+  std::size_t escapes = 0;
+  for (std::size_t i = 0; i < count; ++i)
+    escapes += static_cast<unsigned char>(marks[i]) == kEscape ? 1 : 0;
+  if ((raw.size() - pos) / 8 < escapes) throw std::runtime_error("chunk content ends early");
+  EscapedWords words{raw.data() + pos, escapes};
+  pos += escapes * 8;
+  return words;
+}
+
+std::uint64_t EscapedWords::word(std::size_t i) const {
+  std::uint64_t z = 0;
+  for (int b = 0; b < 8; ++b)
+    z |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[8 * i + b])) << (8 * b);
+  return z;
+}
+
+std::uint64_t orderedBits(double v) {
+  return ordered(v);
+}
+double fromOrderedBits(std::uint64_t u) {
+  return unordered(u);
+}
+std::uint64_t zigzagWord(std::uint64_t r) {
+  return zigzag(r);
+}
+std::uint64_t unzigzagWord(std::uint64_t z) {
+  return unzigzag(z);
 }
 
 }  // namespace armtrack::storage::detail

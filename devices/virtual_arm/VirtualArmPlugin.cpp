@@ -32,6 +32,8 @@ QString VirtualArmPlugin::optionsHelp() const {
       "kinect-rate=30                Hz\n"
       "webcam-rate=30                Hz\n"
       "noise=on                      the paper's Table 5 noise (off: noise-free)\n"
+      "resolution=full               IMU converter: full (doubles), shimmer3 (65.5 counts per\n"
+      "                              deg/s, 83 per m/s^2) or GYRO:ACC counts per deg/s, m/s^2\n"
       "truth=on                      a stream of the true joint angles beside the IMUs\n"
       "duration=0                    s of simulation, 0 = endless\n"
       "tick=0.002                    s between deliveries (the link's batching)\n"
@@ -81,6 +83,7 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.faults.driftPpm = o.number(QStringLiteral("drift"), 0.0, -1000.0, 1000.0);
   p.swapImus = o.flag(QStringLiteral("swap-imus"), false);
   const QString upsideDown = o.text(QStringLiteral("upside-down"));
+  const QString resolution = o.text(QStringLiteral("resolution"), QStringLiteral("full"));
   const QString battery = o.text(QStringLiteral("battery"), QStringLiteral("80"));
   p.batteryDrainPerMinute = o.number(QStringLiteral("battery-drain"), 1.0, 0.0, 100.0);
   const QString exercise = o.text(QStringLiteral("exercise"), QStringLiteral("elbow_flexion"));
@@ -155,6 +158,7 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
     p.faults.spikes = parseSpikes(spike.toStdString());
     p.faults.saturations = parseStreamWindows(saturate.toStdString(), "saturation");
     p.faults.zeros = parseStreamWindows(zeros.toStdString(), "zeros window");
+    p.resolution = parseResolution(resolution.toStdString());
   } catch (const std::invalid_argument& e) {
     problems << QString::fromStdString(e.what());
   }

@@ -1,5 +1,6 @@
 #include "devices/virtual_arm/VirtualArmSource.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -49,6 +50,49 @@ std::string seconds(double s) {
 }
 
 }  // namespace
+
+ImuResolution ImuResolution::shimmer3() {
+  return {65.5, 83.0, 32767.0, 2047.0};
+}
+
+void ImuResolution::apply(ImuReading& reading) const {
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  auto count = [](double v, double max) { return std::clamp(std::round(v), -max - 1.0, max); };
+  for (int k = 0; k < 3; ++k) {
+    double& g = reading.gyr[k];
+    double& a = reading.acc[k];
+    if (gyroCountsPerDegS > 0.0 && std::isfinite(g))
+      g = count(g / kDeg * gyroCountsPerDegS, gyroMaxCount) / gyroCountsPerDegS * kDeg;
+    if (accCountsPerMS2 > 0.0 && std::isfinite(a))
+      a = count(a * accCountsPerMS2, accMaxCount) / accCountsPerMS2;
+  }
+}
+
+ImuResolution parseResolution(const std::string& text) {
+  if (text.empty() || text == "full") return {};
+  if (text == "shimmer3") return ImuResolution::shimmer3();
+  const auto colon = text.find(':');
+  const std::string what = "resolution=" + text;
+  if (colon == std::string::npos)
+    throw std::invalid_argument(
+        what + ": use full, shimmer3 or GYRO:ACC (counts per deg/s and per m/s^2)");
+  auto perUnit = [&](const std::string& part) {
+    try {
+      std::size_t used = 0;
+      const double v = std::stod(part, &used);
+      if (used == part.size()) return v;
+    } catch (const std::exception&) {
+    }
+    throw std::invalid_argument(what + ": '" + part + "' is not a number");
+  };
+  ImuResolution r;
+  r.gyroCountsPerDegS = perUnit(text.substr(0, colon));
+  r.accCountsPerMS2 = perUnit(text.substr(colon + 1));
+  if (!(r.gyroCountsPerDegS > 0.0 && r.accCountsPerMS2 > 0.0) || r.gyroCountsPerDegS > 1e6 ||
+      r.accCountsPerMS2 <= 0.0 || r.gyroCountsPerDegS > 1e6 || r.accCountsPerMS2 > 1e6)
+    throw std::invalid_argument(what + ": counts per unit must be above 0 and at most 1e6");
+  return r;
+}
 
 bool Faults::any() const {
   return !dropouts.empty() || !spikes.empty() || !saturations.empty() || !zeros.empty() ||
@@ -228,6 +272,7 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
       return;
     }
     injectValues(i, t, payload, events);
+    if (auto* imu = std::get_if<ImuReading>(&payload)) m_p.resolution.apply(*imu);
     if (auto* imu = std::get_if<ImuReading>(&payload); imu && m_p.faults.corruptProbability > 0.0) {
       if (std::uniform_real_distribution<double>(0.0, 1.0)(m_rng) < m_p.faults.corruptProbability) {
         imu->acc.x() = std::numeric_limits<double>::quiet_NaN();

@@ -78,6 +78,28 @@ std::vector<Spike> parseSpikes(const std::string& text);
 /// "25:-0.5|40:2" -> clock jumps.
 std::vector<ClockJump> parseJumps(const std::string& text);
 
+/// An IMU's analogue-to-digital converter: each reading becomes an integer count and is converted
+/// back as a real sensor's plugin does (devices/shimmer3: count / sensitivity, the gyroscope in
+/// deg/s then to rad/s), so the values lie on the lattice a real device gives. Zero counts per
+/// unit: full precision (the simulator's doubles as they are).
+struct ImuResolution {
+  double gyroCountsPerDegS = 0.0;
+  double accCountsPerMS2 = 0.0;
+  double gyroMaxCount = 32767.0;  ///< counts at full scale (16 bits)
+  double accMaxCount = 32767.0;
+
+  bool quantises() const { return gyroCountsPerDegS > 0.0 || accCountsPerMS2 > 0.0; }
+  /// A Shimmer3's: gyroscope 65.5 counts per deg/s (+-500 deg/s, 16 bits), low-noise
+  /// accelerometer 83 counts per m/s^2 (12 bits around 2047).
+  static ImuResolution shimmer3();
+  /// Puts the reading on the lattice (non-finite values stay as they are).
+  void apply(ImuReading& reading) const;
+};
+
+/// "full", "shimmer3" or "GYRO:ACC" (counts per deg/s and per m/s^2, 16-bit converters); throws
+/// std::invalid_argument naming the bad text.
+ImuResolution parseResolution(const std::string& text);
+
 struct VirtualArmParams {
   SimulationParams sim;  ///< sensors, rates, noise; duration may be +infinity
   std::string trajectory = "multi-joint";
@@ -87,6 +109,8 @@ struct VirtualArmParams {
   /// (the home window's sensor check must find it).
   bool swapImus = false;
   Faults faults;
+  /// The IMUs' converter (applied after injected faults, before corrupted samples' NaN).
+  ImuResolution resolution;
   /// The simulated battery: its level at the start (0-100 %; empty = not reported) and how
   /// fast it drains (% per minute of session).
   std::optional<double> batteryPercent = 80.0;

@@ -15,11 +15,14 @@
 #include <QTemporaryDir>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <numbers>
 #include <sstream>
 
 #include "app/cli/Cli.h"
@@ -173,6 +176,53 @@ TEST_P(RecordDb, RecordsASessionInChunksOfUnderASecond) {
   int estimated = 0;
   for (const armtrack::ArmSample& r : rec.samples) estimated += r.estimate.has_value();
   EXPECT_GT(estimated, 1000);
+}
+
+// The virtual arm's resolution=shimmer3 puts its readings on a Shimmer3's lattice, which the
+// records store as counts (the chunk codec's lattice mode): every IMU value read back is a whole
+// count times the converter's step, and the chunks take far less than the same recording's at
+// full precision (the live estimates, full-precision doubles, are in both).
+TEST_P(RecordDb, ARecordingAtAShimmer3sResolutionIsStoredAsCounts) {
+  auto record = [&](const char* options) {
+    QStringList args = recordArgs("3");
+    args[2] = QString("virtual-arm:truth=off,%1").arg(options);
+    QProcess p;
+    p.start(ARMTRACK_CLI, args);
+    EXPECT_TRUE(p.waitForFinished(60000));
+    const std::string out = p.readAllStandardOutput().toStdString();
+    EXPECT_EQ(p.exitCode(), 0) << out << p.readAllStandardError().toStdString();
+    return out.substr(8, out.find('\n') - 8);
+  };
+  const std::string full = record("resolution=full"), shimmer = record("resolution=shimmer3");
+  auto bytesPerRow = [&](const std::string& id) {
+    const auto rows = armtrack::test::rawQuery(
+        QString::fromStdString(m_db),
+        QString("SELECT sum(length(data)), sum(row_count) FROM recording_chunks WHERE "
+                "session_id = %1")
+            .arg(std::stoll(id)));
+    return rows.at(0)[0].toDouble() / rows.at(0)[1].toDouble();
+  };
+  const double fullBytes = bytesPerRow(full), shimmerBytes = bytesPerRow(shimmer);
+  std::printf("[ figures  ] record --db, bytes a row: full precision %.1f, shimmer3 %.1f\n",
+              fullBytes, shimmerBytes);
+  EXPECT_LT(shimmerBytes, 0.7 * fullBytes);
+
+  const std::string csv = m_dir.filePath("shimmer.csv").toStdString();
+  const Result exp = run({"export", shimmer, "--format", "recording", "--out", csv});
+  ASSERT_EQ(exp.code, 0) << exp.err;
+  const armtrack::Recording rec = armtrack::readRecording(csv);
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  std::size_t values = 0;
+  for (const armtrack::ArmSample& s : rec.samples)
+    for (const auto* imu : {&s.upperArm, &s.forearm})
+      if (*imu)
+        for (int k = 0; k < 3; ++k) {
+          const double g = (**imu).gyr[k] / kDeg * 65.5, a = (**imu).acc[k] * 83.0;
+          ASSERT_NEAR(g, std::round(g), 1e-6);
+          ASSERT_NEAR(a, std::round(a), 1e-6);
+          values += 2;
+        }
+  EXPECT_GT(values, 12000u);  // two IMUs at 1 kHz for about 3 s
 }
 
 // Another process watches the session grow while it is recorded (a GUI would), then the recorder

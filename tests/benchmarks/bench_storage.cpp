@@ -205,19 +205,9 @@ BENCHMARK(BM_Reestimate)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// The same minute as real sensors would deliver it (docs/storage.md, "Size of real sensors' data"):
-// each IMU value put on the sensor's own lattice by the conversion its plugin makes, the CSV
-// written and the chunks encoded as the records store them. 0: full precision (the simulator);
-// 1: Shimmer3 counts (gyroscope 65.5 counts per deg/s at +-500 deg/s, low-noise accelerometer
-// 83 counts per m/s^2 around 2047 on a 12-bit converter, as devices/shimmer3 converts them);
-// 2: NGIMU float32 (deg/s and g, converted as devices/ngimu does); 3: the DIY line protocol
-// printing 4 decimals. Counters: the chunks against the CSV, and the least a coder storing the
-// counts as integers could spend on the IMU values (the noise's entropy in counts), against it.
-void BM_RealSensorResolution(benchmark::State& state) {
-  const int variant = static_cast<int>(state.range(0));
-  constexpr double kGyroCounts = 65.5 * 180.0 / M_PI;  // counts per rad/s
-  constexpr double kAccCounts = 83.0;                  // counts per m/s^2
-  auto quantise = [&](ImuReading& r) {
+// The minute with its IMU values as sensor `variant` delivers them (see BM_RealSensorResolution).
+Recording realSensorMinute(int variant) {
+  auto quantise = [variant](ImuReading& r) {
     for (int i = 0; i < 3; ++i) {
       double& g = r.gyr[i];
       double& a = r.acc[i];
@@ -242,19 +232,64 @@ void BM_RealSensorResolution(benchmark::State& state) {
   for (ArmSample& a : rec.samples)
     for (auto* imu : {&a.upperArm, &a.forearm})
       if (*imu) quantise(**imu);
+  return rec;
+}
+
+// Encoding the minute's chunks, the CPU the recorder spends on them: ATC2 (codec 2) against ATC3
+// (codec 3, which also looks for a lattice in every column), for the simulator's full-precision
+// readings (sensor 0) and a Shimmer3's (sensor 1). Counter: recorded seconds encoded per second.
+void BM_EncodeChunks(benchmark::State& state) {
+  const bool atc3 = state.range(0) == 3;
+  const Recording rec = realSensorMinute(static_cast<int>(state.range(1)));
+  for (auto _ : state) {
+    std::size_t begin = 0, bytes = 0;
+    while (begin < rec.samples.size()) {
+      std::size_t end = begin;
+      while (end < rec.samples.size() && rec.samples[end].t < rec.samples[begin].t + 1.0) ++end;
+      const std::span<const ArmSample> chunk(rec.samples.data() + begin, end - begin);
+      bytes += (atc3 ? ChunkCodec::encode(chunk)
+                     : ChunkCodec::encodeLegacy(chunk, ChunkCodec::kAtc2Name))
+                   .size();
+      begin = end;
+    }
+    benchmark::DoNotOptimize(bytes);
+  }
+  state.counters["x_real_time"] = benchmark::Counter(
+      kSeconds * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_EncodeChunks)
+    ->ArgNames({"codec", "sensor"})
+    ->ArgsProduct({{2, 3}, {0, 1}})
+    ->Unit(benchmark::kMillisecond);
+
+// The same minute as real sensors would deliver it (docs/storage.md, "Size of real sensors' data"):
+// each IMU value put on the sensor's own lattice by the conversion its plugin makes, the CSV
+// written and the chunks encoded as the records store them. 0: full precision (the simulator);
+// 1: Shimmer3 counts (gyroscope 65.5 counts per deg/s at +-500 deg/s, low-noise accelerometer
+// 83 counts per m/s^2 around 2047 on a 12-bit converter, as devices/shimmer3 converts them);
+// 2: NGIMU float32 (deg/s and g, converted as devices/ngimu does); 3: the DIY line protocol
+// printing 4 decimals. Counters: the chunks (ATC3, and ATC2 before it) against the CSV, and the
+// least a coder storing the counts as integers could spend on the IMU values (the noise's entropy
+// in counts), against it.
+void BM_RealSensorResolution(benchmark::State& state) {
+  const int variant = static_cast<int>(state.range(0));
+  constexpr double kGyroCounts = 65.5 * 180.0 / M_PI;  // counts per rad/s
+  constexpr double kAccCounts = 83.0;                  // counts per m/s^2
+  const Recording rec = realSensorMinute(variant);
   QTemporaryDir dir;
   const std::filesystem::path csv = dir.filePath("q.csv").toStdString();
-  double stored = 0;
+  double stored = 0, storedAtc2 = 0;
   for (auto _ : state) {
     writeRecording(csv, rec);
-    stored = 0;
+    stored = storedAtc2 = 0;
     std::size_t begin = 0;
     while (begin < rec.samples.size()) {
       std::size_t end = begin;
       while (end < rec.samples.size() && rec.samples[end].t < rec.samples[begin].t + 1.0) ++end;
-      stored += static_cast<double>(
-          ChunkCodec::encode(std::span<const ArmSample>(rec.samples.data() + begin, end - begin))
-              .size());
+      const std::span<const ArmSample> chunk(rec.samples.data() + begin, end - begin);
+      stored += static_cast<double>(ChunkCodec::encode(chunk).size());
+      storedAtc2 +=
+          static_cast<double>(ChunkCodec::encodeLegacy(chunk, ChunkCodec::kAtc2Name).size());
       begin = end;
     }
   }
@@ -271,6 +306,7 @@ void BM_RealSensorResolution(benchmark::State& state) {
                         3.0 * (std::log2(Table5::accelStd() * kAccCounts) + gauss) / 8.0;
   state.counters["CSV_MB_per_hour"] = csvBytes * 3600.0 / kSeconds / 1e6;
   state.counters["vs_csv"] = stored / csvBytes;
+  state.counters["vs_csv_atc2"] = storedAtc2 / csvBytes;
   state.counters["count_floor_imu_vs_csv"] = floorBytes / csvBytes;
 }
 BENCHMARK(BM_RealSensorResolution)

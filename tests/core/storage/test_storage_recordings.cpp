@@ -7,12 +7,14 @@
 #include <unistd.h>
 #include <QElapsedTimer>
 #include <QSqlQuery>
+#include <algorithm>
 #include <bit>
 #include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstring>
 #include <limits>
+#include <numbers>
 
 #include "core/estimation/ArmFilter.h"
 #include "core/storage/ChunkCodec.h"
@@ -69,6 +71,22 @@ std::vector<ArmSample> awkwardSamples() {
   s[3].camWrist = Eigen::Vector2d(1, 2);
   s[4].t = 1e9;
   return s;
+}
+
+// The filter's angles over the first 5,000 rows (its speed is not under test) of two recordings
+// are the same bit for bit.
+void expectSameAngles(const std::vector<ArmSample>& original, const std::vector<ArmSample>& back,
+                      const EstimatorParams& params) {
+  ASSERT_GE(original.size(), 5000u);
+  ASSERT_GE(back.size(), 5000u);
+  const std::vector<ArmSample> a(original.begin(), original.begin() + 5000);
+  const std::vector<ArmSample> b(back.begin(), back.begin() + 5000);
+  const BatchResult ea = estimateSamples(a, params), eb = estimateSamples(b, params);
+  ASSERT_EQ(ea.estimates.size(), eb.estimates.size());
+  ASSERT_FALSE(ea.estimates.empty());
+  for (std::size_t i = 0; i < ea.estimates.size(); ++i)
+    for (int j = 0; j < 5; ++j)
+      ASSERT_TRUE(sameBits(ea.estimates[i].th[j], eb.estimates[i].th[j])) << i;
 }
 
 }  // namespace
@@ -319,18 +337,10 @@ TEST(StoredRecording, LosslessRoundTripAndCompressionRatio) {
   EXPECT_EQ(fileBytes(exported), fileBytes(csv));  // the very same file
   EXPECT_EQ(fileBytes(sidecarPath(exported)), fileBytes(sidecarPath(csv)));
 
-  // Estimate a short stretch (the filter's speed is not under test) from both.
-  const std::vector<ArmSample> a(original.samples.begin(), original.samples.begin() + 5000);
-  const std::vector<ArmSample> b(back.samples.begin(), back.samples.begin() + 5000);
   EstimatorParams params;
   params.geometry = original.meta.geometry;
   params.gUp = original.meta.gUp();
-  const BatchResult ea = estimateSamples(a, params), eb = estimateSamples(b, params);
-  ASSERT_EQ(ea.estimates.size(), eb.estimates.size());
-  ASSERT_FALSE(ea.estimates.empty());
-  for (std::size_t i = 0; i < ea.estimates.size(); ++i)
-    for (int j = 0; j < 5; ++j)
-      ASSERT_TRUE(sameBits(ea.estimates[i].th[j], eb.estimates[i].th[j])) << i;
+  expectSameAngles(original.samples, back.samples, params);
 
   const double ratio = static_cast<double>(s.storedBytes) / csvBytes;
   std::printf(
@@ -348,6 +358,50 @@ TEST(StoredRecording, LosslessRoundTripAndCompressionRatio) {
               static_cast<double>(std::filesystem::file_size(f.path.toStdString())) / 1e6,
               timer.nsecsElapsed() * 1e-6);
 }
+
+// The issue's figure for real sensors: 60 s at 1 kHz of both IMUs as a Shimmer3 delivers them
+// (whole counts converted by its plugin's arithmetic: docs/storage.md, "Size of real sensors'
+// data") and the Kinect, no true angles (a clinical recording has none). Stored losslessly (the
+// exported CSV is the imported one byte for byte, the angles estimated from it bit for bit the
+// same) in well under a quarter of the CSV, on both engines.
+using QuantisedRecording = Engines;
+TEST_P(QuantisedRecording, LosslessAndWellUnderAQuarterOfTheCsv) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const auto csv = f.file("shimmer.csv");
+  Recording rec = simulateTo(csv, 60.0, 1000.0, /*truth=*/false);
+  constexpr double kDeg = std::numbers::pi / 180.0;
+  for (ArmSample& s : rec.samples)
+    for (auto* imu : {&s.upperArm, &s.forearm})
+      if (*imu)
+        for (int k = 0; k < 3; ++k) {
+          const double gc = std::clamp(std::round((**imu).gyr[k] / kDeg * 65.5), -32768.0, 32767.0);
+          (**imu).gyr[k] = gc / 65.5 * kDeg;
+          const double ac = std::clamp(std::round((**imu).acc[k] * 83.0 + 2047.0), 0.0, 4095.0);
+          (**imu).acc[k] = (ac - 2047.0) / 83.0;
+        }
+  writeRecording(csv, rec);
+  const Recording original = readRecording(csv);
+  const double csvBytes = static_cast<double>(std::filesystem::file_size(csv));
+  const qint64 id = f.store->importRecording(csv, "P1");
+  const SessionInfo s = f.store->session(id);
+  const auto exported = f.file("exported.csv");
+  f.store->exportRecording(id, exported);
+  EXPECT_EQ(fileBytes(exported), fileBytes(csv));
+  const Recording back = f.store->readRecording(id);
+  expectSameSamples(back.samples, original.samples);
+  expectSameAngles(original.samples, back.samples, recordingParams(original.meta));
+  const double ratio = static_cast<double>(s.storedBytes) / csvBytes;
+  std::printf(
+      "[ figures  ] 60 s at 1 kHz, 2 Shimmer3 IMUs + Kinect: CSV %.0f bytes, chunks %lld bytes, "
+      "ratio %.3f (1:%.2f)\n",
+      csvBytes, static_cast<long long>(s.storedBytes), ratio, 1.0 / ratio);
+  // Well under a quarter: at most half of it. ATC2 stored the same at 0.31 (the lattice mode keeps
+  // each value as its count, ~6 bits, against ~20 characters of CSV).
+  EXPECT_LT(ratio, 0.125);
+}
+INSTANTIATE_TEST_SUITE_P(Engines, QuantisedRecording,
+                         testing::Values(Engine::Sqlite, Engine::Postgres), engineName);
 
 TEST(StoredRecording, KilledRecorderLeavesAnInterruptedSessionAndACleanFile) {
   Fixture f;
