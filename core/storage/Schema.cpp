@@ -153,6 +153,11 @@ const std::vector<MigrationStep>& migrationSteps() {
            "ALTER TABLE sessions ADD COLUMN patient_comment TEXT NOT NULL DEFAULT ''",
            "ALTER TABLE sessions ADD COLUMN home_summary_json TEXT NOT NULL DEFAULT '{}'",
        }},
+      // No table changes. Recordings written from here on may hold atc3-zstd chunks, which a
+      // build before this version cannot decode; with the version raised, such a build refuses
+      // the whole database as newer than it knows (a clinic's PostgreSQL shared by mixed
+      // installs) instead of calling those sessions corrupt.
+      {5, "recording chunks may use the atc3-zstd codec (lattice columns)", {}},
   };
   return steps;
 }
