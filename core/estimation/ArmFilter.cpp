@@ -882,9 +882,10 @@ class ArmFilter final : public JointEstimator {
   // P holds the heading's variance to first order: a turn of the whole arm about the vertical
   // moves the shoulder angles along hu. Far from small, the turn bends through joint space (near
   // the gimbal lock a 40 deg turn can move flexion 14 deg where the first-order step says 1), so
-  // when the heading is uncertain by more than a degree or two the reported variance takes the
-  // joints' actual excursion under a turn of two standard deviations each way, halved, in place
-  // of the first-order part.
+  // when the heading is uncertain by more than a degree the reported variance takes the joints'
+  // mean squared excursion under the exact turn, over the heading's distribution, in place of the
+  // first-order part. (Half the excursion at two standard deviations each way, used before,
+  // overstated it: IMU-only abduction had 99.8-100 % of its errors inside two sd.)
   void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
                            JointVector& var) const {
     const double rate = generatorAt(th).norm();  // joint rad per rad of turn
@@ -892,14 +893,8 @@ class ArmFilter final : public JointEstimator {
     const double turnStd = std::sqrt(headingVar) / rate;
     constexpr double kFirstOrderEnough = 1.0 * kDeg;
     if (turnStd < kFirstOrderEnough) return;
-    const double turn = std::min(2.0 * turnStd, std::numbers::pi);
-    const JointVector plus = turnAboutVertical(th, turn, m_up);
-    const JointVector minus = turnAboutVertical(th, -turn, m_up);
-    for (int j = 0; j < 3; ++j) {
-      const double reach = 0.5 * std::max(std::abs(wrapAngle(plus(j) - th(j))),
-                                          std::abs(wrapAngle(minus(j) - th(j))));
-      var(j) += std::max(0.0, reach * reach - headingVar * hu(j) * hu(j));
-    }
+    const JointVector moment = turnSecondMoment(th, turnStd, m_up);
+    for (int j = 0; j < 3; ++j) var(j) += std::max(0.0, moment(j) - headingVar * hu(j) * hu(j));
   }
 
   // Heading honesty. The projection of the IMU rows keeps IMU-only updates from moving the
