@@ -42,6 +42,13 @@ std::string methodName(MeasurementModel m) {
   return "?";
 }
 
+MeasurementModel startupModel(const EstimatorParams& p) {
+  const bool kinematic = (p.model == MeasurementModel::InclinometerGyro ||
+                          p.model == MeasurementModel::AugmentedBodyAccel) &&
+                         p.kinematicStartup;
+  return kinematic ? MeasurementModel::AccelGyro : p.model;
+}
+
 namespace {
 
 constexpr int kBase = 15;
@@ -163,7 +170,7 @@ class ArmFilter final : public JointEstimator {
   static constexpr bool kAugmented = N > kBase;
 
   explicit ArmFilter(const EstimatorParams& p)
-      : m_p(mirrored(p)), m_up(m_p.gUp.normalized()), m_gate(gateLimits(m_p)) {
+      : m_p(mirrored(p)), m_model(p.model), m_up(m_p.gUp.normalized()), m_gate(gateLimits(m_p)) {
     if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);  // throws on a bad camera
     reset();
   }
@@ -265,6 +272,7 @@ class ArmFilter final : public JointEstimator {
       return UpdateResult::Initialised;
     }
 
+    if (m_p.model != m_model && s.t - m_t0 >= m_p.startupSeconds) handOver();
     const Vec xPrior = m_x;
     const Mat pPrior = m_P;
     const double tPrior = m_t, floorPrior = m_headingFloor;
@@ -476,6 +484,8 @@ class ArmFilter final : public JointEstimator {
       if (!first.camElbow) first.camElbow = m_pendingOptical->camElbow;
     }
     m_pendingOptical.reset();
+    m_p.model = m_model;  // every (re)start begins on the start-up model, until handOver()
+    m_p.model = startupModel(m_p);
     const InitialPose pose = initialPose(m_p, first);
     m_x.setZero();
     m_x.template segment<5>(5) = pose.thd;
@@ -603,7 +613,7 @@ class ArmFilter final : public JointEstimator {
       if (jac) jac->template block<3, kBase>(row, 0) = allJac.template middleRows<3>(3 * blk);
       if constexpr (kAugmented) {
         // Method B: the accelerometer also reads the augmented body-acceleration state.
-        if (blk == kUaAcc || blk == kFaAcc) {
+        if ((blk == kUaAcc || blk == kFaAcc) && m_p.model == MeasurementModel::AugmentedBodyAccel) {
           const int off = kBase + (blk == kUaAcc ? 0 : 3);
           h.template segment<3>(row) += x.template segment<3>(off);
           if (jac) jac->template block<3, 3>(row, off).setIdentity();
@@ -800,11 +810,7 @@ class ArmFilter final : public JointEstimator {
     pzz.diagonal() += b.variance;
     const Eigen::LLT<MeasMat> sl(pzz);
     if (sl.info() != Eigen::Success) return false;
-    {
-      const MeasVec nu = b.z - zMean;
-      m_updateNis = nu.dot(sl.solve(nu));
-      m_updateDof = m;
-    }
+    watchInnovation(b, b.z - zMean, pzz);
     if (conditioned) {
       // pxz is d's cross-covariance; the whole state's follows from the linearisation it implies,
       // H^T = cov(d)^-1 pxz on d, that is P Pi^T H^T. The gain is then d's: the heading stays.
@@ -876,9 +882,10 @@ class ArmFilter final : public JointEstimator {
   // P holds the heading's variance to first order: a turn of the whole arm about the vertical
   // moves the shoulder angles along hu. Far from small, the turn bends through joint space (near
   // the gimbal lock a 40 deg turn can move flexion 14 deg where the first-order step says 1), so
-  // when the heading is uncertain by more than a degree or two the reported variance takes the
-  // joints' actual excursion under a turn of two standard deviations each way, halved, in place
-  // of the first-order part.
+  // when the heading is uncertain by more than a degree the reported variance takes the joints'
+  // mean squared excursion under the exact turn, over the heading's distribution, in place of the
+  // first-order part. (Half the excursion at two standard deviations each way, used before,
+  // overstated it: IMU-only abduction had 99.8-100 % of its errors inside two sd.)
   void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
                            JointVector& var) const {
     const double rate = generatorAt(th).norm();  // joint rad per rad of turn
@@ -886,14 +893,8 @@ class ArmFilter final : public JointEstimator {
     const double turnStd = std::sqrt(headingVar) / rate;
     constexpr double kFirstOrderEnough = 1.0 * kDeg;
     if (turnStd < kFirstOrderEnough) return;
-    const double turn = std::min(2.0 * turnStd, std::numbers::pi);
-    const JointVector plus = turnAboutVertical(th, turn, m_up);
-    const JointVector minus = turnAboutVertical(th, -turn, m_up);
-    for (int j = 0; j < 3; ++j) {
-      const double reach = 0.5 * std::max(std::abs(wrapAngle(plus(j) - th(j))),
-                                          std::abs(wrapAngle(minus(j) - th(j))));
-      var(j) += std::max(0.0, reach * reach - headingVar * hu(j) * hu(j));
-    }
+    const JointVector moment = turnSecondMoment(th, turnStd, m_up);
+    for (int j = 0; j < 3; ++j) var(j) += std::max(0.0, moment(j) - headingVar * hu(j) * hu(j));
   }
 
   // Heading honesty. The projection of the IMU rows keeps IMU-only updates from moving the
@@ -998,6 +999,27 @@ class ArmFilter final : public JointEstimator {
   bool watched(int block) const {
     if (block == kUaGyr || block == kFaGyr) return true;
     return (block == kUaAcc || block == kFaAcc) && m_p.model == MeasurementModel::AccelGyro;
+  }
+
+  // The UKF's consistency watch: the normalised innovation squared of the watched rows alone, as
+  // the EKF's block updates count it. With every row, Method C's and B's accelerometers (body
+  // acceleration left out of their model) read as a lost arm within 0.15 s of any fast motion,
+  // and the UKF restarted again and again.
+  void watchInnovation(const BlockList& b, const MeasVec& nu, const MeasMat& s) {
+    std::array<int, kMaxRows> rows{};
+    int n = 0;
+    for (int i = 0; i < b.count; ++i)
+      if (watched(b.block[i]))
+        for (int r = 0; r < b.size[i]; ++r) rows[n++] = b.offset[i] + r;
+    MeasMat sw(n, n);
+    MeasVec nw(n);
+    for (int i = 0; i < n; ++i) {
+      nw(i) = nu(rows[i]);
+      for (int j = 0; j < n; ++j) sw(i, j) = s(rows[i], rows[j]);
+    }
+    const Eigen::LLT<MeasMat> llt(sw);
+    m_updateNis = n > 0 && llt.info() == Eigen::Success ? nw.dot(llt.solve(nw)) : 0.0;
+    m_updateDof = llt.info() == Eigen::Success ? n : 0;
   }
 
   // The recent past, for the window fit: fused readings only, in the right-arm frame.
@@ -1216,7 +1238,26 @@ class ArmFilter final : public JointEstimator {
     }
   }
 
+  // The end of a kinematic start-up (startupModel): the state and covariance carry over to the
+  // model asked for; Method A's matched process noise does not, nor its heading floor.
+  void handOver() {
+    m_p.model = m_model;
+    m_matchedQ.setZero();
+    if constexpr (kAugmented) {
+      // Method B's body-acceleration states start from what the kinematics say they are.
+      Eigen::Matrix<double, kModelRows, 1> with, without;
+      const Vec15 base = m_x.template head<kBase>();
+      predictReadings(m_p.geometry, m_p.gUp, true, base, with, nullptr);
+      predictReadings(m_p.geometry, m_p.gUp, false, base, without, nullptr);
+      m_x.template segment<3>(kBase) = (with - without).template segment<3>(3 * kUaAcc);
+      m_x.template segment<3>(kBase + 3) = (with - without).template segment<3>(3 * kFaAcc);
+    }
+    const Vec u = headingAngles(m_x);
+    m_headingFloor = u.dot(m_P * u);
+  }
+
   EstimatorParams m_p;
+  MeasurementModel m_model;  // the model asked for; m_p.model may differ during start-up
   Eigen::Vector3d m_up;  // unit up vector, frame 0
   Vec m_x;
   Mat m_P;

@@ -167,6 +167,15 @@ struct EstimatorParams {
   double initialRateStd = 0.5;                 ///< rad/s
   double initialAccelStd = 10.0;               ///< rad/s^2
   double initialHeadingStd = 30.0 * kDeg;      ///< rad, extra along the heading direction
+  /// Methods B and C start on the body-acceleration model: through the start-up second (and after
+  /// each restart) their filter reads the accelerometers as Method A does, then hands its state
+  /// and covariance over to their own model (Method B's body-acceleration states start from what
+  /// the kinematics predict). Their models read the centripetal acceleration of a fast swing (4 g
+  /// at a forearm strap swung at 1 Hz through 90 deg) as gravity along the arm, and with the
+  /// start-up's wide covariance that threw the start pose tens of degrees off, the elbow onto its
+  /// limits, for 2-3 s or for good (docs/estimator.md, "Methods B and C"). Off reproduces the
+  /// paper's filters from their first sample.
+  bool kinematicStartup = true;
   /// During the first startupSeconds the EKF iterates its update (Gauss-Newton) up to this many
   /// times, so a start while the arm moves fast cannot throw it off.
   int startupIterations = 4;
@@ -197,6 +206,10 @@ struct EstimatorParams {
   /// its standard deviations growing with the prediction.
   double maxCoastSeconds = 1.0;
 };
+
+/// The measurement model a filter with these parameters uses during its start-up second: Method
+/// A's for Methods B and C with kinematicStartup, params.model otherwise.
+MeasurementModel startupModel(const EstimatorParams& params);
 
 /// Output of the filter at one instant.
 struct JointEstimate {

@@ -132,4 +132,33 @@ JointVector turnAboutVertical(const JointVector& th, double angle, const Eigen::
   return t;
 }
 
+JointVector turnSecondMoment(const JointVector& th, double turnStd, const Eigen::Vector3d& up) {
+  // A sum over turns spaced at most half a standard deviation (and 15 deg) apart out to 4
+  // standard deviations (at most half a circle) each way, weighted by the normal density. Each
+  // side is turned outward in steps from th, so every point costs one step of turnAboutVertical
+  // and follows the same continuous branch. The joints' change is far from smooth in the turn
+  // when the arm passes near the gimbal lock, where a 5-point Gauss-Hermite rule was far off.
+  JointVector m = JointVector::Zero();
+  if (!(turnStd > 0.0)) return m;
+  const Eigen::Vector3d axis = up.normalized();
+  const Eigen::Matrix3d start = shoulderRotation(th);
+  const double reach = std::min(4.0 * turnStd, std::numbers::pi);
+  constexpr double kMaxStep = 15.0 * std::numbers::pi / 180.0;
+  const int steps = static_cast<int>(std::ceil(reach / std::min(0.5 * turnStd, kMaxStep)));
+  const double step = reach / steps;
+  double weights = 1.0;  // the centre: no change
+  for (const double sign : {-1.0, 1.0}) {
+    Eigen::Vector3d t = th.head<3>();
+    for (int k = 1; k <= steps; ++k) {
+      const double turn = sign * k * step;
+      t = shoulderAnglesNear(Eigen::AngleAxisd(turn, axis) * start, t);
+      const double z = turn / turnStd;
+      const double w = std::exp(-0.5 * z * z);
+      for (int j = 0; j < 3; ++j) m(j) += w * std::pow(wrapAngle(t(j) - th(j)), 2);
+      weights += w;
+    }
+  }
+  return m / weights;
+}
+
 }  // namespace armtrack

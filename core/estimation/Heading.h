@@ -33,4 +33,10 @@ Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>&
 /// continuously from th, so they stay near th for small turns. Angles are wrapped to (-pi, pi].
 JointVector turnAboutVertical(const JointVector& th, double angle, const Eigen::Vector3d& up);
 
+/// The second moment of each shoulder joint's change (rad^2) when the arm at th is turned about
+/// the vertical by an angle drawn from N(0, turnStd^2) (truncated at half a circle): the exact
+/// turn (turnAboutVertical) summed over turns half a standard deviation apart. Elbow entries
+/// are zero.
+JointVector turnSecondMoment(const JointVector& th, double turnStd, const Eigen::Vector3d& up);
+
 }  // namespace armtrack

@@ -5,8 +5,8 @@
 //   joint under 1 deg RMSE from the first second;
 // - honest uncertainty: on five-joint movement with IMUs only, IMUs + Kinect and IMUs + webcam,
 //   the share of estimates whose error lies inside two reported standard deviations, pooled
-//   over seeds: between 90 % and 99 % for every joint with a Kinect, and for the elbow in every
-//   set-up; the shoulder's known gaps with a webcam and with IMUs only are stated below.
+//   over seeds: between 90 % and 99 % for every joint with IMUs only and with a Kinect, and for
+//   the elbow with a webcam; the shoulder's known gap with a webcam is stated below.
 // The defaults were chosen on reaching seeds 11-12 and multi-joint seeds 1-3; these use others.
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 #include <string>
 
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/Heading.h"
 #include "core/metrics/Accuracy.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
@@ -64,10 +65,11 @@ void run(const Recording& rec, FilterKind kind, double from, Tally& tally, doubl
     }
     if (!s.trueAngles || s.t < from || !f->initialised()) continue;
     const JointEstimate e = f->estimate();
-    tally.errors.add(e.th, *s.trueAngles);
+    const JointVector truth =
+        headingTurn != 0.0 ? turnAboutVertical(*s.trueAngles, headingTurn, up) : *s.trueAngles;
+    tally.errors.add(e.th, truth);
     for (int j = 0; j < kNumJoints; ++j)
-      if (std::abs(wrapAngle(e.th(j) - (*s.trueAngles)(j))) <= 2.0 * e.thStd(j))
-        tally.inside(j) += 1;
+      if (std::abs(wrapAngle(e.th(j) - truth(j))) <= 2.0 * e.thStd(j)) tally.inside(j) += 1;
     tally.count += 1;
   }
 }
@@ -125,37 +127,37 @@ class Coverage : public testing::TestWithParam<Optics> {};
 TEST_P(Coverage, TwoSigmaHoldsNinetyToNinetyNinePercent) {
   // Without optics the start heading is a guess whose stated uncertainty (initialHeadingStd) is
   // only tested fairly if the true arm's heading is drawn from it: each run turns the truth by
-  // a draw of N(0, initialHeadingStd).
+  // a draw of N(0, initialHeadingStd). The shoulder's error is then one draw per run, so IMU-only
+  // coverage needs many short runs (320 of 2 s: about 1 % sampling error) where the optical
+  // set-ups need a few long ones.
   const bool imusOnly = GetParam() == Optics::None;
-  const int runs = imusOnly ? 16 : 4;
-  std::mt19937_64 rng(909);
+  const int runs = imusOnly ? 320 : 4;
+  const std::uint64_t firstSeed = imusOnly ? 4001 : 31;
+  std::mt19937_64 rng(7);
   std::normal_distribution<double> heading(0.0, EstimatorParams{}.initialHeadingStd);
   Tally t;
   for (int k = 0; k < runs; ++k) {
-    const std::uint64_t seed = 31 + k;
+    const std::uint64_t seed = firstSeed + k;
     const double turn = imusOnly ? heading(rng) : 0.0;
     const Recording rec = simulateRecording(
-        MultiJointTrajectory(seed), simulation(imusOnly ? 10.0 : 20.0, seed, 1000.0, GetParam()));
-    Tally one;
-    run(rec, FilterKind::Ekf, 1.0, one, turn);
-    std::printf(
-        "[ measured ] %s, seed %lu, heading turn %.1f deg: inside 2 sd (%%) %s; RMSE (deg) %s\n",
-        opticsName(GetParam()), static_cast<unsigned long>(seed), turn / kDeg,
-        row(one.coverage(), 100.0).c_str(), row(one.errors.rmse() / kDeg).c_str());
+        MultiJointTrajectory(seed), simulation(imusOnly ? 2.0 : 20.0, seed, 1000.0, GetParam()));
+    const JointVector insideBefore = t.inside;
+    const double countBefore = t.count;
     run(rec, FilterKind::Ekf, 1.0, t, turn);
+    if (!imusOnly)
+      std::printf("[ measured ] %s, seed %lu: inside 2 sd (%%) %s\n", opticsName(GetParam()),
+                  static_cast<unsigned long>(seed),
+                  row((t.inside - insideBefore) / (t.count - countBefore), 100.0).c_str());
   }
   const JointVector cover = t.coverage();
   std::printf("[ measured ] %s: inside 2 sd (%%) %s; RMSE (deg) %s\n", opticsName(GetParam()),
               row(cover, 100.0).c_str(), row(t.errors.rmse() / kDeg).c_str());
-  // Known gaps (issue 9, acceptance 3), asserted as they stand so a regression still fails
-  // (and on seeds 51-54 the Kinect's shoulder is 99.5-99.8 %, over the band: docs/estimator.md):
-  // - webcam: the shoulder's sd is too small on some movements (seeds 31-32: 64-78 % inside,
-  //   errors of 0.05-0.09 deg); pooled 82-84 %, elbow in range;
-  // - IMUs only: the shoulder's sd is too large (100 % inside): the heading prior and its
-  //   curvature are stated generously, so a therapist is never shown a drifting shoulder angle
-  //   as trustworthy, but it is not yet a calibrated 2 sigma.
+  // Known gap (issue 9, acceptance 3), asserted as it stands so a regression still fails: with a
+  // webcam the shoulder's sd is too small on some movements (seeds 31-32: 64-78 % inside, errors
+  // of 0.05-0.09 deg along the heading); pooled 82-85 %. And on seeds 51-54 the Kinect's
+  // shoulder is 99.5-99.8 %, over the band (docs/estimator.md).
   const double shoulderLeast = GetParam() == Optics::Webcam ? 0.78 : 0.90;
-  const bool shoulderUpperBound = GetParam() == Optics::Kinect;
+  const bool shoulderUpperBound = GetParam() != Optics::Webcam;
   for (int j = 0; j < kNumJoints; ++j) {
     const bool shoulder = j < 3;
     EXPECT_GE(cover(j), shoulder ? shoulderLeast : 0.90)

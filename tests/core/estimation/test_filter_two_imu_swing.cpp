@@ -1,12 +1,14 @@
 // The paper's body-acceleration case (section 3.3, Table 6: 90 deg shoulder flexion at 1 Hz,
 // Table 5 noise, 1 kHz) on the whole arm: both IMUs, all five joints free, elbow straight, no
 // optical data, default settings. Table 6 was simulated on one segment; here the elbow and the
-// shoulder's other two joints can take up what the accelerometer model gets wrong.
-// - Method A (body acceleration from the kinematics) and Method B (body acceleration as GM-1
-//   states) stay on the arm: shoulder flexion within twice the paper's Method B figure (2.51 deg
-//   RMSE), A better than B, no joint off by a mirrored branch.
-// - Every method, C included, never reports a joint outside the anatomical limits.
-// Noise seeds 4 and 5 were not used when the defaults were chosen. Truth: the simulation.
+// shoulder's other two joints can take up what the accelerometer model gets wrong, and the
+// forearm strap, 0.42 m from the shoulder, reads 4 g of centripetal acceleration.
+// - Every method stays on the arm (no joint off by a mirrored branch) and A < B < C on shoulder
+//   flexion. Method B is within twice the paper's 2.51 deg, Method C within a factor of two of
+//   its 7.39 deg (from 3.7 to 14.8 deg).
+// - Every method never reports a joint outside the anatomical limits.
+// Noise seeds 4 and 5 were not used when the defaults were chosen; Methods B and C's kinematic
+// start-up was developed on 4-9 and is checked on 14 and 15 as well. Truth: the simulation.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -55,18 +57,26 @@ SwingResult swing(MeasurementModel model, FilterKind kind, std::uint64_t seed) {
 
 class TwoImuSwing : public testing::TestWithParam<FilterKind> {};
 
-TEST_P(TwoImuSwing, MethodsAAndBStayOnTheArmAndAIsBest) {
-  for (std::uint64_t seed : {4u, 5u}) {
+TEST_P(TwoImuSwing, EveryMethodStaysOnTheArmAndAIsBestCWorst) {
+  for (std::uint64_t seed : {4u, 5u, 14u, 15u}) {
     const SwingResult a = swing(MeasurementModel::AccelGyro, GetParam(), seed);
     const SwingResult b = swing(MeasurementModel::AugmentedBodyAccel, GetParam(), seed);
-    std::printf("seed %lu: A flexion %.2f deg (worst joint %.2f), B flexion %.2f (worst %.2f)\n",
-                static_cast<unsigned long>(seed), a.rmse(0), a.rmse.maxCoeff(), b.rmse(0),
-                b.rmse.maxCoeff());
-    EXPECT_LT(b.rmse(0), 2.0 * 2.51) << "Method B, seed " << seed << ": " << b.rmse.transpose();
+    const SwingResult c = swing(MeasurementModel::InclinometerGyro, GetParam(), seed);
+    std::printf(
+        "[ measured ] seed %lu, flexion RMSE (worst joint) in deg: A %.2f (%.2f), B %.2f (%.2f), "
+        "C %.2f (%.2f)\n",
+        static_cast<unsigned long>(seed), a.rmse(0), a.rmse.maxCoeff(), b.rmse(0),
+        b.rmse.maxCoeff(), c.rmse(0), c.rmse.maxCoeff());
     EXPECT_LT(a.rmse(0), b.rmse(0)) << "seed " << seed;
+    EXPECT_LT(b.rmse(0), c.rmse(0)) << "seed " << seed;
+    EXPECT_LT(b.rmse(0), 2.0 * 2.51) << "Method B, seed " << seed << ": " << b.rmse.transpose();
+    EXPECT_GT(c.rmse(0), 7.39 / 2.0) << "Method C, seed " << seed << ": " << c.rmse.transpose();
+    EXPECT_LT(c.rmse(0), 2.0 * 7.39) << "Method C, seed " << seed << ": " << c.rmse.transpose();
+    // A mirrored branch is tens of degrees off on several joints. C's elbow takes up the forearm's
+    // unmodelled body acceleration: about 6.6 deg.
     EXPECT_LT(a.rmse.maxCoeff(), 2.0) << "Method A, seed " << seed << ": " << a.rmse.transpose();
-    // A mirrored branch is tens of degrees off on several joints; the elbow is B's weakest.
-    EXPECT_LT(b.rmse.maxCoeff(), 8.0) << "Method B, seed " << seed << ": " << b.rmse.transpose();
+    EXPECT_LT(b.rmse.maxCoeff(), 3.0) << "Method B, seed " << seed << ": " << b.rmse.transpose();
+    EXPECT_LT(c.rmse.maxCoeff(), 9.0) << "Method C, seed " << seed << ": " << c.rmse.transpose();
   }
 }
 
