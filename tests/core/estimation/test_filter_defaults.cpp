@@ -162,8 +162,9 @@ TEST_P(Coverage, TwoSigmaHoldsNinetyToNinetyNinePercent) {
     const bool shoulder = j < 3;
     EXPECT_GE(cover(j), shoulder ? shoulderLeast : 0.90)
         << "joint " << j << ": the reported sd is too small";
-    if (!shoulder || shoulderUpperBound)
+    if (!shoulder || shoulderUpperBound) {
       EXPECT_LE(cover(j), 0.99) << "joint " << j << ": the reported sd is too large";
+    }
   }
 }
 

@@ -364,8 +364,9 @@ TEST_P(DamagedLatticeChunk, NamesTheSessionAndChunk) {
       EXPECT_NE(std::string(e.what()).find("session " + std::to_string(id) + ", chunk 1"),
                 std::string::npos)
           << name << ": " << e.what();
-      if (std::string(name).starts_with("step"))
+      if (std::string(name).starts_with("step")) {
         EXPECT_NE(std::string(e.what()).find("lattice step"), std::string::npos) << e.what();
+      }
     }
   }
   EXPECT_TRUE(sameRows(f.store->readRecording(intact).samples, rows));

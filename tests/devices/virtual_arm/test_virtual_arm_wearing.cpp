@@ -32,8 +32,8 @@ VirtualArmParams checkParams() {
   return p;
 }
 
-// The source's samples for the whole check, put back into rows by stream role as the session's
-// assembler would.
+// The source's samples for the whole run (p.sim.duration), put back into rows by stream role as
+// the session's assembler would.
 std::vector<ArmSample> play(const VirtualArmParams& p) {
   VirtualArmSource source(p);
   std::vector<VirtualSample> out;
@@ -46,8 +46,14 @@ std::vector<ArmSample> play(const VirtualArmParams& p) {
       rows.emplace_back();
       rows.back().t = s.deviceTime;
     }
-    if (role == StreamRole::UpperArmImu) rows.back().upperArm = std::get<ImuReading>(s.payload);
-    if (role == StreamRole::ForearmImu) rows.back().forearm = std::get<ImuReading>(s.payload);
+    ArmSample& row = rows.back();
+    if (role == StreamRole::UpperArmImu) row.upperArm = std::get<ImuReading>(s.payload);
+    if (role == StreamRole::ForearmImu) row.forearm = std::get<ImuReading>(s.payload);
+    if (role == StreamRole::Truth) row.trueAngles = std::get<TruthAngles>(s.payload).th;
+    if (const auto* o = std::get_if<OpticalPositions>(&s.payload)) {
+      row.elbow = o->elbow;
+      row.wrist = o->wrist;
+    }
   }
   return rows;
 }
@@ -145,24 +151,7 @@ std::vector<ArmSample> playMultiJoint(const ImuResolution& resolution, std::uint
   p.trajectoryOptions.seed = static_cast<int>(seed);
   p.sim.duration = seconds;
   p.resolution = resolution;
-  VirtualArmSource source(p);
-  std::vector<VirtualSample> out;
-  std::vector<SourceEvent> events;
-  source.advance(seconds + 0.1, out, events);
-  std::vector<ArmSample> rows;
-  for (const VirtualSample& s : out) {
-    const StreamRole role = source.streams()[static_cast<std::size_t>(s.stream)].role;
-    if (rows.empty() || rows.back().t != s.deviceTime) rows.push_back({.t = s.deviceTime});
-    ArmSample& row = rows.back();
-    if (role == StreamRole::UpperArmImu) row.upperArm = std::get<ImuReading>(s.payload);
-    if (role == StreamRole::ForearmImu) row.forearm = std::get<ImuReading>(s.payload);
-    if (role == StreamRole::Truth) row.trueAngles = std::get<TruthAngles>(s.payload).th;
-    if (const auto* o = std::get_if<OpticalPositions>(&s.payload)) {
-      row.elbow = o->elbow;
-      row.wrist = o->wrist;
-    }
-  }
-  return rows;
+  return play(p);
 }
 
 // RMS error (deg) of the default filter's angles against the truth, after 2 s of settling.
