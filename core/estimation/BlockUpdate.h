@@ -16,6 +16,79 @@ struct BlindDirection {
   const Eigen::Matrix<double, N, 1>& u;  // reads the component along v
 };
 
+namespace detail {
+
+// Eigen's SIMD packet for doubles (two with SSE2; one double when vectorisation is off).
+using Packet = Eigen::internal::packet_traits<double>::type;
+inline constexpr int kPacket = Eigen::internal::unpacket_traits<Packet>::size;
+
+// out.col(i) = sum_k a.col(k) * h(i, k) for i < M, k < K, where a holds K columns of length N
+// (column-major, leading dimension N): M x K multiply-adds per row, the M sums held in registers
+// while a's rows stream through once. Sums in the order of k.
+template <int M, int K, int N>
+void columnsTimesTranspose(const double* a, const Eigen::Matrix<double, M, K>& h,
+                           Eigen::Matrix<double, N, M>& out) {
+  using namespace Eigen::internal;
+  Packet hb[K][M];  // h's entries, each broadcast to a packet once
+  for (int k = 0; k < K; ++k)
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) hb[k][i] = pset1<Packet>(h(i, k));
+  int r = 0;
+  for (; r + kPacket <= N; r += kPacket) {
+    Packet acc[M];
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) acc[i] = pset1<Packet>(0.0);
+    for (int k = 0; k < K; ++k) {
+      const Packet x = ploadu<Packet>(a + k * N + r);
+#pragma GCC unroll 4
+      for (int i = 0; i < M; ++i) acc[i] = padd(acc[i], pmul(x, hb[k][i]));
+    }
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) pstoreu(out.data() + i * N + r, acc[i]);
+  }
+  for (; r < N; ++r)
+    for (int i = 0; i < M; ++i) {
+      double acc = 0.0;
+      for (int k = 0; k < K; ++k) acc += a[k * N + r] * h(i, k);
+      out(r, i) = acc;
+    }
+}
+
+// p -= vt vt^T (+ a a^T when a is given), column by column. Entry (r, c) subtracts
+// sum_m vt(r, m) vt(c, m) summed in the order of m, exactly what entry (c, r) subtracts, so a
+// symmetric p stays exactly symmetric.
+template <int M, int N>
+void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matrix<double, N, 1>* a,
+                       Eigen::Matrix<double, N, N>& p) {
+  using namespace Eigen::internal;
+  const double* v = vt.data();
+  for (int c = 0; c < N; ++c) {
+    double* pc = p.data() + c * N;
+    Packet b[M];
+#pragma GCC unroll 4
+    for (int m = 0; m < M; ++m) b[m] = pset1<Packet>(vt(c, m));
+    const Packet ac = pset1<Packet>(a ? (*a)(c) : 0.0);
+    int r = 0;
+    for (; r + kPacket <= N; r += kPacket) {
+      Packet sum = pmul(ploadu<Packet>(v + r), b[0]);
+#pragma GCC unroll 4
+      for (int m = 1; m < M; ++m) sum = padd(sum, pmul(ploadu<Packet>(v + m * N + r), b[m]));
+      Packet x = psub(ploadu<Packet>(pc + r), sum);
+      if (a) x = padd(x, pmul(ploadu<Packet>(a->data() + r), ac));
+      pstoreu(pc + r, x);
+    }
+    for (; r < N; ++r) {
+      double sum = vt(r, 0) * vt(c, 0);
+      for (int m = 1; m < M; ++m) sum += vt(r, m) * vt(c, m);
+      double x = pc[r] - sum;
+      if (a) x += (*a)(r) * (*a)(c);
+      pc[r] = x;
+    }
+  }
+}
+
+}  // namespace detail
+
 /// Fuses one M-row block whose measurement Jacobian is zero outside columns [col, col + K),
 /// given as h (M x K), with diagonal noise variance, into P (p) and the state correction dx,
 /// which holds what the blocks before it corrected. innovation is the block's z - h(x) at the
@@ -28,11 +101,10 @@ struct BlindDirection {
 /// because K S K^T = K W = V^T V, the optimal update P - V^T V plus |V u|^2 v v^T, a rank-1
 /// update; so the blind update costs what the optimal one does.
 ///
-/// Everything N-long is worked on as a column: W^T = P H^T (P is symmetric) is a sum of K of P's
-/// columns, V^T = W^T L^-T a few more such sums, and the downdate subtracts M scaled columns of
-/// V^T from each column of P, all on contiguous memory; the M x M Cholesky factor and its solves
-/// are written out. P stays exactly symmetric: entry (i, c) and (c, i) subtract the same
-/// products in the same order.
+/// Everything N-long is worked on as columns, on contiguous memory and in SIMD packets: W^T =
+/// P H^T (P is symmetric), V^T = W^T L^-T, and the downdate P -= V^T V; the M x M Cholesky
+/// factor and its solves are written out. (Eigen's general kernels, and its coefficient-based
+/// products, cost several times the arithmetic at these sizes.)
 template <int M, int K, int N>
 bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
                const Eigen::Matrix<double, M, 1>& innovation,
@@ -41,11 +113,8 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   using Cols = Eigen::Matrix<double, N, M>;
   using SMat = Eigen::Matrix<double, M, M>;
   using MVec = Eigen::Matrix<double, M, 1>;
-  Cols wt;  // W^T = P H^T
-  for (int i = 0; i < M; ++i) {
-    wt.col(i) = h(i, 0) * p.col(col);
-    for (int k = 1; k < K; ++k) wt.col(i) += h(i, k) * p.col(col + k);
-  }
+  Cols wt;  // W^T = P H^T (P is symmetric): K of P's columns combined
+  detail::columnsTimesTranspose<M, K, N>(p.data() + col * N, h, wt);
   // S = H W^T + R and its Cholesky factor L (lower).
   SMat l = SMat::Zero();
   for (int j = 0; j < M; ++j) {
@@ -85,18 +154,14 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   Eigen::Matrix<double, N, 1> g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
   for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);
   if (!blind) {
-    for (int c = 0; c < N; ++c)
-      for (int m = 0; m < M; ++m) p.col(c) -= vt(c, m) * vt.col(m);
+    detail::symmetricDowndate<M, N>(vt, nullptr, p);
     dx += g;
     return true;
   }
   dx += g - blind->v * blind->u.dot(g);
   // P - V^T V + a a^T with a = |V u| v.
   const Eigen::Matrix<double, N, 1> a = (vt.transpose() * blind->u).norm() * blind->v;
-  for (int c = 0; c < N; ++c) {
-    for (int m = 0; m < M; ++m) p.col(c) -= vt(c, m) * vt.col(m);
-    p.col(c) += a(c) * a;
-  }
+  detail::symmetricDowndate<M, N>(vt, &a, p);
   return true;
 }
 
