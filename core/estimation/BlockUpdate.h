@@ -20,7 +20,7 @@ namespace detail {
 
 // Eigen's SIMD packet for doubles (two with SSE2; one double when vectorisation is off).
 using Packet = Eigen::internal::packet_traits<double>::type;
-inline constexpr int kPacket = Eigen::internal::unpacket_traits<Packet>::size;
+inline constexpr int kPacket = Eigen::internal::packet_traits<double>::size;
 
 // out.col(i) = sum_k a.col(k) * h(i, k) for i < M, k < K, where a holds K columns of length N
 // (column-major, leading dimension N): M x K multiply-adds per row, the M sums held in registers
