@@ -54,11 +54,11 @@ void columnsTimesTranspose(const double* a, const Eigen::Matrix<double, M, K>& h
     }
 }
 
-// p -= vt vt^T (+ a a^T when a is given), column by column. Entry (r, c) subtracts
+// p -= vt vt^T (+ a a^T WithA), column by column. Entry (r, c) subtracts
 // sum_m vt(r, m) vt(c, m) summed in the order of m, exactly what entry (c, r) subtracts, so a
 // symmetric p stays exactly symmetric.
-template <int M, int N>
-void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matrix<double, N, 1>* a,
+template <int M, int N, bool WithA>
+void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matrix<double, N, 1>& a,
                        Eigen::Matrix<double, N, N>& p) {
   using namespace Eigen::internal;
   const double* v = vt.data();
@@ -67,21 +67,21 @@ void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matri
     Packet b[M];
 #pragma GCC unroll 4
     for (int m = 0; m < M; ++m) b[m] = pset1<Packet>(vt(c, m));
-    const Packet ac = pset1<Packet>(a ? (*a)(c) : 0.0);
+    const Packet ac = pset1<Packet>(WithA ? a(c) : 0.0);
     int r = 0;
     for (; r + kPacket <= N; r += kPacket) {
       Packet sum = pmul(ploadu<Packet>(v + r), b[0]);
 #pragma GCC unroll 4
       for (int m = 1; m < M; ++m) sum = padd(sum, pmul(ploadu<Packet>(v + m * N + r), b[m]));
       Packet x = psub(ploadu<Packet>(pc + r), sum);
-      if (a) x = padd(x, pmul(ploadu<Packet>(a->data() + r), ac));
+      if constexpr (WithA) x = padd(x, pmul(ploadu<Packet>(a.data() + r), ac));
       pstoreu(pc + r, x);
     }
     for (; r < N; ++r) {
       double sum = vt(r, 0) * vt(c, 0);
       for (int m = 1; m < M; ++m) sum += vt(r, m) * vt(c, m);
       double x = pc[r] - sum;
-      if (a) x += (*a)(r) * (*a)(c);
+      if constexpr (WithA) x += a(r) * a(c);
       pc[r] = x;
     }
   }
@@ -154,14 +154,14 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   Eigen::Matrix<double, N, 1> g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
   for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);
   if (!blind) {
-    detail::symmetricDowndate<M, N>(vt, nullptr, p);
+    detail::symmetricDowndate<M, N, false>(vt, g, p);
     dx += g;
     return true;
   }
   dx += g - blind->v * blind->u.dot(g);
   // P - V^T V + a a^T with a = |V u| v.
   const Eigen::Matrix<double, N, 1> a = (vt.transpose() * blind->u).norm() * blind->v;
-  detail::symmetricDowndate<M, N>(vt, &a, p);
+  detail::symmetricDowndate<M, N, true>(vt, a, p);
   return true;
 }
 
