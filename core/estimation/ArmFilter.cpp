@@ -15,6 +15,7 @@
 #include "core/estimation/Heading.h"
 #include "core/estimation/Initializer.h"
 #include "core/estimation/MeasurementJacobian.h"
+#include "core/estimation/Transition.h"
 #include "core/estimation/WindowFit.h"
 
 namespace armtrack {
@@ -539,20 +540,9 @@ class ArmFilter final : public JointEstimator {
                            ? std::exp(-dt / m_p.jointAccelCorrelationTime)
                            : 1.0;
     const double phiB = kAugmented ? std::exp(-dt / m_p.bodyAccelCorrelationTime) : 0.0;
-    auto applyF = [&](auto& m) {  // rows of m: [a; v; th; b] -> F * m
-      const auto a = m.template middleRows<5>(0).eval();
-      const auto v = m.template middleRows<5>(5).eval();
-      m.template middleRows<5>(10) += dt * v + 0.5 * dt * dt * a;
-      m.template middleRows<5>(5) += dt * a;
-      m.template middleRows<5>(0) *= phi;
-      if constexpr (kAugmented) m.template bottomRows<N - kBase>() *= phiB;
-    };
-    applyF(m_x);
+    transitionRows(m_x, dt, phi, phiB);
     for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
-    applyF(m_P);
-    Mat pt = m_P.transpose();
-    applyF(pt);
-    m_P = pt.transpose();
+    transitionCovariance(m_P, dt, phi, phiB);
 
     const double var = m_t - m_t0 < m_p.startupSeconds
                            ? std::max(m_p.jointAccelVariance, m_p.startupJointAccelVariance)

@@ -3,8 +3,8 @@
 // batch update, at a third of the cost). Qt-free; no allocation.
 #pragma once
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <cmath>
 
 namespace armtrack {
 
@@ -15,6 +15,79 @@ struct BlindDirection {
   const Eigen::Matrix<double, N, 1>& v;  // the direction in the state
   const Eigen::Matrix<double, N, 1>& u;  // reads the component along v
 };
+
+namespace detail {
+
+// Eigen's SIMD packet for doubles (two with SSE2; one double when vectorisation is off).
+using Packet = Eigen::internal::packet_traits<double>::type;
+inline constexpr int kPacket = Eigen::internal::packet_traits<double>::size;
+
+// out.col(i) = sum_k a.col(k) * h(i, k) for i < M, k < K, where a holds K columns of length N
+// (column-major, leading dimension N): M x K multiply-adds per row, the M sums held in registers
+// while a's rows stream through once. Sums in the order of k.
+template <int M, int K, int N>
+void columnsTimesTranspose(const double* a, const Eigen::Matrix<double, M, K>& h,
+                           Eigen::Matrix<double, N, M>& out) {
+  using namespace Eigen::internal;
+  Packet hb[K][M];  // h's entries, each broadcast to a packet once
+  for (int k = 0; k < K; ++k)
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) hb[k][i] = pset1<Packet>(h(i, k));
+  int r = 0;
+  for (; r + kPacket <= N; r += kPacket) {
+    Packet acc[M];
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) acc[i] = pset1<Packet>(0.0);
+    for (int k = 0; k < K; ++k) {
+      const Packet x = ploadu<Packet>(a + k * N + r);
+#pragma GCC unroll 4
+      for (int i = 0; i < M; ++i) acc[i] = padd(acc[i], pmul(x, hb[k][i]));
+    }
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) pstoreu(out.data() + i * N + r, acc[i]);
+  }
+  for (; r < N; ++r)
+    for (int i = 0; i < M; ++i) {
+      double acc = 0.0;
+      for (int k = 0; k < K; ++k) acc += a[k * N + r] * h(i, k);
+      out(r, i) = acc;
+    }
+}
+
+// p -= vt vt^T (+ a a^T WithA), column by column. Entry (r, c) subtracts
+// sum_m vt(r, m) vt(c, m) summed in the order of m, exactly what entry (c, r) subtracts, so a
+// symmetric p stays exactly symmetric.
+template <int M, int N, bool WithA>
+void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matrix<double, N, 1>& a,
+                       Eigen::Matrix<double, N, N>& p) {
+  using namespace Eigen::internal;
+  const double* v = vt.data();
+  for (int c = 0; c < N; ++c) {
+    double* pc = p.data() + c * N;
+    Packet b[M];
+#pragma GCC unroll 4
+    for (int m = 0; m < M; ++m) b[m] = pset1<Packet>(vt(c, m));
+    const Packet ac = pset1<Packet>(WithA ? a(c) : 0.0);
+    int r = 0;
+    for (; r + kPacket <= N; r += kPacket) {
+      Packet sum = pmul(ploadu<Packet>(v + r), b[0]);
+#pragma GCC unroll 4
+      for (int m = 1; m < M; ++m) sum = padd(sum, pmul(ploadu<Packet>(v + m * N + r), b[m]));
+      Packet x = psub(ploadu<Packet>(pc + r), sum);
+      if constexpr (WithA) x = padd(x, pmul(ploadu<Packet>(a.data() + r), ac));
+      pstoreu(pc + r, x);
+    }
+    for (; r < N; ++r) {
+      double sum = vt(r, 0) * vt(c, 0);
+      for (int m = 1; m < M; ++m) sum += vt(r, m) * vt(c, m);
+      double x = pc[r] - sum;
+      if constexpr (WithA) x += a(r) * a(c);
+      pc[r] = x;
+    }
+  }
+}
+
+}  // namespace detail
 
 /// Fuses one M-row block whose measurement Jacobian is zero outside columns [col, col + K),
 /// given as h (M x K), with diagonal noise variance, into P (p) and the state correction dx,
@@ -27,33 +100,68 @@ struct BlindDirection {
 /// used and P follows it exactly: the Joseph form P + Kb S Kb^T - Kb W - W^T Kb^T equals,
 /// because K S K^T = K W = V^T V, the optimal update P - V^T V plus |V u|^2 v v^T, a rank-1
 /// update; so the blind update costs what the optimal one does.
+///
+/// Everything N-long is worked on as columns, on contiguous memory and in SIMD packets: W^T =
+/// P H^T (P is symmetric), V^T = W^T L^-T, and the downdate P -= V^T V; the M x M Cholesky
+/// factor and its solves are written out. (Eigen's general kernels, and its coefficient-based
+/// products, cost several times the arithmetic at these sizes.)
 template <int M, int K, int N>
 bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
                const Eigen::Matrix<double, M, 1>& innovation,
                const Eigen::Matrix<double, M, 1>& variance, const BlindDirection<N>* blind,
                Eigen::Matrix<double, N, N>& p, Eigen::Matrix<double, N, 1>& dx, double& nis) {
+  using Cols = Eigen::Matrix<double, N, M>;
   using SMat = Eigen::Matrix<double, M, M>;
-  // Thin products: coefficient-based evaluation beats Eigen's blocked kernels at these sizes.
-  const Eigen::Matrix<double, M, N> w = h.lazyProduct(p.template middleRows<K>(col));  // H P
-  SMat s = w.template middleCols<K>(col).lazyProduct(h.transpose());
-  s.diagonal() += variance;
-  const Eigen::LLT<SMat> llt(s);
-  if (llt.info() != Eigen::Success) return false;
-  const Eigen::Matrix<double, M, 1> r = innovation - h.lazyProduct(dx.template segment<K>(col));
-  const Eigen::Matrix<double, M, 1> sr = llt.solve(r);
+  using MVec = Eigen::Matrix<double, M, 1>;
+  Cols wt;  // W^T = P H^T (P is symmetric): K of P's columns combined
+  detail::columnsTimesTranspose<M, K, N>(p.data() + col * N, h, wt);
+  // S = H W^T + R and its Cholesky factor L (lower).
+  SMat l = SMat::Zero();
+  for (int j = 0; j < M; ++j) {
+    for (int i = j; i < M; ++i) {
+      double sij = h.row(i).dot(wt.col(j).template segment<K>(col));
+      if (i == j) sij += variance(i);
+      for (int k = 0; k < j; ++k) sij -= l(i, k) * l(j, k);
+      if (i == j) {
+        if (!(sij > 0.0)) return false;
+        l(j, j) = std::sqrt(sij);
+      } else {
+        l(i, j) = sij / l(j, j);
+      }
+    }
+  }
+  // r, y = L^-1 r and S^-1 r = L^-T y.
+  const MVec r = innovation - h * dx.template segment<K>(col);
+  MVec sr;
+  for (int i = 0; i < M; ++i) {
+    double y = r(i);
+    for (int k = 0; k < i; ++k) y -= l(i, k) * sr(k);
+    sr(i) = y / l(i, i);
+  }
+  for (int i = M - 1; i >= 0; --i) {
+    double y = sr(i);
+    for (int k = i + 1; k < M; ++k) y -= l(k, i) * sr(k);
+    sr(i) = y / l(i, i);
+  }
   nis = r.dot(sr);
-  const Eigen::Matrix<double, M, N> v = llt.matrixL().solve(w);
-  // P -= V^T V, the lower triangle computed and mirrored: half the work, exactly symmetric.
-  for (int c = 0; c < N; ++c)
-    for (int i = c; i < N; ++i) p(i, c) = p(c, i) = p(i, c) - v.col(i).dot(v.col(c));
-  if (blind) {
-    const Eigen::Matrix<double, N, 1> g = w.transpose() * sr;  // K r
-    dx.noalias() += g - blind->v * blind->u.dot(g);
-    const Eigen::Matrix<double, N, 1> a = (v * blind->u).norm() * blind->v;
-    p.noalias() += a * a.transpose();
+  // V^T = W^T L^-T, column by column.
+  Cols vt;
+  for (int j = 0; j < M; ++j) {
+    vt.col(j) = wt.col(j);
+    for (int k = 0; k < j; ++k) vt.col(j) -= l(j, k) * vt.col(k);
+    vt.col(j) /= l(j, j);
+  }
+  Eigen::Matrix<double, N, 1> g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
+  for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);
+  if (!blind) {
+    detail::symmetricDowndate<M, N, false>(vt, g, p);
+    dx += g;
     return true;
   }
-  dx.noalias() += w.transpose() * sr;
+  dx += g - blind->v * blind->u.dot(g);
+  // P - V^T V + a a^T with a = |V u| v.
+  const Eigen::Matrix<double, N, 1> a = (vt.transpose() * blind->u).norm() * blind->v;
+  detail::symmetricDowndate<M, N, true>(vt, a, p);
   return true;
 }
 

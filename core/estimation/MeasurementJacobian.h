@@ -22,9 +22,9 @@ using ModelJacobian = Eigen::Matrix<double, kMeasurementModelRows, kMeasurementS
 /// Predicted readings h(x) for the state x (gyroscopes rad/s, accelerometers m/s^2 as specific
 /// force: g up plus, when bodyAccel, the body acceleration; positions m in frame 0), and when jac
 /// is given, dh/dx. gUp is g times the unit vector up in frame 0 (m/s^2). Forward-mode
-/// differentiation written out for the arm: each frame carries its motion's derivatives only with
-/// respect to the joints before it, angular velocity none with respect to accelerations, gravity
-/// only with respect to angles, and positions only with respect to angles.
+/// differentiation written out for the arm, in place on one frame per chain: each frame's
+/// derivatives are computed only for the joints before it, gravity's only with respect to angles,
+/// positions' only with respect to angles, and the body acceleration only when bodyAccel.
 void predictReadings(const ArmGeometry& geometry, const Eigen::Vector3d& gUp, bool bodyAccel,
                      const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
                      ModelJacobian* jac);

@@ -71,6 +71,9 @@ class FrameWriter {
   }
   std::string finish() {
     compress(ZSTD_e_end);
+    // The frame grew by doubling: up to twice its size is reserved, and an analysis holds it
+    // while the metrics are computed.
+    m_frame.shrink_to_fit();
     return std::move(m_frame);
   }
 

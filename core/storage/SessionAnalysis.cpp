@@ -48,6 +48,8 @@ MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVecto
                       qint64 sessionId, bool withSd = true) {
   std::vector<double> mt;
   std::vector<JointVector> mth;
+  mt.reserve(t.size());
+  mth.reserve(t.size());
   MetricRows out;
   double settledFrom = -std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < t.size(); ++i) {
@@ -324,6 +326,11 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
   const MetricRows settled =
       metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId, /*withSd=*/false);
+  // The estimates are compressed now and their columns released (92 bytes a row), so that the
+  // metrics below do not hold them too (docs/storage.md, "Memory of an analysis").
+  const std::size_t estimateRows = rows.size();
+  const std::string blob = EstimateCodec::encode(rows);
+  rows = {};
   try {
     result.metrics = computeSessionMetrics(settled.series, mp);
   } catch (const std::invalid_argument& e) {
@@ -346,14 +353,13 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
            {"settings", result.settingsSource},
            {"optical_used", st.opticalUsed},
            {"library_version", ARMTRACK_VERSION},
-           {"rows", static_cast<qint64>(rows.size())},
+           {"rows", static_cast<qint64>(estimateRows)},
            {"recording_rows", static_cast<qint64>(st.rows)},
            {"imu_rows", static_cast<qint64>(st.imuRows)},
            {"predicted", static_cast<qint64>(st.predicted)},
            {"restarts", static_cast<qint64>(st.counters.restarts)},
            {"recoveries", static_cast<qint64>(st.counters.recoveries)}})
     paramsJson.insert(key, value);
-  const std::string blob = EstimateCodec::encode(rows);
   result.estimateVersion = store.saveEstimates(
       sessionId, QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
       EstimateCodec::kName, QByteArray(blob.data(), static_cast<qsizetype>(blob.size())));
