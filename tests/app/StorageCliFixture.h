@@ -14,14 +14,12 @@
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/app/CliRun.h"
 #include "tests/support/DatabaseEngines.h"
 
 namespace armtrack::test {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
+using Result = CliResult;
 
 inline constexpr const char* kAdminPass = "admin-pass-1";
 
@@ -52,9 +50,7 @@ class CliFixture : public ::testing::Test {
       args.push_back(user);
       ::setenv("ARMTRACK_PASSWORD", password, 1);
     }
-    std::ostringstream out, err;
-    const int code = armtrack::cli::runCli(args, out, err);
-    return {code, out.str(), err.str()};
+    return cli(args);
   }
   std::string path(const char* name) const { return m_dir.filePath(name).toStdString(); }
   std::string simulate(const char* name, double seconds) {

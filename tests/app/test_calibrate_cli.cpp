@@ -21,16 +21,14 @@
 #include "core/calibration/Calibrator.h"
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
+#include "tests/app/CliRun.h"
 
 namespace fs = std::filesystem;
 
 namespace armtrack {
 namespace {
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
+using armtrack::test::CliResult;
 
 CliResult calibrateCli(const std::vector<std::string>& args) {
   std::ostringstream out, err;

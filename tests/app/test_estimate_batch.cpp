@@ -15,22 +15,14 @@
 
 #include "app/cli/Cli.h"
 #include "core/io/Recording.h"
+#include "tests/app/CliRun.h"
 
 namespace fs = std::filesystem;
-using armtrack::cli::runCli;
 
 namespace {
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
-
-CliResult cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using armtrack::test::cli;
+using armtrack::test::CliResult;
 
 std::string slurp(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

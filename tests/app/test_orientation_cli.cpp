@@ -14,25 +14,17 @@
 #include <vector>
 
 #include "app/cli/Cli.h"
+#include "tests/app/CliRun.h"
 
 namespace fs = std::filesystem;
-using armtrack::cli::runCli;
 
 namespace {
 
 constexpr double kG = 9.81;
 constexpr double kToRad = std::numbers::pi / 180.0;
 
-struct CliResult {
-  int code;
-  std::string out, err;
-};
-
-CliResult cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = runCli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using armtrack::test::cli;
+using armtrack::test::CliResult;
 
 std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
   std::ifstream in(p);
