@@ -9,7 +9,9 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_BUILD_DIR:-$root/build}"
 
 bash "$root/packaging/deps-debian12.sh"
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DARMTRACK_GUI=ON
+# The test script's configuration (packaging/configure-build.sh); BUILD_TESTING is left as the
+# folder has it, so the app after the tests, or the tests after the app, rebuild nothing shared.
+bash "$root/packaging/configure-build.sh" "$root" "$build"
 cmake --build "$build" --parallel "$(nproc)" --target armtrack armtrack-cli \
   armtrack_plugin_virtual-arm armtrack_plugin_replay
 

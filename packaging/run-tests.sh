@@ -6,14 +6,8 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_BUILD_DIR:-$root/build}"
 
 bash "$root/packaging/deps-debian12.sh"
-# The test build carries no debug information. Every test executable links the core library
-# statically, and with -g each held its own copy of that library's debug information (about
-# 290 MB apiece, 12.7 GB for the build), which filled the CI machine's disk. -O2, as in the
-# default RelWithDebInfo build, so the figures and the numerical results are the same.
-# Warnings are errors here, so a change that adds one fails the tests (a user's build only warns).
-cmake -S "$root" -B "$build" -G Ninja -DBUILD_TESTING=ON -DARMTRACK_GUI=ON \
-  -DARMTRACK_WARNINGS_AS_ERRORS=ON -DCMAKE_BUILD_TYPE=Release \
-  -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG"
+# The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests.
+bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON
 cmake --build "$build" --parallel "$(nproc)"
 
 # Benchmarks are figures, not pass/fail: print them before the test summary.
