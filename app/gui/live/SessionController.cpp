@@ -50,7 +50,7 @@ void SessionController::start(const LiveSessionConfig& config,
     emit started(tr("a session is already running; stop it first"));
     return;
   }
-  m_busy = true;
+  setBusy(true);
   m_stopWhenStarted = false;
   {
     std::lock_guard lock(m_layoutMutex);
@@ -63,7 +63,7 @@ void SessionController::startInThread(LiveSessionConfig config,
                                       std::shared_ptr<RecordingGate> gate) {
   auto fail = [this](const QString& why) {
     QMetaObject::invokeMethod(this, [this, why] {
-      m_busy = false;
+      setBusy(false);
       emit started(why);
     });
   };
@@ -133,10 +133,16 @@ void SessionController::stop() {
     const session::SessionStats st = s->stats();
     s.reset();  // devices and threads go away here, not on the GUI thread
     QMetaObject::invokeMethod(this, [this, st] {
-      m_busy = false;
+      setBusy(false);
       emit stopped(st.recordedRows, st.rowsToRecord, QString::fromStdString(st.recorderError));
     });
   });
+}
+
+void SessionController::setBusy(bool busy) {
+  if (m_busy == busy) return;
+  m_busy = busy;
+  emit busyChanged(busy);
 }
 
 }  // namespace armtrack::app::gui

@@ -53,9 +53,13 @@ class SessionController : public QObject {
   void stopped(quint64 recordedRows, quint64 rowsToRecord, const QString& recorderError);
   void deviceStateChanged(int device, armtrack::DeviceState state, const QString& reason);
   void problem(const QString& message);
+  /// busy() changed: true from start(), false once the devices of a stopped (or failed) session
+  /// are released. Screens keep their start buttons off while it is true.
+  void busyChanged(bool busy);
 
  private:
   void startInThread(LiveSessionConfig config, std::shared_ptr<RecordingGate> gate);
+  void setBusy(bool busy);
 
   const PluginRegistry& m_registry;
   QThread m_thread;

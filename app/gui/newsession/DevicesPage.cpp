@@ -98,6 +98,9 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
     }
     m_timer.start(100);
   });
+  // Off between a finished check and its devices being released (well under a second): a check
+  // started then would be refused.
+  connect(m_controller, &SessionController::busyChanged, this, &DevicesPage::updateCheckButton);
   connect(m_controller, &SessionController::deviceStateChanged, m_health,
           &ui::DeviceHealthPanel::setDeviceState);
   connect(&m_timer, &QTimer::timeout, this, &DevicesPage::drain);
@@ -193,6 +196,7 @@ void DevicesPage::startCheck() {
   m_health->clear();
   m_signal->setSample(nullptr);
   m_check->setText(tr("Stop &check"));
+  updateCheckButton();
   showStatus([] { return tr("Starting the devices\u2026"); });
   m_controller->start(c, nullptr);
 }
@@ -249,6 +253,10 @@ void DevicesPage::drain() {
   }
 }
 
+void DevicesPage::updateCheckButton() {
+  m_check->setEnabled(m_checking || !m_controller->busy());
+}
+
 void DevicesPage::stopCheck() {
   if (!m_checking) return;
   finishCheck([] { return tr("Check stopped."); });
@@ -259,6 +267,7 @@ void DevicesPage::finishCheck(std::function<QString()> message) {
   m_controller->stop();
   m_checking = false;
   m_check->setText(tr("&Check connection"));
+  updateCheckButton();
   showStatus(std::move(message));
   emit checkFinished(m_checkPassed, m_status->text());
 }

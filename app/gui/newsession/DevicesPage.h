@@ -65,6 +65,7 @@ class DevicesPage : public QWidget {
   void showPlugin(QListWidgetItem* item);
   void drain();
   void finishCheck(std::function<QString()> message);
+  void updateCheckButton();
 
   const PluginRegistry& m_registry;
   LiveSessionConfig m_base;

@@ -150,6 +150,8 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
             }
             solve();
           });
+  connect(m_controller, &SessionController::busyChanged, this,
+          &SensorCalibrationPage::updateStartButton);
   connect(&m_timer, &QTimer::timeout, this, &SensorCalibrationPage::drain);
   showStep([] { return tr("Sensor calibration"); },
            [] {
@@ -212,10 +214,18 @@ bool SensorCalibrationPage::isComplete() const {
 
 void SensorCalibrationPage::setState(State s) {
   m_state = s;
-  m_start->setEnabled(s == State::Ready || s == State::Done || s == State::Failed);
+  updateStartButton();
   m_start->setText(s == State::Ready ? tr("&Start") : tr("&Redo"));
   m_cancel->setEnabled(s == State::Recording || s == State::Solving);
   emit completeChanged();
+}
+
+void SensorCalibrationPage::updateStartButton() {
+  // Off while a cancelled recording still holds the devices (well under a second): a start then
+  // would be refused.
+  m_start->setEnabled(
+      (m_state == State::Ready || m_state == State::Done || m_state == State::Failed) &&
+      !m_controller->busy());
 }
 
 void SensorCalibrationPage::start() {

@@ -82,6 +82,7 @@ class SensorCalibrationPage : public QWidget {
   void showStep(Text title, Text instruction);
   void showVerdict(Text verdict);
   void setState(State s);
+  void updateStartButton();
   void drain();
   void solve();
 
