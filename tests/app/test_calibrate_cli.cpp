@@ -22,6 +22,7 @@
 #include "core/io/Recording.h"
 #include "core/simulation/SensorSimulator.h"
 #include "tests/app/CliRun.h"
+#include "tests/support/TempDirTest.h"
 
 namespace fs = std::filesystem;
 
@@ -51,19 +52,9 @@ CliResult runCli(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
-class CalibrateCliTest : public ::testing::Test {
+class CalibrateCliTest : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("armtrack_calib_cli_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
-  fs::path path(const std::string& name) const { return m_dir / name; }
-
-  fs::path m_dir;
+  CalibrateCliTest() : TempDirTest("armtrack_calib_cli_") {}
 };
 
 TEST_F(CalibrateCliTest, CalibratesASimulatedProtocolRecording) {

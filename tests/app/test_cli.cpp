@@ -2,7 +2,6 @@
 // note, and the exit codes and messages of bad input.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -15,6 +14,7 @@
 #include "app/cli/Estimate.h"
 #include "core/io/Recording.h"
 #include "tests/app/CliRun.h"
+#include "tests/support/TempDirTest.h"
 
 namespace fs = std::filesystem;
 using armtrack::cli::runCli;
@@ -32,18 +32,9 @@ std::vector<std::string> readLines(const fs::path& p) {
 }
 
 /// A scratch directory per test, with a 6 s and a 3 s multi-joint recording made on demand.
-class CliTest : public ::testing::Test {
+class CliTest : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("armtrack_cli_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
-
-  fs::path path(const std::string& name) const { return m_dir / name; }
+  CliTest() : TempDirTest("armtrack_cli_") {}
 
   fs::path simulated(double duration) {
     const fs::path p = path("rec" + std::to_string(static_cast<int>(duration)) + ".csv");
@@ -54,8 +45,6 @@ class CliTest : public ::testing::Test {
     }
     return p;
   }
-
-  fs::path m_dir;
 };
 
 TEST_F(CliTest, SimulateThenEstimateRoundTrip) {
@@ -200,8 +189,7 @@ TEST_F(CliTest, MessagesFitTheRecording) {
   const CliResult s = cli({"estimate", shortRec.string()});
   ASSERT_EQ(s.code, 0) << s.err;
   EXPECT_EQ(s.err.find("no true angles in the recording"), std::string::npos) << s.err;
-  EXPECT_NE(s.err.find("every estimate with true angles lies in the first 1 s"),
-            std::string::npos)
+  EXPECT_NE(s.err.find("every estimate with true angles lies in the first 1 s"), std::string::npos)
       << s.err;
 }
 

@@ -3,8 +3,6 @@
 // not stop the others, and the exit status says that one failed.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <fstream>
 #include <iterator>
@@ -16,6 +14,7 @@
 #include "app/cli/Cli.h"
 #include "core/io/Recording.h"
 #include "tests/app/CliRun.h"
+#include "tests/support/TempDirTest.h"
 
 namespace fs = std::filesystem;
 
@@ -35,18 +34,13 @@ std::set<std::string> filesIn(const fs::path& dir) {
   return names;
 }
 
-class EstimateBatchTest : public ::testing::Test {
+class EstimateBatchTest : public armtrack::test::TempDirTest {
  protected:
+  EstimateBatchTest() : TempDirTest("armtrack_batch_") {}
   void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("armtrack_batch_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(m_dir);
+    TempDirTest::SetUp();
     fs::create_directories(m_dir / "in");
   }
-  void TearDown() override { fs::remove_all(m_dir); }
-
-  fs::path path(const std::string& name) const { return m_dir / name; }
 
   /// Recordings of different kinds in in/: Kinect, IMUs only, webcam, a left arm.
   std::vector<fs::path> goodRecordings() {
@@ -84,8 +78,6 @@ class EstimateBatchTest : public ::testing::Test {
     fs::copy_file(armtrack::sidecarPath(good), armtrack::sidecarPath(p));
     return p;
   }
-
-  fs::path m_dir;
 };
 
 const std::vector<std::string> kOptions = {"--joint-accel-std", "10"};

@@ -3,7 +3,6 @@
 // what was rejected is counted and placed.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
 #include <Eigen/Geometry>
 #include <cmath>
 #include <filesystem>
@@ -15,6 +14,7 @@
 
 #include "app/cli/Cli.h"
 #include "tests/app/CliRun.h"
+#include "tests/support/TempDirTest.h"
 
 namespace fs = std::filesystem;
 
@@ -38,18 +38,9 @@ std::vector<std::vector<std::string>> readCsv(const fs::path& p) {
   return rows;
 }
 
-class OrientationCliTest : public ::testing::Test {
+class OrientationCliTest : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    m_dir = fs::temp_directory_path() /
-            ("armtrack_orient_cli_" + std::to_string(::getpid()) + "_" + info->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
-  fs::path path(const std::string& name) const { return m_dir / name; }
-  fs::path m_dir;
+  OrientationCliTest() : TempDirTest("armtrack_orient_cli_") {}
 };
 
 // 200 Hz, a sensor turning about x at 0.5 rad/s from level; rows `spikes` get gyr_x = value, and

@@ -3,8 +3,6 @@
 // trajectory.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +13,7 @@
 #include "core/calibration/Calibrator.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/support/TempDirTest.h"
 
 namespace fs = std::filesystem;
 
@@ -180,18 +179,13 @@ TEST(CalibrationApply, RejectsTheOtherArm) {
   EXPECT_EQ(p.geometry.lu3, 0.12);
 }
 
-class CalibrationFile : public ::testing::Test {
+class CalibrationFile : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    m_dir = fs::temp_directory_path() / ("armtrack_calib_" + std::to_string(::getpid()));
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
+  CalibrationFile() : TempDirTest("armtrack_calib_") {}
   fs::path write(const std::string& name, const std::string& text) {
     std::ofstream(m_dir / name) << text;
     return m_dir / name;
   }
-  fs::path m_dir;
 };
 
 TEST_F(CalibrationFile, RoundTrip) {

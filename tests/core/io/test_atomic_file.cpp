@@ -2,30 +2,22 @@
 // never stay behind.
 #include <gtest/gtest.h>
 
-#include <unistd.h>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 
 #include "core/io/AtomicFile.h"
+#include "tests/support/TempDirTest.h"
 
 namespace armtrack {
 namespace {
 
 namespace fs = std::filesystem;
 
-class AtomicFileTest : public testing::Test {
+class AtomicFileTest : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    m_dir =
-        fs::temp_directory_path() / ("armtrack_atomic_" + std::to_string(::getpid()) + "_" +
-                                     testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(m_dir);
-    fs::create_directories(m_dir);
-  }
-  void TearDown() override { fs::remove_all(m_dir); }
+  AtomicFileTest() : TempDirTest("armtrack_atomic_") {}
 
   std::string read(const fs::path& p) const {
     std::ifstream in(p, std::ios::binary);
@@ -38,7 +30,6 @@ class AtomicFileTest : public testing::Test {
     for ([[maybe_unused]] const auto& e : fs::directory_iterator(m_dir)) ++n;
     return n;
   }
-  fs::path m_dir;
 };
 
 TEST_F(AtomicFileTest, CommitReplacesTheTargetAndLeavesNoTemporaryFile) {
