@@ -83,10 +83,19 @@ void AppController::start() {
 
 void AppController::quitAfterLimit() {
   if (!m_options.screenshot.isEmpty()) saveWindowImage(m_options.screenshot);
-  if (!m_options.quitWhenLive) return QApplication::quit();
+  if (!m_options.quitWhenLive) return quitApplication(0);
   std::fprintf(stderr, "armtrack: no live session showed estimates within %g s\n",
                m_options.quitAfterSeconds);
-  QApplication::exit(1);
+  quitApplication(1);
+}
+
+void AppController::quitApplication(int code) {
+  if (m_home) {
+    m_quitCode = code;
+    m_home->window()->close();  // closeHome() ends the application once it has closed
+    return;
+  }
+  code == 0 ? QApplication::quit() : QApplication::exit(code);
 }
 
 void AppController::quitOnceLive(QWidget* screen) {
@@ -481,6 +490,11 @@ void AppController::closeHome() {
   if (!m_home) return;
   // Not from inside the controller's own signal.
   QTimer::singleShot(0, this, [this] {
+    if (m_quitCode) {
+      m_home.reset();
+      QApplication::exit(*m_quitCode);
+      return;
+    }
     m_window->show();  // first, so that the application does not end with its last window
     m_home.reset();
     signOut();

@@ -96,8 +96,14 @@ class AppController : public QObject {
   void quitOnceLive(QWidget* screen);
   /// --quit-after: saves --screenshot and quits (status 1 with --quit-when-live: not live).
   void quitAfterLimit();
+  /// Ends the application with status code. The home window is closed as its own close button
+  /// would (an exercise under way kept as interrupted, the results saved) and the application
+  /// ends once it has: a plain quit() was refused by the home window, which ignores the close
+  /// event until it has done so, and the application never ended.
+  void quitApplication(int code);
 
   AppOptions m_options;
+  std::optional<int> m_quitCode;  // quitApplication() waits for the home window to close
   std::optional<storage::DatabaseUrl> m_demoUrl;  // in demo mode
   AppSettings m_settings;
   app::PluginRegistry m_plugins;

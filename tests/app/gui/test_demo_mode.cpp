@@ -122,6 +122,23 @@ class TestDemoMode : public QObject {
     QVERIFY2(colours.size() > 20, qPrintable(QString::number(colours.size())));
   }
 
+  // The home window ignores a plain close until it has ended its exercise and saved: an
+  // unattended home run used to save its picture and then never end.
+  void homeRunsUnattendedAndQuits() {
+    const QString shot = m_dir.filePath(QStringLiteral("home.png"));
+    const GuiRun r =
+        runGui({QStringLiteral("--home"), QStringLiteral("--demo"), QStringLiteral("--db"),
+                m_dir.filePath(QStringLiteral("home.db")), QStringLiteral("--quit-after"),
+                QStringLiteral("8"), QStringLiteral("--screenshot"), shot},
+               60000);
+    QVERIFY2(r.finished, "still running 60 s after --quit-after 8");
+    QCOMPARE(r.status, QProcess::NormalExit);
+    QVERIFY2(r.code == 0, qPrintable(r.err));
+    const QImage image(shot);
+    QVERIFY(!image.isNull());
+    QVERIFY(image.width() >= 900 && image.height() >= 600);
+  }
+
   // --quit-when-live: how the package's install test knows the installed program reached the
   // live screen (tests/packaging): it quits on the condition, not after a guessed time.
   void quitsOnceTheLiveSessionShowsEstimates() {
