@@ -1543,14 +1543,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
 <context>
     <name>armtrack::gui::ProgressChart</name>
     <message>
-        <source>&amp;Angle:</source>
-        <translation>&amp;Winkel:</translation>
-    </message>
-    <message>
-        <source>Angle shown in the progress chart</source>
-        <translation>Im Verlaufsdiagramm gezeigter Winkel</translation>
-    </message>
-    <message>
         <source>Progress chart</source>
         <translation>Verlaufsdiagramm</translation>
     </message>
@@ -1596,10 +1588,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <translation>d. MMM</translation>
     </message>
     <message>
-        <source>The largest angle reached per session, in the direction of the angle&apos;s name, against date; the table beside it holds the same values.</source>
-        <translation>Größter erreichter Winkel je Sitzung, in der Richtung, nach der der Winkel benannt ist, über dem Datum; die Tabelle daneben enthält dieselben Werte.</translation>
-    </message>
-    <message>
         <source>Largest (%1)</source>
         <translation>Größter Winkel (%1)</translation>
     </message>
@@ -1610,6 +1598,54 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Largest angle (%1)</source>
         <translation>Größter Winkel (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Motion:</source>
+        <translation>Be&amp;wegung:</translation>
+    </message>
+    <message>
+        <source>Motion shown in the progress chart</source>
+        <translation>Im Verlaufsdiagramm gezeigte Bewegung</translation>
+    </message>
+    <message>
+        <source>The largest angle reached per session in the chosen motion, against date; the table beside it holds the same values.</source>
+        <translation>Größter erreichter Winkel je Sitzung in der gewählten Bewegung, über dem Datum; die Tabelle daneben enthält dieselben Werte.</translation>
+    </message>
+    <message>
+        <source>Shoulder extension</source>
+        <translation>Schulterextension</translation>
+    </message>
+    <message>
+        <source>Shoulder external rotation</source>
+        <translation>Schulteraußenrotation</translation>
+    </message>
+    <message>
+        <source>Forearm supination</source>
+        <translation>Unterarmsupination</translation>
+    </message>
+    <message>
+        <source>%1, opposite direction</source>
+        <translation>%1, Gegenrichtung</translation>
+    </message>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Schulterflexion</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Schulterabduktion</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Schulterinnenrotation</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Ellenbogenflexion</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Unterarmpronation</translation>
     </message>
 </context>
 <context>

@@ -1543,14 +1543,6 @@ Puede recalcularla desde su revisión.</translation>
 <context>
     <name>armtrack::gui::ProgressChart</name>
     <message>
-        <source>&amp;Angle:</source>
-        <translation>Á&amp;ngulo:</translation>
-    </message>
-    <message>
-        <source>Angle shown in the progress chart</source>
-        <translation>Ángulo mostrado en la gráfica de evolución</translation>
-    </message>
-    <message>
         <source>Progress chart</source>
         <translation>Gráfica de evolución</translation>
     </message>
@@ -1596,10 +1588,6 @@ Puede recalcularla desde su revisión.</translation>
         <translation>d MMM</translation>
     </message>
     <message>
-        <source>The largest angle reached per session, in the direction of the angle&apos;s name, against date; the table beside it holds the same values.</source>
-        <translation>Ángulo máximo alcanzado en cada sesión, en la dirección que da nombre al ángulo, según la fecha; la tabla de al lado contiene los mismos valores.</translation>
-    </message>
-    <message>
         <source>Largest (%1)</source>
         <translation>Máximo (%1)</translation>
     </message>
@@ -1610,6 +1598,54 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Largest angle (%1)</source>
         <translation>Ángulo máximo (%1)</translation>
+    </message>
+    <message>
+        <source>&amp;Motion:</source>
+        <translation>&amp;Movimiento:</translation>
+    </message>
+    <message>
+        <source>Motion shown in the progress chart</source>
+        <translation>Movimiento mostrado en la gráfica de evolución</translation>
+    </message>
+    <message>
+        <source>The largest angle reached per session in the chosen motion, against date; the table beside it holds the same values.</source>
+        <translation>El mayor ángulo alcanzado en cada sesión en el movimiento elegido, frente a la fecha; la tabla de al lado contiene los mismos valores.</translation>
+    </message>
+    <message>
+        <source>Shoulder extension</source>
+        <translation>Extensión de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder external rotation</source>
+        <translation>Rotación externa de hombro</translation>
+    </message>
+    <message>
+        <source>Forearm supination</source>
+        <translation>Supinación del antebrazo</translation>
+    </message>
+    <message>
+        <source>%1, opposite direction</source>
+        <translation>%1, sentido opuesto</translation>
+    </message>
+    <message>
+        <source>Shoulder flexion</source>
+        <translation>Flexión de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder abduction</source>
+        <translation>Abducción de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder internal rotation</source>
+        <translation>Rotación interna de hombro</translation>
+    </message>
+    <message>
+        <source>Elbow flexion</source>
+        <translation>Flexión de codo</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <translation>Pronación del antebrazo</translation>
     </message>
 </context>
 <context>

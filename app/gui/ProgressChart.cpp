@@ -37,7 +37,13 @@ ProgressChart::ProgressChart(QWidget* parent)
   auto* top = new QHBoxLayout;
   m_angleLabel = new QLabel(this);
   m_angleLabel->setBuddy(m_angle);
-  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->addItem(QString(), i);
+  // Each angle's named direction, then its opposite where the normal range gives a limit for it
+  // (not shoulder adduction, which has none, nor elbow extension, whose normal end is 0).
+  for (const NormativeRange& r : aaosNormativeRanges()) {
+    m_motions.push_back({r.angle, false});
+    if (r.minRad && *r.minRad < 0) m_motions.push_back({r.angle, true});
+  }
+  for (std::size_t i = 0; i < m_motions.size(); ++i) m_angle->addItem(QString());
   top->addWidget(m_angleLabel);
   top->addWidget(m_angle);
   top->addStretch();
@@ -58,13 +64,14 @@ ProgressChart::ProgressChart(QWidget* parent)
 }
 
 void ProgressChart::retranslateUi() {
-  m_angleLabel->setText(tr("&Angle:"));
-  for (int i = 0; i < kNumClinicalAngles; ++i) m_angle->setItemText(i, angleName(i));
-  m_angle->setAccessibleName(tr("Angle shown in the progress chart"));
+  m_angleLabel->setText(tr("&Motion:"));
+  for (std::size_t i = 0; i < m_motions.size(); ++i)
+    m_angle->setItemText(static_cast<int>(i), nameOf(m_motions[i]));
+  m_angle->setAccessibleName(tr("Motion shown in the progress chart"));
   m_view->setAccessibleName(tr("Progress chart"));
   m_view->setAccessibleDescription(
-      tr("The largest angle reached per session, in the direction of the angle's name, against "
-         "date; the table beside it holds the same values."));
+      tr("The largest angle reached per session in the chosen motion, against date; the table "
+         "beside it holds the same values."));
   m_tableView->setAccessibleName(tr("Progress values"));
   redraw();  // titles, series, axes and the table's header in the new words and number format
 }
@@ -86,12 +93,60 @@ void ProgressChart::setRadians(bool radians) {
   redraw();
 }
 
+QString ProgressChart::nameOf(const Motion& m) {
+  // Named here rather than by the angle's name, which names the whole axis in some languages
+  // ("Pronation/Supination"): each entry is one direction.
+  switch (m.angle * 2 + (m.opposite ? 1 : 0)) {
+    case 0:
+      return tr("Shoulder flexion");
+    case 1:
+      return tr("Shoulder extension");
+    case 2:
+      return tr("Shoulder abduction");
+    case 4:
+      return tr("Shoulder internal rotation");
+    case 5:
+      return tr("Shoulder external rotation");
+    case 6:
+      return tr("Elbow flexion");
+    case 8:
+      return tr("Forearm pronation");
+    case 9:
+      return tr("Forearm supination");
+    default:
+      return tr("%1, opposite direction").arg(angleName(m.angle));
+  }
+}
+
 void ProgressChart::setAngle(int index) {
-  m_angle->setCurrentIndex(std::clamp(index, 0, kNumClinicalAngles - 1));
+  setMotion(index, false);
+}
+
+void ProgressChart::setMotion(int index, bool opposite) {
+  const int angle = std::clamp(index, 0, kNumClinicalAngles - 1);
+  int chosen = -1;
+  for (std::size_t i = 0; i < m_motions.size(); ++i)
+    if (m_motions[i].angle == angle && (chosen < 0 || m_motions[i].opposite == opposite))
+      chosen = static_cast<int>(i);
+  m_angle->setCurrentIndex(chosen);
+}
+
+ProgressChart::Motion ProgressChart::current() const {
+  const int i = m_angle->currentIndex();
+  return i >= 0 && i < static_cast<int>(m_motions.size()) ? m_motions[static_cast<std::size_t>(i)]
+                                                          : Motion{};
 }
 
 int ProgressChart::angle() const {
-  return m_angle->currentIndex();
+  return current().angle;
+}
+
+bool ProgressChart::opposite() const {
+  return current().opposite;
+}
+
+QString ProgressChart::motionName() const {
+  return nameOf(current());
 }
 
 int ProgressChart::points() const {
@@ -103,19 +158,23 @@ QChart* ProgressChart::chart() const {
 }
 
 void ProgressChart::redraw() {
-  const int a = std::max(0, angle());
+  const Motion motion = current();
+  const int a = motion.angle;
   const NormativeRange& normal = aaosNormativeRanges()[static_cast<std::size_t>(a)];
   // Drawn in the unit of the settings: "deg" values are radians * scale.
   const double scale = m_radians ? 1.0 : kRadToDeg;
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
-  // The largest angle in the named direction (flexion, not flexion + extension) against that
-  // motion's normal range from the neutral position.
-  const double normalDeg = namedMotionNormalRad(normal) * scale;
+  // The largest angle in the chosen direction (flexion, not flexion + extension) against that
+  // motion's normal range from the neutral position. The opposite direction is the signed axis'
+  // negative side: its largest angle is minus the session's smallest.
+  const double normalRad =
+      motion.opposite ? -normal.minRad.value_or(0.0) : namedMotionNormalRad(normal);
+  const double normalDeg = normalRad * scale;
 
   auto* chart = new QChart;
   chart->setLocale(QLocale());
   chart->setLocalizeNumbers(true);
-  chart->setTitle(angleName(a));
+  chart->setTitle(nameOf(motion));
   chart->legend()->setAlignment(Qt::AlignBottom);
   chart->setBackgroundRoundness(0);
   chart->setTheme(palette().color(QPalette::Window).lightness() < 128 ? QChart::ChartThemeDark
@@ -132,8 +191,9 @@ void ProgressChart::redraw() {
   double highest = normalDeg, lowest = 0;
   m_points = 0;
   for (const SessionExtremes& s : m_sessions) {
-    const auto& peak = s.maxRad[static_cast<std::size_t>(a)];
-    if (!peak) continue;
+    const auto& extreme = (motion.opposite ? s.minRad : s.maxRad)[static_cast<std::size_t>(a)];
+    if (!extreme) continue;
+    const std::optional<double> peak = motion.opposite ? -*extreme : *extreme;
     const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
     if (!when.isValid()) continue;
     const double deg = *peak * scale;
@@ -147,11 +207,10 @@ void ProgressChart::redraw() {
     m_table->appendRow(
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
          new QStandardItem(QLocale().toString(deg, 'f', m_radians ? 3 : 1)),
-         new QStandardItem(tr("%L1 %").arg(
-             100.0 * std::max(0.0, fractionOfNamedMotionNormal(normal, *peak)), 0, 'f', 0))});
+         new QStandardItem(tr("%L1 %").arg(100.0 * std::max(0.0, *peak / normalRad), 0, 'f', 0))});
   }
   if (m_points == 0) {
-    chart->setTitle(tr("%1: no analysed session yet").arg(angleName(a)));
+    chart->setTitle(tr("%1: no analysed session yet").arg(nameOf(motion)));
     first = QDateTime::currentDateTimeUtc().addDays(-28);
     last = QDateTime::currentDateTimeUtc();
   }

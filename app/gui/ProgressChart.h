@@ -1,10 +1,11 @@
-// One clinical angle over a patient's sessions (Qt Charts): the largest angle each session
-// reached in the direction of the angle's name (flexion, abduction, internal rotation, elbow
-// flexion, pronation), against that motion's normal range from the neutral position (AAOS,
-// core/metrics/NormativeRanges.h) shaded; an angle chooser, and the same numbers in a table
-// beside it for screen readers. The largest angle, not the range (largest - smallest): the
-// normal range counts motion in one direction only, and a range would add the opposite motion
-// (extension, external rotation, supination) to it.
+// One motion of a clinical angle over a patient's sessions (Qt Charts): the largest angle each
+// session reached in that direction, against the motion's normal range from the neutral position
+// (AAOS, core/metrics/NormativeRanges.h) shaded; a motion chooser, and the same numbers in a
+// table beside it for screen readers. The motions are each angle's named direction (flexion,
+// abduction, internal rotation, elbow flexion, pronation) and the opposite one where the normal
+// range gives a limit for it (shoulder extension, external rotation, supination). The largest
+// angle, not the range (largest - smallest): a normal range counts motion in one direction only,
+// and a range would add the opposite motion to it.
 #pragma once
 
 #include <QWidget>
@@ -30,12 +31,19 @@ class ProgressChart : public QWidget {
   void setSessions(std::vector<SessionExtremes> sessions);
   /// Shows angles in radians instead of degrees (the settings' unit).
   void setRadians(bool radians);
-  /// Which clinical angle (clinicalAngleInfo() order) is drawn.
+  /// Draws the named direction of a clinical angle (clinicalAngleInfo() order).
   void setAngle(int index);
+  /// Draws one direction of a clinical angle: opposite = extension, external rotation,
+  /// supination; ignored (the named direction drawn) where the normal range has no such limit.
+  void setMotion(int index, bool opposite);
+  /// The clinical angle drawn, and whether in its opposite direction.
   int angle() const;
+  bool opposite() const;
   /// Points drawn (sessions with a value for the angle).
   int points() const;
   QChart* chart() const;
+  /// The motion drawn, as the chooser names it ("Shoulder external rotation").
+  QString motionName() const;
   /// The numbers drawn: date, largest angle (deg or rad), percent of the normal range.
   const QStandardItemModel* table() const { return m_table; }
 
@@ -43,10 +51,18 @@ class ProgressChart : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
+  /// One entry of the motion chooser.
+  struct Motion {
+    int angle = 0;
+    bool opposite = false;
+  };
+  static QString nameOf(const Motion& m);
   void retranslateUi();
   void redraw();
+  Motion current() const;
 
   std::vector<SessionExtremes> m_sessions;
+  std::vector<Motion> m_motions;  // the chooser's entries, in its order
   QLabel* m_angleLabel;
   QComboBox* m_angle;
   QChartView* m_view;

@@ -7,6 +7,7 @@
 // internal rotation.
 #include <QAreaSeries>
 #include <QChart>
+#include <QComboBox>
 #include <QDateTime>
 #include <QLineSeries>
 #include <QStandardItemModel>
@@ -165,6 +166,63 @@ class TestProgressChart : public QObject {
     chart.setAngle(4);
     QVERIFY2(std::abs(cell(chart.table(), 1, 2) - 13) <= 5,
              qPrintable(chart.table()->item(1, 2)->text()));
+  }
+
+  void theOppositeMotionsArePlottedAgainstTheirOwnNormal() {
+    gui::ProgressChart chart;
+    chart.resize(900, 400);
+    chart.show();
+    chart.setSessions(m_overview.progress);
+    // Shoulder extension, external rotation and supination: minus each session's smallest angle
+    // (the sessions' lo above), against 60, 90 and 80 deg (AAOS).
+    struct Expected {
+      int angle;
+      const char* name;
+      double largest[2];
+      double normal;
+    };
+    const Expected expected[] = {{0, "Shoulder extension", {30, -30}, 60},
+                                 {2, "Shoulder external rotation", {70, 60}, 90},
+                                 {4, "Forearm supination", {75, 70}, 80}};
+    for (const Expected& e : expected) {
+      chart.setMotion(e.angle, true);
+      QCOMPARE(chart.angle(), e.angle);
+      QVERIFY(chart.opposite());
+      QCOMPARE(chart.motionName(), QString::fromLatin1(e.name));
+      QCOMPARE(chart.chart()->title(), QString::fromLatin1(e.name));
+      QCOMPARE(chart.points(), 2);
+      const QStandardItemModel* t = chart.table();
+      QAreaSeries* area = nullptr;
+      for (QAbstractSeries* s : chart.chart()->series())
+        if (auto* found = qobject_cast<QAreaSeries*>(s)) area = found;
+      QVERIFY(area);
+      QCOMPARE(area->upperSeries()->at(0).y(), e.normal);
+      for (int row = 0; row < 2; ++row) {
+        const QString what =
+            QStringLiteral("%1, session %2: %3").arg(e.name).arg(row).arg(t->item(row, 1)->text());
+        QVERIFY2(std::abs(cell(t, row, 1) - e.largest[row]) < 3, qPrintable(what));
+        const double percent = std::max(0.0, 100 * e.largest[row] / e.normal);
+        QVERIFY2(std::abs(cell(t, row, 2) - percent) <= 5, qPrintable(t->item(row, 2)->text()));
+      }
+    }
+    // Abduction and elbow flexion have no opposite motion in the chooser: their named one is
+    // drawn.
+    chart.setMotion(1, true);
+    QCOMPARE(chart.angle(), 1);
+    QVERIFY(!chart.opposite());
+    chart.setMotion(3, true);
+    QCOMPARE(chart.angle(), 3);
+    QVERIFY(!chart.opposite());
+    // The chooser lists eight motions, the named ones where they were.
+    const auto* chooser = chart.findChild<QComboBox*>();
+    QVERIFY(chooser);
+    QCOMPARE(chooser->count(), 8);
+    chart.setAngle(2);
+    QCOMPARE(chooser->currentText(), QStringLiteral("Shoulder internal rotation"));
+    chart.setMotion(2, true);
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    test::saveScreenshot(test::grabFromScreen(&chart),
+                         QStringLiteral("progress_chart_external_rotation"));
   }
 };
 
