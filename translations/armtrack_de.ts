@@ -3635,6 +3635,23 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
         <translation>Soucie et al. geben das mittlere passive Bewegungsausmaß gesunder %1 an; der Patient war am Tag der Sitzung %2 Jahre alt.</translation>
     </message>
+    <message>
+        <source>Shoulder extension</source>
+        <translation>Schulterextension</translation>
+    </message>
+    <message>
+        <source>Shoulder external rotation</source>
+        <translation>Schulteraußenrotation</translation>
+    </message>
+    <message>
+        <source>Forearm supination</source>
+        <translation>Unterarmsupination</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <comment>the motion, beside the supination chart</comment>
+        <translation>Unterarmpronation</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::AngleChart</name>

@@ -3635,6 +3635,23 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
         <translation>Soucie et al. dan el rango de movimiento pasivo medio de personas sanas (%1); el paciente tenía %2 años el día de la sesión.</translation>
     </message>
+    <message>
+        <source>Shoulder extension</source>
+        <translation>Extensión de hombro</translation>
+    </message>
+    <message>
+        <source>Shoulder external rotation</source>
+        <translation>Rotación externa de hombro</translation>
+    </message>
+    <message>
+        <source>Forearm supination</source>
+        <translation>Supinación del antebrazo</translation>
+    </message>
+    <message>
+        <source>Forearm pronation</source>
+        <comment>the motion, beside the supination chart</comment>
+        <translation>Pronación del antebrazo</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::AngleChart</name>

@@ -85,6 +85,7 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
     if (const std::optional<QJsonObject> m = storage::latestMetricsJson(store, e.id)) {
       p.romRad = romOf(*m);
       p.maxRad = angleFieldOf(*m, "max_deg");
+      p.minRad = angleFieldOf(*m, "min_deg");
       const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
       if (reps.isDouble()) p.repetitions = reps.toInt();
     }

@@ -22,6 +22,7 @@ ProgressSession progressSession(const storage::SessionInfo& session,
   for (std::size_t a = 0; a < p.romRad.size(); ++a) {
     p.romRad[a] = metrics.session.angle[a].romRad;
     p.maxRad[a] = metrics.session.angle[a].maxRad;
+    p.minRad[a] = metrics.session.angle[a].minRad;
   }
   return p;
 }

@@ -60,6 +60,9 @@ struct ProgressSession {
   /// (flexion, abduction, internal rotation, elbow flexion, pronation), which the normal range of
   /// the named motion (namedMotionNormalRad) measures.
   std::array<std::optional<double>, kNumClinicalAngles> maxRad{};
+  /// rad, the smallest angle reached: minus the peak in the opposite direction (shoulder
+  /// extension, external rotation, supination).
+  std::array<std::optional<double>, kNumClinicalAngles> minRad{};
 };
 
 /// A patient's range of motion over a date range.

@@ -37,6 +37,8 @@ ProgressReportData progressData() {
     s.repetitions = 10 + i;
     s.romRad = {romDeg[i] * kDegToRad, 0.5, 0.4, 1.2, std::nullopt};
     s.maxRad = {(romDeg[i] - 10) * kDegToRad, 0.3, 0.2, 1.0, std::nullopt};
+    // 10 deg of extension, external rotation 17 deg; no supination (pronation not measured).
+    s.minRad = {-10 * kDegToRad, -0.2, -0.3, -0.2, std::nullopt};
     d.sessions.push_back(s);
   }
   return d;
@@ -59,6 +61,11 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
   for (int a = 0; a < kNumClinicalAngles; ++a)
     EXPECT_TRUE(all.contains(QString::fromUtf8(clinicalAngleInfo()[a].name.data()) +
                              ": largest angle reached (deg)"));
+  // The opposite motions that have a normal limit of their own, each with its chart.
+  for (const char* motion :
+       {"Shoulder extension", "Shoulder external rotation", "Forearm supination"})
+    EXPECT_TRUE(all.contains(QString(motion) + ": largest angle reached (deg)")) << motion;
+  EXPECT_FALSE(all.contains("Shoulder adduction")) << "no normal limit: no chart";
   // The table lists the sessions in date order with their ROM in degrees.
   int last = -1;
   for (const char* row : {"2026-10-02", "2026-10-16", "2026-11-01", "2026-11-20"}) {
@@ -67,7 +74,8 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
     EXPECT_GT(at, last) << row;
     last = at;
   }
-  EXPECT_EQ(all.count("not measured in this period"), 1) << "forearm pronation has no values";
+  EXPECT_EQ(all.count("not measured in this period"), 2)
+      << "forearm pronation and supination have no values";
   for (const char* rom : {" 60.0 ", " 75.0 ", " 90.0 ", " 104.5 ", " 28.6 ", " 68.8 "})
     EXPECT_TRUE(all.contains(rom)) << rom;
 
@@ -100,6 +108,9 @@ TEST_F(ProgressReport, FromSimulatedSessions) {
     // The chart's value: the largest flexion reached, not the ROM from the 10 deg rest.
     ASSERT_TRUE(row.maxRad[0].has_value());
     EXPECT_NEAR(*row.maxRad[0] * kRadToDeg, peaks[i], 1.0);
+    // The opposite motion's chart takes the smallest angle: the ROM's other end.
+    ASSERT_TRUE(row.minRad[0].has_value());
+    EXPECT_NEAR(*row.minRad[0], *row.maxRad[0] - *row.romRad[0], 1e-9);
     d.sessions.push_back(row);
   }
   const QString pdf = dir.filePath("simulated.pdf");
