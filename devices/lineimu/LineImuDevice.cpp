@@ -7,15 +7,13 @@
 #include <cmath>
 
 #include "devices/api/Options.h"
+#include "devices/api/TimerMs.h"
+#include "devices/net/UdpListen.h"
 
 Q_LOGGING_CATEGORY(lcLineImu, "armtrack.devices.lineimu")
 
 namespace armtrack::devices::lineimu {
 namespace {
-
-int toMs(double seconds) {
-  return static_cast<int>(std::lround(seconds * 1000.0));
-}
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
@@ -138,7 +136,7 @@ void LineImuDevice::tryOpenSerial() {
                  ? QStringLiteral("%1 does not exist (not plugged in?); %2")
                        .arg(m_settings.serialPort, retry)
                  : QStringLiteral("cannot open %1: %2; %3").arg(m_settings.serialPort, why, retry));
-    m_retryTimer->start(toMs(m_settings.retrySeconds));
+    m_retryTimer->start(timerMs(m_settings.retrySeconds));
     return;
   }
   m_openedOnce = true;
@@ -147,29 +145,17 @@ void LineImuDevice::tryOpenSerial() {
   m_streaming = false;
   setState(DeviceState::Connecting,
            QStringLiteral("%1 open, waiting for $IMU sentences").arg(m_settings.serialPort));
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
 }
 
 void LineImuDevice::openUdp() {
-  if (!m_udp->bind(QHostAddress::Any, m_settings.udpPort, QAbstractSocket::DontShareAddress)) {
-    const QString why = m_udp->errorString();
-    return fail(
-        m_udp->error() == QAbstractSocket::AddressInUseError
-            ? QStringLiteral("UDP port %1 is already in use (another device or program "
-                             "listens on it): choose another port with udp=")
-                  .arg(m_settings.udpPort)
-            : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.udpPort).arg(why));
-  }
-  // A larger receive buffer rides out bursts (a flood on the port, a busy host) without losses;
-  // the kernel caps it (net.core.rmem_max on Linux), so the size granted is logged.
-  m_udp->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
-  qCInfo(lcLineImu) << "listening on UDP port" << m_settings.udpPort << "receive buffer"
-                    << m_udp->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt()
-                    << "bytes";
+  if (const QString why = listenUdp(*m_udp, m_settings.udpPort, QStringLiteral("udp"), lcLineImu());
+      !why.isEmpty())
+    return fail(why);
   setState(DeviceState::Connecting,
            QStringLiteral("listening on UDP port %1, waiting for $IMU sentences")
                .arg(m_settings.udpPort));
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
 }
 
 void LineImuDevice::onSerialReadyRead() {
@@ -185,26 +171,14 @@ void LineImuDevice::onSerialReadyRead() {
 }
 
 void LineImuDevice::onUdpReadyRead() {
-  // Each datagram is stamped when it is read, and one call reads a bounded number of them: under
-  // a flood the socket never runs dry, and one stamp for a read loop of seconds would put samples
-  // before the time they were sent, which drags the session's clock model. What is left is read
-  // at the next readyRead(): QUdpSocket emits it again once a datagram has been read. The first
-  // read is tried even when nothing seems pending, since only a read re-arms that signal.
   m_samples.clear();
   m_arrivals.clear();
-  int reads = 0;
-  do {
-    const qint64 size = m_udp->pendingDatagramSize();
-    if (size > m_datagram.size()) m_datagram.resize(size);
-    const qint64 got = m_udp->readDatagram(m_datagram.data(), m_datagram.size());
-    const double arrival = hostNow();
-    if (got < 0) break;
-    m_parser.feed(std::span(reinterpret_cast<const std::uint8_t*>(m_datagram.constData()),
-                            static_cast<std::size_t>(got)),
+  readDatagrams(*m_udp, m_datagram, [this](std::span<const char> bytes, double arrival) {
+    m_parser.feed(std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()),
                   m_samples);
     m_parser.endOfDatagram();  // a sentence never continues in the next datagram
     m_arrivals.resize(m_samples.size(), arrival);
-  } while (++reads < kMaxDatagramsPerRead && m_udp->hasPendingDatagrams());
+  });
   if (m_running) publishSamples();
 }
 
@@ -252,7 +226,7 @@ void LineImuDevice::publishSamples() {
     r.acc = Eigen::Vector3d(s.acc[0], s.acc[1], s.acc[2]);
     batch.push_back(DeviceSample{0, s.t, m_arrivals[i], r});
   }
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
   if (!m_streaming) {
     m_streaming = true;
     if (m_everStreamed) countReconnect();
@@ -288,7 +262,7 @@ void LineImuDevice::linkLost(const QString& reason) {
   m_silenceTimer->stop();
   setState(DeviceState::Connecting,
            QStringLiteral("%1; reopening every %2 s").arg(reason).arg(m_settings.retrySeconds));
-  m_retryTimer->start(toMs(m_settings.retrySeconds));
+  m_retryTimer->start(timerMs(m_settings.retrySeconds));
 }
 
 void LineImuDevice::fail(const QString& reason) {

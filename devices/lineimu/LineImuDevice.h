@@ -77,9 +77,6 @@ class LineImuDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
-  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
-  static constexpr int kReceiveBufferBytes = 4 << 20;
-
   LineImuParser m_parser;
   std::vector<Sample> m_samples;   // reused between reads
   std::vector<double> m_arrivals;  // arrival time of each of m_samples (s, hostNow())

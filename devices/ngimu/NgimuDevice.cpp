@@ -7,15 +7,13 @@
 #include <cmath>
 
 #include "devices/api/Options.h"
+#include "devices/api/TimerMs.h"
+#include "devices/net/UdpListen.h"
 
 Q_LOGGING_CATEGORY(lcNgimu, "armtrack.devices.ngimu")
 
 namespace armtrack::devices::ngimu {
 namespace {
-
-int toMs(double seconds) {
-  return static_cast<int>(std::lround(seconds * 1000.0));
-}
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
@@ -67,24 +65,12 @@ void NgimuDevice::start() {
   m_errorsSeen = m_parser.errors().count();
   m_sequence = TimetagSequence{};
   m_droppedSeen = m_reorderedSeen = m_duplicatesSeen = 0;
-  if (!m_socket->bind(QHostAddress::Any, m_settings.port, QAbstractSocket::DontShareAddress)) {
-    const QString why = m_socket->errorString();
-    return fail(
-        m_socket->error() == QAbstractSocket::AddressInUseError
-            ? QStringLiteral("UDP port %1 is already in use (another device or program "
-                             "listens on it): choose another port")
-                  .arg(m_settings.port)
-            : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.port).arg(why));
-  }
-  // A larger receive buffer rides out bursts without losses; the kernel caps it
-  // (net.core.rmem_max on Linux), so the size granted is logged.
-  m_socket->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
-  qCInfo(lcNgimu) << "listening on UDP port" << m_settings.port << "receive buffer"
-                  << m_socket->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt()
-                  << "bytes";
+  if (const QString why = listenUdp(*m_socket, m_settings.port, QStringLiteral("port"), lcNgimu());
+      !why.isEmpty())
+    return fail(why);
   setState(DeviceState::Connecting,
            QStringLiteral("listening on UDP port %1, waiting for /sensors").arg(m_settings.port));
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
 }
 
 bool TimetagSequence::accept(double t) {
@@ -124,24 +110,13 @@ void NgimuDevice::stop() {
 }
 
 void NgimuDevice::onReadyRead() {
-  // Each datagram is stamped when it is read, at most kMaxDatagramsPerRead per call (the rest at
-  // the next readyRead(), which a read re-arms): under a flood one stamp for a long read loop
-  // would put samples before they were sent. The first read is tried even if nothing seems
-  // pending, since only a read re-arms the signal.
   m_samples.clear();
   m_arrivals.clear();
-  int reads = 0;
-  do {
-    const qint64 size = m_socket->pendingDatagramSize();
-    if (size > m_datagram.size()) m_datagram.resize(size);
-    const qint64 got = m_socket->readDatagram(m_datagram.data(), m_datagram.size());
-    const double arrival = hostNow();
-    if (got < 0) break;
-    m_parser.parseDatagram(std::span(reinterpret_cast<const std::uint8_t*>(m_datagram.constData()),
-                                     static_cast<std::size_t>(got)),
-                           m_samples);
+  readDatagrams(*m_socket, m_datagram, [this](std::span<const char> bytes, double arrival) {
+    m_parser.parseDatagram(
+        std::span(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size()), m_samples);
     m_arrivals.resize(m_samples.size(), arrival);
-  } while (++reads < kMaxDatagramsPerRead && m_socket->hasPendingDatagrams());
+  });
   if (!m_running) return;
 
   const ParseErrorLog& log = m_parser.errors();
@@ -193,7 +168,7 @@ void NgimuDevice::onReadyRead() {
     r.acc = Eigen::Vector3d(s.acc[0], s.acc[1], s.acc[2]);
     batch.push_back(DeviceSample{0, s.hasTimetag ? s.t : m_arrivals[i], m_arrivals[i], r});
   }
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
   if (!m_streaming) {
     m_streaming = true;
     if (m_everStreamed) countReconnect();

@@ -80,9 +80,6 @@ class NgimuDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
-  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
-  static constexpr int kReceiveBufferBytes = 4 << 20;
-
   NgimuParser m_parser;
   std::vector<double> m_arrivals;  // arrival time of each of m_samples (s, hostNow())
   QByteArray m_datagram;           // reused between reads

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "devices/api/Options.h"
+#include "devices/api/TimerMs.h"
 
 Q_LOGGING_CATEGORY(lcShimmer3, "armtrack.devices.shimmer3")
 
@@ -13,10 +14,6 @@ namespace {
 
 constexpr int kDrainMs = 200;  // after the stop command, input is dropped for this long
 constexpr double kWrapSeconds = static_cast<double>(kTimestampWrap) / kTickHz;  // 512 s
-
-int toMs(double seconds) {
-  return static_cast<int>(std::lround(seconds * 1000.0));
-}
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
@@ -108,7 +105,7 @@ void Shimmer3Device::tryOpen() {
                        .arg(m_settings.port, retry)
                  : QStringLiteral("cannot open %1: %2; %3").arg(m_settings.port, why, retry));
     m_phase = Phase::WaitingToOpen;
-    m_phaseTimer->start(toMs(m_settings.retrySeconds));
+    m_phaseTimer->start(timerMs(m_settings.retrySeconds));
     return;
   }
   m_openedOnce = true;
@@ -131,7 +128,7 @@ void Shimmer3Device::beginInquiry() {
   m_droppedSeen = m_parser.droppedPackets();
   m_phase = Phase::Inquiring;
   sendCommand(kInquiryCommand);
-  m_phaseTimer->start(toMs(m_settings.timeoutSeconds));
+  m_phaseTimer->start(timerMs(m_settings.timeoutSeconds));
 }
 
 void Shimmer3Device::onPhaseTimeout() {
@@ -189,9 +186,9 @@ void Shimmer3Device::onReadyRead() {
                        << config.samplingRateHz() << "Hz";
     m_phase = Phase::Starting;
     sendCommand(kStartStreamingCommand);
-    m_phaseTimer->start(toMs(m_settings.timeoutSeconds));
+    m_phaseTimer->start(timerMs(m_settings.timeoutSeconds));
   }
-  if (m_phase == Phase::Streaming) m_phaseTimer->start(toMs(m_settings.timeoutSeconds));
+  if (m_phase == Phase::Streaming) m_phaseTimer->start(timerMs(m_settings.timeoutSeconds));
 
   publishSamples(arrival);
   takeParserProblems();
@@ -231,7 +228,7 @@ void Shimmer3Device::publishSamples(double arrival) {
   m_lastArrival = arrival;
   if (m_phase != Phase::Streaming) {
     m_phase = Phase::Streaming;
-    m_phaseTimer->start(toMs(m_settings.timeoutSeconds));
+    m_phaseTimer->start(timerMs(m_settings.timeoutSeconds));
     if (m_everStreamed) countReconnect();
     m_everStreamed = true;
     setState(DeviceState::Streaming, QStringLiteral("streaming from %1").arg(m_settings.port));
@@ -263,7 +260,7 @@ void Shimmer3Device::linkLost(const QString& reason) {
   m_phase = Phase::WaitingToOpen;
   setState(DeviceState::Connecting,
            QStringLiteral("%1; reopening every %2 s").arg(reason).arg(m_settings.retrySeconds));
-  m_phaseTimer->start(toMs(m_settings.retrySeconds));
+  m_phaseTimer->start(timerMs(m_settings.retrySeconds));
 }
 
 void Shimmer3Device::closePort() {

@@ -6,6 +6,8 @@
 #include <cmath>
 
 #include "devices/api/Options.h"
+#include "devices/api/TimerMs.h"
+#include "devices/net/UdpListen.h"
 #include "devices/webcam/CameraFile.h"
 #include "devices/webcam/CoreCameraParams.h"
 
@@ -13,10 +15,6 @@ Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 
 namespace armtrack::devices::skeleton {
 namespace {
-
-int toMs(double seconds) {
-  return static_cast<int>(std::lround(seconds * 1000.0));
-}
 
 StreamInfo opticalStream() {
   StreamInfo info;
@@ -106,25 +104,14 @@ void SkeletonDevice::start() {
   m_droppedSeen = m_parser.droppedFrames();
   m_reorderedSeen = m_parser.reorderedFrames();
   m_duplicatesSeen = m_parser.duplicateFrames();
-  if (!m_socket->bind(QHostAddress::Any, m_settings.port, QAbstractSocket::DontShareAddress)) {
-    const QString why = m_socket->errorString();
-    return fail(
-        m_socket->error() == QAbstractSocket::AddressInUseError
-            ? QStringLiteral("UDP port %1 is already in use (another device or program "
-                             "listens on it): choose another port with port=")
-                  .arg(m_settings.port)
-            : QStringLiteral("cannot listen on UDP port %1: %2").arg(m_settings.port).arg(why));
-  }
-  // A larger receive buffer rides out bursts without losses; the kernel caps it
-  // (net.core.rmem_max on Linux), so the size granted is logged.
-  m_socket->setSocketOption(QAbstractSocket::ReceiveBufferSizeSocketOption, kReceiveBufferBytes);
-  qCInfo(lcSkeleton)
-      << "listening on UDP port" << m_settings.port << "receive buffer"
-      << m_socket->socketOption(QAbstractSocket::ReceiveBufferSizeSocketOption).toInt() << "bytes";
+  if (const QString why =
+          listenUdp(*m_socket, m_settings.port, QStringLiteral("port"), lcSkeleton());
+      !why.isEmpty())
+    return fail(why);
   setState(
       DeviceState::Connecting,
       QStringLiteral("listening on UDP port %1, waiting for tracker frames").arg(m_settings.port));
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
 }
 
 void SkeletonDevice::stop() {
@@ -137,23 +124,13 @@ void SkeletonDevice::stop() {
 }
 
 void SkeletonDevice::onReadyRead() {
-  // Each datagram is stamped when it is read, at most kMaxDatagramsPerRead per call (the rest at
-  // the next readyRead(), which a read re-arms): under a flood one stamp for a long read loop
-  // would put frames before they were sent. The first read is tried even if nothing seems
-  // pending, since only a read re-arms the signal.
   SampleBatch batch;
   std::uint64_t unusable = 0;
   QString unusableWhy;
-  int reads = 0;
-  do {
-    const qint64 size = m_socket->pendingDatagramSize();
-    if (size > m_datagram.size()) m_datagram.resize(size);
-    const qint64 got = m_socket->readDatagram(m_datagram.data(), m_datagram.size());
-    const double arrival = hostNow();
-    if (got < 0) break;
-    const std::optional<Frame> frame = m_parser.parseDatagram(
-        std::string_view(m_datagram.constData(), static_cast<std::size_t>(got)));
-    if (!frame) continue;
+  readDatagrams(*m_socket, m_datagram, [&](std::span<const char> bytes, double arrival) {
+    const std::optional<Frame> frame =
+        m_parser.parseDatagram(std::string_view(bytes.data(), bytes.size()));
+    if (!frame) return;
     OpticalPositions p;
     if (m_settings.origin == Origin::Shoulder) {
       if (!frame->shoulder) {
@@ -162,7 +139,7 @@ void SkeletonDevice::onReadyRead() {
                           "frame %1 has no shoulder: elbow and wrist cannot be placed "
                           "relative to it (send the shoulder, or set origin=camera)")
                           .arg(frame->frame);
-        continue;
+        return;
       }
       const Eigen::Vector3d shoulder = vec(frame->shoulder->position);
       if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - shoulder);
@@ -175,10 +152,10 @@ void SkeletonDevice::onReadyRead() {
     if (!p.elbow && !p.wrist) {
       ++unusable;
       unusableWhy = QStringLiteral("frame %1 tracks neither elbow nor wrist").arg(frame->frame);
-      continue;
+      return;
     }
     batch.push_back(DeviceSample{0, frame->t, arrival, p});
-  } while (++reads < kMaxDatagramsPerRead && m_socket->hasPendingDatagrams());
+  });
   if (!m_running) return;
 
   const ParseErrorLog& log = m_parser.errors();
@@ -206,7 +183,7 @@ void SkeletonDevice::onReadyRead() {
   if (unusable) m_problems->note(unusable, unusableWhy);
   if (batch.empty()) return;
 
-  m_silenceTimer->start(toMs(m_settings.timeoutSeconds));
+  m_silenceTimer->start(timerMs(m_settings.timeoutSeconds));
   if (!m_streaming) {
     m_streaming = true;
     if (m_everStreamed) countReconnect();

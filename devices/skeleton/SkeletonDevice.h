@@ -74,9 +74,6 @@ class SkeletonDevice final : public Device {
   std::unique_ptr<ProblemLimiter> m_problems;  // one problem message per second at most
   bool m_running = false;
 
-  static constexpr int kMaxDatagramsPerRead = 512;  // then the event loop gets a turn
-  static constexpr int kReceiveBufferBytes = 4 << 20;
-
   SkeletonParser m_parser;
   QByteArray m_datagram;  // reused between reads
   std::uint64_t m_errorsSeen = 0;
