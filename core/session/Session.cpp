@@ -14,31 +14,11 @@
 #include <system_error>
 #include <utility>
 
-#include "core/session/EstimatorMessages.h"
-#include "core/sync/ArmSampleAssembler.h"
 #include "core/sync/SensorPayload.h"
-#include "core/sync/TimeSync.h"
 
 namespace armtrack::session {
 
 namespace {
-
-/// The stream each sensor block of a row comes from.
-StreamRole roleOf(SensorBlock b) {
-  switch (b) {
-    case SensorBlock::UpperArm:
-      return StreamRole::UpperArmImu;
-    case SensorBlock::Forearm:
-      return StreamRole::ForearmImu;
-    case SensorBlock::Elbow:
-    case SensorBlock::Wrist:
-      return StreamRole::Optical;
-    case SensorBlock::CamWrist:
-    case SensorBlock::CamElbow:
-      return StreamRole::Camera;
-  }
-  return StreamRole::UpperArmImu;
-}
 
 /// Creates path empty, failing if it exists (O_EXCL): a recording that appears between a check
 /// and the writer's open is never replaced. Returns an empty string or why not.
@@ -63,12 +43,6 @@ void removeUnusedClaim(const std::filesystem::path& path) {
   if (::flock(fd, LOCK_EX | LOCK_NB) == 0 && ::fstat(fd, &st) == 0 && st.st_size == 0)
     ::unlink(path.c_str());
   ::close(fd);
-}
-
-double threadCpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 }  // namespace
@@ -300,201 +274,6 @@ void Session::onSamples(int device, const SampleBatch& batch) {
     m_stats.inputOverflow += overflow;
   }
   if (wake) m_inputCv.notify_one();
-}
-
-void Session::workerLoop() {
-  pthread_setname_np(pthread_self(), "armtrack-worker");
-  std::vector<ClockParams> clocks;
-  std::vector<StreamRole> roleOfStream;
-  for (const Stream& s : m_streams) {
-    ClockParams c;
-    c.wrapPeriod = s.info.wrapPeriod;
-    clocks.push_back(c);
-    roleOfStream.push_back(s.info.role);
-  }
-  // A replay at N x runs the session's clocks N times faster, so device time stays the
-  // recording's time; latencies are reported in real seconds.
-  const double scale = m_scale;
-  const double window = m_params.latencyWindow * scale;
-  SyncParams sp;
-  sp.latencyWindow = window;
-  TimeSync<SensorPayload> sync(sp, clocks);
-  ArmSampleAssembler assembler(roleOfStream, m_params.mergeWindow);
-  std::unique_ptr<JointEstimator> filter;
-  if (m_params.estimate) filter = makeEstimator(m_params.estimator);
-
-  std::vector<DeviceSample> local;
-  local.reserve(4096);
-  std::vector<std::uint64_t> received(m_streams.size()), rejected(m_streams.size());
-  std::uint64_t rows = 0, estimates = 0, recorderWaits = 0;
-  LatencyHistogram latency;
-  std::vector<EstimateRow> fresh;
-  std::size_t maxQueued = 0;
-  double rowOldestArrival = std::numeric_limits<double>::infinity();
-  double nextStats = 0.0;
-  std::uint64_t reportedRejects = 0;
-  // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
-  std::array<std::string, kNumSensorBlocks> blockStreams;
-  for (int b = 0; b < kNumSensorBlocks; ++b)
-    for (const Stream& s : m_streams)
-      if (s.info.role == roleOf(static_cast<SensorBlock>(b)))
-        blockStreams[static_cast<std::size_t>(b)] =
-            m_devices[static_cast<std::size_t>(s.device)].label.toStdString() + " " + s.info.name;
-  EstimatorMessages estimatorMessages(blockStreams, m_params.refusalQuietSeconds,
-                                      m_params.refusalSummarySeconds);
-  std::vector<std::string> notes;  // messages made under no lock, told by publish()
-
-  // Optical measurements waiting for the next estimate (they often come in rows of their own).
-  EstimateRow pendingOptical;
-  auto processRow = [&](ArmSample row, double oldestArrival) {
-    ++rows;
-    row.t -= m_startTime * scale;  // session time: 0 at start()
-    if (row.elbow) pendingOptical.opticalElbow = row.elbow;
-    if (row.wrist) pendingOptical.opticalWrist = row.wrist;
-    if (row.camElbow) pendingOptical.camElbow = row.camElbow;
-    if (row.camWrist) pendingOptical.camWrist = row.camWrist;
-    if (filter) {
-      const UpdateResult r = filter->update(row);
-      estimatorMessages.update(filter->counters(), row.t, notes);
-      // Rows predicted through refused readings and recovered rows are estimates too: the GUI
-      // shows them with their status and (grown) uncertainty.
-      if (hasEstimate(r) && row.hasImu()) {
-        const JointEstimate e = filter->estimate();
-        row.estimate = e.th;
-        ++estimates;
-        const double lat = hostNow() - oldestArrival / scale;
-        latency.add(lat);
-        EstimateRow out;
-        out.t = row.t;
-        out.th = e.th;
-        out.truth = row.trueAngles;
-        out.latency = lat;
-        out.thStd = e.thStd;
-        out.status = r;
-        out.headingFromStartPoseOnly = filter->headingFromStartPoseOnly();
-        out.opticalElbow = std::exchange(pendingOptical.opticalElbow, std::nullopt);
-        out.opticalWrist = std::exchange(pendingOptical.opticalWrist, std::nullopt);
-        out.camElbow = std::exchange(pendingOptical.camElbow, std::nullopt);
-        out.camWrist = std::exchange(pendingOptical.camWrist, std::nullopt);
-        fresh.push_back(std::move(out));
-      }
-    }
-    if (m_writer) {
-      std::unique_lock lock(m_recMutex);
-      if (m_recQueue.size() >= m_params.recorderCapacity) {
-        ++recorderWaits;  // never drop a row: wait for the recorder
-        m_recSpaceCv.wait(lock, [&] { return m_recQueue.size() < m_params.recorderCapacity; });
-      }
-      const bool wake = m_recQueue.empty();
-      m_recQueue.push_back(std::move(row));
-      lock.unlock();
-      if (wake) m_recCv.notify_one();
-    }
-  };
-  auto sink = [&](const SensorEvent& ev) {
-    if (auto done = assembler.add(ev)) {
-      processRow(std::move(*done), rowOldestArrival);
-      rowOldestArrival = ev.arrivalTime;
-    } else {
-      rowOldestArrival = std::min(rowOldestArrival, ev.arrivalTime);
-    }
-  };
-  auto publish = [&](bool final) {
-    auto tellNotes = [&] {
-      for (const std::string& n : notes) {
-        logEvent(n);
-        emit problem(QString::fromStdString(n));
-      }
-      notes.clear();
-    };
-    tellNotes();
-    if (!fresh.empty()) {
-      std::lock_guard lock(m_resultMutex);
-      for (EstimateRow& r : fresh) {
-        if (m_results.size() >= m_params.resultCapacity) {
-          m_results.pop_front();
-          std::lock_guard s(m_statsMutex);
-          ++m_stats.resultsOverwritten;
-        }
-        m_results.push_back(std::move(r));
-      }
-      fresh.clear();
-    }
-    const double now = hostNow();
-    if (!final && now < nextStats) return;
-    nextStats = now + 0.1;
-    std::uint64_t totalRejects = 0;
-    std::unique_lock lock(m_statsMutex);
-    for (std::size_t i = 0; i < m_streams.size(); ++i) {
-      StreamStats& st = m_stats.streams[i];
-      st.received = received[i];
-      st.rejected = rejected[i];
-      totalRejects += rejected[i];
-      const DeviceSyncStats ds = sync.stats(static_cast<int>(i));
-      st.late = ds.merge.late;
-      st.driftPpm = ds.driftPpm;
-      st.jitterMs = ds.jitter * 1e3;
-    }
-    m_stats.rows = rows;
-    m_stats.estimates = estimates;
-    m_stats.recorderWaits = recorderWaits;
-    m_stats.latency = latency;
-    m_stats.maxInputQueued = std::max(m_stats.maxInputQueued, maxQueued);
-    if (filter) m_stats.estimator = filter->counters();
-    m_stats.workerCpuSeconds = threadCpuSeconds();
-    if (totalRejects > reportedRejects) {
-      notes.push_back("rejected " + std::to_string(totalRejects - reportedRejects) +
-                      " sample(s) with NaN/infinite values or the wrong kind of data");
-      reportedRejects = totalRejects;
-    }
-    lock.unlock();
-    tellNotes();  // through logEvent, so maxEvents holds
-  };
-
-  for (;;) {
-    bool closed = false;
-    {
-      std::unique_lock lock(m_inputMutex);
-      m_inputCv.wait_for(lock, std::chrono::duration<double>(m_params.workerPeriod),
-                         [&] { return !m_input.empty() || m_inputClosed; });
-      maxQueued = std::max(maxQueued, m_input.size());
-      local.swap(m_input);
-      closed = m_inputClosed;
-    }
-    for (DeviceSample& s : local) {
-      if (s.stream < 0) continue;  // a stream index the device does not have
-      const auto k = static_cast<std::size_t>(s.stream);
-      ++received[k];
-      if (!validPayload(m_streams[k].info.role, s.payload)) {
-        ++rejected[k];
-        continue;
-      }
-      if (sync.push(s.stream, s.deviceTime, s.arrivalTime * scale, std::move(s.payload), sink) ==
-          PushResult::Rejected)
-        ++rejected[k];
-    }
-    local.clear();
-    if (closed) break;
-    const double now = hostNow() * scale;
-    sync.poll(now, sink);
-    // The open row cannot grow any more once the synchroniser has released everything up to a
-    // merge window past it: complete it now rather than when the next sample arrives.
-    if (auto t = assembler.openTime(); t && *t + m_params.mergeWindow < now - window) {
-      if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
-      rowOldestArrival = std::numeric_limits<double>::infinity();
-    }
-    publish(false);
-  }
-  // Shutdown: everything received is processed.
-  sync.flush(sink);
-  if (auto done = assembler.flush()) processRow(std::move(*done), rowOldestArrival);
-  estimatorMessages.finish(notes);
-  publish(true);
-  {
-    std::lock_guard lock(m_recMutex);
-    m_recClosed = true;
-  }
-  m_recCv.notify_one();
 }
 
 void Session::recorderLoop() {

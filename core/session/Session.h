@@ -177,6 +177,7 @@ class Session : public QObject {
 
  private:
   class DeviceInput;  // the input port of one device (Session.cpp)
+  class Worker;       // the worker thread's state and steps (SessionWorker.cpp)
   struct Stream {
     int device = 0;
     int index = 0;  ///< within the device
