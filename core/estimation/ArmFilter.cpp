@@ -678,11 +678,11 @@ class ArmFilter final : public JointEstimator {
   }
 
   // Whether IMU updates are heading-blind now, and the directions they use: v the full-state
-  // heading symmetry, u the unit heading direction among the angles (u . v = 1). From the start,
-  // so that without optics the heading stays the start pose's, as documented, instead of taking
-  // a random turn while start-up settles. Only for Method A: B and C leave body acceleration out
-  // of their model, so their IMU innovations carry model error whose correlations with the
-  // heading the filter needs to bleed off.
+  // heading symmetry, u the covector that reads the turn about the vertical (u . v = 1). From
+  // the start, so that without optics the heading stays the start pose's, as documented,
+  // instead of taking a random turn while start-up settles. Only for Method A: B and C leave
+  // body acceleration out of their model, so their IMU innovations carry model error whose
+  // correlations with the heading the filter needs to bleed off.
   bool headingBlind() const {
     return m_p.headingBlindImuUpdates && headingIsFree() &&
            m_p.model == MeasurementModel::AccelGyro;
@@ -702,7 +702,13 @@ class ArmFilter final : public JointEstimator {
     if (!m_headingBlind.active) return;
     m_headingBlind.v.setZero();
     m_headingBlind.v.template head<kBase>() = headingSymmetryAtState();
-    m_headingBlind.u = headingAngles(m_x);
+    // What stays put is the arm's turn about the vertical, read by the covector w (up . J_s dth),
+    // not the angles' Euclidean component along the heading direction: a correction that only
+    // tilts the arm (w . dx = 0) may still have such a component when the shoulder axes are not
+    // orthogonal, and reading that as heading made every tilt correction turn the arm a little.
+    const JointVector w = headingCovector(m_x.template segment<5>(10), m_up);
+    m_headingBlind.u.setZero();
+    m_headingBlind.u.template segment<5>(10) = w / w.dot(m_headingBlind.v.template segment<5>(10));
   }
 
   bool ekfUpdate(const BlockList& b) {
@@ -1277,7 +1283,7 @@ class ArmFilter final : public JointEstimator {
   struct HeadingBlind {
     bool active = false;
     Vec v = Vec::Zero();              // full-state heading symmetry (its angle part is u)
-    Vec u = Vec::Zero();              // unit heading direction among the angles
+    Vec u = Vec::Zero();              // reads the turn about the vertical (u . v = 1)
   } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
   std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry

@@ -78,6 +78,12 @@ JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
   return d;
 }
 
+JointVector headingCovector(const JointVector& th, const Eigen::Vector3d& up) {
+  JointVector w = JointVector::Zero();
+  w.head<3>() = shoulderAxes(th).transpose() * up;
+  return w;
+}
+
 JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
   const JointVector d = headingGenerator(th, up);
   const double n = d.norm();

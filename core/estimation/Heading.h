@@ -14,6 +14,11 @@ namespace armtrack {
 /// Damped at the shoulder's gimbal lock, exact elsewhere.
 JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up);
 
+/// The turn about the vertical that a small change of the joint angles makes: the vertical part
+/// of the upper arm's rotation, up . (J_s dth), as a row over the five angles (elbow entries
+/// zero). It reads 1 along headingGenerator and 0 along every change that only tilts the arm.
+JointVector headingCovector(const JointVector& th, const Eigen::Vector3d& up);
+
 /// The heading direction in joint space at th: the joint-rate direction that turns the whole arm
 /// about the vertical through the shoulder (unit norm, elbow entries zero).
 JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up);

@@ -153,10 +153,12 @@ TEST_P(Coverage, TwoSigmaHoldsNinetyToNinetyNinePercent) {
   std::printf("[ measured ] %s: inside 2 sd (%%) %s; RMSE (deg) %s\n", opticsName(GetParam()),
               row(cover, 100.0).c_str(), row(t.errors.rmse() / kDeg).c_str());
   // Known gap (issue 9, acceptance 3), asserted as it stands so a regression still fails: with a
-  // webcam the shoulder's sd is too small on some movements (seeds 31-32: 64-78 % inside, errors
-  // of 0.05-0.09 deg along the heading); pooled 82-85 %. And on seeds 51-54 the Kinect's
-  // shoulder is 99.5-99.8 %, over the band (docs/estimator.md).
-  const double shoulderLeast = GetParam() == Optics::Webcam ? 0.78 : 0.90;
+  // webcam the shoulder's sd is too small on some movements (seeds 31-32: 67-82 % inside, errors
+  // of 0.1-0.3 deg along the heading); pooled 84-86 %. The heading drifts as the filter's
+  // angles lag smooth motion, which the covariance does not model (docs/estimator.md,
+  // "Uncertainty"). Before heading-blind updates held the turn about the vertical itself
+  // (headingCovector) the pooled share was 82-85 %, below this floor.
+  const double shoulderLeast = GetParam() == Optics::Webcam ? 0.83 : 0.90;
   const bool shoulderUpperBound = GetParam() != Optics::Webcam;
   for (int j = 0; j < kNumJoints; ++j) {
     const bool shoulder = j < 3;

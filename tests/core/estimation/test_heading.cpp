@@ -68,6 +68,35 @@ TEST(TurnAboutVertical, SmallTurnStepsAlongTheGenerator) {
   }
 }
 
+// The heading covector against the forward kinematics: for any small change of the angles,
+// w . dth is the vertical part of the upper arm's rotation (R' R^T by central differences of the
+// upper-arm IMU frame), so it reads 1 along the generator and 0 for a change that only tilts the
+// arm. The heading-blind IMU update holds exactly this, not the angles' component along h.
+TEST(HeadingCovector, ReadsTheVerticalPartOfTheUpperArmsRotation) {
+  std::mt19937_64 rng(17);
+  std::normal_distribution<double> n(0.0, 1.0);
+  const ArmGeometry geo;
+  for (const Eigen::Vector3d& up : {kUprightUp, kLeaningUp}) {
+    for (int k = 0; k < 200; ++k) {
+      const JointVector th = randomAngles(rng);
+      JointVector d;
+      d << n(rng), n(rng), n(rng), n(rng), n(rng);
+      const double e = 1e-6;
+      const Eigen::Matrix3d rp = forwardKinematics(geo, th + e * d).upperImu.topLeftCorner<3, 3>();
+      const Eigen::Matrix3d rm = forwardKinematics(geo, th - e * d).upperImu.topLeftCorner<3, 3>();
+      const Eigen::Matrix3d r = forwardKinematics(geo, th).upperImu.topLeftCorner<3, 3>();
+      const Eigen::Matrix3d skew = (rp - rm) / (2 * e) * r.transpose();
+      const Eigen::Vector3d omega(skew(2, 1), skew(0, 2), skew(1, 0));
+      const JointVector w = headingCovector(th, up);
+      EXPECT_NEAR(w.dot(d), up.dot(omega), 1e-6 * (1.0 + d.norm())) << th.transpose();
+      EXPECT_EQ(w.tail<2>(), JointVector::Zero().tail<2>());
+      if (std::abs(std::cos(th(1))) > 0.2) {
+        EXPECT_NEAR(w.dot(headingGenerator(th, up)), 1.0, 1e-9) << th.transpose();
+      }
+    }
+  }
+}
+
 TEST(TurnAboutVertical, ZeroTurnAndFullCircleReturnTheSameArm) {
   std::mt19937_64 rng(11);
   const ArmGeometry geo;
