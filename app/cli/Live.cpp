@@ -203,49 +203,53 @@ void printStats(std::ostream& out, const session::SessionStats& s, double cpuPer
   out.flush();
 }
 
-int runSession(const std::string& command, const std::vector<std::string>& args, bool record,
-               std::ostream& out, std::ostream& err) {
-  const Args a(command, args, kSessionOptions);
-  if (a.help()) {
-    out << (record ? kRecordHelp : kLiveHelp);
-    return 0;
-  }
-  if (!a.positionals().empty()) a.fail("unexpected argument '" + a.positionals()[0] + "'");
+/// What the options ask of a session, checked before anything starts.
+struct SessionSetup {
   LiveOptions o;
+  session::SessionParams params;
+  std::string filter;  // "ekf" or "ukf"
+  bool toDb = false;
+  bool overwrite = false;
+};
+
+SessionSetup parseSession(const Args& a, bool record) {
+  SessionSetup s;
+  LiveOptions& o = s.o;
+  if (!a.positionals().empty()) a.fail("unexpected argument '" + a.positionals()[0] + "'");
   o.devices = a.values("--device");
   if (o.devices.empty()) a.fail("--device is required (armtrack-cli devices lists them)");
   if (record && !a.value("--duration")) a.fail("--duration is required");
   o.duration = record ? a.positive("--duration", 0.0) : a.nonNegative("--duration", 0.0);
-  const bool toDb = a.value("--db").has_value();
-  if (!toDb)
+  s.toDb = a.value("--db").has_value();
+  if (!s.toDb)
     for (const char* option : {"--user", "--patient", "--protocol"})
       if (a.value(option)) a.fail(std::string(option) + ": only applies with record --db");
-  if (toDb && !record) a.fail("--db: only record writes into the clinical records");
-  if (toDb && a.value("--out"))
+  if (s.toDb && !record) a.fail("--db: only record writes into the clinical records");
+  if (s.toDb && a.value("--out"))
     a.fail("--out and --db: record into a file or into the clinical records, not both");
-  o.out = record && !toDb ? a.required("--out") : a.value("--out").value_or("");
+  o.out = record && !s.toDb ? a.required("--out") : a.value("--out").value_or("");
   o.stats = a.flag("--stats");
   o.statsInterval = a.positive("--stats-interval", 10.0);
   o.quiet = a.flag("--quiet");
   o.anglesEverySecond = !record && !o.stats;
-  const bool overwrite = a.flag("--overwrite");
-  if (overwrite && o.out.empty()) a.fail("--overwrite: only applies with --out");
+  s.overwrite = a.flag("--overwrite");
+  if (s.overwrite && o.out.empty()) a.fail("--overwrite: only applies with --out");
   if (!o.out.empty()) {  // before anything starts
     try {
-      checkOutputPath(o.out, overwrite, true);
+      checkOutputPath(o.out, s.overwrite, true);
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string("cannot record: ") + e.what());
     }
   }
 
-  session::SessionParams params;
-  const std::string filter = a.value("--filter").value_or("ekf");
-  if (filter == "ekf")
+  session::SessionParams& params = s.params;
+  s.filter = a.value("--filter").value_or("ekf");
+  if (s.filter == "ekf")
     params.estimator.filter = FilterKind::Ekf;
-  else if (filter == "ukf")
+  else if (s.filter == "ukf")
     params.estimator.filter = FilterKind::Ukf;
   else
-    a.fail("--filter: expected ekf or ukf, got '" + filter + "'");
+    a.fail("--filter: expected ekf or ukf, got '" + s.filter + "'");
   const std::string side = a.value("--side").value_or("right");
   if (side == "left")
     params.meta.side = Side::Left;
@@ -256,46 +260,55 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   params.recordingPath = o.out;
   // The session claims the name itself (O_EXCL) unless --overwrite, so a recording that appears
   // between the check above and the start is never replaced.
-  params.overwrite = overwrite;
+  params.overwrite = s.overwrite;
+  return s;
+}
 
-  // Recording into the clinical records: sign in and check the patient before any device starts.
+/// A recording into the clinical records: the signed-in store, the session it begins (once the
+/// devices' columns are known) and the devices it names.
+struct RecordsTarget {
   std::unique_ptr<ClinicalContext> records;
   qint64 sessionId = 0;
-  QJsonObject devicesUsed;  // filled below, stored when the session begins
-  if (toDb) {
-    if (overwrite) a.fail("--overwrite: only applies with --out");
-    const QString patient = qs(a.required("--patient"));
-    const QString protocol = qs(a.value("--protocol").value_or(""));
-    records = std::make_unique<ClinicalContext>(a, storage::Database::Options{}, true);
-    records->store().patient(patient);  // StorageError(NotFound) names it
-    if (!protocol.isEmpty()) records->store().protocol(protocol);
-    const storage::DatabaseUrl url = records->db().url();
-    params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
-    const QString filterName = QString::fromStdString(filter);
-    params.openSink = [&records, &sessionId, &out, &devicesUsed, url, patient, protocol,
-                       filterName](
+  QJsonObject devicesUsed;  // filled as the devices are made, stored when the session begins
+};
+
+/// Signs in and checks the patient before any device starts, and sets the session's sink to
+/// begin the session in the records. target must outlive the session.
+void prepareRecordsTarget(const Args& a, SessionSetup& s, RecordsTarget& target,
+                          std::ostream& out) {
+  if (s.overwrite) a.fail("--overwrite: only applies with --out");
+  const QString patient = qs(a.required("--patient"));
+  const QString protocol = qs(a.value("--protocol").value_or(""));
+  target.records = std::make_unique<ClinicalContext>(a, storage::Database::Options{}, true);
+  target.records->store().patient(patient);  // StorageError(NotFound) names it
+  if (!protocol.isEmpty()) target.records->store().protocol(protocol);
+  const storage::DatabaseUrl url = target.records->db().url();
+  s.params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
+  const QString filterName = QString::fromStdString(s.filter);
+  s.params.openSink = [&target, &out, url, patient, protocol, filterName](
                           const RecordingMeta& meta,
                           const RecordingColumns& columns) -> std::unique_ptr<RecordingSink> {
-      storage::SessionSettings settings;
-      settings.devicesJson =
-          QString::fromUtf8(QJsonDocument(devicesUsed).toJson(QJsonDocument::Compact));
-      // The live filter, which the session's analysis then uses too.
-      settings.filterJson = QString::fromUtf8(
-          QJsonDocument(QJsonObject{{"filter", filterName}}).toJson(QJsonDocument::Compact));
-      try {
-        sessionId = records->store().beginRecording(patient, protocol, meta, columns, settings);
-      } catch (const storage::StorageError& e) {
-        throw RecordingError(ss(url.display()), 0, 0, e.what());
-      }
-      out << "session " << sessionId << "\n" << std::flush;
-      return std::make_unique<storage::DatabaseRecordingSink>(url, sessionId, columns);
-    };
-  }
+    storage::SessionSettings settings;
+    settings.devicesJson =
+        QString::fromUtf8(QJsonDocument(target.devicesUsed).toJson(QJsonDocument::Compact));
+    // The live filter, which the session's analysis then uses too.
+    settings.filterJson = QString::fromUtf8(
+        QJsonDocument(QJsonObject{{"filter", filterName}}).toJson(QJsonDocument::Compact));
+    try {
+      target.sessionId =
+          target.records->store().beginRecording(patient, protocol, meta, columns, settings);
+    } catch (const storage::StorageError& e) {
+      throw RecordingError(ss(url.display()), 0, 0, e.what());
+    }
+    out << "session " << target.sessionId << "\n" << std::flush;
+    return std::make_unique<storage::DatabaseRecordingSink>(url, target.sessionId, columns);
+  };
+}
 
-  QtApp qt;
-  app::PluginRegistry registry;
-  registry.load(pluginFolders(a));
-  session::Session session(params);
+/// Makes each device of the options and adds it to the session; false (and what is wrong on
+/// err) when one cannot be made.
+bool addDevices(const LiveOptions& o, const app::PluginRegistry& registry,
+                session::Session& session, QJsonObject& devicesUsed, std::ostream& err) {
   for (const std::string& spec : o.devices) {
     const auto colon = spec.find(':');
     const QString name = QString::fromStdString(spec.substr(0, colon));
@@ -306,113 +319,133 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
       err << "armtrack-cli: error: no device plugin '" << name.toStdString()
           << "'; found: " << registry.names().join(QStringLiteral(", ")).toStdString()
           << " (armtrack-cli devices tells which files were refused)\n";
-      return 1;
+      return false;
     }
     QString why;
     std::unique_ptr<devices::Device> device = plugin->create(options, &why);
     if (!device) {
       err << "armtrack-cli: error: " << why.toStdString() << "\n";
-      return 1;
+      return false;
     }
     const QString label = QStringLiteral("%1#%2").arg(name).arg(
         o.devices.size() > 1 ? QString::number(&spec - o.devices.data() + 1) : QStringLiteral("1"));
     devicesUsed.insert(label, deviceRecord(name, options, *device));
     session.addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);
   }
-  if (const QString why = session.start(); !why.isEmpty()) {
-    err << "armtrack-cli: error: " << why.toStdString() << "\n";
-    return 1;
-  }
+  return true;
+}
+
+/// The session's new messages to err (unless --quiet).
+void drainEvents(session::Session& session, const LiveOptions& o, std::ostream& err) {
+  std::vector<std::string> events;
+  session.takeEvents(events);
+  if (!o.quiet)
+    for (const std::string& e : events) err << "  " << e << "\n";
+}
+
+/// The run's clock and resources: at its start, after its first minute and at its end.
+struct RunTimes {
+  double start = 0.0, end = 0.0;
+  double cpu0 = 0.0, cpu = 0.0, rss = 0.0;
+  double rssAtMinute = 0.0, cpuAtMinute = 0.0, minuteTime = 0.0;
+};
+
+/// Runs the started session until its duration, Ctrl-C (SIGINT, SIGTERM, SIGHUP) or the end of
+/// every device, printing angles, statistics and messages as asked; stops it.
+RunTimes runUntilDone(session::Session& session, const LiveOptions& o, std::ostream& out,
+                      std::ostream& err) {
   g_interrupted = false;
   const auto oldInt = std::signal(SIGINT, onInterrupt);
   const auto oldTerm = std::signal(SIGTERM, onInterrupt);
   const auto oldHup = std::signal(SIGHUP, onInterrupt);  // a closed terminal ends it cleanly too
 
-  const double start = hostNow();
-  const double cpu0 = processCpuSeconds();
-  double nextStats = start + o.statsInterval, nextAngles = start + 1.0;
-  double rssAtMinute = 0.0, cpuAtMinute = 0.0, minuteTime = 0.0;
-  std::vector<std::string> events;
+  RunTimes r;
+  r.start = hostNow();
+  r.cpu0 = processCpuSeconds();
+  double nextStats = r.start + o.statsInterval, nextAngles = r.start + 1.0;
   std::vector<session::EstimateRow> results;
-  auto drainEvents = [&] {
-    events.clear();
-    session.takeEvents(events);
-    if (!o.quiet)
-      for (const std::string& e : events) err << "  " << e << "\n";
-  };
   while (!g_interrupted) {
     const double now = hostNow();
-    if (o.duration > 0.0 && now - start >= o.duration) break;
+    if (o.duration > 0.0 && now - r.start >= o.duration) break;
     const session::SessionStats st = session.stats();
     const bool allEnded = std::all_of(st.deviceStates.begin(), st.deviceStates.end(), [](auto s) {
       return s == DeviceState::Disconnected || s == DeviceState::Error;
     });
-    if (allEnded && now - start > 1.0) {
+    if (allEnded && now - r.start > 1.0) {
       out << "every device has ended; stopping\n";
       break;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     QCoreApplication::processEvents();
-    drainEvents();
+    drainEvents(session, o, err);
     results.clear();
     session.takeResults(results);  // the GUI drains this buffer the same way
-    if (rssAtMinute == 0.0 && now - start >= 60.0) {
-      rssAtMinute = residentMegabytes();
-      cpuAtMinute = processCpuSeconds();
-      minuteTime = now;
+    if (r.rssAtMinute == 0.0 && now - r.start >= 60.0) {
+      r.rssAtMinute = residentMegabytes();
+      r.cpuAtMinute = processCpuSeconds();
+      r.minuteTime = now;
     }
     if (o.anglesEverySecond && now >= nextAngles && !results.empty()) {
-      const session::EstimateRow& r = results.back();
+      const session::EstimateRow& row = results.back();
       char line[160];
       std::snprintf(line, sizeof line,
-                    "t %9.3f s  th0 %7.2f  th1 %7.2f  th2 %7.2f  th4 %7.2f  th5 %7.2f deg\n", r.t,
-                    r.th(0) * 180 / M_PI, r.th(1) * 180 / M_PI, r.th(2) * 180 / M_PI,
-                    r.th(3) * 180 / M_PI, r.th(4) * 180 / M_PI);
+                    "t %9.3f s  th0 %7.2f  th1 %7.2f  th2 %7.2f  th4 %7.2f  th5 %7.2f deg\n", row.t,
+                    row.th(0) * 180 / M_PI, row.th(1) * 180 / M_PI, row.th(2) * 180 / M_PI,
+                    row.th(3) * 180 / M_PI, row.th(4) * 180 / M_PI);
       out << line << std::flush;
       nextAngles = now + 1.0;
     }
     if (o.stats && now >= nextStats) {
-      printStats(out, session.stats(), 100.0 * (processCpuSeconds() - cpu0) / (now - start),
+      printStats(out, session.stats(), 100.0 * (processCpuSeconds() - r.cpu0) / (now - r.start),
                  residentMegabytes());
       nextStats = now + o.statsInterval;
     }
   }
-  const double end = hostNow();
-  const double cpu = processCpuSeconds();
-  const double rss = residentMegabytes();
+  r.end = hostNow();
+  r.cpu = processCpuSeconds();
+  r.rss = residentMegabytes();
   session.stop();
   std::signal(SIGINT, oldInt);
   std::signal(SIGTERM, oldTerm);
   std::signal(SIGHUP, oldHup);
-  drainEvents();
-  const session::SessionStats s = session.stats();
+  drainEvents(session, o, err);
+  return r;
+}
+
+/// After the session: the recording read back and, in the records, the session closed (and
+/// analysed when whole); the summary. The exit status: 1 when rows were lost or the recording
+/// cannot be read back or closed.
+int finishRun(const SessionSetup& setup, RecordsTarget& target, const session::SessionStats& s,
+              const RunTimes& t, bool record, std::ostream& out, std::ostream& err) {
+  const LiveOptions& o = setup.o;
   // The account of the recording is what the file holds, read back, not what the recorder was
   // handed: rows that a full disk kept from the file are counted as lost.
   std::optional<std::uint64_t> onDisk;
   std::string unreadable;
   std::string where = o.out;
   bool finishFailed = false;
-  if (toDb) {
+  if (setup.toDb) {
     // Complete, also after Ctrl-C (the user ended it), when every row is stored; interrupted
     // when rows were lost. If the status cannot be written the session stays "recording" and is
     // marked interrupted when the database is next opened.
-    where = "session " + std::to_string(sessionId);
+    storage::ClinicalStore& store = target.records->store();
+    where = "session " + std::to_string(target.sessionId);
     try {
-      onDisk = static_cast<std::uint64_t>(records->store().session(sessionId).sampleRows);
+      onDisk = static_cast<std::uint64_t>(store.session(target.sessionId).sampleRows);
     } catch (const std::exception& e) {
       unreadable = e.what();
     }
     const bool whole = onDisk && *onDisk == s.rowsToRecord;
     try {
-      records->store().finishSession(
-          sessionId,
+      store.finishSession(
+          target.sessionId,
           QString::fromLatin1(whole ? storage::kStatusComplete : storage::kStatusInterrupted));
     } catch (const std::exception& e) {
       err << "armtrack-cli: error: cannot close " << where << ": " << e.what()
           << "; it will be marked interrupted when the database is next opened\n";
       finishFailed = true;
     }
-    if (whole && !finishFailed) analyseNewSession(records->store(), sessionId, "record", err);
+    if (whole && !finishFailed) analyseNewSession(store, target.sessionId, "record", err);
   } else if (!o.out.empty()) {
     try {
       onDisk = rowsInRecording(o.out);
@@ -422,14 +455,14 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
   }
   if (o.stats || record) {
     out << (g_interrupted ? "interrupted; " : "") << "session summary:\n";
-    printStats(out, s, 100.0 * (cpu - cpu0) / (end - start), rss, onDisk);
-    if (rssAtMinute > 0.0) {
+    printStats(out, s, 100.0 * (t.cpu - t.cpu0) / (t.end - t.start), t.rss, onDisk);
+    if (t.rssAtMinute > 0.0) {
       char line[200];
       std::snprintf(line, sizeof line,
                     "  after the first minute: resident %.1f -> %.1f MB (%+.1f %%), CPU %.1f %% of "
                     "one core\n",
-                    rssAtMinute, rss, 100.0 * (rss - rssAtMinute) / rssAtMinute,
-                    100.0 * (cpu - cpuAtMinute) / (end - minuteTime));
+                    t.rssAtMinute, t.rss, 100.0 * (t.rss - t.rssAtMinute) / t.rssAtMinute,
+                    100.0 * (t.cpu - t.cpuAtMinute) / (t.end - t.minuteTime));
       out << line;
     }
   }
@@ -452,6 +485,30 @@ int runSession(const std::string& command, const std::vector<std::string>& args,
           << ") and then went on; no row was lost\n";
   }
   return 0;
+}
+
+int runSession(const std::string& command, const std::vector<std::string>& args, bool record,
+               std::ostream& out, std::ostream& err) {
+  const Args a(command, args, kSessionOptions);
+  if (a.help()) {
+    out << (record ? kRecordHelp : kLiveHelp);
+    return 0;
+  }
+  SessionSetup setup = parseSession(a, record);
+  RecordsTarget target;  // outlives the session, whose sink refers to it
+  if (setup.toDb) prepareRecordsTarget(a, setup, target, out);
+
+  QtApp qt;
+  app::PluginRegistry registry;
+  registry.load(pluginFolders(a));
+  session::Session session(setup.params);
+  if (!addDevices(setup.o, registry, session, target.devicesUsed, err)) return 1;
+  if (const QString why = session.start(); !why.isEmpty()) {
+    err << "armtrack-cli: error: " << why.toStdString() << "\n";
+    return 1;
+  }
+  const RunTimes times = runUntilDone(session, setup.o, out, err);
+  return finishRun(setup, target, session.stats(), times, record, out, err);
 }
 
 }  // namespace
