@@ -128,19 +128,9 @@ void Session::logEvent(const std::string& text) {
   }
 }
 
-QString Session::start() {
-  if (m_running) return QStringLiteral("the session is already running");
-  if (m_devices.empty()) return QStringLiteral("no device: add at least one device");
-  // One stream per role, and a camera model for marker pixels.
-  for (std::size_t i = 0; i < m_streams.size(); ++i)
-    for (std::size_t j = i + 1; j < m_streams.size(); ++j)
-      if (m_streams[i].info.role == m_streams[j].info.role)
-        return QStringLiteral("two streams provide the %1 (%2 and %3); keep one")
-            .arg(QString::fromLatin1(toString(m_streams[i].info.role)),
-                 m_devices[static_cast<std::size_t>(m_streams[i].device)].label,
-                 m_devices[static_cast<std::size_t>(m_streams[j].device)].label);
-  bool imu = false;
-  RecordingColumns columns;
+QString Session::columnsOfStreams(RecordingColumns& columns, bool& imu) {
+  imu = false;
+  columns = RecordingColumns{};
   columns.estimate = m_params.estimate;
   for (const Stream& s : m_streams) {
     switch (s.info.role) {
@@ -168,29 +158,10 @@ QString Session::start() {
         break;
     }
   }
-  m_scale = m_devices.front().device->timeScale();
-  for (const DeviceEntry& d : m_devices)
-    if (d.device->timeScale() != m_scale)
-      return QStringLiteral(
-                 "%1 runs at %2x and %3 at %4x: a replay faster than real time cannot "
-                 "be mixed with live devices")
-          .arg(m_devices.front().label)
-          .arg(m_scale)
-          .arg(d.label)
-          .arg(d.device->timeScale());
-  if (m_params.estimate && !imu)
-    return QStringLiteral(
-        "no IMU among the devices: the estimator needs the upper-arm or "
-        "forearm IMU (or record without estimating)");
-  {
-    EstimatorParams e = recordingParams(m_params.meta);
-    EstimatorParams p = m_params.estimator;
-    p.geometry = e.geometry;
-    p.gUp = e.gUp;
-    p.camera = e.camera;
-    p.side = e.side;
-    m_params.estimator = p;
-  }
+  return {};
+}
+
+QString Session::openRecording(const RecordingColumns& columns) {
   if (m_params.openSink && !m_params.recordingPath.empty())
     return QStringLiteral("record into a file or a database, not both");
   if (m_params.openSink) {
@@ -222,6 +193,48 @@ QString Session::start() {
       return QStringLiteral("cannot record: %1").arg(QString::fromStdString(e.what()));
     }
   }
+
+  return {};
+}
+
+QString Session::start() {
+  if (m_running) return QStringLiteral("the session is already running");
+  if (m_devices.empty()) return QStringLiteral("no device: add at least one device");
+  // One stream per role, and a camera model for marker pixels.
+  for (std::size_t i = 0; i < m_streams.size(); ++i)
+    for (std::size_t j = i + 1; j < m_streams.size(); ++j)
+      if (m_streams[i].info.role == m_streams[j].info.role)
+        return QStringLiteral("two streams provide the %1 (%2 and %3); keep one")
+            .arg(QString::fromLatin1(toString(m_streams[i].info.role)),
+                 m_devices[static_cast<std::size_t>(m_streams[i].device)].label,
+                 m_devices[static_cast<std::size_t>(m_streams[j].device)].label);
+  bool imu = false;
+  RecordingColumns columns;
+  if (QString why = columnsOfStreams(columns, imu); !why.isEmpty()) return why;
+  m_scale = m_devices.front().device->timeScale();
+  for (const DeviceEntry& d : m_devices)
+    if (d.device->timeScale() != m_scale)
+      return QStringLiteral(
+                 "%1 runs at %2x and %3 at %4x: a replay faster than real time cannot "
+                 "be mixed with live devices")
+          .arg(m_devices.front().label)
+          .arg(m_scale)
+          .arg(d.label)
+          .arg(d.device->timeScale());
+  if (m_params.estimate && !imu)
+    return QStringLiteral(
+        "no IMU among the devices: the estimator needs the upper-arm or "
+        "forearm IMU (or record without estimating)");
+  {
+    EstimatorParams e = recordingParams(m_params.meta);
+    EstimatorParams p = m_params.estimator;
+    p.geometry = e.geometry;
+    p.gUp = e.gUp;
+    p.camera = e.camera;
+    p.side = e.side;
+    m_params.estimator = p;
+  }
+  if (QString why = openRecording(columns); !why.isEmpty()) return why;
 
   m_stats = SessionStats{};
   for (const Stream& s : m_streams) {

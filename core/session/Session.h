@@ -191,6 +191,11 @@ class Session : public QObject {
     int firstStream = 0;
   };
 
+  /// The recording's columns from the streams (a camera needs its model); "" or why not.
+  QString columnsOfStreams(RecordingColumns& columns, bool& imu);
+  /// The recording's sink (openSink, or a file at recordingPath claimed unless overwrite); "" or
+  /// why not.
+  QString openRecording(const RecordingColumns& columns);
   void onSamples(int device, const SampleBatch& batch);
   void logEvent(const std::string& text);
   void workerLoop();
