@@ -272,63 +272,9 @@ void WebcamDevice::tickFile() {
           m_playStart + static_cast<double>(m_framesPlayed) / (m_fps * m_settings.speed);
       if (due > now) break;
     }
-    cv::Mat frame;
-    bool ok = false;
-    try {
-      ok = m_capture->read(frame);
-    } catch (const cv::Exception&) {
-      ok = false;
-    }
-    if (ok && !frame.empty()) {
-      m_failuresInRow = 0;
-      const double index = m_capture->get(cv::CAP_PROP_POS_FRAMES) - 1.0;
-      const double ms = m_capture->get(cv::CAP_PROP_POS_MSEC);
-      double t = std::isfinite(ms) && ms >= 0.0 ? ms / 1000.0 : std::max(0.0, index) / m_fps;
-      t += m_loopOffset;
-      // A container with broken timestamps must not make time run backwards.
-      if (t <= m_lastFileTime) t = m_lastFileTime + 1.0 / m_fps;
-      m_lastFileTime = t;
-      ++m_framesPlayed;
-      if (!processFrame(frame, t, batch)) {
-        countCorrupt(0, 1);
-        m_problems->note(1, QStringLiteral("%1: frame %2 could not be processed; skipped")
-                                .arg(m_settings.source)
-                                .arg(index));
-      }
-      continue;
-    }
-    // The read failed: the end, a damaged frame, or a file that breaks off.
-    const double pos = m_capture->get(cv::CAP_PROP_POS_FRAMES);
-    if (m_frameCount <= 0.0 || pos >= m_frameCount - 0.5) {
-      ended = true;
-      break;
-    }
-    ++m_failuresInRow;
-    bool advanced = false;
-    if (m_failuresInRow <= kMaxSkipsInRow) {
-      try {
-        advanced = m_capture->set(cv::CAP_PROP_POS_FRAMES, pos + 1.0) &&
-                   m_capture->get(cv::CAP_PROP_POS_FRAMES) > pos + 0.5;
-      } catch (const cv::Exception&) {
-        advanced = false;
-      }
-    }
-    if (!advanced) {
-      failure = QStringLiteral(
-                    "video file %1 breaks off at frame %2 of the %3 its header "
-                    "declares (truncated or damaged); the frames before were used. "
-                    "Record it again, or re-encode what is readable, e.g. ffmpeg -i "
-                    "IN -c:v mjpeg OUT.avi")
-                    .arg(m_settings.source)
-                    .arg(pos)
-                    .arg(m_frameCount);
-      break;
-    }
-    ++m_framesPlayed;
-    countCorrupt(0, 1);
-    m_problems->note(
-        1,
-        QStringLiteral("%1: frame %2 cannot be decoded; skipped").arg(m_settings.source).arg(pos));
+    const FileRead read = readFileFrame(batch, failure);
+    if (read == FileRead::Ended) ended = true;
+    if (read == FileRead::Ended || read == FileRead::Failed) break;
   }
   // Samples first: what was read before a failure is not lost.
   if (!batch.empty()) {
@@ -340,7 +286,67 @@ void WebcamDevice::tickFile() {
     fail(failure);
     return;
   }
-  if (!ended) return;
+  if (ended) endOfFile();
+}
+
+WebcamDevice::FileRead WebcamDevice::readFileFrame(SampleBatch& batch, QString& failure) {
+  cv::Mat frame;
+  bool ok = false;
+  try {
+    ok = m_capture->read(frame);
+  } catch (const cv::Exception&) {
+    ok = false;
+  }
+  if (ok && !frame.empty()) {
+    m_failuresInRow = 0;
+    const double index = m_capture->get(cv::CAP_PROP_POS_FRAMES) - 1.0;
+    const double ms = m_capture->get(cv::CAP_PROP_POS_MSEC);
+    double t = std::isfinite(ms) && ms >= 0.0 ? ms / 1000.0 : std::max(0.0, index) / m_fps;
+    t += m_loopOffset;
+    // A container with broken timestamps must not make time run backwards.
+    if (t <= m_lastFileTime) t = m_lastFileTime + 1.0 / m_fps;
+    m_lastFileTime = t;
+    ++m_framesPlayed;
+    if (!processFrame(frame, t, batch)) {
+      countCorrupt(0, 1);
+      m_problems->note(1, QStringLiteral("%1: frame %2 could not be processed; skipped")
+                              .arg(m_settings.source)
+                              .arg(index));
+    }
+    return FileRead::Frame;
+  }
+  // The read failed: the end, a damaged frame, or a file that breaks off.
+  const double pos = m_capture->get(cv::CAP_PROP_POS_FRAMES);
+  if (m_frameCount <= 0.0 || pos >= m_frameCount - 0.5) return FileRead::Ended;
+  ++m_failuresInRow;
+  bool advanced = false;
+  if (m_failuresInRow <= kMaxSkipsInRow) {
+    try {
+      advanced = m_capture->set(cv::CAP_PROP_POS_FRAMES, pos + 1.0) &&
+                 m_capture->get(cv::CAP_PROP_POS_FRAMES) > pos + 0.5;
+    } catch (const cv::Exception&) {
+      advanced = false;
+    }
+  }
+  if (!advanced) {
+    failure = QStringLiteral(
+                  "video file %1 breaks off at frame %2 of the %3 its header "
+                  "declares (truncated or damaged); the frames before were used. "
+                  "Record it again, or re-encode what is readable, e.g. ffmpeg -i "
+                  "IN -c:v mjpeg OUT.avi")
+                  .arg(m_settings.source)
+                  .arg(pos)
+                  .arg(m_frameCount);
+    return FileRead::Failed;
+  }
+  ++m_framesPlayed;
+  countCorrupt(0, 1);
+  m_problems->note(
+      1, QStringLiteral("%1: frame %2 cannot be decoded; skipped").arg(m_settings.source).arg(pos));
+  return FileRead::Skipped;
+}
+
+void WebcamDevice::endOfFile() {
   if (m_framesPlayed == 0 && !m_streamedBefore) {
     fail(QStringLiteral("video file %1 holds no readable frame; check the file or re-encode it")
              .arg(m_settings.source));

@@ -74,6 +74,13 @@ class WebcamDevice final : public Device {
   bool openCamera();
   void tick();
   void tickFile();
+  /// What reading the file's next frame gave.
+  enum class FileRead { Frame, Skipped, Ended, Failed };
+  /// Reads the next frame into batch, or skips a damaged one; failure says why the file cannot
+  /// go on (Failed).
+  FileRead readFileFrame(SampleBatch& batch, QString& failure);
+  /// The file's end: played again (loop=on), or the device ends; no readable frame at all fails.
+  void endOfFile();
   void tickCamera();
   /// Detects the markers and appends the sample; false when the frame is unusable.
   bool processFrame(const cv::Mat& frame, double deviceTime, SampleBatch& batch);
