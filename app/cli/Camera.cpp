@@ -11,9 +11,9 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Text.h"
-#include "devices/webcam/CameraCalibration.h"
-#include "devices/webcam/CameraFile.h"
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/CameraCalibration.h"
+#include "devices/vision/CameraFile.h"
+#include "devices/vision/MarkerDetection.h"
 
 namespace armtrack::cli {
 

@@ -6,7 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "devices/api/Options.h"
-#include "devices/webcam/CameraFile.h"
+#include "devices/vision/CameraFile.h"
 
 namespace armtrack::devices::kinect {
 

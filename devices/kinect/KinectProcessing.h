@@ -6,8 +6,8 @@
 #include <opencv2/core.hpp>
 #include <optional>
 
-#include "devices/webcam/CameraCalibration.h"
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/CameraCalibration.h"
+#include "devices/vision/MarkerDetection.h"
 
 namespace armtrack::devices::kinect {
 

@@ -8,8 +8,8 @@
 #include "devices/api/Options.h"
 #include "devices/api/TimerMs.h"
 #include "devices/net/UdpListen.h"
-#include "devices/webcam/CameraFile.h"
-#include "devices/webcam/CoreCameraParams.h"
+#include "devices/vision/CameraFile.h"
+#include "devices/vision/CoreCameraParams.h"
 
 Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 

@@ -10,9 +10,9 @@
 
 #include "devices/api/Device.h"
 #include "devices/api/ProblemLimiter.h"
-#include "devices/webcam/CameraFile.h"
-#include "devices/webcam/CoreCameraParams.h"
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/CameraFile.h"
+#include "devices/vision/CoreCameraParams.h"
+#include "devices/vision/MarkerDetection.h"
 
 class QTimer;
 namespace cv {

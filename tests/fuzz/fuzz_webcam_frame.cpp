@@ -7,9 +7,9 @@
 #include <opencv2/core/utils/logger.hpp>
 #include <string_view>
 
-#include "devices/webcam/CameraCalibration.h"
-#include "devices/webcam/CameraFile.h"
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/CameraCalibration.h"
+#include "devices/vision/CameraFile.h"
+#include "devices/vision/MarkerDetection.h"
 
 using namespace armtrack::devices::webcam;
 

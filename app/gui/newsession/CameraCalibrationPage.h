@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "devices/webcam/CameraCalibration.h"
+#include "devices/vision/CameraCalibration.h"
 
 class QCheckBox;
 class QLabel;

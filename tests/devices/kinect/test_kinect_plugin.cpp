@@ -5,8 +5,8 @@
 #include <QCoreApplication>
 #include <QElapsedTimer>
 
-#include "devices/webcam/CameraFile.h"
-#include "tests/devices/webcam/Synthetic.h"
+#include "devices/vision/CameraFile.h"
+#include "tests/devices/vision/Synthetic.h"
 #include "tests/support/LoadPlugin.h"
 
 using namespace armtrack;

@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "devices/kinect/KinectProcessing.h"
-#include "tests/devices/webcam/Synthetic.h"
+#include "tests/devices/vision/Synthetic.h"
 
 using namespace armtrack::devices;
 using namespace armtrack::devices::kinect;

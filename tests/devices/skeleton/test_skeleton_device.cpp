@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "devices/api/Device.h"
-#include "devices/webcam/CameraFile.h"
+#include "devices/vision/CameraFile.h"
 #include "tests/support/DeviceHarness.h"
 #include "tests/support/LoadPlugin.h"
 

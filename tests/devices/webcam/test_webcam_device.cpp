@@ -10,8 +10,8 @@
 #include <functional>
 #include <opencv2/videoio.hpp>
 
-#include "devices/webcam/CameraFile.h"
-#include "tests/devices/webcam/Synthetic.h"
+#include "devices/vision/CameraFile.h"
+#include "tests/devices/vision/Synthetic.h"
 #include "tests/support/LoadPlugin.h"
 
 using namespace armtrack;

@@ -8,8 +8,8 @@
 
 #include "app/cli/Args.h"
 #include "app/cli/Camera.h"
-#include "devices/webcam/CameraFile.h"
-#include "tests/devices/webcam/Synthetic.h"
+#include "devices/vision/CameraFile.h"
+#include "tests/devices/vision/Synthetic.h"
 
 using namespace armtrack;
 using namespace armtrack::devices::webcam;

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "core/io/Recording.h"
-#include "devices/webcam/CameraFile.h"
+#include "devices/vision/CameraFile.h"
 
 namespace armtrack::devices::webcam {
 

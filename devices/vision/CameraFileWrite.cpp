@@ -1,7 +1,7 @@
 // writeCameraFile lives apart from the parser: it needs armtrack_core (AtomicFile), which the fuzz
 // build does not have.
 #include "core/io/AtomicFile.h"
-#include "devices/webcam/CameraFile.h"
+#include "devices/vision/CameraFile.h"
 
 namespace armtrack::devices::webcam {
 

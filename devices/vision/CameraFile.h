@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "devices/webcam/CameraCalibration.h"
+#include "devices/vision/CameraCalibration.h"
 
 namespace armtrack::devices::webcam {
 

@@ -1,4 +1,4 @@
-#include "devices/webcam/CoreCameraParams.h"
+#include "devices/vision/CoreCameraParams.h"
 
 namespace armtrack::devices::webcam {
 

@@ -1,4 +1,4 @@
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/MarkerDetection.h"
 
 #include <algorithm>
 #include <array>

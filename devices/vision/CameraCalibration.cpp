@@ -1,4 +1,4 @@
-#include "devices/webcam/CameraCalibration.h"
+#include "devices/vision/CameraCalibration.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "devices/webcam/MarkerDetection.h"
+#include "devices/vision/MarkerDetection.h"
 
 namespace armtrack::devices::webcam {
 

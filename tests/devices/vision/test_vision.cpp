@@ -6,10 +6,10 @@
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgcodecs.hpp>
 
-#include "devices/webcam/CameraCalibration.h"
-#include "devices/webcam/CameraFile.h"
-#include "devices/webcam/MarkerDetection.h"
-#include "tests/devices/webcam/Synthetic.h"
+#include "devices/vision/CameraCalibration.h"
+#include "devices/vision/CameraFile.h"
+#include "devices/vision/MarkerDetection.h"
+#include "tests/devices/vision/Synthetic.h"
 
 using namespace armtrack::devices::webcam;
 using namespace armtrack::test::webcam;

@@ -1,4 +1,4 @@
-#include "devices/webcam/CameraFile.h"
+#include "devices/vision/CameraFile.h"
 
 #include <cmath>
 #include <fstream>
