@@ -4,7 +4,7 @@
 
 #include <Eigen/Core>
 
-#include "core/io/Recording.h"
+#include "core/camera/CameraParams.h"
 
 namespace armtrack {
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/io/Recording.h"
+#include "core/camera/CameraParams.h"
 #include "core/sync/SensorPayload.h"
 
 namespace armtrack {

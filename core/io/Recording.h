@@ -13,18 +13,11 @@
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/camera/CameraParams.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
 
 namespace armtrack {
-
-/// Pinhole camera with OpenCV's distortion model; R, t map shoulder-frame points to the camera.
-struct CameraParams {
-  double fx = 0, fy = 0, cx = 0, cy = 0;  ///< pixels
-  std::array<double, 5> dist{};           ///< k1, k2, p1, p2, k3
-  Eigen::Matrix3d R = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d t = Eigen::Vector3d::Zero();  ///< m
-};
 
 /// The sidecar's contents.
 struct RecordingMeta {

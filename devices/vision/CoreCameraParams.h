@@ -4,7 +4,7 @@
 
 #include <optional>
 
-#include "core/io/Recording.h"
+#include "core/camera/CameraParams.h"
 #include "devices/vision/CameraFile.h"
 
 namespace armtrack::devices::webcam {
