@@ -118,8 +118,7 @@ struct FileRun {
 /// log as they come; a recording without any IMU row is an error. With overlap, reading and
 /// writing run in their own threads (estimateStream).
 FileRun runFile(const fs::path& input, const Setup& setup, const Calibration* calibration,
-                CsvOutput* writer, const FileProgress& progress, std::ostream& log,
-                bool overlap) {
+                CsvOutput* writer, const FileProgress& progress, std::ostream& log, bool overlap) {
   requireFile(input);
   RecordingReader reader(input);
   for (const std::string& w : reader.warnings()) log << "warning: " << w << "\n";
@@ -288,8 +287,7 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
   std::vector<FileRun> runs(inputs.size());
   const auto start = std::chrono::steady_clock::now();
   // Reading and writing get threads of their own only when the recordings leave cores idle.
-  const bool overlap =
-      std::min<std::size_t>(threads, inputs.size()) < defaultBatchThreads();
+  const bool overlap = std::min<std::size_t>(threads, inputs.size()) < defaultBatchThreads();
   const BatchWork work = [&](std::size_t i, const BatchProgress& progress) {
     std::ostringstream log;
     std::optional<CsvOutput> writer;
