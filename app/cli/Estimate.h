@@ -53,11 +53,14 @@ using FileProgress =
 /// by calibration (when given), filtered and its estimate written to writer (when given), so
 /// memory does not grow with the recording. Rows equal those of estimateRecording on the whole
 /// recording, byte for byte. Throws RecordingError for a malformed row (the writer is then left
-/// uncommitted). A cancel flag that reads true stops the run (stats.cancelled).
+/// uncommitted). A cancel flag that reads true stops the run (stats.cancelled). With overlap,
+/// reading and writing run in two more threads beside the filter's (the caller's), a few batches
+/// of rows apart, with the same rows, progress and errors; without it, all in the caller's thread
+/// (when the other cores are busy anyway).
 EstimateStats estimateStream(RecordingReader& reader, const EstimatorParams& params,
                              const Calibration* calibration, CsvOutput* writer,
                              const FileProgress& progress = {},
-                             const std::atomic<bool>* cancel = nullptr);
+                             const std::atomic<bool>* cancel = nullptr, bool overlap = true);
 
 /// The diagnostic lines after a run (standard error for one recording): what the filter refused,
 /// restarts and recoveries, rows without an estimate, gated optical data, and why there are no

@@ -115,9 +115,10 @@ struct FileRun {
 };
 
 /// Streams input through the filter (and into writer). Warnings and the calibration's lines go to
-/// log as they come; a recording without any IMU row is an error.
+/// log as they come; a recording without any IMU row is an error. With overlap, reading and
+/// writing run in their own threads (estimateStream).
 FileRun runFile(const fs::path& input, const Setup& setup, const Calibration* calibration,
-                CsvOutput* writer, const FileProgress& progress, std::ostream& log) {
+                CsvOutput* writer, const FileProgress& progress, std::ostream& log, bool overlap) {
   requireFile(input);
   RecordingReader reader(input);
   for (const std::string& w : reader.warnings()) log << "warning: " << w << "\n";
@@ -127,7 +128,7 @@ FileRun runFile(const fs::path& input, const Setup& setup, const Calibration* ca
   FileRun run;
   run.params = makeParams(meta, setup.options);
   const auto start = std::chrono::steady_clock::now();
-  run.stats = estimateStream(reader, run.params, calibration, writer, progress);
+  run.stats = estimateStream(reader, run.params, calibration, writer, progress, nullptr, overlap);
   // A last line cut short is found at the end.
   for (std::size_t i = warned; i < reader.warnings().size(); ++i)
     log << "warning: " << reader.warnings()[i] << "\n";
@@ -209,7 +210,7 @@ int estimateOne(const Args& a, std::ostream& out, std::ostream& err) {
       err << "progress: " << nextPercent << "%\n";
   };
   const FileRun run = runFile(input, setup, calibration ? &*calibration : nullptr,
-                              writer ? &*writer : nullptr, progress, err);
+                              writer ? &*writer : nullptr, progress, err, true);
   err << summaryLine(run.stats, setup.options, run.seconds, outPath);
   writeDiagnostics(err, run.stats, run.params);
   out << formatReport(run.stats);
@@ -285,6 +286,8 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
   }
   std::vector<FileRun> runs(inputs.size());
   const auto start = std::chrono::steady_clock::now();
+  // Reading and writing get threads of their own only when the recordings leave cores idle.
+  const bool overlap = std::min<std::size_t>(threads, inputs.size()) < defaultBatchThreads();
   const BatchWork work = [&](std::size_t i, const BatchProgress& progress) {
     std::ostringstream log;
     std::optional<CsvOutput> writer;
@@ -294,7 +297,7 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
         [&](std::uint64_t, std::uint64_t bytes, std::uint64_t size) {
           if (size > 0) progress(static_cast<double>(bytes) / static_cast<double>(size));
         },
-        log);
+        log, overlap);
     if (!outDir) return;
     log << summaryLine(runs[i].stats, setup.options, runs[i].seconds,
                        std::optional<fs::path>(csvOut[i]));

@@ -254,6 +254,75 @@ TEST_F(CliTest, MissingFileExitsWithOne) {
   EXPECT_EQ(r.err.find("--help"), std::string::npos);
 }
 
+// estimateStream with reading and writing in threads of their own gives the serial loop's bytes,
+// progress calls and statistics; a bad row late in the file (thousands of rows after the first
+// batches) is the same error in both.
+TEST_F(CliTest, OverlappedStreamingEqualsTheSerialLoop) {
+  const fs::path rec = simulated(6.0);
+  struct Run {
+    std::string csv;
+    std::vector<std::uint64_t> progress;
+    armtrack::cli::EstimateStats stats;
+  };
+  const auto run = [](const fs::path& file, bool overlap) {
+    Run r;
+    armtrack::RecordingReader reader(file);
+    armtrack::cli::EstimateOptions opt;
+    opt.jointAccelStdDeg = 10.0;
+    std::ostringstream out;
+    armtrack::cli::CsvOutput writer(armtrack::cli::kEstimateHeader, std::nullopt, &out);
+    r.stats = armtrack::cli::estimateStream(
+        reader, armtrack::cli::makeParams(reader.meta(), opt), nullptr, &writer,
+        [&](std::uint64_t rows, std::uint64_t bytes, std::uint64_t size) {
+          r.progress.insert(r.progress.end(), {rows, bytes, size});
+        },
+        nullptr, overlap);
+    writer.commit();
+    r.csv = out.str();
+    return r;
+  };
+  const Run serial = run(rec, false), overlapped = run(rec, true);
+  EXPECT_GT(std::count(serial.csv.begin(), serial.csv.end(), '\n'), 6000);
+  EXPECT_EQ(overlapped.csv, serial.csv);
+  EXPECT_EQ(overlapped.progress, serial.progress);
+  EXPECT_GT(serial.progress.size(), 3u);
+  EXPECT_EQ(overlapped.stats.estimates, serial.stats.estimates);
+  EXPECT_EQ(overlapped.stats.imuRows, serial.stats.imuRows);
+  for (int j = 0; j < armtrack::kNumJoints; ++j)
+    EXPECT_EQ(overlapped.stats.rmseDeg(j), serial.stats.rmseDeg(j));
+
+  // Row 5000 of the data made unreadable: both stop with the same error.
+  std::vector<std::string> lines;
+  {
+    std::ifstream in(rec);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  std::size_t row = 0, bad = 0;
+  for (std::size_t i = 0; i < lines.size() && !bad; ++i)
+    if (!lines[i].empty() && lines[i][0] != '#' && ++row == 5001) bad = i;
+  ASSERT_GT(bad, 0u);
+  lines[bad] = "x" + lines[bad];
+  const fs::path broken = path("broken.csv");
+  {
+    std::ofstream out(broken);
+    for (const std::string& l : lines) out << l << "\n";
+  }
+  fs::copy_file(armtrack::sidecarPath(rec), armtrack::sidecarPath(broken));
+  std::string errors[2];
+  for (int k = 0; k < 2; ++k) {
+    try {
+      run(broken, k == 1);
+      ADD_FAILURE() << "no error";
+    } catch (const armtrack::RecordingError& e) {
+      errors[k] = e.what();
+    }
+  }
+  EXPECT_NE(errors[0].find(broken.string() + ":" + std::to_string(bad + 1) + ":1:"),
+            std::string::npos)
+      << errors[0];
+  EXPECT_EQ(errors[1], errors[0]);
+}
+
 TEST_F(CliTest, MalformedRecordingNamesLineAndColumn) {
   const fs::path bad = path("bad.csv");
   std::ofstream(bad) << "t,ua_gx,ua_gy,ua_gz,ua_ax,ua_ay,ua_az\n"

@@ -27,7 +27,15 @@ import tempfile
 CASES = [
     ("multi_kinect", ["--trajectory", "multi-joint", "--duration", "60", "--seed", "3"],
      [[], ["--joint-accel-std", "10"], ["--filter", "ukf", "--joint-accel-std", "10"],
-      ["--method", "B", "--joint-accel-std", "10"]]),
+      ["--method", "B", "--joint-accel-std", "10"],
+      # every method and both filters, with and without the optics
+      ["--no-kinect", "--joint-accel-std", "10"],
+      ["--no-kinect", "--method", "B", "--joint-accel-std", "10"],
+      ["--no-kinect", "--method", "C", "--joint-accel-std", "10"],
+      ["--no-kinect", "--filter", "ukf", "--joint-accel-std", "10"],
+      ["--method", "C", "--joint-accel-std", "10"],
+      ["--filter", "ukf", "--method", "B", "--joint-accel-std", "10"],
+      ["--filter", "ukf", "--method", "C", "--joint-accel-std", "10"]]),
     ("multi_webcam", ["--trajectory", "multi-joint", "--duration", "40", "--seed", "4",
                       "--webcam", "--no-kinect"],
      [["--joint-accel-std", "10"], ["--filter", "ukf", "--joint-accel-std", "10"]]),

@@ -1,7 +1,9 @@
 // One block of the sequential Kalman update (core/estimation/BlockUpdate.h) against the textbook
 // formulas written out with dense matrices: the optimal update P - K S K^T, the Joseph form for
 // the heading-blind gain (I - v u^T) K, a Jacobian given by its nonzero columns against the full
-// one, and a matrix that is not positive definite refused without touching P.
+// one, and a matrix that is not positive definite refused without touching P. Each with the
+// plain kernels and with the AVX2/FMA ones (skipped where the processor has none), and the two
+// kernels against each other.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -43,7 +45,25 @@ void josephReference(const Mat& p, const Mat3N& h, const Eigen::Matrix<double, N
   pOut = ikh * p * ikh.transpose() + k * variance.asDiagonal() * k.transpose();
 }
 
-TEST(BlockUpdate, OptimalUpdateEqualsTheTextbookFormulas) {
+// The parameter: whether fuseBlock uses the AVX2/FMA kernels.
+class BlockUpdate : public ::testing::TestWithParam<bool> {
+ protected:
+  void SetUp() override {
+    if (GetParam() && !m_hasFma) GTEST_SKIP() << "this processor has no AVX2/FMA";
+    detail::useFmaKernels() = GetParam();
+  }
+  void TearDown() override { detail::useFmaKernels() = m_hasFma; }
+
+ private:
+  const bool m_hasFma = detail::useFmaKernels();
+};
+
+INSTANTIATE_TEST_SUITE_P(Kernels, BlockUpdate, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& info) {
+                           return info.param ? "Fma" : "Plain";
+                         });
+
+TEST_P(BlockUpdate, OptimalUpdateEqualsTheTextbookFormulas) {
   std::mt19937_64 rng(7);
   for (int trial = 0; trial < 20; ++trial) {
     const Mat p0 = randomCovariance(rng);
@@ -69,7 +89,7 @@ TEST(BlockUpdate, OptimalUpdateEqualsTheTextbookFormulas) {
   }
 }
 
-TEST(BlockUpdate, BlindDirectionFollowsTheJosephFormOfTheProjectedGain) {
+TEST_P(BlockUpdate, BlindDirectionFollowsTheJosephFormOfTheProjectedGain) {
   std::mt19937_64 rng(11);
   for (int trial = 0; trial < 20; ++trial) {
     const Mat p0 = randomCovariance(rng);
@@ -106,7 +126,7 @@ TEST(BlockUpdate, BlindDirectionFollowsTheJosephFormOfTheProjectedGain) {
   }
 }
 
-TEST(BlockUpdate, NonzeroColumnsGiveTheFullJacobiansUpdate) {
+TEST_P(BlockUpdate, NonzeroColumnsGiveTheFullJacobiansUpdate) {
   std::mt19937_64 rng(13);
   const Mat p0 = randomCovariance(rng);
   const Eigen::Matrix<double, 2, 5> hAngles = randomMatrix<2, 5>(rng);
@@ -124,7 +144,7 @@ TEST(BlockUpdate, NonzeroColumnsGiveTheFullJacobiansUpdate) {
   EXPECT_NEAR(na, nb, 1e-14);
 }
 
-TEST(BlockUpdate, IndefiniteInnovationCovarianceIsRefusedAndChangesNothing) {
+TEST_P(BlockUpdate, IndefiniteInnovationCovarianceIsRefusedAndChangesNothing) {
   std::mt19937_64 rng(17);
   const Mat p0 = -randomCovariance(rng);  // S = H P H^T + R negative definite for small R
   const Mat3N h = randomMatrix<3, N>(rng);
@@ -134,6 +154,39 @@ TEST(BlockUpdate, IndefiniteInnovationCovarianceIsRefusedAndChangesNothing) {
   EXPECT_FALSE((fuseBlock<3, N, N>(h, 0, Vec3::Ones(), Vec3::Constant(1e-3), nullptr, p, dx, nis)));
   EXPECT_EQ(p, p0);
   EXPECT_EQ(dx, Vec::Constant(0.5));
+}
+
+// The AVX2/FMA kernels round each multiply-add once instead of twice; otherwise they sum in the
+// same order, so they agree with the plain ones to round-off, and P stays exactly symmetric.
+TEST(BlockUpdateKernels, FmaAndPlainKernelsAgreeToRoundOff) {
+  const bool hasFma = detail::useFmaKernels();
+  if (!hasFma) GTEST_SKIP() << "this processor has no AVX2/FMA";
+  std::mt19937_64 rng(19);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Mat p0 = randomCovariance(rng);
+    const Mat3N h = randomMatrix<3, N>(rng);
+    const Vec3 z = randomMatrix<3, 1>(rng), variance(0.02, 0.3, 0.7);
+    Vec u = Vec::Zero();
+    u.tail<5>() = randomMatrix<5, 1>(rng).normalized();
+    Vec v = randomMatrix<N, 1>(rng);
+    v += (1.0 - u.dot(v)) * u;
+    const BlindDirection<N> blind{v, u};
+    Mat p[2] = {p0, p0};
+    Vec dx[2] = {Vec::Zero(), Vec::Zero()};
+    double nis[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; ++k) {
+      detail::useFmaKernels() = k == 1;
+      ASSERT_TRUE((fuseBlock<3, N, N>(h, 0, z, variance, trial % 2 ? &blind : nullptr, p[k], dx[k],
+                                      nis[k])));
+      EXPECT_EQ(p[k], p[k].transpose());
+    }
+    detail::useFmaKernels() = hasFma;
+    EXPECT_LT((p[1] - p[0]).cwiseAbs().maxCoeff(), 1e-14 * p0.cwiseAbs().maxCoeff());
+    EXPECT_LT((dx[1] - dx[0]).cwiseAbs().maxCoeff(), 1e-14 * (1.0 + dx[0].cwiseAbs().maxCoeff()));
+    EXPECT_NEAR(nis[1], nis[0], 1e-13 * (1.0 + nis[0]));
+    // 3-row blocks over 15 columns: the tail columns (12-14) go through the scalar fused steps.
+    EXPECT_NE(p[1], p[0]);
+  }
 }
 
 }  // namespace
