@@ -678,10 +678,10 @@ class ArmFilter final : public JointEstimator {
   }
 
   // The heading's walk from the lag of the angles behind the motion (Method A): grows with the
-  // shoulder joints' squared speed.
+  // shoulder joints' speed, so with the path they travel.
   double headingSpeedTurnRate() const {
     if (!headingIsFree() || m_p.model != MeasurementModel::AccelGyro) return 0.0;
-    return m_p.headingSpeedVarianceRate * m_x.template segment<3>(5).squaredNorm();
+    return m_p.headingPathVarianceRate * m_x.template segment<3>(5).norm();
   }
 
   // Whether IMU updates are heading-blind now, and the directions they use: v the full-state
