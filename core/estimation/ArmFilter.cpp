@@ -553,8 +553,8 @@ class ArmFilter final : public JointEstimator {
     // variance grows with the squared joint-space length of a unit turn, which is large near the
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
     const Vec15 v = headingSymmetryAtState();
-    const double turnRate =
-        headingTurnRate() * generatorAt(m_x.template segment<5>(10)).squaredNorm();
+    const double turnRate = (headingTurnRate() + headingSpeedTurnRate()) *
+                            generatorAt(m_x.template segment<5>(10)).squaredNorm();
     m_P.template topLeftCorner<kBase, kBase>() += turnRate * dt * v * v.transpose();
     m_headingFloor += turnRate * dt;
     if constexpr (kAugmented) {
@@ -675,6 +675,13 @@ class ArmFilter final : public JointEstimator {
     if (!headingIsFree()) return 0.0;
     return m_p.model == MeasurementModel::AccelGyro ? m_p.headingVarianceRate
                                                     : m_p.inclinometerHeadingVarianceRate;
+  }
+
+  // The heading's walk from the lag of the angles behind the motion (Method A): grows with the
+  // shoulder joints' speed, so with the path they travel.
+  double headingSpeedTurnRate() const {
+    if (!headingIsFree() || m_p.model != MeasurementModel::AccelGyro) return 0.0;
+    return m_p.headingPathVarianceRate * m_x.template segment<3>(5).norm();
   }
 
   // Whether IMU updates are heading-blind now, and the directions they use: v the full-state

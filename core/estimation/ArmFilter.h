@@ -78,6 +78,14 @@ struct EstimatorParams {
   /// 1 kHz gives 1e-4 (deg)^2/s. A real sensor's bias and misalignment turn it faster; heading
   /// matching opens the heading up when the optics see that.
   double headingVarianceRate = 1e-4 * kDeg * kDeg;
+  /// Method A: the heading's random walk that grows with the motion, per radian the shoulder
+  /// joints travel (rad^2 of turn per rad, i.e. rad^2/s per rad/s of the shoulder joints'
+  /// speed). The estimate lags smooth motion a little and, as the turn a change of the angles
+  /// makes depends on the path, the lagging path turns the arm about the vertical where no IMU
+  /// can see it. Measured without optics after a Kinect fix on 24 five-joint runs (seeds 31-38,
+  /// 51-58, 71-78; Table 5 noise): 0.6-1.3e-7 beyond the gyroscopes' walk (docs/estimator.md,
+  /// "Uncertainty").
+  double headingPathVarianceRate = 1e-7;
   /// The same for Methods B and C, whose accelerometer model leaves body acceleration out: the
   /// tilt errors that leaves turn into heading errors as the arm rotates. 1 (deg)^2/s.
   double inclinometerHeadingVarianceRate = 1.0 * kDeg * kDeg;

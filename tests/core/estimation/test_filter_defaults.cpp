@@ -5,8 +5,9 @@
 //   joint under 1 deg RMSE from the first second;
 // - honest uncertainty: on five-joint movement with IMUs only, IMUs + Kinect and IMUs + webcam,
 //   the share of estimates whose error lies inside two reported standard deviations, pooled
-//   over seeds: between 90 % and 99 % for every joint with IMUs only and with a Kinect, and for
-//   the elbow with a webcam; the shoulder's known gap with a webcam is stated below.
+//   over seeds and noise draws: between 90 % and 99 % for every joint with IMUs only, with a
+//   Kinect and with a webcam; and the heading's assumed random walk against the one the filter
+//   makes without optics.
 // The defaults were chosen on reaching seeds 11-12 and multi-joint seeds 1-3; these use others.
 #include <gtest/gtest.h>
 
@@ -14,6 +15,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/Heading.h"
@@ -122,51 +124,98 @@ INSTANTIATE_TEST_SUITE_P(Defaults, FastReaching,
                                   std::to_string(static_cast<int>(i.param.peakRateDeg));
                          });
 
+// The heading's random walk the filter assumes (the gyroscopes' own plus the motion walk, which
+// grows with the path the shoulder joints travel) against the walk it makes: a Kinect fix up to
+// 2 s, then IMUs alone (Table 5 noise), on movements the rate was not measured on. The truth's
+// turn about the vertical relative to the estimate, changed over 1 s windows, has a mean square
+// that the model must match within a factor of two. The gyroscopes' walk alone is five times too
+// small (docs/estimator.md, "Uncertainty").
+TEST(HeadingWalk, MatchesTheMotionModelWithoutOptics) {
+  const EstimatorParams defaults;
+  double measured = 0.0, modelled = 0.0;
+  for (std::uint64_t seed = 91; seed <= 98; ++seed) {
+    const Recording rec = simulateRecording(MultiJointTrajectory(seed),
+                                            simulation(20.0, seed, 1000.0, Optics::Kinect));
+    EstimatorParams p = recordingParams(rec.meta);
+    const Eigen::Vector3d up = p.gUp.normalized();
+    auto f = makeEstimator(p);
+    double windowStart = 3.0, turnAtStart = NAN, path = 0.0, lastT = NAN;
+    for (ArmSample s : rec.samples) {
+      if (s.t > 2.0) {  // the Kinect's fix ends
+        s.elbow.reset();
+        s.wrist.reset();
+      }
+      f->update(s);
+      if (!s.trueAngles || s.t < windowStart || !f->initialised()) continue;
+      const JointEstimate e = f->estimate();
+      JointVector d;
+      for (int j = 0; j < kNumJoints; ++j) d(j) = wrapAngle(e.th(j) - (*s.trueAngles)(j));
+      const double turn = headingCovector(*s.trueAngles, up).dot(d);
+      if (std::isnan(turnAtStart)) turnAtStart = turn;
+      if (!std::isnan(lastT)) path += e.thd.head<3>().norm() * (s.t - lastT);
+      lastT = s.t;
+      if (s.t >= windowStart + 1.0) {
+        measured += (turn - turnAtStart) * (turn - turnAtStart);
+        modelled += defaults.headingVarianceRate * 1.0 + defaults.headingPathVarianceRate * path;
+        windowStart += 1.0;
+        turnAtStart = turn;
+        path = 0.0;
+      }
+    }
+  }
+  std::printf("[ measured ] heading walk without optics, measured / modelled: %.2f\n",
+              measured / modelled);
+  EXPECT_GT(measured / modelled, 0.5) << "the heading's assumed walk is too large";
+  EXPECT_LT(measured / modelled, 2.0) << "the heading's assumed walk is too small";
+}
+
 class Coverage : public testing::TestWithParam<Optics> {};
 
 TEST_P(Coverage, TwoSigmaHoldsNinetyToNinetyNinePercent) {
   // Without optics the start heading is a guess whose stated uncertainty (initialHeadingStd) is
   // only tested fairly if the true arm's heading is drawn from it: each run turns the truth by
   // a draw of N(0, initialHeadingStd). The shoulder's error is then one draw per run, so IMU-only
-  // coverage needs many short runs (320 of 2 s: about 1 % sampling error) where the optical
-  // set-ups need a few long ones.
+  // coverage needs many short runs (320 of 2 s: about 1 % sampling error).
+  // With optics the heading error wanders over seconds, so four runs of 19 s hold about a dozen
+  // independent heading errors and their share moves by several points with the noise draw
+  // alone (84-98 % on the same four movements). The test therefore pools 88 runs: movements
+  // 31-34 with ten noise draws each, and 91-98, on which nothing was measured or tuned, with
+  // six. Pools of half that size with other draws spread over 93.5-98.3 % on the shoulder.
+  struct Pool {
+    std::uint64_t firstSeed;
+    int movements, draws;
+  };
   const bool imusOnly = GetParam() == Optics::None;
-  const int runs = imusOnly ? 320 : 4;
-  const std::uint64_t firstSeed = imusOnly ? 4001 : 31;
+  const std::vector<Pool> pools =
+      imusOnly ? std::vector<Pool>{{4001, 320, 1}} : std::vector<Pool>{{31, 4, 10}, {91, 8, 6}};
   std::mt19937_64 rng(7);
   std::normal_distribution<double> heading(0.0, EstimatorParams{}.initialHeadingStd);
   Tally t;
-  for (int k = 0; k < runs; ++k) {
-    const std::uint64_t seed = firstSeed + k;
-    const double turn = imusOnly ? heading(rng) : 0.0;
-    const Recording rec = simulateRecording(
-        MultiJointTrajectory(seed), simulation(imusOnly ? 2.0 : 20.0, seed, 1000.0, GetParam()));
+  for (const Pool& pool : pools) {
     const JointVector insideBefore = t.inside;
     const double countBefore = t.count;
-    run(rec, FilterKind::Ekf, 1.0, t, turn);
+    for (int d = 0; d < pool.draws; ++d)
+      for (int k = 0; k < pool.movements; ++k) {
+        const std::uint64_t seed = pool.firstSeed + k;
+        const double turn = imusOnly ? heading(rng) : 0.0;
+        // The movement comes from `seed`, the sensor noise from seed + 1000 d.
+        const Recording rec = simulateRecording(
+            MultiJointTrajectory(seed),
+            simulation(imusOnly ? 2.0 : 20.0, seed + 1000 * d, 1000.0, GetParam()));
+        run(rec, FilterKind::Ekf, 1.0, t, turn);
+      }
     if (!imusOnly)
-      std::printf("[ measured ] %s, seed %lu: inside 2 sd (%%) %s\n", opticsName(GetParam()),
-                  static_cast<unsigned long>(seed),
+      std::printf("[ measured ] %s, movements %lu-%lu, %d noise draws: inside 2 sd (%%) %s\n",
+                  opticsName(GetParam()), static_cast<unsigned long>(pool.firstSeed),
+                  static_cast<unsigned long>(pool.firstSeed + pool.movements - 1), pool.draws,
                   row((t.inside - insideBefore) / (t.count - countBefore), 100.0).c_str());
   }
   const JointVector cover = t.coverage();
   std::printf("[ measured ] %s: inside 2 sd (%%) %s; RMSE (deg) %s\n", opticsName(GetParam()),
               row(cover, 100.0).c_str(), row(t.errors.rmse() / kDeg).c_str());
-  // Known gap (issue 9, acceptance 3), asserted as it stands so a regression still fails: with a
-  // webcam the shoulder's sd is too small on some movements (seeds 31-32: 67-82 % inside, errors
-  // of 0.1-0.3 deg along the heading); pooled 84-86 %. The heading drifts as the filter's
-  // angles lag smooth motion, which the covariance does not model (docs/estimator.md,
-  // "Uncertainty"). Before heading-blind updates held the turn about the vertical itself
-  // (headingCovector) the pooled share was 82-85 %, below this floor.
-  const double shoulderLeast = GetParam() == Optics::Webcam ? 0.83 : 0.90;
-  const bool shoulderUpperBound = GetParam() != Optics::Webcam;
   for (int j = 0; j < kNumJoints; ++j) {
-    const bool shoulder = j < 3;
-    EXPECT_GE(cover(j), shoulder ? shoulderLeast : 0.90)
-        << "joint " << j << ": the reported sd is too small";
-    if (!shoulder || shoulderUpperBound) {
-      EXPECT_LE(cover(j), 0.99) << "joint " << j << ": the reported sd is too large";
-    }
+    EXPECT_GE(cover(j), 0.90) << "joint " << j << ": the reported sd is too small";
+    EXPECT_LE(cover(j), 0.99) << "joint " << j << ": the reported sd is too large";
   }
 }
 
