@@ -101,10 +101,12 @@ TEST_P(FastReaching, EveryJointWithinOneDegree) {
     Tally t;
     run(rec, c.kind, 1.0, t);
     const JointVector rmse = t.errors.rmse() / kDeg;
-    std::printf("[ measured ] %s reaching %.0f deg/s, %s, seed %lu: RMSE (deg) %s, peak %.2f\n",
-                c.kind == FilterKind::Ekf ? "EKF" : "UKF", c.peakRateDeg, opticsName(c.optics),
-                static_cast<unsigned long>(seed), row(rmse).c_str(),
-                t.errors.peak().maxCoeff() / kDeg);
+    std::printf(
+        "[ measured ] %s reaching %.0f deg/s, %s, seed %lu: RMSE (deg) %s, peak %.2f, inside 2 "
+        "sd (%%) %s\n",
+        c.kind == FilterKind::Ekf ? "EKF" : "UKF", c.peakRateDeg, opticsName(c.optics),
+        static_cast<unsigned long>(seed), row(rmse).c_str(), t.errors.peak().maxCoeff() / kDeg,
+        row(t.coverage(), 100.0).c_str());
     EXPECT_EQ(t.estimated, t.imuRows) << "every IMU row gets an estimate";
     for (int j = 0; j < kNumJoints; ++j)
       EXPECT_LT(rmse(j), 1.0) << "joint " << j << ", seed " << seed;
