@@ -37,12 +37,7 @@ ProgressChart::ProgressChart(QWidget* parent)
   auto* top = new QHBoxLayout;
   m_angleLabel = new QLabel(this);
   m_angleLabel->setBuddy(m_angle);
-  // Each angle's named direction, then its opposite where the normal range gives a limit for it
-  // (not shoulder adduction, which has none, nor elbow extension, whose normal end is 0).
-  for (const NormativeRange& r : aaosNormativeRanges()) {
-    m_motions.push_back({r.angle, false});
-    if (r.minRad && *r.minRad < 0) m_motions.push_back({r.angle, true});
-  }
+  m_motions = motionDirections(aaosNormativeRanges());
   for (std::size_t i = 0; i < m_motions.size(); ++i) m_angle->addItem(QString());
   top->addWidget(m_angleLabel);
   top->addWidget(m_angle);
@@ -165,10 +160,8 @@ void ProgressChart::redraw() {
   const double scale = m_radians ? 1.0 : kRadToDeg;
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
   // The largest angle in the chosen direction (flexion, not flexion + extension) against that
-  // motion's normal range from the neutral position. The opposite direction is the signed axis'
-  // negative side: its largest angle is minus the session's smallest.
-  const double normalRad =
-      motion.opposite ? -normal.minRad.value_or(0.0) : namedMotionNormalRad(normal);
+  // motion's normal range from the neutral position.
+  const double normalRad = motionNormalRad(normal, motion.opposite);
   const double normalDeg = normalRad * scale;
 
   auto* chart = new QChart;
@@ -191,9 +184,10 @@ void ProgressChart::redraw() {
   double highest = normalDeg, lowest = 0;
   m_points = 0;
   for (const SessionExtremes& s : m_sessions) {
-    const auto& extreme = (motion.opposite ? s.minRad : s.maxRad)[static_cast<std::size_t>(a)];
-    if (!extreme) continue;
-    const std::optional<double> peak = motion.opposite ? -*extreme : *extreme;
+    const auto i = static_cast<std::size_t>(a);
+    const std::optional<double> peak =
+        largestInDirection(s.minRad[i], s.maxRad[i], motion.opposite);
+    if (!peak) continue;
     const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
     if (!when.isValid()) continue;
     const double deg = *peak * scale;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "app/gui/services/PatientRecords.h"
+#include "core/metrics/NormativeRanges.h"
 
 class QChart;
 class QChartView;
@@ -51,11 +52,7 @@ class ProgressChart : public QWidget {
   void changeEvent(QEvent* event) override;
 
  private:
-  /// One entry of the motion chooser.
-  struct Motion {
-    int angle = 0;
-    bool opposite = false;
-  };
+  using Motion = MotionDirection;
   static QString nameOf(const Motion& m);
   void retranslateUi();
   void redraw();

@@ -50,4 +50,24 @@ double fractionOfNamedMotionNormal(const NormativeRange& r, double romRad) {
   return romRad / namedMotionNormalRad(r);
 }
 
+std::vector<MotionDirection> motionDirections(
+    const std::array<NormativeRange, kNumClinicalAngles>& ranges) {
+  std::vector<MotionDirection> out;
+  for (const NormativeRange& r : ranges) {
+    out.push_back({r.angle, false});
+    if (r.minRad && *r.minRad < 0) out.push_back({r.angle, true});
+  }
+  return out;
+}
+
+double motionNormalRad(const NormativeRange& r, bool opposite) {
+  return opposite ? -r.minRad.value_or(0.0) : namedMotionNormalRad(r);
+}
+
+std::optional<double> largestInDirection(const std::optional<double>& minRad,
+                                         const std::optional<double>& maxRad, bool opposite) {
+  if (!opposite) return maxRad;
+  return minRad ? std::optional<double>(-*minRad) : std::nullopt;
+}
+
 }  // namespace armtrack

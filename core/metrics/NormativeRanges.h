@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string_view>
+#include <vector>
 
 #include "core/metrics/RangeOfMotion.h"
 
@@ -55,5 +56,28 @@ double namedMotionNormalRad(const NormativeRange& r);
 
 /// A patient's range of motion of the named motion as a fraction of its normal range.
 double fractionOfNamedMotionNormal(const NormativeRange& r, double romRad);
+
+/// One direction of a clinical angle's motion: the one its name says (flexion, abduction,
+/// internal rotation, elbow flexion, pronation) or the opposite one (extension, external
+/// rotation, supination), the signed axis' negative side.
+struct MotionDirection {
+  int angle = 0;  ///< index in clinicalAngleInfo() order
+  bool opposite = false;
+};
+
+/// The directions with a normal limit of their own, in angle order, each angle's named direction
+/// first: the opposite one where the range gives a negative limit (not shoulder adduction, which
+/// has none in the AAOS table, nor elbow extension, whose normal end is 0).
+std::vector<MotionDirection> motionDirections(
+    const std::array<NormativeRange, kNumClinicalAngles>& ranges);
+
+/// The direction's normal range from the neutral position (rad): namedMotionNormalRad, or minus
+/// the negative limit (0 where there is none).
+double motionNormalRad(const NormativeRange& r, bool opposite);
+
+/// The largest angle a session reached in the direction (rad), from its smallest and largest
+/// angle: the largest, or minus the smallest. Empty when that end is unknown.
+std::optional<double> largestInDirection(const std::optional<double>& minRad,
+                                         const std::optional<double>& maxRad, bool opposite);
 
 }  // namespace armtrack

@@ -15,16 +15,14 @@ std::optional<double> deg(const std::optional<double>& rad) {
   return rad ? std::optional<double>(*rad * kRadToDeg) : std::nullopt;
 }
 
-/// The motion an angle is named after: its name, but for the forearm, whose name some languages
-/// give to the whole axis ("Pronation/Supination") while supination has a chart of its own.
-QString namedMotionName(int angle) {
-  return angle == 4 ? Text::tr("Forearm pronation", "the motion, beside the supination chart")
-                    : angleName(angle);
-}
-
-/// The motion opposite to the one an angle is named after, where it has a name of its own.
-QString oppositeMotionName(int angle) {
-  switch (angle) {
+/// A direction's name for its chart: the angle's name for the named direction, but for the
+/// forearm, whose name some languages give to the whole axis ("Pronation/Supination") while
+/// supination has a chart of its own; the opposite directions by their own names.
+QString motionName(const MotionDirection& m) {
+  if (!m.opposite)
+    return m.angle == 4 ? Text::tr("Forearm pronation", "the motion, beside the supination chart")
+                        : angleName(m.angle);
+  switch (m.angle) {
     case 0:
       return Text::tr("Shoulder extension");
     case 2:
@@ -32,7 +30,7 @@ QString oppositeMotionName(int angle) {
     case 4:
       return Text::tr("Forearm supination");
     default:
-      return {};
+      return angleName(m.angle);
   }
 }
 
@@ -59,30 +57,19 @@ void draw(PageWriter& w, const ProgressReportData& d,
     std::vector<QDateTime> when;
     for (const ProgressSession& s : sessions) when.push_back(parseIso(s.startedAt));
     const auto& ranges = aaosNormativeRanges();
-    for (int a = 0; a < kNumClinicalAngles; ++a) {
-      const NormativeRange& normal = ranges[static_cast<std::size_t>(a)];
-      // The largest angle in the named direction, which is what the named motion's normal range
-      // measures; a range of motion would add the opposite motion (extension to flexion) to it.
+    // Each direction against its own normal range from the neutral position: the largest angle
+    // in the named direction, which is what the named motion's normal range measures (a range
+    // of motion would add extension to flexion), and the opposite one where the range gives it
+    // a limit (shoulder extension, external rotation, supination).
+    for (const MotionDirection& m : motionDirections(ranges)) {
+      const auto a = static_cast<std::size_t>(m.angle);
       std::vector<std::optional<double>> largest;
       for (const ProgressSession& s : sessions)
-        largest.push_back(deg(s.maxRad[static_cast<std::size_t>(a)]));
-      QRectF r = w.reserve(w.mm(44));
+        largest.push_back(deg(largestInDirection(s.minRad[a], s.maxRad[a], m.opposite)));
+      const QRectF r = w.reserve(w.mm(44));
       drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
-                    Text::tr("%1: largest angle reached (deg)").arg(namedMotionName(a)), when,
-                    largest, namedMotionNormalRad(normal) * kRadToDeg);
-      // The opposite motion where the normal range gives a limit for it (shoulder extension,
-      // external rotation, supination): minus the smallest angle, against that limit.
-      const QString opposite = oppositeMotionName(a);
-      if (!normal.minRad || !(*normal.minRad < 0) || opposite.isEmpty()) continue;
-      largest.clear();
-      for (const ProgressSession& s : sessions) {
-        const std::optional<double> lowest = deg(s.minRad[static_cast<std::size_t>(a)]);
-        largest.push_back(lowest ? std::optional<double>(-*lowest) : std::nullopt);
-      }
-      r = w.reserve(w.mm(44));
-      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
-                    Text::tr("%1: largest angle reached (deg)").arg(opposite), when, largest,
-                    -*normal.minRad * kRadToDeg);
+                    Text::tr("%1: largest angle reached (deg)").arg(motionName(m)), when, largest,
+                    motionNormalRad(ranges[a], m.opposite) * kRadToDeg);
     }
     const std::string_view source = normSourceCitation(NormSource::Aaos);
     w.paragraph(Text::tr("Normal ranges: %1.")

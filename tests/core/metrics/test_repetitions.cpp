@@ -385,6 +385,24 @@ TEST(NormativeRanges, AaosValuesAndSpans) {
   for (int a = 0; a < kNumClinicalAngles; ++a)
     EXPECT_NEAR(namedMotionNormalRad(n[a]) * kRadToDeg, named[a], 1e-9) << a;
   EXPECT_NEAR(fractionOfNamedMotionNormal(n[0], 90 * kDegToRad), 0.5, 1e-12);
+  // Eight directions: each angle's named one, and extension, external rotation and supination,
+  // with their own limits (60, 90, 80 deg); abduction and elbow flexion have no opposite one.
+  const std::vector<MotionDirection> dirs = motionDirections(n);
+  ASSERT_EQ(dirs.size(), 8u);
+  const int angles[] = {0, 0, 1, 2, 2, 3, 4, 4};
+  const bool opposite[] = {false, true, false, false, true, false, false, true};
+  const double normal[] = {180, 60, 180, 70, 90, 150, 80, 80};
+  for (std::size_t i = 0; i < dirs.size(); ++i) {
+    EXPECT_EQ(dirs[i].angle, angles[i]) << i;
+    EXPECT_EQ(dirs[i].opposite, opposite[i]) << i;
+    EXPECT_NEAR(
+        motionNormalRad(n[static_cast<std::size_t>(dirs[i].angle)], dirs[i].opposite) * kRadToDeg,
+        normal[i], 1e-9)
+        << i;
+  }
+  EXPECT_EQ(largestInDirection(-0.2, 1.1, false), std::optional<double>(1.1));
+  EXPECT_EQ(largestInDirection(-0.2, 1.1, true), std::optional<double>(0.2));
+  EXPECT_EQ(largestInDirection(std::nullopt, 1.1, true), std::nullopt);
   EXPECT_NE(normSourceCitation(NormSource::Aaos).find("AAOS 1965"), std::string_view::npos);
   for (int a = 0; a < kNumClinicalAngles; ++a) {
     EXPECT_EQ(n[a].angle, a);
