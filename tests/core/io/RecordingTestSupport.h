@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/io/Recording.h"
+#include "tests/support/TempDirTest.h"
 
 namespace armtrack::recording_test {
 
@@ -43,22 +44,13 @@ inline std::string readText(const fs::path& p) {
   return s.str();
 }
 
-class RecordingTest : public ::testing::Test {
+class RecordingTest : public armtrack::test::TempDirTest {
  protected:
-  void SetUp() override {
-    const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    dir_ = fs::temp_directory_path() /
-           ("armtrack_test_recording_" + name + "_" + std::to_string(std::random_device{}()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
+  RecordingTest() : TempDirTest("armtrack_test_recording_") {}
 
   /// Writes text byte for byte (no newline translation).
   fs::path writeText(const std::string& name, const std::string& text) {
-    const fs::path p = dir_ / name;
+    const fs::path p = m_dir / name;
     std::ofstream out(p, std::ios::binary);
     out << text;
     return p;
@@ -72,11 +64,9 @@ class RecordingTest : public ::testing::Test {
 
   std::set<std::string> dirEntries() const {
     std::set<std::string> names;
-    for (const auto& e : fs::directory_iterator(dir_)) names.insert(e.path().filename().string());
+    for (const auto& e : fs::directory_iterator(m_dir)) names.insert(e.path().filename().string());
     return names;
   }
-
-  fs::path dir_;
 };
 
 /// The RecordingError thrown by f, or a failure when none is thrown.

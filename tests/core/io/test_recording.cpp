@@ -36,9 +36,9 @@ TEST(SidecarPathTest, ReplacesTheExtension) {
 
 TEST_F(RecordingTest, RoundTripIsBitExact) {
   const Recording rec = mixedRecording();
-  const fs::path p = dir_ / "session.csv";
+  const fs::path p = m_dir / "session.csv";
   writeRecording(p, rec);
-  ASSERT_TRUE(fs::exists(dir_ / "session.json"));
+  ASSERT_TRUE(fs::exists(m_dir / "session.json"));
   const Recording back = readRecording(p);
   EXPECT_TRUE(back.warnings.empty());
   expectSameMeta(rec.meta, back.meta);
@@ -54,7 +54,7 @@ TEST_F(RecordingTest, RoundTripWithoutCameraAndWithDefaults) {
   rec.samples[1].t = 0.0;  // equal times are allowed
   rec.samples[2].t = 1.5;
   rec.samples[1].elbow = Eigen::Vector3d(0.1, 0.2, 0.3);
-  const fs::path p = dir_ / "r.csv";
+  const fs::path p = m_dir / "r.csv";
   writeRecording(p, rec);
   const Recording back = readRecording(p);
   expectSameMeta(rec.meta, back.meta);
@@ -73,7 +73,7 @@ TEST_F(RecordingTest, WrittenTextHasCommentHeaderInFixedOrderAndEmptyCells) {
   b.trueAngles = th;
   b.camElbow = Eigen::Vector2d(320, 240.25);
   rec.samples = {a, b};
-  const fs::path p = dir_ / "r.csv";
+  const fs::path p = m_dir / "r.csv";
   writeRecording(p, rec);
   EXPECT_EQ(readText(p),
             "# ArmTrack recording, format version 1\n"
@@ -81,21 +81,21 @@ TEST_F(RecordingTest, WrittenTextHasCommentHeaderInFixedOrderAndEmptyCells) {
             "true_th0,true_th1,true_th2,true_th4,true_th5\n"
             "0,1,2,3,4,5,6.5,,,,,,,\n"
             "0.5,,,,,,,320,240.25,0.1,0.2,0.3,0.4,-0.5\n");
-  const std::string json = readText(dir_ / "r.json");
+  const std::string json = readText(m_dir / "r.json");
   EXPECT_NE(json.find("\"format\": \"armtrack-recording\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"version\": 1"), std::string::npos) << json;
   EXPECT_NE(json.find("\n  \"geometry\": {"), std::string::npos) << "pretty-printed: " << json;
 }
 
 TEST_F(RecordingTest, EmptyRecordingHasOnlyTimeColumn) {
-  const fs::path p = dir_ / "r.csv";
+  const fs::path p = m_dir / "r.csv";
   writeRecording(p, Recording{});
   EXPECT_EQ(readText(p), "# ArmTrack recording, format version 1\nt\n");
   EXPECT_TRUE(readRecording(p).samples.empty());
 }
 
 TEST_F(RecordingTest, OverwritesAnExistingRecording) {
-  const fs::path p = dir_ / "r.csv";
+  const fs::path p = m_dir / "r.csv";
   writeRecording(p, mixedRecording());
   Recording second;
   second.samples.resize(1);
@@ -285,10 +285,10 @@ TEST_F(RecordingTest, DuplicateColumn) {
 }
 
 TEST_F(RecordingTest, UnopenableFile) {
-  const fs::path p = dir_ / "does_not_exist.csv";
+  const fs::path p = m_dir / "does_not_exist.csv";
   expectError(readError(p), p, 0, 0,
               "cannot open file: " + std::generic_category().message(ENOENT));
-  const fs::path d = dir_ / "a_directory.csv";
+  const fs::path d = m_dir / "a_directory.csv";
   fs::create_directory(d);
   expectError(readError(d), d, 0, 0, "cannot open file");
 }
@@ -300,7 +300,7 @@ TEST_F(RecordingTest, MissingSidecarGivesWarningAndDefaults) {
   const fs::path p = writeText("rec.csv", "t\n0\n");
   const Recording rec = readRecording(p);
   ASSERT_EQ(rec.warnings.size(), 1u);
-  EXPECT_NE(rec.warnings[0].find((dir_ / "rec.json").string()), std::string::npos)
+  EXPECT_NE(rec.warnings[0].find((m_dir / "rec.json").string()), std::string::npos)
       << rec.warnings[0];
   EXPECT_EQ(rec.meta.geometry.l3, 0.22);
   EXPECT_EQ(rec.meta.geometry.lf8, 0.01);
@@ -315,7 +315,7 @@ TEST_F(RecordingTest, CorruptSidecarJsonIsAnError) {
   const std::string text = "{\"format\": \"armtrack-recording\",\n  \"version\": 1,,\n}\n";
   const fs::path j = writeText("rec.json", text);
   const std::size_t byte = text.find(",,") + 2;  // 1-based position of the second comma
-  const RecordingError e = readError(dir_ / "rec.csv");
+  const RecordingError e = readError(m_dir / "rec.csv");
   expectError(e, j, 2, 16, "bad JSON at byte " + std::to_string(byte));
 }
 
@@ -325,7 +325,7 @@ TEST_F(RecordingTest, TruncatedSidecarJsonIsAnError) {
 }
 
 TEST_F(RecordingTest, WrongVersionOrFormatIsAnError) {
-  const fs::path j = dir_ / "m.json";
+  const fs::path j = m_dir / "m.json";
   auto sidecarError = [&](const std::string& text) {
     writeText("m.json", text);
     return errorOf([&] { readSidecar(j); });
@@ -375,7 +375,7 @@ TEST_F(RecordingTest, SidecarFieldsAndDefaults) {
 }
 
 TEST_F(RecordingTest, UpMustBeAUnitVectorOfThreeNumbers) {
-  const fs::path j = dir_ / "m.json";
+  const fs::path j = m_dir / "m.json";
   auto withUp = [&](const std::string& up) {
     writeText("m.json", R"({"format": "armtrack-recording", "version": 1, "up": )" + up + "}");
   };
@@ -395,7 +395,7 @@ TEST_F(RecordingTest, UpMustBeAUnitVectorOfThreeNumbers) {
 }
 
 TEST_F(RecordingTest, BadSidecarValues) {
-  const fs::path j = dir_ / "m.json";
+  const fs::path j = m_dir / "m.json";
   auto sidecarError = [&](const std::string& rest) {
     writeText("m.json", R"({"format": "armtrack-recording", "version": 1, )" + rest + "}");
     return errorOf([&] { readSidecar(j); });

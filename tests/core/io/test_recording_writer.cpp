@@ -27,18 +27,18 @@ namespace {
 using namespace armtrack::recording_test;
 
 TEST_F(RecordingTest, WritingIntoMissingDirectoryThrowsAndLeavesNoFile) {
-  const fs::path p = dir_ / "no_such_dir" / "rec.csv";
+  const fs::path p = m_dir / "no_such_dir" / "rec.csv";
   const RecordingError e = errorOf([&] { writeRecording(p, mixedRecording()); });
   EXPECT_EQ(e.file(), p.string());
   EXPECT_NE(e.message().find(std::generic_category().message(ENOENT)), std::string::npos)
       << e.message();
   EXPECT_FALSE(fs::exists(p));
-  EXPECT_FALSE(fs::exists(dir_ / "no_such_dir"));
+  EXPECT_FALSE(fs::exists(m_dir / "no_such_dir"));
   EXPECT_TRUE(dirEntries().empty());
 }
 
 TEST_F(RecordingTest, NonFiniteOrDecreasingDataIsNotWritten) {
-  const fs::path p = dir_ / "rec.csv";
+  const fs::path p = m_dir / "rec.csv";
   Recording rec;
   rec.samples.resize(2);
   rec.samples[1].t = 1.0;
@@ -54,7 +54,7 @@ TEST_F(RecordingTest, NonFiniteOrDecreasingDataIsNotWritten) {
 // A write that fails half-way (here: the file size limit, standing in for a full disk) must throw
 // and leave the previous file untouched, with no temporary file behind.
 TEST_F(RecordingTest, FailedWriteKeepsTheOldFile) {
-  const fs::path p = dir_ / "rec.csv";
+  const fs::path p = m_dir / "rec.csv";
   Recording small;
   small.samples.resize(1);
   writeRecording(p, small);
@@ -109,7 +109,7 @@ RecordingColumns liveColumns() {
 }  // namespace
 
 TEST_F(RecordingTest, WriterRowsReadBackBitExactWithEstimates) {
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   RecordingMeta meta;
   meta.g = 9.80665;
   {
@@ -138,7 +138,7 @@ TEST_F(RecordingTest, WriterRowsReadBackBitExactWithEstimates) {
 }
 
 TEST_F(RecordingTest, WriterRefusesBadRowsAndStaysUsable) {
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   RecordingWriter w(p, RecordingMeta{}, liveColumns());
   w.append(liveRow(1));
   ArmSample extra = liveRow(2);
@@ -157,7 +157,7 @@ TEST_F(RecordingTest, WriterRefusesBadRowsAndStaysUsable) {
 
 TEST_F(RecordingTest, InterruptedRecordingReadsUpToTheCutLine) {
   // What a killed session leaves: flushed rows, then part of a row and no final newline.
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   {
     RecordingWriter w(p, RecordingMeta{}, liveColumns());
     for (int i = 0; i < 10; ++i) w.append(liveRow(i));
@@ -177,7 +177,7 @@ TEST_F(RecordingTest, InterruptedRecordingReadsUpToTheCutLine) {
 
 #ifdef __linux__
 TEST_F(RecordingTest, WriterFullDiskKeepsWrittenRowsAndRetries) {
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   RecordingWriter w(p, RecordingMeta{}, liveColumns());
   rlimit old{};
   ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
@@ -214,7 +214,7 @@ TEST_F(RecordingTest, WriterFullDiskKeepsWrittenRowsAndRetries) {
 // file and the key; every JSON error names the file.
 
 TEST_F(RecordingTest, SidecarRefusesImpossibleGeometryNamingFileAndKey) {
-  const fs::path j = dir_ / "m.json";
+  const fs::path j = m_dir / "m.json";
   auto geometryError = [&](const std::string& geometry) {
     writeText("m.json",
               R"({"format": "armtrack-recording", "version": 1, "geometry": )" + geometry + "}");
@@ -258,11 +258,11 @@ TEST_F(RecordingTest, SidecarWithAHugeNumberNamesFileLineAndColumn) {
   // Through the CSV reader too.
   writeText("rec.csv", kImuHeader + "0,0,0,0,0,0,9.81\n");
   writeText("rec.json", "{\"format\": \"armtrack-recording\", \"version\": 1, \"g\": -1e999}");
-  expectError(readError(dir_ / "rec.csv"), dir_ / "rec.json", 1, 53, "-1e999");
+  expectError(readError(m_dir / "rec.csv"), m_dir / "rec.json", 1, 53, "-1e999");
 }
 
 TEST_F(RecordingTest, SidecarCameraWithZeroFocalOrBadRotationNamesFileAndKey) {
-  const fs::path j = dir_ / "m.json";
+  const fs::path j = m_dir / "m.json";
   auto cameraError = [&](const std::string& camera) {
     writeText("m.json",
               R"({"format": "armtrack-recording", "version": 1, "camera": )" + camera + "}");
@@ -293,13 +293,13 @@ TEST_F(RecordingTest, SidecarWithAnInvalidUtf8StringNamesTheFile) {
 TEST_F(RecordingTest, ImpossibleMetaIsNeverWritten) {
   Recording rec = mixedRecording();
   rec.meta.geometry.l3 = 0.0;
-  const RecordingError e = errorOf([&] { writeRecording(dir_ / "r.csv", rec); });
-  EXPECT_EQ(e.file(), (dir_ / "r.json").string());
+  const RecordingError e = errorOf([&] { writeRecording(m_dir / "r.csv", rec); });
+  EXPECT_EQ(e.file(), (m_dir / "r.json").string());
   EXPECT_NE(e.message().find("\"geometry.l3\""), std::string::npos) << e.message();
   rec = mixedRecording();
   rec.meta.camera->fx = 0.0;
-  EXPECT_THROW(writeRecording(dir_ / "r.csv", rec), RecordingError);
-  EXPECT_THROW(RecordingWriter(dir_ / "live.csv", rec.meta, liveColumns()), RecordingError);
+  EXPECT_THROW(writeRecording(m_dir / "r.csv", rec), RecordingError);
+  EXPECT_THROW(RecordingWriter(m_dir / "live.csv", rec.meta, liveColumns()), RecordingError);
   EXPECT_TRUE(dirEntries().empty());
 }
 
@@ -325,7 +325,7 @@ TEST_F(RecordingTest, NonPrintableBytesInACellAreShownEscaped) {
 // Item 8: one writer per file, nothing created for an unusable path.
 
 TEST_F(RecordingTest, SecondWriterOnTheSameFileIsRefusedAndTheFirstRecordingSurvives) {
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   RecordingMeta meta;
   meta.g = 9.80665;
   RecordingWriter first(p, meta, liveColumns());
@@ -354,24 +354,24 @@ TEST_F(RecordingTest, SecondWriterOnTheSameFileIsRefusedAndTheFirstRecordingSurv
 }
 
 TEST_F(RecordingTest, WriterOnADirectoryOrJsonNameCreatesNothing) {
-  fs::create_directory(dir_ / "d");
+  fs::create_directory(m_dir / "d");
   RecordingError e =
-      errorOf([&] { RecordingWriter w(dir_ / "d", RecordingMeta{}, liveColumns()); });
-  EXPECT_EQ(e.file(), (dir_ / "d").string());
+      errorOf([&] { RecordingWriter w(m_dir / "d", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (m_dir / "d").string());
   EXPECT_NE(e.message().find("directory"), std::string::npos) << e.message();
-  fs::create_directory(dir_ / "s.json");
-  e = errorOf([&] { RecordingWriter w(dir_ / "s.csv", RecordingMeta{}, liveColumns()); });
-  EXPECT_EQ(e.file(), (dir_ / "s.json").string());
-  e = errorOf([&] { RecordingWriter w(dir_ / "x.json", RecordingMeta{}, liveColumns()); });
+  fs::create_directory(m_dir / "s.json");
+  e = errorOf([&] { RecordingWriter w(m_dir / "s.csv", RecordingMeta{}, liveColumns()); });
+  EXPECT_EQ(e.file(), (m_dir / "s.json").string());
+  e = errorOf([&] { RecordingWriter w(m_dir / "x.json", RecordingMeta{}, liveColumns()); });
   EXPECT_NE(e.message().find(".json"), std::string::npos) << e.message();
   EXPECT_EQ(dirEntries(), (std::set<std::string>{"d", "s.json"}));  // no d.json, s.csv, x.json
-  EXPECT_TRUE(fs::is_empty(dir_ / "d"));
+  EXPECT_TRUE(fs::is_empty(m_dir / "d"));
 }
 
 #ifdef __linux__
 // Item 9: the writer's own account of what reached the file.
 TEST_F(RecordingTest, WriterCountsTheRowsThatReachedTheFile) {
-  const fs::path p = dir_ / "live.csv";
+  const fs::path p = m_dir / "live.csv";
   RecordingWriter w(p, RecordingMeta{}, liveColumns());
   rlimit old{};
   ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
@@ -423,7 +423,7 @@ TEST_F(RecordingTest, DISABLED_Timing600kRows) {
                            Eigen::Vector3d(n(rng), n(rng), 9.81 + n(rng))};
     rec.samples.push_back(s);
   }
-  const fs::path p = dir_ / "big.csv";
+  const fs::path p = m_dir / "big.csv";
   using Clock = std::chrono::steady_clock;
   const auto t0 = Clock::now();
   writeRecording(p, rec);
@@ -444,7 +444,7 @@ TEST_F(RecordingTest, DISABLED_Timing600kRows) {
 
 TEST_F(RecordingTest, ReaderStreamsRowsAcrossChunkBoundariesBitExact) {
   // 40,000 rows (about 9 MB, several of the reader's 1 MiB chunks): rows cross chunk edges.
-  const fs::path p = dir_ / "long.csv";
+  const fs::path p = m_dir / "long.csv";
   constexpr int kRows = 40000;
   std::vector<ArmSample> written;
   written.reserve(kRows);
@@ -482,7 +482,7 @@ TEST_F(RecordingTest, ReaderStreamsRowsAcrossChunkBoundariesBitExact) {
 }
 
 TEST_F(RecordingTest, ReaderReportsTheRightLineFarIntoAFileAndCutShortLastLine) {
-  const fs::path p = dir_ / "long.csv";
+  const fs::path p = m_dir / "long.csv";
   {
     RecordingWriter w(p, RecordingMeta{}, liveColumns());
     for (int i = 0; i < 20000; ++i) w.append(liveRow(i));
