@@ -49,6 +49,12 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   m_tableView->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_tableView->setTabKeyNavigation(false);
+  // Angle names wrap onto a second line when the panel is narrow, so the numbers stay in view.
+  m_tableView->setWordWrap(true);
+  m_tableView->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+  m_tableView->verticalHeader()->setMinimumSectionSize(
+      m_tableView->verticalHeader()->defaultSectionSize());
+  m_tableView->setColumnHidden(AngleTableModel::Target, true);  // until there is a target
   m_splitter->setStretchFactor(0, 4);
   m_splitter->setStretchFactor(1, 1);
 
@@ -67,6 +73,8 @@ void AnglePlotPanel::retranslateUi() {
   m_tableView->setAccessibleDescription(
       tr("The current value of each angle, its uncertainty, the range over the plotted time "
          "and the target"));
+  m_sized = false;  // the names' widths change with the language
+  sizeTable();
   markDirty();
 }
 
@@ -125,6 +133,7 @@ void AnglePlotPanel::setTarget(int angle, double minDeg, double maxDeg) {
   m_targetAngle = angle;
   m_decor.targetDeg = std::make_pair(std::min(minDeg, maxDeg), std::max(minDeg, maxDeg));
   m_table->setTarget(angle, m_decor.targetDeg);
+  showTargetColumn(true);
   markDirty();
 }
 
@@ -132,7 +141,15 @@ void AnglePlotPanel::clearTarget() {
   if (m_targetAngle) m_table->setTarget(*m_targetAngle, std::nullopt);
   m_targetAngle.reset();
   m_decor.targetDeg.reset();
+  showTargetColumn(false);
   markDirty();
+}
+
+void AnglePlotPanel::showTargetColumn(bool show) {
+  if (m_tableView->isColumnHidden(AngleTableModel::Target) != show) return;
+  m_tableView->setColumnHidden(AngleTableModel::Target, !show);
+  m_sized = false;  // the table's width changed
+  sizeTable();
 }
 
 void AnglePlotPanel::addEvent(double t, const QString& label) {
@@ -231,14 +248,15 @@ void AnglePlotPanel::showEvent(QShowEvent* event) {
 
 void AnglePlotPanel::sizeTable() {
   if (m_sized || !isVisible() || width() < 300) return;
-  // The table as wide as its columns (at most 40 % of the panel), the plots the rest.
+  // The table as wide as its columns (at most 55 % of the panel), the plots the rest.
   m_sized = true;
   m_tableView->resizeColumnsToContents();
   // The table is sized once, often before the first values arrive: give each number column
   // room for the widest value it can show, so "-179.9°" is never cut to "-1…".
   const QFontMetrics metrics(m_tableView->font());
-  const int padding = metrics.horizontalAdvance(QStringLiteral("MM"));
+  const int padding = metrics.horizontalAdvance(QStringLiteral("M"));
   const QString widestAngle = formatDegrees(-179.9);
+  int numbers = 0;
   for (int c = AngleTableModel::Value; c < AngleTableModel::ColumnCount; ++c) {
     const QString widest =
         c == AngleTableModel::Uncertainty ? QStringLiteral("\u00b1") + widestAngle
@@ -247,11 +265,26 @@ void AnglePlotPanel::sizeTable() {
             : widestAngle;
     m_tableView->setColumnWidth(
         c, std::max(m_tableView->columnWidth(c), metrics.horizontalAdvance(widest) + padding));
+    if (!m_tableView->isColumnHidden(c)) numbers += m_tableView->columnWidth(c);
   }
-  const int table = std::min(m_tableView->horizontalHeader()->length() +
-                                 m_tableView->verticalScrollBar()->sizeHint().width() +
-                                 2 * m_tableView->frameWidth(),
-                             width() * 2 / 5);
+  const int chrome =
+      m_tableView->verticalScrollBar()->sizeHint().width() + 2 * m_tableView->frameWidth();
+  const int cap = width() * 11 / 20;
+  // Too wide: the names take two lines rather than push the numbers out of view.
+  if (numbers + m_tableView->columnWidth(AngleTableModel::Name) + chrome > cap) {
+    int twoLines = 0;  // the narrowest width that holds every name in two lines
+    for (int a = 0; a < kAngleCount; ++a) {
+      const QStringList words = angleDisplayName(a).split(QLatin1Char(' '));
+      int best = metrics.horizontalAdvance(words.join(QLatin1Char(' ')));
+      for (qsizetype k = 1; k < words.size(); ++k)
+        best = std::min(best, std::max(metrics.horizontalAdvance(words.mid(0, k).join(' ')),
+                                       metrics.horizontalAdvance(words.mid(k).join(' '))));
+      twoLines = std::max(twoLines, best);
+    }
+    m_tableView->setColumnWidth(AngleTableModel::Name,
+                                std::max(cap - numbers - chrome, twoLines + 2 * padding));
+  }
+  const int table = std::min(m_tableView->horizontalHeader()->length() + chrome, cap);
   m_splitter->setSizes({width() - table, table});
 }
 

@@ -96,6 +96,7 @@ class AnglePlotPanel : public QWidget {
   void retranslateUi();
   /// Once, when first shown wide enough: the table as wide as its columns.
   void sizeTable();
+  void showTargetColumn(bool show);
 
   Mode m_mode = Mode::Live;
   double m_window = 20.0;

@@ -1,6 +1,7 @@
 // The plot panel, readouts and repetition counter on screen: a 1 kHz stream appended in batches
 // costs a bounded number of redraws and points; the window scrolls; NaN and absurd values, tiny
 // sizes and review mode with a cursor, an overlay, a target and events all hold up.
+#include <QHeaderView>
 #include <QLocale>
 #include <QTableView>
 #include <cmath>
@@ -189,6 +190,38 @@ class TestAngleWidgets : public QObject {
     QCOMPARE(spy.count(), 1);
     QVERIFY2(std::abs(spy.at(0).at(0).toDouble() - 30.0) < 1.0,
              qPrintable(QString::number(spy.at(0).at(0).toDouble())));
+  }
+
+  // At the width the review and live screens give the panel on a 1200 px window (about 800 px),
+  // every number is in view: no column is cut off behind a horizontal scroll bar. The target
+  // column is there only while a target is set; the names wrap rather than the numbers hide.
+  void everyColumnInViewOnANarrowPanel() {
+    for (const bool target : {false, true}) {
+      AnglePlotPanel panel;
+      if (target) panel.setTarget(0, 90.0, 150.0);
+      panel.resize(800, 450);
+      panel.show();
+      QVERIFY(QTest::qWaitForWindowExposed(&panel));
+      const AngleSample s = sampleAt(-2.0);
+      panel.append({s});
+      panel.refresh();
+      QTableView* table = panel.tableView();
+      QCOMPARE(table->isColumnHidden(AngleTableModel::Target), !target);
+      QTRY_VERIFY(table->width() > 0);
+      QVERIFY2(table->horizontalHeader()->length() <= table->viewport()->width(),
+               qPrintable(QStringLiteral("columns %1 px in a %2 px table")
+                              .arg(table->horizontalHeader()->length())
+                              .arg(table->viewport()->width())));
+      QVERIFY(panel.chart(0)->width() >= 300);  // the plots keep room too
+      // Setting a target later shows its column and sizes the table again.
+      if (!target) {
+        panel.setTarget(3, 20.0, 120.0);
+        QVERIFY(!table->isColumnHidden(AngleTableModel::Target));
+        QVERIFY(table->horizontalHeader()->length() <= table->viewport()->width());
+        panel.clearTarget();
+        QVERIFY(table->isColumnHidden(AngleTableModel::Target));
+      }
+    }
   }
 
   void readoutsMarkUncertainAngles() {
