@@ -559,6 +559,13 @@ class ArmFilter final : public JointEstimator {
                            : m_p.jointAccelVariance;
     for (int j = 0; j < kNumJoints; ++j)
       if (m_p.activeJoints[j]) m_P(j, j) += std::max(var, m_matchedQ(j)) * dt / m_p.referenceStep;
+    // Method A's lag turns the upper arm about every axis (shoulderPathVarianceRate; the turn
+    // about the vertical is the heading's walk below).
+    if (m_p.model == MeasurementModel::AccelGyro && m_t - m_t0 >= m_p.startupSeconds) {
+      const double lagWalk = m_p.shoulderPathVarianceRate * m_x.template segment<3>(5).norm() * dt;
+      for (int j = 0; j < 3; ++j)
+        if (m_p.activeJoints[j]) m_P(10 + j, 10 + j) += lagWalk;
+    }
     // The heading random walk is a turn of the whole arm about the vertical: in joint space its
     // variance grows with the squared joint-space length of a unit turn, which is large near the
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.

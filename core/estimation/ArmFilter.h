@@ -86,6 +86,14 @@ struct EstimatorParams {
   /// 51-58, 71-78; Table 5 noise): 0.6-1.3e-7 beyond the gyroscopes' walk (docs/estimator.md,
   /// "Uncertainty").
   double headingPathVarianceRate = 1e-7;
+  /// Method A, after start-up: the same lag turns the upper arm about the horizontal axes too,
+  /// where the accelerometers see it, but on fast movement (their variance widened with the jerk,
+  /// accelJerkVariance) only slowly: each shoulder joint's variance grows by this, per radian the
+  /// shoulder joints travel (rad^2 per rad). The heading's measured rate, applied per joint; it
+  /// took the shoulder at 600 deg/s from 72-78 % to 88-96 % inside 2 sd with the heading's share
+  /// left out, and changes the five-joint movements' coverage by 1-2 points (docs/estimator.md,
+  /// "Uncertainty"). 0 turns it off.
+  double shoulderPathVarianceRate = 1e-7;
   /// The same for Methods B and C, whose accelerometer model leaves body acceleration out: the
   /// tilt errors that leaves turn into heading errors as the arm rotates. 1 (deg)^2/s.
   double inclinometerHeadingVarianceRate = 1.0 * kDeg * kDeg;
