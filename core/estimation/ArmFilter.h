@@ -90,7 +90,7 @@ struct EstimatorParams {
   /// where the accelerometers see it, but on fast movement (their variance widened with the jerk,
   /// accelJerkVariance) only slowly: each shoulder joint's variance grows by this, per radian the
   /// shoulder joints travel (rad^2 per rad). The heading's measured rate, applied per joint; it
-  /// took the shoulder at 600 deg/s from 72-78 % to 88-96 % inside 2 sd with the heading's share
+  /// took the shoulder at 600 deg/s from 71-78 % to 88-96 % inside 2 sd with the heading's share
   /// left out, and changes the five-joint movements' coverage by 1-2 points (docs/estimator.md,
   /// "Uncertainty"). 0 turns it off.
   double shoulderPathVarianceRate = 1e-7;
