@@ -1211,9 +1211,9 @@ class ArmFilter final : public JointEstimator {
   // of the step, so its length is the IMU's sampling however the rows interleave), squared and
   // averaged over adaptationTime, after start-up only (its corrections are convergence, not
   // motion). It sets the accelerometers' model error (accelJerkVariance). Each change holds the
-  // update's noise-driven correction as well as the motion: at rest it reads about 30 times the
-  // true squared jerk, so there it also widens the accelerometers by up to a few times their
-  // noise variance after fast movement. A smoothed jerk (the accelerations less their running
+  // update's noise-driven correction as well as the motion: at rest between fast reaches it
+  // reads about 30 times the true squared jerk, and widens the accelerometers by 2-9 times their
+  // noise variance. A smoothed jerk (the accelerations less their running
   // mean) that reads the motion alone left the shoulder less honest (docs/estimator.md).
   void trackJerk() {
     const JointVector thdd = m_x.template head<5>();
