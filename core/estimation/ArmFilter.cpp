@@ -201,6 +201,8 @@ class ArmFilter final : public JointEstimator {
     m_gatedInARow = {0, 0, 0, 0};
     m_gate.reset();
     m_matchedQ.setZero();
+    m_jerkSquared = 0.0;
+    m_jerkFrom.reset();
     m_headingMatch = m_turnSquared = m_turnNoise = 0.0;
     m_lastMatchT = -std::numeric_limits<double>::infinity();
     m_recent.clear();
@@ -347,6 +349,7 @@ class ArmFilter final : public JointEstimator {
     m_lastDataT = s.t;
     afterUpdate(fuseOptical);
     matchProcessNoise(xBefore, s.t - tPrior);
+    if (blocks.has(kUaAcc) || blocks.has(kFaAcc)) trackJerk();
     finishUpdate();
     remember(clean);
     if (m_fitAt && m_t >= *m_fitAt) {
@@ -379,9 +382,14 @@ class ArmFilter final : public JointEstimator {
   BlockList gather(const ArmSample& s) const {
     BlockList b;
     const bool gyro = m_p.model != MeasurementModel::Inclinometer;
+    // After start-up, Method A's accelerometers also carry the model error of a lagging joint
+    // acceleration, which grows with the squared jerk (accelJerkVariance).
+    const bool jerkModelled =
+        m_p.model == MeasurementModel::AccelGyro && m_t - m_t0 >= m_p.startupSeconds;
     const double accelVar =
         m_p.accelVariance *
-        (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0);
+            (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0) +
+        (jerkModelled ? m_p.accelJerkVariance * m_jerkSquared : 0.0);
     if (s.upperArm) {
       if (gyro) b.add(kUaGyr, s.upperArm->gyr, m_p.gyroVariance);
       b.add(kUaAcc, s.upperArm->acc, accelVar);
@@ -501,6 +509,8 @@ class ArmFilter final : public JointEstimator {
     m_badSince.reset();
     m_opticalDisagrees = false;
     m_matchedQ.setZero();
+    m_jerkSquared = 0.0;
+    m_jerkFrom.reset();
     m_headingMatch = m_turnSquared = m_turnNoise = 0.0;
     m_lastMatchT = -std::numeric_limits<double>::infinity();
     m_fitAt = m_p.fitWindowSeconds > 0.0 ? std::optional<double>(s.t + m_p.fitWindowSeconds)
@@ -549,6 +559,13 @@ class ArmFilter final : public JointEstimator {
                            : m_p.jointAccelVariance;
     for (int j = 0; j < kNumJoints; ++j)
       if (m_p.activeJoints[j]) m_P(j, j) += std::max(var, m_matchedQ(j)) * dt / m_p.referenceStep;
+    // Method A's lag turns the upper arm about every axis (shoulderPathVarianceRate; the turn
+    // about the vertical is the heading's walk below).
+    if (m_p.model == MeasurementModel::AccelGyro && m_t - m_t0 >= m_p.startupSeconds) {
+      const double lagWalk = m_p.shoulderPathVarianceRate * m_x.template segment<3>(5).norm() * dt;
+      for (int j = 0; j < 3; ++j)
+        if (m_p.activeJoints[j]) m_P(10 + j, 10 + j) += lagWalk;
+    }
     // The heading random walk is a turn of the whole arm about the vertical: in joint space its
     // variance grows with the squared joint-space length of a unit turn, which is large near the
     // shoulder's gimbal lock (abduction 90 deg), where a small turn moves flexion and rotation far.
@@ -1189,6 +1206,28 @@ class ArmFilter final : public JointEstimator {
     }
   }
 
+  // The joints' squared jerk, summed over the joints: the estimate's joint accelerations
+  // change from one accelerometer update to the next (optical rows between two IMU rows are part
+  // of the step, so its length is the IMU's sampling however the rows interleave), squared and
+  // averaged over adaptationTime, after start-up only (its corrections are convergence, not
+  // motion). It sets the accelerometers' model error (accelJerkVariance). Each change holds the
+  // update's noise-driven correction as well as the motion: at rest between fast reaches it
+  // reads about 30 times the true squared jerk, and widens the accelerometers by 2-9 times their
+  // noise variance. A smoothed jerk (the accelerations less their running
+  // mean) that reads the motion alone left the shoulder less honest (docs/estimator.md).
+  void trackJerk() {
+    const JointVector thdd = m_x.template head<5>();
+    if (m_t - m_t0 >= m_p.startupSeconds && m_jerkFrom && m_p.adaptationTime > 0.0) {
+      const double dt = m_t - m_jerkFrom->first;
+      if (dt > 0.0) {
+        const double w = std::min(1.0, dt / m_p.adaptationTime);
+        const double j2 = (thdd - m_jerkFrom->second).squaredNorm() / (dt * dt);
+        m_jerkSquared += w * (j2 - m_jerkSquared);
+      }
+    }
+    m_jerkFrom.emplace(m_t, thdd);
+  }
+
   void finishUpdate() {
     for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
     m_P = 0.5 * (m_P + m_P.transpose()).eval();
@@ -1252,6 +1291,8 @@ class ArmFilter final : public JointEstimator {
   void handOver() {
     m_p.model = m_model;
     m_matchedQ.setZero();
+    m_jerkSquared = 0.0;
+    m_jerkFrom.reset();
     if constexpr (kAugmented) {
       // Method B's body-acceleration states start from what the kinematics say they are.
       Eigen::Matrix<double, kModelRows, 1> with, without;
@@ -1282,6 +1323,9 @@ class ArmFilter final : public JointEstimator {
   std::deque<Vec15> m_recentStates;           // the filter's state after each of m_recent
   bool m_opticalDisagrees = false;            // an optical point was gated many frames in a row
   JointVector m_matchedQ = JointVector::Zero();
+  double m_jerkSquared = 0.0;  // the joints' squared jerk, (rad/s^3)^2 (trackJerk)
+  // The last accelerometer update: its time and joint accelerations (trackJerk).
+  std::optional<std::pair<double, JointVector>> m_jerkFrom;
   std::deque<ArmSample> m_recent;    // fused samples of the last fitWindowSeconds
   std::optional<double> m_fitAt;     // when the start-up window fit is due (s)
   std::optional<double> m_badSince;  // start of a run of inconsistent IMU updates (s)

@@ -86,6 +86,14 @@ struct EstimatorParams {
   /// 51-58, 71-78; Table 5 noise): 0.6-1.3e-7 beyond the gyroscopes' walk (docs/estimator.md,
   /// "Uncertainty").
   double headingPathVarianceRate = 1e-7;
+  /// Method A, after start-up: the same lag turns the upper arm about the horizontal axes too,
+  /// where the accelerometers see it, but on fast movement (their variance widened with the jerk,
+  /// accelJerkVariance) only slowly: each shoulder joint's variance grows by this, per radian the
+  /// shoulder joints travel (rad^2 per rad). The heading's measured rate, applied per joint; it
+  /// took the shoulder at 600 deg/s from 71-78 % to 88-96 % inside 2 sd with the heading's share
+  /// left out, and changes the five-joint movements' coverage by 1-2 points (docs/estimator.md,
+  /// "Uncertainty"). 0 turns it off.
+  double shoulderPathVarianceRate = 1e-7;
   /// The same for Methods B and C, whose accelerometer model leaves body acceleration out: the
   /// tilt errors that leaves turn into heading errors as the arm rotates. 1 (deg)^2/s.
   double inclinometerHeadingVarianceRate = 1.0 * kDeg * kDeg;
@@ -106,6 +114,19 @@ struct EstimatorParams {
   double gyroVariance = 0.1 * kDeg * kDeg;  ///< (rad/s)^2, Table 5: 0.1 (deg/s)^2
   double accelVariance = 1e-2;              ///< (m/s^2)^2, Table 5
   double positionVariance = 1e-4;           ///< m^2, Table 5 (Kinect)
+  /// Method A, after start-up: the accelerometers' variance grows by this times the squared jerk
+  /// of the joints ((rad/s^3)^2, summed over the joints), (m/s^2)^2 per (rad/s^3)^2. The process
+  /// model takes the joint accelerations for a random walk, so on smooth fast movement their
+  /// estimate lags the true ones by about the jerk times the filter's response time, and the
+  /// body acceleration predicted from them misses the readings by that lag times the lever arm:
+  /// model error that the filter would otherwise take for information about the angles and
+  /// report too small a standard deviation. The jerk is the estimate's own: the change of its
+  /// joint accelerations between accelerometer updates (noise-driven corrections included),
+  /// squared and averaged over adaptationTime. Measured against simulated truth on fast reaching:
+  /// 4-6e-8 per axis (a 0.3 m lever and a lag of about 0.7 ms; docs/estimator.md, "Uncertainty").
+  /// 0 turns it off. Methods B and C model body acceleration otherwise (B as states, C not at
+  /// all), so it does not apply to them.
+  double accelJerkVariance = 4e-8;
 
   /// Method B: stationary variance (m/s^2)^2 and correlation time (s) of the body-acceleration
   /// GM-1 states (Sabatini 2006). (10 m/s^2)^2: a forearm swung at 1 Hz through 90 deg sees
