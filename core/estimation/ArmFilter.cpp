@@ -1322,7 +1322,7 @@ class ArmFilter final : public JointEstimator {
   static constexpr double kGoodFitRms = 3.0;  // whitened residual RMS of a fit worth taking
   std::deque<Vec15> m_recentStates;           // the filter's state after each of m_recent
   bool m_opticalDisagrees = false;            // an optical point was gated many frames in a row
-  JointVector m_matchedQ = JointVector::Zero();
+  JointVector m_matchedQ = JointVector::Zero();  // matched joint-acceleration noise, (rad/s^2)^2
   double m_jerkSquared = 0.0;  // the joints' squared jerk, (rad/s^3)^2 (trackJerk)
   // The last accelerometer update: its time and joint accelerations (trackJerk).
   std::optional<std::pair<double, JointVector>> m_jerkFrom;
@@ -1330,7 +1330,7 @@ class ArmFilter final : public JointEstimator {
   std::optional<double> m_fitAt;     // when the start-up window fit is due (s)
   std::optional<double> m_badSince;  // start of a run of inconsistent IMU updates (s)
   double m_updateNis = 0.0;          // normalised innovation squared of the last update (IMU rows)
-  int m_updateDof = 0;               // matched joint-acceleration noise, (rad/s^2)^2
+  int m_updateDof = 0;               // rows m_updateNis sums over
   double m_headingFloor = 0.0;       // least variance along the heading while IMU-only (rad^2)
   double m_headingMatch = 0.0;       // heading variance the optical innovations ask for (rad^2)
   double m_turnSquared = 0.0;        // running mean of the squared turn the optics ask for (rad^2)
