@@ -823,7 +823,7 @@ class ArmFilter final : public JointEstimator {
       const Gain k = sl.solve(pxz.transpose()).transpose();
       m_x += k * (b.z - zMean);
       m_P += k * pzz * k.transpose() - k * full.transpose() - full * k.transpose();
-      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      symmetrise(m_P);
       return true;
     }
     Gain k = sl.solve(pxz.transpose()).transpose();
@@ -836,7 +836,7 @@ class ArmFilter final : public JointEstimator {
       }
       m_x += k * (b.z - zMean);
       m_P += k * pzz * k.transpose() - k * pxz.transpose() - pxz * k.transpose();
-      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      symmetrise(m_P);
       return true;
     }
     m_x += k * (b.z - zMean);
@@ -1191,11 +1191,18 @@ class ArmFilter final : public JointEstimator {
 
   void finishUpdate() {
     for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
-    m_P = 0.5 * (m_P + m_P.transpose()).eval();
+    symmetrise(m_P);
     keepInAnatomicalRange();
     freezeInactive();
     // A negative or vanishing variance means round-off has eaten positive definiteness.
     if ((m_P.diagonal().array() <= 0.0).any()) repairCovariance();
+  }
+
+  // P = (P + P^T) / 2 in place, pair by pair: each entry gets the 0.5 (a + b) of the whole
+  // expression (the diagonal is unchanged), without its 15x15 temporary.
+  static void symmetrise(Mat& p) {
+    for (int c = 0; c < N; ++c)
+      for (int r = c + 1; r < N; ++r) p(r, c) = p(c, r) = 0.5 * (p(r, c) + p(c, r));
   }
 
   // A window fit that ends outside the anatomical range has found the other Euler branch (the
