@@ -1,5 +1,6 @@
 #include "core/estimation/Heading.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
@@ -99,21 +100,50 @@ Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>&
                                              const Eigen::Vector3d& up, const JointVector& h) {
   // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
   // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
+  // h = J^T y with A y = up, A = J J^T + eps I (dampedSolve), and J depends on th0 and th1 only;
+  // differentiating A y = up along a direction d gives y' = -A^-1 A' y and
+  // y'' = -A^-1 (A'' y + 2 A' y'), so h' = J'^T y + J^T y' and
+  // h'' = J''^T y + 2 J'^T y' + J^T y'': exact derivatives, one factorisation of A.
   const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
-  auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
-    const double n = dir.norm();
-    first.setZero();
-    second.setZero();
-    if (n < 1e-12) return;
-    const double e = 1e-4 / n;  // step of 1e-4 rad along dir
-    const JointVector hp = headingGenerator(th + e * dir, up);
-    const JointVector hm = headingGenerator(th - e * dir, up);
-    first = (hp - hm) / (2 * e);
-    second = (hp - 2 * h + hm) / (e * e);
+  const double c0 = std::cos(th(0)), s0 = std::sin(th(0));
+  const double c1 = std::cos(th(1)), s1 = std::sin(th(1));
+  const Eigen::Matrix3d j = shoulderAxes(th);
+  const Eigen::LDLT<Eigen::Matrix3d> a(j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity());
+  const Eigen::Vector3d y = a.solve(up);
+  // Along d: J' (z0 is constant, z1 turns with th0, z2 with th0 and th1), A', y' and h'.
+  struct First {
+    Eigen::Matrix3d dj, da;
+    Eigen::Vector3d dy;
+    JointVector dh = JointVector::Zero();
   };
-  JointVector dhThd, d2hThd, dhThdd, unused;
-  along(thd, dhThd, d2hThd);
-  along(thdd, dhThdd, unused);
+  auto first = [&](const JointVector& d) {
+    First f;
+    f.dj.col(0).setZero();
+    f.dj.col(1) = d(0) * Eigen::Vector3d(c0, s0, 0.0);
+    f.dj.col(2) = d(0) * Eigen::Vector3d(-c1 * s0, c1 * c0, 0.0) +
+                  d(1) * Eigen::Vector3d(-s1 * c0, -s1 * s0, c1);
+    f.da = f.dj * j.transpose() + j * f.dj.transpose();
+    f.dy = -a.solve(f.da * y);
+    f.dh.head<3>() = f.dj.transpose() * y + j.transpose() * f.dy;
+    return f;
+  };
+  const First rate = first(thd);
+  const JointVector dhThdd = first(thdd).dh;
+  // J'' along th', then A'', y'' and h''.
+  const double d0 = thd(0), d1 = thd(1);
+  Eigen::Matrix3d d2j;
+  d2j.col(0).setZero();
+  d2j.col(1) = d0 * d0 * Eigen::Vector3d(-s0, c0, 0.0);
+  d2j.col(2) = d0 * d0 * Eigen::Vector3d(-c1 * c0, -c1 * s0, 0.0) +
+               2.0 * d0 * d1 * Eigen::Vector3d(s1 * s0, -s1 * c0, 0.0) +
+               d1 * d1 * Eigen::Vector3d(-c1 * c0, -c1 * s0, -s1);
+  const Eigen::Matrix3d d2a =
+      d2j * j.transpose() + 2.0 * rate.dj * rate.dj.transpose() + j * d2j.transpose();
+  const Eigen::Vector3d d2y = -a.solve(d2a * y + 2.0 * rate.da * rate.dy);
+  JointVector d2hThd = JointVector::Zero();
+  d2hThd.head<3>() =
+      d2j.transpose() * y + 2.0 * rate.dj.transpose() * rate.dy + j.transpose() * d2y;
+  const JointVector& dhThd = rate.dh;
   Eigen::Matrix<double, 15, 1> v;
   v.segment<5>(0) = dhThdd + d2hThd;
   v.segment<5>(5) = dhThd;
