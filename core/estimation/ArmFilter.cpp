@@ -573,8 +573,9 @@ class ArmFilter final : public JointEstimator {
       all = m_prior->readings;  // the first iteration linearises where the gate did
       allJac = m_prior->jacobian;
     } else if (jac) {
+      // Optical rows (positions, and marker pixels through them) read the position rows.
       predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, all,
-                      &allJac);
+                      &allJac, b.anyOptical());
     } else {
       predictBase<double>(m_p, base, all);
     }
