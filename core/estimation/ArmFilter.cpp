@@ -726,7 +726,10 @@ class ArmFilter final : public JointEstimator {
     Vec xi = m_x, dx;
     MeasVec h;
     Jac jac;
+    // The iterations start from the prior P each time; a single one updates m_P in place (on
+    // failure the caller restores m_P).
     Mat p;
+    Mat& updated = iterations > 1 ? p : m_P;
     for (int it = 0; it < iterations; ++it) {
       if (!measure(xi, b, h, &jac)) return false;
       projectHeading(xi, b, jac);
@@ -734,15 +737,15 @@ class ArmFilter final : public JointEstimator {
       // plain EKF.
       // At the first iteration xi = x0 and the Jacobian term is zero.
       const MeasVec innov = it == 0 ? MeasVec(b.z - h) : MeasVec(b.z - h - jac * (x0 - xi));
-      p = m_P;
-      if (!sequentialUpdate(jac, innov, b, p, dx)) return false;
+      if (iterations > 1) p = m_P;
+      if (!sequentialUpdate(jac, innov, b, updated, dx)) return false;
       const Vec next = x0 + dx;
       const double change = (next - xi).norm();
       xi = next;
       if (change < 1e-9) break;
     }
     m_x = xi;
-    m_P = p;
+    if (iterations > 1) m_P = p;
     return true;
   }
 
