@@ -566,23 +566,28 @@ class ArmFilter final : public JointEstimator {
   // Predicted measurement (and Jacobian) for the present blocks at state x. Returns false when a
   // marker is out of the camera's view at x.
   bool measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const {
-    Eigen::Matrix<double, kModelRows, 1> all;
-    Eigen::Matrix<double, kModelRows, kBase> allJac;
+    Eigen::Matrix<double, kModelRows, 1> own;
+    Eigen::Matrix<double, kModelRows, kBase> ownJac;
+    const Eigen::Matrix<double, kModelRows, 1>* readings = &own;
+    const Eigen::Matrix<double, kModelRows, kBase>* derivatives = &ownJac;
     const Vec15 base = x.template head<kBase>();
     if (jac && m_prior && m_prior->at == base) {
-      all = m_prior->readings;  // the first iteration linearises where the gate did
-      allJac = m_prior->jacobian;
+      readings = &m_prior->readings;  // the first iteration linearises where the gate did
+      derivatives = &m_prior->jacobian;
     } else if (jac) {
       // Optical rows (positions, and marker pixels through them) read the position rows.
-      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, all,
-                      &allJac, b.anyOptical());
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, own,
+                      &ownJac, b.anyOptical());
     } else {
-      predictBase<double>(m_p, base, all);
+      predictBase<double>(m_p, base, own);
     }
+    const Eigen::Matrix<double, kModelRows, 1>& all = *readings;
+    const Eigen::Matrix<double, kModelRows, kBase>& allJac = *derivatives;
     h.resize(b.rows());
     if (jac) {
       jac->resize(b.rows(), N);
-      jac->setZero();
+      // Every block below writes its rows' first 15 columns; only Method B's are wider.
+      if constexpr (kAugmented) jac->setZero();
     }
     for (int i = 0; i < b.count; ++i) {
       const int blk = b.block[i];
@@ -935,7 +940,11 @@ class ArmFilter final : public JointEstimator {
   void beforeOpticalUpdate() {
     m_headingFloor = std::max(m_headingFloor, m_headingMatch);
     const Vec u = headingAngles(m_x);
-    m_P += headingShortfall(u) * u * u.transpose();
+    // u is zero outside the angles: only P's angle block changes, and only by a shortfall.
+    const double shortfall = headingShortfall(u);
+    if (shortfall == 0.0) return;
+    const JointVector hu = u.template segment<5>(10);
+    m_P.template block<5, 5>(10, 10) += shortfall * hu * hu.transpose();
   }
 
   // The six blocks' predicted readings and their Jacobian at the predicted state, which the
