@@ -240,8 +240,11 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   using MVec = Eigen::Matrix<double, M, 1>;
   Cols wt;  // W^T = P H^T (P is symmetric): K of P's columns combined
   detail::columnsTimesTransposeAny<M, K, N>(p.data() + col * N, h, wt);
-  // S = H W^T + R and its Cholesky factor L (lower).
+  // S = H W^T + R and its Cholesky factor L (lower), with the reciprocals of its diagonal: the
+  // solves below multiply by them, so the only divisions are the M reciprocals (a division's
+  // latency is several multiplications', and these steps depend on each other).
   SMat l = SMat::Zero();
+  MVec inv;
   for (int j = 0; j < M; ++j) {
     for (int i = j; i < M; ++i) {
       double sij = h.row(i).dot(wt.col(j).template segment<K>(col));
@@ -250,8 +253,9 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
       if (i == j) {
         if (!(sij > 0.0)) return false;
         l(j, j) = std::sqrt(sij);
+        inv(j) = 1.0 / l(j, j);
       } else {
-        l(i, j) = sij / l(j, j);
+        l(i, j) = sij * inv(j);
       }
     }
   }
@@ -261,12 +265,12 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   for (int i = 0; i < M; ++i) {
     double y = r(i);
     for (int k = 0; k < i; ++k) y -= l(i, k) * sr(k);
-    sr(i) = y / l(i, i);
+    sr(i) = y * inv(i);
   }
   for (int i = M - 1; i >= 0; --i) {
     double y = sr(i);
     for (int k = i + 1; k < M; ++k) y -= l(k, i) * sr(k);
-    sr(i) = y / l(i, i);
+    sr(i) = y * inv(i);
   }
   nis = r.dot(sr);
   // V^T = W^T L^-T, column by column.
@@ -274,7 +278,7 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   for (int j = 0; j < M; ++j) {
     vt.col(j) = wt.col(j);
     for (int k = 0; k < j; ++k) vt.col(j) -= l(j, k) * vt.col(k);
-    vt.col(j) /= l(j, j);
+    vt.col(j) *= inv(j);
   }
   Eigen::Matrix<double, N, 1> g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
   for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);
