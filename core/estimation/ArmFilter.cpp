@@ -583,22 +583,28 @@ class ArmFilter final : public JointEstimator {
   // Predicted measurement (and Jacobian) for the present blocks at state x. Returns false when a
   // marker is out of the camera's view at x.
   bool measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const {
-    Eigen::Matrix<double, kModelRows, 1> all;
-    Eigen::Matrix<double, kModelRows, kBase> allJac;
+    Eigen::Matrix<double, kModelRows, 1> own;
+    Eigen::Matrix<double, kModelRows, kBase> ownJac;
+    const Eigen::Matrix<double, kModelRows, 1>* readings = &own;
+    const Eigen::Matrix<double, kModelRows, kBase>* derivatives = &ownJac;
     const Vec15 base = x.template head<kBase>();
     if (jac && m_prior && m_prior->at == base) {
-      all = m_prior->readings;  // the first iteration linearises where the gate did
-      allJac = m_prior->jacobian;
+      readings = &m_prior->readings;  // the first iteration linearises where the gate did
+      derivatives = &m_prior->jacobian;
     } else if (jac) {
-      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, all,
-                      &allJac);
+      // Optical rows (positions, and marker pixels through them) read the position rows.
+      predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, own,
+                      &ownJac, b.anyOptical());
     } else {
-      predictBase<double>(m_p, base, all);
+      predictBase<double>(m_p, base, own);
     }
+    const Eigen::Matrix<double, kModelRows, 1>& all = *readings;
+    const Eigen::Matrix<double, kModelRows, kBase>& allJac = *derivatives;
     h.resize(b.rows());
     if (jac) {
       jac->resize(b.rows(), N);
-      jac->setZero();
+      // Every block below writes its rows' first 15 columns; only Method B's are wider.
+      if constexpr (kAugmented) jac->setZero();
     }
     for (int i = 0; i < b.count; ++i) {
       const int blk = b.block[i];
@@ -742,7 +748,10 @@ class ArmFilter final : public JointEstimator {
     Vec xi = m_x, dx;
     MeasVec h;
     Jac jac;
+    // The iterations start from the prior P each time; a single one updates m_P in place (on
+    // failure the caller restores m_P).
     Mat p;
+    Mat& updated = iterations > 1 ? p : m_P;
     for (int it = 0; it < iterations; ++it) {
       if (!measure(xi, b, h, &jac)) return false;
       projectHeading(xi, b, jac);
@@ -750,15 +759,15 @@ class ArmFilter final : public JointEstimator {
       // plain EKF.
       // At the first iteration xi = x0 and the Jacobian term is zero.
       const MeasVec innov = it == 0 ? MeasVec(b.z - h) : MeasVec(b.z - h - jac * (x0 - xi));
-      p = m_P;
-      if (!sequentialUpdate(jac, innov, b, p, dx)) return false;
+      if (iterations > 1) p = m_P;
+      if (!sequentialUpdate(jac, innov, b, updated, dx)) return false;
       const Vec next = x0 + dx;
       const double change = (next - xi).norm();
       xi = next;
       if (change < 1e-9) break;
     }
     m_x = xi;
-    m_P = p;
+    if (iterations > 1) m_P = p;
     return true;
   }
 
@@ -840,7 +849,7 @@ class ArmFilter final : public JointEstimator {
       const Gain k = sl.solve(pxz.transpose()).transpose();
       m_x += k * (b.z - zMean);
       m_P += k * pzz * k.transpose() - k * full.transpose() - full * k.transpose();
-      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      symmetrise(m_P);
       return true;
     }
     Gain k = sl.solve(pxz.transpose()).transpose();
@@ -853,7 +862,7 @@ class ArmFilter final : public JointEstimator {
       }
       m_x += k * (b.z - zMean);
       m_P += k * pzz * k.transpose() - k * pxz.transpose() - pxz * k.transpose();
-      m_P = 0.5 * (m_P + m_P.transpose()).eval();
+      symmetrise(m_P);
       return true;
     }
     m_x += k * (b.z - zMean);
@@ -948,7 +957,11 @@ class ArmFilter final : public JointEstimator {
   void beforeOpticalUpdate() {
     m_headingFloor = std::max(m_headingFloor, m_headingMatch);
     const Vec u = headingAngles(m_x);
-    m_P += headingShortfall(u) * u * u.transpose();
+    // u is zero outside the angles: only P's angle block changes, and only by a shortfall.
+    const double shortfall = headingShortfall(u);
+    if (shortfall == 0.0) return;
+    const JointVector hu = u.template segment<5>(10);
+    m_P.template block<5, 5>(10, 10) += shortfall * hu * hu.transpose();
   }
 
   // The six blocks' predicted readings and their Jacobian at the predicted state, which the
@@ -1230,11 +1243,18 @@ class ArmFilter final : public JointEstimator {
 
   void finishUpdate() {
     for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
-    m_P = 0.5 * (m_P + m_P.transpose()).eval();
+    symmetrise(m_P);
     keepInAnatomicalRange();
     freezeInactive();
     // A negative or vanishing variance means round-off has eaten positive definiteness.
     if ((m_P.diagonal().array() <= 0.0).any()) repairCovariance();
+  }
+
+  // P = (P + P^T) / 2 in place, pair by pair: each entry gets the 0.5 (a + b) of the whole
+  // expression (the diagonal is unchanged), without its 15x15 temporary.
+  static void symmetrise(Mat& p) {
+    for (int c = 0; c < N; ++c)
+      for (int r = c + 1; r < N; ++r) p(r, c) = p(c, r) = 0.5 * (p(r, c) + p(c, r));
   }
 
   // A window fit that ends outside the anatomical range has found the other Euler branch (the

@@ -94,9 +94,18 @@ void symmetricDowndate(const Eigen::Matrix<double, N, M>& vt, const Eigen::Matri
 #ifdef ARMTRACK_FMA_KERNELS
 // The two kernels above for processors with AVX2 and FMA (chosen at run time, so the build
 // still runs on plain x86-64): four doubles per instruction, and each multiply-add rounded once.
-// Same order of sums; the tails (N not a multiple of four) use the same fused steps, so
-// symmetricDowndate still keeps P exactly symmetric.
+// Same order of sums; the tails (N not a multiple of four) use the same fused steps in a masked
+// packet, so symmetricDowndate still keeps P exactly symmetric.
 #define ARMTRACK_TARGET_FMA __attribute__((target("avx2,fma")))
+
+// Lanes 0 .. T-1 of a packet: the tail of a column whose length is not a multiple of four is
+// loaded and stored as one packet (masked lanes are neither read nor written), with the same
+// steps per lane as a full packet, so the tail rounds exactly as a scalar loop of those steps.
+template <int T>
+ARMTRACK_TARGET_FMA inline __m256i tailMask() {
+  static_assert(T > 0 && T < 4);
+  return _mm256_setr_epi64x(-1, T > 1 ? -1 : 0, T > 2 ? -1 : 0, 0);
+}
 
 template <int M, int K, int N>
 ARMTRACK_TARGET_FMA void columnsTimesTransposeFma(const double* a,
@@ -117,12 +126,21 @@ ARMTRACK_TARGET_FMA void columnsTimesTransposeFma(const double* a,
 #pragma GCC unroll 4
     for (int i = 0; i < M; ++i) _mm256_storeu_pd(out.data() + i * N + r, acc[i]);
   }
-  for (; r < N; ++r)
-    for (int i = 0; i < M; ++i) {
-      double acc = a[r] * h(i, 0);
-      for (int k = 1; k < K; ++k) acc = __builtin_fma(a[k * N + r], h(i, k), acc);
-      out(r, i) = acc;
+  if constexpr (N % 4 != 0) {
+    // The last N % 4 rows as one masked packet, with the same steps as the full ones.
+    const __m256i mask = tailMask<N % 4>();
+    __m256d acc[M];
+    const __m256d x0 = _mm256_maskload_pd(a + r, mask);
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) acc[i] = _mm256_mul_pd(x0, _mm256_set1_pd(h(i, 0)));
+    for (int k = 1; k < K; ++k) {
+      const __m256d x = _mm256_maskload_pd(a + k * N + r, mask);
+#pragma GCC unroll 4
+      for (int i = 0; i < M; ++i) acc[i] = _mm256_fmadd_pd(x, _mm256_set1_pd(h(i, k)), acc[i]);
     }
+#pragma GCC unroll 4
+    for (int i = 0; i < M; ++i) _mm256_maskstore_pd(out.data() + i * N + r, mask, acc[i]);
+  }
 }
 
 template <int M, int N, bool WithA>
@@ -145,12 +163,15 @@ ARMTRACK_TARGET_FMA void symmetricDowndateFma(const Eigen::Matrix<double, N, M>&
       if constexpr (WithA) x = _mm256_fmadd_pd(_mm256_loadu_pd(a.data() + r), ac, x);
       _mm256_storeu_pd(pc + r, x);
     }
-    for (; r < N; ++r) {
-      double sum = vt(r, 0) * vt(c, 0);
-      for (int m = 1; m < M; ++m) sum = __builtin_fma(vt(r, m), vt(c, m), sum);
-      double x = pc[r] - sum;
-      if constexpr (WithA) x = __builtin_fma(a(r), a(c), x);
-      pc[r] = x;
+    if constexpr (N % 4 != 0) {
+      const __m256i mask = tailMask<N % 4>();
+      __m256d sum = _mm256_mul_pd(_mm256_maskload_pd(v + r, mask), b[0]);
+#pragma GCC unroll 4
+      for (int m = 1; m < M; ++m)
+        sum = _mm256_fmadd_pd(_mm256_maskload_pd(v + m * N + r, mask), b[m], sum);
+      __m256d x = _mm256_sub_pd(_mm256_maskload_pd(pc + r, mask), sum);
+      if constexpr (WithA) x = _mm256_fmadd_pd(_mm256_maskload_pd(a.data() + r, mask), ac, x);
+      _mm256_maskstore_pd(pc + r, mask, x);
     }
   }
 }
@@ -219,8 +240,11 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   using MVec = Eigen::Matrix<double, M, 1>;
   Cols wt;  // W^T = P H^T (P is symmetric): K of P's columns combined
   detail::columnsTimesTransposeAny<M, K, N>(p.data() + col * N, h, wt);
-  // S = H W^T + R and its Cholesky factor L (lower).
+  // S = H W^T + R and its Cholesky factor L (lower), with the reciprocals of its diagonal: the
+  // solves below multiply by them, so the only divisions are the M reciprocals (a division's
+  // latency is several multiplications', and these steps depend on each other).
   SMat l = SMat::Zero();
+  MVec inv;
   for (int j = 0; j < M; ++j) {
     for (int i = j; i < M; ++i) {
       double sij = h.row(i).dot(wt.col(j).template segment<K>(col));
@@ -229,8 +253,9 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
       if (i == j) {
         if (!(sij > 0.0)) return false;
         l(j, j) = std::sqrt(sij);
+        inv(j) = 1.0 / l(j, j);
       } else {
-        l(i, j) = sij / l(j, j);
+        l(i, j) = sij * inv(j);
       }
     }
   }
@@ -240,12 +265,12 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   for (int i = 0; i < M; ++i) {
     double y = r(i);
     for (int k = 0; k < i; ++k) y -= l(i, k) * sr(k);
-    sr(i) = y / l(i, i);
+    sr(i) = y * inv(i);
   }
   for (int i = M - 1; i >= 0; --i) {
     double y = sr(i);
     for (int k = i + 1; k < M; ++k) y -= l(k, i) * sr(k);
-    sr(i) = y / l(i, i);
+    sr(i) = y * inv(i);
   }
   nis = r.dot(sr);
   // V^T = W^T L^-T, column by column.
@@ -253,7 +278,7 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
   for (int j = 0; j < M; ++j) {
     vt.col(j) = wt.col(j);
     for (int k = 0; k < j; ++k) vt.col(j) -= l(j, k) * vt.col(k);
-    vt.col(j) /= l(j, j);
+    vt.col(j) *= inv(j);
   }
   Eigen::Matrix<double, N, 1> g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
   for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);

@@ -10,17 +10,25 @@
 namespace armtrack {
 
 namespace {
+// Cosines and sines of the two angles the shoulder axes depend on.
+struct ShoulderTrig {
+  double c0, s0, c1, s1;
+  explicit ShoulderTrig(const JointVector& th)
+      : c0(std::cos(th(0))), s0(std::sin(th(0))), c1(std::cos(th(1))), s1(std::sin(th(1))) {}
+};
+
 // The shoulder axes in frame 0 (columns z0, z1, z2): the spatial angular velocity of the upper
 // arm is J_s th'.head<3>().
-Eigen::Matrix3d shoulderAxes(const JointVector& th) {
+Eigen::Matrix3d shoulderAxes(const ShoulderTrig& t) {
   // Rows 1-2 of the tables give z1 = Rz(th0) Rx(pi/2) z and z2 = z1's frame turned by th1 + pi/2.
-  const double c0 = std::cos(th(0)), s0 = std::sin(th(0));
-  const double c1 = std::cos(th(1)), s1 = std::sin(th(1));
   Eigen::Matrix3d j;
   j.col(0) = Eigen::Vector3d::UnitZ();
-  j.col(1) = Eigen::Vector3d(s0, -c0, 0.0);
-  j.col(2) = Eigen::Vector3d(c1 * c0, c1 * s0, s1);
+  j.col(1) = Eigen::Vector3d(t.s0, -t.c0, 0.0);
+  j.col(2) = Eigen::Vector3d(t.c1 * t.c0, t.c1 * t.s0, t.s1);
   return j;
+}
+Eigen::Matrix3d shoulderAxes(const JointVector& th) {
+  return shoulderAxes(ShoulderTrig(th));
 }
 
 // The upper arm's orientation in frame 0 up to a constant rotation on the right (which a turn
@@ -64,15 +72,18 @@ Eigen::Vector3d shoulderAnglesNear(const Eigen::Matrix3d& r, const Eigen::Vector
   return best;
 }
 
-Eigen::Vector3d dampedSolve(const Eigen::Matrix3d& j, const Eigen::Vector3d& w) {
-  return j.transpose() * (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).ldlt().solve(w);
+// (J J^T + eps I)^-1, the damped least-squares normal matrix's inverse, by cofactors (Eigen's
+// 3x3 inverse): a sixth of an LDLT factorisation and its solve, and as accurate here.
+Eigen::Matrix3d dampedInverse(const Eigen::Matrix3d& j) {
+  return (j * j.transpose() + 1e-12 * Eigen::Matrix3d::Identity()).inverse();
 }
 }  // namespace
 
 // J_s h = up, where J_s's columns are the three shoulder axes in frame 0 (z0, z1, z2). The damping
 // only guards the gimbal lock; it is small enough that h stays the exact rotation elsewhere.
 JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
-  const Eigen::Vector3d rate = dampedSolve(shoulderAxes(th), up);
+  const Eigen::Matrix3d j = shoulderAxes(th);
+  const Eigen::Vector3d rate = j.transpose() * (dampedInverse(j) * up);
   JointVector d = JointVector::Zero();
   d.head<3>() = rate;
   return d;
@@ -99,21 +110,50 @@ Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>&
                                              const Eigen::Vector3d& up, const JointVector& h) {
   // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
   // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
+  // h = J^T y with A y = up, A = J J^T + eps I (dampedSolve), and J depends on th0 and th1 only;
+  // differentiating A y = up along a direction d gives y' = -A^-1 A' y and
+  // y'' = -A^-1 (A'' y + 2 A' y'), so h' = J'^T y + J^T y' and
+  // h'' = J''^T y + 2 J'^T y' + J^T y'': exact derivatives, with A inverted once.
   const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
-  auto along = [&](const JointVector& dir, JointVector& first, JointVector& second) {
-    const double n = dir.norm();
-    first.setZero();
-    second.setZero();
-    if (n < 1e-12) return;
-    const double e = 1e-4 / n;  // step of 1e-4 rad along dir
-    const JointVector hp = headingGenerator(th + e * dir, up);
-    const JointVector hm = headingGenerator(th - e * dir, up);
-    first = (hp - hm) / (2 * e);
-    second = (hp - 2 * h + hm) / (e * e);
+  const ShoulderTrig t(th);
+  const double c0 = t.c0, s0 = t.s0, c1 = t.c1, s1 = t.s1;
+  const Eigen::Matrix3d j = shoulderAxes(t);
+  const Eigen::Matrix3d aInv = dampedInverse(j);
+  const Eigen::Vector3d y = aInv * up;
+  // Along d: J' (z0 is constant, z1 turns with th0, z2 with th0 and th1), A', y' and h'.
+  struct First {
+    Eigen::Matrix3d dj, da;
+    Eigen::Vector3d dy;
+    JointVector dh = JointVector::Zero();
   };
-  JointVector dhThd, d2hThd, dhThdd, unused;
-  along(thd, dhThd, d2hThd);
-  along(thdd, dhThdd, unused);
+  auto first = [&](const JointVector& d) {
+    First f;
+    f.dj.col(0).setZero();
+    f.dj.col(1) = d(0) * Eigen::Vector3d(c0, s0, 0.0);
+    f.dj.col(2) = d(0) * Eigen::Vector3d(-c1 * s0, c1 * c0, 0.0) +
+                  d(1) * Eigen::Vector3d(-s1 * c0, -s1 * s0, c1);
+    f.da = f.dj * j.transpose() + j * f.dj.transpose();
+    f.dy = -(aInv * (f.da * y));
+    f.dh.head<3>() = f.dj.transpose() * y + j.transpose() * f.dy;
+    return f;
+  };
+  const First rate = first(thd);
+  const JointVector dhThdd = first(thdd).dh;
+  // J'' along th', then A'', y'' and h''.
+  const double d0 = thd(0), d1 = thd(1);
+  Eigen::Matrix3d d2j;
+  d2j.col(0).setZero();
+  d2j.col(1) = d0 * d0 * Eigen::Vector3d(-s0, c0, 0.0);
+  d2j.col(2) = d0 * d0 * Eigen::Vector3d(-c1 * c0, -c1 * s0, 0.0) +
+               2.0 * d0 * d1 * Eigen::Vector3d(s1 * s0, -s1 * c0, 0.0) +
+               d1 * d1 * Eigen::Vector3d(-c1 * c0, -c1 * s0, -s1);
+  const Eigen::Matrix3d d2a =
+      d2j * j.transpose() + 2.0 * rate.dj * rate.dj.transpose() + j * d2j.transpose();
+  const Eigen::Vector3d d2y = -(aInv * (d2a * y + 2.0 * rate.da * rate.dy));
+  JointVector d2hThd = JointVector::Zero();
+  d2hThd.head<3>() =
+      d2j.transpose() * y + 2.0 * rate.dj.transpose() * rate.dy + j.transpose() * d2y;
+  const JointVector& dhThd = rate.dh;
   Eigen::Matrix<double, 15, 1> v;
   v.segment<5>(0) = dhThdd + d2hThd;
   v.segment<5>(5) = dhThd;

@@ -187,7 +187,7 @@ void imuRows(const Frame& f, bool bodyAccel, int row, ModelReadings& h, ModelJac
 
 void predictReadings(const ArmGeometry& geo, const Eigen::Vector3d& gUp, bool bodyAccel,
                      const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
-                     ModelJacobian* jac) {
+                     ModelJacobian* jac, bool positions) {
   const auto thdd = x.segment<5>(0);
   const auto thd = x.segment<5>(5);
   const auto th = x.segment<5>(10);
@@ -220,6 +220,7 @@ void predictReadings(const ArmGeometry& geo, const Eigen::Vector3d& gUp, bool bo
   fixedRow<5>(fa, geo.thf7 + kHalfPi, 0.0, kHalfPi, bodyAccel);
   fixedRow<5>(fa, 0.0, geo.lf8, 0.0, bodyAccel);
   imuRows<5>(fa, bodyAccel, 6, h, jac);
+  if (!positions) return;
   // Elbow and wrist (eq. 11), carried back to frame 0 row by row.
   Point v, e;
   v.v = Eigen::Vector3d(0.0, 0.0, geo.l6);

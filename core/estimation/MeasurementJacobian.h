@@ -25,8 +25,10 @@ using ModelJacobian = Eigen::Matrix<double, kMeasurementModelRows, kMeasurementS
 /// differentiation written out for the arm, in place on one frame per chain: each frame's
 /// derivatives are computed only for the joints before it, gravity's only with respect to angles,
 /// positions' only with respect to angles, and the body acceleration only when bodyAccel.
+/// Without positions, the elbow and wrist rows (12-17) of h and jac are not written: a sample
+/// without optical data needs the IMU rows alone.
 void predictReadings(const ArmGeometry& geometry, const Eigen::Vector3d& gUp, bool bodyAccel,
                      const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
-                     ModelJacobian* jac);
+                     ModelJacobian* jac, bool positions = true);
 
 }  // namespace armtrack

@@ -68,6 +68,61 @@ TEST(TurnAboutVertical, SmallTurnStepsAlongTheGenerator) {
   }
 }
 
+// headingSymmetry's rate and acceleration parts are the exact derivatives Dh th' and
+// Dh th'' + D2h[th', th'] of the generator h (normalised by |h|): against central differences of
+// headingGenerator along th' and th'', Richardson-extrapolated over two steps. The first
+// derivative's differences are good to about 1e-12 here; the second's carry round-off of about
+// 1e-16 |h| / step^2, a few 1e-8 at the largest rates, whatever the step.
+TEST(HeadingSymmetry, RateAndAccelerationPartsAreTheGeneratorsDerivatives) {
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> rate(-3.0, 3.0), acc(-30.0, 30.0);
+  double worstRate = 0.0, worstAcc = 0.0;
+  int checked = 0;
+  for (const Eigen::Vector3d& up : {kUprightUp, kLeaningUp}) {
+    for (int k = 0; k < 200; ++k) {
+      const JointVector th = randomAngles(rng);
+      if (std::abs(std::cos(th(1))) < 0.2) continue;  // the damped solve bends near the lock
+      JointVector thd, thdd;
+      for (int j = 0; j < 5; ++j) thd(j) = rate(rng), thdd(j) = acc(rng);
+      Eigen::Matrix<double, 15, 1> x;
+      x << thdd, thd, th;
+      const JointVector h = headingGenerator(th, up);
+      const Eigen::Matrix<double, 15, 1> v = headingSymmetry(x, up) * h.norm();
+      // First and second central differences along d with step e.
+      auto diff = [&](const JointVector& d, double e, JointVector& d1, JointVector& d2) {
+        const JointVector hp = headingGenerator(th + e * d, up);
+        const JointVector hm = headingGenerator(th - e * d, up);
+        d1 = (hp - hm) / (2 * e);
+        d2 = (hp - 2 * h + hm) / (e * e);
+      };
+      auto extrapolated = [&](const JointVector& d, JointVector& d1, JointVector& d2) {
+        const double e = 1e-3 / d.norm();
+        JointVector a1, a2, b1, b2;
+        diff(d, e, a1, a2);
+        diff(d, e / 2, b1, b2);
+        d1 = (4 * b1 - a1) / 3;
+        d2 = (4 * b2 - a2) / 3;
+      };
+      JointVector dRate, d2Rate, dAcc, unused;
+      extrapolated(thd, dRate, d2Rate);
+      extrapolated(thdd, dAcc, unused);
+      const JointVector accTruth = dAcc + d2Rate;
+      const double errRate = (v.segment<5>(5) - dRate).norm() / (1.0 + dRate.norm());
+      const double errAcc = (v.segment<5>(0) - accTruth).norm() / (1.0 + accTruth.norm());
+      worstRate = std::max(worstRate, errRate);
+      worstAcc = std::max(worstAcc, errAcc);
+      EXPECT_LT(errRate, 1e-9) << th.transpose() << " | " << thd.transpose();
+      EXPECT_LT(errAcc, 2e-7) << th.transpose() << " | " << thd.transpose();
+      EXPECT_EQ(v.segment<2>(3), Eigen::Vector2d::Zero());
+      EXPECT_EQ(v.segment<2>(8), Eigen::Vector2d::Zero());
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 200);
+  std::printf("[ measured ] %d states, worst relative mismatch: rates %.3g, accelerations %.3g\n",
+              checked, worstRate, worstAcc);
+}
+
 // The heading covector against the forward kinematics: for any small change of the angles,
 // w . dth is the vertical part of the upper arm's rotation (R' R^T by central differences of the
 // upper-arm IMU frame), so it reads 1 along the generator and 0 for a change that only tilts the

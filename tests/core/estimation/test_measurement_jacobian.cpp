@@ -79,6 +79,14 @@ TEST_P(MeasurementJacobianTest, EqualsAutomaticDifferentiation) {
     ModelReadings h2;
     predictReadings(p.geometry, p.gUp, bodyAccel(p), x, h2, nullptr);
     ASSERT_EQ(h2, h);
+    // Without the positions the IMU rows are the same, and the position rows are not written.
+    ModelReadings h3 = ModelReadings::Constant(-7.0);
+    ModelJacobian jac3 = ModelJacobian::Constant(-7.0);
+    predictReadings(p.geometry, p.gUp, bodyAccel(p), x, h3, &jac3, false);
+    ASSERT_EQ(h3.head<12>(), h.head<12>());
+    ASSERT_EQ(jac3.topRows<12>(), jac.topRows<12>());
+    ASSERT_TRUE((h3.tail<6>().array() == -7.0).all() &&
+                (jac3.bottomRows<6>().array() == -7.0).all());
   }
   EXPECT_LE(worstValue, 1e-13);
   EXPECT_LE(worstJac, 1e-12);
