@@ -94,7 +94,8 @@ class AnglePlotPanel : public QWidget {
  private:
   void markDirty() { m_dirty = true; }
   void retranslateUi();
-  /// Once, when first shown wide enough: the table as wide as its columns.
+  /// When first shown wide enough, and again when the language or the target column changes:
+  /// the table as wide as its columns, within 55 % of the panel (names wrap before numbers hide).
   void sizeTable();
   void showTargetColumn(bool show);
 

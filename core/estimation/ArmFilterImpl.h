@@ -1,6 +1,6 @@
 // The estimator behind makeEstimator(): one class template over the state size (15, or 21 with
 // Method B's body-acceleration states). Private to the estimator. Its members are defined in
-//   ArmFilter.cpp          the update of one sample: prediction, gating, the EKF update
+//   ArmFilter.cpp          the update of one sample: prediction, the EKF update
 //   ArmFilterOptical.cpp   the optical rows' gate, heading matching
 //   ArmFilterHeading.cpp   the heading the IMUs cannot see: symmetry, heading-blind update, floor
 //   ArmFilterUkf.cpp       the unscented update
