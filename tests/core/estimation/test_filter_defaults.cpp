@@ -96,6 +96,14 @@ const ReachCase kReachCases[] = {
     {FilterKind::Ekf, Optics::Webcam, 420.0}, {FilterKind::Ekf, Optics::Webcam, 600.0},
     {FilterKind::Ukf, Optics::Kinect, 600.0}, {FilterKind::Ukf, Optics::Webcam, 600.0}};
 
+// 20 s of reaching at the case's peak rate, IMUs at 500 Hz and the case's optical sensor. Minimum
+// jerk's peak acceleration scales with the square of its peak rate at fixed amplitude.
+Recording reachingRecording(const ReachCase& c, std::uint64_t seed) {
+  const double scale = c.peakRateDeg / 420.0;
+  const ReachingTrajectory traj(seed, c.peakRateDeg * kDeg, 4000.0 * scale * scale * kDeg, 20.0);
+  return simulateRecording(traj, simulation(20.0, seed, 500.0, c.optics));
+}
+
 std::string reachCaseName(const testing::TestParamInfo<ReachCase>& i) {
   return std::string(i.param.kind == FilterKind::Ekf ? "Ekf" : "Ukf") +
          (i.param.optics == Optics::Kinect ? "Kinect" : "Webcam") +
@@ -106,11 +114,8 @@ class FastReaching : public testing::TestWithParam<ReachCase> {};
 
 TEST_P(FastReaching, EveryJointWithinOneDegree) {
   const ReachCase c = GetParam();
-  // Minimum jerk's peak acceleration scales with the square of its peak rate at fixed amplitude.
-  const double scale = c.peakRateDeg / 420.0;
   for (std::uint64_t seed : {21u, 22u}) {
-    const ReachingTrajectory traj(seed, c.peakRateDeg * kDeg, 4000.0 * scale * scale * kDeg, 20.0);
-    const Recording rec = simulateRecording(traj, simulation(20.0, seed, 500.0, c.optics));
+    const Recording rec = reachingRecording(c, seed);
     Tally t;
     run(rec, c.kind, 1.0, t);
     const JointVector rmse = t.errors.rmse() / kDeg;
@@ -138,12 +143,9 @@ class FastReachingCoverage : public testing::TestWithParam<ReachCase> {};
 
 TEST_P(FastReachingCoverage, TwoSigmaHoldsNinetyToNinetyNinePercent) {
   const ReachCase c = GetParam();
-  const double scale = c.peakRateDeg / 420.0;
   Tally t;
-  for (std::uint64_t seed = 101; seed <= 110; ++seed) {
-    const ReachingTrajectory traj(seed, c.peakRateDeg * kDeg, 4000.0 * scale * scale * kDeg, 20.0);
-    run(simulateRecording(traj, simulation(20.0, seed, 500.0, c.optics)), c.kind, 1.0, t);
-  }
+  for (std::uint64_t seed = 101; seed <= 110; ++seed)
+    run(reachingRecording(c, seed), c.kind, 1.0, t);
   const JointVector cover = t.coverage();
   std::printf(
       "[ measured ] %s reaching %.0f deg/s, %s, seeds 101-110: inside 2 sd (%%) %s; RMSE "
