@@ -110,7 +110,7 @@ Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>&
                                              const Eigen::Vector3d& up, const JointVector& h) {
   // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
   // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
-  // h = J^T y with A y = up, A = J J^T + eps I (dampedSolve), and J depends on th0 and th1 only;
+  // h = J^T y with A y = up, A = J J^T + eps I (dampedInverse), and J depends on th0 and th1 only;
   // differentiating A y = up along a direction d gives y' = -A^-1 A' y and
   // y'' = -A^-1 (A'' y + 2 A' y'), so h' = J'^T y + J^T y' and
   // h'' = J''^T y + 2 J'^T y' + J^T y'': exact derivatives, with A inverted once.
