@@ -386,8 +386,10 @@ struct ArmPrediction {
 ArmPrediction predictSensors(const ArmGeometry& geo, const JointVector& th, const JointVector& thd,
                              const JointVector& thdd, const Eigen::Vector3d& gUp);
 
-/// Wraps an angle to (-pi, pi].
+/// Wraps an angle to (-pi, pi]. An angle already there is returned as it is (the filter wraps
+/// every angle twice a step, nearly always in range: shifting by pi and back would round it).
 inline double wrapAngle(double a) {
+  if (a > -std::numbers::pi && a <= std::numbers::pi) return a;
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   a = std::fmod(a + std::numbers::pi, kTwoPi);
   if (a <= 0) a += kTwoPi;
