@@ -1,6 +1,8 @@
 #include "core/estimation/MeasurementJacobian.h"
 
+#include <array>
 #include <cmath>
+#include <limits>
 
 namespace armtrack {
 
@@ -115,12 +117,25 @@ void jointRow(Frame& f, double c, double s, double rate, double accel, double be
   frameToChild<J>(f, c, s, beta, j, bodyAccel);
 }
 
-// propagateFixed(): a row with a constant rotation gamma.
+// The cosine and sine of a constant row's rotation, remembered for the last angle: the geometry
+// changes with the patient's set-up, not from step to step (three sincos a step otherwise).
+struct Turn {
+  double gamma = std::numeric_limits<double>::quiet_NaN(), c = 1.0, s = 0.0;
+  void at(double g) {
+    if (g == gamma) return;
+    gamma = g;
+    c = std::cos(g);
+    s = std::sin(g);
+  }
+};
+
+// propagateFixed(): a row with a constant rotation gamma; turn is the row's own memory.
 template <int J>
-void fixedRow(Frame& f, double gamma, double lambda, double beta, bool bodyAccel) {
+void fixedRow(Frame& f, Turn& turn, double gamma, double lambda, double beta, bool bodyAccel) {
   if (bodyAccel && lambda != 0.0) addLever<J>(f.acc, f.w, f.wd, lambda);
   if (gamma == 0.0 && beta == 0.0) return;
-  frameToChild<J>(f, std::cos(gamma), std::sin(gamma), beta, -1, bodyAccel);
+  turn.at(gamma);
+  frameToChild<J>(f, turn.c, turn.s, beta, -1, bodyAccel);
 }
 
 // A position and its derivatives with respect to the five angles.
@@ -208,17 +223,18 @@ void predictReadings(const ArmGeometry& geo, const Eigen::Vector3d& gUp, bool bo
   Frame fa = f;
 
   // Upper-arm IMU, Table 1 rows 4-6.
-  fixedRow<3>(f, 0.0, geo.lu3, 0.0, bodyAccel);
-  fixedRow<3>(f, geo.thu4, 0.0, kHalfPi, bodyAccel);
-  fixedRow<3>(f, 0.0, geo.lu5, 0.0, bodyAccel);
+  thread_local std::array<Turn, 7> turns;  // one per fixed row below
+  fixedRow<3>(f, turns[0], 0.0, geo.lu3, 0.0, bodyAccel);
+  fixedRow<3>(f, turns[1], geo.thu4, 0.0, kHalfPi, bodyAccel);
+  fixedRow<3>(f, turns[2], 0.0, geo.lu5, 0.0, bodyAccel);
   imuRows<3>(f, bodyAccel, 0, h, jac);
   // Forearm IMU, Table 3 rows 4-9.
-  fixedRow<3>(fa, kHalfPi, geo.l3, -kHalfPi, bodyAccel);
+  fixedRow<3>(fa, turns[3], kHalfPi, geo.l3, -kHalfPi, bodyAccel);
   jointRow<4>(fa, c5, s5, thd(3), thdd(3), kHalfPi, bodyAccel);
   jointRow<5>(fa, c6, s6, thd(4), thdd(4), 0.0, bodyAccel);
-  fixedRow<5>(fa, 0.0, geo.lf6, 0.0, bodyAccel);
-  fixedRow<5>(fa, geo.thf7 + kHalfPi, 0.0, kHalfPi, bodyAccel);
-  fixedRow<5>(fa, 0.0, geo.lf8, 0.0, bodyAccel);
+  fixedRow<5>(fa, turns[4], 0.0, geo.lf6, 0.0, bodyAccel);
+  fixedRow<5>(fa, turns[5], geo.thf7 + kHalfPi, 0.0, kHalfPi, bodyAccel);
+  fixedRow<5>(fa, turns[6], 0.0, geo.lf8, 0.0, bodyAccel);
   imuRows<5>(fa, bodyAccel, 6, h, jac);
   if (!positions) return;
   // Elbow and wrist (eq. 11), carried back to frame 0 row by row.
