@@ -185,7 +185,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
       ok = ekfUpdate(blocks);
     }
   }
-  if (!ok || !m_x.allFinite() || !m_P.allFinite()) {
+  if (!ok || !allFiniteFast(m_x) || !allFiniteFast(m_P)) {
     m_x = xBefore;
     m_P = pBefore;
     ++m_counters.skippedUpdates;
@@ -369,18 +369,20 @@ bool ArmFilter<N>::sequentialUpdate(const Jac& jac, const MeasVec& innov, const 
   dx.setZero();
   m_updateNis = 0.0;
   m_updateDof = 0;
+  PaddedCovariance<N> padded(p);  // the blocks work on P padded (BlockUpdate.h)
   for (int i = 0; i < b.count; ++i) {
-    const bool ok = b.size[i] == 3 ? blockUpdate<3>(jac, innov, b, i, p, dx)
-                                   : blockUpdate<2>(jac, innov, b, i, p, dx);
+    const bool ok = b.size[i] == 3 ? blockUpdate<3>(jac, innov, b, i, padded, dx)
+                                   : blockUpdate<2>(jac, innov, b, i, padded, dx);
     if (!ok) return false;
   }
+  padded.store(p);
   return true;
 }
 
 template <int N>
 template <int M>
 bool ArmFilter<N>::blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i,
-                               Mat& p, Vec& dx) {
+                               PaddedCovariance<N>& p, Vec& dx) {
   const int row = b.offset[i];
   // Optical rows (positions, marker pixels) read the angles only: their Jacobian is zero left
   // of column 10 and right of 15, and the products skip those columns.
@@ -395,7 +397,7 @@ bool ArmFilter<N>::blockUpdate(const Jac& jac, const MeasVec& innov, const Block
 template <int N>
 template <int M, int K>
 bool ArmFilter<N>::updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
-                               const BlockList& b, int i, Mat& p, Vec& dx) {
+                               const BlockList& b, int i, PaddedCovariance<N>& p, Vec& dx) {
   const int row = b.offset[i];
   // Heading-blind IMU update (a Schmidt, or "consider", update along one direction): IMU rows
   // say nothing about the turn of the arm about the vertical, so their gain must not move the
@@ -471,11 +473,21 @@ void ArmFilter<N>::trackJerk() {
 template <int N>
 void ArmFilter<N>::finishUpdate() {
   for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
-  symmetrise(m_P);
+  mirrorLower(m_P);
   keepInAnatomicalRange();
   freezeInactive();
   // A negative or vanishing variance means round-off has eaten positive definiteness.
   if ((m_P.diagonal().array() <= 0.0).any()) repairCovariance();
+}
+
+// P's upper triangle set to its lower one. The EKF's block updates keep P exactly symmetric;
+// the prediction (F P F^T in place, the rank-1 heading noise) leaves the two halves apart by
+// round-off, and this ends it at each step. Copying one half costs a third of averaging the two
+// (symmetrise, for the UKF's updates, which are not symmetric by construction).
+template <int N>
+void ArmFilter<N>::mirrorLower(Mat& p) {
+  for (int c = 1; c < N; ++c)
+    for (int r = 0; r < c; ++r) p(r, c) = p(c, r);
 }
 
 // P = (P + P^T) / 2 in place, pair by pair: each entry gets the 0.5 (a + b) of the whole
@@ -501,6 +513,7 @@ template bool ArmFilter<kBase>::ekfUpdate(const BlockList& b);
 template void ArmFilter<kBase>::trackJerk();
 template void ArmFilter<kBase>::finishUpdate();
 template void ArmFilter<kBase>::symmetrise(Mat& p);
+template void ArmFilter<kBase>::mirrorLower(Mat& p);
 template void ArmFilter<kBase + 6>::reset();
 template JointEstimate ArmFilter<kBase + 6>::estimate() const;
 template UpdateResult ArmFilter<kBase + 6>::update(const ArmSample& s);
@@ -515,6 +528,7 @@ template bool ArmFilter<kBase + 6>::ekfUpdate(const BlockList& b);
 template void ArmFilter<kBase + 6>::trackJerk();
 template void ArmFilter<kBase + 6>::finishUpdate();
 template void ArmFilter<kBase + 6>::symmetrise(Mat& p);
+template void ArmFilter<kBase + 6>::mirrorLower(Mat& p);
 
 }  // namespace detail
 

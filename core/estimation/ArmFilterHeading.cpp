@@ -16,7 +16,7 @@ namespace armtrack::detail {
 template <int N>
 const Vec15& ArmFilter<N>::headingSymmetryAt(const Vec15& x) {
   if (!m_heading || m_heading->first != x)
-    m_heading.emplace(x, headingSymmetry(x, m_up, generatorAt(x.template segment<5>(10))));
+    m_heading.emplace(x, headingSymmetry(x, m_up, geometryAt(x.template segment<5>(10))));
   return m_heading->second;
 }
 
@@ -30,10 +30,20 @@ void ArmFilter<N>::prepareHeadingBlind() {
   // not the angles' Euclidean component along the heading direction: a correction that only
   // tilts the arm (w . dx = 0) may still have such a component when the shoulder axes are not
   // orthogonal, and reading that as heading made every tilt correction turn the arm a little.
-  const JointVector w = headingCovector(m_x.template segment<5>(10), m_up);
+  const JointVector w = headingCovector(geometryAt(m_x.template segment<5>(10)), m_up);
   m_headingBlind.u.setZero();
   m_headingBlind.u.template segment<5>(10) = w / w.dot(m_headingBlind.v.template segment<5>(10));
 }
+
+namespace {
+// rows -= (rows v) w^T over the first 15 columns (v is zero beyond them), column by column.
+template <int R, typename Rows, typename Vec>
+void projectRows(Rows&& rows, const Vec& v, const Vec& w) {
+  Eigen::Matrix<double, R, 1, 0, R == Eigen::Dynamic ? kMaxRows : R, 1> hv = rows.col(0) * v(0);
+  for (int j = 1; j < kBase; ++j) hv += rows.col(j) * v(j);
+  for (int j = 0; j < kBase; ++j) rows.col(j) -= hv * w(j);
+}
+}  // namespace
 
 // Observability constraint: IMU rows must not see the heading (turning the whole arm about the
 // vertical changes no IMU reading). Linearisation at a moving state would otherwise make the
@@ -44,13 +54,26 @@ bool ArmFilter<N>::projectHeading(const Vec& x, const BlockList& b, Jac& jac) {
   v.template head<kBase>() = headingSymmetryAt(x.template head<kBase>());
   const double vv = v.squaredNorm();
   if (vv <= 0.0) return false;
+  // Each run of consecutive IMU blocks at once (gather() puts them all first), column by column
+  // on contiguous memory: rows -= (rows v) (v / |v|^2)^T.
+  const Vec w = v / vv;
   bool changed = false;
-  for (int i = 0; i < b.count; ++i) {
-    if (isOptical(b.block[i])) continue;
-    auto rows = jac.template middleRows<3>(b.offset[i]);
-    const Eigen::Vector3d hv = rows * v;
-    rows -= hv * v.transpose() / vv;
+  for (int i = 0; i < b.count;) {
+    if (isOptical(b.block[i])) {
+      ++i;
+      continue;
+    }
+    int end = i;
+    while (end < b.count && !isOptical(b.block[end])) ++end;
+    const int first = b.offset[i];
+    const int n = (end < b.count ? b.offset[end] : b.rows()) - first;
+    // Two IMUs' four blocks (the usual case) with the row count fixed, so the loops unroll.
+    if (n == 12)
+      projectRows<12>(jac.template middleRows<12>(first), v, w);
+    else
+      projectRows<Eigen::Dynamic>(jac.middleRows(first, n), v, w);
     changed = true;
+    i = end;
   }
   return changed;
 }
@@ -71,8 +94,15 @@ auto ArmFilter<N>::headingAngles(const Vec& x) const -> Vec {
 // updates) and then at the updated ones (heading floor, estimate()) up to eight times.
 template <int N>
 const JointVector& ArmFilter<N>::generatorAt(const JointVector& th) const {
-  if (!m_generator || m_generator->first != th) m_generator.emplace(th, headingGenerator(th, m_up));
-  return m_generator->second;
+  return geometryAt(th).generator;
+}
+
+// headingGeometry at th, remembered for the last angles asked (generatorAt, the heading symmetry
+// and the heading-blind update's covector all start from it).
+template <int N>
+const HeadingGeometry& ArmFilter<N>::geometryAt(const JointVector& th) const {
+  if (!m_geometry || m_geometry->first != th) m_geometry.emplace(th, headingGeometry(th, m_up));
+  return m_geometry->second;
 }
 
 // P holds the heading's variance to first order: a turn of the whole arm about the vertical
@@ -127,6 +157,7 @@ template void ArmFilter<kBase>::prepareHeadingBlind();
 template bool ArmFilter<kBase>::projectHeading(const Vec& x, const BlockList& b, Jac& jac);
 template auto ArmFilter<kBase>::headingAngles(const Vec& x) const -> Vec;
 template const JointVector& ArmFilter<kBase>::generatorAt(const JointVector& th) const;
+template const HeadingGeometry& ArmFilter<kBase>::geometryAt(const JointVector& th) const;
 template void ArmFilter<kBase>::addHeadingCurvature(const JointVector& th, double headingVar,
                                                     const JointVector& hu, JointVector& var) const;
 template double ArmFilter<kBase>::headingShortfall(const Vec& u) const;
@@ -136,6 +167,7 @@ template void ArmFilter<kBase + 6>::prepareHeadingBlind();
 template bool ArmFilter<kBase + 6>::projectHeading(const Vec& x, const BlockList& b, Jac& jac);
 template auto ArmFilter<kBase + 6>::headingAngles(const Vec& x) const -> Vec;
 template const JointVector& ArmFilter<kBase + 6>::generatorAt(const JointVector& th) const;
+template const HeadingGeometry& ArmFilter<kBase + 6>::geometryAt(const JointVector& th) const;
 template void ArmFilter<kBase + 6>::addHeadingCurvature(const JointVector& th, double headingVar,
                                                         const JointVector& hu,
                                                         JointVector& var) const;

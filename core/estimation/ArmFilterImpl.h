@@ -20,11 +20,20 @@
 #include "core/camera/PinholeCamera.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/BlockUpdate.h"
+#include "core/estimation/Heading.h"
 #include "core/estimation/MeasurementBlocks.h"
 #include "core/estimation/SampleGate.h"
 #include "core/estimation/WindowFit.h"
 
 namespace armtrack::detail {
+
+// Whether every entry of m is finite, in SIMD packets: m - m is zero where an entry is finite and
+// NaN where it is not, so the sum of the differences is zero exactly when all are finite.
+// (Eigen's allFinite tests entry by entry with a branch each: 225 of them for P, every step.)
+template <typename Derived>
+bool allFiniteFast(const Eigen::MatrixBase<Derived>& m) {
+  return (m.array() - m.array()).sum() == 0.0;
+}
 
 template <int N>
 class ArmFilter final : public JointEstimator {
@@ -88,15 +97,16 @@ class ArmFilter final : public JointEstimator {
   bool measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const;
   bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p, Vec& dx);
   template <int M>
-  bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i, Mat& p,
-                   Vec& dx);
+  bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i,
+                   PaddedCovariance<N>& p, Vec& dx);
   template <int M, int K>
   bool updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
-                   const BlockList& b, int i, Mat& p, Vec& dx);
+                   const BlockList& b, int i, PaddedCovariance<N>& p, Vec& dx);
   bool ekfUpdate(const BlockList& b);
   void trackJerk();
   void finishUpdate();
   static void symmetrise(Mat& p);
+  static void mirrorLower(Mat& p);
 
   // ArmFilterOptical.cpp: the optical rows' gate and heading matching
   bool gateOptical(BlockList& b);
@@ -109,6 +119,7 @@ class ArmFilter final : public JointEstimator {
   bool projectHeading(const Vec& x, const BlockList& b, Jac& jac);
   Vec headingAngles(const Vec& x) const;
   const JointVector& generatorAt(const JointVector& th) const;
+  const HeadingGeometry& geometryAt(const JointVector& th) const;
   void addHeadingCurvature(const JointVector& th, double headingVar, const JointVector& hu,
                            JointVector& var) const;
   double headingShortfall(const Vec& u) const;
@@ -227,7 +238,7 @@ class ArmFilter final : public JointEstimator {
   } m_headingBlind;                   // prepareHeadingBlind() for the present update
   std::optional<Prediction> m_prior;  // priorPrediction() of the present sample
   std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry
-  mutable std::optional<std::pair<JointVector, JointVector>> m_generator;  // th, headingGenerator
+  mutable std::optional<std::pair<JointVector, HeadingGeometry>> m_geometry;  // th, its geometry
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.

@@ -192,7 +192,7 @@ void ArmFilter<N>::takeFit(const WindowFitResult& fit, const std::vector<ArmSamp
 // row, or a state no arm can be in, mean the filter has lost the arm.
 template <int N>
 bool ArmFilter<N>::lost() {
-  if (!m_x.allFinite() ||
+  if (!allFiniteFast(m_x) ||
       m_x.template segment<5>(5).cwiseAbs().maxCoeff() > m_p.plausibility.gyroRange)
     return true;
   if (m_t - m_t0 < m_p.startupSeconds) return false;

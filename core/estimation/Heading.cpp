@@ -82,11 +82,24 @@ Eigen::Matrix3d dampedInverse(const Eigen::Matrix3d& j) {
 // J_s h = up, where J_s's columns are the three shoulder axes in frame 0 (z0, z1, z2). The damping
 // only guards the gimbal lock; it is small enough that h stays the exact rotation elsewhere.
 JointVector headingGenerator(const JointVector& th, const Eigen::Vector3d& up) {
-  const Eigen::Matrix3d j = shoulderAxes(th);
-  const Eigen::Vector3d rate = j.transpose() * (dampedInverse(j) * up);
-  JointVector d = JointVector::Zero();
-  d.head<3>() = rate;
-  return d;
+  return headingGeometry(th, up).generator;
+}
+
+HeadingGeometry headingGeometry(const JointVector& th, const Eigen::Vector3d& up) {
+  const ShoulderTrig t(th);
+  HeadingGeometry g;
+  g.c0 = t.c0, g.s0 = t.s0, g.c1 = t.c1, g.s1 = t.s1;
+  g.axes = shoulderAxes(t);
+  g.normalInverse = dampedInverse(g.axes);
+  g.generator.setZero();
+  g.generator.head<3>() = g.axes.transpose() * (g.normalInverse * up);
+  return g;
+}
+
+JointVector headingCovector(const HeadingGeometry& g, const Eigen::Vector3d& up) {
+  JointVector w = JointVector::Zero();
+  w.head<3>() = g.axes.transpose() * up;
+  return w;
 }
 
 JointVector headingCovector(const JointVector& th, const Eigen::Vector3d& up) {
@@ -103,22 +116,22 @@ JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
 
 Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
                                              const Eigen::Vector3d& up) {
-  return headingSymmetry(x, up, headingGenerator(x.segment<5>(10), up));
+  return headingSymmetry(x, up, headingGeometry(x.segment<5>(10), up));
 }
 
 Eigen::Matrix<double, 15, 1> headingSymmetry(const Eigen::Matrix<double, 15, 1>& x,
-                                             const Eigen::Vector3d& up, const JointVector& h) {
+                                             const Eigen::Vector3d& up, const HeadingGeometry& g) {
   // Turning a whole motion th(t) about the vertical maps it to phi(th(t)); differentiating with
   // respect to the turn angle gives th -> h, th' -> Dh th', th'' -> Dh th'' + D2h[th', th'].
   // h = J^T y with A y = up, A = J J^T + eps I (dampedInverse), and J depends on th0 and th1 only;
   // differentiating A y = up along a direction d gives y' = -A^-1 A' y and
   // y'' = -A^-1 (A'' y + 2 A' y'), so h' = J'^T y + J^T y' and
   // h'' = J''^T y + 2 J'^T y' + J^T y'': exact derivatives, with A inverted once.
-  const JointVector th = x.segment<5>(10), thd = x.segment<5>(5), thdd = x.segment<5>(0);
-  const ShoulderTrig t(th);
-  const double c0 = t.c0, s0 = t.s0, c1 = t.c1, s1 = t.s1;
-  const Eigen::Matrix3d j = shoulderAxes(t);
-  const Eigen::Matrix3d aInv = dampedInverse(j);
+  const JointVector thd = x.segment<5>(5), thdd = x.segment<5>(0);
+  const JointVector& h = g.generator;
+  const double c0 = g.c0, s0 = g.s0, c1 = g.c1, s1 = g.s1;
+  const Eigen::Matrix3d& j = g.axes;
+  const Eigen::Matrix3d& aInv = g.normalInverse;
   const Eigen::Vector3d y = aInv * up;
   // Along d: J' (z0 is constant, z1 turns with th0, z2 with th0 and th1), A', y' and h'.
   struct First {
