@@ -133,8 +133,11 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   }
 
   if (m_p.model != m_model && s.t - m_t0 >= m_p.startupSeconds) handOver();
+  // Only the optical gate can refuse a sample after the prediction (an IMU block always passes
+  // it), so P before the prediction is kept for samples with optical data alone.
   const Vec xPrior = m_x;
-  const Mat pPrior = m_P;
+  Mat pPrior;
+  if (hasOptical) pPrior = m_P;
   const double tPrior = m_t, floorPrior = m_headingFloor;
   predict(s.t - m_t);
   m_t = s.t;
@@ -148,7 +151,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   const bool gated = gateOptical(blocks);
   if (!gated || blocks.count == 0) {
     // Nothing left to fuse (e.g. a single mis-detected marker), or the gate could not be
-    // evaluated: the sample changes nothing.
+    // evaluated: the sample changes nothing. (Only a sample with optical data gets here.)
     if (!gated) ++m_counters.skippedUpdates;
     m_x = xPrior;
     m_P = pPrior;
