@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <random>
 
+#include "core/estimation/ArmFilterImpl.h"  // allFiniteFast
 #include "core/estimation/BlockUpdate.h"
 
 namespace armtrack {
@@ -184,8 +186,84 @@ TEST(BlockUpdateKernels, FmaAndPlainKernelsAgreeToRoundOff) {
     EXPECT_LT((p[1] - p[0]).cwiseAbs().maxCoeff(), 1e-14 * p0.cwiseAbs().maxCoeff());
     EXPECT_LT((dx[1] - dx[0]).cwiseAbs().maxCoeff(), 1e-14 * (1.0 + dx[0].cwiseAbs().maxCoeff()));
     EXPECT_NEAR(nis[1], nis[0], 1e-13 * (1.0 + nis[0]));
-    // 3-row blocks over 15 columns: the tail columns (12-14) go through the scalar fused steps.
+    // Fused multiply-adds round once: the kernels differ in the last bits, not in the order.
     EXPECT_NE(p[1], p[0]);
+  }
+}
+
+// A run of blocks on P padded once (as ArmFilter::sequentialUpdate does) gives exactly what
+// fusing each block into the unpadded P does, whatever the state size; the padding rows stay
+// exactly zero throughout, so nothing of them can reach P.
+template <int S>
+void checkPaddedRun(std::mt19937_64& rng) {
+  using MatS = Eigen::Matrix<double, S, S>;
+  using VecS = Eigen::Matrix<double, S, 1>;
+  std::normal_distribution<double> g;
+  MatS a;
+  for (int i = 0; i < S; ++i)
+    for (int j = 0; j < S; ++j) a(i, j) = g(rng);
+  MatS p0 = a * a.transpose() / S + 0.1 * MatS::Identity();
+  p0 = (0.5 * (p0 + p0.transpose())).eval();  // exactly symmetric, as the filter's P
+  VecS u = VecS::Zero(), v = VecS::Zero();
+  u.template segment<5>(10) = randomMatrix<5, 1>(rng).normalized();
+  v.template head<15>() = randomMatrix<15, 1>(rng);
+  v += (1.0 - u.dot(v)) * u;
+  const BlindDirection<S> blind{v, u};
+  const Vec3 variance(0.02, 0.3, 0.7);
+
+  PaddedCovariance<S> padded(p0);
+  MatS p = p0;
+  VecS dxPadded = VecS::Zero(), dx = VecS::Zero();
+  for (int block = 0; block < 4; ++block) {
+    const Vec3 z = randomMatrix<3, 1>(rng);
+    double nisPadded = 0.0, nis = 0.0;
+    if (block < 3) {  // IMU-like rows over every column, two of them heading-blind
+      const Eigen::Matrix<double, 3, S> h = randomMatrix<3, S>(rng);
+      const BlindDirection<S>* b = block == 1 ? nullptr : &blind;
+      ASSERT_TRUE((fuseBlock<3, S, S>(h, 0, z, variance, b, padded, dxPadded, nisPadded)));
+      ASSERT_TRUE((fuseBlock<3, S, S>(h, 0, z, variance, b, p, dx, nis)));
+    } else {  // an optical block on the five angle columns
+      const Eigen::Matrix<double, 3, 5> h = randomMatrix<3, 5>(rng);
+      ASSERT_TRUE((fuseBlock<3, 5, S>(h, 10, z, variance, nullptr, padded, dxPadded, nisPadded)));
+      ASSERT_TRUE((fuseBlock<3, 5, S>(h, 10, z, variance, nullptr, p, dx, nis)));
+    }
+    EXPECT_EQ(nisPadded, nis);
+    constexpr int kPad = PaddedCovariance<S>::kRows - S;
+    EXPECT_TRUE((padded.m.template bottomRows<kPad>().array() == 0.0).all());
+  }
+  MatS out;
+  padded.store(out);
+  EXPECT_EQ(out, p);
+  EXPECT_EQ(dxPadded, dx);
+  EXPECT_EQ(out, out.transpose());
+}
+
+TEST_P(BlockUpdate, PaddedRunEqualsBlockByBlockAndKeepsThePaddingZero) {
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 10; ++trial) {
+    checkPaddedRun<15>(rng);  // Method A and C: 16 rows
+    checkPaddedRun<21>(rng);  // Method B: 24 rows
+  }
+}
+
+// ArmFilter's finiteness check of x and P: every entry finite, however large; one NaN or
+// infinity anywhere makes it false.
+TEST(AllFiniteFast, AnyNonFiniteEntryAnywhereIsFound) {
+  Mat p = Mat::Constant(1e308);  // finite, and their sum would overflow
+  p(3, 3) = -1e308;
+  EXPECT_TRUE(detail::allFiniteFast(p));
+  EXPECT_TRUE(detail::allFiniteFast(Mat::Zero()));
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity(),
+                           -std::numeric_limits<double>::infinity()}) {
+    for (const int at : {0, 7, 112, 224}) {
+      Mat q = p;
+      q(at % N, at / N) = bad;
+      EXPECT_FALSE(detail::allFiniteFast(q)) << bad << " at " << at;
+    }
+    Vec x = Vec::Ones();
+    x(14) = bad;
+    EXPECT_FALSE(detail::allFiniteFast(x)) << bad;
   }
 }
 

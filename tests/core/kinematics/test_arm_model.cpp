@@ -2,6 +2,8 @@
 // numerical differentiation of the forward kinematics.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <random>
 
 #include "core/kinematics/ArmModel.h"
@@ -202,6 +204,13 @@ TEST(ArmModel, WrapAngle) {
   EXPECT_NEAR(wrapAngle(-kPi), kPi, 1e-12);
   EXPECT_NEAR(wrapAngle(0.5 + 4 * kPi), 0.5, 1e-12);
   EXPECT_NEAR(wrapAngle(-0.5 - 2 * kPi), -0.5, 1e-12);
+  // An angle already in (-pi, pi] comes back as it is, to the bit.
+  for (const double a : {0.0, -0.0, 1e-300, -3.0, 3.14159, kPi, std::nextafter(-kPi, 0.0)})
+    EXPECT_EQ(wrapAngle(a), a) << a;
+  EXPECT_EQ(wrapAngle(-kPi), kPi);
+  const double justOver = wrapAngle(std::nextafter(kPi, 4.0));  // -pi + ulp or, rounded, pi
+  EXPECT_TRUE(justOver > -kPi && justOver <= kPi) << justOver;
+  EXPECT_NEAR(std::abs(justOver), kPi, 1e-12);
 }
 
 }  // namespace
