@@ -72,6 +72,13 @@ Eigen::Vector3d shoulderAnglesNear(const Eigen::Matrix3d& r, const Eigen::Vector
   return best;
 }
 
+// up . (J_s dth) as a row over the five angles: J_s^T up in the shoulder's entries.
+JointVector covectorOf(const Eigen::Matrix3d& axes, const Eigen::Vector3d& up) {
+  JointVector w = JointVector::Zero();
+  w.head<3>() = axes.transpose() * up;
+  return w;
+}
+
 // (J J^T + eps I)^-1, the damped least-squares normal matrix's inverse, by cofactors (Eigen's
 // 3x3 inverse): a sixth of an LDLT factorisation and its solve, and as accurate here.
 Eigen::Matrix3d dampedInverse(const Eigen::Matrix3d& j) {
@@ -97,15 +104,11 @@ HeadingGeometry headingGeometry(const JointVector& th, const Eigen::Vector3d& up
 }
 
 JointVector headingCovector(const HeadingGeometry& g, const Eigen::Vector3d& up) {
-  JointVector w = JointVector::Zero();
-  w.head<3>() = g.axes.transpose() * up;
-  return w;
+  return covectorOf(g.axes, up);
 }
 
 JointVector headingCovector(const JointVector& th, const Eigen::Vector3d& up) {
-  JointVector w = JointVector::Zero();
-  w.head<3>() = shoulderAxes(th).transpose() * up;
-  return w;
+  return covectorOf(shoulderAxes(th), up);
 }
 
 JointVector headingDirection(const JointVector& th, const Eigen::Vector3d& up) {
