@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/storage/AuditLog.h"
 #include "core/storage/PasswordHash.h"
 
 namespace armtrack::storage {
@@ -135,10 +136,7 @@ void ClinicalStore::initialise(const QString& adminName, const std::string& pass
   m_db.transaction([&] {
     m_db.insert("INSERT INTO users (name, role, password_hash, created_at) VALUES (?, ?, ?, ?)",
                 {adminName, "admin", hash, utcNow()});
-    m_db.exec(
-        "INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
-        "VALUES (?, ?, 'create', 'database', ?)",
-        {utcNow(), adminName, m_db.url().display()});
+    appendAudit(m_db, {adminName, "create", "database", m_db.url().display(), {}});
   });
 }
 
@@ -169,10 +167,7 @@ const User& ClinicalStore::signIn(const QString& name, const std::string& passwo
         "UPDATE users SET failed_attempts = failed_attempts + 1, last_failed_at = ? "
         "WHERE id = ?",
         {utcNow(), u.id});
-    m_db.exec(
-        "INSERT INTO audit_log (at, user_name, action, object_type, object_id) "
-        "VALUES (?, ?, 'sign-in-failed', 'user', ?)",
-        {utcNow(), name, name});
+    appendAudit(m_db, {name, "sign-in-failed", "user", name, {}});
     throw StorageError(Kind::Authentication, refused);
   }
   if (u.failedAttempts != 0) {
@@ -390,10 +385,7 @@ std::vector<AuditEntry> ClinicalStore::auditLog() {
 
 void ClinicalStore::audit(const QString& action, const QString& objectType, const QString& objectId,
                           const QString& detail) {
-  m_db.exec(
-      "INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
-      "VALUES (?, ?, ?, ?, ?, ?)",
-      {utcNow(), user().name, action, objectType, objectId, detail});
+  appendAudit(m_db, {user().name, action, objectType, objectId, detail});
 }
 
 }  // namespace armtrack::storage

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <limits>
 
+#include "core/storage/AuditLog.h"
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
 #include "core/storage/RecordingChunks.h"
@@ -92,10 +93,8 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
   for (qint64 id : dead) {
     m_db.transaction([&] {
       m_db.exec("UPDATE sessions SET status = 'interrupted' WHERE id = ?", {id});
-      m_db.exec(
-          "INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
-          "VALUES (?, 'system', 'update', 'session', ?, 'recorder died: interrupted')",
-          {utcNow(), QString::number(id)});
+      appendAudit(m_db, {"system", "update", "session", QString::number(id),
+                         "recorder died: interrupted"});
     });
   }
   return static_cast<int>(dead.size());
@@ -203,7 +202,8 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
       "SELECT s.id, s.patient_id, p.code, s.therapist_id, pr.name, s.started_at, s.duration_s, "
       "s.devices_json, s.calibration_json, s.filter_json, s.notes, s.status, s.columns_mask, "
       "s.sample_rows, s.imu_samples, s.setting, s.pain_score, s.patient_comment, "
-      "s.home_summary_json FROM sessions s JOIN patients p ON p.id = s.patient_id "
+      "s.home_summary_json, s.origin, s.analysis, s.analysis_note FROM sessions s "
+      "JOIN patients p ON p.id = s.patient_id "
       "LEFT JOIN protocols pr ON pr.id = s.protocol_id WHERE s.id = ?",
       {sessionId});
   const bool found = q.next();
@@ -230,6 +230,9 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
   if (!q.value(16).isNull()) s.painScore = q.value(16).toInt();
   s.patientComment = q.value(17).toString();
   s.homeSummaryJson = q.value(18).toString();
+  s.origin = q.value(19).toString();
+  s.analysis = q.value(20).toString();
+  s.analysisNote = q.value(21).toString();
   q.finish();
   QSqlQuery c = m_db.exec(
       "SELECT count(*), coalesce(sum(length(data)), 0) FROM recording_chunks "

@@ -284,6 +284,7 @@ void Database::applyStep(const MigrationStep& step) {
     }
     applied = true;
     for (const QString& s : step.statements) exec(m_dialect.expand(s));
+    if (step.hook) step.hook(*this);
     for (const QString& s : m_dialect.afterStep(step.toVersion)) exec(s);
     exec("DELETE FROM schema_version");
     exec("INSERT INTO schema_version (version) VALUES (?)", {step.toVersion});
@@ -427,7 +428,9 @@ void Database::transaction(const std::function<void()>& body) {
     // the same time did. BEGIN IMMEDIATE waits for the lock (the busy timeout) instead.
     exec("BEGIN IMMEDIATE");
   }
+  m_inTransaction = true;
   const auto rollback = [&] {
+    m_inTransaction = false;
     if (isPostgres())
       m_db.rollback();
     else
@@ -439,6 +442,7 @@ void Database::transaction(const std::function<void()>& body) {
     rollback();
     throw;
   }
+  m_inTransaction = false;
   QSqlQuery commit(m_db);
   const bool committed = isPostgres() ? m_db.commit() : commit.exec("COMMIT");
   if (!committed) {

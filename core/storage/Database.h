@@ -62,7 +62,10 @@ class Database {
   /// RETURNING id).
   qint64 insert(const QString& sql, const QVariantList& binds);
   /// Runs body in a transaction: committed when body returns, rolled back when it throws.
+  /// Not nested: body must not call transaction() again (inTransaction() tells).
   void transaction(const std::function<void()>& body);
+  /// Whether a transaction() body is running on this connection.
+  bool inTransaction() const { return m_inTransaction; }
 
  private:
   QString inlineValues(const QString& sql, const QVariantList& binds);
@@ -80,6 +83,7 @@ class Database {
   QSqlDatabase m_db;
   int m_version = 0;
   int m_applied = 0;
+  bool m_inTransaction = false;
   /// SQLite: counts this connection among the process's connections to its file while it is
   /// open (Database.cpp says why).
   std::shared_ptr<void> m_fileHold;

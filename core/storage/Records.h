@@ -77,6 +77,20 @@ inline constexpr const char* kStatusRecording = "recording";
 inline constexpr const char* kStatusComplete = "complete";
 inline constexpr const char* kStatusInterrupted = "interrupted";
 
+/// Where a session's rows came from: a live recording, or an imported file (an import that does
+/// not finish is removed whole; a live recording that does not finish stays, interrupted).
+inline constexpr const char* kOriginLive = "live";
+inline constexpr const char* kOriginImport = "import";
+
+/// Whether a session's analysis (estimates and metrics) is done: "pending" until it is (a
+/// complete session's pending analysis is run by the next command or start of the app),
+/// "failed" when the recording cannot be analysed (analysisNote says why), "none" for an
+/// interrupted recording, which is analysed only when asked.
+inline constexpr const char* kAnalysisPending = "pending";
+inline constexpr const char* kAnalysisDone = "done";
+inline constexpr const char* kAnalysisFailed = "failed";
+inline constexpr const char* kAnalysisNone = "none";
+
 /// How a session was made, stored beside it (docs/storage.md, "Sessions"); each a JSON object.
 struct SessionSettings {
   QString devicesJson = "{}";  ///< the devices: plugin, options and streams, by device label
@@ -105,6 +119,9 @@ struct SessionInfo {
   std::optional<int> painScore;      ///< 0-10, the patient's own, home sessions
   QString patientComment;            ///< the patient's own words, home sessions
   QString homeSummaryJson = "{}";    ///< what the home window counted (docs/storage.md)
+  QString origin = kOriginLive;      ///< kOriginLive or kOriginImport
+  QString analysis = kAnalysisPending;  ///< kAnalysisPending, kAnalysisDone, ...
+  QString analysisNote;                 ///< why an analysis failed
 };
 
 /// One stored version of a session's estimates (docs/storage.md, "Estimates").

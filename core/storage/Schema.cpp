@@ -17,10 +17,13 @@ QString SqlDialect::expand(QString text) const {
 }
 
 QStringList SqlDialect::afterStep(int toVersion) const {
-  if (engine != DatabaseUrl::Engine::Postgres || toVersion != 1) return {};
+  if (engine != DatabaseUrl::Engine::Postgres) return {};
   // zstd frames do not shrink under pglz: skip the attempt (EXTERNAL: out of line, uncompressed).
-  return {"ALTER TABLE recording_chunks ALTER COLUMN data SET STORAGE EXTERNAL",
-          "ALTER TABLE estimates ALTER COLUMN data SET STORAGE EXTERNAL"};
+  if (toVersion == 1)
+    return {"ALTER TABLE recording_chunks ALTER COLUMN data SET STORAGE EXTERNAL",
+            "ALTER TABLE estimates ALTER COLUMN data SET STORAGE EXTERNAL"};
+  if (toVersion == 6) return {"ALTER TABLE estimate_chunks ALTER COLUMN data SET STORAGE EXTERNAL"};
+  return {};
 }
 
 // Times are ISO 8601 UTC text ("2026-11-25T07:05:33.123Z"), which sorts as time and reads the
@@ -112,13 +115,15 @@ const std::vector<MigrationStep>& migrationSteps() {
            " object_type TEXT NOT NULL,"
            " object_id TEXT NOT NULL,"
            " detail TEXT NOT NULL DEFAULT '')",
-       }},
+       },
+       {}},
       {2,
        "sign-in throttling: count of consecutive wrong passwords and the time of the last",
        {
            "ALTER TABLE users ADD COLUMN failed_attempts INTEGER NOT NULL DEFAULT 0",
            "ALTER TABLE users ADD COLUMN last_failed_at TEXT",
-       }},
+       },
+       {}},
       {3,
        "home programmes: the protocols a patient is to practise, and how often",
        {
@@ -130,7 +135,8 @@ const std::vector<MigrationStep>& migrationSteps() {
            " notes TEXT NOT NULL DEFAULT '',"
            " created_at TEXT NOT NULL,"
            " UNIQUE (patient_id, protocol_id))",
-       }},
+       },
+       {}},
       {4,
        "home exercises: each programme entry's order, sets, repetitions, target range and rest; "
        "sessions marked clinic or home, with the patient's pain score, comment and summary",
@@ -152,12 +158,41 @@ const std::vector<MigrationStep>& migrationSteps() {
            "CHECK (pain_score >= 0 AND pain_score <= 10)",
            "ALTER TABLE sessions ADD COLUMN patient_comment TEXT NOT NULL DEFAULT ''",
            "ALTER TABLE sessions ADD COLUMN home_summary_json TEXT NOT NULL DEFAULT '{}'",
-       }},
+       },
+       {}},
       // No table changes. Recordings written from here on may hold atc3-zstd chunks, which a
       // build before this version cannot decode; with the version raised, such a build refuses
       // the whole database as newer than it knows (a clinic's PostgreSQL shared by mixed
       // installs) instead of calling those sessions corrupt.
-      {5, "recording chunks may use the atc3-zstd codec (lattice columns)", {}},
+      {5, "recording chunks may use the atc3-zstd codec (lattice columns)", {}, {}},
+      {6,
+       "records that cannot be lost or forged: imports that store a whole session or nothing, "
+       "an analysis state per session, estimates stored in chunks",
+       {
+           // Sessions: where the rows came from (an import that dies is removed, a live
+           // recording that dies is kept as interrupted) and whether the analysis is done.
+           "ALTER TABLE sessions ADD COLUMN origin TEXT NOT NULL DEFAULT 'live' "
+           "CHECK (origin IN ('live', 'import'))",
+           "ALTER TABLE sessions ADD COLUMN analysis TEXT NOT NULL DEFAULT 'pending' "
+           "CHECK (analysis IN ('pending', 'done', 'failed', 'none'))",
+           "ALTER TABLE sessions ADD COLUMN analysis_note TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE sessions ADD COLUMN analysis_host TEXT",
+           "ALTER TABLE sessions ADD COLUMN analysis_pid BIGINT",
+           "UPDATE sessions SET analysis = 'done' WHERE EXISTS (SELECT 1 FROM metrics m WHERE "
+           "m.session_id = sessions.id)",
+           "UPDATE sessions SET analysis = 'none' WHERE analysis = 'pending' AND status = "
+           "'interrupted'",
+           // Estimates: a version is written chunk by chunk and counts once complete.
+           "ALTER TABLE estimates ADD COLUMN complete INTEGER NOT NULL DEFAULT 1 "
+           "CHECK (complete IN (0, 1))",
+           "CREATE TABLE estimate_chunks ("
+           " estimate_id BIGINT NOT NULL REFERENCES estimates (id) ON DELETE CASCADE,"
+           " seq INTEGER NOT NULL,"
+           " row_count INTEGER NOT NULL,"
+           " data {blob} NOT NULL,"
+           " PRIMARY KEY (estimate_id, seq))",
+       },
+       {}},
   };
   return steps;
 }

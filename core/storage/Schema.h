@@ -3,11 +3,14 @@
 
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <vector>
 
 #include "core/storage/DatabaseUrl.h"
 
 namespace armtrack::storage {
+
+class Database;
 
 /// Where SQLite and PostgreSQL spell things differently. Everything else in the DDL and in the
 /// service's queries is SQL both accept.
@@ -28,6 +31,9 @@ struct MigrationStep {
   int toVersion;
   QString description;
   QStringList statements;  ///< with {id} and {blob} placeholders (SqlDialect::expand)
+  /// Work SQL alone cannot do (hashes, Unicode case folding, engine-specific triggers), run after
+  /// the statements in the same transaction; may be empty.
+  std::function<void(Database&)> hook;
 };
 
 /// Every step, in order; step i takes the schema from version i to i + 1.
