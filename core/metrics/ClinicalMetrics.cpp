@@ -18,16 +18,13 @@ SmoothnessValue medianOf(const std::vector<SmoothnessValue>& values) {
   return {median, SmoothnessStatus::Ok};
 }
 
-/// The part of a uniformly sampled velocity between two times (s).
-PathSmoothness smoothnessBetween(const UniformVelocity& v, double fromS, double toS,
+/// The smoothness of the path between two times (s), from the velocity on the path's grid
+/// there: only that part is computed.
+PathSmoothness smoothnessBetween(const std::vector<double>& t, const Eigen::MatrixXd& path,
+                                 const UniformVelocity& grid, double fromS, double toS,
                                  const PathSmoothnessParams& params) {
-  const Eigen::Index rows = v.velocity.rows();
-  const auto first = std::clamp<Eigen::Index>(
-      static_cast<Eigen::Index>(std::ceil((fromS - v.t0) * v.sampleRateHz - 1e-9)), 0, rows);
-  const auto last = std::clamp<Eigen::Index>(
-      static_cast<Eigen::Index>(std::floor((toS - v.t0) * v.sampleRateHz + 1e-9)), -1, rows - 1);
-  const Eigen::Index count = std::max<Eigen::Index>(last - first + 1, 0);
-  return velocitySmoothness(v.velocity.middleRows(first, count), v.sampleRateHz, params);
+  const UniformVelocity v = uniformVelocityBetween(t, path, params, grid, fromS, toS);
+  return velocitySmoothness(v.velocity, v.sampleRateHz, params);
 }
 
 }  // namespace
@@ -55,24 +52,36 @@ SessionMetrics computeSessionMetrics(const AngleSeries& series,
         rows[i][a] = s.angle(static_cast<Eigen::Index>(i), a);
     path = wristPath(rows, *params.geometry);
   }  // the rows are freed before the velocity is resampled: 40 bytes a sample less at the peak
-  const UniformVelocity velocity = uniformVelocity(s.t, path, params.smoothness);
+  // The velocity is computed only where it is used, on one grid for the whole session: its
+  // memory and time grow with the movements' length, not with the session's span (a day-long
+  // gap holds no grid rows).
+  const UniformVelocity grid = uniformGrid(s.t, params.smoothness);
 
   std::vector<SmoothnessValue> sparcs, ldljs;
   for (const Repetition& r : out.repetitions.repetitions) {
-    const PathSmoothness p = smoothnessBetween(velocity, r.startS, r.endS, params.smoothness);
+    const PathSmoothness p = smoothnessBetween(s.t, path, grid, r.startS, r.endS, params.smoothness);
     out.repetitionSmoothness.push_back({p.sparc, p.ldlj});
     sparcs.push_back(p.sparc);
     ldljs.push_back(p.ldlj);
   }
   if (out.repetitions.repetitions.empty()) {
-    const PathSmoothness p =
-        smoothnessBetween(velocity, s.t.front(), s.t.back(), params.smoothness);
-    out.sparc = p.sparc;
-    out.ldlj = p.ldlj;
-  } else {
-    out.sparc = medianOf(sparcs);
-    out.ldlj = medianOf(ldljs);
+    // No repetition: each gap-free stretch of the path, in pieces of at most
+    // kMaxSmoothnessPieceS, and the median of their values (docs/metrics.md).
+    for (const Segment& g : s.segments) {
+      const double from = s.t[g.begin], to = s.t[g.end - 1];
+      const int pieces = std::max(1, static_cast<int>(std::ceil((to - from) / kMaxSmoothnessPieceS)));
+      const double length = (to - from) / pieces;
+      for (int k = 0; k < pieces; ++k) {
+        const PathSmoothness p = smoothnessBetween(s.t, path, grid, from + k * length,
+                                                   k + 1 == pieces ? to : from + (k + 1) * length,
+                                                   params.smoothness);
+        sparcs.push_back(p.sparc);
+        ldljs.push_back(p.ldlj);
+      }
+    }
   }
+  out.sparc = medianOf(sparcs);
+  out.ldlj = medianOf(ldljs);
   return out;
 }
 

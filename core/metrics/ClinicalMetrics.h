@@ -20,6 +20,11 @@ inline PathSmoothnessParams clinicalPathSmoothness() {
   return p;
 }
 
+/// A session without repetitions has its smoothness taken over pieces of its path no longer
+/// than this (s), and the median of theirs: SPARC and LDLJ are defined for movements, and a
+/// spectrum of a whole hour would take hundreds of megabytes for a number with no meaning.
+inline constexpr double kMaxSmoothnessPieceS = 600.0;
+
 struct ClinicalMetricsParams {
   MotionParams motion;
   RepetitionParams repetitions;

@@ -104,9 +104,11 @@ SmoothnessValue ldljFromSpeed(const std::vector<double>& speed, double fs) {
   return ldljFromVelocity(v, fs);
 }
 
-UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::MatrixXd& positions,
-                                const PathSmoothnessParams& params) {
-  if (static_cast<Eigen::Index>(t.size()) != positions.rows()) {
+namespace {
+
+void checkPath(const std::vector<double>& t, Eigen::Index rows,
+               const PathSmoothnessParams& params) {
+  if (static_cast<Eigen::Index>(t.size()) != rows) {
     throw std::invalid_argument("path smoothness: times and positions differ in length");
   }
   for (std::size_t i = 0; i < t.size(); ++i) {
@@ -123,6 +125,10 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
     throw std::invalid_argument(
         "path smoothness: window > 0, order 1-3, samples per fit 0 or >= 4, resample rate >= 0");
   }
+}
+
+// The grid's rate and start, without checks.
+UniformVelocity gridOf(const std::vector<double>& t, const PathSmoothnessParams& params) {
   UniformVelocity out;
   if (t.size() < 2) return out;
   std::vector<double> steps(t.size() - 1);
@@ -141,17 +147,21 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
   }
   out.sampleRateHz = params.resampleHz > 0 ? params.resampleHz : static_cast<double>(count) / sum;
   out.t0 = t.front();
+  return out;
+}
+
+// Grid rows [first, first + count) of the velocity.
+Eigen::MatrixXd velocityRows(const std::vector<double>& t, const Eigen::MatrixXd& positions,
+                             const PathSmoothnessParams& params, const UniformVelocity& grid,
+                             Eigen::Index first, Eigen::Index count) {
   // The local fit evaluated at each uniform time directly (no interpolation of a rate): the
   // velocity stays smooth enough for the second differences of the jerk.
   const double h = params.smoothing.halfWindowSeconds;
-  const auto m =
-      static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * out.sampleRateHz + 1e-9)) + 1;
-  out.velocity = Eigen::MatrixXd::Zero(m, positions.cols());
+  Eigen::MatrixXd velocity = Eigen::MatrixXd::Zero(count, positions.cols());
   LocalFit fit;
-  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows = positions;
   Eigen::RowVectorXd rate(positions.cols());
-  for (Eigen::Index k = 0; k < m; ++k) {
-    const double tq = out.t0 + static_cast<double>(k) / out.sampleRateHz;
+  for (Eigen::Index r = 0; r < count; ++r) {
+    const double tq = grid.t0 + static_cast<double>(first + r) / grid.sampleRateHz;
     const auto lo =
         static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), tq - h) - t.begin());
     const auto hi =
@@ -161,9 +171,48 @@ UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::Matri
                     params.smoothing.maxSamplesPerFit, fit);
     rate.setZero();
     for (std::size_t q = 0; q < fit.index.size(); ++q)
-      rate.noalias() += fit.rateWeight[q] * rows.row(static_cast<Eigen::Index>(fit.index[q]));
-    out.velocity.row(k) = rate;
+      rate.noalias() += fit.rateWeight[q] * positions.row(static_cast<Eigen::Index>(fit.index[q]));
+    velocity.row(r) = rate;
   }
+  return velocity;
+}
+
+}  // namespace
+
+UniformVelocity uniformGrid(const std::vector<double>& t, const PathSmoothnessParams& params) {
+  checkPath(t, static_cast<Eigen::Index>(t.size()), params);
+  return gridOf(t, params);
+}
+
+UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::MatrixXd& positions,
+                                const PathSmoothnessParams& params) {
+  checkPath(t, positions.rows(), params);
+  UniformVelocity out = gridOf(t, params);
+  if (t.size() < 2) return out;
+  const auto m =
+      static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * out.sampleRateHz + 1e-9)) + 1;
+  out.velocity = velocityRows(t, positions, params, out, 0, m);
+  return out;
+}
+
+UniformVelocity uniformVelocityBetween(const std::vector<double>& t,
+                                       const Eigen::MatrixXd& positions,
+                                       const PathSmoothnessParams& params,
+                                       const UniformVelocity& grid, double fromS, double toS) {
+  UniformVelocity out;
+  out.sampleRateHz = grid.sampleRateHz;
+  if (t.size() < 2 || !(grid.sampleRateHz > 0) || static_cast<Eigen::Index>(t.size()) != positions.rows())
+    return out;
+  const auto rows =
+      static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * grid.sampleRateHz + 1e-9)) + 1;
+  const auto first = std::clamp<Eigen::Index>(
+      static_cast<Eigen::Index>(std::ceil((fromS - grid.t0) * grid.sampleRateHz - 1e-9)), 0, rows);
+  const auto last = std::clamp<Eigen::Index>(
+      static_cast<Eigen::Index>(std::floor((toS - grid.t0) * grid.sampleRateHz + 1e-9)), -1,
+      rows - 1);
+  const Eigen::Index count = std::max<Eigen::Index>(last - first + 1, 0);
+  out.t0 = grid.t0 + static_cast<double>(first) / grid.sampleRateHz;
+  out.velocity = velocityRows(t, positions, params, grid, first, count);
   return out;
 }
 

@@ -91,6 +91,18 @@ struct UniformVelocity {
 UniformVelocity uniformVelocity(const std::vector<double>& t, const Eigen::MatrixXd& positions,
                                 const PathSmoothnessParams& params = {});
 
+/// The grid uniformVelocity() evaluates on (t0 and the rate), without the velocity. Checks and
+/// throws as uniformVelocity(); rate 0 for fewer than two times.
+UniformVelocity uniformGrid(const std::vector<double>& t, const PathSmoothnessParams& params = {});
+/// The rows of uniformVelocity() whose grid times lie in [fromS, toS] (grid from uniformGrid()):
+/// the same numbers, but only the part asked for is computed and held, so a long session, or
+/// one with a long gap, costs no more than the movements it holds. Returns a UniformVelocity
+/// whose t0 is the first grid time in the interval.
+UniformVelocity uniformVelocityBetween(const std::vector<double>& t,
+                                       const Eigen::MatrixXd& positions,
+                                       const PathSmoothnessParams& params,
+                                       const UniformVelocity& grid, double fromS, double toS);
+
 /// SPARC (of the speed) and LDLJ (jerk-vector form) of a uniformly sampled velocity.
 PathSmoothness velocitySmoothness(const Eigen::MatrixXd& velocity, double sampleRateHz,
                                   const PathSmoothnessParams& params = {});

@@ -2,10 +2,16 @@
 // (minimum-jerk moves between key postures, core/simulation), with noise, jittered time stamps,
 // pauses, a gap, NaN rows and a partial repetition.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
+#include <fstream>
+#include <functional>
 #include <limits>
 #include <random>
+#include <string>
 
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/metrics/ClinicalMetrics.h"
@@ -424,4 +430,72 @@ TEST(NormativeRanges, ClinicalAngleInfoCarriesTheCitedRanges) {
 }
 
 }  // namespace
+
+namespace {
+
+/// Runs fn in a child process whose address space may grow by at most extraBytes beyond the
+/// parent's; true when fn returned normally (false on std::bad_alloc, any exception, or a crash).
+bool runsWithinMemory(std::size_t extraBytes, const std::function<void()>& fn) {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  std::size_t vmKb = 0;
+  while (std::getline(status, line))
+    if (line.rfind("VmSize:", 0) == 0) vmKb = std::stoul(line.substr(7));
+  const pid_t child = ::fork();
+  if (child == 0) {
+    const rlimit limit{vmKb * 1024 + extraBytes, vmKb * 1024 + extraBytes};
+    ::setrlimit(RLIMIT_AS, &limit);
+    try {
+      fn();
+    } catch (...) {
+      ::_exit(1);
+    }
+    ::_exit(0);
+  }
+  int result = 0;
+  ::waitpid(child, &result, 0);
+  return WIFEXITED(result) && WEXITSTATUS(result) == 0;
+}
+
+}  // namespace
+
+// A clock that jumps by a day between two stretches of an exercise: the metrics cost what the
+// movements cost, not what the time between them would. Before, the wrist velocity was resampled
+// over the whole span (8.6 million rows for a day at 100 Hz) and, with no repetition, one spectrum
+// taken of all of it: gigabytes, and a SPARC of -16,961.
+TEST(SessionMetricsHostile, ADayLongGapCostsNoMemory) {
+  const Exercise e = makeExercise({100, 100});
+  AngleSeries measured, truth;
+  Sampling s;
+  s.gapAndNans = false;
+  sampleExercise(e, s, measured, truth);
+  AngleSeries jumped = measured;
+  const std::size_t n = measured.t.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    jumped.t.push_back(measured.t[i] + 86400.0 + measured.t.back());
+    jumped.angle.push_back(measured.angle[i]);
+  }
+  // Each stretch alone, and both: the day between them changes nothing but the gap count.
+  const SessionMetrics one = computeSessionMetrics(measured);
+  SessionMetrics both;
+  EXPECT_TRUE(runsWithinMemory(std::size_t{64} << 20, [&] { both = computeSessionMetrics(jumped); }));
+  both = computeSessionMetrics(jumped);
+  EXPECT_EQ(both.gaps, one.gaps + 1);
+  EXPECT_EQ(both.repetitions.repetitions.size(), 2 * one.repetitions.repetitions.size());
+  ASSERT_TRUE(both.sparc.ok() && one.sparc.ok());
+  EXPECT_NEAR(both.sparc.value, one.sparc.value, 0.05);
+
+  // Without repetitions (the primary angle still), the smoothness is the median over the gap-free
+  // stretches: about that of one, never the spectrum of a day of zeros.
+  ClinicalMetricsParams p;
+  p.repetitions.minExcursionRad = 10.0;  // no excursion counts: no repetition
+  SessionMetrics free;
+  EXPECT_TRUE(runsWithinMemory(std::size_t{64} << 20, [&] { free = computeSessionMetrics(jumped, p); }));
+  free = computeSessionMetrics(jumped, p);
+  EXPECT_TRUE(free.repetitions.repetitions.empty());
+  ASSERT_TRUE(free.sparc.ok());
+  EXPECT_GT(free.sparc.value, -10.0);
+  EXPECT_LT(free.sparc.value, -1.0);
+}
+
 }  // namespace armtrack
