@@ -94,6 +94,8 @@ class RecordingReader {
   /// A missing sidecar, a last line cut short.
   const std::vector<std::string>& warnings() const { return m_warnings; }
   std::uint64_t rows() const { return m_rows; }
+  /// Whether the file ended in a line cut short (dropped, with a warning).
+  bool cutShort() const { return m_cutShort; }
   /// For progress: bytes consumed so far, and the file's size (0 when unknown).
   std::uint64_t bytesRead() const;
   std::uint64_t fileSize() const;
@@ -105,6 +107,7 @@ class RecordingReader {
   RecordingColumns m_columns;
   std::vector<std::string> m_warnings;
   std::uint64_t m_rows = 0;
+  bool m_cutShort = false;
 };
 
 /// Reads a CSV recording and its sidecar (<name>.json beside it) into memory. Throws

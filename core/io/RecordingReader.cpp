@@ -362,6 +362,7 @@ bool RecordingReader::next(ArmSample& sample) {
     // the header and at least one row came before it whole.
     if (terminated || m_impl->completeLines < 2) throw;
     m_impl->done = true;
+    m_cutShort = true;
     m_warnings.push_back("line " + std::to_string(number) +
                          " was cut short (the recording was interrupted) and is ignored");
     return false;

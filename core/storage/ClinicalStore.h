@@ -37,6 +37,8 @@ class ClinicalStore {
   const User& signIn(const QString& name, const std::string& password);
   const User& user() const;
   int interruptedOnOpen() const { return m_interruptedOnOpen; }
+  /// Imports whose process had died, removed when this store was made.
+  int removedImportsOnOpen() const { return m_removedImportsOnOpen; }
 
   // Accounts (administrators).
   qint64 addUser(const QString& name, Role role, const std::string& password,
@@ -101,9 +103,24 @@ class ClinicalStore {
   /// Stores samples as the session's next chunk in one transaction (a chunk is ~1 s).
   void appendChunk(qint64 sessionId, std::span<const ArmSample> samples);
   void finishSession(qint64 sessionId, const QString& status = kStatusComplete);
-  /// Reads a recording file (CSV and sidecar) into a new complete session, ~1 s per chunk.
+  /// What importRecording saw in the file.
+  struct ImportReport {
+    std::vector<std::string> warnings;  ///< the reader's: a missing sidecar, a cut line, gaps
+    bool cutShort = false;              ///< the last line was incomplete: stored as interrupted
+    std::uint64_t rows = 0;
+  };
+  /// Told of each chunk of an import once it is committed: the new session's id, the chunk's
+  /// samples (valid during the call) and the fraction of the file read. It may throw to stop the
+  /// import (which is then removed).
+  using ImportObserver =
+      std::function<void(qint64 sessionId, std::span<const ArmSample> samples, double fraction)>;
+  /// Reads a recording file (CSV and sidecar) into a new session, ~1 s per chunk: complete, or
+  /// interrupted when the file was cut short. All or nothing: a file refused half-way, a full
+  /// disk or a lock leaves no session (one that cannot be removed at once, e.g. under a lock,
+  /// is removed when the database is next opened after this process has ended).
   qint64 importRecording(const std::filesystem::path& csv, const QString& patientCode,
-                         const QString& protocolName = {});
+                         const QString& protocolName = {}, ImportReport* report = nullptr,
+                         const ImportObserver& stored = {});
   std::vector<SessionInfo> listSessions(const QString& patientCode);
   SessionInfo session(qint64 sessionId);
   void updateSessionNotes(qint64 sessionId, const QString& notes);
@@ -123,15 +140,63 @@ class ClinicalStore {
   /// Writes the stored recording in the open format (CSV + sidecar) and audits the export.
   void exportRecording(qint64 sessionId, const std::filesystem::path& csv);
 
-  // Estimates and metrics: each save is a new version; earlier ones stay as history.
+  // Estimates, metrics and the analysis state (ClinicalStoreAnalysis.cpp): each analysis is a
+  // new version; earlier ones stay as history.
   int saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
                     const QByteArray& data);
   int saveMetrics(qint64 sessionId, const QString& perAngleJson, const QString& perRepetitionJson);
   /// The newest metrics (per-angle JSON, per-repetition JSON), if any.
   std::optional<std::pair<QString, QString>> latestMetrics(qint64 sessionId);
+  /// The number of finished versions of the session's estimates (they are numbered 1, 2, ...).
   int estimateVersions(qint64 sessionId);
-  /// One stored version of the estimates (0 = the newest), if there is one.
+  /// One finished version of the estimates (0 = the newest), if there is one.
   std::optional<EstimateRecord> estimates(qint64 sessionId, int version = 0);
+  /// The chunks of a version stored in chunks, in order: chunk gets each one's sequence number,
+  /// row count and blob.
+  void readEstimateChunks(
+      const EstimateRecord& record,
+      const std::function<void(int seq, std::uint64_t rows, const QByteArray& data)>& chunk);
+
+  /// A version of the estimates being written chunk by chunk (an hour at 1 kHz is about 190 MB
+  /// compressed, too much to hold and write as one value). Readers do not see it until
+  /// finishAnalysis; one left by a process that died is removed by the session's next analysis.
+  struct EstimatesDraft {
+    qint64 id = 0;         ///< the estimates row
+    qint64 sessionId = 0;
+    int version = 0;       ///< negative until finished
+  };
+  /// Starts a draft (administrators and therapists) and marks the session's analysis as being
+  /// run by this process.
+  EstimatesDraft beginEstimates(qint64 sessionId, const QString& codec);
+  /// Stores one chunk of the draft (rows rows, an EstimateCodec blob) in a transaction of its own.
+  void appendEstimateChunk(const EstimatesDraft& draft, int seq, qint64 rows,
+                           const QByteArray& blob);
+  struct AnalysisVersions {
+    int estimates = 0;
+    int metrics = 0;
+  };
+  /// The rows a version of the metrics was computed from, encoded (SessionAnalysis.h).
+  struct StoredSeries {
+    QString codec;  ///< empty: none stored
+    QByteArray data;
+  };
+  /// The newest metrics' series, when they have one (analyses before schema 6 have none).
+  std::optional<StoredSeries> latestMetricSeries(qint64 sessionId);
+  /// In one transaction: the draft becomes the newest version with its parameters, the metrics
+  /// are stored (perRepetitionJson is given the estimates' version), the session's analysis is
+  /// done, and it is audited.
+  AnalysisVersions finishAnalysis(
+      const EstimatesDraft& draft, const QString& paramsJson, const QString& perAngleJson,
+      const std::function<QString(int estimateVersion)>& perRepetitionJson,
+      const StoredSeries& series = {});
+  /// Removes an unfinished draft (a cancelled or failed analysis); the session's analysis stays
+  /// as it was.
+  void abandonEstimates(const EstimatesDraft& draft);
+  /// Marks the session's analysis failed: its recording cannot be analysed, for reason why.
+  void markAnalysisFailed(qint64 sessionId, const QString& why);
+  /// Complete sessions visible to the user whose analysis is pending and not being run by a
+  /// live process of this host, oldest first.
+  std::vector<qint64> pendingAnalyses();
 
   // Audit log (administrators read it).
   std::vector<AuditEntry> auditLog();
@@ -145,11 +210,17 @@ class ClinicalStore {
   SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones
   std::optional<qint64> protocolId(const QString& name);
   int markDeadRecordingsInterrupted();
+  void removeFailedImport(qint64 sessionId);
+  void removeDeadDrafts(qint64 sessionId);  // in a transaction
+  int insertMetrics(qint64 sessionId, const QString& perAngleJson,
+                    const QString& perRepetitionJson,
+                    const StoredSeries& series = {});  // in a transaction; the version
   void renumberProgramme(qint64 patientId);  // positions 1, 2, ... in their order; in a transaction
 
   Database& m_db;
   std::optional<User> m_user;
   int m_interruptedOnOpen = 0;
+  int m_removedImportsOnOpen = 0;
 };
 
 }  // namespace armtrack::storage

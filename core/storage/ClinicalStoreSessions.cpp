@@ -82,22 +82,52 @@ bool processAlive(qint64 pid) {
 
 int ClinicalStore::markDeadRecordingsInterrupted() {
   const QString host = QSysInfo::machineHostName();
-  std::vector<qint64> dead;
+  struct Dead {
+    qint64 id;
+    bool imported;
+  };
+  std::vector<Dead> dead;
   QSqlQuery q = m_db.exec(
-      "SELECT id, recorder_host, recorder_pid FROM sessions "
+      "SELECT id, recorder_host, recorder_pid, origin FROM sessions "
       "WHERE status = 'recording'");
   while (q.next())
     if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
-      dead.push_back(q.value(0).toLongLong());
+      dead.push_back({q.value(0).toLongLong(), q.value(3).toString() == kOriginImport});
   q.finish();
-  for (qint64 id : dead) {
+  int interrupted = 0;
+  for (const Dead& d : dead) {
     m_db.transaction([&] {
-      m_db.exec("UPDATE sessions SET status = 'interrupted' WHERE id = ?", {id});
-      appendAudit(m_db, {"system", "update", "session", QString::number(id),
-                         "recorder died: interrupted"});
+      if (d.imported) {
+        // An import is all or nothing: one whose process died is removed whole.
+        m_db.exec("DELETE FROM sessions WHERE id = ?", {d.id});
+        appendAudit(m_db, {"system", "delete", "session", QString::number(d.id),
+                           "import did not finish: removed"});
+        ++m_removedImportsOnOpen;
+      } else {
+        m_db.exec("UPDATE sessions SET status = 'interrupted', analysis = 'none' WHERE id = ?",
+                  {d.id});
+        appendAudit(m_db, {"system", "update", "session", QString::number(d.id),
+                           "recorder died: interrupted"});
+        ++interrupted;
+      }
     });
   }
-  return static_cast<int>(dead.size());
+  // Analyses whose process died: the session's analysis is pending again (the next command or
+  // start of the app runs it) and the estimates they had begun to write are removed.
+  std::vector<qint64> claims;
+  QSqlQuery a = m_db.exec(
+      "SELECT id, analysis_host, analysis_pid FROM sessions WHERE analysis_pid IS NOT NULL");
+  while (a.next())
+    if (a.value(1).toString() == host && !processAlive(a.value(2).toLongLong()))
+      claims.push_back(a.value(0).toLongLong());
+  a.finish();
+  for (qint64 id : claims)
+    m_db.transaction([&] {
+      removeDeadDrafts(id);
+      m_db.exec("UPDATE sessions SET analysis_host = NULL, analysis_pid = NULL WHERE id = ?",
+                {id});
+    });
+  return interrupted;
 }
 
 qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& protocolName,
@@ -115,11 +145,12 @@ qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& pr
     id = m_db.insert(
         "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, devices_json, "
         "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid, "
-        "setting) VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?, ?)",
+        "setting, origin) VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?, ?, ?)",
         {patientId, isStaff() ? QVariant(user().id) : QVariant(),
          protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
          calibrationJson, settings.filterJson, columnsMask, QSysInfo::machineHostName(),
-         static_cast<qint64>(::getpid()), isStaff() ? kSettingClinic : kSettingHome});
+         static_cast<qint64>(::getpid()), isStaff() ? kSettingClinic : kSettingHome,
+         settings.origin == kOriginImport ? kOriginImport : kOriginLive});
     audit("create", "session", QString::number(id), "patient " + patientCode);
   });
   return id;
@@ -155,46 +186,71 @@ void ClinicalStore::finishSession(qint64 sessionId, const QString& status) {
   visibleSession(sessionId);
   if (status != kStatusComplete && status != kStatusInterrupted)
     throw StorageError(Kind::Usage, "a session finishes as complete or interrupted");
-  m_db.exec("UPDATE sessions SET status = ?, recorder_pid = NULL WHERE id = ?",
-            {status, sessionId});
+  // A complete session's analysis stays pending until it is stored; an interrupted one is
+  // analysed only when asked (session reestimate, Re-estimate in the application).
+  m_db.exec(
+      "UPDATE sessions SET status = ?, recorder_pid = NULL, analysis = CASE WHEN ? = "
+      "'interrupted' AND analysis = 'pending' THEN 'none' ELSE analysis END WHERE id = ?",
+      {status, status, sessionId});
 }
 
 qint64 ClinicalStore::importRecording(const std::filesystem::path& csv, const QString& patientCode,
-                                      const QString& protocolName) {
+                                      const QString& protocolName, ImportReport* report,
+                                      const ImportObserver& stored) {
   visiblePatientId(patientCode);  // refuse before reading a large file
   RecordingReader reader(csv);    // throws RecordingError naming file:line:column
-  const qint64 id =
-      beginSession(patientCode, protocolName, sidecarText(reader.meta()), maskOf(reader.columns()));
+  SessionSettings settings;
+  settings.origin = kOriginImport;
+  const qint64 id = beginSession(patientCode, protocolName, sidecarText(reader.meta()),
+                                 maskOf(reader.columns()), settings);
+  bool cutShort = false;
   try {
     std::vector<ArmSample> chunk;
     ArmSample sample;
+    const auto store = [&] {
+      appendChunk(id, chunk);
+      if (stored)
+        stored(id, chunk,
+               reader.fileSize() > 0 ? static_cast<double>(reader.bytesRead()) /
+                                           static_cast<double>(reader.fileSize())
+                                     : 0.0);
+      chunk.clear();
+    };
     while (reader.next(sample)) {
       if (!chunk.empty() &&
-          (sample.t - chunk.front().t >= kChunkSeconds || chunk.size() >= kMaxChunkRows)) {
-        appendChunk(id, chunk);
-        chunk.clear();
-      }
+          (sample.t - chunk.front().t >= kChunkSeconds || chunk.size() >= kMaxChunkRows))
+        store();
       chunk.push_back(sample);
     }
-    appendChunk(id, chunk);
+    if (!chunk.empty()) store();
+    cutShort = reader.cutShort();
+    // A file cut short (its last line incomplete: the recorder was killed) is kept as what it
+    // is, an interrupted recording; so is one with no row at all.
+    finishSession(id, cutShort || reader.rows() == 0 ? kStatusInterrupted : kStatusComplete);
   } catch (...) {
-    // An import is all or nothing: a malformed row or a full disk leaves no partial session. If
-    // even the removal fails, the session is at least not left "recording".
-    try {
-      m_db.transaction([&] {
-        m_db.exec("DELETE FROM sessions WHERE id = ?", {id});
-        audit("delete", "session", QString::number(id), "import failed");
-      });
-    } catch (...) {
-      try {
-        finishSession(id, kStatusInterrupted);
-      } catch (...) {
-      }
-    }
+    removeFailedImport(id);
     throw;
   }
-  finishSession(id, kStatusComplete);
+  if (report) {
+    report->warnings = reader.warnings();
+    report->cutShort = cutShort;
+    report->rows = reader.rows();
+  }
   return id;
+}
+
+void ClinicalStore::removeFailedImport(qint64 id) {
+  // An import is all or nothing: a malformed row, a full disk or a lock leaves no partial
+  // session. If the removal fails too (the lock is still held), the session stays "recording",
+  // marked as an import of this process, and is removed when the database is next opened after
+  // this process has ended.
+  try {
+    m_db.transaction([&] {
+      m_db.exec("DELETE FROM sessions WHERE id = ?", {id});
+      audit("delete", "session", QString::number(id), "import failed");
+    });
+  } catch (const std::exception&) {
+  }
 }
 
 SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
@@ -352,76 +408,6 @@ void ClinicalStore::exportRecording(qint64 sessionId, const std::filesystem::pat
     writer.close();
   }
   audit("export", "session", QString::number(sessionId), "recording");
-}
-
-int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
-                                 const QByteArray& data) {
-  require(isStaff(), "store estimates");
-  visibleSession(sessionId);
-  int version = 0;
-  m_db.transaction([&] {
-    version = estimateVersions(sessionId) + 1;
-    m_db.exec(
-        "INSERT INTO estimates (session_id, version, created_at, params_json, codec, data) "
-        "VALUES (?, ?, ?, ?, ?, ?)",
-        {sessionId, version, utcNow(), paramsJson, codec, data});
-  });
-  return version;
-}
-
-int ClinicalStore::estimateVersions(qint64 sessionId) {
-  visibleSession(sessionId);
-  QSqlQuery q = m_db.exec("SELECT coalesce(max(version), 0) FROM estimates WHERE session_id = ?",
-                          {sessionId});
-  return q.next() ? q.value(0).toInt() : 0;
-}
-
-int ClinicalStore::saveMetrics(qint64 sessionId, const QString& perAngleJson,
-                               const QString& perRepetitionJson) {
-  require(isStaff(), "store metrics");
-  visibleSession(sessionId);
-  int version = 0;
-  m_db.transaction([&] {
-    QSqlQuery q = m_db.exec("SELECT coalesce(max(version), 0) FROM metrics WHERE session_id = ?",
-                            {sessionId});
-    version = (q.next() ? q.value(0).toInt() : 0) + 1;
-    q.finish();
-    m_db.exec(
-        "INSERT INTO metrics (session_id, version, created_at, per_angle_json, "
-        "per_repetition_json) VALUES (?, ?, ?, ?, ?)",
-        {sessionId, version, utcNow(), perAngleJson, perRepetitionJson});
-  });
-  return version;
-}
-
-std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 sessionId) {
-  visibleSession(sessionId);
-  QSqlQuery q = m_db.exec(
-      "SELECT per_angle_json, per_repetition_json FROM metrics WHERE "
-      "session_id = ? ORDER BY version DESC LIMIT 1",
-      {sessionId});
-  if (!q.next()) return std::nullopt;
-  return std::make_pair(q.value(0).toString(), q.value(1).toString());
-}
-
-std::optional<EstimateRecord> ClinicalStore::estimates(qint64 sessionId, int version) {
-  visibleSession(sessionId);
-  QSqlQuery q = version > 0 ? m_db.exec(
-                                  "SELECT version, created_at, params_json, codec, data FROM "
-                                  "estimates WHERE session_id = ? AND version = ?",
-                                  {sessionId, version})
-                            : m_db.exec(
-                                  "SELECT version, created_at, params_json, codec, data FROM "
-                                  "estimates WHERE session_id = ? ORDER BY version DESC LIMIT 1",
-                                  {sessionId});
-  if (!q.next()) return std::nullopt;
-  EstimateRecord e;
-  e.version = q.value(0).toInt();
-  e.createdAt = q.value(1).toString();
-  e.paramsJson = q.value(2).toString();
-  e.codec = q.value(3).toString();
-  e.data = q.value(4).toByteArray();
-  return e;
 }
 
 }  // namespace armtrack::storage

@@ -35,6 +35,9 @@ struct EstimateColumns {
 class EstimateCodec {
  public:
   static constexpr const char* kName = "est-f64-zstd-v1";
+  /// A version stored as chunks (table estimate_chunks), each a blob of kName: an analysis
+  /// writes its estimates as they come instead of holding them whole.
+  static constexpr const char* kChunkedName = "est-f64-zstd-v1-chunks";
 
   /// The blob of columns (all of one length; throws std::invalid_argument otherwise, or for a
   /// status outside 0-3).

@@ -56,67 +56,96 @@ std::uint64_t bigEndian(const char* p, int bytes) {
   return v;
 }
 
-// PostgreSQL through libpq: binary results in single-row mode (one chunk in memory at a time).
-void readChunksBinary(Database& db, PGconn* conn, qint64 sessionId,
-                      const std::function<void(const StoredChunk&)>& chunk) {
+// Chunks are fetched kBatchChunks at a time, each batch by a query of its own that is finished
+// before the caller sees its chunks: the connection is then free, so the caller may write while it
+// reads (an analysis stores its estimates as it reads the recording; on PostgreSQL a connection
+// cannot run a statement while another one's rows are still coming).
+constexpr int kBatchChunks = 32;
+
+// PostgreSQL through libpq: one batch in the binary wire format.
+int readBatchBinary(Database& db, PGconn* conn, qint64 sessionId, int fromSeq,
+                    const std::function<void(const StoredChunk&)>& chunk) {
   using Kind = StorageError::Kind;
-  const std::string id = std::to_string(sessionId);
-  const char* params[] = {id.c_str()};
-  const auto fail = [&](const std::string& why) {
+  const std::string id = std::to_string(sessionId), from = std::to_string(fromSeq),
+                    limit = std::to_string(kBatchChunks);
+  const char* params[] = {id.c_str(), from.c_str(), limit.c_str()};
+  PGresult* r = PQexecParams(conn,
+                             "SELECT seq::int8, row_count::int8, codec, data FROM recording_chunks "
+                             "WHERE session_id = $1::int8 AND seq >= $2::int8 ORDER BY seq "
+                             "LIMIT $3::int8",
+                             3, nullptr, params, nullptr, nullptr, /*resultFormat=binary*/ 1);
+  if (PQresultStatus(r) != PGRES_TUPLES_OK) {
+    const std::string why = r ? PQresultErrorMessage(r) : PQerrorMessage(conn);
+    PQclear(r);
     throw StorageError(Kind::Io, "database '" + db.url().display().toStdString() +
                                      "' cannot read the recording: " + why);
-  };
-  if (!PQsendQueryParams(conn,
-                         "SELECT seq::int8, row_count::int8, codec, data FROM recording_chunks "
-                         "WHERE session_id = $1::int8 ORDER BY seq",
-                         1, nullptr, params, nullptr, nullptr, /*resultFormat=binary*/ 1) ||
-      !PQsetSingleRowMode(conn))
-    fail(PQerrorMessage(conn));
-  std::string error;
-  // Every result is read, also after a failure, so the connection is left idle for Qt.
-  while (PGresult* r = PQgetResult(conn)) {
-    const ExecStatusType status = PQresultStatus(r);
-    if (status == PGRES_SINGLE_TUPLE && error.empty()) {
-      try {
-        StoredChunk c;
-        c.seq = static_cast<int>(bigEndian(PQgetvalue(r, 0, 0), 8));
-        c.rows = bigEndian(PQgetvalue(r, 0, 1), 8);
-        c.codec.assign(PQgetvalue(r, 0, 2), static_cast<std::size_t>(PQgetlength(r, 0, 2)));
-        c.data =
-            std::string_view(PQgetvalue(r, 0, 3), static_cast<std::size_t>(PQgetlength(r, 0, 3)));
-        chunk(c);
-      } catch (...) {
-        PQclear(r);
-        while (PGresult* rest = PQgetResult(conn)) PQclear(rest);
-        throw;
-      }
-    } else if (status != PGRES_TUPLES_OK && status != PGRES_SINGLE_TUPLE && error.empty()) {
-      error = PQresultErrorMessage(r);
-    }
-    PQclear(r);
   }
-  if (!error.empty()) fail(error);
+  const int n = PQntuples(r);
+  try {
+    for (int i = 0; i < n; ++i) {
+      StoredChunk c;
+      c.seq = static_cast<int>(bigEndian(PQgetvalue(r, i, 0), 8));
+      c.rows = bigEndian(PQgetvalue(r, i, 1), 8);
+      c.codec.assign(PQgetvalue(r, i, 2), static_cast<std::size_t>(PQgetlength(r, i, 2)));
+      c.data =
+          std::string_view(PQgetvalue(r, i, 3), static_cast<std::size_t>(PQgetlength(r, i, 3)));
+      chunk(c);
+    }
+  } catch (...) {
+    PQclear(r);
+    throw;
+  }
+  PQclear(r);
+  return n;
+}
+
+// Qt Sql: one batch, copied out of the query before the caller sees it.
+int readBatch(Database& db, qint64 sessionId, int fromSeq,
+              const std::function<void(const StoredChunk&)>& chunk) {
+  struct Owned {
+    int seq;
+    std::uint64_t rows;
+    std::string codec;
+    QByteArray data;
+  };
+  std::vector<Owned> batch;
+  {
+    QSqlQuery q = db.exec(
+        "SELECT seq, row_count, codec, data FROM recording_chunks WHERE session_id = ? AND seq >= "
+        "? ORDER BY seq LIMIT " +
+            QString::number(kBatchChunks),
+        {sessionId, fromSeq});
+    while (q.next())
+      batch.push_back({q.value(0).toInt(), q.value(1).toULongLong(),
+                       q.value(2).toString().toStdString(), q.value(3).toByteArray()});
+  }
+  for (const Owned& o : batch) {
+    StoredChunk c;
+    c.seq = o.seq;
+    c.rows = o.rows;
+    c.codec = o.codec;
+    c.data = std::string_view(o.data.constData(), static_cast<std::size_t>(o.data.size()));
+    chunk(c);
+  }
+  return static_cast<int>(batch.size());
 }
 
 }  // namespace
 
 void readChunks(Database& db, qint64 sessionId,
                 const std::function<void(const StoredChunk&)>& chunk) {
-  if (PGconn* conn = db.isPostgres() ? static_cast<PGconn*>(db.postgresConnection()) : nullptr) {
-    readChunksBinary(db, conn, sessionId, chunk);
-    return;
-  }
-  QSqlQuery q = db.exec(
-      "SELECT seq, row_count, codec, data FROM recording_chunks WHERE session_id = ? ORDER BY seq",
-      {sessionId});
-  while (q.next()) {
-    const QByteArray data = q.value(3).toByteArray();
-    StoredChunk c;
-    c.seq = q.value(0).toInt();
-    c.rows = q.value(1).toULongLong();
-    c.codec = q.value(2).toString().toStdString();
-    c.data = std::string_view(data.constData(), static_cast<std::size_t>(data.size()));
-    chunk(c);
+  PGconn* conn = db.isPostgres() ? static_cast<PGconn*>(db.postgresConnection()) : nullptr;
+  int next = 0;
+  for (;;) {
+    int last = -1;
+    const auto seen = [&](const StoredChunk& c) {
+      last = c.seq;
+      chunk(c);
+    };
+    const int n = conn ? readBatchBinary(db, conn, sessionId, next, seen)
+                       : readBatch(db, sessionId, next, seen);
+    if (n < kBatchChunks || last < 0) return;
+    next = last + 1;
   }
 }
 

@@ -29,11 +29,13 @@ struct StoredChunk {
   std::string_view data;
 };
 
-/// Calls chunk for each of the session's chunks in seq order, without decoding them. On
-/// PostgreSQL the chunks come in the binary wire format, row by row, through the connection's
-/// libpq handle: in text format every byte is sent as two hex digits, which the server spends
-/// more time writing and the client reading than decoding the chunk takes (docs/storage.md,
-/// "Speed"). Throws StorageError(Io) when the query fails.
+/// Calls chunk for each of the session's chunks in seq order, without decoding them. They are
+/// fetched 32 at a time, each batch by a query finished before chunk sees it, so chunk may use
+/// the connection (an analysis writes its estimates as it reads). On PostgreSQL the chunks come
+/// in the binary wire format through the connection's libpq handle: in text format every byte is
+/// sent as two hex digits, which the server spends more time writing and the client reading than
+/// decoding the chunk takes (docs/storage.md, "Speed"). Throws StorageError(Io) when a query
+/// fails.
 void readChunks(Database& db, qint64 sessionId,
                 const std::function<void(const StoredChunk&)>& chunk);
 

@@ -95,6 +95,7 @@ inline constexpr const char* kAnalysisNone = "none";
 struct SessionSettings {
   QString devicesJson = "{}";  ///< the devices: plugin, options and streams, by device label
   QString filterJson = "{}";   ///< the filter settings its analysis uses (SessionAnalysis.h)
+  QString origin = kOriginLive;  ///< kOriginImport for a file being imported
 };
 
 struct SessionInfo {
@@ -126,11 +127,12 @@ struct SessionInfo {
 
 /// One stored version of a session's estimates (docs/storage.md, "Estimates").
 struct EstimateRecord {
+  qint64 id = 0;       ///< the row's key (its chunks refer to it)
   int version = 0;     ///< 1, 2, ... per session
   QString createdAt;   ///< ISO 8601 UTC
   QString paramsJson;  ///< how they were made (filter, method, optical, library version, rows)
-  QString codec;       ///< e.g. "est-f64-zstd-v1"
-  QByteArray data;     ///< the blob
+  QString codec;       ///< e.g. "est-f64-zstd-v1", or its chunked form (EstimateCodec.h)
+  QByteArray data;     ///< the blob; empty when the estimates are in chunks
 };
 
 struct AuditEntry {

@@ -185,6 +185,12 @@ const std::vector<MigrationStep>& migrationSteps() {
            // Estimates: a version is written chunk by chunk and counts once complete.
            "ALTER TABLE estimates ADD COLUMN complete INTEGER NOT NULL DEFAULT 1 "
            "CHECK (complete IN (0, 1))",
+           "ALTER TABLE estimates ADD COLUMN writer_host TEXT",
+           "ALTER TABLE estimates ADD COLUMN writer_pid BIGINT",
+           // Metrics: the rows they were computed from (at most 100 a second), so a report draws
+           // and lists what was measured without decoding every estimate again.
+           "ALTER TABLE metrics ADD COLUMN series_codec TEXT",
+           "ALTER TABLE metrics ADD COLUMN series {blob}",
            "CREATE TABLE estimate_chunks ("
            " estimate_id BIGINT NOT NULL REFERENCES estimates (id) ON DELETE CASCADE,"
            " seq INTEGER NOT NULL,"

@@ -23,61 +23,107 @@ namespace {
 using Kind = StorageError::Kind;
 
 constexpr std::size_t kCancelCheckRows = 1024;  // rows between two looks at the cancel flag
+constexpr std::size_t kEstimateChunkRows = std::size_t{1} << 16;  // rows of a stored estimate chunk
 
 std::string sessionText(qint64 id) {
   return "session " + std::to_string(id);
 }
+
+struct MetricRows {
+  AngleSeries metricSeries;         // what the metrics are computed from
+  std::vector<JointVector> metricJoints;  // the same rows as joint angles (rad)
+  std::vector<ClinicalRow> sdRad;   // standard deviations of the series' rows, when asked for
+  std::size_t dropped = 0, settling = 0;
+};
 
 QString angleKey(int index) {
   const std::string_view k = clinicalAngleInfo()[static_cast<std::size_t>(index)].key;
   return QString::fromUtf8(k.data(), static_cast<qsizetype>(k.size()));
 }
 
-// The rows the metrics use: the estimates without the filter's settling time after each
-// (re)start or recovery, as the error statistics leave it out (those angles may be far off while
-// the arm did not move), and without a row at the time of the previous one (the metrics need
-// strictly increasing times). Both stay in the stored estimates.
-struct MetricRows {
-  AngleSeries series;
-  std::vector<ClinicalRow> sdRad;
-  std::size_t dropped = 0, settling = 0;
-};
+// The rows the metrics use, collected as the estimates come: the filter's settling time after
+// each (re)start or recovery is left out (those angles may be far off while the arm did not
+// move), as the error statistics leave it out, and so is a row at or before the time of the
+// previous one (the metrics need strictly increasing times); both stay in the stored estimates.
+// Of the rest, the first row of each 1/kMetricsRateHz cell of time is kept: the clinical metrics
+// need no more (docs/storage.md, "Memory of an analysis"), so their memory and time grow with
+// the session's duration at that rate, not with the sensors' rate. allRows keeps every settled
+// row in series instead (exports) while the metrics still see the thinned ones.
+class MetricRowCollector {
+ public:
+  MetricRowCollector(bool withSd, bool allRows) : m_withSd(withSd), m_allRows(allRows) {}
 
-MetricRows metricRows(const std::vector<double>& t, const std::vector<JointVector>& th,
-                      const std::vector<JointVector>& sd, const std::vector<int>& status,
-                      qint64 sessionId, bool withSd = true) {
-  std::vector<double> mt;
-  std::vector<JointVector> mth;
-  mt.reserve(t.size());
-  mth.reserve(t.size());
-  MetricRows out;
-  double settledFrom = -std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (status[i] == kStatusRestarted || status[i] == kStatusRecovered)
-      settledFrom = t[i] + kStartupSeconds;
-    if (t[i] < settledFrom) {
-      ++out.settling;
-      continue;
+  void add(double t, const JointVector& th, const JointVector& sd, int status) {
+    ++m_rows;
+    if (status == kStatusRestarted || status == kStatusRecovered) m_settledFrom = t + kStartupSeconds;
+    if (t < m_settledFrom) {
+      ++m_settling;
+      return;
     }
-    if (!mt.empty() && !(t[i] > mt.back())) {
-      ++out.dropped;
-      continue;
+    if (m_haveLast && !(t > m_lastT)) {
+      ++m_dropped;
+      return;
     }
-    mt.push_back(t[i]);
-    mth.push_back(th[i]);
-    if (!withSd) continue;
-    ClinicalRow s;  // the clinical angles are the joint angles up to sign
-    for (int k = 0; k < kNumClinicalAngles; ++k) s[static_cast<std::size_t>(k)] = sd[i](k);
-    out.sdRad.push_back(s);
+    if (!m_haveLast) m_t0 = t;
+    m_haveLast = true;
+    m_lastT = t;
+    const double cell = std::floor((t - m_t0) * kMetricsRateHz);
+    const bool thinKeeps = !(cell <= m_lastCell);
+    if (thinKeeps) {
+      m_lastCell = cell;
+      m_metricT.push_back(t);
+      m_metricTh.push_back(th);
+    }
+    if (!(thinKeeps || m_allRows)) return;
+    if (m_allRows) {
+      m_allT.push_back(t);
+      m_allTh.push_back(th);
+    }
+    if (!m_withSd) return;
+    ClinicalRow r;  // the clinical angles are the joint angles up to sign
+    for (int k = 0; k < kNumClinicalAngles; ++k) r[static_cast<std::size_t>(k)] = sd(k);
+    m_sd.push_back(r);
   }
-  if (mt.size() < 2)
-    throw StorageError(Kind::Usage, sessionText(sessionId) + ": " + std::to_string(t.size()) +
-                                        " estimates, " + std::to_string(mt.size()) +
-                                        " after the filter's start-up second; at least 2 are "
-                                        "needed for metrics");
-  out.series = angleSeriesFromJoints(mt, mth);
-  return out;
-}
+
+  /// The rows for the metrics, and the series (the same rows, or every settled row with
+  /// allRows). Throws StorageError(Usage) when fewer than 2 rows are left.
+  MetricRows finish(qint64 sessionId, AngleSeries* series = nullptr) {
+    if (m_metricT.size() < 2)
+      throw StorageError(Kind::Usage, sessionText(sessionId) + ": " + std::to_string(m_rows) +
+                                          " estimates, " + std::to_string(m_metricT.size()) +
+                                          " after the filter's start-up second; at least 2 are "
+                                          "needed for metrics");
+    MetricRows out;
+    out.dropped = m_dropped;
+    out.settling = m_settling;
+    out.metricSeries = angleSeriesFromJoints(m_metricT, m_metricTh);
+    out.metricJoints = std::move(m_metricTh);
+    m_metricT = {};
+    m_metricTh = {};
+    if (series) {
+      if (m_allRows) {
+        *series = angleSeriesFromJoints(m_allT, m_allTh);
+        m_allT = {};
+        m_allTh = {};
+      } else {
+        *series = out.metricSeries;
+      }
+    }
+    out.sdRad = std::move(m_sd);
+    return out;
+  }
+
+ private:
+  bool m_withSd, m_allRows;
+  std::size_t m_rows = 0, m_dropped = 0, m_settling = 0;
+  double m_settledFrom = -std::numeric_limits<double>::infinity();
+  bool m_haveLast = false;
+  double m_lastT = 0, m_t0 = 0;
+  double m_lastCell = -1;
+  std::vector<double> m_metricT, m_allT;
+  std::vector<JointVector> m_metricTh, m_allTh;
+  std::vector<ClinicalRow> m_sd;
+};
 
 // Metrics parameters for a session: the wrist path from its geometry, repetitions on its
 // protocol's primary angle judged against the protocol's target (protocol is set then).
@@ -236,6 +282,91 @@ const char* filterName(FilterKind k) {
 
 }  // namespace
 
+namespace {
+
+// The rows the metrics were computed from (times and joint angles) as stored beside them: the
+// estimate blob's layout with zero standard deviations, which zstd reduces to nothing.
+ClinicalStore::StoredSeries encodeMetricRows(const std::vector<double>& t,
+                                             std::vector<JointVector>&& joints) {
+  EstimateColumns c;
+  c.t = t;
+  c.th = std::move(joints);
+  c.sd.assign(c.t.size(), JointVector::Zero());
+  c.status.assign(c.t.size(), kStatusFused);
+  const std::string blob = EstimateCodec::encode(c);
+  return {kMetricRowsCodec, QByteArray(blob.data(), static_cast<qsizetype>(blob.size()))};
+}
+
+// A session's analysis as it runs: the estimates go to the database a chunk at a time and the
+// rows the metrics use are collected, so neither the recording nor its estimates are ever in
+// memory whole (docs/storage.md, "Memory of an analysis").
+class AnalysisRun {
+ public:
+  AnalysisRun(ClinicalStore& store, qint64 sessionId)
+      : m_store(store), m_draft(store.beginEstimates(sessionId, EstimateCodec::kChunkedName)) {}
+  ~AnalysisRun() {
+    if (m_finished) return;
+    try {
+      m_store.abandonEstimates(m_draft);  // a failure or a cancel: nothing half-written stays
+    } catch (const std::exception&) {
+      // The draft stays; the session's next analysis removes it (it belongs to this process,
+      // which will be gone).
+    }
+  }
+  AnalysisRun(const AnalysisRun&) = delete;
+  AnalysisRun& operator=(const AnalysisRun&) = delete;
+
+  void add(const EstimateRow& row) {
+    m_block.append(row);
+    m_metricRows.add(row.t, row.th, row.sd, row.status);
+    ++m_rows;
+    if (m_block.size() >= kEstimateChunkRows) flush();
+  }
+  void flush() {
+    if (m_block.size() == 0) return;
+    const std::string blob = EstimateCodec::encode(m_block);
+    m_store.appendEstimateChunk(m_draft, m_seq++, static_cast<qint64>(m_block.size()),
+                                QByteArray(blob.data(), static_cast<qsizetype>(blob.size())));
+    m_block.t.clear();
+    m_block.th.clear();
+    m_block.sd.clear();
+    m_block.status.clear();
+  }
+  std::size_t rows() const { return m_rows; }
+  MetricRowCollector& metricRows() { return m_metricRows; }
+  ClinicalStore::AnalysisVersions finish(
+      const QString& paramsJson, const QString& perAngleJson,
+      const std::function<QString(int estimateVersion)>& perRepetitionJson,
+      const ClinicalStore::StoredSeries& series) {
+    const ClinicalStore::AnalysisVersions v =
+        m_store.finishAnalysis(m_draft, paramsJson, perAngleJson, perRepetitionJson, series);
+    m_finished = true;
+    return v;
+  }
+
+ private:
+  ClinicalStore& m_store;
+  ClinicalStore::EstimatesDraft m_draft;
+  EstimateColumns m_block;
+  MetricRowCollector m_metricRows{/*withSd=*/false, /*allRows=*/false};
+  std::size_t m_rows = 0;
+  int m_seq = 0;
+  bool m_finished = false;
+};
+
+// Marks the session's analysis failed with the error's text (the recording cannot be analysed as
+// it is), then throws the error on.
+[[noreturn]] void failAnalysis(ClinicalStore& store, qint64 sessionId, const StorageError& e) {
+  try {
+    store.markAnalysisFailed(sessionId, QString::fromStdString(e.what()));
+  } catch (const std::exception&) {
+    // The state stays pending; the error below is what the caller needs to see.
+  }
+  throw e;
+}
+
+}  // namespace
+
 AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                               const AnalysisOptions& options) {
   const SessionInfo info = store.session(sessionId);  // NotFound for an invisible session
@@ -256,27 +387,24 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   };
   progress(0);
 
-  EstimatorParams params;
-  EstimateColumns rows;
-  {
-    // The chunks are decoded as the filter goes: the recording (352 bytes a row as samples) is
-    // never in memory whole (docs/storage.md, "Memory of an analysis").
-    RecordingMeta meta = store.recordingMeta(sessionId);
-    if (options.calibration) {
-      try {
-        applyCalibration(*options.calibration, meta);  // the calibrated geometry
-      } catch (const std::invalid_argument& e) {
-        throw StorageError(Kind::Usage,
-                           sessionText(sessionId) + ": the calibration does not fit: " + e.what());
-      }
+  RecordingMeta meta = store.recordingMeta(sessionId);
+  if (options.calibration) {
+    try {
+      applyCalibration(*options.calibration, meta);  // the calibrated geometry
+    } catch (const std::invalid_argument& e) {
+      throw StorageError(Kind::Usage,
+                         sessionText(sessionId) + ": the calibration does not fit: " + e.what());
     }
-    params = estimatorParamsFor(meta, result.settings);
-    const auto n = static_cast<std::size_t>(std::max<qint64>(info.sampleRows, 0));
-    const auto imuRows = static_cast<std::size_t>(std::max<qint64>(info.imuSamples, 0));
-    rows.t.reserve(imuRows);
-    rows.th.reserve(imuRows);
-    rows.sd.reserve(imuRows);
-    rows.status.reserve(imuRows);
+  }
+  const EstimatorParams params = estimatorParamsFor(meta, result.settings);
+  std::optional<Protocol> protocol;
+  const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
+
+  AnalysisRun run(store, sessionId);
+  {
+    const auto n = options.expectedRows > 0
+                       ? options.expectedRows
+                       : static_cast<std::size_t>(std::max<qint64>(info.sampleRows, 0));
     StreamingEstimator estimator(params);
     EstimateRow row;
     ArmSample corrected;
@@ -285,7 +413,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
     std::size_t nextRow = n / 10;
     bool cancelled = false;
     const auto one = [&](const ArmSample& s) {
-      if (estimator.push(s, row)) rows.append(row);
+      if (estimator.push(s, row)) run.add(row);
       if (++done >= nextRow) {
         progress(nextPercent * 9 / 10);
         nextPercent += 10;
@@ -293,51 +421,64 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                                      : std::numeric_limits<std::size_t>::max();
       }
     };
-    store.readRecordingChunks(sessionId, [&](std::span<const ArmSample> samples) {
-      for (const ArmSample& s : samples) {
-        if (options.cancel && done % kCancelCheckRows == 0 && options.cancel->load()) {
-          cancelled = true;
-          return false;
+    const std::function<bool(std::span<const ArmSample>)> consume =
+        [&](std::span<const ArmSample> samples) {
+        for (const ArmSample& s : samples) {
+          if (options.cancel && done % kCancelCheckRows == 0 && options.cancel->load()) {
+            cancelled = true;
+            return false;
+          }
+          if (options.calibration) {
+            corrected = s;
+            applyCalibration(*options.calibration, corrected);
+            one(corrected);
+          } else {
+            one(s);
+          }
         }
-        if (options.calibration) {
-          corrected = s;
-          applyCalibration(*options.calibration, corrected);
-          one(corrected);
-        } else {
-          one(s);
-        }
-      }
-      return true;
-    });
+        return true;
+      };
+    try {
+      if (options.samples)
+        options.samples(consume);
+      else
+        store.readRecordingChunks(sessionId, consume);
+    } catch (const StorageError& e) {
+      if (e.kind() == Kind::Corrupt) failAnalysis(store, sessionId, e);
+      throw;
+    }
+    run.flush();
     result.stats = estimator.stats();
     result.stats.cancelled = cancelled;
   }
   if (result.stats.cancelled) {
     result.cancelled = true;
-    return result;
+    return result;  // the run's draft is removed
   }
-  if (rows.size() < 2)
-    throw StorageError(Kind::Usage, sessionText(sessionId) + ": " +
-                                        std::to_string(result.stats.imuRows) +
-                                        " rows with IMU data gave " + std::to_string(rows.size()) +
-                                        " estimates; at least 2 are needed for metrics");
-
-  std::optional<Protocol> protocol;
-  const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
-  const MetricRows settled =
-      metricRows(rows.t, rows.th, rows.sd, rows.status, sessionId, /*withSd=*/false);
-  // The estimates are compressed now and their columns released (92 bytes a row), so that the
-  // metrics below do not hold them too (docs/storage.md, "Memory of an analysis").
-  const std::size_t estimateRows = rows.size();
-  const std::string blob = EstimateCodec::encode(rows);
-  rows = {};
+  const std::size_t estimateRows = run.rows();
+  if (estimateRows < 2)
+    failAnalysis(store, sessionId,
+                 StorageError(Kind::Usage, sessionText(sessionId) + ": " +
+                                               std::to_string(result.stats.imuRows) +
+                                               " rows with IMU data gave " +
+                                               std::to_string(estimateRows) +
+                                               " estimates; at least 2 are needed for metrics"));
+  std::size_t dropped = 0, settling = 0;
+  ClinicalStore::StoredSeries series;
   try {
-    result.metrics = computeSessionMetrics(settled.series, mp);
-  } catch (const std::invalid_argument& e) {
-    throw StorageError(Kind::Usage,
-                       sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
+    MetricRows settled = run.metricRows().finish(sessionId);
+    dropped = settled.dropped;
+    settling = settled.settling;
+    try {
+      result.metrics = computeSessionMetrics(settled.metricSeries, mp);
+    } catch (const std::invalid_argument& e) {
+      throw StorageError(Kind::Usage,
+                         sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
+    }
+    series = encodeMetricRows(settled.metricSeries.t, std::move(settled.metricJoints));
+  } catch (const StorageError& e) {
+    failAnalysis(store, sessionId, e);
   }
-  const std::size_t dropped = settled.dropped, settling = settled.settling;
   progress(92);
   if (options.cancel && options.cancel->load()) {
     result.cancelled = true;
@@ -358,20 +499,23 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
            {"imu_rows", static_cast<qint64>(st.imuRows)},
            {"predicted", static_cast<qint64>(st.predicted)},
            {"restarts", static_cast<qint64>(st.counters.restarts)},
-           {"recoveries", static_cast<qint64>(st.counters.recoveries)}})
+           {"recoveries", static_cast<qint64>(st.counters.recoveries)},
+           {"metrics_rate_hz", kMetricsRateHz}})
     paramsJson.insert(key, value);
-  result.estimateVersion = store.saveEstimates(
-      sessionId, QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
-      EstimateCodec::kName, QByteArray(blob.data(), static_cast<qsizetype>(blob.size())));
   const QJsonObject angles = anglesJson(result.metrics.session);
-  const QJsonObject summary =
-      summaryJson(result.metrics, result.estimateVersion, protocol, dropped, settling);
-  result.metricsVersion = store.saveMetrics(
-      sessionId, QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
-      QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact)));
+  QJsonObject summary;
+  const ClinicalStore::AnalysisVersions v =
+      run.finish(QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
+                 QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
+                 [&](int estimateVersion) {
+                   summary = summaryJson(result.metrics, estimateVersion, protocol, dropped,
+                                         settling);
+                   return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
+                 },
+                 series);
+  result.estimateVersion = v.estimates;
+  result.metricsVersion = v.metrics;
   result.metricsJson = merged(summary, angles);
-  store.audit("create", "session", QString::number(sessionId),
-              "estimates and metrics version " + QString::number(result.estimateVersion));
   progress(100);
   return result;
 }
@@ -385,35 +529,83 @@ QJsonObject filterSettingsJson(const EstimateOptions& settings) {
   return o;
 }
 
+namespace {
+
+// Calls rows with each block of a stored version's estimates in order (one block for a version
+// stored whole, one per chunk otherwise); where names the session and version for errors.
+void forEachEstimateBlock(ClinicalStore& store, const EstimateRecord& rec, const std::string& where,
+                          const std::function<void(EstimateColumns&&)>& rows) {
+  const auto damaged = [&](const std::string& what) {
+    return StorageError(Kind::Corrupt, where + what + " (run 'session reestimate')");
+  };
+  if (rec.codec != EstimateCodec::kName && rec.codec != EstimateCodec::kChunkedName)
+    throw StorageError(Kind::Corrupt, where + "unknown codec '" + rec.codec.toStdString() +
+                                          "' (written by a newer ArmTrack?)");
+  const std::optional<QJsonObject> params = parseObject(rec.paramsJson);
+  const double total = params ? params->value("rows").toDouble(-1.0) : -1.0;
+  if (!(total >= 0) || total != std::floor(total) || total > 1e12)
+    throw damaged("its parameters do not say how many rows it holds");
+  if (rec.codec == EstimateCodec::kName) {
+    try {
+      rows(EstimateCodec::decode(std::string(rec.data.constData(), rec.data.size()),
+                                 static_cast<std::uint64_t>(total)));
+    } catch (const std::runtime_error& e) {
+      throw damaged(e.what());
+    }
+    return;
+  }
+  std::uint64_t seen = 0;
+  int expectedSeq = 0;
+  double lastT = -std::numeric_limits<double>::infinity();
+  store.readEstimateChunks(rec, [&](int seq, std::uint64_t n, const QByteArray& data) {
+    if (seq != expectedSeq)
+      throw damaged("chunk " + std::to_string(expectedSeq) + " is missing");
+    ++expectedSeq;
+    EstimateColumns block;
+    try {
+      block = EstimateCodec::decode(std::string(data.constData(), data.size()), n);
+    } catch (const std::runtime_error& e) {
+      throw damaged("chunk " + std::to_string(seq) + ": " + e.what());
+    }
+    if (block.size() > 0 && block.t.front() < lastT)
+      throw damaged("chunk " + std::to_string(seq) + " starts before the previous one ends");
+    if (block.size() > 0) lastT = block.t.back();
+    seen += n;
+    rows(std::move(block));
+  });
+  if (seen != static_cast<std::uint64_t>(total))
+    throw damaged("its chunks hold " + std::to_string(seen) + " rows, its parameters say " +
+                  std::to_string(static_cast<std::uint64_t>(total)));
+}
+
+std::string versionText(qint64 sessionId, int version) {
+  return sessionText(sessionId) + ", estimates version " + std::to_string(version) + ": ";
+}
+
+}  // namespace
+
 std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version) {
   const std::optional<EstimateRecord> rec = store.estimates(sessionId, version);
   if (!rec) return std::nullopt;
-  const std::string where =
-      sessionText(sessionId) + ", estimates version " + std::to_string(rec->version) + ": ";
-  if (rec->codec != EstimateCodec::kName)
-    throw StorageError(Kind::Corrupt, where + "unknown codec '" + rec->codec.toStdString() +
-                                          "' (written by a newer ArmTrack?)");
-  const std::optional<QJsonObject> params = parseObject(rec->paramsJson);
-  const double rows = params ? params->value("rows").toDouble(-1.0) : -1.0;
-  if (!(rows >= 0) || rows != std::floor(rows) || rows > 1e12)
-    throw StorageError(Kind::Corrupt, where + "its parameters do not say how many rows it holds" +
-                                          " (run 'session reestimate')");
-  EstimateColumns columns;
-  try {
-    columns = EstimateCodec::decode(std::string(rec->data.constData(), rec->data.size()),
-                                    static_cast<std::uint64_t>(rows));
-  } catch (const std::exception& e) {
-    throw StorageError(Kind::Corrupt, where + e.what() + " (run 'session reestimate')");
-  }
   StoredAnalysis a;
   a.sessionId = sessionId;
   a.version = rec->version;
   a.createdAt = rec->createdAt;
   a.paramsJson = rec->paramsJson;
-  a.t = std::move(columns.t);
-  a.joints = std::move(columns.th);
-  a.sd = std::move(columns.sd);
-  a.status = std::move(columns.status);
+  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
+                       [&](EstimateColumns&& block) {
+                         if (a.t.empty()) {
+                           a.t = std::move(block.t);
+                           a.joints = std::move(block.th);
+                           a.sd = std::move(block.sd);
+                           a.status = std::move(block.status);
+                           return;
+                         }
+                         a.t.insert(a.t.end(), block.t.begin(), block.t.end());
+                         a.joints.insert(a.joints.end(), block.th.begin(), block.th.end());
+                         a.sd.insert(a.sd.end(), block.sd.begin(), block.sd.end());
+                         a.status.insert(a.status.end(), block.status.begin(), block.status.end());
+                       });
   a.clinical = angleSeriesFromJoints(a.t, a.joints);
   if (const auto m = store.latestMetrics(sessionId)) {
     const std::optional<QJsonObject> angles = parseObject(m->first);
@@ -444,28 +636,134 @@ std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessio
 
 namespace armtrack::storage {
 
-SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId) {
+SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId, SeriesRows rows) {
   SessionAngles out;
   out.info = store.session(sessionId);
-  const std::optional<StoredAnalysis> a = latestAnalysis(store, sessionId);
-  if (!a)
+  const std::optional<EstimateRecord> rec = store.estimates(sessionId, 0);
+  if (!rec)
     throw StorageError(Kind::NotFound, sessionText(sessionId) +
                                            " has not been analysed: run 'session reestimate " +
                                            std::to_string(sessionId) + "' (therapists)");
   const RecordingMeta meta = store.recordingMeta(sessionId);
   out.side = meta.side;
-  out.version = a->version;
+  out.version = rec->version;
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp = metricsParams(store, out.info, meta.geometry, protocol);
-  MetricRows rows = metricRows(a->t, a->joints, a->sd, a->status, sessionId);
+  // The rows are gathered as analyseSession gathered them, so the metrics come out the same.
+  MetricRowCollector collector(/*withSd=*/true, rows == SeriesRows::All);
+  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
+                       [&](EstimateColumns&& block) {
+                         for (std::size_t i = 0; i < block.size(); ++i)
+                           collector.add(block.t[i], block.th[i], block.sd[i], block.status[i]);
+                       });
+  MetricRows settled = collector.finish(sessionId, &out.series);
   try {
-    out.metrics = computeSessionMetrics(rows.series, mp);
+    out.metrics = computeSessionMetrics(settled.metricSeries, mp);
   } catch (const std::invalid_argument& e) {
     throw StorageError(Kind::Usage,
                        sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
   }
-  out.series = std::move(rows.series);
-  out.sdRad = std::move(rows.sdRad);
+  out.sdRad = std::move(settled.sdRad);
+  return out;
+}
+
+}  // namespace armtrack::storage
+
+namespace armtrack::storage {
+
+namespace {
+
+double radOf(const QJsonObject& o, const char* key) {
+  return o.value(key).toDouble(0.0) * kDegToRad;
+}
+
+IntervalMetrics intervalFromJson(const QJsonObject& angles) {
+  IntervalMetrics m;
+  for (int a = 0; a < kNumClinicalAngles; ++a) {
+    const QJsonObject o = angles.value(angleKey(a)).toObject();
+    AngleMetrics& x = m.angle[static_cast<std::size_t>(a)];
+    x.minRad = radOf(o, "min_deg");
+    x.maxRad = radOf(o, "max_deg");
+    x.romRad = radOf(o, "rom_deg");
+    x.peakVelocityRadPerS = radOf(o, "peak_velocity_deg_s");
+    x.meanVelocityRadPerS = radOf(o, "mean_velocity_deg_s");
+    x.movementTimeS = o.value("movement_time_s").toDouble(0.0);
+  }
+  return m;
+}
+
+SmoothnessValue smoothnessFromJson(const QJsonObject& o, const char* name) {
+  const QString status = o.value(QString(name) + "_status").toString();
+  for (const SmoothnessStatus s :
+       {SmoothnessStatus::Ok, SmoothnessStatus::TooShort, SmoothnessStatus::NonFinite,
+        SmoothnessStatus::NoMovement, SmoothnessStatus::ZeroJerk})
+    if (status == QLatin1String(toString(s)))
+      return {s == SmoothnessStatus::Ok ? o.value(name).toDouble(0.0) : 0.0, s};
+  return {};
+}
+
+}  // namespace
+
+SessionMetrics sessionMetricsFromJson(const QJsonObject& m) {
+  SessionMetrics out;
+  out.session = intervalFromJson(m.value("angles").toObject());
+  out.durationS = m.value("duration_s").toDouble(0.0);
+  out.samples = static_cast<std::size_t>(m.value("samples").toInteger(0));
+  out.rejectedNonFinite = static_cast<std::size_t>(m.value("rejected_non_finite").toInteger(0));
+  out.gaps = static_cast<std::size_t>(m.value("gaps").toInteger(0));
+  out.session.samples = out.samples;
+  out.sparc = smoothnessFromJson(m, "sparc");
+  out.ldlj = smoothnessFromJson(m, "ldlj");
+  const QJsonObject reps = m.value("repetitions").toObject();
+  RepetitionResult& r = out.repetitions;
+  for (int a = 0; a < kNumClinicalAngles; ++a)
+    if (reps.value("primary_angle").toString() == angleKey(a)) r.primaryAngle = a;
+  r.negativeDirection = reps.value("direction").toString() == "negative";
+  r.referenceRad = radOf(reps, "reference_deg");
+  r.fullCount = static_cast<std::size_t>(reps.value("full").toInteger(0));
+  r.partialCount = static_cast<std::size_t>(reps.value("partial").toInteger(0));
+  r.truncated = static_cast<std::size_t>(reps.value("truncated").toInteger(0));
+  for (const QJsonValue& v : reps.value("list").toArray()) {
+    const QJsonObject o = v.toObject();
+    Repetition rep;
+    rep.startS = o.value("start_s").toDouble(0.0);
+    rep.peakS = o.value("peak_s").toDouble(0.0);
+    rep.endS = o.value("end_s").toDouble(0.0);
+    rep.excursionRad = radOf(o, "excursion_deg");
+    rep.partial = o.value("partial").toBool();
+    rep.metrics = intervalFromJson(o.value("angles").toObject());
+    r.repetitions.push_back(rep);
+    out.repetitionSmoothness.push_back({smoothnessFromJson(o, "sparc"), smoothnessFromJson(o, "ldlj")});
+  }
+  return out;
+}
+
+std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 sessionId) {
+  const std::optional<ClinicalStore::StoredSeries> series = store.latestMetricSeries(sessionId);
+  if (!series) return std::nullopt;
+  const std::optional<QJsonObject> metrics = latestMetricsJson(store, sessionId);
+  if (!metrics) return std::nullopt;
+  const int version = metrics->value("estimate_version").toInt();
+  if (version != store.estimateVersions(sessionId)) return std::nullopt;
+  const std::string where =
+      sessionText(sessionId) + ", metrics of estimates version " + std::to_string(version) + ": ";
+  if (series->codec != kMetricRowsCodec)
+    throw StorageError(Kind::Corrupt, where + "unknown codec '" + series->codec.toStdString() +
+                                          "' of its rows (written by a newer ArmTrack?)");
+  SessionAngles out;
+  out.info = store.session(sessionId);
+  out.side = store.recordingMeta(sessionId).side;
+  out.version = version;
+  out.metrics = sessionMetricsFromJson(*metrics);
+  try {
+    const EstimateColumns rows = EstimateCodec::decode(
+        std::string(series->data.constData(), static_cast<std::size_t>(series->data.size())),
+        static_cast<std::uint64_t>(out.metrics.samples + out.metrics.rejectedNonFinite));
+    out.series = angleSeriesFromJoints(rows.t, rows.th);
+  } catch (const std::runtime_error& e) {
+    throw StorageError(Kind::Corrupt, where + "its rows: " + e.what() +
+                                          " (run 'session reestimate')");
+  }
   return out;
 }
 

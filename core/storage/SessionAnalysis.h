@@ -8,6 +8,7 @@
 #include <atomic>
 #include <functional>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/calibration/Calibration.h"
@@ -19,6 +20,13 @@ namespace armtrack::storage {
 
 /// The "format" field of the metrics JSON this version writes.
 inline constexpr const char* kMetricsFormat = "armtrack-metrics-v1";
+/// The clinical metrics use at most one estimate per 1/kMetricsRateHz of time (Hz): the first of
+/// each such cell of the settled rows. Arm movements lie below 10 Hz and the metrics smooth over
+/// 0.3 s, so a faster sensor adds memory and time but no information (docs/storage.md).
+inline constexpr double kMetricsRateHz = 100.0;
+/// The codec of the rows the metrics were computed from, stored with them (metrics.series): an
+/// EstimateCodec blob of their times and joint angles.
+inline constexpr const char* kMetricRowsCodec = "metric-rows-f64-zstd-v1";
 
 struct AnalysisOptions {
   /// Overrides the session's stored filter (else the session's, else EKF).
@@ -36,6 +44,14 @@ struct AnalysisOptions {
   /// Checked while estimating; when it reads true the analysis stops and stores nothing
   /// (AnalysisResult::cancelled). May be set from another thread. May be null.
   const std::atomic<bool>* cancel = nullptr;
+  /// Where the samples come from. Empty: the stored recording, read chunk by chunk. Otherwise a
+  /// function that hands its argument the session's samples in time order, a block at a time,
+  /// until the argument returns false, and returns whether it handed them all (as
+  /// ClinicalStore::readRecordingChunks does): an import analyses the rows as it stores them
+  /// (app/cli). It throws to abandon the analysis.
+  std::function<bool(const std::function<bool(std::span<const ArmSample>)>&)> samples;
+  /// The rows samples will hand over, for progress (0: the session's stored row count).
+  std::size_t expectedRows = 0;
 };
 
 struct AnalysisResult {
@@ -107,8 +123,23 @@ struct SessionAngles {
   std::vector<ClinicalRow> sdRad;  ///< their standard deviations (rad), one per row of series
   SessionMetrics metrics;
 };
-/// Throws StorageError: NotFound (no such session, or never analysed: the message says to run
-/// `session reestimate`), Corrupt and Usage as latestAnalysis and analyseSession.
-SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId);
+/// The newest analysis as stored, for a report: the rows its metrics were computed from (clinical
+/// angles; no standard deviations) and the metrics read back from their JSON, without decoding
+/// the estimates or computing anything again. Nothing when the newest metrics have no stored
+/// rows (analyses made before schema version 6: use sessionAngles) or belong to an older version
+/// of the estimates. Throws StorageError(Corrupt) when what is stored cannot be read.
+std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 sessionId);
+/// The metrics of a stored metrics JSON (latestMetricsJson's form) as SessionMetrics: what the
+/// reports draw. Fields the JSON does not hold (sample indices, hysteresis levels) stay zero.
+SessionMetrics sessionMetricsFromJson(const QJsonObject& metrics);
+
+/// Which rows sessionAngles puts in its series: those the metrics use (at most kMetricsRateHz a
+/// second; reports) or every settled row (exports). The metrics are the same either way.
+enum class SeriesRows { Metrics, All };
+/// Reads the estimates a chunk at a time. Throws StorageError: NotFound (no such session, or
+/// never analysed: the message says to run `session reestimate`), Corrupt and Usage as
+/// latestAnalysis and analyseSession.
+SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId,
+                            SeriesRows rows = SeriesRows::Metrics);
 
 }  // namespace armtrack::storage

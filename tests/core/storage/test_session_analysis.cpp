@@ -3,6 +3,8 @@
 // database and checked against the true angles; versions and history; estimates read back bit
 // for bit as estimating the CSV gives them; damaged blobs; settings; access; cancelling.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <iostream>
 
@@ -300,16 +302,33 @@ TEST(SessionAnalysis, DamagedEstimatesGiveAClearError) {
   ASSERT_TRUE(latestAnalysis(*f.store, id).has_value());
   const std::string where = "session " + std::to_string(id) + ", estimates version 1";
 
-  QSqlQuery q = f.db->exec("SELECT data FROM estimates WHERE session_id = ?", {id});
+  // The estimates are stored as chunks: damage the one there is.
+  const QString chunk = "UPDATE estimate_chunks SET data = ? WHERE estimate_id IN (SELECT id FROM "
+                        "estimates WHERE session_id = ?)";
+  QSqlQuery q = f.db->exec(
+      "SELECT c.data FROM estimate_chunks c JOIN estimates e ON e.id = c.estimate_id WHERE "
+      "e.session_id = ?",
+      {id});
   ASSERT_TRUE(q.next());
   QByteArray blob = q.value(0).toByteArray();
+  ASSERT_FALSE(q.next());  // 3 s are one chunk
   q.finish();
+  ASSERT_GT(blob.size(), 100);
   blob[blob.size() / 2] = static_cast<char>(blob[blob.size() / 2] ^ 0x21);
-  f.db->exec("UPDATE estimates SET data = ? WHERE session_id = ?", {blob, id});
-  expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, where);
+  f.db->exec(chunk, {blob, id});
+  expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, where + ": chunk 0");
 
-  f.db->exec("UPDATE estimates SET data = ? WHERE session_id = ?", {QByteArray("junk"), id});
+  f.db->exec(chunk, {QByteArray("junk"), id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, where);
+  // A missing chunk, and rows that do not add up.
+  f.db->exec("UPDATE estimate_chunks SET seq = 1 WHERE estimate_id IN (SELECT id FROM estimates "
+             "WHERE session_id = ?)",
+             {id});
+  expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "chunk 0 is missing");
+  f.db->exec("DELETE FROM estimate_chunks WHERE estimate_id IN (SELECT id FROM estimates WHERE "
+             "session_id = ?)",
+             {id});
+  expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "chunks hold 0 rows");
   f.db->exec("UPDATE estimates SET params_json = '{}' WHERE session_id = ?", {id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "how many rows");
   f.db->exec("UPDATE estimates SET codec = 'est-f128-v9' WHERE session_id = ?", {id});
@@ -465,3 +484,138 @@ TEST(SessionAnalysis, CancelStoresNothingAndNoImuIsAClearError) {
   expectError([&] { analyseSession(*f.store, none); }, Kind::Usage, "IMU");
   EXPECT_EQ(f.store->estimateVersions(none), 0);
 }
+
+namespace {
+
+/// Rows of a raw query's single number.
+qint64 count(const Fixture& f, const QString& sql) {
+  const auto rows = rawQuery(f.path, sql);
+  return rows.empty() ? -1 : rows[0][0].toLongLong();
+}
+
+/// A process id that no process has: a child that has exited and been reaped.
+qint64 deadPid() {
+  const pid_t child = ::fork();
+  if (child == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  return child;
+}
+
+}  // namespace
+
+// Estimates longer than one chunk (65,536 rows) go to the database a chunk at a time as the filter
+// makes them, and read back bit for bit as estimating the CSV gives them. The metrics use the
+// settled rows at most 100 a second, the stored estimates every row.
+TEST_P(Engines, LongEstimatesAreStoredInChunksAndReadBackBitForBit) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const Recording rec = simulateTo(f.file("long.csv"), 70.0);
+  const qint64 id = f.store->importRecording(f.file("long.csv"), "P1");
+  const AnalysisResult r = analyseSession(*f.store, id);
+  const std::optional<StoredAnalysis> a = latestAnalysis(*f.store, id);
+  ASSERT_TRUE(a.has_value());
+  expectSameEstimates(*a, estimateDirectly(rec, {}));
+  EXPECT_EQ(count(f, QString("SELECT count(*) FROM estimate_chunks c JOIN estimates e ON e.id = "
+                             "c.estimate_id WHERE e.session_id = %1")
+                         .arg(id)),
+            static_cast<qint64>((a->t.size() + 65535) / 65536));
+  EXPECT_GE(a->t.size(), 65536u * 1);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimates WHERE complete = 0"), 0);
+  // At most one row per 10 ms cell: about 100 a second over the settled 69 s.
+  const qint64 used = r.metricsJson["samples"].toInteger();
+  EXPECT_LE(used, 70 * 100 + 1);
+  EXPECT_GE(used, 68 * 100);
+  // What the reports and exports read gives the same metrics as the analysis stored.
+  const SessionAngles forReport = sessionAngles(*f.store, id);
+  const SessionAngles forExport = sessionAngles(*f.store, id, SeriesRows::All);
+  EXPECT_EQ(static_cast<qint64>(forReport.series.t.size()), used);
+  EXPECT_GT(forExport.series.t.size(), 60000u);
+  EXPECT_EQ(forExport.sdRad.size(), forExport.series.t.size());
+  for (const SessionAngles* s : {&forReport, &forExport}) {
+    EXPECT_EQ(s->metrics.samples, static_cast<std::size_t>(used));
+    for (int k = 0; k < kNumClinicalAngles; ++k)
+      EXPECT_EQ(s->metrics.session.angle[k].romRad, r.metrics.session.angle[k].romRad);
+    EXPECT_EQ(s->metrics.repetitions.repetitions.size(), r.metrics.repetitions.repetitions.size());
+  }
+}
+
+// The analysis state: a complete session is pending until its estimates and metrics are stored,
+// an interrupted one is analysed only when asked, one whose recording cannot be analysed is
+// "failed" with the reason; a cancelled analysis leaves nothing behind, not even a draft.
+TEST_P(Engines, AnalysisStateFollowsWhatWasStored) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  simulateTo(f.file("a.csv"), 4.0);
+  const qint64 a = f.store->importRecording(f.file("a.csv"), "P1");
+  const qint64 b = f.store->importRecording(f.file("a.csv"), "P1");
+  const qint64 live = f.store->beginSession("P1", "", "{}", 3);
+  EXPECT_EQ(f.store->session(a).analysis, kAnalysisPending);
+  EXPECT_EQ(f.store->session(a).origin, kOriginImport);
+  EXPECT_EQ(f.store->session(live).origin, kOriginLive);
+  EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{a, b}));  // not the one recording
+  f.store->finishSession(live, kStatusInterrupted);
+  EXPECT_EQ(f.store->session(live).analysis, kAnalysisNone);
+
+  std::atomic<bool> cancel{false};
+  AnalysisOptions options;
+  options.cancel = &cancel;
+  options.progress = [&](int p) {
+    if (p >= 40) cancel = true;
+  };
+  ASSERT_TRUE(analyseSession(*f.store, a, options).cancelled);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimates"), 0);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimate_chunks"), 0);
+  EXPECT_EQ(f.store->session(a).analysis, kAnalysisPending);
+
+  analyseSession(*f.store, a);
+  EXPECT_EQ(f.store->session(a).analysis, kAnalysisDone);
+  EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{b}));
+
+  // Kinect rows only: nothing to estimate from, for good: "failed", with why, and not pending.
+  Recording rec = simulateTo(f.file("b.csv"), 1.0);
+  std::vector<ArmSample> optical;
+  for (ArmSample s : rec.samples) {
+    s.upperArm.reset();
+    s.forearm.reset();
+    if (s.elbow || s.wrist) optical.push_back(s);
+  }
+  rec.samples = optical;
+  writeRecording(f.file("c.csv"), rec);
+  const qint64 none = f.store->importRecording(f.file("c.csv"), "P1");
+  expectError([&] { analyseSession(*f.store, none); }, Kind::Usage, "IMU");
+  EXPECT_EQ(f.store->session(none).analysis, kAnalysisFailed);
+  EXPECT_NE(f.store->session(none).analysisNote.indexOf("IMU"), -1);
+  EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{b}));
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimates WHERE complete = 0"), 0);
+}
+
+// An analysis whose process died left a draft of estimates and its claim on the session: opening
+// the records again removes the draft, and the session is pending for the next analysis, which
+// numbers its estimates as if the draft had never been.
+TEST_P(Engines, ADeadAnalysisLeavesNoDraftAndItsSessionPending) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  simulateTo(f.file("a.csv"), 3.0);
+  const qint64 id = f.store->importRecording(f.file("a.csv"), "P1");
+  const ClinicalStore::EstimatesDraft draft = f.store->beginEstimates(id, "est-f64-zstd-v1-chunks");
+  f.store->appendEstimateChunk(draft, 0, 1, QByteArray("not a blob"));
+  const qint64 dead = deadPid();
+  rawSql(f.path, {QString("UPDATE estimates SET writer_pid = %1 WHERE id = %2").arg(dead).arg(draft.id),
+                  QString("UPDATE sessions SET analysis_pid = %1 WHERE id = %2").arg(dead).arg(id)});
+  f.close();
+  f.db = std::make_unique<Database>(DatabaseUrl::parse(f.path), Database::Options{});
+  f.store = std::make_unique<ClinicalStore>(*f.db);
+  f.store->signIn("admin", kAdminPassword);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimates"), 0);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimate_chunks"), 0);
+  EXPECT_EQ(count(f, QString("SELECT count(*) FROM sessions WHERE analysis_pid IS NULL AND id = %1")
+                         .arg(id)),
+            1);
+  EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{id}));
+  EXPECT_EQ(analyseSession(*f.store, id).estimateVersion, 1);
+  EXPECT_EQ(f.store->session(id).analysis, kAnalysisDone);
+}
+
+INSTANTIATE_TEST_SUITE_P(Records, Engines, ::testing::Values(Engine::Sqlite, Engine::Postgres),
+                         engineName);
