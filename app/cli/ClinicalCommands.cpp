@@ -75,7 +75,7 @@ int dbInit(const std::vector<std::string>& rest, std::ostream& out, std::ostream
 int dbCheck(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {
   const Args a("db check", rest, withDb({}));
   if (a.help()) return out << kDbHelp, 0;
-  ClinicalContext c(a, {}, true);
+  ClinicalContext c(a, {}, true, /*runPending=*/false);
   const QString verdict = c.db().integrityCheck();
   if (verdict != "ok") throw std::runtime_error("integrity check failed: " + ss(verdict));
   out << "ok: " << ss(c.db().url().display()) << ", schema version " << c.db().schemaVersion()
@@ -100,7 +100,7 @@ int dbBackup(const std::vector<std::string>& rest, std::ostream& out, std::ostre
   const Args a("db backup", rest, withDb({{"--out", true}}));
   if (a.help()) return out << kDbHelp, 0;
   const std::string target = a.required("--out");
-  ClinicalContext c(a, {}, true);
+  ClinicalContext c(a, {}, true, /*runPending=*/false);
   c.db().backup(qs(target));
   c.store().audit("backup", "database", c.db().url().display(), qs(target));
   err << "db backup: wrote " << target << "\n";

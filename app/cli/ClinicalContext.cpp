@@ -10,7 +10,24 @@
 
 namespace armtrack::cli {
 
-ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options options, bool signIn) {
+namespace {
+thread_local std::ostream* t_notices = nullptr;
+}  // namespace
+
+std::ostream& noticeStream() {
+  return t_notices ? *t_notices : std::cerr;
+}
+
+ScopedNoticeStream::ScopedNoticeStream(std::ostream& err) : m_previous(t_notices) {
+  t_notices = &err;
+}
+
+ScopedNoticeStream::~ScopedNoticeStream() {
+  t_notices = m_previous;
+}
+
+ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options options, bool signIn,
+                                 bool runPending) {
   if (!QCoreApplication::instance()) {
     static int argc = 1;
     static char name[] = "armtrack-cli";
@@ -30,6 +47,7 @@ ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options optio
     m_password = passwordFromUser("account '" + user + "'");
     m_store->signIn(qs(user), m_password);
     m_user = user;
+    if (runPending) analysePendingSessions(*m_store, noticeStream());
   }
 }
 

@@ -9,6 +9,7 @@
 
 #include "app/cli/Args.h"
 #include "core/storage/ClinicalStore.h"
+#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::cli {
 
@@ -24,7 +25,11 @@ inline std::vector<OptionSpec> withDb(std::vector<OptionSpec> specs) {
 class ClinicalContext {
  public:
   /// Opens --db with options; with signIn, signs in as --user (password: passwordFromUser()).
-  ClinicalContext(const Args& a, storage::Database::Options options, bool signIn);
+  /// A staff member's sign-in first runs the analyses left pending (analysePendingSessions, told
+  /// on noticeStream()) unless runPending is false (checks, backups, and commands that analyse
+  /// what they are told anyway).
+  ClinicalContext(const Args& a, storage::Database::Options options, bool signIn,
+                  bool runPending = true);
   storage::Database& db() { return *m_db; }
   storage::ClinicalStore& store() { return *m_store; }
 
@@ -55,10 +60,38 @@ qint64 sessionIdFrom(const Args& a, const std::string& text);
 std::string passwordFromUser(const std::string& what);
 
 /// Estimates a session just stored (imported or recorded) and stores its metrics, telling err
-/// how it went; a session that cannot be analysed stays stored, with a warning saying why. Home
-/// accounts do not analyse: err says a therapist can.
-void analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
+/// how it went. A session whose recording cannot be analysed stays stored, with a warning
+/// saying why (true); an analysis stopped by the database (a lock, a full disk) leaves the
+/// session's analysis pending and returns false after saying so: the command then fails. Home
+/// accounts do not analyse: err says when it will be.
+bool analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
                        std::ostream& err);
+/// Tells err what an analysis stored (version, filter, repetitions, smoothness), as one line.
+void describeAnalysis(const storage::AnalysisResult& r, const std::string& command,
+                      std::ostream& err);
+/// Tells err why session id's analysis failed: true when the recording itself cannot be
+/// analysed (a warning: the session is marked so), false when the database stopped it (an
+/// error: the analysis stays pending for the next command).
+bool reportAnalysisFailure(qint64 id, const storage::StorageError& e, std::ostream& err);
+/// Analyses the complete sessions whose analysis is pending (their program ended before it was
+/// stored), telling err; stops at the first that the database stops. Staff only; nothing for a
+/// home account.
+void analysePendingSessions(storage::ClinicalStore& store, std::ostream& err);
+
+/// Where a ClinicalContext tells what it did on its own (pending analyses): the err stream of
+/// the running command (runCli sets it), else standard error.
+std::ostream& noticeStream();
+/// Sets noticeStream() for the lifetime of the object.
+class ScopedNoticeStream {
+ public:
+  explicit ScopedNoticeStream(std::ostream& err);
+  ~ScopedNoticeStream();
+  ScopedNoticeStream(const ScopedNoticeStream&) = delete;
+  ScopedNoticeStream& operator=(const ScopedNoticeStream&) = delete;
+
+ private:
+  std::ostream* m_previous;
+};
 
 /// The subcommand (first word) and the words after it; help when there is none.
 inline std::pair<std::string, std::vector<std::string>> splitSubcommand(

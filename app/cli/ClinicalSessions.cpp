@@ -7,6 +7,7 @@
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
+#include "app/cli/ImportPipeline.h"
 #include "app/cli/SessionBatch.h"
 #include "app/cli/Text.h"
 #include "core/kinematics/ClinicalAngles.h"
@@ -72,7 +73,19 @@ QJsonObject sessionJson(const storage::SessionInfo& s) {
                      {"setting", s.setting},
                      {"pain_score", s.painScore ? QJsonValue(*s.painScore) : QJsonValue()},
                      {"patient_comment", s.patientComment},
-                     {"home_summary", objectOf(s.homeSummaryJson)}};
+                     {"home_summary", objectOf(s.homeSummaryJson)},
+                     {"analysis", s.analysis},
+                     {"analysis_note", s.analysisNote}};
+}
+
+// The status as a person reads it: a complete session whose analysis is not stored says so.
+std::string statusText(const storage::SessionInfo& s) {
+  std::string text = ss(s.status);
+  if (s.analysis == storage::kAnalysisPending && s.status == storage::kStatusComplete)
+    text += " (analysis pending)";
+  else if (s.analysis == storage::kAnalysisFailed)
+    text += " (cannot be analysed)";
+  return text;
 }
 
 // Estimates the session and stores its metrics, reporting on err.
@@ -87,6 +100,14 @@ storage::AnalysisResult analyse(storage::ClinicalStore& store, qint64 id,
       err << "progress: " << nextPercent << "%\n";
   };
   const storage::AnalysisResult r = storage::analyseSession(store, id, options);
+  describeAnalysis(r, command, err);
+  return r;
+}
+
+}  // namespace
+
+void describeAnalysis(const storage::AnalysisResult& r, const std::string& command,
+                      std::ostream& err) {
   const QJsonObject& m = r.metricsJson;
   const QJsonObject reps = m["repetitions"].toObject();
   err << command << ": estimates and metrics version " << r.estimateVersion << " ("
@@ -98,8 +119,9 @@ storage::AnalysisResult analyse(storage::ClinicalStore& store, qint64 id,
       << ss(reps["primary_angle"].toString()) << ", SPARC "
       << (m["sparc"].isDouble() ? fixed(m["sparc"].toDouble(), 2) : std::string("-")) << ", LDLJ "
       << (m["ldlj"].isDouble() ? fixed(m["ldlj"].toDouble(), 2) : std::string("-")) << "\n";
-  return r;
 }
+
+namespace {
 
 int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("session import", rest, withDb({{"--patient", true}, {"--protocol", true}}));
@@ -107,16 +129,36 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
   const std::string csv = a.single("recording");
   const std::string patient = a.required("--patient");
   ClinicalContext c(a, {}, true);
-  const qint64 id =
-      c.store().importRecording(csv, qs(patient), qs(a.value("--protocol").value_or("")));
+  const PipelinedImport imported =
+      importAndAnalyse(c, csv, qs(patient), qs(a.value("--protocol").value_or("")), err);
+  const qint64 id = imported.id;
+  for (const std::string& w : imported.report.warnings)
+    err << "warning: " << csv << ": " << w << "\n";
   const storage::SessionInfo s = c.store().session(id);
   err << "session import: " << s.sampleRows << " rows in " << s.chunks << " chunks, "
-      << s.storedBytes << " bytes stored\n";
+      << s.storedBytes << " bytes stored"
+      << (s.status == storage::kStatusInterrupted
+              ? std::string(" as an interrupted session (the file ends early)")
+              : std::string())
+      << "\n";
   // The recording is stored whatever happens next: its id is printed even when it cannot be
   // analysed, with what to do about it.
-  analyseNewSession(c.store(), id, "session import", err);
+  bool analysed = true;
+  if (imported.analysis) {
+    describeAnalysis(*imported.analysis, "session import", err);
+  } else if (imported.analysisError) {
+    try {
+      std::rethrow_exception(imported.analysisError);
+    } catch (const storage::StorageError& e) {
+      analysed = reportAnalysisFailure(id, e, err);
+    } catch (const std::exception& e) {
+      analysed = reportAnalysisFailure(id, storage::StorageError(storage::StorageError::Kind::Io, e.what()), err);
+    }
+  } else {
+    analysed = analyseNewSession(c.store(), id, "session import", err);
+  }
   out << id << "\n";
-  return 0;
+  return analysed ? 0 : 1;
 }
 
 int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
@@ -159,7 +201,7 @@ int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, s
     }
   }
   options.noOptical = a.flag("--no-optical");
-  ClinicalContext c(a, {}, true);
+  ClinicalContext c(a, {}, true, /*runPending=*/false);
   if (batch) {
     if (const auto patient = a.value("--patient")) {
       // Every session with a recording; one still being recorded is left to its recorder.
@@ -193,7 +235,7 @@ int sessionList(const std::vector<std::string>& rest, std::ostream& out, std::os
   QJsonArray list;
   for (const storage::SessionInfo& s : c.store().listSessions(qs(patient))) {
     if (!a.flag("--json"))
-      out << s.id << "\t" << ss(s.startedAt) << "\t" << ss(s.status) << "\t" << s.durationS
+      out << s.id << "\t" << ss(s.startedAt) << "\t" << statusText(s) << "\t" << s.durationS
           << " s\t" << ss(s.protocolName) << "\n";
     list.append(sessionJson(s));
   }
@@ -252,7 +294,7 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
     printJson(out, QJsonDocument(o));
     return 0;
   }
-  out << "session " << s.id << "\npatient: " << ss(s.patientCode) << "\nstatus: " << ss(s.status)
+  out << "session " << s.id << "\npatient: " << ss(s.patientCode) << "\nstatus: " << statusText(s)
       << "\nstarted: " << ss(s.startedAt) << "\nduration: " << s.durationS
       << " s\nsamples: " << s.imuSamples << " (rows " << s.sampleRows << ", " << s.chunks
       << " chunks, " << s.storedBytes << " bytes)\nprotocol: " << ss(s.protocolName)
@@ -266,6 +308,8 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
   if (s.setting == storage::kSettingHome)
     out << "pain score: " << (s.painScore ? std::to_string(*s.painScore) : std::string("-"))
         << "\npatient's comment: " << ss(s.patientComment) << "\n";
+  if (s.analysis == storage::kAnalysisFailed)
+    out << "analysis: failed: " << ss(s.analysisNote) << "\n";
   if (metrics)
     printMetrics(out, *metrics);
   else
@@ -275,17 +319,44 @@ int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::os
 
 }  // namespace
 
-void analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
+bool analyseNewSession(storage::ClinicalStore& store, qint64 id, const std::string& command,
                        std::ostream& err) {
   if (store.user().role == storage::Role::Home) {
-    err << command << ": not analysed (a home account does not estimate sessions); a "
-        << "therapist can run 'session reestimate " << id << "'\n";
-    return;
+    err << command << ": not analysed (a home account does not estimate sessions); it will be "
+        << "analysed when a therapist next uses ArmTrack, or with 'session reestimate " << id
+        << "'\n";
+    return true;
   }
   try {
     analyse(store, id, {}, command, err);
+    return true;
   } catch (const storage::StorageError& e) {
-    err << "warning: session " << id << " is stored but not analysed: " << e.what() << "\n";
+    return reportAnalysisFailure(id, e, err);
+  }
+}
+
+bool reportAnalysisFailure(qint64 id, const storage::StorageError& e, std::ostream& err) {
+  using Kind = storage::StorageError::Kind;
+  if (e.kind() == Kind::Usage || e.kind() == Kind::Corrupt) {
+    // The recording itself cannot be analysed: the session says so (analysis "failed").
+    err << "warning: session " << id << " is stored but cannot be analysed: " << e.what()
+        << "\n";
+    return true;
+  }
+  // A lock, a full disk, a lost server: nothing of the analysis was kept and it stays pending,
+  // so the next command runs it again.
+  err << "armtrack-cli: error: session " << id << " is stored, but its analysis failed: "
+      << e.what() << "; it stays pending and runs again with the next command (or 'session "
+      << "reestimate " << id << "')\n";
+  return false;
+}
+
+void analysePendingSessions(storage::ClinicalStore& store, std::ostream& err) {
+  if (store.user().role == storage::Role::Home) return;
+  for (const qint64 id : store.pendingAnalyses()) {
+    err << "session " << id << ": its analysis had not been done (the program that stored it "
+        << "ended first); analysing it now\n";
+    if (!analyseNewSession(store, id, "analysis of session " + std::to_string(id), err)) return;
   }
 }
 

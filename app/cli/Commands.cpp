@@ -16,6 +16,7 @@
 #include "app/cli/Camera.h"
 #include "app/cli/Cli.h"
 #include "app/cli/Clinical.h"
+#include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
 #include "app/cli/Estimate.h"
 #include "app/cli/Live.h"
@@ -352,6 +353,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
 }  // namespace
 
 int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  const ScopedNoticeStream notices(err);
   const int code = dispatch(args, out, err);
   // A report that never reached its reader (a full disk, /dev/full, a closed file) is a failure.
   errno = 0;

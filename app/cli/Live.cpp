@@ -163,12 +163,17 @@ const std::vector<OptionSpec> kSessionOptions = {
 void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent, double rssMb,
                 std::optional<std::uint64_t> recorded = std::nullopt) {
   char line[256];
+  // Lost: rows dropped on the way to the recorder, and, once the recording is read back, rows
+  // the recorder was given that did not reach it (a full disk, a refused write).
+  const std::uint64_t stored = recorded.value_or(s.recordedRows);
+  const std::uint64_t notStored =
+      recorded && *recorded < s.rowsToRecord ? s.rowsToRecord - *recorded : 0;
   std::snprintf(line, sizeof line,
                 "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n", s.elapsed,
                 static_cast<unsigned long long>(s.rows),
                 static_cast<unsigned long long>(s.estimates),
-                static_cast<unsigned long long>(recorded.value_or(s.recordedRows)),
-                static_cast<unsigned long long>(s.lost()));
+                static_cast<unsigned long long>(stored),
+                static_cast<unsigned long long>(s.lost() + notStored));
   out << line;
   for (std::size_t i = 0; i < s.streams.size(); ++i) {
     const session::StreamStats& st = s.streams[i];
@@ -424,6 +429,7 @@ int finishRun(const SessionSetup& setup, RecordsTarget& target, const session::S
   std::string unreadable;
   std::string where = o.out;
   bool finishFailed = false;
+  bool analysisFailed = false;
   if (setup.toDb) {
     // Complete, also after Ctrl-C (the user ended it), when every row is stored; interrupted
     // when rows were lost. If the status cannot be written the session stays "recording" and is
@@ -445,7 +451,8 @@ int finishRun(const SessionSetup& setup, RecordsTarget& target, const session::S
           << "; it will be marked interrupted when the database is next opened\n";
       finishFailed = true;
     }
-    if (whole && !finishFailed) analyseNewSession(store, target.sessionId, "record", err);
+    if (whole && !finishFailed && !analyseNewSession(store, target.sessionId, "record", err))
+      analysisFailed = true;
   } else if (!o.out.empty()) {
     try {
       onDisk = rowsInRecording(o.out);
@@ -479,7 +486,7 @@ int finishRun(const SessionSetup& setup, RecordsTarget& target, const session::S
           << (s.recorderError.empty() ? std::string() : " (" + s.recorderError + ")") << "\n";
       return 1;
     }
-    if (finishFailed) return 1;
+    if (finishFailed || analysisFailed) return 1;
     if (!s.recorderError.empty())
       err << "note: writing the recording failed for a while (" << s.recorderError
           << ") and then went on; no row was lost\n";

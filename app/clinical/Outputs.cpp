@@ -40,7 +40,10 @@ std::array<std::optional<double>, kNumClinicalAngles> romOf(const QJsonObject& m
 }
 
 reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint64 id) {
-  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  // What the analysis stored (its metrics and the rows they come from); an analysis made before
+  // those rows were stored is computed again from its estimates.
+  std::optional<storage::SessionAngles> stored = storage::storedSessionAngles(store, id);
+  const storage::SessionAngles s = stored ? std::move(*stored) : storage::sessionAngles(store, id);
   reports::SessionReportData d;
   d.session = s.info;
   d.patient = store.patient(s.info.patientCode);
@@ -140,7 +143,7 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
     out.files = {target, sidecarPath(target)};
     return out;
   }
-  const storage::SessionAngles s = storage::sessionAngles(store, id);
+  const storage::SessionAngles s = storage::sessionAngles(store, id, storage::SeriesRows::All);
   if (format == ExportFormat::Csv) {
     const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
     out.what = std::to_string(r.rows) + " rows to " + r.anglesCsv.string() +

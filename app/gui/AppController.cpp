@@ -353,6 +353,45 @@ void AppController::onSignedIn(const storage::User& user) {
   emit signedIn(user.name);
   if (user.role == storage::Role::Home) return showHome();
   showPatients();
+  analysePending();
+}
+
+void AppController::analysePending() {
+  // Sessions whose analysis never finished (the program that stored them ended first, or a home
+  // session waiting for staff) are analysed in the background, one after another, behind any
+  // job the therapist starts.
+  m_records->startJob(
+      m_window,
+      [](JobContext& c) {
+        int analysed = 0;
+        for (const qint64 id : c.store().pendingAnalyses()) {
+          if (c.cancelled()) break;
+          storage::AnalysisOptions o;
+          o.cancel = c.cancelFlag();
+          try {
+            if (!storage::analyseSession(c.store(), id, o).cancelled) ++analysed;
+          } catch (const storage::StorageError& e) {
+            // A recording that cannot be analysed is marked so and skipped; the rest go on.
+            if (e.kind() != storage::StorageError::Kind::Usage &&
+                e.kind() != storage::StorageError::Kind::Corrupt)
+              throw;
+          }
+        }
+        return analysed;
+      },
+      [this](int analysed) {
+        if (analysed > 0)
+          m_window->showStatus(
+              [analysed] { return tr("%n earlier session(s) analysed", nullptr, analysed); },
+              10000);
+      },
+      [this](const RecordsFailure& f) {
+        m_window->showStatus(
+            [why = f.message] {
+              return tr("Earlier sessions could not be analysed now: %1").arg(why);
+            },
+            15000);
+      });
 }
 
 void AppController::signOut() {

@@ -88,6 +88,8 @@ class AppController : public QObject {
   /// The records in effect (--db, else the settings); throws StorageError(Usage).
   storage::DatabaseUrl databaseUrl() const;
   void onSignedIn(const storage::User& user);
+  /// Analyses the sessions left with a pending analysis, in the background (staff only).
+  void analysePending();
   void showDatabaseProblem(const RecordsFailure& failure);
   void closeHome();
   storage::DatabaseUrl demoDatabaseUrl() const;

@@ -1,6 +1,7 @@
 // armtrack-cli's clinical-records commands, on SQLite and PostgreSQL: db, user, patient, protocol,
 // session, report, export, audit; their errors (wrong password, unknown patient, newer schema,
-// corrupt file), access control for home accounts, and a SIGKILL in the middle of an import.
+// corrupt file), access control for home accounts (a SIGKILL in the middle of an import:
+// test_import_crash_cli.cpp).
 #include <gtest/gtest.h>
 
 #include <QJsonArray>
@@ -379,50 +380,6 @@ TEST_F(StorageCliSqlite, DefaultLocationIsTheAppDataFolder) {
   ::unsetenv("XDG_DATA_HOME");
   EXPECT_EQ(code, 0) << err.str();
   EXPECT_TRUE(fs::exists(data + "/ArmTrack/ArmTrack/armtrack.db")) << err.str();
-}
-
-// A real process killed with SIGKILL while it imports: the file checks clean afterwards and the
-// session is interrupted with the chunks committed before the kill.
-TEST_P(StorageCli, SigkillDuringImportLeavesAnInterruptedSession) {
-  addPatients();
-  const std::string csv = simulate("long.csv", 60.0);
-  QProcess p;
-  p.start(ARMTRACK_CLI, {"session", "import", QString::fromStdString(csv), "--patient", "P02",
-                         "--db", QString::fromStdString(m_db), "--user", "boss"});
-  ASSERT_TRUE(p.waitForStarted());
-  // Watch the database from a second connection (on SQLite, WAL lets it read while the importer
-  // writes) and kill the importer as soon as it has committed its first chunks.
-  qint64 rowsBeforeKill = 0;
-  for (int i = 0; i < 6000 && p.state() == QProcess::Running; ++i) {
-    const auto rows = query("SELECT coalesce(sum(sample_rows), 0) FROM sessions");
-    if (!rows.empty() && rows[0][0].toLongLong() > 2000) {
-      rowsBeforeKill = rows[0][0].toLongLong();
-      break;
-    }
-    p.waitForFinished(5);
-  }
-  ASSERT_EQ(p.state(), QProcess::Running) << "the import ended before it could be killed";
-  p.kill();  // SIGKILL
-  p.waitForFinished();
-  ASSERT_GT(rowsBeforeKill, 0);
-
-  const Result list = run({"session", "list", "--patient", "P02", "--json"});
-  ASSERT_EQ(list.code, 0) << list.err;
-  const QJsonArray sessions = QJsonDocument::fromJson(QByteArray::fromStdString(list.out)).array();
-  ASSERT_EQ(sessions.size(), 1);
-  const QJsonObject s = sessions[0].toObject();
-  EXPECT_EQ(s["status"].toString(), "interrupted");
-  EXPECT_GE(s["rows"].toInteger(), rowsBeforeKill);  // everything committed is kept
-  EXPECT_LT(s["rows"].toInteger(), 61201);           // and the session is not passed off as whole
-  const Result check = run({"db", "check"});
-  EXPECT_EQ(check.code, 0) << check.err;
-  // What was kept reads back, and exports.
-  EXPECT_EQ(run({"export", std::to_string(s["id"].toInteger()), "--format", "recording", "--out",
-                 path("partial.csv")})
-                .code,
-            0);
-  EXPECT_EQ(static_cast<qint64>(armtrack::readRecording(path("partial.csv")).samples.size()),
-            s["rows"].toInteger());
 }
 
 namespace {
