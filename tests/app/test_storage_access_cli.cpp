@@ -159,6 +159,29 @@ TEST_P(AccessCli, UnknownNamesAreThrottledLikeAccountsAndAudited) {
   EXPECT_EQ(failed[0]["detail"].toString(), "no such account");
 }
 
+// Issue 24, item 12: BOSS and boss could both exist; so could patients P01 and p01.
+TEST_P(AccessCli, NamesAreUniqueWithoutRegardToCase) {
+  addPatients();
+  ::setenv("ARMTRACK_NEW_PASSWORD", kPass, 1);
+  const Result boss = run({"user", "add", "BOSS", "--role", "therapist"});
+  EXPECT_EQ(boss.code, 1);
+  EXPECT_NE(boss.err.find("without regard to case"), std::string::npos) << boss.err;
+  EXPECT_EQ(run({"patient", "add", "--code", "p01", "--name", "Other"}).code, 1);
+  ASSERT_EQ(run({"protocol", "add", "--name", "reach", "--angle", "shoulder_flexion",
+                 "--target-min", "0", "--target-max", "90", "--reps", "5"})
+                .code,
+            0);
+  EXPECT_EQ(run({"protocol", "add", "--name", "Reach", "--angle", "elbow_flexion", "--target-min",
+                 "0", "--target-max", "90", "--reps", "5"})
+                .code,
+            1);
+  EXPECT_EQ(linesOf(run({"user", "list"}).out).size(), 1u);
+  EXPECT_EQ(linesOf(run({"patient", "list"}).out).size(), 2u);
+  EXPECT_EQ(linesOf(run({"protocol", "list"}).out).size(), 1u);
+  // Found in any case: the account signs in as it was named.
+  EXPECT_EQ(run({"patient", "list"}, "BOSS", kAdminPass).code, 0);
+}
+
 // Issue 24, item 15: `db --help` said PostgreSQL was "not yet supported".
 TEST_P(AccessCli, DbHelpSaysPostgresIsSupported) {
   const Result r = cli({"db", "--help"});
