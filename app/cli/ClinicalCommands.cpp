@@ -6,6 +6,7 @@
 
 #include "app/cli/Clinical.h"
 #include "app/cli/ClinicalContext.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::cli {
 
@@ -13,24 +14,33 @@ namespace {
 
 using storage::Database;
 
+/// A stored value as one field of a line of text output: control and direction characters
+/// escaped (storage::escapedForLine), so no stored name can forge a line or a field.
+std::string line(const QString& value) {
+  return ss(storage::escapedForLine(value));
+}
+
 constexpr std::string_view kDbHelp = R"(Usage: armtrack-cli db <init|check|migrate|backup> [options]
 
   db init --admin NAME      create the database and its first administrator (password from
-                            ARMTRACK_PASSWORD or a prompt)
+                            ARMTRACK_PASSWORD or a prompt, at least 10 characters)
   db check --user NAME      integrity check and schema version
   db migrate --user NAME    bring an older schema up to date (administrators; back up first)
   db backup --out FILE --user NAME
-                            a consistent copy while others keep working (SQLite: VACUUM INTO)
+                            a consistent copy while others keep working (administrators;
+                            SQLite: VACUUM INTO; on PostgreSQL it prints the pg_dump command)
 
-Every subcommand takes --db URL: a path, sqlite:PATH, or postgresql://user@host:port/dbname
-(not yet supported). Default: armtrack.db in the application data folder.
+Every subcommand takes --db URL: a SQLite file (a path or sqlite:PATH), or a PostgreSQL
+database, postgresql://ROLE@HOST:PORT/DATABASE (its password from ARMTRACK_DB_PASSWORD or
+~/.pgpass; docs/storage.md). Default: armtrack.db in the application data folder.
 )";
 
 constexpr std::string_view kUserHelp = R"(Usage: armtrack-cli user <add|list> [options]
 
   user add NAME --role admin|therapist|home [--patient CODE] --user ADMIN
-                            a new account; its password comes from ARMTRACK_NEW_PASSWORD (or a
-                            prompt); a home account needs its patient
+                            a new account; its password (at least 10 characters) comes from
+                            ARMTRACK_NEW_PASSWORD (or a prompt); a home account needs its
+                            patient. Names are unique without regard to case
   user list [--json] --user ADMIN
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
@@ -87,10 +97,7 @@ int dbMigrate(const std::vector<std::string>& rest, std::ostream& out, std::ostr
   const Args a("db migrate", rest, withDb({}));
   if (a.help()) return out << kDbHelp, 0;
   ClinicalContext c(a, {.create = false, .migrate = true}, true);
-  if (c.store().user().role != storage::Role::Admin)
-    throw std::runtime_error("only administrators migrate the database");
-  c.store().audit("migrate", "database", c.db().url().display(),
-                  QString("%1 step(s)").arg(c.db().migrationsApplied()));
+  c.store().confirmMigration(c.db().migrationsApplied());  // administrators; audited
   out << "schema version " << c.db().schemaVersion() << " (" << c.db().migrationsApplied()
       << " step(s) applied)\n";
   return 0;
@@ -101,8 +108,7 @@ int dbBackup(const std::vector<std::string>& rest, std::ostream& out, std::ostre
   if (a.help()) return out << kDbHelp, 0;
   const std::string target = a.required("--out");
   ClinicalContext c(a, {}, true, /*runPending=*/false);
-  c.db().backup(qs(target));
-  c.store().audit("backup", "database", c.db().url().display(), qs(target));
+  c.store().backup(qs(target));  // administrators; audited
   err << "db backup: wrote " << target << "\n";
   return 0;
 }
@@ -130,7 +136,7 @@ int userList(const std::vector<std::string>& rest, std::ostream& out, std::ostre
   ClinicalContext c(a, {}, true);
   QJsonArray list;
   for (const storage::User& u : c.store().listUsers()) {
-    if (!a.flag("--json")) out << ss(u.name) << "\t" << ss(storage::roleName(u.role)) << "\n";
+    if (!a.flag("--json")) out << line(u.name) << "\t" << ss(storage::roleName(u.role)) << "\n";
     list.append(QJsonObject{{"name", u.name}, {"role", storage::roleName(u.role)}});
   }
   if (a.flag("--json")) printJson(out, QJsonDocument(list));
@@ -168,8 +174,8 @@ int patientList(const std::vector<std::string>& rest, std::ostream& out, std::os
   QJsonArray list;
   for (const storage::Patient& p : c.store().listPatients()) {
     if (!a.flag("--json"))
-      out << ss(p.code) << "\t" << ss(p.name) << "\t" << ss(p.birthDate) << "\t" << ss(p.sex)
-          << "\t" << ss(p.affectedSide) << "\n";
+      out << line(p.code) << "\t" << line(p.name) << "\t" << line(p.birthDate) << "\t"
+          << line(p.sex) << "\t" << line(p.affectedSide) << "\n";
     list.append(QJsonObject{{"code", p.code},
                             {"name", p.name},
                             {"birth", p.birthDate},
@@ -234,7 +240,7 @@ int protocolList(const std::vector<std::string>& rest, std::ostream& out, std::o
   QJsonArray list;
   for (const storage::Protocol& p : c.store().listProtocols()) {
     if (!a.flag("--json"))
-      out << ss(p.name) << "\t" << ss(p.angleKey) << "\t" << p.targetMinDeg << "\t"
+      out << line(p.name) << "\t" << ss(p.angleKey) << "\t" << p.targetMinDeg << "\t"
           << p.targetMaxDeg << "\t" << p.repetitions << "\t" << ss(p.side) << "\n";
     list.append(QJsonObject{{"name", p.name},
                             {"angle", p.angleKey},

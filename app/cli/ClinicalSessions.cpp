@@ -12,6 +12,7 @@
 #include "app/cli/Text.h"
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/storage/SessionAnalysis.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::cli {
 
@@ -47,9 +48,16 @@ constexpr std::string_view kSessionHelp =
 
 constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --user ADMIN
 
-The audit log: who created, changed, viewed or exported what, and when (administrators only).
+The audit log: who created, changed, viewed or exported what, and when; failed sign-ins and
+refused actions (administrators only). One entry a line, tab-separated: time, account, action,
+object type, object, detail; control characters in them are shown escaped (\t, \n, \xHH, \\).
 --db URL as for every database command (password: ARMTRACK_PASSWORD).
 )";
+
+/// A stored value as one field of a line of text output (storage::escapedForLine).
+std::string line(const QString& value) {
+  return ss(storage::escapedForLine(value));
+}
 
 /// A JSON column's object (empty when the text is not one).
 QJsonObject objectOf(const QString& json) {
@@ -379,8 +387,8 @@ int auditCommand(const std::vector<std::string>& args, std::ostream& out, std::o
   QJsonArray list;
   for (const storage::AuditEntry& e : c.store().auditLog()) {
     if (!a.flag("--json"))
-      out << ss(e.at) << "\t" << ss(e.userName) << "\t" << ss(e.action) << "\t" << ss(e.objectType)
-          << "\t" << ss(e.objectId) << "\t" << ss(e.detail) << "\n";
+      out << line(e.at) << "\t" << line(e.userName) << "\t" << line(e.action) << "\t"
+          << line(e.objectType) << "\t" << line(e.objectId) << "\t" << line(e.detail) << "\n";
     list.append(QJsonObject{{"at", e.at},
                             {"user", e.userName},
                             {"action", e.action},

@@ -10,11 +10,13 @@
 #include <QVBoxLayout>
 
 #include "app/gui/Forms.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::gui {
 
 namespace {
-constexpr int kMinPasswordLength = 8;
+// The records refuse shorter ones (core/storage/TextRules.h), counted in code points.
+constexpr int kMinPasswordLength = storage::kMinPasswordLength;
 }
 
 FirstRunScreen::FirstRunScreen(const QString& defaultFolder, const QString& fixedDatabase,
@@ -155,7 +157,7 @@ void FirstRunScreen::submit() {
         m_folder);
   const QString admin = m_admin->text().trimmed();
   if (admin.isEmpty()) return refuse([] { return tr("Give the administrator a name."); }, m_admin);
-  if (m_password->text().size() < kMinPasswordLength)
+  if (storage::codePoints(m_password->text()) < kMinPasswordLength)
     return refuse(
         [] {
           return tr("The password needs at least %n characters.", nullptr, kMinPasswordLength);

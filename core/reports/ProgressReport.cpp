@@ -39,13 +39,13 @@ void draw(PageWriter& w, const ProgressReportData& d,
   w.title(Text::tr("Progress report"));
   w.heading(Text::tr("Patient and period"));
   const storage::Patient& p = d.patient;
-  w.keyValues({{Text::tr("Name"), orDash(p.name)},
-               {Text::tr("Patient code"), orDash(p.code)},
+  w.keyValues({{Text::tr("Name"), nameText(p.name)},
+               {Text::tr("Patient code"), nameText(p.code)},
                {Text::tr("Date of birth"), orDash(formatDate(p.birthDate))},
                {Text::tr("Affected side"), word(p.affectedSide)},
                {Text::tr("From"), orDash(formatDate(d.fromDate))},
                {Text::tr("To"), orDash(formatDate(d.toDate))},
-               {Text::tr("Therapist"), orDash(d.therapistName)},
+               {Text::tr("Therapist"), nameText(d.therapistName)},
                {Text::tr("Sessions"), QString::number(sessions.size())}});
 
   w.heading(Text::tr("Range of motion over time"), 50);
@@ -90,7 +90,7 @@ void draw(PageWriter& w, const ProgressReportData& d,
     t.rightAligned.push_back(true);
   }
   for (const ProgressSession& s : sessions) {
-    QStringList row{formatDate(s.startedAt), QString::number(s.id), orDash(s.protocolName),
+    QStringList row{formatDate(s.startedAt), QString::number(s.id), nameText(s.protocolName),
                     formatDuration(s.durationS),
                     s.repetitions ? QString::number(*s.repetitions) : QStringLiteral("-")};
     for (const auto& rom : s.romRad) row << formatDeg(deg(rom));
@@ -111,11 +111,12 @@ int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
                    });
   const QString period =
       Text::tr("%1 to %2").arg(orDash(formatDate(d.fromDate)), orDash(formatDate(d.toDate)));
-  const QString head =
-      Text::tr("%1 (%2), progress %3").arg(orDash(d.patient.name), d.patient.code, period);
-  const QString footer = pageFooter(d.patient.name, Text::tr("progress report"), d.generatedAt);
-  return writePdf(pdfPath, Text::tr("Progress report: %1, %2").arg(d.patient.name, period), head,
-                  footer, [&](PageWriter& w) { draw(w, d, sessions); });
+  // Names as nameText() draws them: on one line, in their own direction.
+  const QString name = nameText(d.patient.name);
+  const QString head = Text::tr("%1 (%2), progress %3").arg(name, nameText(d.patient.code), period);
+  const QString footer = pageFooter(name, Text::tr("progress report"), d.generatedAt);
+  return writePdf(pdfPath, Text::tr("Progress report: %1, %2").arg(name, period), head, footer,
+                  [&](PageWriter& w) { draw(w, d, sessions); });
 }
 
 }  // namespace armtrack::reports

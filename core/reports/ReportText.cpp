@@ -9,6 +9,7 @@
 
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/metrics/RangeOfMotion.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::reports {
 namespace {
@@ -139,6 +140,19 @@ QString formatDateTime(const QString& iso) {
 
 QString orDash(const QString& s) {
   return s.trimmed().isEmpty() ? QStringLiteral("-") : s;
+}
+
+QString nameText(const QString& s) {
+  if (s.trimmed().isEmpty()) return QStringLiteral("-");
+  QString out;
+  out.reserve(s.size() + 2);
+  out += QChar(0x2068);  // first strong isolate
+  for (const QChar c : s)
+    out += storage::isControlCharacter(c.unicode()) || storage::isLayoutControl(c.unicode())
+               ? QChar(QChar::ReplacementCharacter)
+               : c;
+  out += QChar(0x2069);  // pop directional isolate
+  return out;
 }
 
 QString pageFooter(const QString& patientName, const QString& kind, const QDateTime& generatedAt) {

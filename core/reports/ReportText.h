@@ -39,6 +39,12 @@ QString word(const QString& stored);
 
 /// s, or "-" when s is empty or blank.
 QString orDash(const QString& s);
+/// A stored name, code or account as the report draws it: "-" when blank; otherwise each
+/// control character (C0, DEL, C1) and direction control (storage::isLayoutControl) drawn as
+/// U+FFFD, and the whole isolated (U+2068 ... U+2069). So a name stays on its line, shows the
+/// characters stored in their own order, and cannot reorder the text beside it (a name typed
+/// before the records refused such characters).
+QString nameText(const QString& s);
 /// The running foot of every page: "<name> - <kind> - generated YYYY-MM-DD HH:MM UTC", at
 /// generatedAt, or now when it is invalid.
 QString pageFooter(const QString& patientName, const QString& kind, const QDateTime& generatedAt);

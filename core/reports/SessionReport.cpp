@@ -23,11 +23,11 @@ QString measuredSide(const SessionReportData& d) {
 
 QString protocolText(const SessionReportData& d) {
   if (!d.protocol)
-    return d.session.protocolName.isEmpty() ? Text::tr("none") : d.session.protocolName;
+    return d.session.protocolName.isEmpty() ? Text::tr("none") : nameText(d.session.protocolName);
   const storage::Protocol& p = *d.protocol;
   const std::optional<int> a = angleIndex(p.angleKey);
   return Text::tr("%1: %2, target %3 to %4 deg, %n repetitions", nullptr, p.repetitions)
-      .arg(p.name, a ? angleName(*a) : p.angleKey, formatDeg(p.targetMinDeg),
+      .arg(nameText(p.name), a ? angleName(*a) : p.angleKey, formatDeg(p.targetMinDeg),
            formatDeg(p.targetMaxDeg));
 }
 
@@ -35,8 +35,8 @@ void details(PageWriter& w, const SessionReportData& d) {
   w.heading(Text::tr("Patient and session"));
   const storage::Patient& p = d.patient;
   std::vector<std::pair<QString, QString>> items = {
-      {Text::tr("Name"), orDash(p.name)},
-      {Text::tr("Patient code"), orDash(p.code)},
+      {Text::tr("Name"), nameText(p.name)},
+      {Text::tr("Patient code"), nameText(p.code)},
       {Text::tr("Date of birth"), orDash(formatDate(p.birthDate))},
       {Text::tr("Sex"), word(p.sex)},
       {Text::tr("Affected side"), word(p.affectedSide)},
@@ -45,7 +45,7 @@ void details(PageWriter& w, const SessionReportData& d) {
       {Text::tr("Date"), orDash(formatDateTime(d.session.startedAt))},
       {Text::tr("Duration"),
        formatDuration(d.session.durationS > 0 ? d.session.durationS : d.metrics.durationS)},
-      {Text::tr("Therapist"), orDash(d.therapistName)},
+      {Text::tr("Therapist"), nameText(d.therapistName)},
       {Text::tr("Status"), word(d.session.status)},
       {Text::tr("Diagnosis"), orDash(p.diagnosis)},
   };
@@ -344,11 +344,12 @@ int writeSessionReport(const SessionReportData& d, const QString& pdfPath) {
     throw ReportError("session " + std::to_string(d.session.id) +
                       ": no clinical angles or metrics to report; estimate the session first");
   const QString date = formatDate(d.session.startedAt);
-  const QString head =
-      Text::tr("%1 (%2), session of %3").arg(orDash(d.patient.name), d.patient.code, date);
-  const QString footer = pageFooter(d.patient.name, Text::tr("session report"), d.generatedAt);
-  return writePdf(pdfPath, Text::tr("Session report: %1, %2").arg(d.patient.name, date), head,
-                  footer, [&](PageWriter& w) {
+  // Names as nameText() draws them: on one line, in their own direction.
+  const QString name = nameText(d.patient.name);
+  const QString head = Text::tr("%1 (%2), session of %3").arg(name, nameText(d.patient.code), date);
+  const QString footer = pageFooter(name, Text::tr("session report"), d.generatedAt);
+  return writePdf(pdfPath, Text::tr("Session report: %1, %2").arg(name, date), head, footer,
+                  [&](PageWriter& w) {
                     w.title(Text::tr("Session report"));
                     details(w, d);
                     devices(w, d);

@@ -1,13 +1,13 @@
-// Accounts, sign-in, patients, protocols and the audit log of ClinicalStore.
+// Patients, protocols and the audit log of ClinicalStore (accounts and sign-in:
+// ClinicalStoreAccounts.cpp).
 #include "core/storage/ClinicalStore.h"
 
-#include <QDateTime>
-#include <algorithm>
+#include <QDate>
 #include <cmath>
 
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/storage/AuditLog.h"
-#include "core/storage/PasswordHash.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::storage {
 
@@ -15,21 +15,8 @@ namespace {
 
 using Kind = StorageError::Kind;
 
-constexpr int kFreeAttempts = 3;  // wrong passwords before sign-in slows down
-constexpr int kMaxWaitSeconds = 300;
-
 std::string text(const QString& s) {
   return s.toStdString();
-}
-
-User userFrom(const QSqlQuery& q) {
-  User u;
-  u.id = q.value(0).toLongLong();
-  u.name = q.value(1).toString();
-  u.role = parseRole(q.value(2).toString()).value_or(Role::Home);
-  if (!q.value(3).isNull()) u.patientId = q.value(3).toLongLong();
-  u.failedAttempts = q.value(4).toInt();
-  return u;
 }
 
 Patient patientFrom(const QSqlQuery& q) {
@@ -58,7 +45,6 @@ Protocol protocolFrom(const QSqlQuery& q) {
   return p;
 }
 
-const QString kUserColumns = "id, name, role, patient_id, failed_attempts";
 const QString kPatientColumns =
     "id, code, name, birth_date, sex, affected_side, diagnosis, segment_lengths_json, notes";
 const QString kProtocolColumns =
@@ -68,9 +54,14 @@ QVariant nullable(const QString& s) {
   return s.isEmpty() ? QVariant() : QVariant(s);
 }
 
-void checkPatient(const Patient& p) {
+/// newCode: the code is a new value (adding), not the key of an existing patient (updating).
+void checkPatient(const Patient& p, bool newCode) {
   if (p.code.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a patient needs a code");
   if (p.name.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a patient needs a name");
+  if (newCode) checkName("patient code", p.code, kMaxCodeLength);
+  checkName("patient's name", p.name, kMaxNameLength);
+  checkFreeText("diagnosis", p.diagnosis);
+  checkFreeText("patient's notes", p.notes);
   if (!p.birthDate.isEmpty() && !QDate::fromString(p.birthDate, Qt::ISODate).isValid())
     throw StorageError(Kind::Usage, "birth date must be YYYY-MM-DD");
   if (!p.sex.isEmpty() && p.sex != "f" && p.sex != "m" && p.sex != "x")
@@ -80,8 +71,10 @@ void checkPatient(const Patient& p) {
     throw StorageError(Kind::Usage, "side must be left, right, both or none");
 }
 
-void checkProtocol(const Protocol& p) {
+/// newName: the name is a new value (adding), not the key of an existing protocol (updating).
+void checkProtocol(const Protocol& p, bool newName) {
   if (p.name.trimmed().isEmpty()) throw StorageError(Kind::Usage, "a protocol needs a name");
+  if (newName) checkName("protocol name", p.name, kMaxNameLength);
   QStringList keys;
   for (const ClinicalAngleInfo& a : clinicalAngleInfo())
     keys << QString::fromUtf8(a.key.data(), static_cast<qsizetype>(a.key.size()));
@@ -121,132 +114,8 @@ ClinicalStore::ClinicalStore(Database& db) : m_db(db) {
   m_interruptedOnOpen = markDeadRecordingsInterrupted();
 }
 
-void ClinicalStore::initialise(const QString& adminName, const std::string& password) {
-  if (adminName.trimmed().isEmpty())
-    throw StorageError(Kind::Usage, "the administrator needs a name");
-  if (password.empty()) throw StorageError(Kind::Usage, "the administrator needs a password");
-  QSqlQuery q = m_db.exec("SELECT count(*) FROM users");
-  const bool any = q.next() && q.value(0).toLongLong() > 0;
-  q.finish();
-  if (any)
-    throw StorageError(Kind::Exists,
-                       "the database already has accounts; sign in as an "
-                       "administrator and use 'user add'");
-  const QString hash = QString::fromStdString(PasswordHash::hash(password));
-  m_db.transaction([&] {
-    m_db.insert("INSERT INTO users (name, role, password_hash, created_at) VALUES (?, ?, ?, ?)",
-                {adminName, "admin", hash, utcNow()});
-    appendAudit(m_db, {adminName, "create", "database", m_db.url().display(), {}});
-  });
-}
-
-const User& ClinicalStore::signIn(const QString& name, const std::string& password) {
-  const std::string refused = "wrong user name or password for '" + text(name) + "'";
-  QSqlQuery q = m_db.exec("SELECT " + kUserColumns +
-                              ", password_hash, last_failed_at FROM users "
-                              "WHERE name = ?",
-                          {name});
-  if (!q.next()) {
-    PasswordHash::verify("", password);  // no early answer for an unknown name
-    throw StorageError(Kind::Authentication, refused);
-  }
-  User u = userFrom(q);
-  const std::string hash = q.value(5).toString().toStdString();
-  const QDateTime lastFailed = QDateTime::fromString(q.value(6).toString(), Qt::ISODateWithMs);
-  q.finish();
-  if (u.failedAttempts >= kFreeAttempts && lastFailed.isValid()) {
-    const int wait = std::min(kMaxWaitSeconds, 1 << std::min(u.failedAttempts - kFreeAttempts, 9));
-    const qint64 since = lastFailed.secsTo(QDateTime::currentDateTimeUtc());
-    if (since < wait)
-      throw StorageError(Kind::Authentication, "too many wrong passwords for '" + text(name) +
-                                                   "': try again in " +
-                                                   std::to_string(wait - since) + " s");
-  }
-  if (!PasswordHash::verify(hash, password)) {
-    m_db.exec(
-        "UPDATE users SET failed_attempts = failed_attempts + 1, last_failed_at = ? "
-        "WHERE id = ?",
-        {utcNow(), u.id});
-    appendAudit(m_db, {name, "sign-in-failed", "user", name, {}});
-    throw StorageError(Kind::Authentication, refused);
-  }
-  if (u.failedAttempts != 0) {
-    m_db.exec("UPDATE users SET failed_attempts = 0, last_failed_at = NULL WHERE id = ?", {u.id});
-    u.failedAttempts = 0;
-  }
-  m_user = u;
-  return *m_user;
-}
-
-const User& ClinicalStore::user() const {
-  if (!m_user) throw StorageError(Kind::Authentication, "not signed in");
-  return *m_user;
-}
-
-void ClinicalStore::require(bool allowed, const QString& what) const {
-  if (!allowed)
-    throw StorageError(Kind::AccessDenied, text("account '" + user().name + "' (" +
-                                                roleName(user().role) + ") may not " + what));
-}
-
-bool ClinicalStore::isStaff() const {
-  return user().role != Role::Home;
-}
-
-qint64 ClinicalStore::addUser(const QString& name, Role role, const std::string& password,
-                              const QString& patientCode) {
-  require(user().role == Role::Admin, "add accounts");
-  if (name.trimmed().isEmpty()) throw StorageError(Kind::Usage, "an account needs a name");
-  if (password.empty()) throw StorageError(Kind::Usage, "an account needs a password");
-  QVariant patientId;
-  if (role == Role::Home) {
-    if (patientCode.isEmpty())
-      throw StorageError(Kind::Usage, "a home account needs its patient (--patient CODE)");
-    patientId = visiblePatientId(patientCode);
-  } else if (!patientCode.isEmpty()) {
-    throw StorageError(Kind::Usage, "only home accounts are linked to a patient");
-  }
-  const QString hash = QString::fromStdString(PasswordHash::hash(password));
-  qint64 id = 0;
-  m_db.transaction([&] {
-    id = m_db.insert(
-        "INSERT INTO users (name, role, password_hash, patient_id, created_at) "
-        "VALUES (?, ?, ?, ?, ?)",
-        {name, roleName(role), hash, patientId, utcNow()});
-    audit("create", "user", name, "role " + roleName(role));
-  });
-  return id;
-}
-
-std::vector<User> ClinicalStore::listUsers() {
-  require(user().role == Role::Admin, "list accounts");
-  std::vector<User> users;
-  QSqlQuery q = m_db.exec("SELECT " + kUserColumns + " FROM users ORDER BY name");
-  while (q.next()) users.push_back(userFrom(q));
-  return users;
-}
-
-void ClinicalStore::setPassword(const QString& name, const std::string& password) {
-  require(user().role == Role::Admin || user().name == name, "change another's password");
-  if (password.empty()) throw StorageError(Kind::Usage, "an account needs a password");
-  const QString hash = QString::fromStdString(PasswordHash::hash(password));
-  if (m_db.exec("UPDATE users SET password_hash = ?, failed_attempts = 0 WHERE name = ?",
-                {hash, name})
-          .numRowsAffected() == 0)
-    throw StorageError(Kind::NotFound, text("no account '" + name + "'"));
-  audit("update", "user", name, "password");
-}
-
-void ClinicalStore::removeUser(const QString& name) {
-  require(user().role == Role::Admin, "remove accounts");
-  if (name == user().name) throw StorageError(Kind::Usage, "an administrator cannot remove itself");
-  if (m_db.exec("DELETE FROM users WHERE name = ?", {name}).numRowsAffected() == 0)
-    throw StorageError(Kind::NotFound, text("no account '" + name + "'"));
-  audit("delete", "user", name);
-}
-
 qint64 ClinicalStore::visiblePatientId(const QString& code) {
-  QSqlQuery q = m_db.exec("SELECT id FROM patients WHERE code = ?", {code});
+  QSqlQuery q = m_db.exec("SELECT id FROM patients WHERE code_key = ?", {nameKey(code)});
   const bool found = q.next();
   const qint64 id = found ? q.value(0).toLongLong() : 0;
   if (!found || (user().role == Role::Home && user().patientId != id))
@@ -257,13 +126,15 @@ qint64 ClinicalStore::visiblePatientId(const QString& code) {
 
 qint64 ClinicalStore::addPatient(const Patient& p) {
   require(isStaff(), "add patients");
-  checkPatient(p);
+  checkPatient(p, true);
+  const QString key = nameKey(p.code);
+  refuseTakenKey("patients", "code", "code_key", key, "a patient with the code", p.code);
   qint64 id = 0;
   m_db.transaction([&] {
     id = m_db.insert(
-        "INSERT INTO patients (code, name, birth_date, sex, affected_side, diagnosis, "
-        "segment_lengths_json, notes, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?)",
-        {p.code, p.name, nullable(p.birthDate), nullable(p.sex), nullable(p.affectedSide),
+        "INSERT INTO patients (code, code_key, name, birth_date, sex, affected_side, diagnosis, "
+        "segment_lengths_json, notes, created_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        {p.code, key, p.name, nullable(p.birthDate), nullable(p.sex), nullable(p.affectedSide),
          p.diagnosis, p.segmentLengthsJson.isEmpty() ? "{}" : p.segmentLengthsJson, p.notes,
          utcNow()});
     audit("create", "patient", p.code);
@@ -290,7 +161,7 @@ Patient ClinicalStore::patient(const QString& code) {
 
 void ClinicalStore::updatePatient(const Patient& p) {
   require(isStaff(), "change patients");
-  checkPatient(p);
+  checkPatient(p, false);
   const qint64 id = visiblePatientId(p.code);
   m_db.transaction([&] {
     m_db.exec(
@@ -315,13 +186,15 @@ void ClinicalStore::removePatient(const QString& code) {
 
 qint64 ClinicalStore::addProtocol(const Protocol& p) {
   require(isStaff(), "add protocols");
-  checkProtocol(p);
+  checkProtocol(p, true);
+  const QString key = nameKey(p.name);
+  refuseTakenKey("protocols", "name", "name_key", key, "a protocol", p.name);
   qint64 id = 0;
   m_db.transaction([&] {
     id = m_db.insert(
-        "INSERT INTO protocols (name, angle_key, target_min_deg, target_max_deg, "
-        "repetitions, side) VALUES (?, ?, ?, ?, ?, ?)",
-        {p.name, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side});
+        "INSERT INTO protocols (name, name_key, angle_key, target_min_deg, target_max_deg, "
+        "repetitions, side) VALUES (?, ?, ?, ?, ?, ?, ?)",
+        {p.name, key, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side});
     audit("create", "protocol", p.name);
   });
   return id;
@@ -337,7 +210,8 @@ std::vector<Protocol> ClinicalStore::listProtocols() {
 
 Protocol ClinicalStore::protocol(const QString& name) {
   user();
-  QSqlQuery q = m_db.exec("SELECT " + kProtocolColumns + " FROM protocols WHERE name = ?", {name});
+  QSqlQuery q = m_db.exec("SELECT " + kProtocolColumns + " FROM protocols WHERE name_key = ?",
+                          {nameKey(name)});
   if (!q.next()) throw StorageError(Kind::NotFound, text("unknown protocol '" + name + "'"));
   return protocolFrom(q);
 }
@@ -349,11 +223,12 @@ std::optional<qint64> ClinicalStore::protocolId(const QString& name) {
 
 void ClinicalStore::updateProtocol(const Protocol& p) {
   require(isStaff(), "change protocols");
-  checkProtocol(p);
+  checkProtocol(p, false);
   m_db.transaction([&] {
     if (m_db.exec("UPDATE protocols SET angle_key = ?, target_min_deg = ?, target_max_deg = ?, "
-                  "repetitions = ?, side = ? WHERE name = ?",
-                  {p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side, p.name})
+                  "repetitions = ?, side = ? WHERE name_key = ?",
+                  {p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side,
+                   nameKey(p.name)})
             .numRowsAffected() == 0)
       throw StorageError(Kind::NotFound, text("unknown protocol '" + p.name + "'"));
     audit("update", "protocol", p.name);
@@ -368,6 +243,19 @@ void ClinicalStore::removeProtocol(const QString& name) {
     m_db.exec("DELETE FROM protocols WHERE id = ?", {id});
     audit("delete", "protocol", name);
   });
+}
+
+void ClinicalStore::refuseTakenKey(const QString& table, const QString& column,
+                                   const QString& keyColumn, const QString& key,
+                                   const QString& what, const QString& value) {
+  QSqlQuery q =
+      m_db.exec("SELECT " + column + " FROM " + table + " WHERE " + keyColumn + " = ?", {key});
+  if (!q.next()) return;
+  const QString stored = escapedForLine(q.value(0).toString());
+  throw StorageError(Kind::Exists, text(what + " '" + stored +
+                                        "' exists; names and codes are compared without "
+                                        "regard to case, so '" +
+                                        escapedForLine(value) + "' is the same: choose another"));
 }
 
 std::vector<AuditEntry> ClinicalStore::auditLog() {

@@ -18,10 +18,10 @@
 namespace armtrack::storage {
 
 /// Every read and write of the records goes through here, as the signed-in user. Access rules:
-/// administrators may do everything; therapists everything but managing accounts and reading the
-/// audit log; a home account sees and records only its own patient (another patient is reported
-/// as not found, so its existence does not leak). Exports and changes are written to the audit
-/// log. Throws StorageError. Same thread as the Database.
+/// administrators may do everything; therapists everything but managing accounts, backups,
+/// migrations and reading the audit log; a home account sees and records only its own patient
+/// (another patient is reported as not found, so its existence does not leak). Exports, changes
+/// and refusals are written to the audit log. Throws StorageError. Same thread as the Database.
 class ClinicalStore {
  public:
   /// Wraps an open database. Sessions left in "recording" by a process of this host that no
@@ -29,32 +29,52 @@ class ClinicalStore {
   explicit ClinicalStore(Database& db);
 
   /// Creates the first administrator of an empty database; refused when any account exists.
+  /// The name follows checkName (TextRules.h), the password checkNewPassword.
   void initialise(const QString& adminName, const std::string& password);
-  /// Signs in. After 3 consecutive wrong passwords each attempt must wait 2^(n-3) s (at most
-  /// 300 s) after the last failure; an early attempt is refused without checking the password.
-  /// Throws StorageError(Authentication) with the same text for an unknown name and a wrong
-  /// password.
+  /// Signs in; the name is found without regard to case (nameKey). After 3 consecutive wrong
+  /// passwords each attempt must wait 2^(n-3) s (at most 300 s) after the last failure; an
+  /// early attempt is refused without checking the password. A name without an account gets the
+  /// same answers, at the same cost (verified against PasswordHash::dummyHash(), its failures
+  /// counted in sign_in_failures). Throws StorageError(Authentication) with the same text for
+  /// an unknown name and a wrong password. Every failure is audited.
   const User& signIn(const QString& name, const std::string& password);
   const User& user() const;
   int interruptedOnOpen() const { return m_interruptedOnOpen; }
   /// Imports whose process had died, removed when this store was made.
   int removedImportsOnOpen() const { return m_removedImportsOnOpen; }
 
-  // Accounts (administrators).
+  // Accounts (administrators; ClinicalStoreAccounts.cpp). Names are unique and found without
+  // regard to case; a new name follows checkName, a new password checkNewPassword
+  // (TextRules.h): StorageError(Usage) otherwise, Exists for a name taken in any case.
   qint64 addUser(const QString& name, Role role, const std::string& password,
                  const QString& patientCode = {});
   std::vector<User> listUsers();
+  /// An administrator's, or the account's own, password change.
   void setPassword(const QString& name, const std::string& password);
   void removeUser(const QString& name);
 
-  // Patients (create/update: administrators and therapists; delete: administrators).
+  // The whole database (administrators), audited.
+  /// Database::backup to outPath: every patient, recording, account and the audit log, so an
+  /// administrator's act. Throws AccessDenied for others, and as Database::backup.
+  void backup(const QString& outPath);
+  /// Audits the migration that opening the database applied (`db migrate`). Throws
+  /// AccessDenied for others than administrators.
+  void confirmMigration(int stepsApplied);
+
+  /// Refuses the signed-in account what it asked for: writes an "access-denied" audit entry
+  /// (after the transaction the caller may be in, so that a rollback keeps it) and throws
+  /// StorageError(AccessDenied) with message, or "account 'NAME' (ROLE) may not WHAT".
+  [[noreturn]] void deny(const QString& what, const std::string& message = {}) const;
+
+  // Patients (create/update: administrators and therapists; delete: administrators). Codes are
+  // unique and found without regard to case; codes, names and free text follow TextRules.h.
   qint64 addPatient(const Patient& patient);
   std::vector<Patient> listPatients();
   Patient patient(const QString& code);
   void updatePatient(const Patient& patient);  ///< by code
   void removePatient(const QString& code);     ///< with its sessions
 
-  // Protocols (everyone reads; administrators and therapists write).
+  // Protocols (everyone reads; administrators and therapists write). Names as patient codes.
   qint64 addProtocol(const Protocol& protocol);
   std::vector<Protocol> listProtocols();
   Protocol protocol(const QString& name);
@@ -204,7 +224,10 @@ class ClinicalStore {
              const QString& detail = {});
 
  private:
-  void require(bool allowed, const QString& what) const;
+  void require(bool allowed, const QString& what) const;  // deny(what) unless allowed
+  /// Throws StorageError(Exists) when a row of table has key in keyColumn (what names it).
+  void refuseTakenKey(const QString& table, const QString& column, const QString& keyColumn,
+                      const QString& key, const QString& what, const QString& value);
   bool isStaff() const;
   qint64 visiblePatientId(const QString& code);  // NotFound for invisible ones
   SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones

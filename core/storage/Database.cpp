@@ -419,6 +419,7 @@ qint64 Database::insert(const QString& sql, const QVariantList& binds) {
 }
 
 void Database::transaction(const std::function<void()>& body) {
+  const TransactionEnd end{*this};  // afterTransaction() work runs when this call ends
   if (isPostgres()) {
     if (!m_db.transaction()) fail(Kind::Io, "cannot start a transaction", m_db.lastError().text());
   } else {

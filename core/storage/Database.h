@@ -8,6 +8,7 @@
 #include <QVariant>
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include "core/storage/DatabaseUrl.h"
 #include "core/storage/Schema.h"
@@ -66,6 +67,11 @@ class Database {
   void transaction(const std::function<void()>& body);
   /// Whether a transaction() body is running on this connection.
   bool inTransaction() const { return m_inTransaction; }
+  /// Runs work once the running transaction() has ended, committed or rolled back, outside it
+  /// (at once when none is running): what must be written whatever becomes of the transaction,
+  /// such as the audit entry of a denied access (AfterTransaction.cpp). An exception from work
+  /// is dropped: it ran while another may be propagating.
+  void afterTransaction(std::function<void()> work);
 
  private:
   QString inlineValues(const QString& sql, const QVariantList& binds);
@@ -76,6 +82,12 @@ class Database {
   int readVersion();
   void applyStep(const MigrationStep& step);
   [[noreturn]] void fail(StorageError::Kind kind, const QString& what, const QString& detail);
+  /// Held by each transaction() call: when it ends, the afterTransaction() work runs.
+  struct TransactionEnd {
+    Database& db;
+    ~TransactionEnd() { db.runAfterTransaction(); }
+  };
+  void runAfterTransaction() noexcept;
 
   DatabaseUrl m_url;
   SqlDialect m_dialect;
@@ -84,6 +96,7 @@ class Database {
   int m_version = 0;
   int m_applied = 0;
   bool m_inTransaction = false;
+  std::vector<std::function<void()>> m_afterTransaction;
   /// SQLite: counts this connection among the process's connections to its file while it is
   /// open (Database.cpp says why).
   std::shared_ptr<void> m_fileHold;

@@ -14,6 +14,11 @@ class PasswordHash {
   static std::string hash(const std::string& password);
   /// Whether password matches hash; false for a malformed hash.
   static bool verify(const std::string& hash, const std::string& password);
+  /// An Argon2id hash with hash()'s parameters of a random password no one knows: a sign-in
+  /// with an unknown account name is verified against it, so that it costs what a wrong
+  /// password costs. Made once (a constant, checked against this libsodium's parameters with
+  /// crypto_pwhash_str_needs_rehash, and made anew once per process if they differ).
+  static const std::string& dummyHash();
 };
 
 }  // namespace armtrack::storage

@@ -1,5 +1,7 @@
 #include "core/storage/Schema.h"
 
+#include "core/storage/NameKeys.h"
+
 namespace armtrack::storage {
 
 QString SqlDialect::idColumn() const {
@@ -197,8 +199,21 @@ const std::vector<MigrationStep>& migrationSteps() {
            " row_count INTEGER NOT NULL,"
            " data {blob} NOT NULL,"
            " PRIMARY KEY (estimate_id, seq))",
+           // Sign-in and names (docs/storage.md, "Security"). Account names, patient codes and
+           // protocol names are unique without regard to case: a key column holds each one's
+           // case-folded form, filled and made UNIQUE by addNameKeys (the hook: Unicode case
+           // folding is not SQL). Failed sign-ins with names that have no account are counted
+           // per case-folded name, as users.failed_attempts counts an account's, so both are
+           // throttled alike; the table is kept to at most 10,000 names (ClinicalStoreAccounts).
+           "ALTER TABLE users ADD COLUMN name_key TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE patients ADD COLUMN code_key TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE protocols ADD COLUMN name_key TEXT NOT NULL DEFAULT ''",
+           "CREATE TABLE sign_in_failures ("
+           " name_key TEXT PRIMARY KEY,"
+           " failed_attempts INTEGER NOT NULL,"
+           " last_failed_at TEXT NOT NULL)",
        },
-       {}},
+       [](Database& db) { addNameKeys(db); }},
   };
   return steps;
 }

@@ -370,11 +370,11 @@ class AnalysisRun {
 AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                               const AnalysisOptions& options) {
   const SessionInfo info = store.session(sessionId);  // NotFound for an invisible session
-  if (store.user().role == Role::Home)
-    throw StorageError(Kind::AccessDenied,
-                       "a home account may not analyse sessions: ask your therapist to run "
-                       "'session reestimate " +
-                           std::to_string(sessionId) + "'");
+  if (store.user().role == Role::Home)                // audited, as every refusal
+    store.deny("analyse sessions",
+               "a home account may not analyse sessions: ask your therapist to run "
+               "'session reestimate " +
+                   std::to_string(sessionId) + "'");
   AnalysisResult result;
   bool fromSession = false;
   result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);

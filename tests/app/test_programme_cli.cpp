@@ -135,20 +135,20 @@ TEST_P(ProgrammeCli, AHomeAccountListsItsOwnAndChangesNothing) {
   ASSERT_EQ(run({"programme", "add", "--patient", "P01", "--protocol", "Elbow flexion"}).code, 0);
   ASSERT_EQ(run({"programme", "add", "--patient", "P02", "--protocol", "Shoulder flexion"}).code,
             0);
-  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass-1", 1);
   ASSERT_EQ(run({"user", "add", "home1", "--role", "home", "--patient", "P01"}).code, 0);
-  const QJsonArray mine = list("P01", "home1", "home-pass");
+  const QJsonArray mine = list("P01", "home1", "home-pass-1");
   ASSERT_EQ(mine.size(), 1);
   EXPECT_EQ(at(mine, 0)["protocol"].toString(), "Elbow flexion");
-  Result r = run({"programme", "list", "--patient", "P02"}, "home1", "home-pass");
+  Result r = run({"programme", "list", "--patient", "P02"}, "home1", "home-pass-1");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("unknown patient"), std::string::npos) << r.err;
   r = run({"programme", "add", "--patient", "P01", "--protocol", "Shoulder flexion"}, "home1",
-          "home-pass");
+          "home-pass-1");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.err.find("may not change home programmes"), std::string::npos) << r.err;
   EXPECT_EQ(run({"programme", "remove", "--patient", "P01", "--protocol", "Elbow flexion"}, "home1",
-                "home-pass")
+                "home-pass-1")
                 .code,
             1);
   EXPECT_EQ(list("P01").size(), 1);

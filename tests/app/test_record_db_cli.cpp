@@ -265,7 +265,7 @@ TEST_P(RecordDb, SigkillLosesAtMostTheLastSecondAndMarksTheSessionInterrupted) {
 // A home account's recording (what the home window makes, through the same sink) is marked as
 // recorded at home, and a kill keeps it up to the last second, marked interrupted.
 TEST_P(RecordDb, AHomeAccountsRecordingIsMarkedHomeAndKeptWhenKilled) {
-  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass-1", 1);
   const Result add = run({"user", "add", "home1", "--role", "home", "--patient", "P01"});
   ::unsetenv("ARMTRACK_NEW_PASSWORD");
   ASSERT_EQ(add.code, 0) << add.err;
@@ -273,7 +273,7 @@ TEST_P(RecordDb, AHomeAccountsRecordingIsMarkedHomeAndKeptWhenKilled) {
   args[args.indexOf("boss")] = "home1";
   QProcess p;
   QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.insert("ARMTRACK_PASSWORD", "home-pass");
+  env.insert("ARMTRACK_PASSWORD", "home-pass-1");
   p.setProcessEnvironment(env);
   p.start(ARMTRACK_CLI, args);
   ASSERT_TRUE(p.waitForStarted());

@@ -149,7 +149,7 @@ TEST_P(StorageCli, HomeAccountCannotReachAnotherPatient) {
   const std::string csv = simulate("rec.csv", 1.0);
   const std::string mine = importFor("P01", csv);
   const std::string other = importFor("P02", csv);
-  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass-1", 1);
   Result r = run({"user", "add", "home1", "--role", "home", "--patient", "P01"});
   ASSERT_EQ(r.code, 0) << r.err;
 
@@ -160,7 +160,7 @@ TEST_P(StorageCli, HomeAccountCannotReachAnotherPatient) {
   ASSERT_EQ(run({"protocol", "assign", "reach", "--patient", "P01", "--per-week", "5"}).code, 0);
   ASSERT_EQ(run({"protocol", "assign", "reach", "--patient", "P02", "--per-week", "2"}).code, 0);
   auto home = [&](std::vector<std::string> args) {
-    return run(std::move(args), "home1", "home-pass");
+    return run(std::move(args), "home1", "home-pass-1");
   };
   r = home({"patient", "list", "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -321,10 +321,10 @@ TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
   const std::string csv = simulate("rec.csv", 2.0);
   const std::string mine = importFor("P01", csv);
   const std::string other = importFor("P02", csv);
-  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass", 1);
+  ::setenv("ARMTRACK_NEW_PASSWORD", "home-pass-1", 1);
   ASSERT_EQ(run({"user", "add", "home1", "--role", "home", "--patient", "P01"}).code, 0);
   auto home = [&](std::vector<std::string> args) {
-    return run(std::move(args), "home1", "home-pass");
+    return run(std::move(args), "home1", "home-pass-1");
   };
   Result r = home({"session", "show", mine, "--json"});
   ASSERT_EQ(r.code, 0) << r.err;

@@ -2,7 +2,8 @@
 // writing a 1 kHz recording of both IMUs plus the Kinect as the recorder does (one ~1 s chunk a
 // transaction), its size against the open-format CSV, opening a database of 1,000 sessions and
 // listing one patient's, reading a session back, and re-estimating a session read from the
-// database against the same recording read from its CSV.
+// database against the same recording read from its CSV; and the time of a wrong sign-in for
+// an account against one for a name without an account.
 // Run: build/tests/benchmarks/bench_storage --benchmark_min_time=1
 // Counters: x_real_time = recorded seconds written (or read) per second; MB_per_hour = stored
 // bytes for an hour of recording; vs_csv = stored bytes / CSV bytes.
@@ -11,10 +12,12 @@
 #include <QCoreApplication>
 #include <QTemporaryDir>
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <vector>
 
 #include "core/estimation/RecordingEstimator.h"
 #include "core/io/Recording.h"
@@ -351,6 +354,58 @@ BENCHMARK(BM_OpenAndListSessions)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(20);
+
+// A wrong password for an account against the same for a name without one: the answers must
+// take the same time, or the time tells which names exist (issue 24, item 12: 250-395 ms
+// against 112-286 ms before). Each iteration makes one attempt of each, in alternating order,
+// through the whole sign-in (lookups, Argon2id, the failure counted and audited, one commit);
+// the counts are reset between attempts, untimed, so throttling never answers early. Counters:
+// the median and least time of each (ms) and the median of the pairs' differences.
+void BM_SignInWrongPassword(benchmark::State& state) {
+  Db d(static_cast<int>(state.range(0)));
+  ClinicalStore store(*d.db);
+  std::vector<double> known, unknown, difference;
+  const auto attempt = [&](const char* name) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      store.signIn(name, "a wrong password");
+    } catch (const StorageError&) {
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    d.db->exec("UPDATE users SET failed_attempts = 0, last_failed_at = NULL");
+    d.db->exec("DELETE FROM sign_in_failures");
+    return ms;
+  };
+  for (auto _ : state) {
+    const bool knownFirst = known.size() % 2 == 0;
+    const double a = attempt(knownFirst ? "admin" : "nobody");
+    const double b = attempt(knownFirst ? "nobody" : "admin");
+    known.push_back(knownFirst ? a : b);
+    unknown.push_back(knownFirst ? b : a);
+    difference.push_back(known.back() - unknown.back());
+    state.SetIterationTime((a + b) / 1e3);
+  }
+  const auto median = [](std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+  };
+  const auto least = [](const std::vector<double>& v) {
+    return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
+  };
+  state.counters["known_median_ms"] = median(known);
+  state.counters["unknown_median_ms"] = median(unknown);
+  state.counters["known_min_ms"] = least(known);
+  state.counters["unknown_min_ms"] = least(unknown);
+  state.counters["median_difference_ms"] = median(difference);
+}
+BENCHMARK(BM_SignInWrongPassword)
+    ->ArgName("engine")
+    ->Arg(kSqlite)
+    ->Arg(kPostgresSocket)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(40);
 
 }  // namespace
 }  // namespace armtrack::storage

@@ -53,7 +53,7 @@ class TestSignIn : public QObject {
     typeInto(password, QStringLiteral("short"));
     typeInto(again, QStringLiteral("short"));
     QTest::keyClick(again, Qt::Key_Return);
-    QVERIFY2(message(screen).contains(QStringLiteral("at least 8 characters")),
+    QVERIFY2(message(screen).contains(QStringLiteral("at least 10 characters")),
              qPrintable(message(screen)));
     QCOMPARE(admin->text(), QStringLiteral("boss"));  // nothing typed is lost
     typeInto(password, QStringLiteral("boss-pass-1"));

@@ -425,9 +425,9 @@ TEST(SessionAnalysis, HomeAccountCannotAnalyseOrReadAnotherPatient) {
   const qint64 other = f.store->importRecording(f.file("a.csv"), "OTHER");
   analyseSession(*f.store, mine);
   analyseSession(*f.store, other);
-  f.store->addUser("home", Role::Home, "h-pass", "MINE");
+  f.store->addUser("home", Role::Home, "h-pass-long", "MINE");
   ClinicalStore home(*f.db);
-  home.signIn("home", "h-pass");
+  home.signIn("home", "h-pass-long");
   expectError([&] { analyseSession(home, other); }, Kind::NotFound);
   expectError([&] { latestAnalysis(home, other); }, Kind::NotFound);
   expectError([&] { storedAnalysis(home, other, 1); }, Kind::NotFound);

@@ -178,6 +178,12 @@ TEST_P(Migration, FromVersion1KeepsEveryRowAndAddsTheNewColumns) {
   QSqlQuery q = db.exec("SELECT failed_attempts FROM users WHERE name = 'admin'");
   ASSERT_TRUE(q.next());
   EXPECT_EQ(q.value(0).toInt(), 1);
+  q.finish();
+  // Version 6 keyed the names without regard to case (case-duplicates: test_storage_access).
+  EXPECT_EQ(store.patient("old1").code, "OLD1");
+  QSqlQuery keys = db.exec("SELECT name_key FROM users WHERE name = 'admin'");
+  ASSERT_TRUE(keys.next());
+  EXPECT_EQ(keys.value(0).toString(), "admin");
 }
 
 TEST_P(Crud, Patients) {
@@ -244,12 +250,12 @@ TEST_P(Crud, ProtocolsUsersMetricsEstimatesAudit) {
   EXPECT_EQ(f.store->listProtocols().size(), 1u);
 
   f.store->addPatient(makePatient("P1"));
-  f.store->addUser("thera", Role::Therapist, "t-pass");
-  f.store->addUser("home1", Role::Home, "h-pass", "P1");
-  expectError([&] { f.store->addUser("home2", Role::Home, "x"); }, Kind::Usage);
-  expectError([&] { f.store->addUser("home3", Role::Home, "x", "NOPE"); }, Kind::NotFound);
+  f.store->addUser("thera", Role::Therapist, "t-pass-long");
+  f.store->addUser("home1", Role::Home, "h-pass-long", "P1");
+  expectError([&] { f.store->addUser("home2", Role::Home, "x-password"); }, Kind::Usage);
+  expectError([&] { f.store->addUser("home3", Role::Home, "x-password", "NOPE"); }, Kind::NotFound);
   EXPECT_EQ(f.store->listUsers().size(), 3u);
-  f.store->setPassword("thera", "t-pass-2");
+  f.store->setPassword("thera", "t-pass-long-2");
   f.store->removeUser("thera");
   EXPECT_EQ(f.store->listUsers().size(), 2u);
 
@@ -310,8 +316,8 @@ TEST_P(AccessControl, HomeAccountSeesOnlyItsPatient) {
   Fixture f(GetParam());
   f.store->addPatient(makePatient("MINE"));
   f.store->addPatient(makePatient("OTHER"));
-  f.store->addUser("home", Role::Home, "h-pass", "MINE");
-  f.store->addUser("thera", Role::Therapist, "t-pass");
+  f.store->addUser("home", Role::Home, "h-pass-long", "MINE");
+  f.store->addUser("thera", Role::Therapist, "t-pass-long");
   const qint64 mine = f.store->beginSession("MINE", "", "{}", 0);
   const qint64 other = f.store->beginSession("OTHER", "", "{}", 0);
   f.store->finishSession(mine);
@@ -326,7 +332,7 @@ TEST_P(AccessControl, HomeAccountSeesOnlyItsPatient) {
   f.store->assignProtocol("OTHER", "reach", 2);
 
   ClinicalStore home(*f.db);
-  home.signIn("home", "h-pass");
+  home.signIn("home", "h-pass-long");
   ASSERT_EQ(home.programme("MINE").size(), 1u);
   EXPECT_EQ(home.programme("MINE")[0].sessionsPerWeek, 5);
   expectError([&] { home.programme("OTHER"); }, Kind::NotFound);
@@ -348,7 +354,7 @@ TEST_P(AccessControl, HomeAccountSeesOnlyItsPatient) {
   EXPECT_FALSE(std::filesystem::exists(f.file("x.csv")));
 
   ClinicalStore thera(*f.db);
-  thera.signIn("thera", "t-pass");
+  thera.signIn("thera", "t-pass-long");
   EXPECT_EQ(thera.listPatients().size(), 2u);
   expectError([&] { thera.addUser("x", Role::Admin, "x"); }, Kind::AccessDenied);
   expectError([&] { thera.removePatient("OTHER"); }, Kind::AccessDenied);

@@ -32,14 +32,14 @@ QStringList names(const std::vector<ProgrammeItem>& items) {
   return out;
 }
 
-/// A patient with three protocols and a home account "home" (password "h-pass").
+/// A patient with three protocols and a home account "home" (password "h-pass-long").
 void fill(Fixture& f) {
   f.store->addPatient(makePatient("MINE"));
   f.store->addPatient(makePatient("OTHER"));
   f.store->addProtocol(makeProtocol("elbow", "elbow_flexion", 30, 130, 12));
   f.store->addProtocol(makeProtocol("flexion", "shoulder_flexion", 20, 120, 10));
   f.store->addProtocol(makeProtocol("pronation", "forearm_pronation", -40, 60, 8));
-  f.store->addUser("home", Role::Home, "h-pass", "MINE");
+  f.store->addUser("home", Role::Home, "h-pass-long", "MINE");
 }
 
 }  // namespace
@@ -155,7 +155,7 @@ TEST_P(Programmes, AHomeAccountReadsItsOwnAndChangesNothing) {
   f.store->setProgrammeExercise("MINE", exercise("elbow"));
   f.store->setProgrammeExercise("OTHER", exercise("flexion"));
   ClinicalStore home(*f.db);
-  home.signIn("home", "h-pass");
+  home.signIn("home", "h-pass-long");
   ASSERT_EQ(names(home.programme("MINE")), QStringList{"elbow"});
   expectError([&] { home.programme("OTHER"); }, Kind::NotFound);
   expectError([&] { home.setProgrammeExercise("MINE", exercise("flexion")); }, Kind::AccessDenied);
@@ -167,12 +167,12 @@ TEST_P(Programmes, AHomeAccountReadsItsOwnAndChangesNothing) {
 TEST_P(HomeSessions, MarkedHomeWithThePatientsOwnOutcome) {
   Fixture f(GetParam());
   fill(f);
-  f.store->addUser("thera", Role::Therapist, "t-pass");
-  f.store->addUser("other-home", Role::Home, "o-pass", "OTHER");
+  f.store->addUser("thera", Role::Therapist, "t-pass-long");
+  f.store->addUser("other-home", Role::Home, "o-pass-long", "OTHER");
   ClinicalStore home(*f.db);
-  home.signIn("home", "h-pass");
+  home.signIn("home", "h-pass-long");
   ClinicalStore thera(*f.db);
-  thera.signIn("thera", "t-pass");
+  thera.signIn("thera", "t-pass-long");
   const qint64 atHome = home.beginSession("MINE", "elbow", "{}", 0);
   const qint64 atClinic = thera.beginSession("MINE", "elbow", "{}", 0);
   home.finishSession(atHome);
@@ -208,7 +208,7 @@ TEST_P(HomeSessions, MarkedHomeWithThePatientsOwnOutcome) {
   // the session at all.
   expectError([&] { thera.saveHomeOutcome(atHome, 2, "", "{}"); }, Kind::AccessDenied);
   ClinicalStore other(*f.db);
-  other.signIn("other-home", "o-pass");
+  other.signIn("other-home", "o-pass-long");
   expectError([&] { other.saveHomeOutcome(atHome, 2, "", "{}"); }, Kind::NotFound);
   expectError([&] { home.saveHomeOutcome(999999, 2, "", "{}"); }, Kind::NotFound);
   // Refusals changed nothing.
