@@ -25,7 +25,8 @@ namespace armtrack::storage {
 class ClinicalStore {
  public:
   /// Wraps an open database. Sessions left in "recording" by a process of this host that no
-  /// longer runs are marked "interrupted" here (see interruptedOnOpen()).
+  /// longer runs are marked "interrupted" here (see interruptedOnOpen()); on a read-only database
+  /// they are left as they are and counted (staleRecordingsKept()).
   explicit ClinicalStore(Database& db);
 
   /// Creates the first administrator of an empty database; refused when any account exists.
@@ -37,6 +38,13 @@ class ClinicalStore {
   const User& signIn(const QString& name, const std::string& password);
   const User& user() const;
   int interruptedOnOpen() const { return m_interruptedOnOpen; }
+  /// Sessions left in "recording" by a process of this host that has ended, which were not
+  /// marked "interrupted" because the database is read-only (Database::readOnlyReason()); the
+  /// next opening with write access marks them.
+  int staleRecordingsKept() const { return m_staleRecordingsKept; }
+  /// The database this store reads and writes, for the checks of callers that write files
+  /// (Database::refuseOwnFile, isReadOnly).
+  Database& database() const { return m_db; }
 
   // Accounts (administrators).
   qint64 addUser(const QString& name, Role role, const std::string& password,
@@ -150,6 +158,7 @@ class ClinicalStore {
   Database& m_db;
   std::optional<User> m_user;
   int m_interruptedOnOpen = 0;
+  int m_staleRecordingsKept = 0;
 };
 
 }  // namespace armtrack::storage

@@ -90,6 +90,11 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
     if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
       dead.push_back(q.value(0).toLongLong());
   q.finish();
+  if (m_db.isReadOnly()) {
+    // Nothing can be written: reading still works, and the caller says why they stay.
+    m_staleRecordingsKept = static_cast<int>(dead.size());
+    return 0;
+  }
   for (qint64 id : dead) {
     m_db.transaction([&] {
       m_db.exec("UPDATE sessions SET status = 'interrupted' WHERE id = ?", {id});
