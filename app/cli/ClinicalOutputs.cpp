@@ -164,9 +164,8 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     checkOutputPath(metricsCsvPath(target).string(), overwrite, false);
   }
   ClinicalContext c(a, {}, true);
-  const clinical::ExportSummary r =
-      clinical::exportSession(c.store(), id, *clinical::parseExportFormat(format), target,
-                              overwrite);
+  const clinical::ExportSummary r = clinical::exportSession(
+      c.store(), id, *clinical::parseExportFormat(format), target, overwrite);
   err << "export: session " << id << (format == "recording" ? " to " : ", ") << r.what << "\n";
   for (const std::string& note : r.notes) err << "  note: " << note << "\n";
   return 0;

@@ -28,8 +28,8 @@
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/PatientRecords.h"
 #include "app/i18n/Language.h"
-#include "core/storage/SessionAnalysis.h"
 #include "core/storage/DatabaseFiles.h"
+#include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
 

@@ -17,7 +17,6 @@
 #include <QVBoxLayout>
 
 #include "app/clinical/Outputs.h"
-#include "core/storage/DatabaseFiles.h"
 #include "app/gui/AngleNames.h"
 #include "app/gui/Forms.h"
 #include "app/gui/JobProgress.h"
@@ -27,6 +26,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "core/storage/DatabaseFiles.h"
 #include "ui/Retranslate.h"
 
 namespace armtrack::gui {

@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <iterator>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -160,8 +160,7 @@ void makeDirs(const fs::path& dir, CreatedDirs& created) {
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
     if (::mkdir(it->c_str(), S_IRWXU) != 0)
-      throw ExportError(*it, "cannot create the folder: " +
-                                 std::generic_category().message(errno));
+      throw ExportError(*it, "cannot create the folder: " + std::generic_category().message(errno));
     created.dirs.push_back(*it);
     ::chmod(it->c_str(), S_IRWXU);  // the umask may have taken the owner's bits away
   }
@@ -244,10 +243,11 @@ std::string claimSubject(const fs::path& root, const std::string& participant,
         owner >= 0 && static_cast<std::size_t>(owner) < row.size() ? row[owner] : "";
     if (who == code) return {};
     if (who.empty() || who == "n/a") throw ExportError(subjectDir, unknown);
-    throw ExportError(subjectDir, "holds the data of another patient (participants.tsv: "
-                                  "patient_code '" +
-                                      who + "', not '" + code + "')" + nothing +
-                                      ": export into another folder");
+    throw ExportError(subjectDir,
+                      "holds the data of another patient (participants.tsv: "
+                      "patient_code '" +
+                          who + "', not '" + code + "')" + nothing +
+                          ": export into another folder");
   }
   if (present(subjectDir)) throw ExportError(subjectDir, unknown);
   if (owner < 0) {  // a dataset made elsewhere: the column is added, n/a for its subjects

@@ -1,11 +1,11 @@
 #include "core/reports/PdfOutput.h"
 
 #include <QBuffer>
+#include <QFile>
 #include <QGuiApplication>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPdfWriter>
-#include <QFile>
 #include <string_view>
 
 #include "core/io/AtomicFile.h"

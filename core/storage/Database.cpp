@@ -231,7 +231,8 @@ void Database::checkFileBeforeOpening(bool create) {
       const QString why = createPrivateFile(path);
       if (!why.isEmpty())
         fail(Kind::Io, "cannot be created",
-             why + "; choose a folder you may write to (docs/storage.md, \"Files and permissions\")");
+             why +
+                 "; choose a folder you may write to (docs/storage.md, \"Files and permissions\")");
       return;
     }
     throw StorageError(Kind::NotFound, ("no database at '" + path +
@@ -285,12 +286,12 @@ void Database::checkFileBeforeOpening(bool create) {
   }
   QSqlDatabase::removeDatabase(name);
   if (!ran && isReadOnly())  // e.g. a -wal without its -shm in a folder it cannot write
-    throw StorageError(Kind::Io, ("database '" + m_url.display() + "' is read-only (" +
-                                  m_readOnlyReason + ") and cannot be read as it is: " +
-                                  verdict.left(300) +
-                                  "; it was left untouched. Open it with write access, or copy "
-                                  "it (with its -wal) to a folder you may write to")
-                                     .toStdString());
+    throw StorageError(Kind::Io,
+                       ("database '" + m_url.display() + "' is read-only (" + m_readOnlyReason +
+                        ") and cannot be read as it is: " + verdict.left(300) +
+                        "; it was left untouched. Open it with write access, or copy "
+                        "it (with its -wal) to a folder you may write to")
+                           .toStdString());
   if (verdict != "ok") {
     removeCheckLeftovers(path, leftovers);
     fail(Kind::Corrupt, "failed its integrity check",

@@ -116,8 +116,8 @@ QString sqliteFileAt(const QString& dbPath, const QString& path) {
 }
 
 QString createPrivateFile(const QString& path) {
-  const int fd = ::open(encoded(path).c_str(),
-                        O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, S_IRUSR | S_IWUSR);
+  const int fd = ::open(encoded(path).c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                        S_IRUSR | S_IWUSR);
   if (fd < 0) return osReason(errno);
   // The umask can only take bits away; this puts back exactly 0600 whatever it was.
   const bool ok = ::fchmod(fd, S_IRUSR | S_IWUSR) == 0;
@@ -190,9 +190,9 @@ QString sqliteReadOnlyReason(const QString& dbPath) {
   for (const char* suffix : {"-wal", "-shm"})
     companions = companions && ::access((real + suffix).c_str(), W_OK) == 0;
   if (companions) return {};
-  return "its folder '" + QFile::decodeName(dir.c_str()) + "' cannot be written (" +
-         osReason(err) + "), and SQLite needs to create '" +
-         QFileInfo(QFile::decodeName(real.c_str())).fileName() + "-wal' and -shm there to write";
+  return "its folder '" + QFile::decodeName(dir.c_str()) + "' cannot be written (" + osReason(err) +
+         "), and SQLite needs to create '" + QFileInfo(QFile::decodeName(real.c_str())).fileName() +
+         "-wal' and -shm there to write";
 }
 
 QStringList missingCompanions(const QString& dbPath) {
@@ -241,9 +241,8 @@ void removeCheckLeftovers(const QString& dbPath, const QStringList& created) {
 }
 
 QString immutableUri(const QString& dbPath) {
-  const QByteArray path =
-      QFile::encodeName(QFileInfo(QFile::decodeName(resolvedDatabase(dbPath).c_str()))
-                            .absoluteFilePath());
+  const QByteArray path = QFile::encodeName(
+      QFileInfo(QFile::decodeName(resolvedDatabase(dbPath).c_str())).absoluteFilePath());
   QString uri = "file:";
   for (const char c : path) {
     const auto u = static_cast<unsigned char>(c);

@@ -71,8 +71,8 @@ Proc runCli(const std::vector<std::string>& args, const std::string& cwd = {},
   if (pid == 0) {
     ::dup2(out, STDOUT_FILENO);
     ::dup2(err, STDERR_FILENO);
-    if (who && (::setgroups(0, nullptr) != 0 || ::setgid(who->second) != 0 ||
-                ::setuid(who->first) != 0)) {
+    if (who &&
+        (::setgroups(0, nullptr) != 0 || ::setgid(who->second) != 0 || ::setuid(who->first) != 0)) {
       const char m[] = "cannot switch to the account nobody (setgid/setuid failed)\n";
       (void)!::write(STDERR_FILENO, m, sizeof m - 1);
       ::_exit(125);
@@ -174,13 +174,18 @@ TEST_F(DatabaseFilesCli, NoCommandWritesOverTheDatabaseOrItsFiles) {
        [&](const std::string& p) {
          return Args{"export", m_id, "--format", "recording", "--out", p, "--overwrite"};
        }},
-      {"report", [&](const std::string& p) { return Args{"report", m_id, "--pdf", p, "--overwrite"}; }},
+      {"report",
+       [&](const std::string& p) {
+         return Args{"report", m_id, "--pdf", p, "--overwrite"};
+       }},
       {"progress report",
        [&](const std::string& p) {
-         return Args{"report", "--patient", "P01", "--from", "2000-01-01", "--to", "2100-01-01",
-                     "--pdf", p, "--overwrite"};
+         return Args{"report", "--patient",  "P01",   "--from", "2000-01-01",
+                     "--to",   "2100-01-01", "--pdf", p,        "--overwrite"};
        }},
-      {"db backup", [&](const std::string& p) { return Args{"db", "backup", "--out", p}; }}};
+      {"db backup", [&](const std::string& p) {
+         return Args{"db", "backup", "--out", p};
+       }}};
   const std::string before = bytesOf(db);
   const auto refused = [&](const Args& args, const std::string& what) {
     SCOPED_TRACE(what);
@@ -201,7 +206,10 @@ TEST_F(DatabaseFilesCli, NoCommandWritesOverTheDatabaseOrItsFiles) {
   const std::string motion = "sub-P01_ses-" + m_id + "_task-armtrack_tracksys-imu_motion.tsv";
   const fs::path motionDir = dir() / "bids" / "sub-P01" / ("ses-" + m_id) / "motion";
   fs::create_directories(motionDir);
-  { std::ofstream(dir() / "bids" / "participants.tsv") << "participant_id\tpatient_code\nsub-P01\tP01\n"; }
+  {
+    std::ofstream(dir() / "bids" / "participants.tsv")
+        << "participant_id\tpatient_code\nsub-P01\tP01\n";
+  }
   for (const bool hard : {false, true}) {
     const auto linkTo = [&](const fs::path& name) {
       fs::remove(name);
@@ -217,8 +225,8 @@ TEST_F(DatabaseFilesCli, NoCommandWritesOverTheDatabaseOrItsFiles) {
     linkTo(motionDir / motion);
     refused({"export", m_id, "--format", "bids", "--out", (dir() / "bids").string(), "--overwrite"},
             "a BIDS motion file");
-    ASSERT_TRUE(bytesOf(db) == before) << "the database changed: " << (hard ? "hard" : "symbolic")
-                                       << " links";
+    ASSERT_TRUE(bytesOf(db) == before)
+        << "the database changed: " << (hard ? "hard" : "symbolic") << " links";
   }
   // While another connection has the database open its -wal and -shm exist; still refused.
   {
@@ -367,9 +375,8 @@ TEST_P(FilesCliEngines, BidsNeverReplacesFilesUnaskedNorMixesPatients) {
   ASSERT_EQ(r.code, 0) << r.err;
   const fs::path subject = root / "sub-P01";
   ASSERT_TRUE(fs::is_directory(subject));
-  const fs::path imu =
-      subject / ("ses-" + m_id) / "motion" /
-      ("sub-P01_ses-" + m_id + "_task-armtrack_tracksys-imu_motion.tsv");
+  const fs::path imu = subject / ("ses-" + m_id) / "motion" /
+                       ("sub-P01_ses-" + m_id + "_task-armtrack_tracksys-imu_motion.tsv");
   { std::ofstream(imu, std::ios::trunc) << "edited\n"; }
   const std::string participants = bytesOf(root / "participants.tsv");
   r = cliAs({"export", m_id, "--format", "bids", "--out", root.string()});

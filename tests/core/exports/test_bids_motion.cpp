@@ -340,7 +340,10 @@ TEST(BidsMotion, HostileInputAndUnwritableFoldersLeaveNothingBehind) {
       motionDir / "sub-P001_ses-20261125_task-flexion_tracksys-angles_motion.tsv";
   fs::create_directories(blocked);
   { std::ofstream(dir / "root" / "dataset_description.json") << "{}"; }
-  { std::ofstream(dir / "root" / "participants.tsv") << "participant_id\tpatient_code\nsub-P001\tP001\n"; }
+  {
+    std::ofstream(dir / "root" / "participants.tsv")
+        << "participant_id\tpatient_code\nsub-P001\tP001\n";
+  }
   const Recording rec = simulatedSession(knownMovement(), 0.5, 50.0);
   BidsOptions replace = options();
   replace.overwrite = true;
@@ -394,7 +397,9 @@ TEST(BidsMotion, ExistingFilesAreReplacedOnlyWithOverwrite) {
 TEST(BidsMotion, DistinctPatientsNeverShareASubject) {
   EXPECT_EQ(bidsSubjectLabel("P01"), "P01");
   std::set<std::string> labels;
-  for (const char* code : {"P01", "P-01", "P_01", "P 01", "P.01", "p01", "P-0-1", "P\xc3\xa9" "01"}) {
+  for (const char* code : {"P01", "P-01", "P_01", "P 01", "P.01", "p01", "P-0-1",
+                           "P\xc3\xa9"
+                           "01"}) {
     const std::string label = bidsSubjectLabel(code);
     EXPECT_EQ(bidsLabel(label), label) << code;  // letters and digits only
     labels.insert(label);

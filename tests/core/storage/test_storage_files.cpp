@@ -91,10 +91,9 @@ TEST(DatabaseFiles, BackupNeverWritesOverTheDatabaseOrItsFiles) {
   fs::create_symlink(db.string() + "-journal", dir / "dangling.db");
   const qint64 patients = countOf(*f.db, "patients");
   const qint64 audit = countOf(*f.db, "audit_log");
-  for (const fs::path& out :
-       {db, dir / "link.db", dir / "hard.db", fs::path(db.string() + "-wal"),
-        fs::path(db.string() + "-shm"), fs::path(db.string() + "-journal"), dir / "dangling.db",
-        dir / "sub" / ".." / db.filename()}) {
+  for (const fs::path& out : {db, dir / "link.db", dir / "hard.db", fs::path(db.string() + "-wal"),
+                              fs::path(db.string() + "-shm"), fs::path(db.string() + "-journal"),
+                              dir / "dangling.db", dir / "sub" / ".." / db.filename()}) {
     SCOPED_TRACE(out.string());
     const StorageError e = expectError([&] { f.db->backup(QString::fromStdString(out.string())); },
                                        Kind::Usage, "would destroy the records");
