@@ -45,9 +45,12 @@ constexpr std::string_view kExportHelp =
              <PATH stem>_metrics.csv beside it: the metrics per angle and per repetition
   mot        PATH: the clinical angles as an OpenSim motion file (coordinates arm_flex_r ...)
   bids       PATH is a BIDS dataset root: sub-<patient>/ses-<session>/motion/ with one file set
-             per tracking system (IMUs, Kinect, estimated joint angles)
+             per tracking system (IMUs, Kinect, estimated joint angles); participants.tsv says
+             whose data each subject holds, and another patient's subject is never added to
 
 csv, mot and bids use the session's newest analysis (session reestimate makes a new one).
+No file is replaced without --overwrite, and none of the database's own files (--db, its -wal,
+-shm or -journal) ever is. Files are written readable by their owner only (mode 0600).
 Every export is written to the audit log. docs/exports.md describes the formats.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -75,6 +78,17 @@ std::unique_ptr<GuiApplication> guiApplication() {
   static char* argv[] = {name, nullptr};
   gui->app = std::make_unique<QGuiApplication>(argc, argv);
   return gui;
+}
+
+/// Before any work: an output that is the --db database's file, or its -wal, -shm or -journal,
+/// is refused whatever --overwrite says (app/clinical checks again, for the default database
+/// and for every file of a BIDS export, once the database is open).
+void refuseDatabaseFiles(const Args& a, const std::vector<std::string>& outputs) {
+  if (!a.value("--db")) return;
+  const storage::DatabaseUrl url = storage::DatabaseUrl::parse(qs(*a.value("--db")));
+  if (url.engine != storage::DatabaseUrl::Engine::Sqlite) return;
+  for (const std::string& o : outputs)
+    storage::Database::refuseSqliteFile(url.path, qs(o), "the output");
 }
 
 int sessionReport(ClinicalContext& c, qint64 id, const std::string& pdf, std::ostream& err) {
@@ -119,6 +133,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   if (!progress && (a.value("--from") || a.value("--to")))
     a.fail("--from and --to: only with --patient");
   const qint64 id = progress ? 0 : sessionIdArgument(a);
+  refuseDatabaseFiles(a, {pdf});
   checkOutputPath(pdf, a.flag("--overwrite"), /*recording=*/false);
   const std::unique_ptr<GuiApplication> gui = guiApplication();
   const i18n::ScopedLanguage language(lang);  // the words, numbers and dates of the report
@@ -136,6 +151,12 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
   if (format != "recording" && format != "csv" && format != "mot" && format != "bids")
     a.fail("--format: must be recording, csv, mot or bids");
   const bool overwrite = a.flag("--overwrite");
+  if (format == "recording")
+    refuseDatabaseFiles(a, {target, armtrack::sidecarPath(target).string()});
+  else if (format == "csv")
+    refuseDatabaseFiles(a, {target, metricsCsvPath(target).string()});
+  else
+    refuseDatabaseFiles(a, {target});
   if (format == "recording" || format == "mot")
     checkOutputPath(target, overwrite, format == "recording");
   if (format == "csv") {
@@ -143,8 +164,8 @@ int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     checkOutputPath(metricsCsvPath(target).string(), overwrite, false);
   }
   ClinicalContext c(a, {}, true);
-  const clinical::ExportSummary r =
-      clinical::exportSession(c.store(), id, *clinical::parseExportFormat(format), target);
+  const clinical::ExportSummary r = clinical::exportSession(
+      c.store(), id, *clinical::parseExportFormat(format), target, overwrite);
   err << "export: session " << id << (format == "recording" ? " to " : ", ") << r.what << "\n";
   for (const std::string& note : r.notes) err << "  note: " << note << "\n";
   return 0;

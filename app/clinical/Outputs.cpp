@@ -20,6 +20,19 @@ std::string ss(const QString& s) {
   return s.toStdString();
 }
 
+QString qpath(const std::filesystem::path& p) {
+  return QString::fromStdString(p.string());
+}
+
+// What every report and export checks before it writes anything, for the CLI and the GUI alike:
+// no file of the open database is written over, whatever the path or --overwrite say, and the
+// audit entry it owes can be written.
+void checkOutput(storage::ClinicalStore& store, const std::vector<std::filesystem::path>& files,
+                 const QString& what) {
+  for (const std::filesystem::path& f : files) store.database().refuseOwnFile(qpath(f), what);
+  store.database().requireWritable(what + " must be written to the audit log, which cannot be");
+}
+
 }  // namespace
 
 std::array<std::optional<double>, kNumClinicalAngles> angleFieldOf(const QJsonObject& metrics,
@@ -98,6 +111,7 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
 }
 
 int writeSessionReport(storage::ClinicalStore& store, qint64 id, const QString& pdf) {
+  checkOutput(store, {pdf.toStdString()}, "the report");
   const reports::SessionReportData d = sessionReportData(store, id);
   const int pages = reports::writeSessionReport(d, pdf);
   store.audit("export", "session", QString::number(id), "report pdf");
@@ -106,6 +120,7 @@ int writeSessionReport(storage::ClinicalStore& store, qint64 id, const QString& 
 
 int writeProgressReport(storage::ClinicalStore& store, const reports::ProgressReportData& d,
                         const QString& pdf) {
+  checkOutput(store, {pdf.toStdString()}, "the report");
   const int pages = reports::writeProgressReport(d, pdf);
   store.audit("export", "patient", d.patient.code,
               "progress report pdf " + d.fromDate + " to " + d.toDate);
@@ -135,8 +150,20 @@ std::string exportFormatName(ExportFormat format) {
 }
 
 ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportFormat format,
-                            const std::filesystem::path& target) {
+                            const std::filesystem::path& target, bool overwrite) {
   ExportSummary out;
+  switch (format) {  // BIDS checks each of its files below, before it creates any
+    case ExportFormat::Recording:
+      checkOutput(store, {target, sidecarPath(target)}, "the export");
+      break;
+    case ExportFormat::Csv:
+      checkOutput(store, {target, metricsCsvPath(target)}, "the export");
+      break;
+    case ExportFormat::Mot:
+    case ExportFormat::Bids:
+      checkOutput(store, {target}, "the export");
+      break;
+  }
   if (format == ExportFormat::Recording) {
     store.exportRecording(id, target);  // audits itself
     out.what = target.string();
@@ -156,7 +183,12 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
   } else {
     const Recording recording = store.readRecording(id);
     BidsOptions o;
-    o.subject = bidsLabel(ss(s.info.patientCode));
+    o.subject = bidsSubjectLabel(ss(s.info.patientCode));
+    o.patientCode = ss(s.info.patientCode);
+    o.overwrite = overwrite;
+    o.checkTarget = [&store](const std::filesystem::path& file) {
+      store.database().refuseOwnFile(qpath(file), "the export");
+    };
     o.session = bidsLabel(std::to_string(id));
     o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
                                                      : ss(s.info.protocolName));

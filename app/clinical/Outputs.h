@@ -38,9 +38,12 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store,
                                                const QString& patientCode, const QString& from = {},
                                                const QString& to = {});
 
-/// Writes the session report to pdf and audits it; returns the number of pages.
+/// Writes the session report to pdf and audits it; returns the number of pages. Refused before
+/// anything is written when pdf is one of the open database's files (Database::refuseOwnFile:
+/// StorageError(Usage)) or the database is read-only (the audit entry cannot be written: Io).
 int writeSessionReport(storage::ClinicalStore& store, qint64 sessionId, const QString& pdf);
-/// Writes the progress report to pdf and audits it; returns the number of pages.
+/// Writes the progress report to pdf and audits it; returns the number of pages. Refused as
+/// writeSessionReport.
 int writeProgressReport(storage::ClinicalStore& store, const reports::ProgressReportData& data,
                         const QString& pdf);
 
@@ -57,9 +60,15 @@ struct ExportSummary {
 };
 
 /// Exports session sessionId (recording: bit for bit as stored; csv, mot, bids: its newest
-/// analysis) to target and audits it. The caller checks target beforehand (overwrite or not).
-/// Throws StorageError, ExportError, RecordingError.
+/// analysis) to target and audits it. Refused before anything is written when any file it would
+/// write (the recording's sidecar and the CSV's metrics file included, each file of a BIDS
+/// export) is one of the open database's files (StorageError(Usage)), or the database is
+/// read-only (Io: the audit entry cannot be written). For recording, csv and mot the caller
+/// checks beforehand whether target exists (overwrite or not); a BIDS export checks its files
+/// itself and replaces existing ones only with overwrite. The BIDS subject is
+/// bidsSubjectLabel(patient code), never another patient's (docs/exports.md). Throws
+/// StorageError, ExportError, RecordingError.
 ExportSummary exportSession(storage::ClinicalStore& store, qint64 sessionId, ExportFormat format,
-                            const std::filesystem::path& target);
+                            const std::filesystem::path& target, bool overwrite = false);
 
 }  // namespace armtrack::clinical

@@ -28,6 +28,7 @@
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/PatientRecords.h"
 #include "app/i18n/Language.h"
+#include "core/storage/DatabaseFiles.h"
 #include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
@@ -166,7 +167,7 @@ void AppController::startDemo() {
   }
   m_demoUrl = url;
   if (url.engine == storage::DatabaseUrl::Engine::Sqlite)
-    QDir().mkpath(QFileInfo(url.path).absolutePath());
+    storage::makePrivateFolders(QFileInfo(url.path).absolutePath());  // 0700
   auto* wait = new MessageScreen(
       [] { return tr("Preparing the demo"); },
       [where = url.display()] {

@@ -26,6 +26,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "core/storage/DatabaseFiles.h"
 #include "ui/Retranslate.h"
 
 namespace armtrack::gui {
@@ -311,7 +312,7 @@ void PatientScreen::editPatient() {
 
 void PatientScreen::askProgressReport() {
   const QString folder = m_settings.exportFolder();
-  QDir().mkpath(folder);
+  storage::makePrivateFolders(folder);  // 0700: it holds patients' data
   const QString suggested = QDir(folder).filePath(
       QStringLiteral("%1_progress_%2.pdf").arg(m_code, QDate::currentDate().toString(Qt::ISODate)));
   const QString pdf = QFileDialog::getSaveFileName(this, tr("Save the progress report"), suggested,

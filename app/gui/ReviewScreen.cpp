@@ -22,6 +22,7 @@
 #include "app/gui/SessionTableModel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
+#include "core/storage/DatabaseFiles.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
 #include "ui/Retranslate.h"
@@ -490,7 +491,7 @@ void ReviewScreen::reestimate(const ReestimateChoice& choice) {
 
 void ReviewScreen::askReport() {
   const QString folder = m_settings.exportFolder();
-  QDir().mkpath(folder);
+  storage::makePrivateFolders(folder);  // 0700: it holds patients' data
   const QString pdf = QFileDialog::getSaveFileName(
       this, tr("Save the session report"),
       QDir(folder).filePath(
@@ -501,7 +502,7 @@ void ReviewScreen::askReport() {
 
 void ReviewScreen::askExport(clinical::ExportFormat format) {
   const QString folder = m_settings.exportFolder();
-  QDir().mkpath(folder);
+  storage::makePrivateFolders(folder);  // 0700: it holds patients' data
   const QString stem =
       QDir(folder).filePath(QStringLiteral("%1_session_%2").arg(m_data.info.patientCode).arg(m_id));
   QString path;

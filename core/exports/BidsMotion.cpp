@@ -1,8 +1,15 @@
 // BIDS motion export (docs/exports.md, "BIDS motion"; BIDS 1.9, modality-specific files: motion).
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -142,6 +149,8 @@ struct CreatedDirs {
   }
 };
 
+// Creates the missing folders of dir with mode 0700 whatever the umask (they hold a patient's
+// data); folders that exist are left as they are.
 void makeDirs(const fs::path& dir, CreatedDirs& created) {
   std::vector<fs::path> missing;
   std::error_code ec;
@@ -150,14 +159,132 @@ void makeDirs(const fs::path& dir, CreatedDirs& created) {
     if (p == p.parent_path()) break;
   }
   for (auto it = missing.rbegin(); it != missing.rend(); ++it) {
-    if (!fs::create_directory(*it, ec) && ec)
-      throw ExportError(*it, "cannot create the folder: " + ec.message());
+    if (::mkdir(it->c_str(), S_IRWXU) != 0)
+      throw ExportError(*it, "cannot create the folder: " + std::generic_category().message(errno));
     created.dirs.push_back(*it);
+    ::chmod(it->c_str(), S_IRWXU);  // the umask may have taken the owner's bits away
   }
   if (!fs::is_directory(dir, ec)) throw ExportError(dir, "is not a folder");
 }
 
+std::string readWhole(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw ExportError(file, "cannot be read");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw ExportError(file, "cannot be read");
+  return text;
+}
+
+std::vector<std::string> splitTabs(const std::string& line) {
+  std::vector<std::string> cells;
+  std::size_t start = 0;
+  for (std::size_t tab; (tab = line.find('\t', start)) != std::string::npos; start = tab + 1)
+    cells.push_back(line.substr(start, tab - start));
+  cells.push_back(line.substr(start));
+  return cells;
+}
+
+std::string joinTabs(const std::vector<std::string>& cells) {
+  std::string line;
+  for (std::size_t i = 0; i < cells.size(); ++i) line += (i ? "\t" : "") + cells[i];
+  return line;
+}
+
+// Whether a path names anything, a dangling symbolic link included.
+bool present(const fs::path& p) {
+  std::error_code ec;
+  return fs::exists(fs::symlink_status(p, ec));
+}
+
+// The subject's claim in the dataset's participants.tsv (participant_id, patient_code): whose
+// data a subject folder holds. Returns the file's new text when a row must be added, an empty
+// string when the row is there and names this patient; throws ExportError, before anything is
+// written, when the subject is another patient's, or is there but nobody's that the file says.
+std::string claimSubject(const fs::path& root, const std::string& participant,
+                         const std::string& code) {
+  const fs::path tsv = root / "participants.tsv";
+  const fs::path subjectDir = root / participant;
+  const std::string nothing = "; nothing was written";
+  const std::string unknown =
+      "exists, but participants.tsv does not say whose data it holds (ArmTrack lists each "
+      "subject's patient_code there)" +
+      nothing + ": export into another folder, or add the subject's row by hand";
+  if (!present(tsv)) {
+    if (present(subjectDir)) throw ExportError(subjectDir, unknown);
+    return "participant_id\tpatient_code\n" + participant + "\t" + code + "\n";
+  }
+  std::vector<std::vector<std::string>> rows;
+  {
+    const std::string text = readWhole(tsv);
+    std::size_t start = 0;
+    while (start < text.size()) {
+      std::size_t end = text.find('\n', start);
+      if (end == std::string::npos) end = text.size();
+      std::string line = text.substr(start, end - start);
+      if (!line.empty() && line.back() == '\r') line.pop_back();
+      if (!line.empty()) rows.push_back(splitTabs(line));
+      start = end + 1;
+    }
+  }
+  const auto column = [&](const char* name) -> std::ptrdiff_t {
+    if (rows.empty()) return -1;
+    const auto it = std::find(rows[0].begin(), rows[0].end(), name);
+    return it == rows[0].end() ? -1 : it - rows[0].begin();
+  };
+  const std::ptrdiff_t id = column("participant_id");
+  std::ptrdiff_t owner = column("patient_code");
+  if (id < 0)
+    throw ExportError(tsv, "has no participant_id column, so it is not a BIDS participants file" +
+                               nothing + ": export into another folder");
+  for (std::size_t r = 1; r < rows.size(); ++r) {
+    const auto& row = rows[r];
+    if (static_cast<std::size_t>(id) >= row.size() || row[id] != participant) continue;
+    const std::string who =
+        owner >= 0 && static_cast<std::size_t>(owner) < row.size() ? row[owner] : "";
+    if (who == code) return {};
+    if (who.empty() || who == "n/a") throw ExportError(subjectDir, unknown);
+    throw ExportError(subjectDir,
+                      "holds the data of another patient (participants.tsv: "
+                      "patient_code '" +
+                          who + "', not '" + code + "')" + nothing +
+                          ": export into another folder");
+  }
+  if (present(subjectDir)) throw ExportError(subjectDir, unknown);
+  if (owner < 0) {  // a dataset made elsewhere: the column is added, n/a for its subjects
+    for (auto& row : rows) row.push_back(&row == &rows[0] ? "patient_code" : "n/a");
+    owner = static_cast<std::ptrdiff_t>(rows[0].size()) - 1;
+  }
+  std::vector<std::string> added(rows[0].size(), "n/a");
+  added[id] = participant;
+  added[owner] = code;
+  rows.push_back(added);
+  std::string text;
+  for (const auto& row : rows) text += joinTabs(row) + "\n";
+  return text;
+}
+
+std::uint32_t fnv1a32(const std::string& text) {
+  std::uint32_t h = 2166136261u;
+  for (const unsigned char c : text) {
+    h ^= c;
+    h *= 16777619u;
+  }
+  return h;
+}
+
 }  // namespace
+
+std::string bidsSubjectLabel(const std::string& patientCode) {
+  if (patientCode.empty()) throw std::invalid_argument("an empty patient code has no BIDS label");
+  std::string label;
+  for (unsigned char c : patientCode)
+    if (c < 128 && std::isalnum(c)) label += static_cast<char>(c);
+  if (label == patientCode) return label;
+  // Characters were dropped: the hash of the whole code keeps "P-01" apart from "P01".
+  char hex[9];
+  std::snprintf(hex, sizeof hex, "%08x", fnv1a32(patientCode));
+  return label + "h" + hex;
+}
 
 std::string bidsLabel(const std::string& text) {
   std::string out;
@@ -241,12 +368,50 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     timing.push_back({first, nominal, (s.rows.size() - 1) / duration, duration});
   }
 
+  // Every file of the export and whose data the subject holds, checked before anything is
+  // created: no existing file is replaced without overwrite, no subject of another patient is
+  // added to, and the caller may refuse a path (the open database).
+  const std::string code = options.patientCode.empty() ? options.subject : options.patientCode;
+  if (std::any_of(code.begin(), code.end(), [](unsigned char c) { return c < 32 || c == 127; }))
+    throw std::invalid_argument("patient code \"" + code +
+                                "\" has a control character, which participants.tsv cannot hold");
+  const std::string participants = claimSubject(root, "sub-" + options.subject, code);
+  const fs::path description = root / "dataset_description.json";
+  const fs::path participantsJson = root / "participants.json";
+  std::vector<fs::path> planned;
+  if (!participants.empty()) planned.push_back(root / "participants.tsv");
+  if (!present(participantsJson)) planned.push_back(participantsJson);
+  if (!present(description)) planned.push_back(description);
+  for (const System& s : kept) {
+    const std::string base = prefix + "_tracksys-" + s.label;
+    for (const char* kind : {"_channels.tsv", "_channels.json", "_motion.json", "_motion.tsv"}) {
+      if (std::string(kind) == "_channels.json" && s.label != "imu" && s.label != "optical")
+        continue;  // only systems with reference frames have one
+      const fs::path file = dir / (base + kind);
+      if (!options.overwrite && present(file))
+        throw ExportError(file,
+                          "exists; nothing was written: export with overwrite (armtrack-cli "
+                          "export --overwrite) to replace this subject's files of this session, "
+                          "or choose another folder");
+      planned.push_back(file);
+    }
+  }
+  if (options.checkTarget)
+    for (const fs::path& file : planned) options.checkTarget(file);
+
   CreatedDirs created;
   makeDirs(dir, created);
   exportdetail::FileSet files;
-  const fs::path description = root / "dataset_description.json";
-  std::error_code ec;
-  if (!fs::exists(description, ec)) {
+  if (!participants.empty()) files.write(files.add(root / "participants.tsv"), participants);
+  if (!present(participantsJson)) {
+    ordered_json pj;
+    pj["participant_id"]["Description"] = "the subject's label";
+    pj["patient_code"]["Description"] =
+        "the ArmTrack patient code whose data the subject's folder holds (n/a: not exported by "
+        "ArmTrack)";
+    files.write(files.add(participantsJson), pj.dump(2) + "\n");
+  }
+  if (!present(description)) {
     ordered_json d;
     d["Name"] = "ArmTrack export";
     d["BIDSVersion"] = "1.9.0";

@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -90,16 +91,33 @@ MotExportResult writeOpenSimMot(const std::filesystem::path& motPath, const Angl
 // ---------------------------------------------------------------- BIDS motion
 
 struct BidsOptions {
-  std::string subject;            ///< sub-<label>; letters and digits only (see bidsLabel())
+  std::string subject;  ///< sub-<label>; letters and digits only (see bidsSubjectLabel())
+  /// Whose data this is (the patient code), written to the dataset's participants.tsv with the
+  /// subject and checked against it: an export never adds to a subject that is someone else's.
+  /// Empty = the subject label.
+  std::string patientCode;
   std::string session;            ///< ses-<label>; empty = no session level
   std::string task = "armtrack";  ///< task-<label>
   std::string taskName;           ///< TaskName field; empty = the task label
   std::string taskDescription;    ///< TaskDescription field; empty = left out
+  /// Replace files of the same subject, session, task and tracking system. Without it an export
+  /// that would write over any existing file is refused before anything is written.
+  bool overwrite = false;
+  /// Called with every file the export will write, before any is created; throws to refuse
+  /// (e.g. a path that is the open database). May be empty.
+  std::function<void(const std::filesystem::path&)> checkTarget;
 };
 
 /// A BIDS label from any text: its ASCII letters and digits, in order ("P-001" -> "P001").
-/// Throws std::invalid_argument when none is left.
+/// Throws std::invalid_argument when none is left. Not one-to-one: for subjects use
+/// bidsSubjectLabel().
 std::string bidsLabel(const std::string& text);
+
+/// The subject label of a patient code, different for different codes: the code itself when it
+/// is ASCII letters and digits only, otherwise its ASCII letters and digits followed by "h" and
+/// the 8 hex digits of the code's FNV-1a 32-bit hash ("P-01" -> "P01h" + 8 hex digits), so
+/// "P-01" and "P01" never share sub-P01. Throws std::invalid_argument for an empty code.
+std::string bidsSubjectLabel(const std::string& patientCode);
 
 /// One tracking system's file set.
 struct BidsTrackingSystemFiles {
@@ -125,10 +143,14 @@ struct BidsExportResult {
 /// Each motion.tsv starts with a LATENCY channel (s from that system's first sample), because
 /// sample times need not be regular; SamplingFrequency is the nominal rate (the median interval's
 /// inverse) and SamplingFrequencyEffective the mean rate. A missing or non-finite value is "n/a".
-/// root/dataset_description.json is written when absent. recording may be nullptr (angles only);
-/// angles may be nullptr (raw data only). Throws std::invalid_argument for a bad label or
+/// root/dataset_description.json is written when absent; root/participants.tsv gets the
+/// subject's row (participant_id, patient_code) when it has none, and participants.json is
+/// written when absent. recording may be nullptr (angles only); angles may be nullptr (raw data
+/// only). Refused with ExportError before anything is written: a file that exists (without
+/// options.overwrite), a subject whose participants.tsv row names another patient code, or a
+/// subject folder that no row claims. Throws std::invalid_argument for a bad label or
 /// mismatched angle lengths, ExportError when there is nothing to export or a file cannot be
-/// written.
+/// written, and whatever options.checkTarget throws.
 BidsExportResult writeBidsMotion(const std::filesystem::path& root, const Recording* recording,
                                  const AngleSeries* angles, Side side, const BidsOptions& options);
 

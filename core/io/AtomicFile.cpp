@@ -1,6 +1,7 @@
 #include "core/io/AtomicFile.h"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -24,9 +25,20 @@ AtomicFile::AtomicFile(fs::path target) : m_target(std::move(target)) {
   const auto r = std::to_chars(hex, hex + 16, tag, 16);
   m_tmp = m_target;
   m_tmp.replace_filename("." + m_target.filename().string() + ".tmp-" + std::string(hex, r.ptr));
+  // 0600 whatever the umask (which can only take bits away; fchmod puts them back): what ArmTrack
+  // writes may be a patient's data, and the rename keeps the mode. O_EXCL | O_NOFOLLOW: never a
+  // file or link someone else put there.
   errno = 0;
-  m_file = std::fopen(m_tmp.c_str(), "wb");
-  if (!m_file) fail("cannot create temporary file \"" + m_tmp.string() + "\"", errno);
+  const int fd = ::open(m_tmp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC,
+                        S_IRUSR | S_IWUSR);
+  if (fd < 0) fail("cannot create temporary file \"" + m_tmp.string() + "\"", errno);
+  if (::fchmod(fd, S_IRUSR | S_IWUSR) != 0 || !(m_file = ::fdopen(fd, "wb"))) {
+    const int err = errno;
+    ::close(fd);
+    std::error_code ec;
+    fs::remove(m_tmp, ec);
+    fail("cannot create temporary file \"" + m_tmp.string() + "\"", err);
+  }
 }
 
 AtomicFile::~AtomicFile() {

@@ -23,7 +23,9 @@ class AtomicFileError : public std::runtime_error {
   std::string m_message;
 };
 
-/// Writes into a hidden temporary file beside the target (".<name>.tmp-<random hex>"). finish()
+/// Writes into a hidden temporary file beside the target (".<name>.tmp-<random hex>"), created
+/// with mode 0600 whatever the umask, so the published file is readable by its owner only
+/// (docs/storage.md, "Files and permissions"). finish()
 /// flushes it, forces it to disk (fsync) and closes it; publish() renames it over the target and
 /// forces the directory entry to disk. Destroyed before publish(), it removes the temporary file.
 /// Every failure throws AtomicFileError, with the operating system's reason.

@@ -2,6 +2,7 @@
 // and row by row for live sessions.
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -209,7 +210,7 @@ RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& m
     throw RecordingError(jsonPath.string(), 0, 0,
                          "cannot write the sidecar: is a directory; give another file name");
   bool created = true;
-  m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+  m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, S_IRUSR | S_IWUSR);
   if (m_fd < 0 && errno == EEXIST) {
     created = false;
     m_fd = ::open(csvPath.c_str(), O_WRONLY | O_CLOEXEC);  // not truncated until locked
@@ -227,6 +228,10 @@ RecordingWriter::RecordingWriter(const fs::path& csvPath, const RecordingMeta& m
     throw RecordingError(name, 0, 0, "cannot lock the file: " + osReason(err));
   }
   try {
+    // A recording is a patient's data: 0600 whatever the umask, also for a file it replaces
+    // (docs/storage.md, "Files and permissions"). A file of another owner keeps its mode.
+    if (::fchmod(m_fd, S_IRUSR | S_IWUSR) != 0 && created)
+      throw RecordingError(name, 0, 0, "cannot make the file private: " + osReason(errno));
     writeSidecar(jsonPath, meta);
     if (!created && ::ftruncate(m_fd, 0) != 0)
       throw RecordingError(name, 0, 0, "cannot empty the file: " + osReason(errno));

@@ -1,12 +1,14 @@
 #include "core/reports/PdfOutput.h"
 
 #include <QBuffer>
+#include <QFile>
 #include <QGuiApplication>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPdfWriter>
-#include <QSaveFile>
+#include <string_view>
 
+#include "core/io/AtomicFile.h"
 #include "core/reports/Reports.h"
 
 namespace armtrack::reports {
@@ -52,14 +54,20 @@ int writePdf(const QString& pdfPath, const QString& documentTitle, const QString
   scratch.open(QIODevice::WriteOnly);
   const int total = render(&scratch, documentTitle, runningHead, footer, 0, draw);
 
-  QSaveFile file(pdfPath);
-  if (!file.open(QIODevice::WriteOnly))
-    throw ReportError("cannot write the report to '" + text(pdfPath) +
-                      "': " + text(file.errorString()) + "; choose a folder you may write to");
-  const int written = render(&file, documentTitle, runningHead, footer, total, draw);
-  if (file.error() != QFileDevice::NoError || !file.commit())
-    throw ReportError("cannot write the report to '" + text(pdfPath) +
-                      "': " + text(file.errorString()) + " (nothing was written)");
+  // Second pass into memory too (a report is a few MB), then through AtomicFile: a temporary
+  // file made 0600 whatever the umask and renamed into place, as every export of a patient's
+  // data (QSaveFile would give a new file the umask's mode).
+  QBuffer pdf;
+  pdf.open(QIODevice::WriteOnly);
+  const int written = render(&pdf, documentTitle, runningHead, footer, total, draw);
+  try {
+    AtomicFile file(QFile::encodeName(pdfPath).toStdString());
+    file.write(std::string_view(pdf.data().constData(), static_cast<std::size_t>(pdf.size())));
+    file.commit();
+  } catch (const AtomicFileError& e) {
+    throw ReportError("cannot write the report to '" + text(pdfPath) + "': " + e.message() +
+                      "; choose a folder you may write to (nothing was written)");
+  }
   return written;
 }
 

@@ -9,8 +9,9 @@
 
 namespace armtrack::reports {
 
-/// Draws the report with `draw` and writes it to pdfPath through a QSaveFile. Returns the page
-/// count; throws ReportError naming pdfPath on failure.
+/// Draws the report with `draw` and writes it to pdfPath through an AtomicFile (a temporary file
+/// of mode 0600 renamed into place). Returns the page count; throws ReportError naming pdfPath
+/// on failure.
 int writePdf(const QString& pdfPath, const QString& documentTitle, const QString& runningHead,
              const QString& footer, const std::function<void(PageWriter&)>& draw);
 

@@ -25,7 +25,8 @@ namespace armtrack::storage {
 class ClinicalStore {
  public:
   /// Wraps an open database. Sessions left in "recording" by a process of this host that no
-  /// longer runs are marked "interrupted" here (see interruptedOnOpen()).
+  /// longer runs are marked "interrupted" here (see interruptedOnOpen()); on a read-only database
+  /// they are left as they are and counted (staleRecordingsKept()).
   explicit ClinicalStore(Database& db);
 
   /// Creates the first administrator of an empty database; refused when any account exists.
@@ -42,6 +43,13 @@ class ClinicalStore {
   int interruptedOnOpen() const { return m_interruptedOnOpen; }
   /// Imports whose process had died, removed when this store was made.
   int removedImportsOnOpen() const { return m_removedImportsOnOpen; }
+  /// Sessions left in "recording" by a process of this host that has ended, which were not
+  /// marked "interrupted" because the database is read-only (Database::readOnlyReason()); the
+  /// next opening with write access marks them.
+  int staleRecordingsKept() const { return m_staleRecordingsKept; }
+  /// The database this store reads and writes, for the checks of callers that write files
+  /// (Database::refuseOwnFile, isReadOnly).
+  Database& database() const { return m_db; }
 
   // Accounts (administrators; ClinicalStoreAccounts.cpp). Names are unique and found without
   // regard to case; a new name follows checkName, a new password checkNewPassword
@@ -244,6 +252,7 @@ class ClinicalStore {
   std::optional<User> m_user;
   int m_interruptedOnOpen = 0;
   int m_removedImportsOnOpen = 0;
+  int m_staleRecordingsKept = 0;
 };
 
 }  // namespace armtrack::storage

@@ -94,6 +94,11 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
     if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
       dead.push_back({q.value(0).toLongLong(), q.value(3).toString() == kOriginImport});
   q.finish();
+  if (m_db.isReadOnly()) {
+    // Nothing can be written: reading still works, and the caller says why they stay.
+    m_staleRecordingsKept = static_cast<int>(dead.size());
+    return 0;
+  }
   int interrupted = 0;
   for (const Dead& d : dead) {
     m_db.transaction([&] {

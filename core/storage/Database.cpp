@@ -1,6 +1,7 @@
 #include "core/storage/Database.h"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <QAtomicInt>
 #include <QDateTime>
@@ -13,6 +14,8 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+
+#include "core/storage/DatabaseFiles.h"
 
 namespace armtrack::storage {
 
@@ -95,13 +98,29 @@ Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
 }
 
 void Database::openSqlite(bool create) {
+  // A file this process cannot write (or whose folder it cannot write, where SQLite would create
+  // the -wal and -shm) is opened read-only, and said so on every write; it is not damaged.
+  m_readOnlyReason = sqliteReadOnlyReason(m_url.path);
   if (!openInThisProcess(m_url.path)) checkFileBeforeOpening(create);
   m_connection = nextConnectionName();
   m_db = QSqlDatabase::addDatabase("QSQLITE", m_connection);
   if (!m_db.isValid())
     fail(Kind::Io, "the Qt SQLite driver is not installed", "install libqt6sql6-sqlite");
-  m_db.setDatabaseName(m_url.path);
-  m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
+  if (!isReadOnly()) {
+    m_db.setDatabaseName(m_url.path);
+    m_db.setConnectOptions("QSQLITE_BUSY_TIMEOUT=5000");
+  } else if (QFileInfo::exists(m_url.path + "-wal")) {
+    // Another connection has it open (or died with it open): SQLite reads the write-ahead log
+    // through the -shm that is there, without creating anything (wal.html, "Read-Only
+    // Databases").
+    m_db.setDatabaseName(m_url.path);
+    m_db.setConnectOptions("QSQLITE_OPEN_READONLY;QSQLITE_BUSY_TIMEOUT=5000");
+  } else {
+    // No write-ahead log: everything is in the file, which SQLite can then read without the
+    // -shm it could not create (immutable: no locks, nothing created beside it).
+    m_db.setDatabaseName(immutableUri(m_url.path));
+    m_db.setConnectOptions("QSQLITE_OPEN_URI;QSQLITE_OPEN_READONLY");
+  }
   if (!m_db.open()) fail(Kind::Io, "cannot open", m_db.lastError().text());
   if (const std::optional<FileId> id = fileIdOf(m_url.path)) {
     {
@@ -116,6 +135,7 @@ void Database::openSqlite(bool create) {
     });
   }
   exec("PRAGMA foreign_keys = ON");
+  if (isReadOnly()) return;  // the file keeps the journal mode it was written with
   // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
   // (only a power cut may lose the last transactions), at one fsync per checkpoint.
   {
@@ -205,7 +225,16 @@ void Database::checkFileBeforeOpening(bool create) {
   const QString& path = m_url.path;
   const QFileInfo info(path);
   if (!info.exists()) {
-    if (create) return;
+    if (create) {
+      // Made here, 0600 whatever the umask, so SQLite never makes it world-readable; its -wal and
+      // -shm take the database's mode.
+      const QString why = createPrivateFile(path);
+      if (!why.isEmpty())
+        fail(Kind::Io, "cannot be created",
+             why +
+                 "; choose a folder you may write to (docs/storage.md, \"Files and permissions\")");
+      return;
+    }
     throw StorageError(Kind::NotFound, ("no database at '" + path +
                                         "': create one with 'armtrack-cli db init --db " + path +
                                         " --admin NAME', or check --db")
@@ -215,7 +244,10 @@ void Database::checkFileBeforeOpening(bool create) {
     throw StorageError(Kind::Usage,
                        ("'" + path + "' is a folder, not a database file").toStdString());
   if (info.size() == 0) {
-    if (create) return;
+    if (create) {
+      QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);  // it becomes the database
+      return;
+    }
     fail(Kind::Corrupt, "is empty", "create the database with 'armtrack-cli db init'");
   }
   QFile f(path);
@@ -226,20 +258,45 @@ void Database::checkFileBeforeOpening(bool create) {
   if (header != QByteArray("SQLite format 3\0", 16))
     fail(Kind::Corrupt, "is not a SQLite database (it may be damaged or another kind of file)",
          "it was left untouched; restore a backup or pass another --db");
-  // The check runs on a read-only connection so a damaged file is never written to.
+  // The check runs on a read-only connection so a damaged file is never written to. Such a
+  // connection still creates the -wal and -shm of a database in WAL mode when they are missing
+  // and the folder may be written; when the database is refused, what it created is removed
+  // again (an empty -wal and its index) unless another connection uses them. A database this
+  // process cannot write is read with the immutable flag when it has no write-ahead log, as it
+  // is opened below, so nothing is created beside it.
+  const bool immutable = isReadOnly() && !QFileInfo::exists(path + "-wal");
+  const QStringList leftovers = immutable ? QStringList() : missingCompanions(path);
   const QString name = nextConnectionName();
   QString verdict;
+  bool ran = false;  // the check ran (its verdict is about the file, not about reaching it)
   {
     QSqlDatabase ro = QSqlDatabase::addDatabase("QSQLITE", name);
-    ro.setDatabaseName(path);
-    ro.setConnectOptions("QSQLITE_OPEN_READONLY;QSQLITE_BUSY_TIMEOUT=5000");
-    verdict = ro.open() ? runIntegrityCheck(ro) : ro.lastError().text();
+    ro.setDatabaseName(immutable ? immutableUri(path) : path);
+    ro.setConnectOptions(immutable ? "QSQLITE_OPEN_URI;QSQLITE_OPEN_READONLY"
+                                   : "QSQLITE_OPEN_READONLY;QSQLITE_BUSY_TIMEOUT=5000");
+    if (ro.open()) {
+      QSqlQuery probe(ro);
+      ran = probe.exec("SELECT count(*) FROM sqlite_master");
+      probe.finish();
+      verdict = ran ? runIntegrityCheck(ro) : probe.lastError().text();
+    } else {
+      verdict = ro.lastError().text();
+    }
     ro.close();
   }
   QSqlDatabase::removeDatabase(name);
-  if (verdict != "ok")
+  if (!ran && isReadOnly())  // e.g. a -wal without its -shm in a folder it cannot write
+    throw StorageError(Kind::Io,
+                       ("database '" + m_url.display() + "' is read-only (" + m_readOnlyReason +
+                        ") and cannot be read as it is: " + verdict.left(300) +
+                        "; it was left untouched. Open it with write access, or copy "
+                        "it (with its -wal) to a folder you may write to")
+                           .toStdString());
+  if (verdict != "ok") {
+    removeCheckLeftovers(path, leftovers);
     fail(Kind::Corrupt, "failed its integrity check",
          verdict.left(400) + "\nit was left untouched; restore a backup (db backup)");
+  }
 }
 
 int Database::readVersion() {
@@ -316,10 +373,58 @@ void Database::backup(const QString& outPath) {
          QString::number(m_url.port) + (m_url.user.isEmpty() ? QString() : " -U " + m_url.user) +
          " -f " + outPath + " " + m_url.database + " (docs/storage.md)")
             .toStdString());
-  if (QFileInfo::exists(outPath))
+  refuseOwnFile(outPath, "the backup");
+  requireWritable("a backup must be written to the audit log, which cannot be");
+  if (QFileInfo::exists(outPath) || QFileInfo(outPath).isSymLink())
     throw StorageError(Kind::Exists,
                        ("'" + outPath + "' exists; a backup never replaces a file").toStdString());
-  exec("VACUUM INTO ?", {outPath});
+  // VACUUM INTO writes into a new or empty file: made here 0600 (O_EXCL, no link followed) so
+  // the copy of every record is as private as the database.
+  if (const QString why = createPrivateFile(outPath); !why.isEmpty())
+    throw StorageError(Kind::Io, ("cannot create the backup '" + outPath + "': " + why +
+                                  "; choose a folder you may write to")
+                                     .toStdString());
+  try {
+    exec("VACUUM INTO ?", {outPath});
+  } catch (...) {
+    QFile::remove(outPath);  // the file made above, never anyone else's
+    throw;
+  }
+}
+
+void Database::refuseSqliteFile(const QString& dbPath, const QString& path, const QString& what) {
+  const QString hit = sqliteFileAt(dbPath, path);
+  if (hit.isEmpty()) return;
+  const QString of = " ('" + hit + "') of the database '" + dbPath + "'";
+  const QString which = hit.endsWith("-wal")       ? "the write-ahead log" + of
+                        : hit.endsWith("-shm")     ? "the shared-memory index" + of
+                        : hit.endsWith("-journal") ? "the rollback journal" + of
+                                                   : "the database '" + dbPath + "' itself";
+  throw StorageError(Kind::Usage, ("'" + path + "' is " + which + ": writing " + what +
+                                   " there would destroy the records, so nothing was written; "
+                                   "choose another file name")
+                                      .toStdString());
+}
+
+void Database::refuseOwnFile(const QString& path, const QString& what) const {
+  if (!isPostgres()) refuseSqliteFile(m_url.path, path, what);
+}
+
+QString Database::readOnlyMessage(const QString& consequence) const {
+  const QString why = !m_readOnlyReason.isEmpty() ? m_readOnlyReason
+                      : !sqliteReadOnlyReason(m_url.path).isEmpty()
+                          ? sqliteReadOnlyReason(m_url.path)
+                          : QString("SQLite opened it read-only");
+  return "database '" + m_url.display() + "' is read-only: " + why +
+         (consequence.isEmpty() ? QString() : ", and " + consequence) +
+         "; nothing was changed. It is not damaged: reading works, and to change the records "
+         "the account running ArmTrack needs write access to the file and its folder "
+         "(docs/storage.md, \"Opening a read-only database\")";
+}
+
+void Database::requireWritable(const QString& consequence) const {
+  if (!isReadOnly()) return;
+  throw StorageError(Kind::Io, readOnlyMessage(consequence).toStdString());
 }
 
 void* Database::postgresConnection() const {
@@ -367,6 +472,8 @@ QSqlQuery Database::exec(const QString& sql, const QVariantList& binds) {
       text +=
           " (another workstation has held a lock for more than 5 s; try again, or see which "
           "program holds it: pg_stat_activity)";
+    if (!isPostgres() && text.contains("readonly database", Qt::CaseInsensitive))
+      throw StorageError(Kind::Io, readOnlyMessage().toStdString());
     if (text.contains("disk is full", Qt::CaseInsensitive) ||
         text.contains("disk I/O error", Qt::CaseInsensitive))
       text += " (free some space: what was committed before is intact)";
@@ -427,6 +534,7 @@ void Database::transaction(const std::function<void()>& body) {
     // and then writes fails at once with "database is locked", without waiting, when another
     // connection wrote in between (its snapshot is stale); two analyses storing their versions at
     // the same time did. BEGIN IMMEDIATE waits for the lock (the busy timeout) instead.
+    if (isReadOnly()) throw StorageError(Kind::Io, readOnlyMessage().toStdString());
     exec("BEGIN IMMEDIATE");
   }
   m_inTransaction = true;

@@ -48,12 +48,33 @@ class Database {
   /// only between statements of this object, on its thread.
   void* postgresConnection() const;
 
+  /// SQLite: whether this connection only reads, because the file or its folder cannot be
+  /// written (docs/storage.md, "Opening a read-only database"); readOnlyReason() says which.
+  /// Always false on PostgreSQL.
+  bool isReadOnly() const { return !m_readOnlyReason.isEmpty(); }
+  /// Why the database is read-only (names the file or folder and the system's reason); empty
+  /// when it is not.
+  const QString& readOnlyReason() const { return m_readOnlyReason; }
+  /// Throws StorageError(Io) saying that the database is read-only and why, when it is;
+  /// consequence says what that stops (e.g. "the export is written to the audit log, which
+  /// cannot be").
+  void requireWritable(const QString& consequence) const;
+  /// Throws StorageError(Usage) when writing `what` (e.g. "the export") to path would write over
+  /// this database's file or its -wal, -shm or -journal file (sqliteFileAt: by identity, links
+  /// and ".." resolved). Never on PostgreSQL, whose files are the server's.
+  void refuseOwnFile(const QString& path, const QString& what) const;
+  /// refuseOwnFile for the SQLite database at dbPath, before it is opened (the CLI's early
+  /// check of its outputs).
+  static void refuseSqliteFile(const QString& dbPath, const QString& path, const QString& what);
+
   /// Runs PRAGMA integrity_check (SQLite; on PostgreSQL every table is read) and returns "ok"
   /// or the problems found.
   QString integrityCheck();
   /// A consistent copy of the whole database into a new file (SQLite: VACUUM INTO), while others
-  /// may keep writing. Throws StorageError(Exists) when outPath exists, Unsupported on
-  /// PostgreSQL (the message gives the pg_dump command).
+  /// may keep writing. The file is created with mode 0600 (whatever the umask) before SQLite
+  /// writes into it. Throws StorageError(Exists) when outPath exists, Usage when it is one of
+  /// this database's own files (refuseOwnFile), Io when the database is read-only (a backup is
+  /// audited), Unsupported on PostgreSQL (the message gives the pg_dump command).
   void backup(const QString& outPath);
 
   /// Prepares and runs sql with positional (?) bindings. Throws StorageError(Io) naming the
@@ -79,6 +100,7 @@ class Database {
   void openPostgres();
   [[noreturn]] void explainConnectFailure(const QString& error);
   void checkFileBeforeOpening(bool create);
+  QString readOnlyMessage(const QString& consequence = {}) const;
   int readVersion();
   void applyStep(const MigrationStep& step);
   [[noreturn]] void fail(StorageError::Kind kind, const QString& what, const QString& detail);
@@ -97,6 +119,8 @@ class Database {
   int m_applied = 0;
   bool m_inTransaction = false;
   std::vector<std::function<void()>> m_afterTransaction;
+  /// SQLite: why the file cannot be written (then the connection is read-only); else empty.
+  QString m_readOnlyReason;
   /// SQLite: counts this connection among the process's connections to its file while it is
   /// open (Database.cpp says why).
   std::shared_ptr<void> m_fileHold;

@@ -2,9 +2,9 @@
 
 #include <QDir>
 #include <QRegularExpression>
-#include <QStandardPaths>
 #include <QUrl>
 
+#include "core/storage/DatabaseFiles.h"
 #include "core/storage/StorageError.h"
 
 namespace armtrack::storage {
@@ -96,11 +96,9 @@ DatabaseUrl DatabaseUrl::parse(const QString& text) {
 }
 
 DatabaseUrl DatabaseUrl::defaultLocation() {
-  const QString dir = QStandardPaths::writableLocation(QStandardPaths::AppDataLocation);
-  if (dir.isEmpty())
-    throw StorageError(StorageError::Kind::Io,
-                       "no application data folder on this system; pass --db PATH");
-  QDir().mkpath(dir);
+  // Made 0700 when missing, and tightened to 0700 when it is there and this user's: the folder
+  // is ArmTrack's own and holds the records (docs/storage.md, "Files and permissions").
+  const QString dir = privateAppDataFolder();
   DatabaseUrl url;
   url.path = QDir(dir).filePath("armtrack.db");
   return url;

@@ -23,7 +23,8 @@ struct DatabaseUrl {
   /// means libpq's default socket. Throws StorageError(Usage) for an empty or malformed URL, or a
   /// password in it.
   static DatabaseUrl parse(const QString& text);
-  /// `armtrack.db` in QStandardPaths::AppDataLocation (the folder is created when missing).
+  /// `armtrack.db` in QStandardPaths::AppDataLocation. The folder is created 0700 when missing,
+  /// and tightened to 0700 when it exists and belongs to this user (privateAppDataFolder()).
   static DatabaseUrl defaultLocation();
   /// For messages: the path, or postgresql://user@host:port/dbname (never a password).
   QString display() const;

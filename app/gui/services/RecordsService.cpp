@@ -7,6 +7,7 @@
 #include <QThread>
 
 #include "core/io/Recording.h"
+#include "core/storage/DatabaseFiles.h"
 
 Q_LOGGING_CATEGORY(lcRecords, "armtrack.gui.records")
 
@@ -206,7 +207,7 @@ void RecordsService::create(const storage::DatabaseUrl& url, const QString& admi
           Connection& c, JobContext&) -> Deliver {
         if (url.engine == storage::DatabaseUrl::Engine::Sqlite) {
           const QString folder = QFileInfo(url.path).absolutePath();
-          if (!QDir().mkpath(folder))
+          if (!storage::makePrivateFolders(folder).isEmpty())  // 0700 where it makes one
             throw StorageError(StorageError::Kind::Io,
                                tr("cannot create the folder %1: choose a folder you may write to")
                                    .arg(folder)

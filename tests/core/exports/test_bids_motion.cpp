@@ -332,16 +332,23 @@ TEST(BidsMotion, HostileInputAndUnwritableFoldersLeaveNothingBehind) {
     EXPECT_NE(std::string(e.what()).find("tracksys-angles"), std::string::npos) << e.what();
   }
   EXPECT_EQ(listing(dir.path()), before);
-  // The last file of the set cannot be created (a folder has its name): no file of the set and
-  // no temporary file is left, and an existing dataset_description.json is not touched.
+  // The last file of the set cannot be created (a folder has its name; overwrite, so the export
+  // goes as far as creating it): no file of the set and no temporary file is left, and an
+  // existing dataset_description.json and participants.tsv are not touched.
   const fs::path motionDir = dir / "root" / "sub-P001" / "ses-20261125" / "motion";
   const fs::path blocked =
       motionDir / "sub-P001_ses-20261125_task-flexion_tracksys-angles_motion.tsv";
   fs::create_directories(blocked);
   { std::ofstream(dir / "root" / "dataset_description.json") << "{}"; }
+  {
+    std::ofstream(dir / "root" / "participants.tsv")
+        << "participant_id\tpatient_code\nsub-P001\tP001\n";
+  }
   const Recording rec = simulatedSession(knownMovement(), 0.5, 50.0);
+  BidsOptions replace = options();
+  replace.overwrite = true;
   try {
-    writeBidsMotion(dir / "root", &rec, &two, Side::Right, options());
+    writeBidsMotion(dir / "root", &rec, &two, Side::Right, replace);
     FAIL() << "no error";
   } catch (const ExportError& e) {
     EXPECT_EQ(e.path(), blocked);
@@ -349,6 +356,125 @@ TEST(BidsMotion, HostileInputAndUnwritableFoldersLeaveNothingBehind) {
   fs::remove(blocked);
   EXPECT_TRUE(fs::is_empty(motionDir));
   EXPECT_EQ(readText(dir / "root" / "dataset_description.json"), "{}");
+  EXPECT_EQ(readText(dir / "root" / "participants.tsv"),
+            "participant_id\tpatient_code\nsub-P001\tP001\n");
+  EXPECT_FALSE(fs::exists(dir / "root" / "participants.json"));
+}
+
+// Issue 24, item 7: a second export into the same data set replaced the files of the first.
+// Without overwrite it is refused before anything is written, naming the file; with it the
+// subject's files of that session are replaced.
+TEST(BidsMotion, ExistingFilesAreReplacedOnlyWithOverwrite) {
+  TempDir dir;
+  AngleSeries two{{0.0, 0.1, 0.2}, {ClinicalRow{}, ClinicalRow{}, ClinicalRow{}}};
+  const BidsExportResult first = writeBidsMotion(dir.path(), nullptr, &two, Side::Right, options());
+  ASSERT_EQ(first.systems.size(), 1u);
+  const fs::path tsv = first.systems[0].motionTsv;
+  { std::ofstream(tsv, std::ios::trunc) << "kept\n"; }
+  const auto before = listing(dir.path());
+  const std::string participants = readText(dir / "participants.tsv");
+  AngleSeries other{{0.0, 0.5}, {ClinicalRow{}, ClinicalRow{}}};
+  try {
+    writeBidsMotion(dir.path(), nullptr, &other, Side::Right, options());
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_NE(std::string(e.what()).find("exists; nothing was written"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(listing(dir.path()), before);
+  EXPECT_EQ(readText(tsv), "kept\n");
+  BidsOptions replace = options();
+  replace.overwrite = true;
+  writeBidsMotion(dir.path(), nullptr, &other, Side::Right, replace);
+  EXPECT_EQ(readLines(tsv).size(), 2u);
+  EXPECT_EQ(listing(dir.path()), before);
+  EXPECT_EQ(readText(dir / "participants.tsv"), participants);
+}
+
+// Issue 24, item 7: patients P-01 and P01 both went to sub-P01. Distinct codes get distinct
+// subject labels, and a subject that participants.tsv gives to another patient code (or that no
+// row claims) is never added to, with or without overwrite.
+TEST(BidsMotion, DistinctPatientsNeverShareASubject) {
+  EXPECT_EQ(bidsSubjectLabel("P01"), "P01");
+  std::set<std::string> labels;
+  for (const char* code : {"P01", "P-01", "P_01", "P 01", "P.01", "p01", "P-0-1",
+                           "P\xc3\xa9"
+                           "01"}) {
+    const std::string label = bidsSubjectLabel(code);
+    EXPECT_EQ(bidsLabel(label), label) << code;  // letters and digits only
+    labels.insert(label);
+  }
+  EXPECT_EQ(labels.size(), 8u);
+  EXPECT_EQ(bidsSubjectLabel("P-01").rfind("P01h", 0), 0u);
+  EXPECT_EQ(bidsSubjectLabel("P-01"), bidsSubjectLabel("P-01"));  // the same every time
+  EXPECT_EQ(bidsSubjectLabel("--").size(), 9u);                   // "h" and the hash
+  EXPECT_THROW(bidsSubjectLabel(""), std::invalid_argument);
+
+  TempDir dir;
+  AngleSeries two{{0.0, 0.1}, {ClinicalRow{}, ClinicalRow{}}};
+  BidsOptions a = options(), b = options();
+  a.subject = bidsSubjectLabel("P01");
+  a.patientCode = "P01";
+  b.subject = bidsSubjectLabel("P-01");
+  b.patientCode = "P-01";
+  const BidsExportResult ra = writeBidsMotion(dir.path(), nullptr, &two, Side::Right, a);
+  const BidsExportResult rb = writeBidsMotion(dir.path(), nullptr, &two, Side::Right, b);
+  EXPECT_NE(ra.motionDir, rb.motionDir);
+  EXPECT_EQ(readLines(dir / "participants.tsv"),
+            (std::vector<std::string>{"participant_id\tpatient_code", "sub-P01\tP01",
+                                      "sub-" + b.subject + "\tP-01"}));
+  const json pj = json::parse(readText(dir / "participants.json"));
+  EXPECT_TRUE(pj.contains("patient_code"));
+
+  // Another patient whose label is sub-P01 (a hand-made collision): refused, nothing written.
+  const auto before = listing(dir.path());
+  const std::string rows = readText(dir / "participants.tsv");
+  BidsOptions c = a;
+  c.patientCode = "Q07";
+  c.session = "other";
+  c.overwrite = true;
+  try {
+    writeBidsMotion(dir.path(), nullptr, &two, Side::Right, c);
+    FAIL() << "no error";
+  } catch (const ExportError& e) {
+    EXPECT_EQ(e.path(), dir / "sub-P01");
+    EXPECT_NE(std::string(e.what()).find("another patient"), std::string::npos) << e.what();
+  }
+  // A subject folder no row claims (made by hand, or by an earlier export): refused too.
+  fs::create_directories(dir / "sub-X9");
+  BidsOptions d = options();
+  d.subject = "X9";
+  d.patientCode = "X9";
+  EXPECT_THROW(writeBidsMotion(dir.path(), nullptr, &two, Side::Right, d), ExportError);
+  fs::remove(dir / "sub-X9");
+  EXPECT_EQ(listing(dir.path()), before);
+  EXPECT_EQ(readText(dir / "participants.tsv"), rows);
+  // A participants.tsv of another tool gains the column, with n/a for its own subjects.
+  TempDir other;
+  { std::ofstream(other / "participants.tsv") << "participant_id\tage\nsub-01\t34\n"; }
+  writeBidsMotion(other.path(), nullptr, &two, Side::Right, a);
+  EXPECT_EQ(readLines(other / "participants.tsv"),
+            (std::vector<std::string>{"participant_id\tage\tpatient_code", "sub-01\t34\tn/a",
+                                      "sub-P01\tn/a\tP01"}));
+  // The caller's check sees every file before any is written, and may refuse one.
+  TempDir guarded;
+  std::vector<fs::path> seen;
+  BidsOptions e = a;
+  e.checkTarget = [&](const fs::path& p) {
+    seen.push_back(p);
+    if (p.filename() == "participants.tsv") throw std::runtime_error("refused");
+  };
+  EXPECT_THROW(writeBidsMotion(guarded.path(), nullptr, &two, Side::Right, e), std::runtime_error);
+  EXPECT_TRUE(listing(guarded.path()).empty());
+  e.checkTarget = [&](const fs::path& p) { seen.push_back(p); };
+  seen.clear();
+  writeBidsMotion(guarded.path(), nullptr, &two, Side::Right, e);
+  EXPECT_EQ(seen.size(), 6u);  // participants.tsv and .json, the description, the angles' three
+  for (const std::string& f : listing(guarded.path())) {
+    if (fs::is_regular_file(guarded / f)) {
+      EXPECT_NE(std::find(seen.begin(), seen.end(), guarded / f), seen.end()) << f;
+    }
+  }
 }
 
 }  // namespace
