@@ -1,5 +1,7 @@
 #include "core/storage/Schema.h"
 
+#include "core/storage/AuditLog.h"
+
 namespace armtrack::storage {
 
 QString SqlDialect::idColumn() const {
@@ -191,8 +193,13 @@ const std::vector<MigrationStep>& migrationSteps() {
            " row_count INTEGER NOT NULL,"
            " data {blob} NOT NULL,"
            " PRIMARY KEY (estimate_id, seq))",
+           // Audit log: a hash chain (AuditLog.h). Each entry holds the previous entry's hash
+           // and its own; the hook chains the entries already there, in id order, then adds
+           // the triggers that make the table append-only.
+           "ALTER TABLE audit_log ADD COLUMN prev_hash TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE audit_log ADD COLUMN hash TEXT NOT NULL DEFAULT ''",
        },
-       {}},
+       [](Database& db) { chainAuditLogAndMakeItAppendOnly(db); }},
   };
   return steps;
 }
