@@ -1,5 +1,6 @@
-// The records' own checks, tried as a forger would try them: the audit log's hash chain and
-// append-only triggers (docs/storage.md, "Audit log"). On both engines.
+// The records' own checks, tried as a forger and a broken disk would try them: the audit log's
+// hash chain and append-only triggers, and the checks of stored recordings and estimates that
+// db check and the exports run (docs/storage.md, "Audit log" and "Checks"). On both engines.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -12,6 +13,7 @@
 #include <thread>
 
 #include "core/storage/AuditLog.h"
+#include "core/storage/RecordsCheck.h"
 #include "tests/core/storage/StorageTestSupport.h"
 
 using namespace armtrack;
@@ -21,6 +23,7 @@ using namespace armtrack::storage::test;
 namespace {
 
 using AuditChain = Engines;
+using RecordsCheck = Engines;
 
 // What a forger holding the file (SQLite) or the database role (PostgreSQL) does first.
 void dropAuditTriggers(const Fixture& f) {
@@ -371,4 +374,212 @@ TEST_P(AuditChain, MigrationChainsTheEntriesAlreadyThere) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, AuditChain, testing::Values(Engine::Sqlite, Engine::Postgres),
+                         engineName);
+
+namespace {
+
+// A session of 3 s at 200 Hz (at least 3 chunks) for patient P1.
+qint64 importSession(Fixture& f, const char* name) {
+  simulateTo(f.file(name), 3.0, 200.0);
+  return f.store->importRecording(f.file(name), "P1");
+}
+
+void flipByteOfChunk(Fixture& f, qint64 session, int seq) {
+  QSqlQuery q = f.db->exec("SELECT data FROM recording_chunks WHERE session_id = ? AND seq = ?",
+                           {session, seq});
+  ASSERT_TRUE(q.next());
+  QByteArray data = q.value(0).toByteArray();
+  q.finish();
+  data[data.size() - 3] = static_cast<char>(data[data.size() - 3] ^ 0x10);
+  f.db->exec("UPDATE recording_chunks SET data = ? WHERE session_id = ? AND seq = ?",
+             {data, session, seq});
+}
+
+std::string joined(const QStringList& problems) {
+  return problems.join(" | ").toStdString();
+}
+
+}  // namespace
+
+TEST_P(RecordsCheck, NamesEveryDamagedSessionAndWhatIsWrong) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const qint64 flipped = importSession(f, "a.csv");
+  const qint64 hole = importSession(f, "b.csv");
+  const qint64 tail = importSession(f, "c.csv");
+  const qint64 codec = importSession(f, "d.csv");
+  const qint64 fine = importSession(f, "e.csv");
+  ASSERT_GE(f.store->session(tail).chunks, 3);
+  flipByteOfChunk(f, flipped, 1);
+  f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = 1", {hole});
+  f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = ?",
+             {tail, f.store->session(tail).chunks - 1});
+  f.db->exec("UPDATE recording_chunks SET codec = 'atc9-zstd' WHERE session_id = ? AND seq = 0",
+             {codec});
+
+  const RecordsCheckReport r = f.store->checkRecords();
+  EXPECT_EQ(r.sessionsChecked, 5);
+  ASSERT_EQ(r.damaged.size(), 4u);
+  std::map<qint64, std::string> found;
+  for (const SessionDamage& d : r.damaged) found[d.sessionId] = joined(d.problems);
+  EXPECT_EQ(found.count(fine), 0u);
+  EXPECT_NE(found[flipped].find("chunk 1: checksum mismatch"), std::string::npos) << found[flipped];
+  EXPECT_NE(found[hole].find("chunk 1 is missing"), std::string::npos) << found[hole];
+  EXPECT_NE(found[tail].find("(chunks at the end are missing)"), std::string::npos) << found[tail];
+  EXPECT_NE(found[codec].find("chunk 0: unknown codec 'atc9-zstd'"), std::string::npos)
+      << found[codec];
+
+  // The lighter check exports make finds the same damage without decoding.
+  for (const qint64 id : {flipped, hole, tail, codec})
+    EXPECT_FALSE(recordingProblems(*f.db, id, RecordingDepth::Checksums).isEmpty()) << id;
+  EXPECT_TRUE(recordingProblems(*f.db, fine, RecordingDepth::Checksums).isEmpty());
+  EXPECT_TRUE(recordingProblems(*f.db, fine, RecordingDepth::Decode).isEmpty());
+}
+
+// What only decoding sees: a chunk whose rows are not the index's, or whose times are not.
+TEST_P(RecordsCheck, DecodingFindsWhatTheIndexHides) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = importSession(f, "a.csv");
+  f.db->exec("UPDATE recording_chunks SET t_last = t_last - 0.001 WHERE session_id = ? AND seq = 0",
+             {id});
+  const QStringList problems = recordingProblems(*f.db, id, RecordingDepth::Decode);
+  ASSERT_EQ(problems.size(), 1) << joined(problems);
+  EXPECT_NE(problems[0].toStdString().find("chunk 0: its times"), std::string::npos)
+      << joined(problems);
+  EXPECT_NE(problems[0].toStdString().find("are not the index's"), std::string::npos);
+}
+
+// A session a live process is writing is not called damaged (it is listed as being recorded);
+// once its writer is gone it is marked interrupted and checked like any other.
+TEST_P(RecordsCheck, ASessionBeingRecordedIsLeftAlone) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = importSession(f, "a.csv");
+  f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = 1", {id});
+  f.db->exec(
+      "UPDATE sessions SET status = 'recording', recorder_host = ?, recorder_pid = ? WHERE "
+      "id = ?",
+      {QSysInfo::machineHostName(), static_cast<qint64>(::getpid()), id});
+  RecordsCheckReport r = f.store->checkRecords();
+  EXPECT_TRUE(r.damaged.empty());
+  EXPECT_EQ(r.beingRecorded, std::vector<qint64>{id});
+  EXPECT_EQ(r.sessionsChecked, 0);
+
+  // The writer died (a process id that is not running): interrupted on the next open, checked.
+  pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ASSERT_GT(dead, 0);
+  int status = 0;
+  ::waitpid(dead, &status, 0);
+  f.db->exec("UPDATE sessions SET recorder_pid = ? WHERE id = ?", {static_cast<qint64>(dead), id});
+  f.close();
+  Database db(DatabaseUrl::parse(f.path), {});
+  ClinicalStore store(db);
+  EXPECT_EQ(store.interruptedOnOpen(), 1);
+  store.signIn("admin", kAdminPassword);
+  r = store.checkRecords();
+  ASSERT_EQ(r.damaged.size(), 1u);
+  EXPECT_EQ(r.damaged[0].sessionId, id);
+  EXPECT_TRUE(r.beingRecorded.empty());
+}
+
+// An export while the recorder appends chunks on another connection is not refused: the check
+// reads the row count and the chunk index in one statement.
+TEST_P(RecordsCheck, ARecordingBeingWrittenPassesTheExportCheck) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const Recording rec = simulateTo(f.file("rec.csv"), 20.0, 200.0);
+  const qint64 id = f.store->beginRecording("P1", "", rec.meta, RecordingColumns{});
+  std::atomic<bool> done{false};
+  std::string error;
+  std::thread recorder([&] {
+    try {
+      Database db(DatabaseUrl::parse(f.path), {});
+      ClinicalStore store(db);
+      store.signIn("admin", kAdminPassword);
+      const std::span<const ArmSample> all(rec.samples);
+      for (std::size_t i = 0; i + 200 <= all.size(); i += 200)
+        store.appendChunk(id, all.subspan(i, 200));
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    done = true;
+  });
+  int checks = 0;
+  while (!done) {
+    EXPECT_NO_THROW(f.store->requireIntactRecording(id));
+    ++checks;
+  }
+  recorder.join();
+  EXPECT_EQ(error, "");
+  EXPECT_GT(checks, 0);
+  EXPECT_EQ(f.store->session(id).sampleRows, static_cast<qint64>(rec.samples.size() / 200 * 200));
+  EXPECT_NO_THROW(f.store->requireIntactRecording(id));
+}
+
+// Estimates stored in chunks (estimate_chunks): each complete version's chunks in sequence, their
+// rows adding up to the row count its parameters give. A version still being written, and one
+// stored whole before estimate_chunks, are not judged so.
+TEST_P(RecordsCheck, EstimateChunksInSequenceAndAddingUp) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = importSession(f, "a.csv");
+  const auto version = [&](int v, int complete, const QString& params, const QByteArray& data) {
+    return f.db->insert(
+        "INSERT INTO estimates (session_id, version, created_at, params_json, codec, data, "
+        "complete) VALUES (?, ?, '2026-01-01T00:00:00.000Z', ?, 'est-f64-zstd-v1', ?, ?)",
+        {id, v, params, data, complete});
+  };
+  const auto chunk = [&](qint64 estimate, int seq, int rows) {
+    f.db->exec(
+        "INSERT INTO estimate_chunks (estimate_id, seq, row_count, data) VALUES (?, ?, ?, ?)",
+        {estimate, seq, rows, QByteArray("x")});
+  };
+  const QByteArray none("");  // not null: an empty blob
+  const qint64 good = version(11, 1, R"({"rows": 300})", none);
+  for (int seq = 0; seq < 3; ++seq) chunk(good, seq, 100);
+  EXPECT_TRUE(estimateProblems(*f.db, id).isEmpty()) << joined(estimateProblems(*f.db, id));
+
+  const qint64 holed = version(12, 1, R"({"rows": 300})", none);
+  chunk(holed, 0, 100);
+  chunk(holed, 2, 100);
+  const qint64 writing = version(13, 0, R"({"rows": 300})", none);
+  chunk(writing, 1, 5);
+  version(14, 1, R"({"rows": 300})", QByteArray("a whole blob"));  // before estimate_chunks
+  version(15, 1, R"({"rows": 300})", none);                        // nothing at all
+  const QStringList problems = estimateProblems(*f.db, id);
+  ASSERT_EQ(problems.size(), 3) << joined(problems);
+  EXPECT_EQ(problems[0], "estimates version 12: chunk 1 is missing");
+  EXPECT_EQ(problems[1], "estimates version 12: its chunks hold 200 rows, its parameters say 300");
+  EXPECT_EQ(problems[2], "estimates version 15: it has neither chunks nor data");
+  const RecordsCheckReport r = f.store->checkRecords();
+  ASSERT_EQ(r.damaged.size(), 1u);
+  EXPECT_EQ(r.damaged[0].problems.size(), 3);
+}
+
+// Exports and reports refuse a damaged recording before writing anything, saying which session,
+// how, and what to do; so does reading it.
+TEST_P(RecordsCheck, ADamagedRecordingIsRefusedSayingWhatToDo) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  const qint64 id = importSession(f, "a.csv");
+  f.store->requireIntactRecording(id);
+  flipByteOfChunk(f, id, 1);
+  const std::string session = "session " + std::to_string(id);
+  for (const auto& refused : std::vector<std::function<void()>>{
+           [&] { f.store->requireIntactRecording(id); }, [&] { f.store->readRecording(id); }}) {
+    const StorageError e = expectError(refused, Kind::Corrupt, session + ", chunk 1: checksum");
+    const std::string what = e.what();
+    EXPECT_NE(what.find("The recording of " + session + " is damaged: restore a backup"),
+              std::string::npos)
+        << what;
+    EXPECT_NE(what.find("db check"), std::string::npos) << what;
+  }
+  f.db->exec("DELETE FROM recording_chunks WHERE session_id = ? AND seq = 1", {id});
+  expectError([&] { f.store->requireIntactRecording(id); }, Kind::Corrupt,
+              session + ", chunk 1 is missing");
+}
+
+INSTANTIATE_TEST_SUITE_P(Engines, RecordsCheck, testing::Values(Engine::Sqlite, Engine::Postgres),
                          engineName);
