@@ -24,7 +24,9 @@ constexpr std::string_view kDbHelp = R"(Usage: armtrack-cli db <init|check|migra
 
   db init --admin NAME      create the database and its first administrator (password from
                             ARMTRACK_PASSWORD or a prompt, at least 10 characters)
-  db check --user NAME      integrity check and schema version
+  db check --user NAME      integrity check, schema version, the audit log's hash chain, and
+                            every recording decoded chunk by chunk (with its estimates); lists
+                            each damaged session and what is wrong (exit status 1)
   db migrate --user NAME    bring an older schema up to date (administrators; back up first)
   db backup --out FILE --user NAME
                             a consistent copy while others keep working (administrators;
@@ -88,9 +90,52 @@ int dbCheck(const std::vector<std::string>& rest, std::ostream& out, std::ostrea
   ClinicalContext c(a, {}, true, /*runPending=*/false);
   const QString verdict = c.db().integrityCheck();
   if (verdict != "ok") throw std::runtime_error("integrity check failed: " + ss(verdict));
-  out << "ok: " << ss(c.db().url().display()) << ", schema version " << c.db().schemaVersion()
-      << ", " << c.store().interruptedOnOpen() << " interrupted recording(s) marked\n";
-  return 0;
+  const storage::AuditChainReport audit = storage::verifyAuditChain(c.db());
+  const storage::RecordsCheckReport records = c.store().checkRecords();
+  const std::string where = ss(c.db().url().display());
+  std::string recorded;
+  if (!records.beingRecorded.empty()) {
+    recorded = "; being recorded now, not checked:";
+    for (const qint64 id : records.beingRecorded) recorded += " " + std::to_string(id);
+  }
+  if (audit.intact() && records.damaged.empty()) {
+    out << "ok: " << where << ", schema version " << c.db().schemaVersion() << ", "
+        << c.store().interruptedOnOpen() << " interrupted recording(s) marked\n"
+        << "audit log: " << audit.entries << " entries, hash chain intact\n"
+        << "recordings: " << records.sessionsChecked << " session(s) checked, none damaged"
+        << recorded << "\n";
+    return 0;
+  }
+  // Every problem on standard output, one a line; the error line sums them up.
+  std::vector<std::string> found;
+  if (audit.brokenAt != 0) {
+    out << "audit log: " << ss(audit.problem) << " (" << audit.brokenLinks << " broken link(s) in "
+        << audit.entries << " entries)\n";
+    found.push_back("the audit log was changed outside ArmTrack (first at entry " +
+                    std::to_string(audit.brokenAt) +
+                    "): keep this database as evidence and compare it with a backup");
+  }
+  if (!audit.guardProblem.isEmpty()) {
+    out << "audit log: " << ss(audit.guardProblem) << "\n";
+    found.push_back(
+        "the audit log's append-only triggers were removed outside ArmTrack: keep "
+        "this database as evidence and compare it with a backup, which has them");
+  }
+  if (!records.damaged.empty()) {
+    std::string ids;
+    for (const storage::SessionDamage& d : records.damaged) {
+      for (const QString& problem : d.problems)
+        out << "session " << d.sessionId << ": damaged: " << ss(problem) << "\n";
+      ids += (ids.empty() ? "" : ", ") + std::to_string(d.sessionId);
+    }
+    found.push_back(std::to_string(records.damaged.size()) + " damaged session(s) (" + ids +
+                    ") of " + std::to_string(records.sessionsChecked) +
+                    " checked: restore a backup made before the damage" + recorded);
+  }
+  std::string summary;
+  for (const std::string& f : found) summary += (summary.empty() ? "" : "; ") + f;
+  throw std::runtime_error("db check: " + where + ": " + summary +
+                           " (each problem is listed on standard output)");
 }
 
 int dbMigrate(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {

@@ -46,11 +46,23 @@ constexpr std::string_view kSessionHelp =
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
-constexpr std::string_view kAuditHelp = R"(Usage: armtrack-cli audit [--json] --user ADMIN
+constexpr std::string_view kAuditHelp =
+    R"(Usage: armtrack-cli audit [--json] --user ADMIN
+       armtrack-cli audit --verify [--expect ID:HASH] [--json] --user ADMIN
 
 The audit log: who created, changed, viewed or exported what, and when; failed sign-ins and
 refused actions (administrators only). One entry a line, tab-separated: time, account, action,
 object type, object, detail; control characters in them are shown escaped (\t, \n, \xHH, \\).
+
+  --verify          check the log's hash chain instead of printing it: each entry's hash over
+                    its content and the hash of the entry before. Prints the number of entries
+                    and the newest entry as ID:HASH: keep that line elsewhere (on paper, in
+                    another system). Exit status 1 at a broken link, naming the first entry that
+                    does not fit and how (edited, deleted, inserted)
+  --expect ID:HASH  with --verify: also check that entry ID still has that hash, as kept before.
+                    A log rewritten from some entry on with every later hash recomputed, or cut
+                    off at the end, has no broken link; this shows it
+
 --db URL as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
@@ -380,10 +392,58 @@ int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std:
   throw UsageError("session", "unknown subcommand '" + sub + "'");
 }
 
+namespace {
+
+int auditVerify(const Args& a, ClinicalContext& c, std::ostream& out) {
+  std::optional<storage::AuditAnchor> expect;
+  if (const std::optional<std::string> text = a.value("--expect")) {
+    expect = storage::AuditAnchor::parse(qs(*text));
+    if (!expect)
+      a.fail("--expect: must be ID:HASH as 'audit --verify' printed it, got '" + *text + "'");
+  }
+  const storage::AuditChainReport r = c.store().verifyAuditLog(expect);
+  if (a.flag("--json")) {
+    printJson(out, QJsonDocument(QJsonObject{
+                       {"entries", r.entries},
+                       {"intact", r.intact()},
+                       {"newest", r.newest ? QJsonValue(r.newest->text()) : QJsonValue()},
+                       {"broken_at", r.brokenAt > 0 ? QJsonValue(r.brokenAt) : QJsonValue()},
+                       {"broken_links", r.brokenLinks},
+                       {"problem", r.problem},
+                       {"expected", expect ? QJsonValue(expect->text()) : QJsonValue()},
+                       {"expected_problem", r.anchorProblem},
+                       {"triggers_problem", r.guardProblem}}));
+  } else {
+    out << "audit log: " << r.entries << " entries, hash chain "
+        << (r.brokenAt == 0 ? "intact" : "broken") << "\n";
+    if (r.newest)
+      out << "newest entry (keep this line elsewhere; 'audit --verify --expect ID:HASH' checks it "
+             "later): "
+          << ss(r.newest->text()) << "\n";
+    if (expect && r.anchorProblem.isEmpty())
+      out << "entry " << expect->id << " still has the hash kept\n";
+  }
+  if (r.intact()) return 0;
+  QStringList problems;
+  if (r.brokenAt != 0)
+    problems << r.problem + " (" + QString::number(r.brokenLinks) + " broken link(s))";
+  if (!r.anchorProblem.isEmpty()) problems << r.anchorProblem;
+  if (!r.guardProblem.isEmpty()) problems << r.guardProblem;
+  throw std::runtime_error(
+      "the audit log of " + ss(c.db().url().display()) +
+      " was changed outside ArmTrack: " + ss(problems.join("; ")) +
+      ". ArmTrack never changes or deletes an entry: keep this database as evidence and compare "
+      "it with a backup ('audit --json' on both)");
+}
+
+}  // namespace
+
 int auditCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream&) {
-  const Args a("audit", args, withDb({{"--json", false}}));
+  const Args a("audit", args, withDb({{"--json", false}, {"--verify", false}, {"--expect", true}}));
   if (a.help()) return out << kAuditHelp, 0;
+  if (a.value("--expect") && !a.flag("--verify")) a.fail("--expect goes with --verify");
   ClinicalContext c(a, {}, true);
+  if (a.flag("--verify")) return auditVerify(a, c, out);
   QJsonArray list;
   for (const storage::AuditEntry& e : c.store().auditLog()) {
     if (!a.flag("--json"))

@@ -112,6 +112,7 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
 
 int writeSessionReport(storage::ClinicalStore& store, qint64 id, const QString& pdf) {
   checkOutput(store, {pdf.toStdString()}, "the report");
+  store.requireIntactRecording(id);  // a report of a damaged recording is refused, saying so
   const reports::SessionReportData d = sessionReportData(store, id);
   const int pages = reports::writeSessionReport(d, pdf);
   store.audit("export", "session", QString::number(id), "report pdf");
@@ -170,6 +171,9 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
     out.files = {target, sidecarPath(target)};
     return out;
   }
+  // csv and mot come from the estimates, which outlive a damaged recording: refused as the
+  // recording and bids formats are (they read the recording, which checks itself).
+  if (format != ExportFormat::Bids) store.requireIntactRecording(id);
   const storage::SessionAngles s = storage::sessionAngles(store, id, storage::SeriesRows::All);
   if (format == ExportFormat::Csv) {
     const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);

@@ -476,8 +476,9 @@ std::string encodeWithBits(std::span<const ArmSample> samples, std::uint32_t mag
   return blob + body;
 }
 
-std::vector<ArmSample> decodeWithBits(const std::string& frame, std::uint64_t expectedRows,
-                                      std::uint32_t magic, int version, std::uint64_t bound) {
+// The header of an ATC2 or ATC3 chunk checked (magic, frame length) and its checksum against
+// everything after it; returns the length of the zstd frame.
+std::uint32_t checkHeaderAndSum(std::string_view frame, std::uint32_t magic) {
   if (frame.size() < kHeader2 || le32(frame.data()) != magic)
     throw std::runtime_error("not an ArmTrack chunk (bad magic number)");
   const std::uint32_t frameBytes = le32(frame.data() + 4);
@@ -487,6 +488,12 @@ std::vector<ArmSample> decodeWithBits(const std::string& frame, std::uint64_t ex
                             (static_cast<std::uint64_t>(le32(frame.data() + 12)) << 32);
   if (sum != fnv1a(frame.data() + kHeader2, frame.size() - kHeader2))
     throw std::runtime_error("checksum mismatch: the chunk was damaged");
+  return frameBytes;
+}
+
+std::vector<ArmSample> decodeWithBits(const std::string& frame, std::uint64_t expectedRows,
+                                      std::uint32_t magic, int version, std::uint64_t bound) {
+  const std::uint32_t frameBytes = checkHeaderAndSum(frame, magic);
   const std::string raw = decompress(frame.data() + kHeader2, frameBytes, bound, expectedRows);
   detail::BitReader bits(frame.data() + kHeader2 + frameBytes,
                          frame.size() - kHeader2 - frameBytes);
@@ -523,6 +530,17 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
   if (codec == kAtc2Name) return decodeWithBits(frame, expectedRows, kMagic2, 2, bound);
   if (codec != kName) throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
   return decodeWithBits(frame, expectedRows, kMagic3, 3, bound3);
+}
+
+void ChunkCodec::verify(std::string_view frame, std::uint64_t expectedRows,
+                        std::string_view codec) {
+  if (codec == kLegacyName) {  // no checksum: only decoding tells
+    decode(std::string(frame), expectedRows, codec);
+    return;
+  }
+  if (codec != kName && codec != kAtc2Name)
+    throw std::runtime_error("unknown codec '" + std::string(codec) + "'");
+  checkHeaderAndSum(frame, codec == kName ? kMagic3 : kMagic2);
 }
 
 }  // namespace armtrack::storage

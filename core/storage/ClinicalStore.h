@@ -12,8 +12,10 @@
 
 #include "core/ArmSample.h"
 #include "core/io/Recording.h"
+#include "core/storage/AuditLog.h"
 #include "core/storage/Database.h"
 #include "core/storage/Records.h"
+#include "core/storage/RecordsCheck.h"
 
 namespace armtrack::storage {
 
@@ -230,6 +232,18 @@ class ClinicalStore {
   std::vector<AuditEntry> auditLog();
   void audit(const QString& action, const QString& objectType, const QString& objectId,
              const QString& detail = {});
+
+  // Checks (RecordsCheck.cpp; docs/storage.md, "Checks").
+  /// db check's check of the recordings and estimates: every session the user sees (a home
+  /// account: its patient's) that is not being recorded, decoded chunk by chunk
+  /// (recordingProblems(Decode), estimateProblems). Throws StorageError(Io).
+  RecordsCheckReport checkRecords();
+  /// What exports and reports call before writing anything: throws StorageError(Corrupt) with
+  /// damagedRecordingMessage() when the session's recording fails
+  /// recordingProblems(Checksums); NotFound for a session the user does not see.
+  void requireIntactRecording(qint64 sessionId);
+  /// The audit log's hash chain verified (administrators; verifyAuditChain).
+  AuditChainReport verifyAuditLog(const std::optional<AuditAnchor>& expect = {});
 
  private:
   void require(bool allowed, const QString& what) const;  // deny(what) unless allowed

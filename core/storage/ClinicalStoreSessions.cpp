@@ -355,26 +355,23 @@ bool ClinicalStore::readRecordingChunks(
     qint64 sessionId, const std::function<bool(std::span<const ArmSample>)>& chunk) {
   const SessionInfo s = visibleSession(sessionId);
   struct Stop {};  // thrown out of readChunks when the caller has had enough
+  // The checks are db check's (RecordsCheck.h), so both name a damage alike, and the refusal
+  // says what to do.
+  const auto damaged = [&](const QString& problem) {
+    return StorageError(Kind::Corrupt, damagedRecordingMessage(sessionId, problem));
+  };
   int expectedSeq = 0;
   qint64 rows = 0;
   double lastT = -std::numeric_limits<double>::infinity();
   try {
     readChunks(m_db, sessionId, [&](const StoredChunk& c) {
-      const std::string where =
-          "session " + std::to_string(sessionId) + ", chunk " + std::to_string(c.seq) + ": ";
-      if (c.seq != expectedSeq)
-        throw StorageError(Kind::Corrupt,
-                           where + "chunk " + std::to_string(expectedSeq) + " is missing");
+      if (c.seq != expectedSeq) throw damaged(missingChunks(expectedSeq, c.seq));
       ++expectedSeq;
-      if (!ChunkCodec::knows(c.codec))
-        throw StorageError(Kind::Corrupt, where + "unknown codec '" + c.codec + "'");
       std::vector<ArmSample> samples;
       try {
-        samples = ChunkCodec::decode(std::string(c.data), c.rows, c.codec);
-        if (!samples.empty() && samples.front().t < lastT)
-          throw std::runtime_error("starts before the previous chunk ends");
+        samples = decodeStoredChunk(c, lastT);
       } catch (const std::runtime_error& e) {
-        throw StorageError(Kind::Corrupt, where + e.what() + " (restore a backup or re-import)");
+        throw damaged("chunk " + QString::number(c.seq) + ": " + QString::fromStdString(e.what()));
       }
       if (samples.empty()) return;
       lastT = samples.back().t;
@@ -385,9 +382,9 @@ bool ClinicalStore::readRecordingChunks(
     return false;
   }
   if (rows != s.sampleRows)
-    throw StorageError(Kind::Corrupt, "session " + std::to_string(sessionId) + ": chunks hold " +
-                                          std::to_string(rows) + " rows, " + "the session says " +
-                                          std::to_string(s.sampleRows));
+    throw damaged("the chunks hold " + QString::number(rows) + " rows, the session says " +
+                  QString::number(s.sampleRows) +
+                  (rows < s.sampleRows ? " (chunks at the end are missing)" : ""));
   return true;
 }
 

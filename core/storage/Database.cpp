@@ -354,8 +354,9 @@ QString Database::integrityCheck() {
   if (!isPostgres()) return runIntegrityCheck(m_db);
   // The server checks its own pages (checksums, WAL); here: every table answers. A page-level
   // check of a server is pg_amcheck's job (docs/storage.md).
-  for (const char* table : {"schema_version", "users", "patients", "protocols", "programmes",
-                            "sessions", "recording_chunks", "estimates", "metrics", "audit_log"}) {
+  for (const char* table :
+       {"schema_version", "users", "patients", "protocols", "programmes", "sessions",
+        "recording_chunks", "estimates", "estimate_chunks", "metrics", "audit_log"}) {
     QSqlQuery q(m_db);
     if (!q.exec(QString("SELECT count(*) FROM ") + table))
       return QString(table) + ": " + q.lastError().text();

@@ -1,6 +1,7 @@
 #include "core/storage/Schema.h"
 
 #include "core/storage/NameKeys.h"
+#include "core/storage/AuditLog.h"
 
 namespace armtrack::storage {
 
@@ -212,8 +213,16 @@ const std::vector<MigrationStep>& migrationSteps() {
            " name_key TEXT PRIMARY KEY,"
            " failed_attempts INTEGER NOT NULL,"
            " last_failed_at TEXT NOT NULL)",
+           // Audit log: a hash chain (AuditLog.h). Each entry holds the previous entry's hash
+           // and its own; the hook chains the entries already there, in id order, then adds
+           // the triggers that make the table append-only.
+           "ALTER TABLE audit_log ADD COLUMN prev_hash TEXT NOT NULL DEFAULT ''",
+           "ALTER TABLE audit_log ADD COLUMN hash TEXT NOT NULL DEFAULT ''",
        },
-       [](Database& db) { addNameKeys(db); }},
+       [](Database& db) {
+         addNameKeys(db);  // first: it audits the names it renames, which are then chained
+         chainAuditLogAndMakeItAppendOnly(db);
+       }},
   };
   return steps;
 }

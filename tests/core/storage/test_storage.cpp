@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/storage/AuditLog.h"
 #include "core/storage/PasswordHash.h"
 #include "tests/core/storage/StorageTestSupport.h"
 
@@ -152,6 +153,11 @@ TEST_P(Migration, FromVersion1KeepsEveryRowAndAddsTheNewColumns) {
   QTemporaryDir dir;
   const QString path = newDatabase(GetParam(), dir, "v1");
   rawSql(path, version1Schema(GetParam()));
+  // Audit entries written by version 1, without a hash chain.
+  rawSql(path, {"INSERT INTO audit_log (at, user_name, action, object_type, object_id, detail) "
+                "VALUES ('2025-01-01T00:00:00.000Z', 'admin', 'create', 'database', 'v1', ''), "
+                "('2025-01-02T10:00:00.000Z', 'admin', 'create', 'patient', 'OLD1', ''), "
+                "('2025-01-02T10:05:00.000Z', 'admin', 'view', 'session', '1', 'first visit')"});
 
   // Without migrate the older schema is refused with what to do.
   const StorageError e =
@@ -184,6 +190,28 @@ TEST_P(Migration, FromVersion1KeepsEveryRowAndAddsTheNewColumns) {
   QSqlQuery keys = db.exec("SELECT name_key FROM users WHERE name = 'admin'");
   ASSERT_TRUE(keys.next());
   EXPECT_EQ(keys.value(0).toString(), "admin");
+  // The old entries were chained in id order, unchanged, and the failure is chained after them.
+  QString prev = auditGenesisHash();
+  QSqlQuery log = db.exec(
+      "SELECT id, at, user_name, action, object_type, object_id, detail, prev_hash, hash FROM "
+      "audit_log ORDER BY id");
+  QStringList actions;
+  while (log.next()) {
+    const ChainedAuditEntry e{
+        log.value(0).toLongLong(), log.value(1).toString(), log.value(2).toString(),
+        log.value(3).toString(),   log.value(4).toString(), log.value(5).toString(),
+        log.value(6).toString(),   log.value(7).toString(), log.value(8).toString()};
+    EXPECT_EQ(e.prevHash, prev) << e.id;
+    EXPECT_EQ(e.hash, auditEntryHash(e)) << e.id;
+    prev = e.hash;
+    actions << e.action + " " + e.objectId;
+  }
+  log.finish();
+  EXPECT_EQ(actions, QStringList({"create v1", "create OLD1", "view 1", "sign-in-failed admin"}));
+  const AuditChainReport chain = verifyAuditChain(db);
+  EXPECT_TRUE(chain.intact()) << chain.problem.toStdString();
+  EXPECT_EQ(chain.entries, 4);
+  expectError([&] { db.exec("UPDATE audit_log SET detail = ''"); }, Kind::Io, "append-only");
 }
 
 TEST_P(Crud, Patients) {
