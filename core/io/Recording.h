@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -74,10 +75,30 @@ struct RowProblem {
 std::optional<RowProblem> checkRow(const ArmSample& sample, const RecordingColumns& columns,
                                    double prevT);
 
+/// What the recording reader accepts at the door (docs/recording-format.md, "Limits"). A file or
+/// a row outside them is refused with a RecordingError naming the file, line and column.
+struct RecordingLimits {
+  /// The largest CSV (bytes): 32 GiB. An hour at 1 kHz with two IMUs, a Kinect and true angles is
+  /// 1.26 GB, so the longest recording (12 h) with every column a live session
+  /// writes stays near 20 GB; a larger file is not a recording.
+  static constexpr std::uint64_t kMaxFileBytes = std::uint64_t{32} << 30;
+  /// The largest sidecar (bytes): 1 MiB. A real one is under 1 KiB.
+  static constexpr std::uint64_t kMaxSidecarBytes = std::uint64_t{1} << 20;
+  /// Bytes read and checked for text before anything is parsed: 64 KiB. They, and every byte
+  /// after, must hold no control byte other than tab, CR and LF (a NUL says binary, or a sparse
+  /// file's hole).
+  static constexpr std::size_t kSniffBytes = std::size_t{64} << 10;
+  /// The longest line (bytes, without its line end): 64 KiB. The widest valid row, 33 numbers, is
+  /// under 1 KiB.
+  static constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
+};
+
 /// Reads a CSV recording row by row, holding one chunk of the file in memory, not the whole
-/// recording (a replay of an hour at 1 kHz). The constructor reads the sidecar and the header;
-/// next() the rows, checked as readRecording checks them. Throws RecordingError. One thread at a
-/// time.
+/// recording (a replay of an hour at 1 kHz). The constructor checks the file at the door (a
+/// regular file, at most RecordingLimits::kMaxFileBytes, text in its first kSniffBytes), reads
+/// the sidecar and the header; next() the rows, checked as readRecording checks them (lines at
+/// most kMaxLineBytes, no control bytes). Memory: one 1 MiB chunk plus at most one line. Throws
+/// RecordingError. One thread at a time.
 class RecordingReader {
  public:
   explicit RecordingReader(const std::filesystem::path& csvPath);
