@@ -117,11 +117,7 @@ class CsvParser {
 
     if (!filled[0]) fail(lineNo, m_columnOfSlot[0] + 1, "empty cell in required column \"t\"");
     const double t = v[0];
-    if (m_rows > 0 && t < m_prevT) {
-      fail(lineNo, m_columnOfSlot[0] + 1,
-           "time goes backwards: " + formatDouble(t) + " after " + formatDouble(m_prevT) +
-               " (\"t\" must not decrease)");
-    }
+    checkTime(t, lineNo);
 
     for (int g = 0; g < kNumGroups; ++g) present[g] = groupPresent(g, filled, lineNo);
     checkImu(kUaGyr, kUaAcc, present, lineNo);
@@ -151,13 +147,65 @@ class CsvParser {
     };
     if (present[kTruth]) s.trueAngles = joints(kTruth);
     if (present[kEstimate]) s.estimate = joints(kEstimate);
+    if (m_rows == 0) m_firstT = t;
+    countGap(t, lineNo);
     m_prevT = t;
     ++m_rows;
   }
 
+  const TimeGaps& gaps() const { return m_gaps; }
+
  private:
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
     throw RecordingError(m_file, line, column, message);
+  }
+
+  /// The row's time against the first row's and the previous one's (RecordingLimits).
+  void checkTime(double t, int lineNo) const {
+    using L = RecordingLimits;
+    const int column = m_columnOfSlot[0] + 1;
+    if (m_rows == 0) {
+      if (std::fabs(t) > L::kMaxAbsTimeSeconds) {
+        fail(lineNo, column,
+             "first time " + formatDouble(t) + " s is no clock's reading: |t| must be at most " +
+                 formatDouble(L::kMaxAbsTimeSeconds) +
+                 " s (Unix time reaches that in the year 2286); is \"t\" in seconds?");
+      }
+      return;
+    }
+    if (t < m_prevT) {
+      fail(lineNo, column,
+           "time goes backwards: " + formatDouble(t) + " after " + formatDouble(m_prevT) +
+               " (\"t\" must not decrease)");
+    }
+    if (t - m_firstT > L::kMaxRecordingSeconds) {
+      const std::string span = ", more than " + formatDouble(L::kMaxRecordingSeconds / 3600.0) +
+                               " h after the first row (" + formatDouble(m_firstT) +
+                               " s): a recording spans at most " +
+                               formatDouble(L::kMaxRecordingSeconds / 3600.0) + " h; ";
+      if (t - m_prevT > L::kGapSeconds) {
+        fail(lineNo, column,
+             "t jumps from " + formatDouble(m_prevT) + " s to " + formatDouble(t) + " s" + span +
+                 "is the clock right?");
+      }
+      fail(lineNo, column,
+           "t reaches " + formatDouble(t) + " s" + span +
+               "split a longer session into several recordings");
+    }
+  }
+
+  /// Counts the step from the previous row as a gap when it is one (the row is accepted).
+  void countGap(double t, int lineNo) {
+    if (m_rows == 0) return;
+    const double step = t - m_prevT;
+    if (!(step > RecordingLimits::kGapSeconds)) return;
+    ++m_gaps.count;
+    m_gaps.totalSeconds += step;
+    if (step > m_gaps.longestSeconds) {
+      m_gaps.longestSeconds = step;
+      m_gaps.longestFromT = m_prevT;
+      m_gaps.longestLine = lineNo;
+    }
   }
 
   static int slotOf(std::string_view name) {
@@ -235,6 +283,8 @@ class CsvParser {
   int m_headerLine = 0;
   std::uint64_t m_rows = 0;  // rows parsed
   double m_prevT = 0.0;      // the last row's time
+  double m_firstT = 0.0;     // the first row's time
+  TimeGaps m_gaps;
   std::vector<std::string_view> m_fields;
   std::array<double, kNumSlots> m_values{};
   std::vector<int> m_slotOfColumn;              // header column -> slot, -1 if ignored
@@ -308,6 +358,7 @@ bool RecordingReader::next(ArmSample& sample) {
     // the header and at least one row came before it whole.
     if (terminated || m_impl->completeLines < 2) throw;
     m_impl->done = true;
+    m_cutShort = true;
     m_warnings.push_back("line " + std::to_string(number) +
                          " was cut short (the recording was interrupted) and is ignored");
     return false;
@@ -315,6 +366,10 @@ bool RecordingReader::next(ArmSample& sample) {
   m_impl->completeLines += terminated;
   ++m_rows;
   return true;
+}
+
+const TimeGaps& RecordingReader::gaps() const {
+  return m_impl->parser.gaps();
 }
 
 std::uint64_t RecordingReader::bytesRead() const {
