@@ -3,6 +3,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -74,10 +75,49 @@ struct RowProblem {
 std::optional<RowProblem> checkRow(const ArmSample& sample, const RecordingColumns& columns,
                                    double prevT);
 
+/// What the recording reader accepts at the door (docs/recording-format.md, "Limits"). A file or
+/// a row outside them is refused with a RecordingError naming the file, line and column.
+struct RecordingLimits {
+  /// The largest CSV (bytes): 32 GiB. An hour at 1 kHz with two IMUs, a Kinect and true angles is
+  /// 1.26 GB, so the longest recording (kMaxRecordingSeconds) with every column a live session
+  /// writes stays near 20 GB; a larger file is not a recording.
+  static constexpr std::uint64_t kMaxFileBytes = std::uint64_t{32} << 30;
+  /// The largest sidecar (bytes): 1 MiB. A real one is under 1 KiB.
+  static constexpr std::uint64_t kMaxSidecarBytes = std::uint64_t{1} << 20;
+  /// Bytes read and checked for text before anything is parsed: 64 KiB. They, and every byte
+  /// after, must hold no control byte other than tab, CR and LF (a NUL says binary, or a sparse
+  /// file's hole).
+  static constexpr std::size_t kSniffBytes = std::size_t{64} << 10;
+  /// The longest line (bytes, without its line end): 64 KiB. The widest valid row, 33 numbers, is
+  /// under 1 KiB.
+  static constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
+  /// The longest span of a recording (s): 12 h. A row more than this after the first row is
+  /// refused (a clock jump, a corrupted time), so a recording's analysis stays bounded.
+  static constexpr double kMaxRecordingSeconds = 12.0 * 3600.0;
+  /// The largest |t| of the first row (s): 1e10, beyond any Unix time of this century
+  /// (1e10 s is the year 2286).
+  static constexpr double kMaxAbsTimeSeconds = 1e10;
+  /// A step forward in t longer than this (s) is a gap: accepted and counted (TimeGaps). The
+  /// estimator restarts after the same step (EstimatorParams::maxGap's default).
+  static constexpr double kGapSeconds = 0.1;
+};
+
+/// The gaps in a recording's time: steps from one row to the next longer than
+/// RecordingLimits::kGapSeconds, over the rows read so far.
+struct TimeGaps {
+  std::uint64_t count = 0;      ///< number of gaps
+  double totalSeconds = 0.0;    ///< their summed length (s)
+  double longestSeconds = 0.0;  ///< the longest (s); 0 when there is none
+  double longestFromT = 0.0;    ///< the time of the row before the longest gap (s)
+  int longestLine = 0;          ///< the CSV line of the row after it (the jump); 0 when none
+};
+
 /// Reads a CSV recording row by row, holding one chunk of the file in memory, not the whole
-/// recording (a replay of an hour at 1 kHz). The constructor reads the sidecar and the header;
-/// next() the rows, checked as readRecording checks them. Throws RecordingError. One thread at a
-/// time.
+/// recording (a replay of an hour at 1 kHz). The constructor checks the file at the door (a
+/// regular file, at most RecordingLimits::kMaxFileBytes, text in its first kSniffBytes), reads
+/// the sidecar and the header; next() the rows, checked as readRecording checks them (lines at
+/// most kMaxLineBytes, no control bytes, times within the limits). Memory: one 1 MiB chunk plus
+/// at most one line. Throws RecordingError. One thread at a time.
 class RecordingReader {
  public:
   explicit RecordingReader(const std::filesystem::path& csvPath);
@@ -94,8 +134,11 @@ class RecordingReader {
   /// A missing sidecar, a last line cut short.
   const std::vector<std::string>& warnings() const { return m_warnings; }
   std::uint64_t rows() const { return m_rows; }
-  /// Whether the file ended in a line cut short (dropped, with a warning).
+  /// Whether the file ended in a last line cut short (a recording interrupted while it was
+  /// written), which next() dropped with a warning. Known once next() has returned false.
   bool cutShort() const { return m_cutShort; }
+  /// The gaps in time among the rows read so far (complete once next() has returned false).
+  const TimeGaps& gaps() const;
   /// For progress: bytes consumed so far, and the file's size (0 when unknown).
   std::uint64_t bytesRead() const;
   std::uint64_t fileSize() const;

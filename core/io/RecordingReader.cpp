@@ -1,14 +1,20 @@
 // Reader of the open recording format's CSV (docs/recording-format.md).
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <limits>
 #include <string_view>
 #include <system_error>
 
+#include "core/io/FileLines.h"
 #include "core/io/Recording.h"
 #include "core/io/RecordingFormat.h"
 
@@ -30,78 +36,6 @@ namespace {
 
 // ---------------------------------------------------------------------------------------------
 // CSV reading
-
-/// Reads a file in chunks and yields the lines that carry data (not blank, not comments) with
-/// their physical line numbers, and whether each ended with a newline (the last line of a file
-/// cut short by a kill does not). Memory: one chunk plus the longest line.
-class FileLines {
- public:
-  explicit FileLines(const fs::path& path) : m_name(path.string()) {
-    std::error_code ec;
-    if (fs::is_directory(path, ec))
-      throw RecordingError(m_name, 0, 0, "cannot open file: is a directory");
-    errno = 0;
-    m_in.open(path, std::ios::binary);
-    if (!m_in) throw RecordingError(m_name, 0, 0, "cannot open file: " + osReason(errno));
-    m_size = fs::file_size(path, ec);
-    if (ec) m_size = 0;
-  }
-
-  /// The next data line (valid until the next call), or false at the end of the file.
-  bool next(std::string_view& line, int& number, bool& terminated) {
-    for (;;) {
-      if (m_p == m_buf.size() && !refill()) return false;
-      const char* base = m_buf.data();
-      const char* nl = static_cast<const char*>(std::memchr(base + m_p, '\n', m_buf.size() - m_p));
-      if (!nl && !m_eof) {  // the line may go on in the next chunk
-        refill();
-        continue;
-      }
-      const std::size_t end = nl ? static_cast<std::size_t>(nl - base) : m_buf.size();
-      std::string_view s(base + m_p, end - m_p);
-      m_p = nl ? end + 1 : end;
-      ++m_line;
-      if (m_line == 1 && s.starts_with("\xEF\xBB\xBF")) s.remove_prefix(3);  // UTF-8 BOM
-      if (!s.empty() && s.back() == '\r') s.remove_suffix(1);
-      if (!s.empty() && s.front() == '#') continue;
-      if (s.find_first_not_of(" \t") == std::string_view::npos) continue;
-      line = s;
-      number = m_line;
-      terminated = nl != nullptr;
-      return true;
-    }
-  }
-
-  std::uint64_t bytesRead() const { return m_consumed + m_p; }
-  std::uint64_t size() const { return m_size; }
-
- private:
-  // Keeps the unread tail, appends the next chunk. False when nothing more could be read.
-  bool refill() {
-    if (m_eof) return false;
-    m_consumed += m_p;
-    m_buf.erase(0, m_p);
-    m_p = 0;
-    const std::size_t old = m_buf.size();
-    constexpr std::size_t kChunk = std::size_t{1} << 20;
-    m_buf.resize(old + kChunk);
-    m_in.read(m_buf.data() + old, static_cast<std::streamsize>(kChunk));
-    const auto got = static_cast<std::size_t>(m_in.gcount());
-    m_buf.resize(old + got);
-    if (m_in.bad()) throw RecordingError(m_name, 0, 0, "cannot read file: " + osReason(errno));
-    if (got < kChunk) m_eof = true;
-    return got > 0;
-  }
-
-  std::string m_name;
-  std::ifstream m_in;
-  std::string m_buf;
-  std::size_t m_p = 0;           // next unread byte in m_buf
-  std::uint64_t m_consumed = 0;  // bytes dropped from the front of m_buf
-  std::uint64_t m_size = 0;
-  bool m_eof = false;
-  int m_line = 0;
-};
 
 /// Splits a line at commas into out (cleared first).
 void splitFields(std::string_view line, std::vector<std::string_view>& out) {
@@ -183,11 +117,7 @@ class CsvParser {
 
     if (!filled[0]) fail(lineNo, m_columnOfSlot[0] + 1, "empty cell in required column \"t\"");
     const double t = v[0];
-    if (m_rows > 0 && t < m_prevT) {
-      fail(lineNo, m_columnOfSlot[0] + 1,
-           "time goes backwards: " + formatDouble(t) + " after " + formatDouble(m_prevT) +
-               " (\"t\" must not decrease)");
-    }
+    checkTime(t, lineNo);
 
     for (int g = 0; g < kNumGroups; ++g) present[g] = groupPresent(g, filled, lineNo);
     checkImu(kUaGyr, kUaAcc, present, lineNo);
@@ -217,13 +147,65 @@ class CsvParser {
     };
     if (present[kTruth]) s.trueAngles = joints(kTruth);
     if (present[kEstimate]) s.estimate = joints(kEstimate);
+    if (m_rows == 0) m_firstT = t;
+    countGap(t, lineNo);
     m_prevT = t;
     ++m_rows;
   }
 
+  const TimeGaps& gaps() const { return m_gaps; }
+
  private:
   [[noreturn]] void fail(int line, int column, const std::string& message) const {
     throw RecordingError(m_file, line, column, message);
+  }
+
+  /// The row's time against the first row's and the previous one's (RecordingLimits).
+  void checkTime(double t, int lineNo) const {
+    using L = RecordingLimits;
+    const int column = m_columnOfSlot[0] + 1;
+    if (m_rows == 0) {
+      if (std::fabs(t) > L::kMaxAbsTimeSeconds) {
+        fail(lineNo, column,
+             "first time " + formatDouble(t) + " s is no clock's reading: |t| must be at most " +
+                 formatDouble(L::kMaxAbsTimeSeconds) +
+                 " s (Unix time reaches that in the year 2286); is \"t\" in seconds?");
+      }
+      return;
+    }
+    if (t < m_prevT) {
+      fail(lineNo, column,
+           "time goes backwards: " + formatDouble(t) + " after " + formatDouble(m_prevT) +
+               " (\"t\" must not decrease)");
+    }
+    if (t - m_firstT > L::kMaxRecordingSeconds) {
+      const std::string span = ", more than " + formatDouble(L::kMaxRecordingSeconds / 3600.0) +
+                               " h after the first row (" + formatDouble(m_firstT) +
+                               " s): a recording spans at most " +
+                               formatDouble(L::kMaxRecordingSeconds / 3600.0) + " h; ";
+      if (t - m_prevT > L::kGapSeconds) {
+        fail(lineNo, column,
+             "t jumps from " + formatDouble(m_prevT) + " s to " + formatDouble(t) + " s" + span +
+                 "is the clock right?");
+      }
+      fail(lineNo, column,
+           "t reaches " + formatDouble(t) + " s" + span +
+               "split a longer session into several recordings");
+    }
+  }
+
+  /// Counts the step from the previous row as a gap when it is one (the row is accepted).
+  void countGap(double t, int lineNo) {
+    if (m_rows == 0) return;
+    const double step = t - m_prevT;
+    if (!(step > RecordingLimits::kGapSeconds)) return;
+    ++m_gaps.count;
+    m_gaps.totalSeconds += step;
+    if (step > m_gaps.longestSeconds) {
+      m_gaps.longestSeconds = step;
+      m_gaps.longestFromT = m_prevT;
+      m_gaps.longestLine = lineNo;
+    }
   }
 
   static int slotOf(std::string_view name) {
@@ -301,6 +283,8 @@ class CsvParser {
   int m_headerLine = 0;
   std::uint64_t m_rows = 0;  // rows parsed
   double m_prevT = 0.0;      // the last row's time
+  double m_firstT = 0.0;     // the first row's time
+  TimeGaps m_gaps;
   std::vector<std::string_view> m_fields;
   std::array<double, kNumSlots> m_values{};
   std::vector<int> m_slotOfColumn;              // header column -> slot, -1 if ignored
@@ -318,15 +302,27 @@ struct RecordingReader::Impl {
 };
 
 RecordingReader::RecordingReader(const fs::path& csvPath) {
+  m_impl = std::make_unique<Impl>(csvPath);  // the CSV's checks at the door come first
   const fs::path jsonPath = sidecarPath(csvPath);
   std::error_code ec;
-  if (fs::status(jsonPath, ec).type() != fs::file_type::not_found) {
-    m_meta = readSidecar(jsonPath);  // also reports a sidecar that exists but cannot be read
-  } else {
+  const fs::file_status sidecar = fs::status(jsonPath, ec);
+  if (sidecar.type() == fs::file_type::not_found) {
     m_warnings.push_back("no sidecar " + inQuotes(jsonPath.string()) +
                          " found; using the default geometry, up and g");
+  } else {
+    // Only a small regular file is read whole; readSidecar reports one that cannot be read.
+    if (fs::exists(sidecar) && !fs::is_regular_file(sidecar))
+      notARegularFile(jsonPath.string(), kindOf(sidecar.type()), "a sidecar is a .json file");
+    const std::uintmax_t size = fs::is_regular_file(sidecar) ? fs::file_size(jsonPath, ec) : 0;
+    if (!ec && size > RecordingLimits::kMaxSidecarBytes) {
+      throw RecordingError(jsonPath.string(), 0, 0,
+                           "the sidecar is " + std::to_string(size) +
+                               " bytes, more than a sidecar can be (" +
+                               std::to_string(RecordingLimits::kMaxSidecarBytes >> 10) +
+                               " KiB; a real one is under 1 KiB): is it the right file?");
+    }
+    m_meta = readSidecar(jsonPath);
   }
-  m_impl = std::make_unique<Impl>(csvPath);
   std::string_view line;
   int number = 0;
   bool terminated = false;
@@ -370,6 +366,10 @@ bool RecordingReader::next(ArmSample& sample) {
   m_impl->completeLines += terminated;
   ++m_rows;
   return true;
+}
+
+const TimeGaps& RecordingReader::gaps() const {
+  return m_impl->parser.gaps();
 }
 
 std::uint64_t RecordingReader::bytesRead() const {

@@ -1,7 +1,9 @@
 // libFuzzer target: one input = the CSV text of a recording (no sidecar), read with
-// RecordingReader row by row and with readRecording; what is accepted is checked and written back.
+// RecordingReader row by row and with readRecording; what is accepted is checked (finite, in time
+// order within the limits, text only, gaps counted, a cut-short line flagged) and written back.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -18,14 +20,17 @@ namespace {
 
 fs::path scratch(const char* name) {
   static const fs::path dir = [] {
-    fs::path d = fs::temp_directory_path() / ("armtrack-fuzz-recording-" + std::to_string(getpid()));
+    fs::path d =
+        fs::temp_directory_path() / ("armtrack-fuzz-recording-" + std::to_string(getpid()));
     fs::create_directories(d);
     return d;
   }();
   return dir / name;
 }
 
-bool finite(const Eigen::MatrixXd& m) { return m.allFinite(); }
+bool finite(const Eigen::MatrixXd& m) {
+  return m.allFinite();
+}
 
 void checkRow(const ArmSample& s) {
   if (!std::isfinite(s.t)) std::abort();
@@ -34,6 +39,28 @@ void checkRow(const ArmSample& s) {
   if (s.elbow && !finite(*s.elbow)) std::abort();
   if (s.wrist && !finite(*s.wrist)) std::abort();
   if (s.trueAngles && !finite(*s.trueAngles)) std::abort();
+}
+
+/// Whether data holds a byte that text never holds (a C0 control other than tab, LF, CR; DEL),
+/// which the reader must refuse wherever it is.
+bool hasControlByte(const std::uint8_t* data, std::size_t size) {
+  for (std::size_t i = 0; i < size; ++i) {
+    const std::uint8_t c = data[i];
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r') || c == 0x7f) return true;
+  }
+  return false;
+}
+
+/// Whether some line of data (without its LF) is longer than the reader allows.
+bool hasOverLongLine(const std::uint8_t* data, std::size_t size) {
+  std::size_t start = 0;
+  for (std::size_t i = 0; i <= size; ++i) {
+    if (i == size || data[i] == '\n') {
+      if (i - start > RecordingLimits::kMaxLineBytes) return true;
+      start = i + 1;
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -49,13 +76,34 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     RecordingReader reader(csv);
     ArmSample s;
     double prev = -INFINITY;
+    double first = 0.0;
+    TimeGaps gaps;  // recounted from the rows
     while (reader.next(s)) {
       checkRow(s);
       if (s.t < prev) std::abort();  // the reader refuses time going backwards
+      if (rows == 0) {
+        first = s.t;
+        if (std::fabs(first) > RecordingLimits::kMaxAbsTimeSeconds) std::abort();
+      } else if (s.t - prev > RecordingLimits::kGapSeconds) {
+        ++gaps.count;
+        gaps.totalSeconds += s.t - prev;
+        gaps.longestSeconds = std::max(gaps.longestSeconds, s.t - prev);
+      }
+      if (s.t - first > RecordingLimits::kMaxRecordingSeconds) std::abort();
       prev = s.t;
       ++rows;
     }
     if (reader.rows() != rows || reader.bytesRead() > size) std::abort();
+    // What was accepted is text with lines of bounded length, and its gaps are counted.
+    if (hasControlByte(data, size) || hasOverLongLine(data, size)) std::abort();
+    const TimeGaps& g = reader.gaps();
+    if (g.count != gaps.count || g.totalSeconds != gaps.totalSeconds ||
+        g.longestSeconds != gaps.longestSeconds || (g.count > 0) != (g.longestLine > 0))
+      std::abort();
+    // A last line cut short is flagged, and said.
+    bool warned = false;
+    for (const std::string& w : reader.warnings()) warned |= w.find("was cut short") != w.npos;
+    if (reader.cutShort() != warned) std::abort();
   } catch (const RecordingError&) {
     return 0;  // malformed input is reported by throwing
   }
