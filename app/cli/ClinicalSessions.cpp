@@ -154,6 +154,11 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
   const qint64 id = imported.id;
   for (const std::string& w : imported.report.warnings)
     err << "warning: " << csv << ": " << w << "\n";
+  if (const TimeGaps& g = imported.report.gaps; g.count > 0)
+    err << "session import: the recording has " << g.count << " gap(s) in time, "
+        << fixed(g.totalSeconds, 1) << " s in all; the longest, " << fixed(g.longestSeconds, 1)
+        << " s, after t = " << fixed(g.longestFromT, 3) << " s (line " << g.longestLine
+        << "); they are stored as they are, and the analysis restarts after each\n";
   const storage::SessionInfo s = c.store().session(id);
   err << "session import: " << s.sampleRows << " rows in " << s.chunks << " chunks, "
       << s.storedBytes << " bytes stored"

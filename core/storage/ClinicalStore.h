@@ -138,6 +138,7 @@ class ClinicalStore {
     std::vector<std::string> warnings;  ///< the reader's: a missing sidecar, a cut line, gaps
     bool cutShort = false;              ///< the last line was incomplete: stored as interrupted
     std::uint64_t rows = 0;
+    TimeGaps gaps;                      ///< jumps in time, stored as they are
   };
   /// Told of each chunk of an import once it is committed: the new session's id, the chunk's
   /// samples (valid during the call) and the fraction of the file read. It may throw to stop the

@@ -240,6 +240,7 @@ qint64 ClinicalStore::importRecording(const std::filesystem::path& csv, const QS
     report->warnings = reader.warnings();
     report->cutShort = cutShort;
     report->rows = reader.rows();
+    report->gaps = reader.gaps();
   }
   return id;
 }
