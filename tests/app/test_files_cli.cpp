@@ -287,7 +287,8 @@ TEST_F(DatabaseFilesCli, AStaleRecordingInAReadOnlyFileIsLeftWithANote) {
   const pid_t dead = ::fork();
   if (dead == 0) ::_exit(0);
   ::waitpid(dead, nullptr, 0);
-  sql({QString("UPDATE sessions SET status = 'recording', recorder_host = '%1', "
+  // A live recording's (a dead import would be removed, not marked interrupted).
+  sql({QString("UPDATE sessions SET status = 'recording', origin = 'live', recorder_host = '%1', "
                "recorder_pid = %2 WHERE id = %3")
            .arg(QSysInfo::machineHostName())
            .arg(dead)
