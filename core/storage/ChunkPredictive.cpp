@@ -56,41 +56,125 @@ std::uint64_t predict(const std::uint64_t* s, std::size_t i, int predictor) {
   }
 }
 
-// Bits needed by n residuals z split at k: Shannon estimate of the high bytes, k raw bits each,
-// 64 per escaped residual.
-double costBits(const std::vector<std::uint64_t>& z, int k) {
-  std::array<std::uint32_t, 256> histogram{};
-  std::size_t escapes = 0;
-  for (const std::uint64_t v : z) {
-    const std::uint64_t h = k >= 64 ? 0 : v >> k;
-    if (h >= kEscape) {
-      ++histogram[kEscape];
-      ++escapes;
+// The residuals of predictor P for every value: zigzag(s[i] - predict(s, i, P)), with the
+// first values (which have fewer before them) through predict() and the rest by the predictor's
+// own formula, so the loop has no branch to take per value.
+template <int P>
+void residuals(const std::uint64_t* s, std::size_t n, std::uint64_t* z) {
+  constexpr std::size_t kWarm = P == 6 ? 4 : P;
+  const std::size_t warm = std::min(kWarm, n);
+  for (std::size_t i = 0; i < warm; ++i) z[i] = zigzag(s[i] - predict(s, i, P));
+  for (std::size_t i = warm; i < n; ++i) {
+    std::uint64_t p;
+    if constexpr (P == 1) {
+      p = s[i - 1];
+    } else if constexpr (P == 2) {
+      p = 2 * s[i - 1] - s[i - 2];
+    } else if constexpr (P == 3) {
+      p = 3 * s[i - 1] - 3 * s[i - 2] + s[i - 3];
+    } else if constexpr (P == 4) {
+      p = 4 * s[i - 1] - 6 * s[i - 2] + 4 * s[i - 3] - s[i - 4];
+    } else if constexpr (P == 5) {
+      p = 5 * s[i - 1] - 10 * s[i - 2] + 10 * s[i - 3] - 5 * s[i - 4] + s[i - 5];
     } else {
-      ++histogram[h];
+      __int128 sum = 0;
+      for (int j = 1; j <= 4; ++j) sum += static_cast<std::int64_t>(s[i - j]);
+      p = static_cast<std::uint64_t>(static_cast<std::int64_t>(sum / 4));
+    }
+    z[i] = zigzag(s[i] - p);
+  }
+}
+
+void residualsOf(int predictor, const std::vector<std::uint64_t>& s, std::vector<std::uint64_t>& z) {
+  const std::size_t n = s.size();
+  switch (predictor) {
+    case 1:
+      return residuals<1>(s.data(), n, z.data());
+    case 2:
+      return residuals<2>(s.data(), n, z.data());
+    case 3:
+      return residuals<3>(s.data(), n, z.data());
+    case 4:
+      return residuals<4>(s.data(), n, z.data());
+    case 5:
+      return residuals<5>(s.data(), n, z.data());
+    default:
+      return residuals<6>(s.data(), n, z.data());
+  }
+}
+
+// The bit width of the median residual (the (n/2)-th smallest): bit_width grows with the value,
+// so it is the smallest width that more than n/2 residuals do not exceed. No sort needed.
+int medianWidth(const std::vector<std::uint64_t>& z) {
+  std::array<std::uint32_t, 65> widths{};
+  for (const std::uint64_t v : z) ++widths[static_cast<std::size_t>(std::bit_width(v))];
+  std::size_t below = 0;
+  for (int w = 0; w <= 64; ++w) {
+    below += widths[static_cast<std::size_t>(w)];
+    if (below > z.size() / 2) return w;
+  }
+  return 64;
+}
+
+// Bits needed by n residuals z split at k, for kCount (at most kCostKs) consecutive k from kFirst:
+// Shannon estimate of the high bytes, k raw bits each, 64 per escaped residual. One pass: the
+// high byte at k + j is the one at kFirst shifted by j, so one histogram of z >> kFirst over
+// 256 << (kCostKs - 1) values (and one count of those beyond) gives all three exactly.
+constexpr int kCostKs = 3;
+void costBits(const std::vector<std::uint64_t>& z, int kFirst, int kCount,
+              std::array<double, kCostKs>& out) {
+  constexpr std::size_t kWide = std::size_t{256} << (kCostKs - 1);  // 1024
+  // Kept zero between calls: only the bins a call used are cleared again.
+  thread_local std::array<std::uint32_t, kWide> wide{};
+  std::size_t beyond = 0, top = 0;
+  for (const std::uint64_t v : z) {
+    const std::uint64_t h = kFirst >= 64 ? 0 : v >> kFirst;
+    if (h < kWide) {
+      ++wide[static_cast<std::size_t>(h)];
+      top = std::max(top, static_cast<std::size_t>(h));
+    } else {
+      ++beyond;
     }
   }
   const double n = static_cast<double>(z.size());
-  double bits = static_cast<double>(z.size() - escapes) * k + 64.0 * static_cast<double>(escapes);
-  for (const std::uint32_t c : histogram)
-    if (c) bits += c * std::log2(n / c);
-  return bits;
+  for (int j = 0; j < kCount; ++j) {
+    std::array<std::uint32_t, 256> histogram{};
+    std::size_t escapes = beyond;
+    for (std::size_t b = 0; b <= top; ++b) {
+      const std::size_t h = b >> j;
+      if (h >= kEscape)
+        escapes += wide[b];
+      else
+        histogram[h] += wide[b];
+    }
+    histogram[kEscape] = static_cast<std::uint32_t>(escapes);
+    double bits =
+        static_cast<double>(z.size() - escapes) * (kFirst + j) + 64.0 * static_cast<double>(escapes);
+    for (const std::uint32_t c : histogram)
+      if (c) bits += c * std::log2(n / c);
+    out[static_cast<std::size_t>(j)] = bits;
+  }
+  std::fill(wide.begin(), wide.begin() + static_cast<std::ptrdiff_t>(std::min(top + 1, kWide)), 0u);
 }
 
 }  // namespace
 
 void BitWriter::put(std::uint64_t value, int bits) {
+  // m_fill < 8 between calls: up to 56 bits go in at once, then the whole bytes out at once.
   while (bits > 0) {
     const int take = std::min(bits, 56 - m_fill);
-    const std::uint64_t part = take == 64 ? value : value & ((1ull << take) - 1);
+    const std::uint64_t part = value & ((1ull << take) - 1);
     m_acc |= part << m_fill;
     m_fill += take;
     value = take == 64 ? 0 : value >> take;
     bits -= take;
-    while (m_fill >= 8) {
-      m_bytes.push_back(static_cast<char>(m_acc & 0xff));
-      m_acc >>= 8;
-      m_fill -= 8;
+    const int whole = m_fill / 8;
+    if (whole > 0) {
+      char out[8];
+      for (int b = 0; b < whole; ++b) out[b] = static_cast<char>((m_acc >> (8 * b)) & 0xff);
+      m_bytes.append(out, static_cast<std::size_t>(whole));
+      m_acc >>= 8 * whole;
+      m_fill -= 8 * whole;
     }
   }
 }
@@ -136,22 +220,26 @@ void appendPredictiveIntegers(std::string& raw, BitWriter& bits,
   const std::size_t n = s.size();
   int bestPredictor = 1, bestK = 0;
   double bestCost = INFINITY;
-  std::vector<std::uint64_t> z(n), bestZ, sorted;
+  // Each predictor's residuals, and the split k around their median's width, are judged by the
+  // estimated size; the best one's residuals are kept (swapped, not copied).
+  std::vector<std::uint64_t> z(n), bestZ(n);
   for (int p = 1; p <= kPredictors && n > 0; ++p) {
-    for (std::size_t i = 0; i < n; ++i) z[i] = zigzag(s[i] - predict(s.data(), i, p));
-    sorted = z;
-    std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(n / 2),
-                     sorted.end());
-    const int k0 = std::max(0, static_cast<int>(std::bit_width(sorted[n / 2])) - 3);
-    for (int k = std::max(0, k0 - 1); k <= std::min(63, k0 + 1); ++k) {
-      const double c = costBits(z, k);
+    residualsOf(p, s, z);
+    const int k0 = std::max(0, medianWidth(z) - 3);
+    const int kFirst = std::max(0, k0 - 1), kLast = std::min(63, k0 + 1);
+    std::array<double, kCostKs> costs{};
+    costBits(z, kFirst, kLast - kFirst + 1, costs);
+    bool better = false;
+    for (int k = kFirst; k <= kLast; ++k) {
+      const double c = costs[static_cast<std::size_t>(k - kFirst)];
       if (c < bestCost) {
         bestCost = c;
         bestPredictor = p;
         bestK = k;
-        bestZ = z;
+        better = true;
       }
     }
+    if (better) std::swap(z, bestZ);
   }
   raw.push_back(static_cast<char>(bestPredictor));
   raw.push_back(static_cast<char>(bestK));
