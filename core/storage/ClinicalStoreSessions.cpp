@@ -180,10 +180,18 @@ QString ClinicalStore::userName(qint64 userId) {
 
 void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> samples) {
   if (samples.empty()) return;
-  const SessionInfo s = visibleSession(sessionId);
-  if (s.status != kStatusRecording)
+  // The session's row alone: visibleSession() also totals the chunks stored so far, which for
+  // every new chunk of an hour's import read all the ones before it (3,600 chunks: 6.5 million).
+  QSqlQuery q = m_db.exec("SELECT status, patient_id FROM sessions WHERE id = ?", {sessionId});
+  const bool found = q.next();
+  if (!found || (user().role == Role::Home && user().patientId != q.value(1).toLongLong()))
+    throw StorageError(Kind::NotFound, "unknown session " + std::to_string(sessionId) +
+                                           ": see 'session list --patient CODE'");
+  const QString status = q.value(0).toString();
+  q.finish();
+  if (status != kStatusRecording)
     throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " +
-                                        text(s.status) + ", not recording");
+                                        text(status) + ", not recording");
   writeChunk(m_db, sessionId, samples);
 }
 
