@@ -332,8 +332,18 @@ TEST_P(RecordDb, AFullDiskIsToldAndWhatWasWrittenStaysIntact) {
   EXPECT_EQ(s["status"].toString(), "interrupted");  // rows were lost: not complete
   const long long stored = s["rows"].toInteger();
   EXPECT_GT(stored, 0);
-  // What the summary says was recorded is what the database holds.
+  // What the summary says was recorded is what the database holds, and the rows it says were
+  // lost are those the error names (before: "lost 0" beside "4224 of 5015 rows were lost").
   EXPECT_NE(out.find("recorded " + std::to_string(stored) + " rows"), std::string::npos) << out;
+  const std::size_t of = err.find(" of ");
+  const std::size_t says = err.rfind("incomplete: ", of);
+  ASSERT_NE(of, std::string::npos) << err;
+  ASSERT_NE(says, std::string::npos) << err;
+  const std::string lostRows = err.substr(says + 12, of - says - 12);
+  const std::size_t summary = out.find("session summary:");
+  ASSERT_NE(summary, std::string::npos) << out;
+  EXPECT_NE(out.find("lost " + lostRows + "\n", summary), std::string::npos)
+      << lostRows << " rows lost, but the summary says: " << out;
   const std::string csv = m_dir.filePath("full.csv").toStdString();
   ASSERT_EQ(run({"export", id, "--format", "recording", "--out", csv}).code, 0);
   EXPECT_EQ(static_cast<long long>(armtrack::readRecording(csv).samples.size()), stored);
