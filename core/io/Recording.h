@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -64,7 +65,9 @@ struct RecordingColumns {
 };
 
 /// What keeps a sample from being the next row of a recording with these columns, after a row at
-/// prevT (NaN or -infinity before the first row): a non-finite time, a time before prevT, a sensor
+/// prevT (NaN or -infinity before the first row) of a recording whose first row was at firstT
+/// (NaN before it): a non-finite time, one beyond any clock or more than the longest recording
+/// after the first (RecordingLimits: what the reader would refuse), a time before prevT, a sensor
 /// the columns do not hold, or a non-finite value. The one check every writer of rows makes
 /// (RecordingWriter, core/storage's DatabaseRecordingSink).
 struct RowProblem {
@@ -73,7 +76,8 @@ struct RowProblem {
 };
 /// Empty when sample may be appended.
 std::optional<RowProblem> checkRow(const ArmSample& sample, const RecordingColumns& columns,
-                                   double prevT);
+                                   double prevT,
+                                   double firstT = std::numeric_limits<double>::quiet_NaN());
 
 /// What the recording reader accepts at the door (docs/recording-format.md, "Limits"). A file or
 /// a row outside them is refused with a RecordingError naming the file, line and column.
@@ -227,6 +231,7 @@ class RecordingWriter : public RecordingSink {
   std::string m_buf;
   int m_fd = -1;
   double m_prevT;
+  double m_firstT = std::numeric_limits<double>::quiet_NaN();
   std::uint64_t m_rows = 0;
   std::uint64_t m_linesWritten = 0;  // newline-terminated lines written, the header's included
 };

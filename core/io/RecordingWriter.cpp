@@ -107,11 +107,12 @@ std::array<double, kNumSlots> slotsOf(const ArmSample& s) {
 }
 
 /// Appends one CSV row (checked with checkRow) for the columns in `present`. `prevT` is the
-/// previous row's time (NaN for the first row). Throws RecordingError naming file, line and
+/// previous row's time and `firstT` the first's (NaN for the first row). Throws RecordingError
+/// naming file, line and
 /// column for what checkRow refuses.
 void appendRow(std::string& buf, const GroupSet& present, const ArmSample& s, double prevT,
-               const std::string& file, int line) {
-  if (const std::optional<RowProblem> p = checkRow(s, columnsOf(present), prevT))
+               double firstT, const std::string& file, int line) {
+  if (const std::optional<RowProblem> p = checkRow(s, columnsOf(present), prevT, firstT))
     throw RecordingError(file, line, p->column, p->message);
   const std::array<double, kNumSlots> v = slotsOf(s);
   const GroupSet has = groupsOf(s);
@@ -144,7 +145,9 @@ void writeCsv(AtomicFile& out, const std::string& file, const Recording& rec) {
   constexpr int kFirstRowLine = 3;  // comment, header
   double prevT = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < rec.samples.size(); ++i) {
-    appendRow(buf, present, rec.samples[i], prevT, file, kFirstRowLine + static_cast<int>(i));
+    appendRow(buf, present, rec.samples[i], prevT,
+              i == 0 ? std::numeric_limits<double>::quiet_NaN() : rec.samples[0].t, file,
+              kFirstRowLine + static_cast<int>(i));
     prevT = rec.samples[i].t;
     if (buf.size() >= kFlushAt) {
       out.write(buf);
@@ -157,9 +160,16 @@ void writeCsv(AtomicFile& out, const std::string& file, const Recording& rec) {
 }  // namespace
 
 std::optional<RowProblem> checkRow(const ArmSample& s, const RecordingColumns& columns,
-                                   double prevT) {
+                                   double prevT, double firstT) {
   if (!std::isfinite(s.t))
     return RowProblem{1, "cannot write non-finite time " + formatDouble(s.t)};
+  if (std::fabs(s.t) > RecordingLimits::kMaxAbsTimeSeconds)
+    return RowProblem{1, "cannot write time " + formatDouble(s.t) +
+                             " s: beyond any clock (a recording's times stay within +-1e10 s)"};
+  if (std::isfinite(firstT) && s.t - firstT > RecordingLimits::kMaxRecordingSeconds)
+    return RowProblem{1, "cannot write time " + formatDouble(s.t) + " s, more than 12 h after "
+                             "the first row (" + formatDouble(firstT) +
+                             " s): a recording spans at most 12 h; start a new one"};
   if (s.t < prevT)
     return RowProblem{
         1, "cannot write decreasing time: " + formatDouble(s.t) + " after " + formatDouble(prevT)};
@@ -257,7 +267,9 @@ RecordingWriter::~RecordingWriter() {
 
 void RecordingWriter::append(const ArmSample& sample) {
   if (m_fd < 0) throw RecordingError(m_path.string(), 0, 0, "the recording is closed");
-  appendRow(m_buf, m_present, sample, m_prevT, m_path.string(), static_cast<int>(m_rows) + 3);
+  appendRow(m_buf, m_present, sample, m_prevT, m_firstT, m_path.string(),
+            static_cast<int>(m_rows) + 3);
+  if (m_rows == 0) m_firstT = sample.t;
   m_prevT = sample.t;
   ++m_rows;
 }

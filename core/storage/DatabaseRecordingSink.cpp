@@ -34,9 +34,10 @@ void DatabaseRecordingSink::fail(const std::string& what) const {
 
 void DatabaseRecordingSink::append(const ArmSample& s) {
   if (m_closed) fail("the recording is closed");
-  if (const std::optional<RowProblem> p = checkRow(s, m_columns, m_prevT))
+  if (const std::optional<RowProblem> p = checkRow(s, m_columns, m_prevT, m_firstT))
     fail("row " + std::to_string(m_rows + 1) + ": " + p->message);
   m_buffer.push_back(s);
+  if (m_rows == 0) m_firstT = s.t;
   m_prevT = s.t;
   ++m_rows;
 }

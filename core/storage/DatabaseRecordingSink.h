@@ -3,6 +3,7 @@
 // a second, so a killed process loses at most the last second.
 #pragma once
 
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -49,6 +50,7 @@ class DatabaseRecordingSink : public RecordingSink {
   std::unique_ptr<Database> m_db;
   std::vector<ArmSample> m_buffer;
   double m_prevT;
+  double m_firstT = std::numeric_limits<double>::quiet_NaN();  // the first row's time
   std::uint64_t m_rows = 0;
   std::uint64_t m_rowsWritten = 0;
   bool m_closed = false;

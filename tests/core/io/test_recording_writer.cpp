@@ -148,6 +148,16 @@ TEST_F(RecordingTest, WriterRefusesBadRowsAndStaysUsable) {
   nan.upperArm->acc.x() = std::nan("");
   EXPECT_NE(errorOf([&] { w.append(nan); }).message().find("non-finite"), std::string::npos);
   EXPECT_NE(errorOf([&] { w.append(liveRow(0)); }).message().find("decreasing"), std::string::npos);
+  // What the reader would refuse is not written either (issue 24, item 11): a time beyond any
+  // clock, or more than 12 h after the first row (a session left running).
+  ArmSample absurd = liveRow(2);
+  absurd.t = 1e300;
+  EXPECT_NE(errorOf([&] { w.append(absurd); }).message().find("beyond any clock"),
+            std::string::npos);
+  ArmSample late = liveRow(2);
+  late.t = liveRow(1).t + RecordingLimits::kMaxRecordingSeconds + 1.0;
+  EXPECT_NE(errorOf([&] { w.append(late); }).message().find("more than 12 h after the first row"),
+            std::string::npos);
   w.append(liveRow(2));
   w.close();
   const Recording rec = readRecording(p);

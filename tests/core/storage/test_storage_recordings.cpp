@@ -491,6 +491,10 @@ TEST(StoredRecording, SinkRefusesBadRowsAndStaysUsable) {
   EXPECT_NE(refusal(noTime).find("non-finite time"), std::string::npos) << refusal(noTime);
   EXPECT_NE(refusal(imuRow(-1.0)).find("decreasing time: -1 after 0"), std::string::npos)
       << refusal(imuRow(-1.0));
+  // A clock gone wrong: what the reader refuses is not stored (issue 24, item 11).
+  EXPECT_NE(refusal(imuRow(1e300)).find("beyond any clock"), std::string::npos);
+  EXPECT_NE(refusal(imuRow(12 * 3600.0 + 1.0)).find("more than 12 h after the first row"),
+            std::string::npos);
   sink.append(imuRow(0.001));
   sink.close();
   EXPECT_EQ(sink.rows(), 2u);
