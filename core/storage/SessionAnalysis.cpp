@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/storage/AnalysisRows.h"
 #include "core/storage/EstimateCodec.h"
 
 #ifndef ARMTRACK_VERSION
@@ -21,132 +22,15 @@ namespace armtrack::storage {
 namespace {
 
 using Kind = StorageError::Kind;
+using detail::angleKey;
+using detail::merged;
+using detail::metricsParams;
+using detail::MetricRowCollector;
+using detail::MetricRows;
+using detail::sessionText;
 
 constexpr std::size_t kCancelCheckRows = 1024;  // rows between two looks at the cancel flag
 constexpr std::size_t kEstimateChunkRows = std::size_t{1} << 16;  // rows of a stored estimate chunk
-
-std::string sessionText(qint64 id) {
-  return "session " + std::to_string(id);
-}
-
-struct MetricRows {
-  AngleSeries metricSeries;         // what the metrics are computed from
-  std::vector<JointVector> metricJoints;  // the same rows as joint angles (rad)
-  std::vector<ClinicalRow> sdRad;   // standard deviations of the series' rows, when asked for
-  std::size_t dropped = 0, settling = 0;
-};
-
-QString angleKey(int index) {
-  const std::string_view k = clinicalAngleInfo()[static_cast<std::size_t>(index)].key;
-  return QString::fromUtf8(k.data(), static_cast<qsizetype>(k.size()));
-}
-
-// The rows the metrics use, collected as the estimates come: the filter's settling time after
-// each (re)start or recovery is left out (those angles may be far off while the arm did not
-// move), as the error statistics leave it out, and so is a row at or before the time of the
-// previous one (the metrics need strictly increasing times); both stay in the stored estimates.
-// Of the rest, the first row of each 1/kMetricsRateHz cell of time is kept: the clinical metrics
-// need no more (docs/storage.md, "Memory of an analysis"), so their memory and time grow with
-// the session's duration at that rate, not with the sensors' rate. allRows keeps every settled
-// row in series instead (exports) while the metrics still see the thinned ones.
-class MetricRowCollector {
- public:
-  MetricRowCollector(bool withSd, bool allRows) : m_withSd(withSd), m_allRows(allRows) {}
-
-  void add(double t, const JointVector& th, const JointVector& sd, int status) {
-    ++m_rows;
-    if (status == kStatusRestarted || status == kStatusRecovered) m_settledFrom = t + kStartupSeconds;
-    if (t < m_settledFrom) {
-      ++m_settling;
-      return;
-    }
-    if (m_haveLast && !(t > m_lastT)) {
-      ++m_dropped;
-      return;
-    }
-    if (!m_haveLast) m_t0 = t;
-    m_haveLast = true;
-    m_lastT = t;
-    const double cell = std::floor((t - m_t0) * kMetricsRateHz);
-    const bool thinKeeps = !(cell <= m_lastCell);
-    if (thinKeeps) {
-      m_lastCell = cell;
-      m_metricT.push_back(t);
-      m_metricTh.push_back(th);
-    }
-    if (!(thinKeeps || m_allRows)) return;
-    if (m_allRows) {
-      m_allT.push_back(t);
-      m_allTh.push_back(th);
-    }
-    if (!m_withSd) return;
-    ClinicalRow r;  // the clinical angles are the joint angles up to sign
-    for (int k = 0; k < kNumClinicalAngles; ++k) r[static_cast<std::size_t>(k)] = sd(k);
-    m_sd.push_back(r);
-  }
-
-  /// The rows for the metrics, and the series (the same rows, or every settled row with
-  /// allRows). Throws StorageError(Usage) when fewer than 2 rows are left.
-  MetricRows finish(qint64 sessionId, AngleSeries* series = nullptr) {
-    if (m_metricT.size() < 2)
-      throw StorageError(Kind::Usage, sessionText(sessionId) + ": " + std::to_string(m_rows) +
-                                          " estimates, " + std::to_string(m_metricT.size()) +
-                                          " after the filter's start-up second; at least 2 are "
-                                          "needed for metrics");
-    MetricRows out;
-    out.dropped = m_dropped;
-    out.settling = m_settling;
-    out.metricSeries = angleSeriesFromJoints(m_metricT, m_metricTh);
-    out.metricJoints = std::move(m_metricTh);
-    m_metricT = {};
-    m_metricTh = {};
-    if (series) {
-      if (m_allRows) {
-        *series = angleSeriesFromJoints(m_allT, m_allTh);
-        m_allT = {};
-        m_allTh = {};
-      } else {
-        *series = out.metricSeries;
-      }
-    }
-    out.sdRad = std::move(m_sd);
-    return out;
-  }
-
- private:
-  bool m_withSd, m_allRows;
-  std::size_t m_rows = 0, m_dropped = 0, m_settling = 0;
-  double m_settledFrom = -std::numeric_limits<double>::infinity();
-  bool m_haveLast = false;
-  double m_lastT = 0, m_t0 = 0;
-  double m_lastCell = -1;
-  std::vector<double> m_metricT, m_allT;
-  std::vector<JointVector> m_metricTh, m_allTh;
-  std::vector<ClinicalRow> m_sd;
-};
-
-// Metrics parameters for a session: the wrist path from its geometry, repetitions on its
-// protocol's primary angle judged against the protocol's target (protocol is set then).
-ClinicalMetricsParams metricsParams(ClinicalStore& store, const SessionInfo& info,
-                                    const ArmGeometry& geometry,
-                                    std::optional<Protocol>& protocol) {
-  ClinicalMetricsParams mp;
-  mp.geometry = geometry;
-  if (info.protocolName.isEmpty()) return mp;
-  protocol = store.protocol(info.protocolName);
-  const auto& keys = clinicalAngleInfo();
-  for (std::size_t a = 0; a < keys.size(); ++a)
-    if (angleKey(static_cast<int>(a)) == protocol->angleKey)
-      mp.repetitions.primaryAngle = static_cast<int>(a);
-  if (!mp.repetitions.primaryAngle)
-    throw StorageError(Kind::Usage, "protocol '" + protocol->name.toStdString() +
-                                        "' has an unknown angle '" +
-                                        protocol->angleKey.toStdString() + "'");
-  if (protocol->targetMaxDeg > protocol->targetMinDeg)
-    mp.repetitions.target =
-        TargetRange{protocol->targetMinDeg * kDegToRad, protocol->targetMaxDeg * kDegToRad};
-  return mp;
-}
 
 // The session's stored filter settings ({} = none): see docs/storage.md, "Filter settings".
 EstimateOptions parseFilterSettings(const QString& json, qint64 sessionId, bool& fromSession) {
@@ -264,18 +148,6 @@ QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
   return s;
 }
 
-QJsonObject merged(const QJsonObject& summary, const QJsonObject& angles) {
-  QJsonObject o = summary;
-  o.insert("angles", angles);
-  return o;
-}
-
-std::optional<QJsonObject> parseObject(const QString& json) {
-  const QJsonDocument doc = QJsonDocument::fromJson(json.toUtf8());
-  if (!doc.isObject()) return std::nullopt;
-  return doc.object();
-}
-
 const char* filterName(FilterKind k) {
   return k == FilterKind::Ekf ? "ekf" : "ukf";
 }
@@ -377,7 +249,19 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                    std::to_string(sessionId) + "'");
   AnalysisResult result;
   bool fromSession = false;
-  result.settings = parseFilterSettings(info.filterJson, sessionId, fromSession);
+  // What the session holds that cannot be analysed as it is (unreadable filter settings or
+  // sidecar, a protocol on an unknown angle) marks the analysis failed with the reason, so it is
+  // not taken up again and again as pending.
+  const auto storedProblem = [&](auto&& read) {
+    try {
+      return read();
+    } catch (const StorageError& e) {
+      if (e.kind() == Kind::Usage || e.kind() == Kind::Corrupt) failAnalysis(store, sessionId, e);
+      throw;
+    }
+  };
+  result.settings = storedProblem(
+      [&] { return parseFilterSettings(info.filterJson, sessionId, fromSession); });
   result.settingsSource = fromSession ? "session" : "defaults";
   if (options.filter) result.settings.filter = *options.filter;
   if (options.model) result.settings.model = *options.model;
@@ -387,7 +271,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   };
   progress(0);
 
-  RecordingMeta meta = store.recordingMeta(sessionId);
+  RecordingMeta meta = storedProblem([&] { return store.recordingMeta(sessionId); });
   if (options.calibration) {
     try {
       applyCalibration(*options.calibration, meta);  // the calibrated geometry
@@ -398,7 +282,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   }
   const EstimatorParams params = estimatorParamsFor(meta, result.settings);
   std::optional<Protocol> protocol;
-  const ClinicalMetricsParams mp = metricsParams(store, info, params.geometry, protocol);
+  const ClinicalMetricsParams mp =
+      storedProblem([&] { return metricsParams(store, info, params.geometry, protocol); });
 
   AnalysisRun run(store, sessionId);
   {
@@ -527,244 +412,6 @@ QJsonObject filterSettingsJson(const EstimateOptions& settings) {
                 {"camera", settings.useCamera}};
   if (settings.jointAccelStdDeg) o.insert("joint_accel_std_deg", *settings.jointAccelStdDeg);
   return o;
-}
-
-namespace {
-
-// Calls rows with each block of a stored version's estimates in order (one block for a version
-// stored whole, one per chunk otherwise); where names the session and version for errors.
-void forEachEstimateBlock(ClinicalStore& store, const EstimateRecord& rec, const std::string& where,
-                          const std::function<void(EstimateColumns&&)>& rows) {
-  const auto damaged = [&](const std::string& what) {
-    return StorageError(Kind::Corrupt, where + what + " (run 'session reestimate')");
-  };
-  if (rec.codec != EstimateCodec::kName && rec.codec != EstimateCodec::kChunkedName)
-    throw StorageError(Kind::Corrupt, where + "unknown codec '" + rec.codec.toStdString() +
-                                          "' (written by a newer ArmTrack?)");
-  const std::optional<QJsonObject> params = parseObject(rec.paramsJson);
-  const double total = params ? params->value("rows").toDouble(-1.0) : -1.0;
-  if (!(total >= 0) || total != std::floor(total) || total > 1e12)
-    throw damaged("its parameters do not say how many rows it holds");
-  if (rec.codec == EstimateCodec::kName) {
-    try {
-      rows(EstimateCodec::decode(std::string(rec.data.constData(), rec.data.size()),
-                                 static_cast<std::uint64_t>(total)));
-    } catch (const std::runtime_error& e) {
-      throw damaged(e.what());
-    }
-    return;
-  }
-  std::uint64_t seen = 0;
-  int expectedSeq = 0;
-  double lastT = -std::numeric_limits<double>::infinity();
-  store.readEstimateChunks(rec, [&](int seq, std::uint64_t n, const QByteArray& data) {
-    if (seq != expectedSeq)
-      throw damaged("chunk " + std::to_string(expectedSeq) + " is missing");
-    ++expectedSeq;
-    EstimateColumns block;
-    try {
-      block = EstimateCodec::decode(std::string(data.constData(), data.size()), n);
-    } catch (const std::runtime_error& e) {
-      throw damaged("chunk " + std::to_string(seq) + ": " + e.what());
-    }
-    if (block.size() > 0 && block.t.front() < lastT)
-      throw damaged("chunk " + std::to_string(seq) + " starts before the previous one ends");
-    if (block.size() > 0) lastT = block.t.back();
-    seen += n;
-    rows(std::move(block));
-  });
-  if (seen != static_cast<std::uint64_t>(total))
-    throw damaged("its chunks hold " + std::to_string(seen) + " rows, its parameters say " +
-                  std::to_string(static_cast<std::uint64_t>(total)));
-}
-
-std::string versionText(qint64 sessionId, int version) {
-  return sessionText(sessionId) + ", estimates version " + std::to_string(version) + ": ";
-}
-
-}  // namespace
-
-std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessionId, int version) {
-  const std::optional<EstimateRecord> rec = store.estimates(sessionId, version);
-  if (!rec) return std::nullopt;
-  StoredAnalysis a;
-  a.sessionId = sessionId;
-  a.version = rec->version;
-  a.createdAt = rec->createdAt;
-  a.paramsJson = rec->paramsJson;
-  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
-                       [&](EstimateColumns&& block) {
-                         if (a.t.empty()) {
-                           a.t = std::move(block.t);
-                           a.joints = std::move(block.th);
-                           a.sd = std::move(block.sd);
-                           a.status = std::move(block.status);
-                           return;
-                         }
-                         a.t.insert(a.t.end(), block.t.begin(), block.t.end());
-                         a.joints.insert(a.joints.end(), block.th.begin(), block.th.end());
-                         a.sd.insert(a.sd.end(), block.sd.begin(), block.sd.end());
-                         a.status.insert(a.status.end(), block.status.begin(), block.status.end());
-                       });
-  a.clinical = angleSeriesFromJoints(a.t, a.joints);
-  if (const auto m = store.latestMetrics(sessionId)) {
-    const std::optional<QJsonObject> angles = parseObject(m->first);
-    const std::optional<QJsonObject> summary = parseObject(m->second);
-    if (angles && summary && summary->value("estimate_version").toInt() == a.version)
-      a.metrics = merged(*summary, *angles);
-  }
-  return a;
-}
-
-std::optional<StoredAnalysis> latestAnalysis(ClinicalStore& store, qint64 sessionId) {
-  return storedAnalysis(store, sessionId, 0);
-}
-
-std::optional<QJsonObject> latestMetricsJson(ClinicalStore& store, qint64 sessionId) {
-  const auto m = store.latestMetrics(sessionId);
-  if (!m) return std::nullopt;
-  const std::optional<QJsonObject> angles = parseObject(m->first);
-  const std::optional<QJsonObject> summary = parseObject(m->second);
-  if (!angles || !summary)
-    throw StorageError(Kind::Corrupt, sessionText(sessionId) +
-                                          ": its stored metrics are not JSON objects (run "
-                                          "'session reestimate')");
-  return merged(*summary, *angles);
-}
-
-}  // namespace armtrack::storage
-
-namespace armtrack::storage {
-
-SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId, SeriesRows rows) {
-  SessionAngles out;
-  out.info = store.session(sessionId);
-  const std::optional<EstimateRecord> rec = store.estimates(sessionId, 0);
-  if (!rec)
-    throw StorageError(Kind::NotFound, sessionText(sessionId) +
-                                           " has not been analysed: run 'session reestimate " +
-                                           std::to_string(sessionId) + "' (therapists)");
-  const RecordingMeta meta = store.recordingMeta(sessionId);
-  out.side = meta.side;
-  out.version = rec->version;
-  std::optional<Protocol> protocol;
-  const ClinicalMetricsParams mp = metricsParams(store, out.info, meta.geometry, protocol);
-  // The rows are gathered as analyseSession gathered them, so the metrics come out the same.
-  MetricRowCollector collector(/*withSd=*/true, rows == SeriesRows::All);
-  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
-                       [&](EstimateColumns&& block) {
-                         for (std::size_t i = 0; i < block.size(); ++i)
-                           collector.add(block.t[i], block.th[i], block.sd[i], block.status[i]);
-                       });
-  MetricRows settled = collector.finish(sessionId, &out.series);
-  try {
-    out.metrics = computeSessionMetrics(settled.metricSeries, mp);
-  } catch (const std::invalid_argument& e) {
-    throw StorageError(Kind::Usage,
-                       sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
-  }
-  out.sdRad = std::move(settled.sdRad);
-  return out;
-}
-
-}  // namespace armtrack::storage
-
-namespace armtrack::storage {
-
-namespace {
-
-double radOf(const QJsonObject& o, const char* key) {
-  return o.value(key).toDouble(0.0) * kDegToRad;
-}
-
-IntervalMetrics intervalFromJson(const QJsonObject& angles) {
-  IntervalMetrics m;
-  for (int a = 0; a < kNumClinicalAngles; ++a) {
-    const QJsonObject o = angles.value(angleKey(a)).toObject();
-    AngleMetrics& x = m.angle[static_cast<std::size_t>(a)];
-    x.minRad = radOf(o, "min_deg");
-    x.maxRad = radOf(o, "max_deg");
-    x.romRad = radOf(o, "rom_deg");
-    x.peakVelocityRadPerS = radOf(o, "peak_velocity_deg_s");
-    x.meanVelocityRadPerS = radOf(o, "mean_velocity_deg_s");
-    x.movementTimeS = o.value("movement_time_s").toDouble(0.0);
-  }
-  return m;
-}
-
-SmoothnessValue smoothnessFromJson(const QJsonObject& o, const char* name) {
-  const QString status = o.value(QString(name) + "_status").toString();
-  for (const SmoothnessStatus s :
-       {SmoothnessStatus::Ok, SmoothnessStatus::TooShort, SmoothnessStatus::NonFinite,
-        SmoothnessStatus::NoMovement, SmoothnessStatus::ZeroJerk})
-    if (status == QLatin1String(toString(s)))
-      return {s == SmoothnessStatus::Ok ? o.value(name).toDouble(0.0) : 0.0, s};
-  return {};
-}
-
-}  // namespace
-
-SessionMetrics sessionMetricsFromJson(const QJsonObject& m) {
-  SessionMetrics out;
-  out.session = intervalFromJson(m.value("angles").toObject());
-  out.durationS = m.value("duration_s").toDouble(0.0);
-  out.samples = static_cast<std::size_t>(m.value("samples").toInteger(0));
-  out.rejectedNonFinite = static_cast<std::size_t>(m.value("rejected_non_finite").toInteger(0));
-  out.gaps = static_cast<std::size_t>(m.value("gaps").toInteger(0));
-  out.session.samples = out.samples;
-  out.sparc = smoothnessFromJson(m, "sparc");
-  out.ldlj = smoothnessFromJson(m, "ldlj");
-  const QJsonObject reps = m.value("repetitions").toObject();
-  RepetitionResult& r = out.repetitions;
-  for (int a = 0; a < kNumClinicalAngles; ++a)
-    if (reps.value("primary_angle").toString() == angleKey(a)) r.primaryAngle = a;
-  r.negativeDirection = reps.value("direction").toString() == "negative";
-  r.referenceRad = radOf(reps, "reference_deg");
-  r.fullCount = static_cast<std::size_t>(reps.value("full").toInteger(0));
-  r.partialCount = static_cast<std::size_t>(reps.value("partial").toInteger(0));
-  r.truncated = static_cast<std::size_t>(reps.value("truncated").toInteger(0));
-  for (const QJsonValue& v : reps.value("list").toArray()) {
-    const QJsonObject o = v.toObject();
-    Repetition rep;
-    rep.startS = o.value("start_s").toDouble(0.0);
-    rep.peakS = o.value("peak_s").toDouble(0.0);
-    rep.endS = o.value("end_s").toDouble(0.0);
-    rep.excursionRad = radOf(o, "excursion_deg");
-    rep.partial = o.value("partial").toBool();
-    rep.metrics = intervalFromJson(o.value("angles").toObject());
-    r.repetitions.push_back(rep);
-    out.repetitionSmoothness.push_back({smoothnessFromJson(o, "sparc"), smoothnessFromJson(o, "ldlj")});
-  }
-  return out;
-}
-
-std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 sessionId) {
-  const std::optional<ClinicalStore::StoredSeries> series = store.latestMetricSeries(sessionId);
-  if (!series) return std::nullopt;
-  const std::optional<QJsonObject> metrics = latestMetricsJson(store, sessionId);
-  if (!metrics) return std::nullopt;
-  const int version = metrics->value("estimate_version").toInt();
-  if (version != store.estimateVersions(sessionId)) return std::nullopt;
-  const std::string where =
-      sessionText(sessionId) + ", metrics of estimates version " + std::to_string(version) + ": ";
-  if (series->codec != kMetricRowsCodec)
-    throw StorageError(Kind::Corrupt, where + "unknown codec '" + series->codec.toStdString() +
-                                          "' of its rows (written by a newer ArmTrack?)");
-  SessionAngles out;
-  out.info = store.session(sessionId);
-  out.side = store.recordingMeta(sessionId).side;
-  out.version = version;
-  out.metrics = sessionMetricsFromJson(*metrics);
-  try {
-    const EstimateColumns rows = EstimateCodec::decode(
-        std::string(series->data.constData(), static_cast<std::size_t>(series->data.size())),
-        static_cast<std::uint64_t>(out.metrics.samples + out.metrics.rejectedNonFinite));
-    out.series = angleSeriesFromJoints(rows.t, rows.th);
-  } catch (const std::runtime_error& e) {
-    throw StorageError(Kind::Corrupt, where + "its rows: " + e.what() +
-                                          " (run 'session reestimate')");
-  }
-  return out;
 }
 
 }  // namespace armtrack::storage
