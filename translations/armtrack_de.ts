@@ -763,6 +763,17 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Signing in as the demo patient at home...</source>
         <translation>Anmeldung als Demo-Patientin zu Hause ...</translation>
     </message>
+    <message numerus="yes">
+        <source>%n earlier session(s) analysed</source>
+        <translation>
+            <numerusform>%n frühere Sitzung ausgewertet</numerusform>
+            <numerusform>%n frühere Sitzungen ausgewertet</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Earlier sessions could not be analysed now: %1</source>
+        <translation>Frühere Sitzungen konnten jetzt nicht ausgewertet werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::FirstRunScreen</name>

@@ -19,6 +19,16 @@
     </message>
 </context>
 <context>
+    <name>armtrack::gui::AppController</name>
+    <message numerus="yes">
+        <source>%n earlier session(s) analysed</source>
+        <translation>
+            <numerusform>%n earlier session analysed</numerusform>
+            <numerusform>%n earlier sessions analysed</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::FirstRunScreen</name>
     <message numerus="yes">
         <source>at least %n characters</source>

@@ -763,6 +763,17 @@ Puede recalcularla desde su revisión.</translation>
         <source>Signing in as the demo patient at home...</source>
         <translation>Iniciando sesión como la paciente de demostración en casa...</translation>
     </message>
+    <message numerus="yes">
+        <source>%n earlier session(s) analysed</source>
+        <translation>
+            <numerusform>%n sesión anterior analizada</numerusform>
+            <numerusform>%n sesiones anteriores analizadas</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Earlier sessions could not be analysed now: %1</source>
+        <translation>Las sesiones anteriores no se pudieron analizar ahora: %1</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::FirstRunScreen</name>

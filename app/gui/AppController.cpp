@@ -357,34 +357,42 @@ void AppController::onSignedIn(const storage::User& user) {
   analysePending();
 }
 
-void AppController::analysePending() {
+void AppController::analysePending(int analysedSoFar, qint64 after) {
   // Sessions whose analysis never finished (the program that stored them ended first, or a home
-  // session waiting for staff) are analysed in the background, one after another, behind any
-  // job the therapist starts.
+  // session waiting for staff) are analysed in the background, one job each: a job the therapist
+  // starts meanwhile (a new session's analysis) runs after the current one, not after them all.
   m_records->startJob(
-      m_window,
-      [](JobContext& c) {
-        int analysed = 0;
-        for (const qint64 id : c.store().pendingAnalyses()) {
-          if (c.cancelled()) break;
-          storage::AnalysisOptions o;
-          o.cancel = c.cancelFlag();
-          try {
-            if (!storage::analyseSession(c.store(), id, o).cancelled) ++analysed;
-          } catch (const storage::StorageError& e) {
-            // A recording that cannot be analysed is marked so and skipped; the rest go on.
-            if (e.kind() != storage::StorageError::Kind::Usage &&
-                e.kind() != storage::StorageError::Kind::Corrupt)
-              throw;
+      m_window.get(),
+      [after](JobContext& c) {
+        // The oldest pending session after the one tried last (ids rise), so that each is tried
+        // once in a round whatever happens to it.
+        Step step;
+        for (const qint64 id : c.store().pendingAnalyses())
+          if (id > after) {
+            step.id = id;
+            break;
           }
+        if (step.id == 0 || c.cancelled()) return step;
+        storage::AnalysisOptions o;
+        o.cancel = c.cancelFlag();
+        try {
+          step.analysed = !storage::analyseSession(c.store(), step.id, o).cancelled;
+          step.more = step.analysed;
+        } catch (const storage::StorageError& e) {
+          // A recording that cannot be analysed is marked so: go on with the others.
+          if (e.kind() != storage::StorageError::Kind::Usage &&
+              e.kind() != storage::StorageError::Kind::Corrupt)
+            throw;
+          step.more = true;
         }
-        return analysed;
+        return step;
       },
-      [this](int analysed) {
-        if (analysed > 0)
+      [this, analysedSoFar](const Step& step) {
+        const int total = analysedSoFar + (step.analysed ? 1 : 0);
+        if (step.more && m_records->signedIn()) return analysePending(total, step.id);
+        if (total > 0)
           m_window->showStatus(
-              [analysed] { return tr("%n earlier session(s) analysed", nullptr, analysed); },
-              10000);
+              [total] { return tr("%n earlier session(s) analysed", nullptr, total); }, 10000);
       },
       [this](const RecordsFailure& f) {
         m_window->showStatus(

@@ -88,8 +88,17 @@ class AppController : public QObject {
   /// The records in effect (--db, else the settings); throws StorageError(Usage).
   storage::DatabaseUrl databaseUrl() const;
   void onSignedIn(const storage::User& user);
-  /// Analyses the sessions left with a pending analysis, in the background (staff only).
-  void analysePending();
+  /// Analyses the sessions left with a pending analysis in the background, one job a session
+  /// (staff only), those after session `after`; analysedSoFar counts those done before, for the
+  /// status bar.
+  void analysePending(int analysedSoFar = 0, qint64 after = 0);
+  /// One step of analysePending: the session tried (0: none left), whether it was analysed, and
+  /// whether to go on.
+  struct Step {
+    qint64 id = 0;
+    bool analysed = false;
+    bool more = false;
+  };
   void showDatabaseProblem(const RecordsFailure& failure);
   void closeHome();
   storage::DatabaseUrl demoDatabaseUrl() const;
