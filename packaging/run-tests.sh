@@ -20,6 +20,13 @@ if [ -x "$build/tests/benchmarks/bench_storage" ]; then
     echo "storage benchmarks failed to run" >&2
 fi
 
+# session import and report of hostile files and of an hour at 1 kHz, as child processes: wall
+# time, CPU and peak memory against issue 24's targets (about a minute).
+if [ -x "$build/tests/benchmarks/bench_import" ]; then
+  "$build/tests/benchmarks/bench_import" --cli "$build/app/armtrack-cli" ||
+    echo "import benchmark failed to run" >&2
+fi
+
 cd "$build"
 ctest --output-on-failure --parallel "$(nproc)" --timeout 600
 
