@@ -258,6 +258,7 @@ class ClinicalStore {
   int markDeadRecordingsInterrupted();
   void removeFailedImport(qint64 sessionId);
   void removeDeadDrafts(qint64 sessionId);  // in a transaction
+  void lockSessionRow(qint64 sessionId);    // in a transaction: PostgreSQL's row lock
   int insertMetrics(qint64 sessionId, const QString& perAngleJson,
                     const QString& perRepetitionJson,
                     const StoredSeries& series = {});  // in a transaction; the version

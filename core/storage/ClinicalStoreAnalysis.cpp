@@ -126,6 +126,7 @@ ClinicalStore::EstimatesDraft ClinicalStore::beginEstimates(qint64 sessionId,
   visibleSession(sessionId);
   EstimatesDraft draft;
   m_db.transaction([&] {
+    lockSessionRow(sessionId);
     removeDeadDrafts(sessionId);
     // A draft's version is negative (below every other of the session) until it is finished.
     QSqlQuery q =
@@ -185,6 +186,7 @@ ClinicalStore::AnalysisVersions ClinicalStore::finishAnalysis(
     const StoredSeries& series) {
   AnalysisVersions v;
   m_db.transaction([&] {
+    lockSessionRow(draft.sessionId);
     QSqlQuery q = m_db.exec(
         "SELECT coalesce(max(version), 0) FROM estimates WHERE session_id = ? AND complete = 1",
         {draft.sessionId});
@@ -242,6 +244,13 @@ std::vector<qint64> ClinicalStore::pendingAnalyses() {
     if (!claimed) ids.push_back(q.value(0).toLongLong());
   }
   return ids;
+}
+
+void ClinicalStore::lockSessionRow(qint64 sessionId) {
+  // Two analyses of one session number their versions one after the other: on SQLite the write
+  // transaction already holds the database; on PostgreSQL (READ COMMITTED) both would read the
+  // same highest version, so the session's row is locked until the transaction ends.
+  if (m_db.isPostgres()) m_db.exec("SELECT id FROM sessions WHERE id = ? FOR UPDATE", {sessionId});
 }
 
 void ClinicalStore::removeDeadDrafts(qint64 sessionId) {

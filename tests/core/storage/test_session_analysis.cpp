@@ -15,6 +15,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <thread>
 
 #include "core/estimation/RecordingEstimator.h"
 #include "core/kinematics/ClinicalAngles.h"
@@ -615,6 +616,43 @@ TEST_P(Engines, ADeadAnalysisLeavesNoDraftAndItsSessionPending) {
   EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{id}));
   EXPECT_EQ(analyseSession(*f.store, id).estimateVersion, 1);
   EXPECT_EQ(f.store->session(id).analysis, kAnalysisDone);
+}
+
+// Two analyses of one session at the same time, on two connections (a re-estimate at one
+// workstation while another takes up the pending analysis): both finish, as versions 1 and 2,
+// each with its own metrics, and no draft is left.
+TEST_P(Engines, TwoAnalysesOfOneSessionAtOnceBothFinish) {
+  Fixture f(GetParam());
+  f.store->addPatient(makePatient("P1"));
+  simulateTo(f.file("a.csv"), 6.0);
+  const qint64 id = f.store->importRecording(f.file("a.csv"), "P1");
+  std::vector<int> versions(2, 0);
+  std::vector<std::string> errors(2);
+  std::atomic<int> ready{0};
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 2; ++k)
+    threads.emplace_back([&, k] {
+      try {
+        Database db(DatabaseUrl::parse(f.path), {});
+        ClinicalStore store(db);
+        store.signIn("admin", kAdminPassword);
+        ++ready;
+        while (ready.load() < 2) std::this_thread::yield();
+        versions[static_cast<std::size_t>(k)] = analyseSession(store, id).estimateVersion;
+      } catch (const std::exception& e) {
+        errors[static_cast<std::size_t>(k)] = e.what();
+      }
+    });
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(errors, (std::vector<std::string>{"", ""}));
+  std::sort(versions.begin(), versions.end());
+  EXPECT_EQ(versions, (std::vector<int>{1, 2}));
+  EXPECT_EQ(f.store->estimateVersions(id), 2);
+  EXPECT_EQ(count(f, "SELECT count(*) FROM estimates WHERE complete = 0"), 0);
+  EXPECT_EQ(count(f, QString("SELECT count(*) FROM metrics WHERE session_id = %1").arg(id)), 2);
+  const std::optional<StoredAnalysis> newest = latestAnalysis(*f.store, id);
+  ASSERT_TRUE(newest && newest->metrics);
+  EXPECT_EQ((*newest->metrics)["estimate_version"].toInt(), 2);
 }
 
 INSTANTIATE_TEST_SUITE_P(Records, Engines, ::testing::Values(Engine::Sqlite, Engine::Postgres),
