@@ -18,11 +18,12 @@ namespace {
 /// back instead of the memory growing (32 chunks: about 32 s at 1 kHz, 11 MB).
 class ChunkQueue {
  public:
-  /// Waits while the queue is full.
+  /// Waits while the queue is full. Once the analysis has stopped (it failed: the session's
+  /// analysis stays pending) the chunks are not kept: the import goes on without it.
   void push(qint64 id, std::span<const ArmSample> samples) {
     std::unique_lock lock(m_mutex);
     m_changed.wait(lock, [&] { return m_chunks.size() < kCapacity || m_stopped; });
-    if (m_stopped) throw std::runtime_error("the analysis stopped");
+    if (m_stopped) return;
     m_id = id;
     m_chunks.emplace_back(samples.begin(), samples.end());
     m_changed.notify_all();
