@@ -177,7 +177,8 @@ int sessionImport(const std::vector<std::string>& rest, std::ostream& out, std::
     } catch (const storage::StorageError& e) {
       analysed = reportAnalysisFailure(id, e, err);
     } catch (const std::exception& e) {
-      analysed = reportAnalysisFailure(id, storage::StorageError(storage::StorageError::Kind::Io, e.what()), err);
+      analysed = reportAnalysisFailure(
+          id, storage::StorageError(storage::StorageError::Kind::Io, e.what()), err);
     }
   } else {
     analysed = analyseNewSession(c.store(), id, "session import", err);
@@ -364,14 +365,14 @@ bool reportAnalysisFailure(qint64 id, const storage::StorageError& e, std::ostre
   using Kind = storage::StorageError::Kind;
   if (e.kind() == Kind::Usage || e.kind() == Kind::Corrupt) {
     // The recording itself cannot be analysed: the session says so (analysis "failed").
-    err << "warning: session " << id << " is stored but cannot be analysed: " << e.what()
-        << "\n";
+    err << "warning: session " << id << " is stored but cannot be analysed: " << e.what() << "\n";
     return true;
   }
   // A lock, a full disk, a lost server: nothing of the analysis was kept and it stays pending,
   // so the next command runs it again.
-  err << "armtrack-cli: error: session " << id << " is stored, but its analysis failed: "
-      << e.what() << "; it stays pending and runs again with the next command (or 'session "
+  err << "armtrack-cli: error: session " << id
+      << " is stored, but its analysis failed: " << e.what()
+      << "; it stays pending and runs again with the next command (or 'session "
       << "reestimate " << id << "')\n";
   return false;
 }

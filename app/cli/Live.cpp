@@ -168,12 +168,11 @@ void printStats(std::ostream& out, const session::SessionStats& s, double cpuPer
   const std::uint64_t stored = recorded.value_or(s.recordedRows);
   const std::uint64_t notStored =
       recorded && *recorded < s.rowsToRecord ? s.rowsToRecord - *recorded : 0;
-  std::snprintf(line, sizeof line,
-                "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n", s.elapsed,
-                static_cast<unsigned long long>(s.rows),
-                static_cast<unsigned long long>(s.estimates),
-                static_cast<unsigned long long>(stored),
-                static_cast<unsigned long long>(s.lost() + notStored));
+  std::snprintf(
+      line, sizeof line, "[%7.1f s] rows %llu  estimates %llu  recorded %llu  lost %llu\n",
+      s.elapsed, static_cast<unsigned long long>(s.rows),
+      static_cast<unsigned long long>(s.estimates), static_cast<unsigned long long>(stored),
+      static_cast<unsigned long long>(s.lost() + notStored));
   out << line;
   for (std::size_t i = 0; i < s.streams.size(); ++i) {
     const session::StreamStats& st = s.streams[i];

@@ -17,7 +17,7 @@ namespace armtrack::gui {
 namespace {
 // The records refuse shorter ones (core/storage/TextRules.h), counted in code points.
 constexpr int kMinPasswordLength = storage::kMinPasswordLength;
-}
+}  // namespace
 
 FirstRunScreen::FirstRunScreen(const QString& defaultFolder, const QString& fixedDatabase,
                                QWidget* parent)

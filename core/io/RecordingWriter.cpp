@@ -167,8 +167,10 @@ std::optional<RowProblem> checkRow(const ArmSample& s, const RecordingColumns& c
     return RowProblem{1, "cannot write time " + formatDouble(s.t) +
                              " s: beyond any clock (a recording's times stay within +-1e10 s)"};
   if (std::isfinite(firstT) && s.t - firstT > RecordingLimits::kMaxRecordingSeconds)
-    return RowProblem{1, "cannot write time " + formatDouble(s.t) + " s, more than 12 h after "
-                             "the first row (" + formatDouble(firstT) +
+    return RowProblem{1, "cannot write time " + formatDouble(s.t) +
+                             " s, more than 12 h after "
+                             "the first row (" +
+                             formatDouble(firstT) +
                              " s): a recording spans at most 12 h; start a new one"};
   if (s.t < prevT)
     return RowProblem{

@@ -59,7 +59,8 @@ SessionMetrics computeSessionMetrics(const AngleSeries& series,
 
   std::vector<SmoothnessValue> sparcs, ldljs;
   for (const Repetition& r : out.repetitions.repetitions) {
-    const PathSmoothness p = smoothnessBetween(s.t, path, grid, r.startS, r.endS, params.smoothness);
+    const PathSmoothness p =
+        smoothnessBetween(s.t, path, grid, r.startS, r.endS, params.smoothness);
     out.repetitionSmoothness.push_back({p.sparc, p.ldlj});
     sparcs.push_back(p.sparc);
     ldljs.push_back(p.ldlj);
@@ -69,12 +70,13 @@ SessionMetrics computeSessionMetrics(const AngleSeries& series,
     // kMaxSmoothnessPieceS, and the median of their values (docs/metrics.md).
     for (const Segment& g : s.segments) {
       const double from = s.t[g.begin], to = s.t[g.end - 1];
-      const int pieces = std::max(1, static_cast<int>(std::ceil((to - from) / kMaxSmoothnessPieceS)));
+      const int pieces =
+          std::max(1, static_cast<int>(std::ceil((to - from) / kMaxSmoothnessPieceS)));
       const double length = (to - from) / pieces;
       for (int k = 0; k < pieces; ++k) {
-        const PathSmoothness p = smoothnessBetween(s.t, path, grid, from + k * length,
-                                                   k + 1 == pieces ? to : from + (k + 1) * length,
-                                                   params.smoothness);
+        const PathSmoothness p =
+            smoothnessBetween(s.t, path, grid, from + k * length,
+                              k + 1 == pieces ? to : from + (k + 1) * length, params.smoothness);
         sparcs.push_back(p.sparc);
         ldljs.push_back(p.ldlj);
       }

@@ -201,7 +201,8 @@ UniformVelocity uniformVelocityBetween(const std::vector<double>& t,
                                        const UniformVelocity& grid, double fromS, double toS) {
   UniformVelocity out;
   out.sampleRateHz = grid.sampleRateHz;
-  if (t.size() < 2 || !(grid.sampleRateHz > 0) || static_cast<Eigen::Index>(t.size()) != positions.rows())
+  if (t.size() < 2 || !(grid.sampleRateHz > 0) ||
+      static_cast<Eigen::Index>(t.size()) != positions.rows())
     return out;
   const auto rows =
       static_cast<Eigen::Index>(std::floor((t.back() - t.front()) * grid.sampleRateHz + 1e-9)) + 1;

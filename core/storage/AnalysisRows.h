@@ -25,9 +25,9 @@ QString angleKey(int index);
 
 /// The rows the metrics use, and what was left out.
 struct MetricRows {
-  AngleSeries metricSeries;         // what the metrics are computed from
+  AngleSeries metricSeries;               // what the metrics are computed from
   std::vector<JointVector> metricJoints;  // the same rows as joint angles (rad)
-  std::vector<ClinicalRow> sdRad;   // standard deviations of the series' rows, when asked for
+  std::vector<ClinicalRow> sdRad;         // standard deviations of the series' rows, when asked for
   std::size_t dropped = 0, settling = 0;
 };
 
@@ -45,7 +45,8 @@ class MetricRowCollector {
 
   void add(double t, const JointVector& th, const JointVector& sd, int status) {
     ++m_rows;
-    if (status == kStatusRestarted || status == kStatusRecovered) m_settledFrom = t + kStartupSeconds;
+    if (status == kStatusRestarted || status == kStatusRecovered)
+      m_settledFrom = t + kStartupSeconds;
     if (t < m_settledFrom) {
       ++m_settling;
       return;
@@ -79,10 +80,11 @@ class MetricRowCollector {
   /// allRows). Throws StorageError(Usage) when fewer than 2 rows are left.
   MetricRows finish(qint64 sessionId, AngleSeries* series = nullptr) {
     if (m_metricT.size() < 2)
-      throw StorageError(StorageError::Kind::Usage, sessionText(sessionId) + ": " + std::to_string(m_rows) +
-                                          " estimates, " + std::to_string(m_metricT.size()) +
-                                          " after the filter's start-up second; at least 2 are "
-                                          "needed for metrics");
+      throw StorageError(StorageError::Kind::Usage,
+                         sessionText(sessionId) + ": " + std::to_string(m_rows) + " estimates, " +
+                             std::to_string(m_metricT.size()) +
+                             " after the filter's start-up second; at least 2 are "
+                             "needed for metrics");
     MetricRows out;
     out.dropped = m_dropped;
     out.settling = m_settling;

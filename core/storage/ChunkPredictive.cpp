@@ -85,7 +85,8 @@ void residuals(const std::uint64_t* s, std::size_t n, std::uint64_t* z) {
   }
 }
 
-void residualsOf(int predictor, const std::vector<std::uint64_t>& s, std::vector<std::uint64_t>& z) {
+void residualsOf(int predictor, const std::vector<std::uint64_t>& s,
+                 std::vector<std::uint64_t>& z) {
   const std::size_t n = s.size();
   switch (predictor) {
     case 1:
@@ -148,8 +149,8 @@ void costBits(const std::vector<std::uint64_t>& z, int kFirst, int kCount,
         histogram[h] += wide[b];
     }
     histogram[kEscape] = static_cast<std::uint32_t>(escapes);
-    double bits =
-        static_cast<double>(z.size() - escapes) * (kFirst + j) + 64.0 * static_cast<double>(escapes);
+    double bits = static_cast<double>(z.size() - escapes) * (kFirst + j) +
+                  64.0 * static_cast<double>(escapes);
     for (const std::uint32_t c : histogram)
       if (c) bits += c * std::log2(n / c);
     out[static_cast<std::size_t>(j)] = bits;

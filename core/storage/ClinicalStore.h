@@ -138,7 +138,7 @@ class ClinicalStore {
     std::vector<std::string> warnings;  ///< the reader's: a missing sidecar, a cut line, gaps
     bool cutShort = false;              ///< the last line was incomplete: stored as interrupted
     std::uint64_t rows = 0;
-    TimeGaps gaps;                      ///< jumps in time, stored as they are
+    TimeGaps gaps;  ///< jumps in time, stored as they are
   };
   /// Told of each chunk of an import once it is committed: the new session's id, the chunk's
   /// samples (valid during the call) and the fraction of the file read. It may throw to stop the
@@ -192,9 +192,9 @@ class ClinicalStore {
   /// compressed, too much to hold and write as one value). Readers do not see it until
   /// finishAnalysis; one left by a process that died is removed by the session's next analysis.
   struct EstimatesDraft {
-    qint64 id = 0;         ///< the estimates row
+    qint64 id = 0;  ///< the estimates row
     qint64 sessionId = 0;
-    int version = 0;       ///< negative until finished
+    int version = 0;  ///< negative until finished
   };
   /// Starts a draft (administrators and therapists) and marks the session's analysis as being
   /// run by this process.
@@ -259,8 +259,7 @@ class ClinicalStore {
   void removeFailedImport(qint64 sessionId);
   void removeDeadDrafts(qint64 sessionId);  // in a transaction
   void lockSessionRow(qint64 sessionId);    // in a transaction: PostgreSQL's row lock
-  int insertMetrics(qint64 sessionId, const QString& perAngleJson,
-                    const QString& perRepetitionJson,
+  int insertMetrics(qint64 sessionId, const QString& perAngleJson, const QString& perRepetitionJson,
                     const StoredSeries& series = {});  // in a transaction; the version
   void renumberProgramme(qint64 patientId);  // positions 1, 2, ... in their order; in a transaction
 

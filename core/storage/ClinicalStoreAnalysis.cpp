@@ -66,8 +66,8 @@ int ClinicalStore::saveMetrics(qint64 sessionId, const QString& perAngleJson,
 
 int ClinicalStore::insertMetrics(qint64 sessionId, const QString& perAngleJson,
                                  const QString& perRepetitionJson, const StoredSeries& series) {
-  QSqlQuery q = m_db.exec("SELECT coalesce(max(version), 0) FROM metrics WHERE session_id = ?",
-                          {sessionId});
+  QSqlQuery q =
+      m_db.exec("SELECT coalesce(max(version), 0) FROM metrics WHERE session_id = ?", {sessionId});
   const int version = (q.next() ? q.value(0).toInt() : 0) + 1;
   q.finish();
   m_db.exec(
@@ -101,14 +101,15 @@ std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 s
 
 std::optional<EstimateRecord> ClinicalStore::estimates(qint64 sessionId, int version) {
   visibleSession(sessionId);
-  const QString columns = "SELECT id, version, created_at, params_json, codec, data FROM estimates ";
+  const QString columns =
+      "SELECT id, version, created_at, params_json, codec, data FROM estimates ";
   QSqlQuery q =
       version > 0
           ? m_db.exec(columns + "WHERE session_id = ? AND version = ? AND complete = 1",
                       {sessionId, version})
-          : m_db.exec(columns +
-                          "WHERE session_id = ? AND complete = 1 ORDER BY version DESC LIMIT 1",
-                      {sessionId});
+          : m_db.exec(
+                columns + "WHERE session_id = ? AND complete = 1 ORDER BY version DESC LIMIT 1",
+                {sessionId});
   if (!q.next()) return std::nullopt;
   EstimateRecord e;
   e.id = q.value(0).toLongLong();
@@ -129,16 +130,14 @@ ClinicalStore::EstimatesDraft ClinicalStore::beginEstimates(qint64 sessionId,
     lockSessionRow(sessionId);
     removeDeadDrafts(sessionId);
     // A draft's version is negative (below every other of the session) until it is finished.
-    QSqlQuery q =
-        m_db.exec("SELECT coalesce(min(version), 0) FROM estimates WHERE session_id = ?",
-                  {sessionId});
+    QSqlQuery q = m_db.exec("SELECT coalesce(min(version), 0) FROM estimates WHERE session_id = ?",
+                            {sessionId});
     draft.version = std::min(q.next() ? q.value(0).toInt() : 0, 0) - 1;
     q.finish();
     draft.id = m_db.insert(
         "INSERT INTO estimates (session_id, version, created_at, params_json, codec, data, "
         "complete, writer_host, writer_pid) VALUES (?, ?, ?, '{}', ?, ?, 0, ?, ?)",
-        {sessionId, draft.version, utcNow(), codec, QByteArray(""), thisHost(),
-         thisProcess()});
+        {sessionId, draft.version, utcNow(), codec, QByteArray(""), thisHost(), thisProcess()});
     m_db.exec("UPDATE sessions SET analysis_host = ?, analysis_pid = ? WHERE id = ?",
               {thisHost(), thisProcess(), sessionId});
   });
@@ -149,9 +148,8 @@ ClinicalStore::EstimatesDraft ClinicalStore::beginEstimates(qint64 sessionId,
 void ClinicalStore::appendEstimateChunk(const EstimatesDraft& draft, int seq, qint64 rows,
                                         const QByteArray& blob) {
   m_db.transaction([&] {
-    m_db.exec(
-        "INSERT INTO estimate_chunks (estimate_id, seq, row_count, data) VALUES (?, ?, ?, ?)",
-        {draft.id, seq, rows, blob});
+    m_db.exec("INSERT INTO estimate_chunks (estimate_id, seq, row_count, data) VALUES (?, ?, ?, ?)",
+              {draft.id, seq, rows, blob});
   });
 }
 
@@ -239,8 +237,8 @@ std::vector<qint64> ClinicalStore::pendingAnalyses() {
       "WHERE s.status = 'complete' AND s.analysis = 'pending' ORDER BY s.id");
   while (q.next()) {
     if (user().role == Role::Home && user().patientId != q.value(1).toLongLong()) continue;
-    const bool claimed = !q.value(3).isNull() && (q.value(2).toString() != thisHost() ||
-                                                  alive(q.value(3).toLongLong()));
+    const bool claimed = !q.value(3).isNull() &&
+                         (q.value(2).toString() != thisHost() || alive(q.value(3).toLongLong()));
     if (!claimed) ids.push_back(q.value(0).toLongLong());
   }
   return ids;

@@ -129,8 +129,7 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
   for (qint64 id : claims)
     m_db.transaction([&] {
       removeDeadDrafts(id);
-      m_db.exec("UPDATE sessions SET analysis_host = NULL, analysis_pid = NULL WHERE id = ?",
-                {id});
+      m_db.exec("UPDATE sessions SET analysis_host = NULL, analysis_pid = NULL WHERE id = ?", {id});
     });
   return interrupted;
 }
@@ -190,8 +189,8 @@ void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> sam
   const QString status = q.value(0).toString();
   q.finish();
   if (status != kStatusRecording)
-    throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " +
-                                        text(status) + ", not recording");
+    throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " + text(status) +
+                                        ", not recording");
   writeChunk(m_db, sessionId, samples);
 }
 

@@ -93,8 +93,8 @@ inline constexpr const char* kAnalysisNone = "none";
 
 /// How a session was made, stored beside it (docs/storage.md, "Sessions"); each a JSON object.
 struct SessionSettings {
-  QString devicesJson = "{}";  ///< the devices: plugin, options and streams, by device label
-  QString filterJson = "{}";   ///< the filter settings its analysis uses (SessionAnalysis.h)
+  QString devicesJson = "{}";    ///< the devices: plugin, options and streams, by device label
+  QString filterJson = "{}";     ///< the filter settings its analysis uses (SessionAnalysis.h)
   QString origin = kOriginLive;  ///< kOriginImport for a file being imported
 };
 
@@ -115,12 +115,12 @@ struct SessionInfo {
   qint64 sampleRows = 0;  ///< rows stored
   qint64 imuSamples = 0;  ///< rows that carry an IMU reading
   qint64 chunks = 0;
-  qint64 storedBytes = 0;            ///< compressed chunk bytes
-  QString setting = kSettingClinic;  ///< kSettingClinic or kSettingHome
-  std::optional<int> painScore;      ///< 0-10, the patient's own, home sessions
-  QString patientComment;            ///< the patient's own words, home sessions
-  QString homeSummaryJson = "{}";    ///< what the home window counted (docs/storage.md)
-  QString origin = kOriginLive;      ///< kOriginLive or kOriginImport
+  qint64 storedBytes = 0;               ///< compressed chunk bytes
+  QString setting = kSettingClinic;     ///< kSettingClinic or kSettingHome
+  std::optional<int> painScore;         ///< 0-10, the patient's own, home sessions
+  QString patientComment;               ///< the patient's own words, home sessions
+  QString homeSummaryJson = "{}";       ///< what the home window counted (docs/storage.md)
+  QString origin = kOriginLive;         ///< kOriginLive or kOriginImport
   QString analysis = kAnalysisPending;  ///< kAnalysisPending, kAnalysisDone, ...
   QString analysisNote;                 ///< why an analysis failed
 };

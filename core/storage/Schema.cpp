@@ -1,7 +1,7 @@
 #include "core/storage/Schema.h"
 
-#include "core/storage/NameKeys.h"
 #include "core/storage/AuditLog.h"
+#include "core/storage/NameKeys.h"
 
 namespace armtrack::storage {
 

@@ -24,9 +24,9 @@ namespace {
 using Kind = StorageError::Kind;
 using detail::angleKey;
 using detail::merged;
-using detail::metricsParams;
 using detail::MetricRowCollector;
 using detail::MetricRows;
+using detail::metricsParams;
 using detail::sessionText;
 
 constexpr std::size_t kCancelCheckRows = 1024;  // rows between two looks at the cancel flag
@@ -260,8 +260,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       throw;
     }
   };
-  result.settings = storedProblem(
-      [&] { return parseFilterSettings(info.filterJson, sessionId, fromSession); });
+  result.settings =
+      storedProblem([&] { return parseFilterSettings(info.filterJson, sessionId, fromSession); });
   result.settingsSource = fromSession ? "session" : "defaults";
   if (options.filter) result.settings.filter = *options.filter;
   if (options.model) result.settings.model = *options.model;
@@ -308,21 +308,21 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
     };
     const std::function<bool(std::span<const ArmSample>)> consume =
         [&](std::span<const ArmSample> samples) {
-        for (const ArmSample& s : samples) {
-          if (options.cancel && done % kCancelCheckRows == 0 && options.cancel->load()) {
-            cancelled = true;
-            return false;
+          for (const ArmSample& s : samples) {
+            if (options.cancel && done % kCancelCheckRows == 0 && options.cancel->load()) {
+              cancelled = true;
+              return false;
+            }
+            if (options.calibration) {
+              corrected = s;
+              applyCalibration(*options.calibration, corrected);
+              one(corrected);
+            } else {
+              one(s);
+            }
           }
-          if (options.calibration) {
-            corrected = s;
-            applyCalibration(*options.calibration, corrected);
-            one(corrected);
-          } else {
-            one(s);
-          }
-        }
-        return true;
-      };
+          return true;
+        };
     try {
       if (options.samples)
         options.samples(consume);
@@ -343,11 +343,10 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   const std::size_t estimateRows = run.rows();
   if (estimateRows < 2)
     failAnalysis(store, sessionId,
-                 StorageError(Kind::Usage, sessionText(sessionId) + ": " +
-                                               std::to_string(result.stats.imuRows) +
-                                               " rows with IMU data gave " +
-                                               std::to_string(estimateRows) +
-                                               " estimates; at least 2 are needed for metrics"));
+                 StorageError(Kind::Usage,
+                              sessionText(sessionId) + ": " + std::to_string(result.stats.imuRows) +
+                                  " rows with IMU data gave " + std::to_string(estimateRows) +
+                                  " estimates; at least 2 are needed for metrics"));
   std::size_t dropped = 0, settling = 0;
   ClinicalStore::StoredSeries series;
   try {
@@ -389,15 +388,14 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
     paramsJson.insert(key, value);
   const QJsonObject angles = anglesJson(result.metrics.session);
   QJsonObject summary;
-  const ClinicalStore::AnalysisVersions v =
-      run.finish(QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
-                 QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
-                 [&](int estimateVersion) {
-                   summary = summaryJson(result.metrics, estimateVersion, protocol, dropped,
-                                         settling);
-                   return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
-                 },
-                 series);
+  const ClinicalStore::AnalysisVersions v = run.finish(
+      QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
+      QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
+      [&](int estimateVersion) {
+        summary = summaryJson(result.metrics, estimateVersion, protocol, dropped, settling);
+        return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
+      },
+      series);
   result.estimateVersion = v.estimates;
   result.metricsVersion = v.metrics;
   result.metricsJson = merged(summary, angles);

@@ -18,9 +18,9 @@ namespace {
 using Kind = StorageError::Kind;
 using detail::angleKey;
 using detail::merged;
-using detail::metricsParams;
 using detail::MetricRowCollector;
 using detail::MetricRows;
+using detail::metricsParams;
 using detail::parseObject;
 using detail::sessionText;
 
@@ -51,8 +51,7 @@ void forEachEstimateBlock(ClinicalStore& store, const EstimateRecord& rec, const
   int expectedSeq = 0;
   double lastT = -std::numeric_limits<double>::infinity();
   store.readEstimateChunks(rec, [&](int seq, std::uint64_t n, const QByteArray& data) {
-    if (seq != expectedSeq)
-      throw damaged("chunk " + std::to_string(expectedSeq) + " is missing");
+    if (seq != expectedSeq) throw damaged("chunk " + std::to_string(expectedSeq) + " is missing");
     ++expectedSeq;
     EstimateColumns block;
     try {
@@ -218,7 +217,8 @@ SessionMetrics sessionMetricsFromJson(const QJsonObject& m) {
     rep.partial = o.value("partial").toBool();
     rep.metrics = intervalFromJson(o.value("angles").toObject());
     r.repetitions.push_back(rep);
-    out.repetitionSmoothness.push_back({smoothnessFromJson(o, "sparc"), smoothnessFromJson(o, "ldlj")});
+    out.repetitionSmoothness.push_back(
+        {smoothnessFromJson(o, "sparc"), smoothnessFromJson(o, "ldlj")});
   }
   return out;
 }
@@ -246,8 +246,8 @@ std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 se
         static_cast<std::uint64_t>(out.metrics.samples + out.metrics.rejectedNonFinite));
     out.series = angleSeriesFromJoints(rows.t, rows.th);
   } catch (const std::runtime_error& e) {
-    throw StorageError(Kind::Corrupt, where + "its rows: " + e.what() +
-                                          " (run 'session reestimate')");
+    throw StorageError(Kind::Corrupt,
+                       where + "its rows: " + e.what() + " (run 'session reestimate')");
   }
   return out;
 }

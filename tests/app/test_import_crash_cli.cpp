@@ -120,9 +120,10 @@ TEST_P(ImportCrash, ALockDuringAnImportLeavesNoSession) {
   addPatients();
   const std::string csv = simulate("long.csv", 60.0);
   CliProcess import({"session", "import", csv, "--patient", "P02"}, m_db);
-  ASSERT_TRUE(import.runUntil(
-      [&] { return number(query("SELECT coalesce(sum(sample_rows), 0) FROM sessions")) > 2000; }))
-      << "the import ended before the lock: " << import.err();
+  ASSERT_TRUE(import.runUntil([&] {
+    return number(query("SELECT coalesce(sum(sample_rows), 0) FROM sessions")) > 2000;
+  })) << "the import ended before the lock: "
+      << import.err();
   {
     const WriteLock lock(m_engine, m_db, 12);
     EXPECT_EQ(import.wait(), 1);
@@ -205,7 +206,8 @@ TEST_P(ImportCrash, KilledImportsAndAnalysesLeaveNoCompleteSessionWithoutAnalysi
     // The next command tidies up: an unfinished import goes, a pending analysis is run.
     const Result next = run({"session", "list", "--patient", "P02", "--json"});
     ASSERT_EQ(next.code, 0) << next.err;
-    const QJsonArray sessions = QJsonDocument::fromJson(QByteArray::fromStdString(next.out)).array();
+    const QJsonArray sessions =
+        QJsonDocument::fromJson(QByteArray::fromStdString(next.out)).array();
     if (p.analysing) {
       ASSERT_EQ(sessions.size(), 1) << next.out;
       EXPECT_NE(next.err.find("analysing it now"), std::string::npos) << next.err;
@@ -299,6 +301,5 @@ TEST_P(ImportCrash, ATruncatedFileIsStoredAsInterruptedWithAWarning) {
   EXPECT_EQ(s["analysis"].toString(), "done");  // the import analyses what it stored
 }
 
-INSTANTIATE_TEST_SUITE_P(Engines, ImportCrash,
-                         ::testing::Values(Engine::Sqlite, Engine::Postgres),
+INSTANTIATE_TEST_SUITE_P(Engines, ImportCrash, ::testing::Values(Engine::Sqlite, Engine::Postgres),
                          armtrack::test::engineName);

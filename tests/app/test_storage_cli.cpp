@@ -350,8 +350,7 @@ TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
   // The next command of a therapist or administrator analyses it, saying so.
   r = run({"session", "show", homeId, "--json"});
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("session " + homeId + ": its analysis had not been done"),
-            std::string::npos)
+  EXPECT_NE(r.err.find("session " + homeId + ": its analysis had not been done"), std::string::npos)
       << r.err;
   EXPECT_TRUE(QJsonDocument::fromJson(QByteArray::fromStdString(r.out))["metrics"].isObject());
 }
@@ -366,17 +365,25 @@ TEST_P(StorageCli, OlderSchemaNeedsDbMigrate) {
          "DROP TRIGGER audit_log_no_truncate ON audit_log"});
   else
     sql({"DROP TRIGGER audit_log_no_update", "DROP TRIGGER audit_log_no_delete"});
-  sql({"DROP INDEX users_by_name_key", "DROP INDEX patients_by_code_key",
-       "DROP INDEX protocols_by_name_key", "DROP TABLE sign_in_failures",
-       "DROP TABLE estimate_chunks", "ALTER TABLE users DROP COLUMN name_key",
-       "ALTER TABLE patients DROP COLUMN code_key", "ALTER TABLE protocols DROP COLUMN name_key",
-       "ALTER TABLE audit_log DROP COLUMN prev_hash", "ALTER TABLE audit_log DROP COLUMN hash",
-       "ALTER TABLE sessions DROP COLUMN origin", "ALTER TABLE sessions DROP COLUMN analysis",
+  sql({"DROP INDEX users_by_name_key",
+       "DROP INDEX patients_by_code_key",
+       "DROP INDEX protocols_by_name_key",
+       "DROP TABLE sign_in_failures",
+       "DROP TABLE estimate_chunks",
+       "ALTER TABLE users DROP COLUMN name_key",
+       "ALTER TABLE patients DROP COLUMN code_key",
+       "ALTER TABLE protocols DROP COLUMN name_key",
+       "ALTER TABLE audit_log DROP COLUMN prev_hash",
+       "ALTER TABLE audit_log DROP COLUMN hash",
+       "ALTER TABLE sessions DROP COLUMN origin",
+       "ALTER TABLE sessions DROP COLUMN analysis",
        "ALTER TABLE sessions DROP COLUMN analysis_note",
        "ALTER TABLE sessions DROP COLUMN analysis_host",
        "ALTER TABLE sessions DROP COLUMN analysis_pid",
-       "ALTER TABLE estimates DROP COLUMN complete", "ALTER TABLE estimates DROP COLUMN writer_host",
-       "ALTER TABLE estimates DROP COLUMN writer_pid", "ALTER TABLE metrics DROP COLUMN series_codec",
+       "ALTER TABLE estimates DROP COLUMN complete",
+       "ALTER TABLE estimates DROP COLUMN writer_host",
+       "ALTER TABLE estimates DROP COLUMN writer_pid",
+       "ALTER TABLE metrics DROP COLUMN series_codec",
        "ALTER TABLE metrics DROP COLUMN series"});
   sql({"ALTER TABLE users DROP COLUMN failed_attempts",
        "ALTER TABLE users DROP COLUMN last_failed_at", "DROP TABLE programmes",

@@ -125,12 +125,17 @@ int main(int argc, char** argv) {
   fs::path dir;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--cli" && i + 1 < argc) cli = argv[++i];
-    else if (a == "--minutes" && i + 1 < argc) minutes = std::atof(argv[++i]);
-    else if (a == "--skip-hour") hour = false;
-    else if (a == "--dir" && i + 1 < argc) dir = argv[++i];
+    if (a == "--cli" && i + 1 < argc)
+      cli = argv[++i];
+    else if (a == "--minutes" && i + 1 < argc)
+      minutes = std::atof(argv[++i]);
+    else if (a == "--skip-hour")
+      hour = false;
+    else if (a == "--dir" && i + 1 < argc)
+      dir = argv[++i];
     else {
-      std::fprintf(stderr, "usage: bench_import --cli PATH [--minutes N] [--skip-hour] [--dir D]\n");
+      std::fprintf(stderr,
+                   "usage: bench_import --cli PATH [--minutes N] [--skip-hour] [--dir D]\n");
       return 2;
     }
   }
@@ -157,8 +162,8 @@ int main(int argc, char** argv) {
   }
   tool({"patient", "add", "--db", db, "--user", "boss", "--code", "P01", "--name", "Bench"});
   const auto import = [&](const fs::path& csv) {
-    return tool({"session", "import", csv.string(), "--patient", "P01", "--db", db, "--user",
-                 "boss"});
+    return tool(
+        {"session", "import", csv.string(), "--patient", "P01", "--db", db, "--user", "boss"});
   };
 
   std::printf("session import of hostile files (each refused, or stored with its gaps):\n");
@@ -186,7 +191,8 @@ int main(int argc, char** argv) {
     std::ofstream dst(nuls, std::ios::binary);
     dst << header << '\n';
     const std::string block(1 << 20, '\0');
-    for (int i = 0; i < 100; ++i) dst.write(block.data(), static_cast<std::streamsize>(block.size()));
+    for (int i = 0; i < 100; ++i)
+      dst.write(block.data(), static_cast<std::streamsize>(block.size()));
     dst.close();
     fs::copy_file(fs::path(five).replace_extension(".json"), dir / "nuls.json");
     print("a valid header and 100 MB of NULs", import(nuls), 10, 300);
@@ -197,8 +203,8 @@ int main(int argc, char** argv) {
     const fs::path big = dir / "hour.csv";
     const std::string duration = std::to_string(static_cast<int>(minutes * 60));
     std::printf("\n%.0f min at 1 kHz (two IMUs, Kinect, true angles):\n", minutes);
-    r = tool({"simulate", "--trajectory", "multi-joint", "--duration", duration, "--out",
-              big.string()});
+    r = tool(
+        {"simulate", "--trajectory", "multi-joint", "--duration", duration, "--out", big.string()});
     std::printf("%-44s exit %3d  %7.2f s  (%.0f MB of CSV)\n", "simulate", r.exitCode, r.seconds,
                 static_cast<double>(fs::file_size(big)) / 1e6);
     const double scale = minutes / 60.0;
@@ -208,8 +214,8 @@ int main(int argc, char** argv) {
     print("report of that session (PDF)",
           tool({"report", id, "--pdf", (dir / "hour.pdf").string(), "--db", db, "--user", "boss"}),
           2 * scale, 300);
-    print("session reestimate",
-          tool({"session", "reestimate", id, "--db", db, "--user", "boss"}), 20 * scale, 300);
+    print("session reestimate", tool({"session", "reestimate", id, "--db", db, "--user", "boss"}),
+          20 * scale, 300);
     fs::remove(big);
   }
   if (ownDir) fs::remove_all(dir);

@@ -478,7 +478,8 @@ TEST(SessionMetricsHostile, ADayLongGapCostsNoMemory) {
   // Each stretch alone, and both: the day between them changes nothing but the gap count.
   const SessionMetrics one = computeSessionMetrics(measured);
   SessionMetrics both;
-  EXPECT_TRUE(runsWithinMemory(std::size_t{64} << 20, [&] { both = computeSessionMetrics(jumped); }));
+  EXPECT_TRUE(
+      runsWithinMemory(std::size_t{64} << 20, [&] { both = computeSessionMetrics(jumped); }));
   both = computeSessionMetrics(jumped);
   EXPECT_EQ(both.gaps, one.gaps + 1);
   EXPECT_EQ(both.repetitions.repetitions.size(), 2 * one.repetitions.repetitions.size());
@@ -490,7 +491,8 @@ TEST(SessionMetricsHostile, ADayLongGapCostsNoMemory) {
   ClinicalMetricsParams p;
   p.repetitions.minExcursionRad = 10.0;  // no excursion counts: no repetition
   SessionMetrics free;
-  EXPECT_TRUE(runsWithinMemory(std::size_t{64} << 20, [&] { free = computeSessionMetrics(jumped, p); }));
+  EXPECT_TRUE(
+      runsWithinMemory(std::size_t{64} << 20, [&] { free = computeSessionMetrics(jumped, p); }));
   free = computeSessionMetrics(jumped, p);
   EXPECT_TRUE(free.repetitions.repetitions.empty());
   ASSERT_TRUE(free.sparc.ok());

@@ -304,8 +304,9 @@ TEST(SessionAnalysis, DamagedEstimatesGiveAClearError) {
   const std::string where = "session " + std::to_string(id) + ", estimates version 1";
 
   // The estimates are stored as chunks: damage the one there is.
-  const QString chunk = "UPDATE estimate_chunks SET data = ? WHERE estimate_id IN (SELECT id FROM "
-                        "estimates WHERE session_id = ?)";
+  const QString chunk =
+      "UPDATE estimate_chunks SET data = ? WHERE estimate_id IN (SELECT id FROM "
+      "estimates WHERE session_id = ?)";
   QSqlQuery q = f.db->exec(
       "SELECT c.data FROM estimate_chunks c JOIN estimates e ON e.id = c.estimate_id WHERE "
       "e.session_id = ?",
@@ -322,13 +323,15 @@ TEST(SessionAnalysis, DamagedEstimatesGiveAClearError) {
   f.db->exec(chunk, {QByteArray("junk"), id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, where);
   // A missing chunk, and rows that do not add up.
-  f.db->exec("UPDATE estimate_chunks SET seq = 1 WHERE estimate_id IN (SELECT id FROM estimates "
-             "WHERE session_id = ?)",
-             {id});
+  f.db->exec(
+      "UPDATE estimate_chunks SET seq = 1 WHERE estimate_id IN (SELECT id FROM estimates "
+      "WHERE session_id = ?)",
+      {id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "chunk 0 is missing");
-  f.db->exec("DELETE FROM estimate_chunks WHERE estimate_id IN (SELECT id FROM estimates WHERE "
-             "session_id = ?)",
-             {id});
+  f.db->exec(
+      "DELETE FROM estimate_chunks WHERE estimate_id IN (SELECT id FROM estimates WHERE "
+      "session_id = ?)",
+      {id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "chunks hold 0 rows");
   f.db->exec("UPDATE estimates SET params_json = '{}' WHERE session_id = ?", {id});
   expectError([&] { latestAnalysis(*f.store, id); }, Kind::Corrupt, "how many rows");
@@ -602,17 +605,20 @@ TEST_P(Engines, ADeadAnalysisLeavesNoDraftAndItsSessionPending) {
   const ClinicalStore::EstimatesDraft draft = f.store->beginEstimates(id, "est-f64-zstd-v1-chunks");
   f.store->appendEstimateChunk(draft, 0, 1, QByteArray("not a blob"));
   const qint64 dead = deadPid();
-  rawSql(f.path, {QString("UPDATE estimates SET writer_pid = %1 WHERE id = %2").arg(dead).arg(draft.id),
-                  QString("UPDATE sessions SET analysis_pid = %1 WHERE id = %2").arg(dead).arg(id)});
+  rawSql(f.path,
+         {QString("UPDATE estimates SET writer_pid = %1 WHERE id = %2").arg(dead).arg(draft.id),
+          QString("UPDATE sessions SET analysis_pid = %1 WHERE id = %2").arg(dead).arg(id)});
   f.close();
   f.db = std::make_unique<Database>(DatabaseUrl::parse(f.path), Database::Options{});
   f.store = std::make_unique<ClinicalStore>(*f.db);
   f.store->signIn("admin", kAdminPassword);
   EXPECT_EQ(count(f, "SELECT count(*) FROM estimates"), 0);
   EXPECT_EQ(count(f, "SELECT count(*) FROM estimate_chunks"), 0);
-  EXPECT_EQ(count(f, QString("SELECT count(*) FROM sessions WHERE analysis_pid IS NULL AND id = %1")
-                         .arg(id)),
-            1);
+  EXPECT_EQ(
+      count(
+          f,
+          QString("SELECT count(*) FROM sessions WHERE analysis_pid IS NULL AND id = %1").arg(id)),
+      1);
   EXPECT_EQ(f.store->pendingAnalyses(), (std::vector<qint64>{id}));
   EXPECT_EQ(analyseSession(*f.store, id).estimateVersion, 1);
   EXPECT_EQ(f.store->session(id).analysis, kAnalysisDone);
