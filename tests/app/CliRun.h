@@ -2,6 +2,8 @@
 // output and standard error, for the CLI tests.
 #pragma once
 
+#include <QProcess>
+#include <QStringList>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -20,6 +22,20 @@ inline CliResult cli(const std::vector<std::string>& args) {
   std::ostringstream out, err;
   const int code = armtrack::cli::runCli(args, out, err);
   return {code, out.str(), err.str()};
+}
+
+/// Runs the armtrack-cli executable at program with args, as a process of its own (reports need
+/// a QGuiApplication of their own, which the in-process tests' QCoreApplication rules out),
+/// without a desktop session's XDG_RUNTIME_DIR, as a cron job or root on a server runs it.
+inline CliResult cliProcess(const QString& program, const QStringList& args) {
+  QProcess p;
+  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
+  env.remove("XDG_RUNTIME_DIR");
+  p.setProcessEnvironment(env);
+  p.start(program, args);
+  if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
+  return {p.exitCode(), p.readAllStandardOutput().toStdString(),
+          p.readAllStandardError().toStdString()};
 }
 
 }  // namespace armtrack::test

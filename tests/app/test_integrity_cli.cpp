@@ -26,17 +26,9 @@ bool has(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
-/// Runs the real executable: reports need a QGuiApplication of their own, which the in-process
-/// tests' QCoreApplication rules out.
+/// The real executable (tests/app/CliRun.h).
 Result runProcess(const QStringList& args) {
-  QProcess p;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.remove("XDG_RUNTIME_DIR");
-  p.setProcessEnvironment(env);
-  p.start(QStringLiteral(ARMTRACK_CLI), args);
-  if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
-  return {p.exitCode(), p.readAllStandardOutput().toStdString(),
-          p.readAllStandardError().toStdString()};
+  return armtrack::test::cliProcess(QStringLiteral(ARMTRACK_CLI), args);
 }
 
 class IntegrityCli : public armtrack::test::StorageCli {

@@ -66,16 +66,9 @@ class AccessCli : public StorageCli {
   }
 };
 
-/// Runs the real executable (a report needs a QGuiApplication of its own).
+/// The real executable (tests/app/CliRun.h).
 Result runProcess(const QStringList& args) {
-  QProcess p;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.remove("XDG_RUNTIME_DIR");
-  p.setProcessEnvironment(env);
-  p.start(QStringLiteral(ARMTRACK_CLI), args);
-  if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
-  return {p.exitCode(), p.readAllStandardOutput().toStdString(),
-          p.readAllStandardError().toStdString()};
+  return armtrack::test::cliProcess(QStringLiteral(ARMTRACK_CLI), args);
 }
 
 }  // namespace

@@ -419,18 +419,9 @@ TEST_F(StorageCliSqlite, DefaultLocationIsTheAppDataFolder) {
 
 namespace {
 
-/// Runs the real executable (reports need a QGuiApplication of their own, which the in-process
-/// tests' QCoreApplication rules out), without a desktop session's XDG_RUNTIME_DIR, as a cron job
-/// or root on a server runs it.
+/// The real executable (tests/app/CliRun.h).
 Result runProcess(const QStringList& args) {
-  QProcess p;
-  QProcessEnvironment env = QProcessEnvironment::systemEnvironment();
-  env.remove("XDG_RUNTIME_DIR");
-  p.setProcessEnvironment(env);
-  p.start(QStringLiteral(ARMTRACK_CLI), args);
-  if (!p.waitForFinished(120000)) return {-1, "", "timed out"};
-  return {p.exitCode(), p.readAllStandardOutput().toStdString(),
-          p.readAllStandardError().toStdString()};
+  return armtrack::test::cliProcess(QStringLiteral(ARMTRACK_CLI), args);
 }
 
 std::string pdfText(const std::string& pdf) {
