@@ -21,6 +21,7 @@
 
 #include "core/storage/Database.h"
 #include "tests/app/StorageCliFixture.h"
+#include "tests/support/FileInspection.h"
 
 namespace armtrack::test {
 namespace {
@@ -96,17 +97,8 @@ std::string bytesOf(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
-unsigned modeOf(const fs::path& p) {
-  struct stat st {};
-  if (::stat(p.c_str(), &st) != 0) return 0xFFFF;  // missing: never a mode
-  return st.st_mode & 0777u;
-}
-
-std::set<std::string> namesIn(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-  return names;
-}
+using armtrack::test::modeOf;
+using armtrack::test::namesIn;
 
 /// Sets the umask for its lifetime (armtrack-cli inherits it).
 struct Umask {

@@ -15,23 +15,15 @@
 
 #include "core/storage/DatabaseFiles.h"
 #include "tests/core/storage/StorageTestSupport.h"
+#include "tests/support/FileInspection.h"
 
 namespace armtrack::storage::test {
 namespace {
 
 namespace fs = std::filesystem;
 
-unsigned modeOf(const fs::path& p) {
-  struct stat st {};
-  if (::stat(p.c_str(), &st) != 0) return 0xFFFF;  // missing: never a mode
-  return st.st_mode & 0777u;
-}
-
-std::set<std::string> namesIn(const fs::path& dir) {
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.insert(e.path().filename().string());
-  return names;
-}
+using armtrack::test::modeOf;
+using armtrack::test::namesIn;
 
 qint64 countOf(Database& db, const char* table) {
   QSqlQuery q = db.exec(QString("SELECT count(*) FROM ") + table);
