@@ -2223,6 +2223,14 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Patient&apos;s own account</source>
         <translation>Angaben des Patienten</translation>
     </message>
+    <message>
+        <source>complete, analysis pending</source>
+        <translation>vollständig, Auswertung ausstehend</translation>
+    </message>
+    <message>
+        <source>%1, cannot be analysed</source>
+        <translation>%1, nicht auswertbar</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SettingsDialog</name>

@@ -2223,6 +2223,14 @@ Puede recalcularla desde su revisión.</translation>
         <source>Patient&apos;s own account</source>
         <translation>Lo que dice el paciente</translation>
     </message>
+    <message>
+        <source>complete, analysis pending</source>
+        <translation>completa, análisis pendiente</translation>
+    </message>
+    <message>
+        <source>%1, cannot be analysed</source>
+        <translation>%1, no se puede analizar</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SettingsDialog</name>

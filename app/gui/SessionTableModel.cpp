@@ -105,6 +105,12 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const {
     case Duration:
       return durationText(s->durationS);
     case Status:
+      // A session stored but not yet analysed says so (it is analysed in the background).
+      if (s->status == QLatin1String(storage::kStatusComplete) &&
+          s->analysis == QLatin1String(storage::kAnalysisPending))
+        return tr("complete, analysis pending");
+      if (s->analysis == QLatin1String(storage::kAnalysisFailed))
+        return tr("%1, cannot be analysed").arg(statusText(s->status));
       return statusText(s->status);
     case Samples:
       return QLocale().toString(s->imuSamples);

@@ -1,7 +1,8 @@
 // Figures for `session import` and `report` of armtrack-cli on hostile files and on an hour at
-// 1 kHz (docs/storage.md, "Memory of an analysis"): each command runs as a child process, and
-// its wall time and peak resident memory (the kernel's ru_maxrss) are printed beside the target.
-// Not a test: timings depend on the machine; the tests check the behaviour.
+// 1 kHz (docs/storage.md, "Memory and time of an analysis"; a re-estimate's speed is
+// bench_storage's BM_Reestimate): each command runs as a child process, and its wall time, CPU
+// and peak resident memory (the kernel's ru_maxrss) are printed beside the target. Not a test:
+// timings depend on the machine; the tests check the behaviour.
 //
 //   bench_import --cli build/app/armtrack-cli [--minutes 60] [--skip-hour] [--dir DIR]
 #include <fcntl.h>
@@ -214,8 +215,6 @@ int main(int argc, char** argv) {
     print("report of that session (PDF)",
           tool({"report", id, "--pdf", (dir / "hour.pdf").string(), "--db", db, "--user", "boss"}),
           2 * scale, 300);
-    print("session reestimate", tool({"session", "reestimate", id, "--db", db, "--user", "boss"}),
-          20 * scale, 300);
     fs::remove(big);
   }
   if (ownDir) fs::remove_all(dir);
