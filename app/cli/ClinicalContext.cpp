@@ -44,15 +44,17 @@ ClinicalContext::ClinicalContext(const Args& a, storage::Database::Options optio
   m_db = std::make_unique<storage::Database>(m_url, options);
   m_store = std::make_unique<storage::ClinicalStore>(*m_db);
   if (const int kept = m_store->staleRecordingsKept(); kept > 0)
-    std::cerr << "armtrack-cli: note: database '" << ss(m_url.display()) << "' is read-only ("
-              << ss(m_db->readOnlyReason()) << "): " << kept
-              << " session(s) left in 'recording' by a process that has ended stay so until it "
-                 "is opened with write access, which marks them interrupted\n";
+    noticeStream()
+        << "armtrack-cli: note: database '" << ss(m_url.display()) << "' is read-only ("
+        << ss(m_db->readOnlyReason()) << "): " << kept
+        << " session(s) left in 'recording' by a process that has ended stay so until it "
+           "is opened with write access, which marks them interrupted\n";
   if (signIn) {
     m_password = passwordFromUser("account '" + user + "'");
     m_store->signIn(qs(user), m_password);
     m_user = user;
-    if (runPending) analysePendingSessions(*m_store, noticeStream());
+    // Nothing can be stored in a read-only database: its pending analyses wait for write access.
+    if (runPending && !m_db->isReadOnly()) analysePendingSessions(*m_store, noticeStream());
   }
 }
 
