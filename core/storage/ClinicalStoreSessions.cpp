@@ -171,7 +171,7 @@ RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
 }
 
 QString ClinicalStore::userName(qint64 userId) {
-  require(isStaff(), "reading account names");
+  require(isStaff(), "read account names");
   QSqlQuery q = m_db.exec("SELECT name FROM users WHERE id = ?", {userId});
   if (!q.next()) throw StorageError(Kind::NotFound, "unknown account " + std::to_string(userId));
   return q.value(0).toString();
