@@ -93,6 +93,9 @@ Database::Database(const DatabaseUrl& url, Options options) : m_url(url) {
   if (m_version == 0 && !options.create)
     fail(Kind::Corrupt, "is not an ArmTrack database",
          "it has no schema_version table; create one with 'armtrack-cli db init'");
+  // Only now, when the file is known to be ArmTrack's (or a new one): switching the journal
+  // mode writes to the file, which someone else's database must never see.
+  useWriteAheadLog();
   for (const MigrationStep& step : migrationSteps())
     if (step.toVersion > m_version) applyStep(step);
 }
@@ -135,7 +138,10 @@ void Database::openSqlite(bool create) {
     });
   }
   exec("PRAGMA foreign_keys = ON");
-  if (isReadOnly()) return;  // the file keeps the journal mode it was written with
+}
+
+void Database::useWriteAheadLog() {
+  if (isPostgres() || isReadOnly()) return;  // a read-only file keeps the mode it was written in
   // WAL: readers never block the recorder; NORMAL: a killed process loses nothing committed
   // (only a power cut may lose the last transactions), at one fsync per checkpoint.
   {

@@ -100,6 +100,7 @@ class Database {
   void openPostgres();
   [[noreturn]] void explainConnectFailure(const QString& error);
   void checkFileBeforeOpening(bool create);
+  void useWriteAheadLog();  // SQLite, once the file is known to be ArmTrack's
   QString readOnlyMessage(const QString& consequence = {}) const;
   int readVersion();
   void applyStep(const MigrationStep& step);

@@ -127,11 +127,19 @@ TEST_P(Schema, NewerSchemaIsRefused) {
   EXPECT_NE(std::string(e.what()).find("newer"), std::string::npos);
 }
 
-TEST(Database, ForeignSqliteFileIsRefused) {
+// Someone else's SQLite database (here in rollback-journal mode, as most programs leave theirs)
+// is refused and left as it was, byte for byte: before, it was switched to write-ahead logging
+// (a write to its header) before its tables were looked at.
+TEST(Database, ForeignSqliteFileIsRefusedAndLeftUntouched) {
   QTemporaryDir dir;
   const QString path = dir.filePath("other.db");
-  rawSql(path, {"CREATE TABLE t (x)"});
-  expectError([&] { Database db(DatabaseUrl::parse(path), {true, true}); }, Kind::Corrupt);
+  rawSql(path, {"CREATE TABLE t (x)", "INSERT INTO t VALUES (1)"});
+  const std::string before = fileBytes(path.toStdString());
+  ASSERT_EQ(before[18], 1);  // the header's write version: 1, rollback journal; 2 would be WAL
+  expectError([&] { Database db(DatabaseUrl::parse(path), {true, true}); }, Kind::Corrupt,
+              "not ArmTrack's");
+  EXPECT_EQ(fileBytes(path.toStdString()), before);
+  EXPECT_FALSE(QFileInfo::exists(path + "-wal"));
 }
 
 TEST(Database, BackupIsACompleteDatabase) {
