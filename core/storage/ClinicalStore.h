@@ -254,6 +254,10 @@ class ClinicalStore {
   bool isStaff() const;
   qint64 visiblePatientId(const QString& code);  // NotFound for invisible ones
   SessionInfo visibleSession(qint64 sessionId);  // NotFound for invisible ones
+  /// The session's status after the same check, from its row alone (no chunk totals): for the
+  /// calls that only need to know the session is there for this account.
+  QString visibleSessionStatus(qint64 sessionId);
+  void requireVisible(bool found, qint64 patientId, qint64 sessionId) const;
   std::optional<qint64> protocolId(const QString& name);
   int markDeadRecordingsInterrupted();
   void removeFailedImport(qint64 sessionId);

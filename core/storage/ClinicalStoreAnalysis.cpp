@@ -1,15 +1,11 @@
 // Estimates, metrics and the analysis state of ClinicalStore's sessions (docs/storage.md,
 // "Estimates", "Metrics" and "Analysis state").
-#include <unistd.h>
-
-#include <QSysInfo>
-#include <cerrno>
-#include <csignal>
 #include <tuple>
 #include <vector>
 
 #include "core/storage/AuditLog.h"
 #include "core/storage/ClinicalStore.h"
+#include "core/storage/ProcessIdentity.h"
 
 namespace armtrack::storage {
 
@@ -17,25 +13,16 @@ namespace {
 
 using Kind = StorageError::Kind;
 
-QString thisHost() {
-  return QSysInfo::machineHostName();
-}
-
-qint64 thisProcess() {
-  return static_cast<qint64>(::getpid());
-}
-
-bool alive(qint64 pid) {
-  if (pid <= 0) return false;
-  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
-}
+using detail::processEnded;
+using detail::thisHost;
+using detail::thisProcess;
 
 }  // namespace
 
 int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson, const QString& codec,
                                  const QByteArray& data) {
   require(isStaff(), "store estimates");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   int version = 0;
   m_db.transaction([&] {
     version = estimateVersions(sessionId) + 1;
@@ -48,7 +35,7 @@ int ClinicalStore::saveEstimates(qint64 sessionId, const QString& paramsJson, co
 }
 
 int ClinicalStore::estimateVersions(qint64 sessionId) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   QSqlQuery q = m_db.exec(
       "SELECT coalesce(max(version), 0) FROM estimates WHERE session_id = ? AND complete = 1",
       {sessionId});
@@ -58,7 +45,7 @@ int ClinicalStore::estimateVersions(qint64 sessionId) {
 int ClinicalStore::saveMetrics(qint64 sessionId, const QString& perAngleJson,
                                const QString& perRepetitionJson) {
   require(isStaff(), "store metrics");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   int version = 0;
   m_db.transaction([&] { version = insertMetrics(sessionId, perAngleJson, perRepetitionJson); });
   return version;
@@ -80,7 +67,7 @@ int ClinicalStore::insertMetrics(qint64 sessionId, const QString& perAngleJson,
 }
 
 std::optional<ClinicalStore::StoredSeries> ClinicalStore::latestMetricSeries(qint64 sessionId) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   QSqlQuery q = m_db.exec(
       "SELECT series_codec, series FROM metrics WHERE session_id = ? ORDER BY version DESC "
       "LIMIT 1",
@@ -90,7 +77,7 @@ std::optional<ClinicalStore::StoredSeries> ClinicalStore::latestMetricSeries(qin
 }
 
 std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 sessionId) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   QSqlQuery q = m_db.exec(
       "SELECT per_angle_json, per_repetition_json FROM metrics WHERE "
       "session_id = ? ORDER BY version DESC LIMIT 1",
@@ -100,7 +87,7 @@ std::optional<std::pair<QString, QString>> ClinicalStore::latestMetrics(qint64 s
 }
 
 std::optional<EstimateRecord> ClinicalStore::estimates(qint64 sessionId, int version) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   const QString columns =
       "SELECT id, version, created_at, params_json, codec, data FROM estimates ";
   QSqlQuery q =
@@ -124,7 +111,7 @@ std::optional<EstimateRecord> ClinicalStore::estimates(qint64 sessionId, int ver
 ClinicalStore::EstimatesDraft ClinicalStore::beginEstimates(qint64 sessionId,
                                                             const QString& codec) {
   require(isStaff(), "store estimates");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   EstimatesDraft draft;
   m_db.transaction([&] {
     lockSessionRow(sessionId);
@@ -220,7 +207,7 @@ void ClinicalStore::abandonEstimates(const EstimatesDraft& draft) {
 }
 
 void ClinicalStore::markAnalysisFailed(qint64 sessionId, const QString& why) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   m_db.transaction([&] {
     m_db.exec(
         "UPDATE sessions SET analysis = 'failed', analysis_note = ?, analysis_host = NULL, "
@@ -237,8 +224,8 @@ std::vector<qint64> ClinicalStore::pendingAnalyses() {
       "WHERE s.status = 'complete' AND s.analysis = 'pending' ORDER BY s.id");
   while (q.next()) {
     if (user().role == Role::Home && user().patientId != q.value(1).toLongLong()) continue;
-    const bool claimed = !q.value(3).isNull() &&
-                         (q.value(2).toString() != thisHost() || alive(q.value(3).toLongLong()));
+    const bool claimed =
+        !q.value(3).isNull() && !processEnded(q.value(2).toString(), q.value(3).toLongLong());
     if (!claimed) ids.push_back(q.value(0).toLongLong());
   }
   return ids;
@@ -259,7 +246,7 @@ void ClinicalStore::removeDeadDrafts(qint64 sessionId) {
       "SELECT id, writer_host, writer_pid FROM estimates WHERE session_id = ? AND complete = 0",
       {sessionId});
   while (q.next())
-    if (q.value(1).toString() == thisHost() && !alive(q.value(2).toLongLong()))
+    if (processEnded(q.value(1).toString(), q.value(2).toLongLong()))
       dead.push_back(q.value(0).toLongLong());
   q.finish();
   for (qint64 id : dead) m_db.exec("DELETE FROM estimates WHERE id = ?", {id});

@@ -1,16 +1,13 @@
 // Sessions, their recordings (compressed chunks), estimates and metrics of ClinicalStore.
-#include <unistd.h>
 #include <QFile>
 #include <QJsonDocument>
-#include <QSysInfo>
 #include <QTemporaryDir>
-#include <cerrno>
-#include <csignal>
 #include <limits>
 
 #include "core/storage/AuditLog.h"
 #include "core/storage/ChunkCodec.h"
 #include "core/storage/ClinicalStore.h"
+#include "core/storage/ProcessIdentity.h"
 #include "core/storage/RecordingChunks.h"
 
 namespace armtrack::storage {
@@ -73,15 +70,9 @@ RecordingMeta metaFromText(const QString& json, qint64 sessionId) {
   }
 }
 
-bool processAlive(qint64 pid) {
-  if (pid <= 0) return false;
-  return ::kill(static_cast<pid_t>(pid), 0) == 0 || errno == EPERM;
-}
-
 }  // namespace
 
 int ClinicalStore::markDeadRecordingsInterrupted() {
-  const QString host = QSysInfo::machineHostName();
   struct Dead {
     qint64 id;
     bool imported;
@@ -91,7 +82,7 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
       "SELECT id, recorder_host, recorder_pid, origin FROM sessions "
       "WHERE status = 'recording'");
   while (q.next())
-    if (q.value(1).toString() == host && !processAlive(q.value(2).toLongLong()))
+    if (detail::processEnded(q.value(1).toString(), q.value(2).toLongLong()))
       dead.push_back({q.value(0).toLongLong(), q.value(3).toString() == kOriginImport});
   q.finish();
   if (m_db.isReadOnly()) {
@@ -123,7 +114,7 @@ int ClinicalStore::markDeadRecordingsInterrupted() {
   QSqlQuery a = m_db.exec(
       "SELECT id, analysis_host, analysis_pid FROM sessions WHERE analysis_pid IS NOT NULL");
   while (a.next())
-    if (a.value(1).toString() == host && !processAlive(a.value(2).toLongLong()))
+    if (detail::processEnded(a.value(1).toString(), a.value(2).toLongLong()))
       claims.push_back(a.value(0).toLongLong());
   a.finish();
   for (qint64 id : claims)
@@ -152,8 +143,8 @@ qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& pr
         "setting, origin) VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?, ?, ?)",
         {patientId, isStaff() ? QVariant(user().id) : QVariant(),
          protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
-         calibrationJson, settings.filterJson, columnsMask, QSysInfo::machineHostName(),
-         static_cast<qint64>(::getpid()), isStaff() ? kSettingClinic : kSettingHome,
+         calibrationJson, settings.filterJson, columnsMask, detail::thisHost(),
+         detail::thisProcess(), isStaff() ? kSettingClinic : kSettingHome,
          settings.origin == kOriginImport ? kOriginImport : kOriginLive});
     audit("create", "session", QString::number(id), "patient " + patientCode);
   });
@@ -179,15 +170,7 @@ QString ClinicalStore::userName(qint64 userId) {
 
 void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> samples) {
   if (samples.empty()) return;
-  // The session's row alone: visibleSession() also totals the chunks stored so far, which for
-  // every new chunk of an hour's import read all the ones before it (3,600 chunks: 6.5 million).
-  QSqlQuery q = m_db.exec("SELECT status, patient_id FROM sessions WHERE id = ?", {sessionId});
-  const bool found = q.next();
-  if (!found || (user().role == Role::Home && user().patientId != q.value(1).toLongLong()))
-    throw StorageError(Kind::NotFound, "unknown session " + std::to_string(sessionId) +
-                                           ": see 'session list --patient CODE'");
-  const QString status = q.value(0).toString();
-  q.finish();
+  const QString status = visibleSessionStatus(sessionId);
   if (status != kStatusRecording)
     throw StorageError(Kind::Usage, "session " + std::to_string(sessionId) + " is " + text(status) +
                                         ", not recording");
@@ -195,7 +178,7 @@ void ClinicalStore::appendChunk(qint64 sessionId, std::span<const ArmSample> sam
 }
 
 void ClinicalStore::finishSession(qint64 sessionId, const QString& status) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   if (status != kStatusComplete && status != kStatusInterrupted)
     throw StorageError(Kind::Usage, "a session finishes as complete or interrupted");
   // A complete session's analysis stays pending until it is stored; an interrupted one is
@@ -266,6 +249,21 @@ void ClinicalStore::removeFailedImport(qint64 id) {
   }
 }
 
+void ClinicalStore::requireVisible(bool found, qint64 patientId, qint64 sessionId) const {
+  if (!found || (user().role == Role::Home && user().patientId != patientId))
+    throw StorageError(Kind::NotFound, "unknown session " + std::to_string(sessionId) +
+                                           ": see 'session list --patient CODE'");
+}
+
+QString ClinicalStore::visibleSessionStatus(qint64 sessionId) {
+  // The session's row alone: visibleSession() also totals the chunks stored so far, which for
+  // every new chunk of an hour's import read all the ones before it (3,600 chunks: 6.5 million).
+  QSqlQuery q = m_db.exec("SELECT status, patient_id FROM sessions WHERE id = ?", {sessionId});
+  const bool found = q.next();
+  requireVisible(found, found ? q.value(1).toLongLong() : 0, sessionId);
+  return q.value(0).toString();
+}
+
 SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
   QSqlQuery q = m_db.exec(
       "SELECT s.id, s.patient_id, p.code, s.therapist_id, pr.name, s.started_at, s.duration_s, "
@@ -276,9 +274,7 @@ SessionInfo ClinicalStore::visibleSession(qint64 sessionId) {
       "LEFT JOIN protocols pr ON pr.id = s.protocol_id WHERE s.id = ?",
       {sessionId});
   const bool found = q.next();
-  if (!found || (user().role == Role::Home && user().patientId != q.value(1).toLongLong()))
-    throw StorageError(Kind::NotFound, "unknown session " + std::to_string(sessionId) +
-                                           ": see 'session list --patient CODE'");
+  requireVisible(found, found ? q.value(1).toLongLong() : 0, sessionId);
   SessionInfo s;
   s.id = q.value(0).toLongLong();
   s.patientId = q.value(1).toLongLong();
@@ -332,7 +328,7 @@ SessionInfo ClinicalStore::session(qint64 sessionId) {
 
 void ClinicalStore::updateSessionNotes(qint64 sessionId, const QString& notes) {
   require(isStaff(), "change session notes");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   m_db.transaction([&] {
     m_db.exec("UPDATE sessions SET notes = ? WHERE id = ?", {notes, sessionId});
     audit("update", "session", QString::number(sessionId), "notes");
@@ -343,7 +339,7 @@ void ClinicalStore::updateSessionFilterSettings(qint64 sessionId, const QString&
   require(isStaff(), "change a session's filter settings");
   if (!QJsonDocument::fromJson(json.toUtf8()).isObject())
     throw StorageError(Kind::Usage, "a session's filter settings must be a JSON object");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   m_db.transaction([&] {
     m_db.exec("UPDATE sessions SET filter_json = ? WHERE id = ?", {json, sessionId});
     audit("update", "session", QString::number(sessionId), "filter settings");
@@ -352,7 +348,7 @@ void ClinicalStore::updateSessionFilterSettings(qint64 sessionId, const QString&
 
 void ClinicalStore::removeSession(qint64 sessionId) {
   require(user().role == Role::Admin, "remove sessions");
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   m_db.transaction([&] {
     m_db.exec("DELETE FROM sessions WHERE id = ?", {sessionId});
     audit("delete", "session", QString::number(sessionId));

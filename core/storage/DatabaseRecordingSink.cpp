@@ -1,11 +1,9 @@
 #include "core/storage/DatabaseRecordingSink.h"
 
-#include <unistd.h>
-
-#include <QSysInfo>
 #include <limits>
 
 #include "core/storage/Database.h"
+#include "core/storage/ProcessIdentity.h"
 #include "core/storage/RecordingChunks.h"
 #include "core/storage/Records.h"
 
@@ -52,8 +50,8 @@ void DatabaseRecordingSink::commit(bool all) {
           "SELECT status, recorder_host, recorder_pid FROM sessions WHERE id = ?", {m_sessionId});
       if (!q.next()) fail("the session does not exist (was it removed?)");
       if (q.value(0).toString() != kStatusRecording ||
-          q.value(1).toString() != QSysInfo::machineHostName() ||
-          q.value(2).toLongLong() != static_cast<qint64>(::getpid()))
+          q.value(1).toString() != detail::thisHost() ||
+          q.value(2).toLongLong() != detail::thisProcess())
         fail("the session is not being recorded by this process; start a new session");
       q.finish();
       m_db = std::move(db);

@@ -235,7 +235,7 @@ RecordsCheckReport ClinicalStore::checkRecords() {
 }
 
 void ClinicalStore::requireIntactRecording(qint64 sessionId) {
-  visibleSession(sessionId);
+  visibleSessionStatus(sessionId);
   const QStringList problems = recordingProblems(m_db, sessionId, RecordingDepth::Checksums);
   if (!problems.isEmpty())
     throw StorageError(Kind::Corrupt, damagedRecordingMessage(sessionId, problems.join("; ")));
