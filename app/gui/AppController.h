@@ -9,9 +9,9 @@
 
 #include "app/gui/AppOptions.h"
 #include "app/gui/Appearance.h"
-#include "app/gui/NewSessionSteps.h"
-#include "app/gui/live/LiveSessionConfig.h"
+#include "app/gui/newsession/NewSessionSteps.h"
 #include "app/gui/services/AppSettings.h"
+#include "app/gui/services/LiveSessionConfig.h"
 #include "app/gui/services/RecordsService.h"
 #include "app/gui/services/SessionPlan.h"
 #include "app/plugins/PluginRegistry.h"

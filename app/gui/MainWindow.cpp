@@ -8,7 +8,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 
-#include "app/gui/Forms.h"
+#include "app/gui/common/Forms.h"
 #include "ui/ScreenStack.h"
 
 namespace armtrack::gui {

@@ -4,7 +4,7 @@
 
 #include <QMainWindow>
 
-#include "app/gui/Forms.h"
+#include "app/gui/common/Forms.h"
 
 class QAction;
 class QLabel;

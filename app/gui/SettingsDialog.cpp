@@ -13,7 +13,7 @@
 #include <QPushButton>
 #include <QVBoxLayout>
 
-#include "app/gui/Forms.h"
+#include "app/gui/common/Forms.h"
 #include "app/i18n/Language.h"
 #include "core/storage/StorageError.h"
 

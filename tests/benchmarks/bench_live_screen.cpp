@@ -26,7 +26,7 @@
 #include <string>
 
 #include "app/gui/live/LiveSessionScreen.h"
-#include "app/gui/live/SessionController.h"
+#include "app/gui/services/SessionController.h"
 #include "app/plugins/PluginRegistry.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/OpenGlSetup.h"

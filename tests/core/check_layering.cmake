@@ -10,8 +10,12 @@
 # - anything under ui/ includes a header of app/ or of a device plugin's folder (devices/api/ is
 #   allowed: ui/ sees devices through their interface);
 # - a file under core/, devices/ or ui/ includes with a "../" path, which would hide such an arrow.
+# - in the GUI (app/gui/), a screen folder (signin, patients, review, newsession, live, home)
+#   includes another screen folder or the shell (app/gui/*.h); common/ includes a screen folder
+#   or the shell; services/ includes anything of app/gui/ but services/, or widgets.
 # core/exports (export writers, target armtrack_exports) is science for this rule: Qt-free, and it
 # must not include a service header, so the CLI, the services and the GUI can all link it.
+cmake_policy(SET CMP0054 NEW)
 set(include_re "^[ \t]*#[ \t]*include[ \t]*[<\"]")
 set(widgets_re "${include_re}(QtWidgets|QtCharts|Q[A-Za-z]*(Widget|Dialog|Chart)|QApplication|QMainWindow|QMessageBox|vtk)")
 set(services "session" "storage" "reports")
@@ -65,9 +69,38 @@ foreach(f IN LISTS ui_files)
   check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
 endforeach()
 
+set(screens "signin" "patients" "review" "newsession" "live" "home")
+file(GLOB gui_shell_files RELATIVE "${ROOT}/app/gui" "${ROOT}/app/gui/*.h")
+list(LENGTH gui_shell_files n_shell)
+if(n_shell EQUAL 0)
+  message(FATAL_ERROR "no shell headers found under ${ROOT}/app/gui")
+endif()
+set(gui_shell_re "${include_re}app/gui/[^/\"]+\\.h")
+set(n_gui 0)
+foreach(screen IN LISTS screens ITEMS common services)
+  file(GLOB_RECURSE files "${ROOT}/app/gui/${screen}/*.h" "${ROOT}/app/gui/${screen}/*.cpp")
+  if(NOT files)
+    message(FATAL_ERROR "no sources found under ${ROOT}/app/gui/${screen}")
+  endif()
+  list(LENGTH files n)
+  math(EXPR n_gui "${n_gui} + ${n}")
+  set(others ${screens})
+  list(REMOVE_ITEM others ${screen})
+  string(JOIN "|" others_alt ${others})
+  foreach(f IN LISTS files)
+    check("${f}" "${include_re}app/gui/(${others_alt})/" "no GUI screen folder includes another")
+    check("${f}" "${gui_shell_re}" "the shell composes the screens, never the reverse")
+    check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
+    if(screen STREQUAL "services")
+      check("${f}" "${include_re}app/gui/(common)/" "services/ are below the widgets")
+      check("${f}" "${widgets_re}" "GUI services have no widgets")
+    endif()
+  endforeach()
+endforeach()
+
 if(offenders)
   list(JOIN offenders "\n" text)
   message(FATAL_ERROR "layer rule broken (docs/architecture.md):\n${text}")
 endif()
 list(LENGTH ui_files n_ui)
-message(STATUS "checked ${n_core} core, ${n_devices} device and ${n_ui} ui files: the layers point one way")
+message(STATUS "checked ${n_core} core, ${n_devices} device, ${n_ui} ui and ${n_gui} GUI screen files: the layers point one way")

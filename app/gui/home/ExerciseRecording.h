@@ -10,9 +10,9 @@
 #include <atomic>
 #include <memory>
 
-#include "app/gui/live/GatedRecordingSink.h"
-#include "app/gui/live/LiveSessionConfig.h"
-#include "app/gui/live/SessionController.h"
+#include "app/gui/services/GatedRecordingSink.h"
+#include "app/gui/services/LiveSessionConfig.h"
+#include "app/gui/services/SessionController.h"
 #include "core/storage/DatabaseUrl.h"
 
 namespace armtrack::gui {

@@ -12,8 +12,8 @@
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
-#include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/services/HomeRecords.h"
+#include "app/gui/services/LiveSessionConfig.h"
 #include "core/metrics/ExerciseFeedback.h"
 #include "core/session/Session.h"
 #include "core/simulation/Trajectory.h"

@@ -5,8 +5,8 @@
 #include <QStyle>
 #include <QVBoxLayout>
 
+#include "app/gui/common/SensorCalibrationPage.h"
 #include "app/gui/home/HomeStyle.h"
-#include "app/gui/newsession/SensorCalibrationPage.h"
 #include "ui/Retranslate.h"
 
 namespace armtrack::gui::home {

@@ -6,7 +6,7 @@
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
-#include "app/gui/live/LiveSessionConfig.h"
+#include "app/gui/services/LiveSessionConfig.h"
 #include "core/calibration/Calibration.h"
 
 class QLabel;

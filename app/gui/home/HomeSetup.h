@@ -8,8 +8,8 @@
 #include <functional>
 #include <optional>
 
-#include "app/gui/live/LiveSessionConfig.h"
 #include "app/gui/services/HomeRecords.h"
+#include "app/gui/services/LiveSessionConfig.h"
 #include "app/gui/services/SessionPlan.h"
 #include "core/calibration/Calibration.h"
 

@@ -11,9 +11,9 @@
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
-#include "app/gui/live/GatedRecordingSink.h"
-#include "app/gui/live/LiveSessionConfig.h"
-#include "app/gui/live/SessionController.h"
+#include "app/gui/services/GatedRecordingSink.h"
+#include "app/gui/services/LiveSessionConfig.h"
+#include "app/gui/services/SessionController.h"
 #include "core/calibration/SensorCheck.h"
 
 class QLabel;

@@ -10,10 +10,10 @@
 #include <optional>
 #include <vector>
 
-#include "app/gui/live/GatedRecordingSink.h"
-#include "app/gui/live/LiveSessionConfig.h"
-#include "app/gui/live/RecordingTarget.h"
-#include "app/gui/live/SessionController.h"
+#include "app/gui/services/GatedRecordingSink.h"
+#include "app/gui/services/LiveSessionConfig.h"
+#include "app/gui/services/RecordingTarget.h"
+#include "app/gui/services/SessionController.h"
 #include "core/metrics/RepetitionCounter.h"
 #include "ui/AngleTrace.h"
 #include "ui/ArmView.h"

@@ -7,8 +7,8 @@
 #include <QWidget>
 #include <functional>
 
-#include "app/gui/live/LiveSessionConfig.h"
-#include "app/gui/live/SessionController.h"
+#include "app/gui/services/LiveSessionConfig.h"
+#include "app/gui/services/SessionController.h"
 
 class QLabel;
 class QListWidget;

@@ -10,9 +10,9 @@
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/MessageScreen.h"
-#include "app/gui/PatientScreen.h"
+#include "app/gui/common/MessageScreen.h"
 #include "app/gui/live/LiveSessionScreen.h"
+#include "app/gui/patients/PatientScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 #include "ui/RepetitionCounterWidget.h"

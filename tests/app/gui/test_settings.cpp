@@ -10,13 +10,13 @@
 #include <QStandardItemModel>
 
 #include "app/gui/AppController.h"
-#include "app/gui/Forms.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/PatientScreen.h"
-#include "app/gui/ProgressChart.h"
 #include "app/gui/SettingsDialog.h"
-#include "app/gui/SignInScreen.h"
+#include "app/gui/common/Forms.h"
+#include "app/gui/patients/PatientScreen.h"
+#include "app/gui/patients/ProgressChart.h"
 #include "app/gui/services/DemoData.h"
+#include "app/gui/signin/SignInScreen.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 
 using namespace armtrack::gui;

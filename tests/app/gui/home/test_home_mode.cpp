@@ -22,10 +22,8 @@
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/PatientScreen.h"
-#include "app/gui/SessionTableModel.h"
 #include "app/gui/SettingsDialog.h"
-#include "app/gui/SignInScreen.h"
+#include "app/gui/common/SessionTableModel.h"
 #include "app/gui/home/ExerciseScreen.h"
 #include "app/gui/home/HomeCalibrationScreen.h"
 #include "app/gui/home/HomeController.h"
@@ -36,7 +34,9 @@
 #include "app/gui/home/SensorCheckScreen.h"
 #include "app/gui/home/StrapPicture.h"
 #include "app/gui/home/SwitchAccess.h"
+#include "app/gui/patients/PatientScreen.h"
 #include "app/gui/services/HomeRecords.h"
+#include "app/gui/signin/SignInScreen.h"
 #include "app/i18n/Language.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 

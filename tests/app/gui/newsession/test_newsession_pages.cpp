@@ -16,10 +16,10 @@
 #include <opencv2/imgproc.hpp>
 #include <random>
 
-#include "app/gui/newsession/CalibrationGuide.h"
+#include "app/gui/common/CalibrationGuide.h"
+#include "app/gui/common/SensorCalibrationPage.h"
 #include "app/gui/newsession/CameraCalibrationPage.h"
 #include "app/gui/newsession/DevicesPage.h"
-#include "app/gui/newsession/SensorCalibrationPage.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/simulation/Trajectory.h"
 #include "tests/support/GuiTestMain.h"

@@ -16,9 +16,9 @@
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
-#include "app/gui/SignInScreen.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/DemoData.h"
+#include "app/gui/signin/SignInScreen.h"
 #include "tests/support/GuiTestMain.h"
 
 namespace armtrack::gui::test {

@@ -1,0 +1,230 @@
+// The patient page's progress chart against sessions with known angles: simulated recordings
+// imported and analysed by the records' own services, loaded as the patient page loads them
+// (loadPatientOverview), drawn by the chart. Each angle's normal range counts motion in one
+// direction from the neutral position (core/metrics/NormativeRanges.h), so the chart must plot
+// the largest angle in that direction, not the range of motion: a shoulder that rotates from 60
+// deg external to 20 deg internal has an 80 deg range but reached 20 of the 70 deg of normal
+// internal rotation.
+#include <QAreaSeries>
+#include <QChart>
+#include <QComboBox>
+#include <QDateTime>
+#include <QLineSeries>
+#include <QStandardItemModel>
+#include <QTemporaryDir>
+#include <QTest>
+#include <QValueAxis>
+#include <cmath>
+
+#include "app/gui/patients/ProgressChart.h"
+#include "app/gui/services/PatientRecords.h"
+#include "core/kinematics/ClinicalAngles.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
+#include "core/storage/SessionAnalysis.h"
+#include "tests/support/GuiTestMain.h"
+
+using namespace armtrack;
+
+namespace {
+
+/// Clinical angles (deg) swinging between lo and hi at 0.2 Hz.
+struct Swing {
+  ClinicalAngles lo, hi;
+};
+
+/// Imports a 20 s recording of the swing (both IMUs at 100 Hz and a Kinect, the simulator's
+/// noise) for patient P1, analyses it and dates it daysAgo back. Returns the session id.
+qint64 addSession(storage::Database& db, storage::ClinicalStore& store, const Swing& swing,
+                  double daysAgo, std::uint64_t seed, const QString& folder) {
+  const JointVector lo = fromClinical(swing.lo), hi = fromClinical(swing.hi);
+  SinusoidTrajectory t;
+  t.offset = (lo + hi) / 2;
+  t.amplitude = (hi - lo) / 2;
+  t.frequency.setConstant(0.2);
+  t.phase.setConstant(-M_PI / 2);  // from lo
+  SimulationParams sim = defaultSimulation();
+  sim.duration = 20;
+  sim.seed = seed;
+  sim.upperArm.rateHz = sim.forearm.rateHz = 100;
+  const std::string csv = (folder + QStringLiteral("/s%1.csv").arg(seed)).toStdString();
+  writeRecording(csv, simulateRecording(t, sim));
+  const qint64 id = store.importRecording(csv, QStringLiteral("P1"), {});
+  storage::analyseSession(store, id);
+  db.exec(QStringLiteral("UPDATE sessions SET started_at = ? WHERE id = ?"),
+          {QDateTime::currentDateTimeUtc()
+               .addSecs(-static_cast<qint64>(daysAgo * 86400))
+               .toString(Qt::ISODateWithMs),
+           id});
+  return id;
+}
+
+double cell(const QStandardItemModel* t, int row, int column) {
+  return t->item(row, column)->text().remove(u'%').trimmed().toDouble();
+}
+
+}  // namespace
+
+class TestProgressChart : public QObject {
+  Q_OBJECT
+  QTemporaryDir m_dir;
+  gui::PatientOverview m_overview;
+
+ private slots:
+  void initTestCase() {
+    storage::DatabaseUrl url;
+    url.path = m_dir.filePath(QStringLiteral("records.db"));
+    storage::Database db(url, {.create = true, .migrate = false});
+    storage::ClinicalStore store(db);
+    store.initialise(QStringLiteral("admin"), "a-long-password");
+    store.signIn(QStringLiteral("admin"), "a-long-password");
+    storage::Patient p;
+    p.code = QStringLiteral("P1");
+    p.name = QStringLiteral("Known Angles");
+    store.addPatient(p);
+    // Older session: every angle mostly on its negative side (extension, external rotation,
+    // supination), the rotation never reaching neutral.
+    Swing first;
+    first.lo = {-30, 5, -70, 10, -75};
+    first.hi = {60, 25, -20, 90, -30};
+    // Newer session: each angle crosses neutral.
+    Swing second;
+    second.lo = {30, 10, -60, 20, -70};
+    second.hi = {110, 30, 20, 100, 10};
+    addSession(db, store, first, 8, 11, m_dir.path());
+    addSession(db, store, second, 1, 12, m_dir.path());
+    m_overview = gui::loadPatientOverview(store, QStringLiteral("P1"));
+  }
+
+  void theOverviewHoldsEachSessionsExtremes() {
+    QCOMPARE(m_overview.progress.size(), std::size_t{2});
+    QVERIFY(m_overview.progress[0].startedAt < m_overview.progress[1].startedAt);
+    const double lo[5] = {30, 10, -60, 20, -70}, hi[5] = {110, 30, 20, 100, 10};
+    for (std::size_t a = 0; a < 5; ++a) {
+      const gui::SessionExtremes& s = m_overview.progress[1];
+      QVERIFY(s.minRad[a] && s.maxRad[a]);
+      QVERIFY2(std::abs(*s.minRad[a] * kRadToDeg - lo[a]) < 3,
+               qPrintable(QString::number(*s.minRad[a] * kRadToDeg)));
+      QVERIFY2(std::abs(*s.maxRad[a] * kRadToDeg - hi[a]) < 3,
+               qPrintable(QString::number(*s.maxRad[a] * kRadToDeg)));
+    }
+  }
+
+  void theChartPlotsTheLargestAngleAgainstTheNormalOfThatDirection() {
+    gui::ProgressChart chart;
+    chart.resize(900, 400);
+    chart.show();
+    chart.setSessions(m_overview.progress);
+    // The simulated largest angle per session in the named direction (flexion, abduction,
+    // internal rotation, elbow flexion, pronation), and that motion's normal range (AAOS).
+    const double largest[2][5] = {{60, 25, -20, 90, -30}, {110, 30, 20, 100, 10}};
+    const double normal[5] = {180, 180, 70, 150, 80};
+    for (int a = 0; a < 5; ++a) {
+      chart.setAngle(a);
+      QCOMPARE(chart.points(), 2);
+      const QStandardItemModel* t = chart.table();
+      QCOMPARE(t->rowCount(), 2);
+      QVERIFY(t->horizontalHeaderItem(1)->text().startsWith(QStringLiteral("Largest")));
+      QLineSeries* line = nullptr;
+      QAreaSeries* area = nullptr;
+      for (QAbstractSeries* s : chart.chart()->series()) {
+        if (auto* l = qobject_cast<QLineSeries*>(s)) line = l;
+        if (auto* found = qobject_cast<QAreaSeries*>(s)) area = found;
+      }
+      QVERIFY(line && area);
+      QCOMPARE(area->upperSeries()->at(0).y(), normal[a]);
+      QCOMPARE(area->lowerSeries()->at(0).y(), 0.0);
+      QCOMPARE(line->count(), 2);
+      for (int row = 0; row < 2; ++row) {
+        const QString what = QStringLiteral("angle %1, session %2: %3 deg")
+                                 .arg(a)
+                                 .arg(row)
+                                 .arg(t->item(row, 1)->text());
+        QVERIFY2(std::abs(cell(t, row, 1) - largest[row][a]) < 3, qPrintable(what));
+        QVERIFY2(std::abs(line->at(row).y() - largest[row][a]) < 3, qPrintable(what));
+        // Of normal: the largest angle over the normal range; nothing below neutral.
+        const double percent = std::max(0.0, 100 * cell(t, row, 1) / normal[a]);
+        QVERIFY2(std::abs(cell(t, row, 2) - percent) <= 1, qPrintable(t->item(row, 2)->text()));
+      }
+      // The axis shows every point, the rotation's -20 deg too.
+      QValueAxis* y = nullptr;
+      for (QAbstractAxis* axis : chart.chart()->axes(Qt::Vertical))
+        if (auto* v = qobject_cast<QValueAxis*>(axis)) y = v;
+      QVERIFY(y);
+      QVERIFY(y->min() <= std::min(0.0, largest[0][a] - 1));
+      QVERIFY(y->max() >= std::max(normal[a], largest[1][a]));
+    }
+    // The two cases a range of motion got wrong: internal rotation 80 deg of range but 20 deg
+    // reached (29 % of 70, not 114 %); pronation 80 deg of range but 10 deg reached (13 %, not
+    // 100 %); and a rotation that never reached neutral is 0 % of normal.
+    chart.setAngle(2);
+    QVERIFY2(std::abs(cell(chart.table(), 1, 2) - 29) <= 5,
+             qPrintable(chart.table()->item(1, 2)->text()));
+    QCOMPARE(cell(chart.table(), 0, 2), 0.0);
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    test::saveScreenshot(test::grabFromScreen(&chart), QStringLiteral("progress_chart_rotation"));
+    chart.setAngle(4);
+    QVERIFY2(std::abs(cell(chart.table(), 1, 2) - 13) <= 5,
+             qPrintable(chart.table()->item(1, 2)->text()));
+  }
+
+  void theOppositeMotionsArePlottedAgainstTheirOwnNormal() {
+    gui::ProgressChart chart;
+    chart.resize(900, 400);
+    chart.show();
+    chart.setSessions(m_overview.progress);
+    // Shoulder extension, external rotation and supination: minus each session's smallest angle
+    // (the sessions' lo above), against 60, 90 and 80 deg (AAOS).
+    struct Expected {
+      int angle;
+      const char* name;
+      double largest[2];
+      double normal;
+    };
+    const Expected expected[] = {{0, "Shoulder extension", {30, -30}, 60},
+                                 {2, "Shoulder external rotation", {70, 60}, 90},
+                                 {4, "Forearm supination", {75, 70}, 80}};
+    for (const Expected& e : expected) {
+      chart.setMotion(e.angle, true);
+      QCOMPARE(chart.angle(), e.angle);
+      QVERIFY(chart.opposite());
+      QCOMPARE(chart.motionName(), QString::fromLatin1(e.name));
+      QCOMPARE(chart.chart()->title(), QString::fromLatin1(e.name));
+      QCOMPARE(chart.points(), 2);
+      const QStandardItemModel* t = chart.table();
+      QAreaSeries* area = nullptr;
+      for (QAbstractSeries* s : chart.chart()->series())
+        if (auto* found = qobject_cast<QAreaSeries*>(s)) area = found;
+      QVERIFY(area);
+      QCOMPARE(area->upperSeries()->at(0).y(), e.normal);
+      for (int row = 0; row < 2; ++row) {
+        const QString what =
+            QStringLiteral("%1, session %2: %3").arg(e.name).arg(row).arg(t->item(row, 1)->text());
+        QVERIFY2(std::abs(cell(t, row, 1) - e.largest[row]) < 3, qPrintable(what));
+        const double percent = std::max(0.0, 100 * e.largest[row] / e.normal);
+        QVERIFY2(std::abs(cell(t, row, 2) - percent) <= 5, qPrintable(t->item(row, 2)->text()));
+      }
+    }
+    // Abduction and elbow flexion have no opposite motion in the chooser: their named one is
+    // drawn.
+    chart.setMotion(1, true);
+    QCOMPARE(chart.angle(), 1);
+    QVERIFY(!chart.opposite());
+    chart.setMotion(3, true);
+    QCOMPARE(chart.angle(), 3);
+    QVERIFY(!chart.opposite());
+    // The chooser lists eight motions, the named ones where they were.
+    const auto* chooser = chart.findChild<QComboBox*>();
+    QVERIFY(chooser);
+    QCOMPARE(chooser->count(), 8);
+    chart.setAngle(2);
+    QCOMPARE(chooser->currentText(), QStringLiteral("Shoulder internal rotation"));
+    chart.setMotion(2, true);
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    test::saveScreenshot(test::grabFromScreen(&chart),
+                         QStringLiteral("progress_chart_external_rotation"));
+  }
+};
+
+ARMTRACK_GUI_TEST_MAIN(TestProgressChart)
+#include "test_progress_chart.moc"
