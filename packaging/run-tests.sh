@@ -16,7 +16,7 @@ if [ -x "$build/tests/benchmarks/bench_filter" ]; then
 fi
 # The clinical records on SQLite and on a PostgreSQL server the benchmark starts itself.
 if [ -x "$build/tests/benchmarks/bench_storage" ]; then
-  "$build/tests/benchmarks/bench_storage" --benchmark_min_time=1 ||
+  "$build/tests/benchmarks/bench_storage" --benchmark_min_time=0.3 ||
     echo "storage benchmarks failed to run" >&2
 fi
 
