@@ -104,6 +104,9 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   m_chart->setRadians(settings.units == AppSettings::AngleUnit::Radians);
   auto* layout = new QVBoxLayout(this);
   auto* top = new QHBoxLayout;
+  // The heading follows the width (updateTitle() elides the name), so it never holds the window
+  // wider than the screen.
+  m_title->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   top->addWidget(m_title, 1);
   m_back->setShortcut(QKeySequence::Back);
   top->addWidget(m_back);
