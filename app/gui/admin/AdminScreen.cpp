@@ -71,6 +71,8 @@ void AdminPage::fill(const QStringList& headers, const std::vector<QStringList>&
     }
   }
   m_table->resizeColumnsToContents();
+  m_table->horizontalHeader()->setStretchLastSection(false);  // set again: the last column fills
+  m_table->horizontalHeader()->setStretchLastSection(true);
   if (selectRow >= 0) m_table->selectRow(selectRow);
 }
 
