@@ -247,6 +247,21 @@ class TestAdmin : public QObject {
     QTRY_VERIFY(message(page).contains(QStringLiteral("cannot remove itself")));
   }
 
+  void aFreshClinicsNewSessionSaysWhereProtocolsComeFrom() {
+    m_app->startNewSession(QStringLiteral("P001"));
+    QTRY_VERIFY(qobject_cast<NewSessionScreen*>(screen()));
+    QTRY_VERIFY(qobject_cast<NewSessionScreen*>(screen())->setupPage()->isComplete());
+    QCOMPARE(findControl<QComboBox>(screen(), QStringLiteral("Protocol"))->count(), 1);
+    const auto labels = screen()->findChildren<QLabel*>();
+    QVERIFY(std::any_of(labels.begin(), labels.end(), [](QLabel* l) {
+      return l->isVisible() && l->text().contains(QStringLiteral("Administration > Protocols"));
+    }));
+    qobject_cast<NewSessionScreen*>(screen())->wizard()->reject();
+    QTRY_VERIFY(qobject_cast<PatientScreen*>(screen()));
+    m_app->showAdmin();
+    QTRY_VERIFY(adminScreen());
+  }
+
   void addAndEditAProtocol() {
     adminScreen()->tabs()->setCurrentWidget(adminScreen()->protocols());
     auto* page = adminScreen()->protocols();
