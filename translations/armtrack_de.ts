@@ -506,10 +506,6 @@
         <translation>Sensorkalibrierung</translation>
     </message>
     <message>
-        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions for about a minute (docs/calibration.md).</source>
-        <translation>Der Patient sitzt aufrecht, beide Sensoren sind angelegt. Auf „Starten“ drücken und dann etwa eine Minute lang den Anweisungen folgen (docs/calibration.md).</translation>
-    </message>
-    <message>
         <source>Instruction</source>
         <translation>Anweisung</translation>
     </message>
@@ -622,6 +618,10 @@
             <numerusform>Bewegen: %n s</numerusform>
             <numerusform>Bewegen: %n s</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
+        <translation>Der Patient sitzt aufrecht, beide Sensoren sind angelegt. Auf „Starten“ drücken und dann etwa eine Minute lang den Anweisungen auf dem Bildschirm folgen.</translation>
     </message>
 </context>
 <context>
@@ -776,6 +776,41 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     </message>
 </context>
 <context>
+    <name>armtrack::gui::BirthDateField</name>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>Type the date as %1 or %2; leave it empty when not given. Up and Down change it by a day, Alt+Down opens a calendar.</source>
+        <translation>Geben Sie das Datum als %1 oder %2 ein; leer lassen, wenn nicht angegeben. Pfeil hoch und runter ändern es um einen Tag, Alt+Pfeil runter öffnet einen Kalender.</translation>
+    </message>
+    <message>
+        <source>Choose the birth date from a calendar</source>
+        <translation>Geburtsdatum aus einem Kalender wählen</translation>
+    </message>
+    <message>
+        <source>a birth date from %1 up to today, %2</source>
+        <translation>ein Geburtsdatum vom %1 bis heute, %2</translation>
+    </message>
+    <message>
+        <source>Born: &quot;%1&quot; is not a date. Type %2 as %3 or %4, or leave the field empty when the birth date is not given.</source>
+        <translation>Geboren: „%1“ ist kein Datum. Geben Sie %2 als %3 oder %4 ein, oder lassen Sie das Feld leer, wenn das Geburtsdatum nicht angegeben ist.</translation>
+    </message>
+    <message>
+        <source>Born: %1 is not possible. Type %2.</source>
+        <translation>Geboren: %1 ist nicht möglich. Geben Sie %2 ein.</translation>
+    </message>
+    <message>
+        <source>Calendar</source>
+        <translation>Kalender</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::FirstRunScreen</name>
     <message>
         <source>&amp;Browse...</source>
@@ -792,10 +827,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Welcome to ArmTrack</source>
         <translation>Willkommen bei ArmTrack</translation>
-    </message>
-    <message>
-        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator can then add the therapists&apos; accounts.</source>
-        <translation>ArmTrack speichert Patienten, Sitzungen und Aufnahmen in einer Datenbank. Wählen Sie ihren Speicherort und legen Sie das Administratorkonto an; der Administrator kann danach die Konten der Therapeuten hinzufügen.</translation>
     </message>
     <message>
         <source>Where the data lives</source>
@@ -887,6 +918,10 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Creating the records...</source>
         <translation>Akten werden angelegt ...</translation>
     </message>
+    <message>
+        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator then adds the therapists&apos; accounts, the protocols and the home programmes under ArmTrack &gt; Administration.</source>
+        <translation>ArmTrack speichert Patienten, Sitzungen und Aufzeichnungen in einer Datenbank. Wählen Sie, wo sie liegt, und legen Sie das Administratorkonto an; der Administrator legt dann unter ArmTrack &gt; Verwaltung die Konten der Therapeuten, die Protokolle und die Heimprogramme an.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::JobProgress</name>
@@ -964,6 +999,14 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>%1 - ArmTrack</source>
         <translation>%1 – ArmTrack</translation>
+    </message>
+    <message>
+        <source>A&amp;dministration...</source>
+        <translation>&amp;Verwaltung...</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+D</source>
+        <translation>Ctrl+Shift+D</translation>
     </message>
 </context>
 <context>
@@ -1115,10 +1158,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Patient name</source>
         <translation>Name des Patienten</translation>
-    </message>
-    <message>
-        <source>Birth date</source>
-        <translation>Geburtsdatum</translation>
     </message>
     <message>
         <source>not given</source>
@@ -1494,6 +1533,54 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>%L1 s</source>
         <translation>%L1 s</translation>
+    </message>
+    <message>
+        <source>%1 (oldest first)</source>
+        <translation>%1 (älteste zuerst)</translation>
+    </message>
+    <message>
+        <source>%1 (newest first)</source>
+        <translation>%1 (neueste zuerst)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete session...</source>
+        <translation>Sitzung &amp;löschen...</translation>
+    </message>
+    <message>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
+    </message>
+    <message>
+        <source>session %1</source>
+        <translation>Sitzung %1</translation>
+    </message>
+    <message>
+        <source>the session of %1 (%2, %3, session %4)</source>
+        <translation>die Sitzung vom %1 (%2, %3, Sitzung %4)</translation>
+    </message>
+    <message>
+        <source>free movement</source>
+        <translation>freie Bewegung</translation>
+    </message>
+    <message>
+        <source>Delete session</source>
+        <translation>Sitzung löschen</translation>
+    </message>
+    <message>
+        <source>Delete %1 of %2? Its recording, angles and metrics are removed for good; the audit log keeps that you did it.</source>
+        <translation>%1 von %2 löschen? Aufzeichnung, Winkel und Kennwerte werden endgültig entfernt; das Prüfprotokoll hält fest, dass Sie es getan haben.</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Löschen</translation>
+    </message>
+    <message>
+        <source>Session %1 deleted.</source>
+        <translation>Sitzung %1 gelöscht.</translation>
+    </message>
+    <message>
+        <source>The session could not be deleted: %1</source>
+        <translation>Die Sitzung konnte nicht gelöscht werden: %1</translation>
     </message>
 </context>
 <context>
@@ -2148,6 +2235,10 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
             <numerusform>Trainiert %1, Ziel %L2–%L3°, %n Wiederholungen.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>No protocols are stored yet: an administrator adds them under ArmTrack &gt; Administration &gt; Protocols. Without one the session records free movement.</source>
+        <translation>Es sind noch keine Protokolle gespeichert: Ein Administrator legt sie unter ArmTrack &gt; Verwaltung &gt; Protokolle an. Ohne Protokoll zeichnet die Sitzung freie Bewegung auf.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SessionTableModel</name>
@@ -2458,6 +2549,561 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Wrong user name or password.</source>
         <translation>Falscher Benutzername oder falsches Passwort.</translation>
+    </message>
+    <message>
+        <source>Too many wrong passwords for this account. You may try again now.</source>
+        <translation>Zu viele falsche Passwörter für dieses Konto. Sie können es jetzt erneut versuchen.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AccountDialog</name>
+    <message>
+        <source>Password</source>
+        <translation>Passwort</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Passwort wiederholen</translation>
+    </message>
+    <message>
+        <source>New account</source>
+        <translation>Neues Konto</translation>
+    </message>
+    <message>
+        <source>Account name</source>
+        <translation>Kontoname</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Patient of the home account</source>
+        <translation>Patient des Heimkontos</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Role:</source>
+        <translation>&amp;Rolle:</translation>
+    </message>
+    <message>
+        <source>Pa&amp;tient (home account):</source>
+        <translation>Pa&amp;tient (Heimkonto):</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Passwort:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>Passwort &amp;wiederholen:</translation>
+    </message>
+    <message>
+        <source>Give the account a name, e.g. the person&apos;s first name and initial.</source>
+        <translation>Geben Sie dem Konto einen Namen, z. B. Vorname und Initiale der Person.</translation>
+    </message>
+    <message>
+        <source>A home account belongs to one patient: add the patient first, then choose them.</source>
+        <translation>Ein Heimkonto gehört zu einem Patienten: Legen Sie zuerst den Patienten an und wählen Sie ihn dann.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AccountsPage</name>
+    <message>
+        <source>Accounts</source>
+        <translation>Konten</translation>
+    </message>
+    <message>
+        <source>&amp;Add account...</source>
+        <translation>Konto &amp;hinzufügen...</translation>
+    </message>
+    <message>
+        <source>Reset &amp;password...</source>
+        <translation>&amp;Passwort zurücksetzen...</translation>
+    </message>
+    <message>
+        <source>Re&amp;move account...</source>
+        <translation>Konto &amp;entfernen...</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Rolle</translation>
+    </message>
+    <message>
+        <source>Patient (home accounts)</source>
+        <translation>Patient (Heimkonten)</translation>
+    </message>
+    <message>
+        <source>Account %1 (%2) added: they can sign in now.</source>
+        <translation>Konto %1 (%2) angelegt: Es kann sich jetzt anmelden.</translation>
+    </message>
+    <message>
+        <source>Choose the account whose password to reset.</source>
+        <translation>Wählen Sie das Konto, dessen Passwort zurückgesetzt werden soll.</translation>
+    </message>
+    <message>
+        <source>The password of %1 is reset. Tell them the new one in person.</source>
+        <translation>Das Passwort von %1 ist zurückgesetzt. Teilen Sie das neue persönlich mit.</translation>
+    </message>
+    <message>
+        <source>Choose the account to remove.</source>
+        <translation>Wählen Sie das Konto, das entfernt werden soll.</translation>
+    </message>
+    <message>
+        <source>Remove account</source>
+        <translation>Konto entfernen</translation>
+    </message>
+    <message>
+        <source>Remove the account %1? They can no longer sign in. The sessions they recorded stay.</source>
+        <translation>Konto %1 entfernen? Es kann sich dann nicht mehr anmelden. Die damit aufgezeichneten Sitzungen bleiben.</translation>
+    </message>
+    <message>
+        <source>Account %1 removed.</source>
+        <translation>Konto %1 entfernt.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AdminScreen</name>
+    <message>
+        <source>Administration</source>
+        <translation>Verwaltung</translation>
+    </message>
+    <message>
+        <source>&amp;Accounts</source>
+        <translation>&amp;Konten</translation>
+    </message>
+    <message>
+        <source>P&amp;rotocols</source>
+        <translation>P&amp;rotokolle</translation>
+    </message>
+    <message>
+        <source>&amp;Home programmes</source>
+        <translation>&amp;Heimprogramme</translation>
+    </message>
+    <message>
+        <source>Back to the patients</source>
+        <translation>Zurück zu den Patienten</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ExerciseDialog</name>
+    <message>
+        <source>Its own &amp;target range</source>
+        <translation>Eigener &amp;Zielbereich</translation>
+    </message>
+    <message>
+        <source>Target from</source>
+        <translation>Ziel von</translation>
+    </message>
+    <message>
+        <source>Target to</source>
+        <translation>Ziel bis</translation>
+    </message>
+    <message>
+        <source>Edit exercise %1</source>
+        <translation>Übung %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>New exercise</source>
+        <translation>Neue Übung</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protokoll</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>Sätze</translation>
+    </message>
+    <message>
+        <source>Repetitions per set</source>
+        <translation>Wiederholungen pro Satz</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Rest between sets</source>
+        <translation>Pause zwischen Sätzen</translation>
+    </message>
+    <message>
+        <source>Sessions per week</source>
+        <translation>Sitzungen pro Woche</translation>
+    </message>
+    <message>
+        <source>Notes for the patient</source>
+        <translation>Hinweise für den Patienten</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protokoll:</translation>
+    </message>
+    <message>
+        <source>S&amp;ets:</source>
+        <translation>Sätz&amp;e:</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions per set:</source>
+        <translation>&amp;Wiederholungen pro Satz:</translation>
+    </message>
+    <message>
+        <source>Target &amp;from:</source>
+        <translation>Ziel &amp;von:</translation>
+    </message>
+    <message>
+        <source>Target &amp;to:</source>
+        <translation>Ziel &amp;bis:</translation>
+    </message>
+    <message>
+        <source>Re&amp;st between sets:</source>
+        <translation>Pa&amp;use zwischen Sätzen:</translation>
+    </message>
+    <message>
+        <source>Sessions per &amp;week:</source>
+        <translation>Sitzungen pro &amp;Woche:</translation>
+    </message>
+    <message>
+        <source>&amp;Notes:</source>
+        <translation>&amp;Hinweise:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (%1)</source>
+        <translation>die des Protokolls (%1)</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s</source>
+        <translation>die des Protokolls</translation>
+    </message>
+    <message>
+        <source>There is no protocol yet: add one on the Protocols page first.</source>
+        <translation>Es gibt noch kein Protokoll: Legen Sie zuerst eines auf der Seite Protokolle an.</translation>
+    </message>
+    <message>
+        <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
+        <translation>Das Ziel endet unter seinem Anfang: „bis“ muss mindestens „von“ sein.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::FormDialog</name>
+    <message>
+        <source> deg</source>
+        <translation> Grad</translation>
+    </message>
+    <message>
+        <source>Choose a password of at least %1 characters.</source>
+        <translation>Wählen Sie ein Passwort mit mindestens %1 Zeichen.</translation>
+    </message>
+    <message>
+        <source>The two passwords differ: type the same password twice.</source>
+        <translation>Die beiden Passwörter unterscheiden sich: Geben Sie zweimal dasselbe Passwort ein.</translation>
+    </message>
+    <message>
+        <source>administrator</source>
+        <translation>Administrator</translation>
+    </message>
+    <message>
+        <source>therapist</source>
+        <translation>Therapeut</translation>
+    </message>
+    <message>
+        <source>home account</source>
+        <translation>Heimkonto</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Speichern</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Saving...</source>
+        <translation>Wird gespeichert...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::PasswordDialog</name>
+    <message>
+        <source>New password</source>
+        <translation>Neues Passwort</translation>
+    </message>
+    <message>
+        <source>New password again</source>
+        <translation>Neues Passwort wiederholen</translation>
+    </message>
+    <message>
+        <source>New password for %1</source>
+        <translation>Neues Passwort für %1</translation>
+    </message>
+    <message>
+        <source>&amp;New password:</source>
+        <translation>&amp;Neues Passwort:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>Passwort &amp;wiederholen:</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProgrammePage</name>
+    <message>
+        <source>Pa&amp;tient:</source>
+        <translation>Pa&amp;tient:</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>Home programme</source>
+        <translation>Heimprogramm</translation>
+    </message>
+    <message>
+        <source>&amp;Add exercise...</source>
+        <translation>Übung &amp;hinzufügen...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit exercise...</source>
+        <translation>Übung &amp;bearbeiten...</translation>
+    </message>
+    <message>
+        <source>Re&amp;move exercise...</source>
+        <translation>Übung &amp;entfernen...</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>There are no patients yet: add them on the patient list first.</source>
+        <translation>Es gibt noch keine Patienten: Legen Sie sie zuerst in der Patientenliste an.</translation>
+    </message>
+    <message>
+        <source>%1 x %2</source>
+        <translation>%1 x %2</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1 bis %2 Grad</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Übung</translation>
+    </message>
+    <message>
+        <source>Sets x repetitions</source>
+        <translation>Sätze x Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Per week</source>
+        <translation>Pro Woche</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Hinweise</translation>
+    </message>
+    <message>
+        <source>Choose a patient first.</source>
+        <translation>Wählen Sie zuerst einen Patienten.</translation>
+    </message>
+    <message>
+        <source>Choose the exercise to edit.</source>
+        <translation>Wählen Sie die Übung, die bearbeitet werden soll.</translation>
+    </message>
+    <message>
+        <source>There is no protocol yet: add one on the Protocols page first.</source>
+        <translation>Es gibt noch kein Protokoll: Legen Sie zuerst eines auf der Seite Protokolle an.</translation>
+    </message>
+    <message>
+        <source>%1 is in the home programme of %2.</source>
+        <translation>%1 ist im Heimprogramm von %2.</translation>
+    </message>
+    <message>
+        <source>Choose the exercise to remove.</source>
+        <translation>Wählen Sie die Übung, die entfernt werden soll.</translation>
+    </message>
+    <message>
+        <source>Remove exercise</source>
+        <translation>Übung entfernen</translation>
+    </message>
+    <message>
+        <source>Remove %1 from the home programme of %2? The sessions already done stay.</source>
+        <translation>%1 aus dem Heimprogramm von %2 entfernen? Bereits gemachte Sitzungen bleiben.</translation>
+    </message>
+    <message>
+        <source>%1 removed from the programme.</source>
+        <translation>%1 aus dem Programm entfernt.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProtocolDialog</name>
+    <message>
+        <source>Target from</source>
+        <translation>Ziel von</translation>
+    </message>
+    <message>
+        <source>Target to</source>
+        <translation>Ziel bis</translation>
+    </message>
+    <message>
+        <source>New protocol</source>
+        <translation>Neues Protokoll</translation>
+    </message>
+    <message>
+        <source>Edit protocol %1</source>
+        <translation>Protokoll %1 bearbeiten</translation>
+    </message>
+    <message>
+        <source>Protocol name</source>
+        <translation>Protokollname</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Seite</translation>
+    </message>
+    <message>
+        <source>either arm</source>
+        <translation>beide Arme</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>linker Arm</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>rechter Arm</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;Angle:</source>
+        <translation>&amp;Winkel:</translation>
+    </message>
+    <message>
+        <source>Target &amp;from:</source>
+        <translation>Ziel &amp;von:</translation>
+    </message>
+    <message>
+        <source>Target &amp;to:</source>
+        <translation>Ziel &amp;bis:</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions:</source>
+        <translation>&amp;Wiederholungen:</translation>
+    </message>
+    <message>
+        <source>&amp;Side:</source>
+        <translation>&amp;Seite:</translation>
+    </message>
+    <message>
+        <source>Give the protocol a name, e.g. &quot;Shoulder flexion to 120&quot;.</source>
+        <translation>Geben Sie dem Protokoll einen Namen, z. B. „Schulterflexion bis 120“.</translation>
+    </message>
+    <message>
+        <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
+        <translation>Das Ziel endet unter seinem Anfang: „bis“ muss mindestens „von“ sein.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProtocolsPage</name>
+    <message>
+        <source>left arm</source>
+        <translation>linker Arm</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>rechter Arm</translation>
+    </message>
+    <message>
+        <source>either arm</source>
+        <translation>beide Arme</translation>
+    </message>
+    <message>
+        <source>Protocols</source>
+        <translation>Protokolle</translation>
+    </message>
+    <message>
+        <source>&amp;Add protocol...</source>
+        <translation>Protokoll &amp;hinzufügen...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit protocol...</source>
+        <translation>Protokoll &amp;bearbeiten...</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1 bis %2 Grad</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Winkel</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Ziel</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Wiederholungen</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Seite</translation>
+    </message>
+    <message>
+        <source>Choose the protocol to edit.</source>
+        <translation>Wählen Sie das Protokoll, das bearbeitet werden soll.</translation>
+    </message>
+    <message>
+        <source>Protocol %1 added: it is offered in new sessions and programmes.</source>
+        <translation>Protokoll %1 angelegt: Es wird in neuen Sitzungen und Programmen angeboten.</translation>
+    </message>
+    <message>
+        <source>Protocol %1 saved.</source>
+        <translation>Protokoll %1 gespeichert.</translation>
     </message>
 </context>
 <context>

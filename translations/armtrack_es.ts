@@ -506,10 +506,6 @@
         <translation>Calibración de los sensores</translation>
     </message>
     <message>
-        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions for about a minute (docs/calibration.md).</source>
-        <translation>El paciente está sentado erguido con los dos sensores colocados. Pulse «Iniciar» y siga las instrucciones durante un minuto aproximadamente (docs/calibration.md).</translation>
-    </message>
-    <message>
         <source>Instruction</source>
         <translation>Instrucción</translation>
     </message>
@@ -622,6 +618,10 @@
             <numerusform>Mover: %n s</numerusform>
             <numerusform>Mover: %n s</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
+        <translation>El paciente está sentado erguido con los dos sensores colocados. Pulse «Iniciar» y siga las instrucciones de la pantalla durante un minuto aproximadamente.</translation>
     </message>
 </context>
 <context>
@@ -776,6 +776,41 @@ Puede recalcularla desde su revisión.</translation>
     </message>
 </context>
 <context>
+    <name>armtrack::gui::BirthDateField</name>
+    <message>
+        <source>not given</source>
+        <translation>no indicada</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Fecha de nacimiento</translation>
+    </message>
+    <message>
+        <source>Type the date as %1 or %2; leave it empty when not given. Up and Down change it by a day, Alt+Down opens a calendar.</source>
+        <translation>Escriba la fecha como %1 o %2; déjela vacía si no se indica. Arriba y Abajo la cambian en un día, Alt+Abajo abre un calendario.</translation>
+    </message>
+    <message>
+        <source>Choose the birth date from a calendar</source>
+        <translation>Elegir la fecha de nacimiento en un calendario</translation>
+    </message>
+    <message>
+        <source>a birth date from %1 up to today, %2</source>
+        <translation>una fecha de nacimiento del %1 hasta hoy, %2</translation>
+    </message>
+    <message>
+        <source>Born: &quot;%1&quot; is not a date. Type %2 as %3 or %4, or leave the field empty when the birth date is not given.</source>
+        <translation>Nacimiento: «%1» no es una fecha. Escriba %2 como %3 o %4, o deje el campo vacío si no se indica la fecha de nacimiento.</translation>
+    </message>
+    <message>
+        <source>Born: %1 is not possible. Type %2.</source>
+        <translation>Nacimiento: %1 no es posible. Escriba %2.</translation>
+    </message>
+    <message>
+        <source>Calendar</source>
+        <translation>Calendario</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::FirstRunScreen</name>
     <message>
         <source>&amp;Browse...</source>
@@ -792,10 +827,6 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Welcome to ArmTrack</source>
         <translation>Bienvenido a ArmTrack</translation>
-    </message>
-    <message>
-        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator can then add the therapists&apos; accounts.</source>
-        <translation>ArmTrack guarda pacientes, sesiones y grabaciones en una base de datos. Elija dónde se guarda y cree la cuenta de administrador; después, el administrador puede añadir las cuentas de los terapeutas.</translation>
     </message>
     <message>
         <source>Where the data lives</source>
@@ -887,6 +918,10 @@ Puede recalcularla desde su revisión.</translation>
         <source>Creating the records...</source>
         <translation>Creando los registros clínicos...</translation>
     </message>
+    <message>
+        <source>ArmTrack keeps its patients, sessions and recordings in one database. Choose where it lives and create the administrator account; the administrator then adds the therapists&apos; accounts, the protocols and the home programmes under ArmTrack &gt; Administration.</source>
+        <translation>ArmTrack guarda sus pacientes, sesiones y grabaciones en una base de datos. Elija dónde se guarda y cree la cuenta de administrador; el administrador añade después las cuentas de los terapeutas, los protocolos y los programas en casa en ArmTrack &gt; Administración.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::JobProgress</name>
@@ -964,6 +999,14 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>%1 - ArmTrack</source>
         <translation>%1 – ArmTrack</translation>
+    </message>
+    <message>
+        <source>A&amp;dministration...</source>
+        <translation>A&amp;dministración...</translation>
+    </message>
+    <message>
+        <source>Ctrl+Shift+D</source>
+        <translation>Ctrl+Shift+D</translation>
     </message>
 </context>
 <context>
@@ -1115,10 +1158,6 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Patient name</source>
         <translation>Nombre del paciente</translation>
-    </message>
-    <message>
-        <source>Birth date</source>
-        <translation>Fecha de nacimiento</translation>
     </message>
     <message>
         <source>not given</source>
@@ -1494,6 +1533,54 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>%L1 s</source>
         <translation>%L1 s</translation>
+    </message>
+    <message>
+        <source>%1 (oldest first)</source>
+        <translation>%1 (las más antiguas primero)</translation>
+    </message>
+    <message>
+        <source>%1 (newest first)</source>
+        <translation>%1 (las más recientes primero)</translation>
+    </message>
+    <message>
+        <source>&amp;Delete session...</source>
+        <translation>&amp;Eliminar sesión...</translation>
+    </message>
+    <message>
+        <source>(%1)</source>
+        <translation>(%1)</translation>
+    </message>
+    <message>
+        <source>session %1</source>
+        <translation>sesión %1</translation>
+    </message>
+    <message>
+        <source>the session of %1 (%2, %3, session %4)</source>
+        <translation>la sesión del %1 (%2, %3, sesión %4)</translation>
+    </message>
+    <message>
+        <source>free movement</source>
+        <translation>movimiento libre</translation>
+    </message>
+    <message>
+        <source>Delete session</source>
+        <translation>Eliminar sesión</translation>
+    </message>
+    <message>
+        <source>Delete %1 of %2? Its recording, angles and metrics are removed for good; the audit log keeps that you did it.</source>
+        <translation>¿Eliminar %1 de %2? Su grabación, ángulos y métricas se borran para siempre; el registro de auditoría guarda que lo hizo usted.</translation>
+    </message>
+    <message>
+        <source>&amp;Delete</source>
+        <translation>&amp;Eliminar</translation>
+    </message>
+    <message>
+        <source>Session %1 deleted.</source>
+        <translation>Sesión %1 eliminada.</translation>
+    </message>
+    <message>
+        <source>The session could not be deleted: %1</source>
+        <translation>No se pudo eliminar la sesión: %1</translation>
     </message>
 </context>
 <context>
@@ -2148,6 +2235,10 @@ Puede recalcularla desde su revisión.</translation>
             <numerusform>Entrena %1, objetivo %L2–%L3°, %n repeticiones.</numerusform>
         </translation>
     </message>
+    <message>
+        <source>No protocols are stored yet: an administrator adds them under ArmTrack &gt; Administration &gt; Protocols. Without one the session records free movement.</source>
+        <translation>Aún no hay protocolos guardados: un administrador los añade en ArmTrack &gt; Administración &gt; Protocolos. Sin protocolo, la sesión graba movimiento libre.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::SessionTableModel</name>
@@ -2458,6 +2549,561 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Wrong user name or password.</source>
         <translation>Nombre de usuario o contraseña incorrectos.</translation>
+    </message>
+    <message>
+        <source>Too many wrong passwords for this account. You may try again now.</source>
+        <translation>Demasiadas contraseñas incorrectas para esta cuenta. Ya puede volver a intentarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AccountDialog</name>
+    <message>
+        <source>Password</source>
+        <translation>Contraseña</translation>
+    </message>
+    <message>
+        <source>Password again</source>
+        <translation>Repetir contraseña</translation>
+    </message>
+    <message>
+        <source>New account</source>
+        <translation>Cuenta nueva</translation>
+    </message>
+    <message>
+        <source>Account name</source>
+        <translation>Nombre de la cuenta</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Función</translation>
+    </message>
+    <message>
+        <source>Patient of the home account</source>
+        <translation>Paciente de la cuenta en casa</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Role:</source>
+        <translation>&amp;Función:</translation>
+    </message>
+    <message>
+        <source>Pa&amp;tient (home account):</source>
+        <translation>Pa&amp;ciente (cuenta en casa):</translation>
+    </message>
+    <message>
+        <source>&amp;Password:</source>
+        <translation>&amp;Contraseña:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>Repetir c&amp;ontraseña:</translation>
+    </message>
+    <message>
+        <source>Give the account a name, e.g. the person&apos;s first name and initial.</source>
+        <translation>Dé un nombre a la cuenta, p. ej. el nombre de pila y la inicial de la persona.</translation>
+    </message>
+    <message>
+        <source>A home account belongs to one patient: add the patient first, then choose them.</source>
+        <translation>Una cuenta en casa pertenece a un paciente: añada primero el paciente y luego elíjalo.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AccountsPage</name>
+    <message>
+        <source>Accounts</source>
+        <translation>Cuentas</translation>
+    </message>
+    <message>
+        <source>&amp;Add account...</source>
+        <translation>&amp;Añadir cuenta...</translation>
+    </message>
+    <message>
+        <source>Reset &amp;password...</source>
+        <translation>Restablecer &amp;contraseña...</translation>
+    </message>
+    <message>
+        <source>Re&amp;move account...</source>
+        <translation>&amp;Quitar cuenta...</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Role</source>
+        <translation>Función</translation>
+    </message>
+    <message>
+        <source>Patient (home accounts)</source>
+        <translation>Paciente (cuentas en casa)</translation>
+    </message>
+    <message>
+        <source>Account %1 (%2) added: they can sign in now.</source>
+        <translation>Cuenta %1 (%2) añadida: ya puede iniciar sesión.</translation>
+    </message>
+    <message>
+        <source>Choose the account whose password to reset.</source>
+        <translation>Elija la cuenta cuya contraseña quiere restablecer.</translation>
+    </message>
+    <message>
+        <source>The password of %1 is reset. Tell them the new one in person.</source>
+        <translation>La contraseña de %1 se ha restablecido. Comunique la nueva en persona.</translation>
+    </message>
+    <message>
+        <source>Choose the account to remove.</source>
+        <translation>Elija la cuenta que quiere quitar.</translation>
+    </message>
+    <message>
+        <source>Remove account</source>
+        <translation>Quitar cuenta</translation>
+    </message>
+    <message>
+        <source>Remove the account %1? They can no longer sign in. The sessions they recorded stay.</source>
+        <translation>¿Quitar la cuenta %1? Ya no podrá iniciar sesión. Las sesiones que grabó se conservan.</translation>
+    </message>
+    <message>
+        <source>Account %1 removed.</source>
+        <translation>Cuenta %1 quitada.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::AdminScreen</name>
+    <message>
+        <source>Administration</source>
+        <translation>Administración</translation>
+    </message>
+    <message>
+        <source>&amp;Accounts</source>
+        <translation>&amp;Cuentas</translation>
+    </message>
+    <message>
+        <source>P&amp;rotocols</source>
+        <translation>P&amp;rotocolos</translation>
+    </message>
+    <message>
+        <source>&amp;Home programmes</source>
+        <translation>Programas en &amp;casa</translation>
+    </message>
+    <message>
+        <source>Back to the patients</source>
+        <translation>Volver a los pacientes</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ExerciseDialog</name>
+    <message>
+        <source>Its own &amp;target range</source>
+        <translation>Su propio rango &amp;objetivo</translation>
+    </message>
+    <message>
+        <source>Target from</source>
+        <translation>Objetivo desde</translation>
+    </message>
+    <message>
+        <source>Target to</source>
+        <translation>Objetivo hasta</translation>
+    </message>
+    <message>
+        <source>Edit exercise %1</source>
+        <translation>Editar ejercicio %1</translation>
+    </message>
+    <message>
+        <source>New exercise</source>
+        <translation>Ejercicio nuevo</translation>
+    </message>
+    <message>
+        <source>Protocol</source>
+        <translation>Protocolo</translation>
+    </message>
+    <message>
+        <source>Sets</source>
+        <translation>Series</translation>
+    </message>
+    <message>
+        <source>Repetitions per set</source>
+        <translation>Repeticiones por serie</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Rest between sets</source>
+        <translation>Descanso entre series</translation>
+    </message>
+    <message>
+        <source>Sessions per week</source>
+        <translation>Sesiones por semana</translation>
+    </message>
+    <message>
+        <source>Notes for the patient</source>
+        <translation>Notas para el paciente</translation>
+    </message>
+    <message>
+        <source>&amp;Protocol:</source>
+        <translation>&amp;Protocolo:</translation>
+    </message>
+    <message>
+        <source>S&amp;ets:</source>
+        <translation>S&amp;eries:</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions per set:</source>
+        <translation>&amp;Repeticiones por serie:</translation>
+    </message>
+    <message>
+        <source>Target &amp;from:</source>
+        <translation>Objetivo &amp;desde:</translation>
+    </message>
+    <message>
+        <source>Target &amp;to:</source>
+        <translation>Objetivo &amp;hasta:</translation>
+    </message>
+    <message>
+        <source>Re&amp;st between sets:</source>
+        <translation>Des&amp;canso entre series:</translation>
+    </message>
+    <message>
+        <source>Sessions per &amp;week:</source>
+        <translation>Sesiones por se&amp;mana:</translation>
+    </message>
+    <message>
+        <source>&amp;Notes:</source>
+        <translation>&amp;Notas:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (%1)</source>
+        <translation>las del protocolo (%1)</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s</source>
+        <translation>las del protocolo</translation>
+    </message>
+    <message>
+        <source>There is no protocol yet: add one on the Protocols page first.</source>
+        <translation>Aún no hay ningún protocolo: añada uno primero en la página Protocolos.</translation>
+    </message>
+    <message>
+        <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
+        <translation>El objetivo termina por debajo de donde empieza: «hasta» debe ser al menos «desde».</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::FormDialog</name>
+    <message>
+        <source> deg</source>
+        <translation> grados</translation>
+    </message>
+    <message>
+        <source>Choose a password of at least %1 characters.</source>
+        <translation>Elija una contraseña de al menos %1 caracteres.</translation>
+    </message>
+    <message>
+        <source>The two passwords differ: type the same password twice.</source>
+        <translation>Las dos contraseñas no coinciden: escriba la misma contraseña dos veces.</translation>
+    </message>
+    <message>
+        <source>administrator</source>
+        <translation>administrador</translation>
+    </message>
+    <message>
+        <source>therapist</source>
+        <translation>terapeuta</translation>
+    </message>
+    <message>
+        <source>home account</source>
+        <translation>cuenta en casa</translation>
+    </message>
+    <message>
+        <source>&amp;Save</source>
+        <translation>&amp;Guardar</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Cancelar</translation>
+    </message>
+    <message>
+        <source>Saving...</source>
+        <translation>Guardando...</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::PasswordDialog</name>
+    <message>
+        <source>New password</source>
+        <translation>Contraseña nueva</translation>
+    </message>
+    <message>
+        <source>New password again</source>
+        <translation>Repetir la contraseña nueva</translation>
+    </message>
+    <message>
+        <source>New password for %1</source>
+        <translation>Contraseña nueva para %1</translation>
+    </message>
+    <message>
+        <source>&amp;New password:</source>
+        <translation>Contraseña &amp;nueva:</translation>
+    </message>
+    <message>
+        <source>Password &amp;again:</source>
+        <translation>Repetir c&amp;ontraseña:</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProgrammePage</name>
+    <message>
+        <source>Pa&amp;tient:</source>
+        <translation>Pa&amp;ciente:</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Paciente</translation>
+    </message>
+    <message>
+        <source>Home programme</source>
+        <translation>Programa en casa</translation>
+    </message>
+    <message>
+        <source>&amp;Add exercise...</source>
+        <translation>&amp;Añadir ejercicio...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit exercise...</source>
+        <translation>&amp;Editar ejercicio...</translation>
+    </message>
+    <message>
+        <source>Re&amp;move exercise...</source>
+        <translation>&amp;Quitar ejercicio...</translation>
+    </message>
+    <message>
+        <source>%1 - %2</source>
+        <translation>%1 - %2</translation>
+    </message>
+    <message>
+        <source>There are no patients yet: add them on the patient list first.</source>
+        <translation>Aún no hay pacientes: añádalos primero en la lista de pacientes.</translation>
+    </message>
+    <message>
+        <source>%1 x %2</source>
+        <translation>%1 x %2</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1 a %2 grados</translation>
+    </message>
+    <message>
+        <source>%1 s</source>
+        <translation>%1 s</translation>
+    </message>
+    <message>
+        <source>Exercise</source>
+        <translation>Ejercicio</translation>
+    </message>
+    <message>
+        <source>Sets x repetitions</source>
+        <translation>Series x repeticiones</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Rest</source>
+        <translation>Descanso</translation>
+    </message>
+    <message>
+        <source>Per week</source>
+        <translation>Por semana</translation>
+    </message>
+    <message>
+        <source>Notes</source>
+        <translation>Notas</translation>
+    </message>
+    <message>
+        <source>Choose a patient first.</source>
+        <translation>Elija primero un paciente.</translation>
+    </message>
+    <message>
+        <source>Choose the exercise to edit.</source>
+        <translation>Elija el ejercicio que quiere editar.</translation>
+    </message>
+    <message>
+        <source>There is no protocol yet: add one on the Protocols page first.</source>
+        <translation>Aún no hay ningún protocolo: añada uno primero en la página Protocolos.</translation>
+    </message>
+    <message>
+        <source>%1 is in the home programme of %2.</source>
+        <translation>%1 está en el programa en casa de %2.</translation>
+    </message>
+    <message>
+        <source>Choose the exercise to remove.</source>
+        <translation>Elija el ejercicio que quiere quitar.</translation>
+    </message>
+    <message>
+        <source>Remove exercise</source>
+        <translation>Quitar ejercicio</translation>
+    </message>
+    <message>
+        <source>Remove %1 from the home programme of %2? The sessions already done stay.</source>
+        <translation>¿Quitar %1 del programa en casa de %2? Las sesiones ya hechas se conservan.</translation>
+    </message>
+    <message>
+        <source>%1 removed from the programme.</source>
+        <translation>%1 quitado del programa.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProtocolDialog</name>
+    <message>
+        <source>Target from</source>
+        <translation>Objetivo desde</translation>
+    </message>
+    <message>
+        <source>Target to</source>
+        <translation>Objetivo hasta</translation>
+    </message>
+    <message>
+        <source>New protocol</source>
+        <translation>Protocolo nuevo</translation>
+    </message>
+    <message>
+        <source>Edit protocol %1</source>
+        <translation>Editar protocolo %1</translation>
+    </message>
+    <message>
+        <source>Protocol name</source>
+        <translation>Nombre del protocolo</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Lado</translation>
+    </message>
+    <message>
+        <source>either arm</source>
+        <translation>cualquier brazo</translation>
+    </message>
+    <message>
+        <source>left arm</source>
+        <translation>brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>brazo derecho</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Nombre:</translation>
+    </message>
+    <message>
+        <source>&amp;Angle:</source>
+        <translation>Á&amp;ngulo:</translation>
+    </message>
+    <message>
+        <source>Target &amp;from:</source>
+        <translation>Objetivo &amp;desde:</translation>
+    </message>
+    <message>
+        <source>Target &amp;to:</source>
+        <translation>Objetivo &amp;hasta:</translation>
+    </message>
+    <message>
+        <source>&amp;Repetitions:</source>
+        <translation>&amp;Repeticiones:</translation>
+    </message>
+    <message>
+        <source>&amp;Side:</source>
+        <translation>&amp;Lado:</translation>
+    </message>
+    <message>
+        <source>Give the protocol a name, e.g. &quot;Shoulder flexion to 120&quot;.</source>
+        <translation>Dé un nombre al protocolo, p. ej. «Flexión de hombro hasta 120».</translation>
+    </message>
+    <message>
+        <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
+        <translation>El objetivo termina por debajo de donde empieza: «hasta» debe ser al menos «desde».</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::admin::ProtocolsPage</name>
+    <message>
+        <source>left arm</source>
+        <translation>brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>right arm</source>
+        <translation>brazo derecho</translation>
+    </message>
+    <message>
+        <source>either arm</source>
+        <translation>cualquier brazo</translation>
+    </message>
+    <message>
+        <source>Protocols</source>
+        <translation>Protocolos</translation>
+    </message>
+    <message>
+        <source>&amp;Add protocol...</source>
+        <translation>&amp;Añadir protocolo...</translation>
+    </message>
+    <message>
+        <source>&amp;Edit protocol...</source>
+        <translation>&amp;Editar protocolo...</translation>
+    </message>
+    <message>
+        <source>%1 to %2 deg</source>
+        <translation>%1 a %2 grados</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Nombre</translation>
+    </message>
+    <message>
+        <source>Angle</source>
+        <translation>Ángulo</translation>
+    </message>
+    <message>
+        <source>Target</source>
+        <translation>Objetivo</translation>
+    </message>
+    <message>
+        <source>Repetitions</source>
+        <translation>Repeticiones</translation>
+    </message>
+    <message>
+        <source>Side</source>
+        <translation>Lado</translation>
+    </message>
+    <message>
+        <source>Choose the protocol to edit.</source>
+        <translation>Elija el protocolo que quiere editar.</translation>
+    </message>
+    <message>
+        <source>Protocol %1 added: it is offered in new sessions and programmes.</source>
+        <translation>Protocolo %1 añadido: se ofrece en las sesiones y programas nuevos.</translation>
+    </message>
+    <message>
+        <source>Protocol %1 saved.</source>
+        <translation>Protocolo %1 guardado.</translation>
     </message>
 </context>
 <context>

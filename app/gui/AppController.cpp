@@ -12,6 +12,7 @@
 #include "app/gui/Appearance.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SettingsDialog.h"
+#include "app/gui/admin/AdminScreen.h"
 #include "app/gui/common/AngleNames.h"
 #include "app/gui/common/MessageScreen.h"
 #include "app/gui/home/HomeController.h"
@@ -57,6 +58,7 @@ AppController::AppController(AppOptions options, QObject* parent)
   connect(m_window.get(), &MainWindow::signOutRequested, this, &AppController::signOut);
   connect(m_window.get(), &MainWindow::patientsRequested, this, &AppController::showPatients);
   connect(m_window.get(), &MainWindow::settingsRequested, this, &AppController::showSettings);
+  connect(m_window.get(), &MainWindow::adminRequested, this, &AppController::showAdmin);
   connect(m_records.get(), &RecordsService::problem, this,
           [this](const QString& text) { m_window->showStatus(text, 0); });
 }
@@ -351,6 +353,7 @@ void AppController::showSignIn() {
 void AppController::onSignedIn(const storage::User& user) {
   m_window->setSignedIn(
       [name = user.name, role = user.role] { return tr("%1 (%2)").arg(name, roleText(role)); });
+  m_window->setAdministrator(user.role == storage::Role::Admin);
   emit signedIn(user.name);
   if (user.role == storage::Role::Home) return showHome();
   showPatients();
@@ -426,6 +429,13 @@ void AppController::showPatient(const QString& code) {
   connect(screen, &PatientScreen::backRequested, this, [this, code] { showPatientList(code); });
   connect(screen, &PatientScreen::newSessionRequested, this, &AppController::startNewSession);
   connect(screen, &PatientScreen::reviewRequested, this, &AppController::showReview);
+  m_window->showScreen(screen);
+}
+
+void AppController::showAdmin() {
+  if (!m_records->signedIn() || m_records->user().role != storage::Role::Admin) return;
+  auto* screen = new admin::AdminScreen(*m_records);
+  connect(screen, &admin::AdminScreen::backRequested, this, &AppController::showPatients);
   m_window->showScreen(screen);
 }
 

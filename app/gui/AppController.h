@@ -48,6 +48,8 @@ class AppController : public QObject {
   void showPatients();
   void showPatientList(const QString& select);
   void showPatient(const QString& code);
+  /// The administrator's screen: accounts, protocols, home programmes (administrators only).
+  void showAdmin();
   void startNewSession(const QString& code);
   void showReview(qint64 sessionId);
   void showSettings();

@@ -22,6 +22,7 @@ MainWindow::MainWindow(QWidget* parent)
 
   m_file = menuBar()->addMenu(QString());
   m_patients = m_file->addAction(QString(), this, &MainWindow::patientsRequested);
+  m_admin = m_file->addAction(QString(), this, &MainWindow::adminRequested);
   m_settings = m_file->addAction(QString(), this, &MainWindow::settingsRequested);
   m_signOut = m_file->addAction(QString(), this, &MainWindow::signOutRequested);
   m_file->addSeparator();
@@ -54,6 +55,8 @@ void MainWindow::retranslateUi() {
   m_file->setTitle(tr("&ArmTrack"));
   m_patients->setText(tr("&Patients"));
   m_patients->setShortcut(QKeySequence(tr("Ctrl+Shift+P")));
+  m_admin->setText(tr("A&dministration..."));
+  m_admin->setShortcut(QKeySequence(tr("Ctrl+Shift+D")));
   m_settings->setText(tr("&Settings..."));
   m_settings->setShortcut(QKeySequence::Preferences);
   if (m_settings->shortcut().isEmpty()) m_settings->setShortcut(QKeySequence(tr("Ctrl+,")));
@@ -91,6 +94,12 @@ void MainWindow::setSignedIn(TextFn who) {
   m_who->setText(name.isEmpty() ? QString() : tr("Signed in as %1").arg(name));
   m_patients->setEnabled(!name.isEmpty());
   m_signOut->setEnabled(!name.isEmpty());
+  if (name.isEmpty()) setAdministrator(false);
+}
+
+void MainWindow::setAdministrator(bool administrator) {
+  m_admin->setVisible(administrator);
+  m_admin->setEnabled(administrator);
 }
 
 void MainWindow::showStatus(TextFn text, int ms) {

@@ -28,6 +28,8 @@ class MainWindow : public QMainWindow {
   QWidget* currentScreen() const;
   /// Shows who is signed in (empty: nobody) and enables the actions that need an account.
   void setSignedIn(TextFn who);
+  /// Offers the administrator's screen (an administrator is signed in) or hides it.
+  void setAdministrator(bool administrator);
   /// A short message in the status bar (ms = 0: until replaced), made again in the new language
   /// when the language changes while it is shown.
   void showStatus(TextFn text, int ms = 8000);
@@ -38,6 +40,7 @@ class MainWindow : public QMainWindow {
   void settingsRequested();
   void signOutRequested();
   void patientsRequested();
+  void adminRequested();
   void userGuideRequested();
 
  protected:
@@ -56,6 +59,7 @@ class MainWindow : public QMainWindow {
   QMenu* m_file;
   QMenu* m_help;
   QAction* m_patients;
+  QAction* m_admin;
   QAction* m_settings;
   QAction* m_signOut;
   QAction* m_quit;

@@ -10,7 +10,7 @@
 # - anything under ui/ includes a header of app/ or of a device plugin's folder (devices/api/ is
 #   allowed: ui/ sees devices through their interface);
 # - a file under core/, devices/ or ui/ includes with a "../" path, which would hide such an arrow.
-# - in the GUI (app/gui/), a screen folder (signin, patients, review, newsession, live, home)
+# - in the GUI (app/gui/), a screen folder (signin, patients, review, newsession, live, home, admin)
 #   includes another screen folder or the shell (app/gui/*.h); common/ includes a screen folder
 #   or the shell; services/ includes anything of app/gui/ but services/, or widgets.
 # core/exports (export writers, target armtrack_exports) is science for this rule: Qt-free, and it
@@ -69,7 +69,7 @@ foreach(f IN LISTS ui_files)
   check("${f}" "${include_re}[^>\"]*\\.\\./" "relative includes hide the layer")
 endforeach()
 
-set(screens "signin" "patients" "review" "newsession" "live" "home")
+set(screens "signin" "patients" "review" "newsession" "live" "home" "admin")
 file(GLOB gui_shell_files RELATIVE "${ROOT}/app/gui" "${ROOT}/app/gui/*.h")
 list(LENGTH gui_shell_files n_shell)
 if(n_shell EQUAL 0)

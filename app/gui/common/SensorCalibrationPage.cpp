@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "app/gui/common/CalibrationGuide.h"
+#include "app/gui/services/RecordsService.h"
 #include "core/metrics/RangeOfMotion.h"
 #include "ui/ArmView.h"
 #include "ui/Fonts.h"
@@ -157,7 +158,7 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
            [] {
              return tr(
                  "The patient sits upright with both sensors strapped on. Press Start, then "
-                 "follow the instructions for about a minute (docs/calibration.md).");
+                 "follow the instructions on the screen for about a minute.");
            });
   setState(State::Ready);
   retranslateUi();
@@ -326,7 +327,8 @@ void SensorCalibrationPage::solve() {
       });
       report({}, true, std::move(r), {});
     } catch (const std::exception& e) {
-      report({}, true, std::nullopt, QString::fromStdString(e.what()));
+      report({}, true, std::nullopt,
+             armtrack::gui::withoutSourceReferences(QString::fromStdString(e.what())));
     }
   });
   worker->setObjectName(QStringLiteral("armtrack-calibrate"));

@@ -82,6 +82,12 @@ QVariant SessionTableModel::data(const QModelIndex& index, int role) const {
   const storage::SessionInfo* s = sessionAt(index.row());
   if (!s) return {};
   if (role == IdRole) return s->id;
+  if (role == Qt::ToolTipRole) {  // what a narrow column cuts: the whole comment, the notes
+    if (index.column() == Patient && !s->patientComment.isEmpty())
+      return patientText(*s) + u'\n' + s->patientComment;
+    if (index.column() == Notes && !s->notes.isEmpty()) return s->notes;
+    return {};
+  }
   if (role == Qt::EditRole) {  // sorting
     switch (index.column()) {
       case Started:

@@ -12,7 +12,9 @@ namespace armtrack::gui {
 class SessionTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Started, Protocol, Where, Duration, Status, Samples, Patient, Notes, ColumnCount };
+  /// The patient's own account (pain, comment) beside where the session was, not after the
+  /// technical columns.
+  enum Column { Started, Protocol, Where, Patient, Duration, Status, Samples, Notes, ColumnCount };
   static constexpr int IdRole = Qt::UserRole;  ///< the session id, on any column
 
   using QAbstractTableModel::QAbstractTableModel;

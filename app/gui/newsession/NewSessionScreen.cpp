@@ -152,6 +152,10 @@ void SessionSetupPage::protocolChanged() {
     if (chosen->side != QLatin1String("either") && chosen->side != mine)
       text += u' ' + tr("Note: this protocol is meant for the %1 arm.")
                          .arg(chosen->side == QLatin1String("left") ? tr("left") : tr("right"));
+  } else if (m_protocols.empty() && m_protocol->count() == 1) {
+    text =
+        tr("No protocols are stored yet: an administrator adds them under ArmTrack > "
+           "Administration > Protocols. Without one the session records free movement.");
   }
   m_protocolDetails->setText(text);
 }

@@ -1,7 +1,6 @@
 #include "app/gui/patients/PatientDialog.h"
 
 #include <QComboBox>
-#include <QDateEdit>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -13,6 +12,7 @@
 #include <QVBoxLayout>
 
 #include "app/gui/common/Forms.h"
+#include "app/gui/patients/BirthDateField.h"
 #include "app/gui/patients/PatientTableModel.h"
 #include "app/gui/services/PatientRecords.h"
 #include "core/reports/ReportText.h"
@@ -20,8 +20,6 @@
 namespace armtrack::gui {
 
 namespace {
-
-const QDate kUnknownDate(1899, 12, 31);  // the date edit's "not given"
 
 /// A length in cm; 0 means "not measured".
 QDoubleSpinBox* lengthBox(QWidget* parent, const QString& name, std::optional<double> metres) {
@@ -55,7 +53,7 @@ PatientDialog::PatientDialog(const storage::Patient& patient, QWidget* parent)
       m_original(patient),
       m_code(new QLineEdit(patient.code, this)),
       m_name(new QLineEdit(patient.name, this)),
-      m_birth(new QDateEdit(this)),
+      m_birth(new BirthDateField(this)),
       m_sex(new QComboBox(this)),
       m_side(new QComboBox(this)),
       m_diagnosis(new QLineEdit(patient.diagnosis, this)),
@@ -76,13 +74,7 @@ PatientDialog::PatientDialog(const storage::Patient& patient, QWidget* parent)
   m_code->setAccessibleName(tr("Patient code"));
   m_code->setPlaceholderText(tr("e.g. P001"));
   m_name->setAccessibleName(tr("Patient name"));
-  m_birth->setAccessibleName(tr("Birth date"));
-  m_birth->setDisplayFormat(reports::fullYearDateFormat(QLocale()));
-  m_birth->setMinimumDate(kUnknownDate);
-  m_birth->setMaximumDate(QDate::currentDate());
-  m_birth->setSpecialValueText(tr("not given"));
-  const QDate born = QDate::fromString(patient.birthDate, Qt::ISODate);
-  m_birth->setDate(born.isValid() ? born : kUnknownDate);
+  m_birth->setDate(QDate::fromString(patient.birthDate, Qt::ISODate));
   m_sex->setAccessibleName(tr("Sex"));
   fillCombo(m_sex, {QString(), QStringLiteral("f"), QStringLiteral("m"), QStringLiteral("x")},
             patient.sex, &PatientTableModel::sexText);
@@ -120,6 +112,25 @@ PatientDialog::PatientDialog(const storage::Patient& patient, QWidget* parent)
   m_buttons->button(QDialogButtonBox::Save)->setDefault(true);
   connect(m_buttons, &QDialogButtonBox::accepted, this, &PatientDialog::submit);
   connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+  // Tab goes down the screen: the patient, the lengths, the notes, the buttons.
+  QWidget* order[] = {m_code,
+                      m_name,
+                      m_birth->lineEdit(),
+                      m_sex,
+                      m_side,
+                      m_diagnosis,
+                      m_upperArm,
+                      m_forearm,
+                      m_upperStrap,
+                      m_forearmStrap,
+                      m_notes,
+                      m_buttons->button(QDialogButtonBox::Save),
+                      m_buttons->button(QDialogButtonBox::Cancel)};
+  for (std::size_t i = 1; i < std::size(order); ++i) setTabOrder(order[i - 1], order[i]);
+  for (auto* edit : {m_code, m_name, m_diagnosis, m_birth->lineEdit()})
+    connect(edit, &QLineEdit::textChanged, this, &PatientDialog::recheck);
+  for (auto* box : {m_upperArm, m_forearm, m_upperStrap, m_forearmStrap})
+    connect(box, &QDoubleSpinBox::valueChanged, this, &PatientDialog::recheck);
   (adding ? static_cast<QWidget*>(m_code) : m_name)->setFocus();
 }
 
@@ -127,7 +138,10 @@ storage::Patient PatientDialog::patient() const {
   storage::Patient p = m_original;
   p.code = m_code->text().trimmed();
   p.name = m_name->text().trimmed();
-  p.birthDate = m_birth->date() == kUnknownDate ? QString() : m_birth->date().toString(Qt::ISODate);
+  // A text that is not a date is passed on as typed, so that no check takes it for "not given".
+  p.birthDate = m_birth->isEmpty()          ? QString()
+                : m_birth->date().isValid() ? m_birth->date().toString(Qt::ISODate)
+                                            : m_birth->text().trimmed();
   p.sex = m_sex->currentData().toString();
   p.affectedSide = m_side->currentData().toString();
   p.diagnosis = m_diagnosis->text().trimmed();
@@ -144,7 +158,7 @@ storage::Patient PatientDialog::patient() const {
 QWidget* PatientDialog::fieldNamed(const QString& field) const {
   if (field == QLatin1String("code")) return m_code;
   if (field == QLatin1String("name")) return m_name;
-  if (field == QLatin1String("birthDate")) return m_birth;
+  if (field == QLatin1String("birthDate")) return m_birth->lineEdit();
   if (field == QLatin1String("upperArm")) return m_upperArm;
   if (field == QLatin1String("forearm")) return m_forearm;
   if (field == QLatin1String("upperStrap")) return m_upperStrap;
@@ -152,22 +166,56 @@ QWidget* PatientDialog::fieldNamed(const QString& field) const {
   return nullptr;
 }
 
-void PatientDialog::submit() {
+QString PatientDialog::problem(QString* field) const {
+  const QDate today = QDate::currentDate();
   const storage::Patient p = patient();
+  // The code and name first, as the form shows them; then the birth date in the words of the
+  // field that was typed into.
+  QString found = patientProblem(p, today, field);
+  if (!found.isEmpty() && (*field == QLatin1String("code") || *field == QLatin1String("name")))
+    return found;
+  if (const QString born = m_birth->problem(today); !born.isEmpty()) {
+    *field = QStringLiteral("birthDate");
+    return born;
+  }
+  return found;
+}
+
+void PatientDialog::recheck() {
+  if (m_problemField.isEmpty()) return;
+  // The records' answer (a code taken) goes when its field is edited; the form's own checks when
+  // they pass.
+  if (!m_problemLocal && sender() != fieldNamed(m_problemField) &&
+      !(m_problemField == QLatin1String("birthDate") && sender() == m_birth->lineEdit()))
+    return;
   QString field;
-  const QString problem = patientProblem(p, QDate::currentDate(), &field);
-  if (!problem.isEmpty()) {
-    m_message->showMessage(problem);
+  const QString now = problem(&field);
+  if (now.isEmpty() || field != m_problemField) {
+    m_problemField.clear();
+    m_message->clear();
+  }
+}
+
+void PatientDialog::submit() {
+  QString field;
+  const QString found = problem(&field);
+  if (!found.isEmpty()) {
+    m_problemField = field;
+    m_problemLocal = true;
+    m_message->showMessage(found);
     if (QWidget* w = fieldNamed(field)) w->setFocus();
     return;
   }
+  m_problemField.clear();
   m_message->showMessage(tr("Saving..."), MessageLine::Kind::Notice);
   m_buttons->setEnabled(false);
-  emit saveRequested(p);
+  emit saveRequested(patient());
 }
 
 void PatientDialog::showError(const QString& message, const QString& field) {
   m_buttons->setEnabled(true);
+  m_problemField = field;  // goes once that field is edited
+  m_problemLocal = false;
   m_message->showMessage(message);
   if (QWidget* w = fieldNamed(field)) w->setFocus();
 }

@@ -8,7 +8,6 @@
 #include "core/storage/Records.h"
 
 class QComboBox;
-class QDateEdit;
 class QDialogButtonBox;
 class QDoubleSpinBox;
 class QLineEdit;
@@ -16,6 +15,7 @@ class QPlainTextEdit;
 
 namespace armtrack::gui {
 
+class BirthDateField;
 class MessageLine;
 
 class PatientDialog : public QDialog {
@@ -36,12 +36,16 @@ class PatientDialog : public QDialog {
 
  private:
   void submit();
+  /// The form's first problem in words (empty: none), *field naming its field.
+  QString problem(QString* field) const;
+  /// After an edit: a shown problem that is mended goes away.
+  void recheck();
   QWidget* fieldNamed(const QString& field) const;
 
   storage::Patient m_original;
   QLineEdit* m_code;
   QLineEdit* m_name;
-  QDateEdit* m_birth;
+  BirthDateField* m_birth;
   QComboBox* m_sex;
   QComboBox* m_side;
   QLineEdit* m_diagnosis;
@@ -52,6 +56,8 @@ class PatientDialog : public QDialog {
   QPlainTextEdit* m_notes;
   MessageLine* m_message;
   QDialogButtonBox* m_buttons;
+  QString m_problemField;       ///< the field the shown problem is about
+  bool m_problemLocal = false;  ///< found by the form (not the records)
 };
 
 }  // namespace armtrack::gui

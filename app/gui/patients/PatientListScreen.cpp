@@ -18,12 +18,71 @@
 
 namespace armtrack::gui {
 
+namespace {
+
+/// text without accents and case: "Müller" -> "muller", "Straße" -> "strasse". With
+/// umlautsSpelled, ä, ö and ü become ae, oe and ue first, as German spells them without the
+/// dots ("Mueller").
+QString searchFold(QString text, bool umlautsSpelled) {
+  if (umlautsSpelled)
+    for (const auto& [from, to] : {std::pair{u"ä", u"ae"},
+                                   {u"ö", u"oe"},
+                                   {u"ü", u"ue"},
+                                   {u"Ä", u"Ae"},
+                                   {u"Ö", u"Oe"},
+                                   {u"Ü", u"Ue"}})
+      text.replace(QString::fromUtf16(from), QString::fromUtf16(to));
+  const QString decomposed = text.normalized(QString::NormalizationForm_KD);
+  QString out;
+  out.reserve(decomposed.size());
+  for (const QChar c : decomposed)
+    if (c.category() != QChar::Mark_NonSpacing) out += c;
+  out = out.toCaseFolded();
+  for (const auto& [from, to] : {std::pair{u"ß", u"ss"},
+                                 {u"ø", u"o"},
+                                 {u"ł", u"l"},
+                                 {u"đ", u"d"},
+                                 {u"æ", u"ae"},
+                                 {u"œ", u"oe"},
+                                 {u"ı", u"i"}})
+    out.replace(QString::fromUtf16(from), QString::fromUtf16(to));
+  return out;
+}
+
+/// Keeps the rows where any column holds the search text, regardless of case and accents:
+/// "muller" and "MULLER" find Müller.
+class PatientSearch : public QSortFilterProxyModel {
+ public:
+  using QSortFilterProxyModel::QSortFilterProxyModel;
+  void setSearch(const QString& text) {
+    m_query = searchFold(text.trimmed(), false);
+    invalidateFilter();
+  }
+
+ protected:
+  bool filterAcceptsRow(int row, const QModelIndex& parent) const override {
+    if (m_query.isEmpty()) return true;
+    const QAbstractItemModel* m = sourceModel();
+    for (int c = 0; c < m->columnCount(parent); ++c) {
+      const QString text = m->index(row, c, parent).data(Qt::DisplayRole).toString();
+      if (searchFold(text, false).contains(m_query) || searchFold(text, true).contains(m_query))
+        return true;
+    }
+    return false;
+  }
+
+ private:
+  QString m_query;
+};
+
+}  // namespace
+
 PatientListScreen::PatientListScreen(RecordsService& records, const QString& select,
                                      QWidget* parent)
     : QWidget(parent),
       m_records(records),
       m_model(new PatientTableModel(this)),
-      m_proxy(new QSortFilterProxyModel(this)),
+      m_proxy(new PatientSearch(this)),
       m_search(new QLineEdit(this)),
       m_table(new QTableView(this)),
       m_open(new QPushButton(this)),
@@ -72,7 +131,8 @@ PatientListScreen::PatientListScreen(RecordsService& records, const QString& sel
   m_add->setVisible(m_canWrite);
   m_edit->setVisible(m_canWrite);
 
-  connect(m_search, &QLineEdit::textChanged, m_proxy, &QSortFilterProxyModel::setFilterFixedString);
+  connect(m_search, &QLineEdit::textChanged, this,
+          [this](const QString& text) { static_cast<PatientSearch*>(m_proxy)->setSearch(text); });
   connect(m_search, &QLineEdit::textChanged, this, [this] {
     // Keep a selection while searching so Enter opens the first match.
     if (!m_table->selectionModel()->hasSelection() && m_proxy->rowCount() > 0)

@@ -8,6 +8,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QScrollArea>
 #include <QSortFilterProxyModel>
@@ -57,6 +58,27 @@ QTableView* plainTable(QAbstractItemModel* model, const QString& name, QWidget* 
   return t;
 }
 
+/// The sessions sorted, with the order in the sorted column's header in words or an arrow (the
+/// style's own indicator draws descending as an upward arrow, which reads as "oldest first").
+class SortedSessions : public QSortFilterProxyModel {
+ public:
+  using QSortFilterProxyModel::QSortFilterProxyModel;
+  QVariant headerData(int section, Qt::Orientation orientation, int role) const override {
+    QVariant v = QSortFilterProxyModel::headerData(section, orientation, role);
+    if (orientation != Qt::Horizontal || role != Qt::DisplayRole || section != sortColumn())
+      return v;
+    const bool up = sortOrder() == Qt::AscendingOrder;
+    if (section == SessionTableModel::Started)
+      return up ? PatientScreen::tr("%1 (oldest first)").arg(v.toString())
+                : PatientScreen::tr("%1 (newest first)").arg(v.toString());
+    return v.toString() + (up ? QStringLiteral(" \u25b2") : QStringLiteral(" \u25bc"));
+  }
+  void sort(int column, Qt::SortOrder order) override {
+    QSortFilterProxyModel::sort(column, order);
+    if (columnCount() > 0) emit headerDataChanged(Qt::Horizontal, 0, columnCount() - 1);
+  }
+};
+
 }  // namespace
 
 PatientScreen::PatientScreen(RecordsService& records, const AppSettings& settings,
@@ -66,20 +88,25 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
       m_settings(settings),
       m_code(code),
       m_canWrite(records.signedIn() && records.user().role != storage::Role::Home),
+      m_canDelete(records.signedIn() && records.user().role == storage::Role::Admin),
       m_title(heading(code, this)),
       m_programme(new QStandardItemModel(this)),
       m_chart(new ProgressChart(this)),
       m_sessions(new SessionTableModel(this)),
-      m_sessionsSorted(new QSortFilterProxyModel(this)),
+      m_sessionsSorted(new SortedSessions(this)),
       m_message(new MessageLine(this)),
       m_newSession(new QPushButton(this)),
       m_review(new QPushButton(this)),
+      m_delete(new QPushButton(this)),
       m_report(new QPushButton(this)),
       m_edit(new QPushButton(this)),
       m_back(new QPushButton(this)) {
   m_chart->setRadians(settings.units == AppSettings::AngleUnit::Radians);
   auto* layout = new QVBoxLayout(this);
   auto* top = new QHBoxLayout;
+  // The heading follows the width (updateTitle() elides the name), so it never holds the window
+  // wider than the screen.
+  m_title->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Preferred);
   top->addWidget(m_title, 1);
   m_back->setShortcut(QKeySequence::Back);
   top->addWidget(m_back);
@@ -133,12 +160,14 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   m_sessionsSorted->setSortRole(Qt::EditRole);
   m_sessionTable = plainTable(m_sessionsSorted, QString(), m_sessionsBox);
   m_sessionTable->setSortingEnabled(true);
+  m_sessionTable->horizontalHeader()->setSortIndicatorShown(false);  // SortedSessions says it
   m_sessionTable->sortByColumn(SessionTableModel::Started, Qt::DescendingOrder);
   sessionsLayout->addWidget(m_sessionTable);
   auto* buttons = new QHBoxLayout;
   buttons->addWidget(m_newSession);
   buttons->addWidget(m_report);
   buttons->addStretch();
+  buttons->addWidget(m_delete);
   buttons->addWidget(m_review);
   sessionsLayout->addLayout(buttons);
   mainLayout->addWidget(m_sessionsBox, 2);
@@ -150,6 +179,8 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   m_review->setDefault(true);
   m_newSession->setVisible(m_canWrite);
   m_edit->setVisible(m_canWrite);
+  m_delete->setVisible(m_canDelete);
+  connect(m_delete, &QPushButton::clicked, this, &PatientScreen::deleteSession);
   connect(m_back, &QPushButton::clicked, this, &PatientScreen::backRequested);
   connect(m_newSession, &QPushButton::clicked, this, [this] { emit newSessionRequested(m_code); });
   connect(m_review, &QPushButton::clicked, this, [this] {
@@ -163,7 +194,8 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   setTabOrder(m_back, m_chart);
   setTabOrder(m_chart, m_sessionTable);
   setTabOrder(m_sessionTable, m_review);
-  setTabOrder(m_review, m_newSession);
+  setTabOrder(m_review, m_delete);
+  setTabOrder(m_delete, m_newSession);
   setTabOrder(m_newSession, m_report);
   setTabOrder(m_report, m_edit);
   setFocusProxy(m_sessionTable);
@@ -179,6 +211,7 @@ void PatientScreen::retranslateUi() {
   m_newSession->setToolTip(tr("Record a new session with this patient (%1)")
                                .arg(m_newSession->shortcut().toString(QKeySequence::NativeText)));
   m_review->setText(tr("&Review session"));
+  m_delete->setText(tr("&Delete session..."));
   m_report->setText(tr("&Progress report (PDF)..."));
   m_edit->setText(tr("&Edit patient..."));
   ui::setButtonText(m_back, tr("&Back to patients"));
@@ -199,6 +232,23 @@ void PatientScreen::retranslateUi() {
   m_sessionTable->setAccessibleName(tr("Sessions"));
   // What was read, in words of the new language (sex, side, the programme's headers).
   if (m_loaded) show(m_overview, true);
+}
+
+void PatientScreen::updateTitle() {
+  if (!m_loaded) return;
+  const storage::Patient& p = m_overview.patient;
+  const QString code = tr("(%1)").arg(p.code);
+  const QFontMetrics fm(m_title->font());
+  const int room = std::max(0, m_title->width() - fm.horizontalAdvance(u' ' + code) - 8);
+  const QString name = fm.elidedText(p.name, Qt::ElideRight, room);
+  m_title->setText(tr("%1 (%2)").arg(name, p.code));
+  m_title->setToolTip(name == p.name ? QString() : p.name);
+  m_title->setAccessibleName(tr("%1 (%2)").arg(p.name, p.code));
+}
+
+void PatientScreen::resizeEvent(QResizeEvent* event) {
+  QWidget::resizeEvent(event);
+  updateTitle();
 }
 
 void PatientScreen::changeEvent(QEvent* event) {
@@ -225,7 +275,7 @@ void PatientScreen::show(const PatientOverview& o, bool again) {
   m_overview = o;
   m_loaded = true;
   const storage::Patient& p = o.patient;
-  m_title->setText(tr("%1 (%2)").arg(p.name, p.code));
+  updateTitle();
   setWindowTitle(p.name);
   const QDate born = QDate::fromString(p.birthDate, Qt::ISODate);
   const QStringList details = {
@@ -290,6 +340,7 @@ qint64 PatientScreen::selectedSession() const {
 
 void PatientScreen::updateButtons() {
   m_review->setEnabled(selectedSession() != 0);
+  m_delete->setEnabled(selectedSession() != 0);
   m_report->setEnabled(!m_overview.sessions.empty());
 }
 
@@ -307,6 +358,48 @@ void PatientScreen::editPatient() {
         [dialog](const RecordsFailure& f) { dialog->showError(f.message); });
   });
   dialog->open();
+}
+
+void PatientScreen::deleteSession() {
+  const qint64 id = selectedSession();
+  if (!id || !m_canDelete) return;
+  QString what = tr("session %1").arg(id);
+  for (const storage::SessionInfo& s : m_overview.sessions)
+    if (s.id == id)
+      what = tr("the session of %1 (%2, %3, session %4)")
+                 .arg(SessionTableModel::localTime(s.startedAt),
+                      s.protocolName.isEmpty() ? tr("free movement") : s.protocolName,
+                      SessionTableModel::durationText(s.durationS))
+                 .arg(id);
+  auto* box = new QMessageBox(
+      QMessageBox::Warning, tr("Delete session"),
+      tr("Delete %1 of %2? Its recording, angles and metrics are removed for good; the audit log "
+         "keeps that you did it.")
+          .arg(what, m_overview.patient.name),
+      QMessageBox::Cancel, this);
+  box->addButton(tr("&Delete"), QMessageBox::DestructiveRole);
+  box->setDefaultButton(QMessageBox::Cancel);  // Enter alone deletes nothing
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  connect(box, &QMessageBox::buttonClicked, this, [this, box, id](QAbstractButton* button) {
+    if (box->buttonRole(button) != QMessageBox::DestructiveRole) return;
+    m_records.call(
+        this, [id](storage::ClinicalStore& s) { s.removeSession(id); },
+        [this, id] {
+          // Said once the page shows the sessions without it (reload() clears the message).
+          auto once = std::make_shared<QMetaObject::Connection>();
+          *once = connect(this, &PatientScreen::loaded, this, [this, id, once] {
+            disconnect(*once);
+            m_message->showMessage([id] { return tr("Session %1 deleted.").arg(id); },
+                                   MessageLine::Kind::Notice);
+          });
+          reload();
+        },
+        [this](const RecordsFailure& f) {
+          m_message->showMessage(
+              [why = f.message] { return tr("The session could not be deleted: %1").arg(why); });
+        });
+  });
+  box->open();
 }
 
 void PatientScreen::askProgressReport() {

@@ -37,6 +37,8 @@ class PatientScreen : public QWidget {
   qint64 selectedSession() const;
   /// Writes the progress report of every session to pdf (a job with progress).
   void writeProgressReport(const QString& pdf);
+  /// Asks whether to delete the selected session (administrators), then deletes it.
+  void deleteSession();
 
  signals:
   void loaded();
@@ -48,8 +50,11 @@ class PatientScreen : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
+  /// The heading: the name elided to the width (whole in the tooltip), the code always shown.
+  void updateTitle();
   void retranslateUi();
   /// Shows what was read; again: the same record in words of a new language (the chart's
   /// angle and the session chosen stay).
@@ -63,6 +68,7 @@ class PatientScreen : public QWidget {
   QString m_code;
   PatientOverview m_overview;
   bool m_canWrite;
+  bool m_canDelete;  ///< administrators: the store lets only them remove sessions
 
   bool m_loaded = false;
   QLabel* m_title;
@@ -83,6 +89,7 @@ class PatientScreen : public QWidget {
   MessageLine* m_message;
   QPushButton* m_newSession;
   QPushButton* m_review;
+  QPushButton* m_delete;
   QPushButton* m_report;
   QPushButton* m_edit;
   QPushButton* m_back;

@@ -29,7 +29,7 @@ class Relay : public QObject {
 // The services' messages start in lower case, as the command line prints them after a colon;
 // on a screen they stand alone.
 QString sentence(const std::string& text) {
-  QString s = QString::fromStdString(text);
+  QString s = withoutSourceReferences(QString::fromStdString(text));
   if (!s.isEmpty()) s[0] = s[0].toUpper();
   return s;
 }

@@ -4,6 +4,7 @@
 
 #include <QObject>
 #include <QPointer>
+#include <QRegularExpression>
 #include <QString>
 #include <atomic>
 #include <functional>
@@ -16,6 +17,15 @@
 #include "core/storage/DatabaseUrl.h"
 
 namespace armtrack::gui {
+
+/// A message of the core without its references to the project's documentation files
+/// ("... (docs/storage.md, \"Files and permissions\")"): the command line's readers have the
+/// sources, the application's users do not.
+inline QString withoutSourceReferences(QString text) {
+  static const QRegularExpression cited(QStringLiteral("\\s*\\((?:see )?docs/[^)]*\\)"));
+  static const QRegularExpression bare(QStringLiteral("\\s*\\bdocs/[\\w./-]+\\.md\\b"));
+  return text.remove(cited).remove(bare);
+}
 
 /// Why a records call failed, in words for the user.
 struct RecordsFailure {

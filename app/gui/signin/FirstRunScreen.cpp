@@ -98,8 +98,9 @@ void FirstRunScreen::retranslateUi() {
   setHeading(m_heading, tr("Welcome to ArmTrack"));
   m_intro->setText(
       tr("ArmTrack keeps its patients, sessions and recordings in one database. Choose where it "
-         "lives and create the administrator account; the administrator can then add the "
-         "therapists' accounts."));
+         "lives and create the administrator account; the administrator then adds the "
+         "therapists' accounts, the protocols and the home programmes under ArmTrack > "
+         "Administration."));
   m_where->setTitle(tr("Where the data lives"));
   m_browse->setText(tr("&Browse..."));
   m_folder->setAccessibleName(tr("Data folder"));

@@ -102,9 +102,11 @@ void SignInScreen::setBusy(bool busy) {
 QString SignInScreen::refusalText(const QString& message) const {
   // core/storage words its refusals in English for the command line and the audit log.
   static const QRegularExpression waitRe(QStringLiteral("try again in (\\d+) s"));
-  if (const auto wait = waitRe.match(message); wait.hasMatch())
-    return tr("Too many wrong passwords for this account: wait %n s, then try again.", nullptr,
-              wait.captured(1).toInt());
+  if (waitRe.match(message).hasMatch())  // counted down each second
+    return m_waitLeft > 0
+               ? tr("Too many wrong passwords for this account: wait %n s, then try again.",
+                    nullptr, m_waitLeft)
+               : tr("Too many wrong passwords for this account. You may try again now.");
   if (message.startsWith(QLatin1String("wrong user name or password"), Qt::CaseInsensitive))
     return tr("Wrong user name or password.") + u'\n' +
            tr("Check the name and the password (is Caps Lock on?) and try again. If you have "
@@ -120,6 +122,7 @@ void SignInScreen::showError(const QString& message) {
   m_message->showMessage([this, message] { return refusalText(message); });
   m_password->setFocus();
   m_password->selectAll();
+  m_refusal = message;
   if (m_waitLeft > 0) {
     m_signIn->setEnabled(false);
     updateButtonText();
@@ -128,13 +131,13 @@ void SignInScreen::showError(const QString& message) {
 }
 
 void SignInScreen::tick() {
-  if (--m_waitLeft > 0) {
-    updateButtonText();
-    return;
-  }
-  m_wait.stop();
-  m_waitLeft = 0;
+  m_waitLeft = std::max(0, m_waitLeft - 1);
+  // The message counts down with the button.
+  m_message->showMessage([this, message = m_refusal] { return refusalText(message); },
+                         m_waitLeft > 0 ? MessageLine::Kind::Error : MessageLine::Kind::Notice);
   updateButtonText();
+  if (m_waitLeft > 0) return;
+  m_wait.stop();
   m_signIn->setEnabled(m_name->isEnabled());
 }
 

@@ -52,6 +52,7 @@ class SignInScreen : public QWidget {
   QPushButton* m_signIn;
   QTimer m_wait;
   int m_waitLeft = 0;  // s
+  QString m_refusal;   // the store's last refusal, as it said it
 };
 
 }  // namespace armtrack::gui

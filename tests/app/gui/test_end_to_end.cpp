@@ -5,7 +5,6 @@
 // patient's name). Every main screen is grabbed from the X server into the screenshot folder:
 // docs/user-guide.md embeds them (ARMTRACK_SCREENSHOT_DIR=docs/images, see the guide).
 #include <QDate>
-#include <QDateEdit>
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
@@ -103,7 +102,7 @@ class TestEndToEnd : public QObject {
     QTRY_VERIFY((d = screen()->findChild<PatientDialog*>()) != nullptr);
     typeInto(findControl<QLineEdit>(d, QStringLiteral("Patient code")), QStringLiteral("P100"));
     typeInto(findControl<QLineEdit>(d, QStringLiteral("Patient name")), QStringLiteral("Eva Ende"));
-    findControl<QDateEdit>(d, QStringLiteral("Birth date"))->setDate(QDate(1948, 6, 3));
+    typeInto(findControl<QLineEdit>(d, QStringLiteral("Birth date")), QStringLiteral("1948-06-03"));
     typeInto(findControl<QLineEdit>(d, QStringLiteral("Diagnosis")),
              QStringLiteral("Stroke, left hemisphere"));
     findControl<QDoubleSpinBox>(d, QStringLiteral("Upper arm length"))->setValue(22);
@@ -118,6 +117,7 @@ class TestEndToEnd : public QObject {
                     Qt::Key_Return);
     QTRY_VERIFY(current<PatientScreen>());
     QTRY_COMPARE(current<PatientScreen>()->overview().patient.name, QStringLiteral("Eva Ende"));
+    QCOMPARE(current<PatientScreen>()->overview().patient.birthDate, QStringLiteral("1948-06-03"));
   }
 
   void recordsA20SecondSession() {

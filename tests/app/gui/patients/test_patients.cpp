@@ -5,7 +5,6 @@
 #include <QAreaSeries>
 #include <QChart>
 #include <QComboBox>
-#include <QDateEdit>
 #include <QDoubleSpinBox>
 #include <QLineSeries>
 #include <QPlainTextEdit>
