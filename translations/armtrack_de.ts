@@ -2676,6 +2676,46 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Account %1 removed.</source>
         <translation>Konto %1 entfernt.</translation>
     </message>
+    <message>
+        <source>&amp;Enable account</source>
+        <translation>Konto &amp;freigeben</translation>
+    </message>
+    <message>
+        <source>D&amp;isable account...</source>
+        <translation>Konto &amp;sperren...</translation>
+    </message>
+    <message>
+        <source>Disabled</source>
+        <translation>Gesperrt</translation>
+    </message>
+    <message>
+        <source>Active</source>
+        <translation>Aktiv</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+    <message>
+        <source>Choose the account to disable or enable.</source>
+        <translation>Wählen Sie das Konto, das gesperrt oder freigegeben werden soll.</translation>
+    </message>
+    <message>
+        <source>Account %1 disabled: it can no longer sign in. Its sessions and history keep its name.</source>
+        <translation>Konto %1 gesperrt: Es kann sich nicht mehr anmelden. Seine Sitzungen und sein Verlauf behalten den Namen.</translation>
+    </message>
+    <message>
+        <source>Account %1 enabled: it can sign in again.</source>
+        <translation>Konto %1 freigegeben: Es kann sich wieder anmelden.</translation>
+    </message>
+    <message>
+        <source>Disable account</source>
+        <translation>Konto sperren</translation>
+    </message>
+    <message>
+        <source>Disable the account %1? It can no longer sign in until an administrator enables it again. Its sessions and history stay, under its name.</source>
+        <translation>Das Konto %1 sperren? Es kann sich nicht mehr anmelden, bis ein Administrator es wieder freigibt. Seine Sitzungen und sein Verlauf bleiben unter seinem Namen erhalten.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::AdminScreen</name>

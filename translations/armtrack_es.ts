@@ -2676,6 +2676,46 @@ Puede recalcularla desde su revisión.</translation>
         <source>Account %1 removed.</source>
         <translation>Cuenta %1 quitada.</translation>
     </message>
+    <message>
+        <source>&amp;Enable account</source>
+        <translation>&amp;Habilitar cuenta</translation>
+    </message>
+    <message>
+        <source>D&amp;isable account...</source>
+        <translation>&amp;Deshabilitar cuenta...</translation>
+    </message>
+    <message>
+        <source>Disabled</source>
+        <translation>Deshabilitada</translation>
+    </message>
+    <message>
+        <source>Active</source>
+        <translation>Activa</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+    <message>
+        <source>Choose the account to disable or enable.</source>
+        <translation>Elija la cuenta que desea deshabilitar o habilitar.</translation>
+    </message>
+    <message>
+        <source>Account %1 disabled: it can no longer sign in. Its sessions and history keep its name.</source>
+        <translation>Cuenta %1 deshabilitada: ya no puede iniciar sesión. Sus sesiones y su historial conservan su nombre.</translation>
+    </message>
+    <message>
+        <source>Account %1 enabled: it can sign in again.</source>
+        <translation>Cuenta %1 habilitada: puede volver a iniciar sesión.</translation>
+    </message>
+    <message>
+        <source>Disable account</source>
+        <translation>Deshabilitar cuenta</translation>
+    </message>
+    <message>
+        <source>Disable the account %1? It can no longer sign in until an administrator enables it again. Its sessions and history stay, under its name.</source>
+        <translation>¿Deshabilitar la cuenta %1? No podrá iniciar sesión hasta que un administrador la habilite de nuevo. Sus sesiones y su historial se conservan, con su nombre.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::AdminScreen</name>

@@ -37,13 +37,20 @@ database, postgresql://ROLE@HOST:PORT/DATABASE (its password from ARMTRACK_DB_PA
 ~/.pgpass; docs/storage.md). Default: armtrack.db in the application data folder.
 )";
 
-constexpr std::string_view kUserHelp = R"(Usage: armtrack-cli user <add|list> [options]
+constexpr std::string_view kUserHelp =
+    R"(Usage: armtrack-cli user <add|list|disable|enable> [options]
 
   user add NAME --role admin|therapist|home [--patient CODE] --user ADMIN
                             a new account; its password (at least 10 characters) comes from
                             ARMTRACK_NEW_PASSWORD (or a prompt); a home account needs its
                             patient. Names are unique without regard to case
   user list [--json] --user ADMIN
+                            every account, its role and whether it is disabled
+  user disable NAME --user ADMIN
+                            the account may no longer sign in; its sessions and audit
+                            entries keep its name (an administrator cannot disable itself)
+  user enable NAME --user ADMIN
+                            lets a disabled account sign in again
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -181,11 +188,33 @@ int userList(const std::vector<std::string>& rest, std::ostream& out, std::ostre
   ClinicalContext c(a, {}, true);
   QJsonArray list;
   for (const storage::User& u : c.store().listUsers()) {
-    if (!a.flag("--json")) out << line(u.name) << "\t" << ss(storage::roleName(u.role)) << "\n";
-    list.append(QJsonObject{{"name", u.name}, {"role", storage::roleName(u.role)}});
+    if (!a.flag("--json"))
+      out << line(u.name) << "\t" << ss(storage::roleName(u.role))
+          << (u.disabled ? "\tdisabled" : "") << "\n";
+    list.append(QJsonObject{
+        {"name", u.name}, {"role", storage::roleName(u.role)}, {"disabled", u.disabled}});
   }
   if (a.flag("--json")) printJson(out, QJsonDocument(list));
   return 0;
+}
+
+int userSetDisabled(const char* command, bool disabled, const std::vector<std::string>& rest,
+                    std::ostream& out, std::ostream& err) {
+  const Args a(command, rest, withDb({}));
+  if (a.help()) return out << kUserHelp, 0;
+  const std::string name = a.single("account name");
+  ClinicalContext c(a, {}, true);
+  c.store().setUserDisabled(qs(name), disabled);
+  err << command << ": " << line(qs(name)) << "\n";
+  return 0;
+}
+
+int userDisable(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  return userSetDisabled("user disable", true, rest, out, err);
+}
+
+int userEnable(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  return userSetDisabled("user enable", false, rest, out, err);
 }
 
 int patientAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
@@ -307,8 +336,8 @@ int dbCommand(const std::vector<std::string>& args, std::ostream& out, std::ostr
 }
 
 int userCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, SubcommandFn>> table{{"add", userAdd},
-                                                                       {"list", userList}};
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{
+      {"add", userAdd}, {"list", userList}, {"disable", userDisable}, {"enable", userEnable}};
   return dispatchSubcommand("user", kUserHelp, args, out, err, table);
 }
 

@@ -61,6 +61,10 @@ class ClinicalStore {
   std::vector<User> listUsers();
   /// An administrator's, or the account's own, password change.
   void setPassword(const QString& name, const std::string& password);
+  /// Admin only. A disabled account keeps its name, sessions and audit entries but cannot sign
+  /// in (signIn refuses it after checking the password); enabling it lets it in again. An
+  /// administrator cannot disable itself. Audited when it changes something.
+  void setUserDisabled(const QString& name, bool disabled);
   void removeUser(const QString& name);
 
   // The whole database (administrators), audited.

@@ -47,10 +47,11 @@ User userFrom(const QSqlQuery& q) {
   u.role = parseRole(q.value(2).toString()).value_or(Role::Home);
   if (!q.value(3).isNull()) u.patientId = q.value(3).toLongLong();
   u.failedAttempts = q.value(4).toInt();
+  u.disabled = q.value(5).toInt() != 0;
   return u;
 }
 
-const QString kUserColumns = "id, name, role, patient_id, failed_attempts";
+const QString kUserColumns = "id, name, role, patient_id, failed_attempts, disabled";
 
 /// Seconds still to wait after failures consecutive wrong passwords, the last at lastFailed:
 /// 2^(n-3) s after the third (at most kMaxWaitSeconds); 0 when none.
@@ -124,8 +125,8 @@ const User& ClinicalStore::signIn(const QString& name, const std::string& passwo
   QDateTime lastFailed;
   if (known) {
     u = userFrom(q);
-    hash = q.value(5).toString().toStdString();
-    lastFailed = QDateTime::fromString(q.value(6).toString(), Qt::ISODateWithMs);
+    hash = q.value(6).toString().toStdString();
+    lastFailed = QDateTime::fromString(q.value(7).toString(), Qt::ISODateWithMs);
   }
   q.finish();
   QSqlQuery f = m_db.exec(
@@ -158,6 +159,13 @@ const User& ClinicalStore::signIn(const QString& name, const std::string& passwo
       appendAudit(m_db, {who, "sign-in-failed", "user", who, why});
     });
     throw StorageError(Kind::Authentication, refused);
+  }
+  // Only after the password: a stranger learns no more about a disabled name than any other.
+  if (u.disabled) {
+    appendAudit(m_db, {u.name, "sign-in-failed", "user", u.name, "account disabled"});
+    throw StorageError(
+        Kind::Authentication,
+        "the account " + quoted(u.name) + " is disabled: an administrator can enable it again");
   }
   if (u.failedAttempts != 0) {
     m_db.exec("UPDATE users SET failed_attempts = 0, last_failed_at = NULL WHERE id = ?", {u.id});
@@ -255,6 +263,24 @@ void ClinicalStore::setPassword(const QString& name, const std::string& password
         "WHERE id = ?",
         {hash, id});
     audit("update", "user", stored, "password");
+  });
+}
+
+void ClinicalStore::setUserDisabled(const QString& name, bool disabled) {
+  require(user().role == Role::Admin, disabled ? "disable accounts" : "enable accounts");
+  if (disabled && nameKey(name) == nameKey(user().name))
+    throw StorageError(Kind::Usage, "an administrator cannot disable itself");
+  QSqlQuery q =
+      m_db.exec("SELECT id, name, disabled FROM users WHERE name_key = ?", {nameKey(name)});
+  if (!q.next()) throw StorageError(Kind::NotFound, "no account " + quoted(name));
+  const qint64 id = q.value(0).toLongLong();
+  const QString stored = q.value(1).toString();
+  const bool was = q.value(2).toInt() != 0;
+  q.finish();
+  if (was == disabled) return;  // nothing to change, nothing to audit
+  m_db.transaction([&] {
+    m_db.exec("UPDATE users SET disabled = ? WHERE id = ?", {disabled ? 1 : 0, id});
+    audit("update", "user", stored, disabled ? "disabled" : "enabled");
   });
 }
 

@@ -19,6 +19,7 @@ struct User {
   Role role = Role::Therapist;
   std::optional<qint64> patientId;  ///< home accounts only: the one patient they may see
   int failedAttempts = 0;           ///< consecutive wrong passwords
+  bool disabled = false;            ///< may not sign in (ClinicalStore::setUserDisabled)
 };
 
 struct Patient {

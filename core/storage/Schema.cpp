@@ -223,6 +223,14 @@ const std::vector<MigrationStep>& migrationSteps() {
          addNameKeys(db);  // first: it audits the names it renames, which are then chained
          chainAuditLogAndMakeItAppendOnly(db);
        }},
+      // An account that must no longer sign in (a therapist who left, a patient who finished)
+      // is disabled rather than removed: the sessions it recorded and the audit log go on
+      // naming it, and an administrator can enable it again.
+      {7,
+       "accounts can be disabled",
+       {"ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0 "
+        "CHECK (disabled IN (0, 1))"},
+       {}},
   };
   return steps;
 }

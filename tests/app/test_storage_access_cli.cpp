@@ -116,6 +116,35 @@ TEST_P(AccessCli, DbMigrateByATherapistIsRefusedAndAudited) {
   EXPECT_EQ(audited("migrate").size(), 1u);
 }
 
+// Issue 25, item 12: `user disable` and `user enable`, for administrators only; a disabled
+// account is refused with a message that says what to do, and `user list` shows it.
+TEST_P(AccessCli, ADisabledAccountIsRefusedUntilEnabled) {
+  addAccounts();
+  const Result byTherapist = run({"user", "disable", "home1"}, "thera", kPass);
+  EXPECT_EQ(byTherapist.code, 1);
+  EXPECT_NE(byTherapist.err.find("may not disable accounts"), std::string::npos) << byTherapist.err;
+  EXPECT_EQ(run({"user", "disable", "THERA"}).code, 0);
+  const Result refused = run({"patient", "list"}, "thera", kPass);
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_NE(refused.err.find("'thera' is disabled: an administrator can enable it again"),
+            std::string::npos)
+      << refused.err;
+  const Result listed = run({"user", "list", "--json"});
+  ASSERT_EQ(listed.code, 0) << listed.err;
+  bool seen = false;
+  for (const QJsonValue& v : QJsonDocument::fromJson(QByteArray::fromStdString(listed.out)).array())
+    if (v.toObject()["name"].toString() == "thera") {
+      seen = true;
+      EXPECT_TRUE(v.toObject()["disabled"].toBool());
+    }
+  EXPECT_TRUE(seen) << listed.out;
+  const Result self = run({"user", "disable", "boss"});
+  EXPECT_EQ(self.code, 1);
+  EXPECT_NE(self.err.find("cannot disable itself"), std::string::npos) << self.err;
+  EXPECT_EQ(run({"user", "enable", "thera"}).code, 0);
+  EXPECT_EQ(run({"patient", "list"}, "thera", kPass).code, 0);
+}
+
 // Issue 24, item 12: one-character passwords were accepted.
 TEST_P(AccessCli, NewPasswordsNeedTenCharacters) {
   addPatients();

@@ -1,5 +1,5 @@
-// The accounts page of the administrator's screen (the CLI's `user add`, `user list`; the store's
-// setPassword and removeUser).
+// The accounts page of the administrator's screen (the CLI's `user add`, `user list`,
+// `user disable`, `user enable`; the store's setPassword and removeUser).
 #include <QPushButton>
 #include <QTableWidget>
 
@@ -20,10 +20,13 @@ AccountsPage::AccountsPage(RecordsService& records, QWidget* parent)
     : AdminPage(records, parent),
       m_add(addButton()),
       m_password(addButton()),
+      m_disable(addButton()),
       m_remove(addButton()) {
   connect(m_add, &QPushButton::clicked, this, &AccountsPage::addAccount);
   connect(m_password, &QPushButton::clicked, this, &AccountsPage::resetPassword);
+  connect(m_disable, &QPushButton::clicked, this, &AccountsPage::toggleDisabled);
   connect(m_remove, &QPushButton::clicked, this, &AccountsPage::removeAccount);
+  connect(m_table, &QTableWidget::itemSelectionChanged, this, &AccountsPage::updateDisableButton);
   retranslateUi();
   reload();
 }
@@ -33,6 +36,19 @@ void AccountsPage::retranslateUi() {
   m_add->setText(tr("&Add account..."));
   m_password->setText(tr("Reset &password..."));
   m_remove->setText(tr("Re&move account..."));
+  updateDisableButton();
+}
+
+const storage::User* AccountsPage::selectedUser() const {
+  const QString name = selectedKey();
+  for (const storage::User& u : m_users)
+    if (!name.isEmpty() && u.name == name) return &u;
+  return nullptr;
+}
+
+void AccountsPage::updateDisableButton() {
+  const storage::User* u = selectedUser();
+  m_disable->setText(u && u->disabled ? tr("&Enable account") : tr("D&isable account..."));
 }
 
 void AccountsPage::reload() {
@@ -49,9 +65,11 @@ void AccountsPage::reload() {
           QString patient;
           for (const storage::Patient& p : m_patients)
             if (u.patientId && p.id == *u.patientId) patient = tr("%1 - %2").arg(p.code, p.name);
-          rows.push_back({u.name, roleText(u.role), patient});
+          rows.push_back(
+              {u.name, roleText(u.role), patient, u.disabled ? tr("Disabled") : tr("Active")});
         }
-        fill({tr("Name"), tr("Role"), tr("Patient (home accounts)")}, rows, {});
+        fill({tr("Name"), tr("Role"), tr("Patient (home accounts)"), tr("Status")}, rows, {});
+        updateDisableButton();
         emit loaded();
       },
       [this](const RecordsFailure& f) { failed(f.message); });
@@ -95,6 +113,31 @@ void AccountsPage::resetPassword() {
         [dialog](const RecordsFailure& f) { dialog->showError(f.message); });
   });
   dialog->open();
+}
+
+void AccountsPage::toggleDisabled() {
+  const storage::User* u = selectedUser();
+  if (!u) return failed(tr("Choose the account to disable or enable."));
+  const QString name = u->name;
+  const bool disable = !u->disabled;
+  auto apply = [this, name, disable] {
+    m_records.call(
+        this, [name, disable](storage::ClinicalStore& s) { s.setUserDisabled(name, disable); },
+        [this, name, disable] {
+          done(disable ? tr("Account %1 disabled: it can no longer sign in. Its sessions and "
+                            "history keep its name.")
+                             .arg(name)
+                       : tr("Account %1 enabled: it can sign in again.").arg(name));
+          reload();
+        },
+        [this](const RecordsFailure& f) { failed(f.message); });
+  };
+  if (!disable) return apply();
+  confirm(tr("Disable account"),
+          tr("Disable the account %1? It can no longer sign in until an administrator enables "
+             "it again. Its sessions and history stay, under its name.")
+              .arg(name),
+          apply);
 }
 
 void AccountsPage::removeAccount() {

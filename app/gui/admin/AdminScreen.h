@@ -62,16 +62,24 @@ class AccountsPage : public AdminPage {
   void reload() override;
   void addAccount();
   void resetPassword();
+  /// Disables the selected account, or enables it when it is disabled.
+  void toggleDisabled();
   void removeAccount();
 
  protected:
   void retranslateUi() override;
 
  private:
+  /// The selected account, if any.
+  const storage::User* selectedUser() const;
+  /// The disable button's text for the selected account.
+  void updateDisableButton();
+
   std::vector<storage::User> m_users;
   std::vector<storage::Patient> m_patients;
   QPushButton* m_add;
   QPushButton* m_password;
+  QPushButton* m_disable;
   QPushButton* m_remove;
 };
 

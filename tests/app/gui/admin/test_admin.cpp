@@ -1,10 +1,10 @@
 // The administrator's screens through the real window, keyboard and mouse as a person uses them,
 // on a fresh clinic (one administrator, one patient): a therapist and a home account added (a
 // short password, differing passwords and a taken name refused in words, nothing typed lost), a
-// password reset, an account removed after a confirmation; a protocol added and edited; an
-// exercise put in the patient's home programme. What the screens stored is read back with the
-// store itself, the audit log included; then the new therapist signs in and the new protocol is
-// offered in a new session. Therapists do not see the administration.
+// password reset, an account removed after a confirmation, one disabled and enabled again; a
+// protocol added and edited; an exercise put in the patient's home programme. What the screens
+// stored is read back with the store itself, the audit log included; then the new therapist signs
+// in and the new protocol is offered in a new session. Therapists do not see the administration.
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -28,6 +28,7 @@
 #include "app/gui/patients/PatientScreen.h"
 #include "app/gui/signin/SignInScreen.h"
 #include "core/storage/Database.h"
+#include "core/storage/StorageError.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 
 using namespace armtrack;
@@ -247,6 +248,41 @@ class TestAdmin : public QObject {
     QTRY_VERIFY(message(page).contains(QStringLiteral("cannot remove itself")));
   }
 
+  // Issue 25, item 12: accounts could not be disabled. Disabling asks first, the table says
+  // so, the account cannot sign in (in words), and enabling lets it in again.
+  void disableThenEnableTheTherapist() {
+    auto* page = adminScreen()->accounts();
+    const auto status = [&] {
+      const int row = static_cast<int>(column(page->table(), 0).indexOf(kTherapist));
+      return row < 0 ? QString() : page->table()->item(row, 3)->text();
+    };
+    const auto signInError = [&]() -> QString {
+      storage::Database db(m_url, {});
+      storage::ClinicalStore store(db);
+      try {
+        store.signIn(kTherapist, kTherapistPassword.toStdString());
+        return {};
+      } catch (const storage::StorageError& e) {
+        return QString::fromStdString(e.what());
+      }
+    };
+    QTRY_COMPARE(status(), QStringLiteral("Active"));
+    QVERIFY(selectRow(page->table(), kTherapist));
+    QTest::mouseClick(findControl<QPushButton>(page, QStringLiteral("Disable account...")),
+                      Qt::LeftButton);
+    QMessageBox* box = nullptr;
+    QTRY_VERIFY((box = page->findChild<QMessageBox*>()) && box->isVisible());
+    QVERIFY(box->text().contains(kTherapist));
+    box->button(QMessageBox::Yes)->click();
+    QTRY_COMPARE(status(), QStringLiteral("Disabled"));
+    QVERIFY2(signInError().contains(QStringLiteral("is disabled")), qPrintable(signInError()));
+    QVERIFY(selectRow(page->table(), kTherapist));
+    QTest::mouseClick(findControl<QPushButton>(page, QStringLiteral("Enable account")),
+                      Qt::LeftButton);
+    QTRY_COMPARE(status(), QStringLiteral("Active"));
+    QVERIFY2(signInError().isEmpty(), qPrintable(signInError()));
+  }
+
   void aFreshClinicsNewSessionSaysWhereProtocolsComeFrom() {
     m_app->startNewSession(QStringLiteral("P001"));
     QTRY_VERIFY(qobject_cast<NewSessionScreen*>(screen()));
@@ -346,6 +382,7 @@ class TestAdmin : public QObject {
     QVERIFY(has(QStringLiteral("create"), QStringLiteral("user"), kTherapist));
     QVERIFY(has(QStringLiteral("update"), QStringLiteral("user"), QStringLiteral("ada-home")));
     QVERIFY(has(QStringLiteral("delete"), QStringLiteral("user"), QStringLiteral("ada-home")));
+    QVERIFY(has(QStringLiteral("update"), QStringLiteral("user"), kTherapist));  // disabled
     QVERIFY(
         has(QStringLiteral("create"), QStringLiteral("protocol"), QStringLiteral("Reach forward")));
     QVERIFY(
