@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
+#include "app/gui/services/HomeExerciseRules.h"
 #include "app/gui/services/HomeRecords.h"
 #include "app/gui/services/LiveSessionConfig.h"
 #include "core/metrics/ExerciseFeedback.h"
@@ -111,8 +112,8 @@ class ExerciseScreen : public HomeScreen {
   int m_set = 1;
   bool m_measured = true;
   bool m_stopForToday = false;
-  bool m_closing = false;    // the window is closing: the session is interrupted
-  double m_blindSince = -1;  // session time the heading began resting on the start pose
+  bool m_closing = false;  // the window is closing: the session is interrupted
+  HeadingTrust m_trust;    // whether the exercise's angle can be shown now
   double m_lastT = 0;
   QElapsedTimer m_clock;  // the demonstration's time, and the rest's
   double m_restLeftS = 0;
