@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "app/gui/home/ExerciseFraming.h"
 #include "app/gui/home/ExerciseRecording.h"
 #include "app/gui/home/FeedbackSound.h"
 #include "app/gui/home/HomeStyle.h"
@@ -114,6 +115,12 @@ void ExerciseScreen::buildLayout() {
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
   m_arm->setRefreshRate(0);
   m_arm->setPose(m_demo.at(0).th);
+  // The view holds the light arm all the way: a shoulder raised high leaves the default framing.
+  std::vector<JointVector> reach;
+  for (double t = 0; t <= 6.0; t += 0.1) reach.push_back(m_demo.at(t).th);
+  m_arm->resetView();
+  m_arm->setCamera(
+      fitView(m_arm->camera(), reachOf(m_config.meta.geometry, m_config.meta.side, reach)));
   root->addWidget(m_arm, 3);
 
   connect(m_primary, &QPushButton::clicked, this, [this] {
@@ -320,6 +327,10 @@ void ExerciseScreen::escapePressed() {
 
 void ExerciseScreen::cutShort() {
   m_closing = true;
+  finish(true, true);
+}
+
+void ExerciseScreen::stopAndSave() {
   finish(true, true);
 }
 

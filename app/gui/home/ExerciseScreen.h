@@ -71,8 +71,12 @@ class ExerciseScreen : public HomeScreen {
   void escapePressed() override;
 
  public slots:
-  /// Ends the exercise now (the window closes): the session is finished as interrupted.
+  /// Ends the exercise now (the application ends without asking): the session is finished as
+  /// interrupted.
   void cutShort();
+  /// Ends the exercise now as "Stop for today" does (the patient chose to close the window):
+  /// the session is finished complete, with what was done, and analysed like any other.
+  void stopAndSave();
 
  signals:
   /// The exercise is over and its session finished in the records. stopForToday: the patient

@@ -37,6 +37,7 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
   m_banner = bodyText({}, this);
   m_banner->hide();
   m_picture = new StrapPicture(this);
+  m_picture->setSide(m_config.meta.side);
   m_start = bigButton(tr("&Start the check"), this, true);
   m_goOn = bigButton(tr("&Go on"), this, true);
   m_skip = bigButton(tr("S&kip the check"), this);
