@@ -291,7 +291,7 @@ class TestHomeMode : public QObject {
             if (s.id == id) return s.analysis == QLatin1String(storage::kAnalysisDone);
           return false;
         }(),
-        2 * kSlowMs);
+        kSlowMs);
   }
 
   void completesTheProgrammeWithOneSwitch() {
