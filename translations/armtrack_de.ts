@@ -166,6 +166,14 @@
         <source>Reprojection error %L1 px over %2 views; fx %L3, fy %L4 px.</source>
         <translation>Rückprojektionsfehler %L1 px über %2 Ansichten; fx %L3, fy %L4 px.</translation>
     </message>
+    <message>
+        <source>No device among those chosen gives webcam images or marker pixels: nothing to calibrate here.</source>
+        <translation>Keines der gewählten Geräte liefert Webcam-Bilder oder Markerpixel: hier gibt es nichts zu kalibrieren.</translation>
+    </message>
+    <message>
+        <source>The webcam of %1 brings its own camera model (it is simulated or replayed), so there is no chessboard to show it: nothing to calibrate here.</source>
+        <translation>Die Webcam von %1 bringt ihr eigenes Kameramodell mit (sie ist simuliert oder wiedergegeben), daher kann man ihr kein Schachbrett zeigen: hier gibt es nichts zu kalibrieren.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::CameraCalibrationWorker</name>
@@ -259,6 +267,10 @@
     <message>
         <source>Battery: %1.</source>
         <translation>Akku: %1.</translation>
+    </message>
+    <message>
+        <source>The angles keep following the arm: move it and check them, then go on (or stop the check).</source>
+        <translation>Die Winkel folgen dem Arm weiter: bewegen Sie ihn und prüfen Sie sie, dann gehen Sie weiter (oder beenden Sie die Prüfung).</translation>
     </message>
 </context>
 <context>
@@ -623,6 +635,26 @@
         <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
         <translation>Der Patient sitzt aufrecht, beide Sensoren sind angelegt. Auf „Starten“ drücken und dann etwa eine Minute lang den Anweisungen auf dem Bildschirm folgen.</translation>
     </message>
+    <message>
+        <source>Done: the calibration is good.</source>
+        <translation>Fertig: die Kalibrierung ist gut.</translation>
+    </message>
+    <message>
+        <source>Done: the calibration can be used. If you have a minute, press Redo for a better one.</source>
+        <translation>Fertig: die Kalibrierung ist brauchbar. Wenn Sie eine Minute Zeit haben, drücken Sie Wiederholen für eine bessere.</translation>
+    </message>
+    <message>
+        <source>That did not work this time. Check that both straps are tight, then press Redo and follow the screen again, or go on without it.</source>
+        <translation>Das hat diesmal nicht geklappt. Prüfen Sie, ob beide Bänder fest sitzen, drücken Sie dann Wiederholen und folgen Sie wieder dem Bildschirm, oder machen Sie ohne sie weiter.</translation>
+    </message>
+    <message>
+        <source>You can relax.</source>
+        <translation>Sie können sich entspannen.</translation>
+    </message>
+    <message>
+        <source>You can relax. ArmTrack is working this out; it takes a few seconds.</source>
+        <translation>Sie können sich entspannen. ArmTrack rechnet das jetzt aus; das dauert einige Sekunden.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>
@@ -774,6 +806,12 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>Earlier sessions could not be analysed now: %1</source>
         <translation>Frühere Sitzungen konnten jetzt nicht ausgewertet werden: %1</translation>
     </message>
+    <message>
+        <source>Session %1 was too short to analyse: %2 s were recorded, and at least %3 s are needed. It is kept, marked as too short.
+To measure the movement, start a new session, press Record, let the patient do the movement, then press Stop.</source>
+        <translation>Sitzung %1 war zu kurz für eine Auswertung: %2 s wurden aufgezeichnet, mindestens %3 s sind nötig. Sie bleibt gespeichert und ist als zu kurz markiert.
+Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehmen, lassen Sie den Patienten die Bewegung machen und drücken Sie dann Beenden.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::BirthDateField</name>
@@ -808,6 +846,29 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Calendar</source>
         <translation>Kalender</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::CloseWhileRecording</name>
+    <message>
+        <source>A recording is under way</source>
+        <translation>Eine Aufnahme läuft</translation>
+    </message>
+    <message>
+        <source>Stop the recording and save the session before closing?</source>
+        <translation>Die Aufnahme beenden und die Sitzung vor dem Schließen speichern?</translation>
+    </message>
+    <message>
+        <source>Stop and save ends the session as the Stop button does and closes ArmTrack; the session is analysed when ArmTrack next starts. Keep recording goes back to the session.</source>
+        <translation>Stoppen und speichern beendet die Sitzung wie die Taste Beenden und schließt ArmTrack; die Sitzung wird beim nächsten Start von ArmTrack ausgewertet. Weiter aufnehmen kehrt zur Sitzung zurück.</translation>
+    </message>
+    <message>
+        <source>&amp;Stop and save</source>
+        <translation>&amp;Stoppen und speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Keep recording</source>
+        <translation>&amp;Weiter aufnehmen</translation>
     </message>
 </context>
 <context>
@@ -1064,10 +1125,6 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
     <message>
         <source>Hold the printed chessboard in front of the webcam in different places and angles until the grid is covered.</source>
         <translation>Das gedruckte Schachbrett an verschiedenen Stellen und in verschiedenen Winkeln vor die Webcam halten, bis das Raster abgedeckt ist.</translation>
-    </message>
-    <message>
-        <source>No webcam among the devices: nothing to calibrate here.</source>
-        <translation>Keine Webcam unter den Geräten: hier gibt es nichts zu kalibrieren.</translation>
     </message>
     <message>
         <source>Skip the camera calibration (use the camera&apos;s stored model)</source>
@@ -3357,6 +3414,26 @@ Sie können sie in ihrer Auswertung neu berechnen.</translation>
         <source>&amp;Go on without it</source>
         <translation>&amp;Ohne sie weiter</translation>
     </message>
+    <message>
+        <source>Skip the calibration?</source>
+        <translation>Die Kalibrierung überspringen?</translation>
+    </message>
+    <message>
+        <source>Do you want to go on without the calibration?</source>
+        <translation>Möchten Sie ohne die Kalibrierung weitermachen?</translation>
+    </message>
+    <message>
+        <source>Without it, ArmTrack measures your arm a little less exactly today. The calibration takes about a minute.</source>
+        <translation>Ohne sie misst ArmTrack Ihren Arm heute etwas weniger genau. Die Kalibrierung dauert etwa eine Minute.</translation>
+    </message>
+    <message>
+        <source>&amp;Skip it</source>
+        <translation>Ü&amp;berspringen</translation>
+    </message>
+    <message>
+        <source>&amp;Do the calibration</source>
+        <translation>&amp;Kalibrierung machen</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::HomeController</name>
@@ -3409,6 +3486,26 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
         <translation>für die Sensorprüfung kann kein temporärer Ordner angelegt werden (%1): geben Sie Speicherplatz frei</translation>
+    </message>
+    <message>
+        <source>Stop this exercise?</source>
+        <translation>Diese Übung beenden?</translation>
+    </message>
+    <message>
+        <source>Do you want to stop for today?</source>
+        <translation>Möchten Sie für heute aufhören?</translation>
+    </message>
+    <message>
+        <source>What you have done so far is saved for your therapist. You can also keep exercising.</source>
+        <translation>Was Sie bisher gemacht haben, wird für Ihre Therapeutin oder Ihren Therapeuten gespeichert. Sie können auch weiter üben.</translation>
+    </message>
+    <message>
+        <source>&amp;Stop and save</source>
+        <translation>&amp;Stoppen und speichern</translation>
+    </message>
+    <message>
+        <source>&amp;Keep exercising</source>
+        <translation>&amp;Weiter üben</translation>
     </message>
 </context>
 <context>
@@ -3807,14 +3904,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
 <context>
     <name>armtrack::gui::home::StrapPicture</name>
     <message>
-        <source>Worn right</source>
-        <translation>Richtig angelegt</translation>
-    </message>
-    <message>
-        <source>Now</source>
-        <translation>Jetzt</translation>
-    </message>
-    <message>
         <source>How it should be</source>
         <translation>So soll es sein</translation>
     </message>
@@ -3853,6 +3942,30 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Picture of the sensors on the arm</source>
         <translation>Bild der Sensoren am Arm</translation>
+    </message>
+    <message>
+        <source>Worn correctly on your left arm</source>
+        <translation>Richtig angelegt an Ihrem linken Arm</translation>
+    </message>
+    <message>
+        <source>Worn correctly on your right arm</source>
+        <translation>Richtig angelegt an Ihrem rechten Arm</translation>
+    </message>
+    <message>
+        <source>Now, on your left arm</source>
+        <translation>Jetzt, an Ihrem linken Arm</translation>
+    </message>
+    <message>
+        <source>Now, on your right arm</source>
+        <translation>Jetzt, an Ihrem rechten Arm</translation>
+    </message>
+    <message>
+        <source>Your left arm, seen from the side.</source>
+        <translation>Ihr linker Arm, von der Seite gesehen.</translation>
+    </message>
+    <message>
+        <source>Your right arm, seen from the side.</source>
+        <translation>Ihr rechter Arm, von der Seite gesehen.</translation>
     </message>
 </context>
 <context>

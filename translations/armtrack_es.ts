@@ -166,6 +166,14 @@
         <source>Reprojection error %L1 px over %2 views; fx %L3, fy %L4 px.</source>
         <translation>Error de reproyección de %L1 px en %2 vistas; fx %L3, fy %L4 px.</translation>
     </message>
+    <message>
+        <source>No device among those chosen gives webcam images or marker pixels: nothing to calibrate here.</source>
+        <translation>Ninguno de los dispositivos elegidos da imágenes de webcam ni píxeles de marcadores: aquí no hay nada que calibrar.</translation>
+    </message>
+    <message>
+        <source>The webcam of %1 brings its own camera model (it is simulated or replayed), so there is no chessboard to show it: nothing to calibrate here.</source>
+        <translation>La webcam de %1 trae su propio modelo de cámara (es simulada o reproducida), así que no se le puede mostrar un tablero: aquí no hay nada que calibrar.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::CameraCalibrationWorker</name>
@@ -259,6 +267,10 @@
     <message>
         <source>Battery: %1.</source>
         <translation>Batería: %1.</translation>
+    </message>
+    <message>
+        <source>The angles keep following the arm: move it and check them, then go on (or stop the check).</source>
+        <translation>Los ángulos siguen al brazo: muévalo y compruébelos, luego continúe (o detenga la comprobación).</translation>
     </message>
 </context>
 <context>
@@ -623,6 +635,26 @@
         <source>The patient sits upright with both sensors strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
         <translation>El paciente está sentado erguido con los dos sensores colocados. Pulse «Iniciar» y siga las instrucciones de la pantalla durante un minuto aproximadamente.</translation>
     </message>
+    <message>
+        <source>Done: the calibration is good.</source>
+        <translation>Listo: la calibración es buena.</translation>
+    </message>
+    <message>
+        <source>Done: the calibration can be used. If you have a minute, press Redo for a better one.</source>
+        <translation>Listo: la calibración se puede usar. Si tiene un minuto, pulse Repetir para obtener una mejor.</translation>
+    </message>
+    <message>
+        <source>That did not work this time. Check that both straps are tight, then press Redo and follow the screen again, or go on without it.</source>
+        <translation>Esta vez no ha funcionado. Compruebe que las dos correas estén firmes, pulse Repetir y siga de nuevo la pantalla, o continúe sin ella.</translation>
+    </message>
+    <message>
+        <source>You can relax.</source>
+        <translation>Ya puede relajarse.</translation>
+    </message>
+    <message>
+        <source>You can relax. ArmTrack is working this out; it takes a few seconds.</source>
+        <translation>Ya puede relajarse. ArmTrack lo está calculando; tarda unos segundos.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>
@@ -774,6 +806,12 @@ Puede recalcularla desde su revisión.</translation>
         <source>Earlier sessions could not be analysed now: %1</source>
         <translation>Las sesiones anteriores no se pudieron analizar ahora: %1</translation>
     </message>
+    <message>
+        <source>Session %1 was too short to analyse: %2 s were recorded, and at least %3 s are needed. It is kept, marked as too short.
+To measure the movement, start a new session, press Record, let the patient do the movement, then press Stop.</source>
+        <translation>La sesión %1 fue demasiado corta para analizarla: se grabaron %2 s y hacen falta al menos %3 s. Se conserva, marcada como demasiado corta.
+Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el paciente haga el movimiento y pulse Detener.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::BirthDateField</name>
@@ -808,6 +846,29 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Calendar</source>
         <translation>Calendario</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::CloseWhileRecording</name>
+    <message>
+        <source>A recording is under way</source>
+        <translation>Hay una grabación en curso</translation>
+    </message>
+    <message>
+        <source>Stop the recording and save the session before closing?</source>
+        <translation>¿Detener la grabación y guardar la sesión antes de cerrar?</translation>
+    </message>
+    <message>
+        <source>Stop and save ends the session as the Stop button does and closes ArmTrack; the session is analysed when ArmTrack next starts. Keep recording goes back to the session.</source>
+        <translation>Detener y guardar termina la sesión como el botón Detener y cierra ArmTrack; la sesión se analiza la próxima vez que se inicie ArmTrack. Seguir grabando vuelve a la sesión.</translation>
+    </message>
+    <message>
+        <source>&amp;Stop and save</source>
+        <translation>&amp;Detener y guardar</translation>
+    </message>
+    <message>
+        <source>&amp;Keep recording</source>
+        <translation>&amp;Seguir grabando</translation>
     </message>
 </context>
 <context>
@@ -1064,10 +1125,6 @@ Puede recalcularla desde su revisión.</translation>
     <message>
         <source>Hold the printed chessboard in front of the webcam in different places and angles until the grid is covered.</source>
         <translation>Sostenga el tablero de ajedrez impreso delante de la webcam en distintos lugares y ángulos hasta cubrir la cuadrícula.</translation>
-    </message>
-    <message>
-        <source>No webcam among the devices: nothing to calibrate here.</source>
-        <translation>No hay ninguna webcam entre los dispositivos: aquí no hay nada que calibrar.</translation>
     </message>
     <message>
         <source>Skip the camera calibration (use the camera&apos;s stored model)</source>
@@ -3357,6 +3414,26 @@ Puede recalcularla desde su revisión.</translation>
         <source>&amp;Go on without it</source>
         <translation>&amp;Seguir sin ella</translation>
     </message>
+    <message>
+        <source>Skip the calibration?</source>
+        <translation>¿Omitir la calibración?</translation>
+    </message>
+    <message>
+        <source>Do you want to go on without the calibration?</source>
+        <translation>¿Quiere continuar sin la calibración?</translation>
+    </message>
+    <message>
+        <source>Without it, ArmTrack measures your arm a little less exactly today. The calibration takes about a minute.</source>
+        <translation>Sin ella, ArmTrack mide su brazo hoy con algo menos de exactitud. La calibración dura alrededor de un minuto.</translation>
+    </message>
+    <message>
+        <source>&amp;Skip it</source>
+        <translation>&amp;Omitirla</translation>
+    </message>
+    <message>
+        <source>&amp;Do the calibration</source>
+        <translation>&amp;Hacer la calibración</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::HomeController</name>
@@ -3409,6 +3486,26 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>cannot create a temporary folder for the sensor check (%1): free some disk space</source>
         <translation>no se puede crear una carpeta temporal para la comprobación de los sensores (%1): libere espacio en el disco</translation>
+    </message>
+    <message>
+        <source>Stop this exercise?</source>
+        <translation>¿Terminar este ejercicio?</translation>
+    </message>
+    <message>
+        <source>Do you want to stop for today?</source>
+        <translation>¿Quiere terminar por hoy?</translation>
+    </message>
+    <message>
+        <source>What you have done so far is saved for your therapist. You can also keep exercising.</source>
+        <translation>Lo que ha hecho hasta ahora se guarda para su terapeuta. También puede seguir haciendo ejercicio.</translation>
+    </message>
+    <message>
+        <source>&amp;Stop and save</source>
+        <translation>&amp;Detener y guardar</translation>
+    </message>
+    <message>
+        <source>&amp;Keep exercising</source>
+        <translation>Seguir &amp;ejercitando</translation>
     </message>
 </context>
 <context>
@@ -3807,14 +3904,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
 <context>
     <name>armtrack::gui::home::StrapPicture</name>
     <message>
-        <source>Worn right</source>
-        <translation>Bien puestos</translation>
-    </message>
-    <message>
-        <source>Now</source>
-        <translation>Ahora</translation>
-    </message>
-    <message>
         <source>How it should be</source>
         <translation>Cómo debe ser</translation>
     </message>
@@ -3853,6 +3942,30 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Picture of the sensors on the arm</source>
         <translation>Imagen de los sensores en el brazo</translation>
+    </message>
+    <message>
+        <source>Worn correctly on your left arm</source>
+        <translation>Bien colocados en su brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>Worn correctly on your right arm</source>
+        <translation>Bien colocados en su brazo derecho</translation>
+    </message>
+    <message>
+        <source>Now, on your left arm</source>
+        <translation>Ahora, en su brazo izquierdo</translation>
+    </message>
+    <message>
+        <source>Now, on your right arm</source>
+        <translation>Ahora, en su brazo derecho</translation>
+    </message>
+    <message>
+        <source>Your left arm, seen from the side.</source>
+        <translation>Su brazo izquierdo, visto de lado.</translation>
+    </message>
+    <message>
+        <source>Your right arm, seen from the side.</source>
+        <translation>Su brazo derecho, visto de lado.</translation>
     </message>
 </context>
 <context>

@@ -3,6 +3,7 @@
 #include <QApplication>
 #include <QDir>
 #include <QFileInfo>
+#include <QPushButton>
 #include <QScreen>
 #include <QSettings>
 #include <QStandardPaths>
@@ -10,6 +11,7 @@
 #include <cstdio>
 
 #include "app/gui/Appearance.h"
+#include "app/gui/CloseWhileRecording.h"
 #include "app/gui/MainWindow.h"
 #include "app/gui/SettingsDialog.h"
 #include "app/gui/admin/AdminScreen.h"
@@ -23,6 +25,7 @@
 #include "app/gui/patients/PatientListScreen.h"
 #include "app/gui/patients/PatientScreen.h"
 #include "app/gui/review/ReviewScreen.h"
+#include "app/gui/services/AnalyseRecording.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/PatientRecords.h"
 #include "app/gui/services/RecordsRecordingTarget.h"
@@ -54,7 +57,9 @@ AppController::AppController(AppOptions options, QObject* parent)
     : QObject(parent),
       m_options(std::move(options)),
       m_records(std::make_unique<RecordsService>()),
-      m_window(std::make_unique<MainWindow>()) {
+      m_window(std::make_unique<MainWindow>()),
+      m_closeGuard(new CloseWhileRecording(*m_window)) {
+  m_window->setCloseGuard([guard = m_closeGuard] { return guard->mayClose(); });
   connect(m_window.get(), &MainWindow::signOutRequested, this, &AppController::signOut);
   connect(m_window.get(), &MainWindow::patientsRequested, this, &AppController::showPatients);
   connect(m_window.get(), &MainWindow::settingsRequested, this, &AppController::showSettings);
@@ -93,9 +98,10 @@ void AppController::quitAfterLimit() {
 }
 
 void AppController::quitApplication(int code) {
+  m_closeGuard->quitting();
   if (m_home) {
     m_quitCode = code;
-    m_home->window()->close();  // closeHome() ends the application once it has closed
+    m_home->quit();  // closeHome() ends the application once the window has closed
     return;
   }
   code == 0 ? QApplication::quit() : QApplication::exit(code);
@@ -116,6 +122,7 @@ void AppController::quitOnceLive(QWidget* screen) {
                  static_cast<unsigned long long>(live->estimatesDrained()), live->sessionTime());
     if (!m_options.screenshot.isEmpty() && !saveWindowImage(m_options.screenshot))
       return QApplication::exit(1);
+    m_closeGuard->quitting();
     QApplication::quit();
   });
   poll->start(100);
@@ -379,8 +386,9 @@ void AppController::analysePending(int analysedSoFar, qint64 after) {
         storage::AnalysisOptions o;
         o.cancel = c.cancelFlag();
         try {
-          step.analysed = !storage::analyseSession(c.store(), step.id, o).cancelled;
-          step.more = step.analysed;
+          const RecordingAnalysis r = analyseRecording(c.store(), step.id, o);
+          step.analysed = r.outcome == RecordingAnalysis::Outcome::Analysed;
+          step.more = r.outcome != RecordingAnalysis::Outcome::Cancelled;
         } catch (const storage::StorageError& e) {
           // A recording that cannot be analysed is marked so: go on with the others.
           if (e.kind() != storage::StorageError::Kind::Usage &&
@@ -467,6 +475,9 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
           [this, target, code, calibration = choices.calibration](const QString& summary) {
             m_window->showStatus(summary, 0);
+            // Closed during the recording ("Stop and save"): its analysis waits for the next
+            // start (analysePending).
+            if (m_closeGuard->closing()) return void(m_window->close());
             if (const qint64 id = target->sessionId())
               analyseThenReview(id, code, calibration);
             else
@@ -494,9 +505,22 @@ void AppController::analyseThenReview(qint64 sessionId, const QString& code,
         o.calibration = calibration;
         o.progress = [&c](int p) { c.progress(p); };
         o.cancel = c.cancelFlag();
-        return !storage::analyseSession(c.store(), sessionId, o).cancelled;
+        return analyseRecording(c.store(), sessionId, o);
       },
-      [this, sessionId](bool) { showReview(sessionId); },
+      [this, wait, sessionId, code](const RecordingAnalysis& r) {
+        if (r.outcome != RecordingAnalysis::Outcome::TooShort) return showReview(sessionId);
+        wait->setProgress(100);
+        wait->setText([sessionId, seconds = r.recordedS] {
+          return tr("Session %1 was too short to analyse: %2 s were recorded, and at least %3 s "
+                    "are needed. It is kept, marked as too short.\nTo measure the movement, "
+                    "start a new session, press Record, let the patient do the movement, then "
+                    "press Stop.")
+              .arg(sessionId)
+              .arg(seconds, 0, 'f', 1)
+              .arg(kShortestAnalysableS, 0, 'f', 0);
+        });
+        endAnalysisWait(wait, sessionId, code);
+      },
       [this, wait, sessionId, code](const RecordsFailure& f) {
         // The recording is stored whatever happened: say why it has no analysis yet.
         wait->setProgress(100);
@@ -506,13 +530,23 @@ void AppController::analyseThenReview(qint64 sessionId, const QString& code,
               .arg(sessionId)
               .arg(why);
         });
-        wait->addAction([] { return tr("&Review session"); },
-                        [this, sessionId] { showReview(sessionId); });
-        wait->addAction([] { return tr("&Back to the patient"); },
-                        [this, code] { showPatient(code); });
+        endAnalysisWait(wait, sessionId, code);
       });
   connect(job, &RecordsJob::progress, wait, &MessageScreen::setProgress);
-  wait->addAction([] { return tr("&Skip the analysis"); }, [job] { job->cancel(); });
+  QPushButton* skip =
+      wait->addAction([] { return tr("&Skip the analysis"); }, [job] { job->cancel(); });
+  skip->setObjectName(QStringLiteral("skipAnalysis"));
+}
+
+void AppController::endAnalysisWait(MessageScreen* wait, qint64 sessionId, const QString& code) {
+  // The analysis has ended: its Skip button goes, and the focus with it to the next step.
+  if (auto* skip = wait->findChild<QPushButton*>(QStringLiteral("skipAnalysis"))) skip->hide();
+  QPushButton* review = wait->addAction([] { return tr("&Review session"); },
+                                        [this, sessionId] { showReview(sessionId); });
+  wait->addAction([] { return tr("&Back to the patient"); }, [this, code] { showPatient(code); });
+  review->setDefault(true);
+  wait->setFocusProxy(review);
+  review->setFocus(Qt::OtherFocusReason);
 }
 
 void AppController::showReview(qint64 sessionId) {

@@ -23,6 +23,8 @@ class HomeController;
 }
 
 class MainWindow;
+class CloseWhileRecording;
+class MessageScreen;
 
 class AppController : public QObject {
   Q_OBJECT
@@ -34,6 +36,8 @@ class AppController : public QObject {
   void start();
 
   MainWindow* window() const { return m_window.get(); }
+  /// What the window asks when it is closed during a recording.
+  CloseWhileRecording* closeGuard() const { return m_closeGuard; }
   /// The home window's course while a home account is signed in (else null).
   home::HomeController* home() const { return m_home.get(); }
   RecordsService& records() { return *m_records; }
@@ -101,6 +105,8 @@ class AppController : public QObject {
     bool analysed = false;
     bool more = false;
   };
+  /// The analysis shown by wait has ended without a review: Skip goes, Review and Back come.
+  void endAnalysisWait(MessageScreen* wait, qint64 sessionId, const QString& code);
   void showDatabaseProblem(const RecordsFailure& failure);
   void closeHome();
   storage::DatabaseUrl demoDatabaseUrl() const;
@@ -123,6 +129,7 @@ class AppController : public QObject {
   std::unique_ptr<RecordsService> m_records;
   std::unique_ptr<MainWindow> m_window;
   std::unique_ptr<home::HomeController> m_home;
+  CloseWhileRecording* m_closeGuard;  // owned by the window
 };
 
 }  // namespace armtrack::gui

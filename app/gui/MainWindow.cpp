@@ -119,6 +119,10 @@ void MainWindow::updateTitle() {
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
+  if (m_mayClose && !m_mayClose()) {
+    event->ignore();
+    return;
+  }
   // A screen with unsaved work (a recording, typed notes) may refuse to be closed.
   if (QWidget* current = m_stack->screen(); current && !current->close()) {
     event->ignore();

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <functional>
 
 #include "app/gui/common/Forms.h"
 
@@ -35,6 +36,9 @@ class MainWindow : public QMainWindow {
   void showStatus(TextFn text, int ms = 8000);
   /// The same with a text that stays as it is.
   void showStatus(const QString& text, int ms = 8000);
+  /// Asked before the window closes (its close button, File > Quit): false keeps it open (e.g.
+  /// while the question whether to stop a recording is open).
+  void setCloseGuard(std::function<bool()> mayClose) { m_mayClose = std::move(mayClose); }
 
  signals:
   void settingsRequested();
@@ -56,6 +60,7 @@ class MainWindow : public QMainWindow {
   TextFn m_whoText;
   TextFn m_statusText;
   QString m_statusShown;
+  std::function<bool()> m_mayClose;
   QMenu* m_file;
   QMenu* m_help;
   QAction* m_patients;

@@ -11,14 +11,14 @@ constexpr double kToDeg = 180.0 / std::numbers::pi;
 // with x0 down, y0 forward and z0 lateral, +th0 swings the arm forward, +th1 lifts it sideways,
 // +th2 turns a flexed forearm outward, +th4 bends the elbow backward and +th5 turns the thumb
 // outward (supination).
+std::array<double, 5> clinicalRadians(const JointVector& th) {
+  return {wrapAngle(th(0)), wrapAngle(th(1)), -wrapAngle(th(2)), -wrapAngle(th(3)),
+          -wrapAngle(th(4))};
+}
+
 ClinicalAngles toClinical(const JointVector& th) {
-  ClinicalAngles c;
-  c.shoulderFlexion = wrapAngle(th(0)) * kToDeg;
-  c.shoulderAbduction = wrapAngle(th(1)) * kToDeg;
-  c.shoulderInternalRotation = -wrapAngle(th(2)) * kToDeg;
-  c.elbowFlexion = -wrapAngle(th(3)) * kToDeg;
-  c.forearmPronation = -wrapAngle(th(4)) * kToDeg;
-  return c;
+  const std::array<double, 5> r = clinicalRadians(th);
+  return {r[0] * kToDeg, r[1] * kToDeg, r[2] * kToDeg, r[3] * kToDeg, r[4] * kToDeg};
 }
 
 JointVector fromClinical(const ClinicalAngles& c) {

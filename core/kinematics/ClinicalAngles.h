@@ -35,5 +35,8 @@ JointVector fromClinical(const ClinicalAngles& c);
 const std::array<ClinicalAngleInfo, 5>& clinicalAngleInfo();
 /// The five values in the order of clinicalAngleInfo().
 std::array<double, 5> asArray(const ClinicalAngles& c);
+/// The five angles in radians (same order and signs), straight from the joints: what the
+/// metrics take, without a round trip through degrees.
+std::array<double, 5> clinicalRadians(const JointVector& th);
 
 }  // namespace armtrack

@@ -83,6 +83,25 @@ CalibrationVerdict judgeCalibration(const CalibrationResult& r, QString* why) {
   return v;
 }
 
+namespace {
+// The verdict in the patient's words.
+QString patientVerdict(CalibrationVerdict v) {
+  switch (v) {
+    case CalibrationVerdict::Good:
+      return SensorCalibrationPage::tr("Done: the calibration is good.");
+    case CalibrationVerdict::Usable:
+      return SensorCalibrationPage::tr(
+          "Done: the calibration can be used. If you have a minute, press Redo for a better "
+          "one.");
+    case CalibrationVerdict::Poor:
+      break;
+  }
+  return SensorCalibrationPage::tr(
+      "That did not work this time. Check that both straps are tight, then press Redo and "
+      "follow the screen again, or go on without it.");
+}
+}  // namespace
+
 SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
                                              LiveSessionConfig config, std::filesystem::path folder,
                                              QWidget* parent)
@@ -213,8 +232,19 @@ bool SensorCalibrationPage::isComplete() const {
   return m_state == State::Done && m_verdict && *m_verdict != CalibrationVerdict::Poor;
 }
 
+void SensorCalibrationPage::setForPatient(bool forPatient) {
+  m_forPatient = forPatient;
+  m_details->setVisible(!forPatient);
+}
+
+QString SensorCalibrationPage::detailsText() const {
+  return m_details->isVisible() ? m_details->toPlainText() : QString();
+}
+
 void SensorCalibrationPage::setState(State s) {
   m_state = s;
+  if (s != State::Solving) m_progress->setRange(0, 1000);
+  if (s == State::Done) m_progress->setValue(1000);
   updateStartButton();
   m_start->setText(s == State::Ready ? tr("&Start") : tr("&Redo"));
   m_cancel->setEnabled(s == State::Recording || s == State::Solving);
@@ -269,7 +299,10 @@ void SensorCalibrationPage::drain() {
   m_arm->updateIfChanged();
   if (t >= protocolSeconds() + 0.3) {
     m_timer.stop();
-    showStep([] { return tr("Recorded"); }, [] { return tr("The patient can relax."); });
+    if (m_forPatient)
+      showStep([] { return tr("Recorded"); }, [] { return tr("You can relax."); });
+    else
+      showStep([] { return tr("Recorded"); }, [] { return tr("The patient can relax."); });
     m_countdown->clear();
     m_controller->stop();  // solve() follows when the recording is closed
   }
@@ -277,7 +310,17 @@ void SensorCalibrationPage::drain() {
 
 void SensorCalibrationPage::solve() {
   setState(State::Solving);
-  showStep([] { return tr("Calibrating\u2026"); }, {});
+  if (m_forPatient) {
+    showStep([] { return tr("Calibrating\u2026"); },
+             [] {
+               return tr(
+                   "You can relax. ArmTrack is working this out; it takes a few "
+                   "seconds.");
+             });
+    m_progress->setRange(0, 0);  // busy, without the fit's figures
+  } else {
+    showStep([] { return tr("Calibrating\u2026"); }, {});
+  }
   m_details->appendPlainText(
       tr("Fitting the sensors' mounting to the recording (this takes a "
          "few seconds)."));
@@ -291,19 +334,25 @@ void SensorCalibrationPage::solve() {
       if (!line.isEmpty()) self->m_details->appendPlainText(line);
       if (!done) return;
       if (!result) {
-        self->showVerdict(
-            [error] { return tr("The calibration failed: %1. Redo the protocol.").arg(error); });
+        if (self->m_forPatient)
+          self->showVerdict([] { return patientVerdict(CalibrationVerdict::Poor); });
+        else
+          self->showVerdict(
+              [error] { return tr("The calibration failed: %1. Redo the protocol.").arg(error); });
         self->setState(State::Failed);
         emit self->finished(false);
         return;
       }
       self->m_verdict = judgeCalibration(*result, nullptr);
       self->m_result = result;
-      self->showVerdict([result] {
-        QString why;
-        judgeCalibration(*result, &why);
-        return why;
-      });
+      if (self->m_forPatient)
+        self->showVerdict([v = *self->m_verdict] { return patientVerdict(v); });
+      else
+        self->showVerdict([result] {
+          QString why;
+          judgeCalibration(*result, &why);
+          return why;
+        });
       const Calibration& c = result->calibration;
       self->m_details->appendPlainText(
           tr("Upper-arm strap angle %1 deg, forearm strap angle %2 deg; residuals (noise "

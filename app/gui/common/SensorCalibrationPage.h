@@ -60,6 +60,12 @@ class SensorCalibrationPage : public QWidget {
   /// Replaces the words shown before the protocol starts (the home window speaks to the
   /// patient); said again when the language changes.
   void setIntroduction(std::function<QString()> text);
+  /// The page speaks to the patient (the home window): words addressed to "you", plain progress
+  /// while the fit runs and a plain verdict, without the fit's log and figures.
+  void setForPatient(bool forPatient);
+  bool forPatient() const { return m_forPatient; }
+  /// What the page shows as its log (the fit's lines; empty and hidden for the patient).
+  QString detailsText() const;
 
  public slots:
   /// Starts (or redoes) the protocol.
@@ -92,6 +98,7 @@ class SensorCalibrationPage : public QWidget {
   SessionController* m_controller;
   std::shared_ptr<RecordingGate> m_gate;
   State m_state = State::Ready;
+  bool m_forPatient = false;
   std::optional<CalibrationResult> m_result;
   std::optional<CalibrationVerdict> m_verdict;
   int m_generation = 0;  // a fit started before a cancel or redo is ignored when it ends

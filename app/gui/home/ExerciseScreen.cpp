@@ -7,6 +7,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "app/gui/home/ExerciseFraming.h"
 #include "app/gui/home/ExerciseRecording.h"
 #include "app/gui/home/FeedbackSound.h"
 #include "app/gui/home/HomeStyle.h"
@@ -20,7 +21,6 @@ namespace armtrack::gui::home {
 
 namespace {
 
-constexpr double kBlindSecondsBeforeDistrust = 3.0;
 constexpr int kSetEndDelayMs = 900;
 
 ExerciseMotion demonstration(const HomeExercise& e) {
@@ -50,16 +50,10 @@ ExerciseScreen::ExerciseScreen(const app::PluginRegistry& registry, RecordsServi
       m_config(config),
       m_recording(
           new ExerciseRecording(registry, records, patientCode, exercise.protocol.name, this)),
-      m_demo(demonstration(exercise)) {
-  m_result.exercise = exercise.protocol.name;
-  m_result.angle = exercise.angle;
-  m_result.position = exercise.item.position;
-  m_result.setsPlanned = exercise.item.sets;
-  m_result.repetitionsPlanned = exercise.item.sets * exercise.repetitions;
-  m_result.targetMinDeg = exercise.targetMinDeg;
-  m_result.targetMaxDeg = exercise.targetMaxDeg;
+      m_demo(demonstration(exercise)),
+      m_trust(exercise.angle) {
   m_measured = !(angleNeedsOptics(exercise.angle) && !optical);
-  m_result.measured = m_measured;
+  m_result = plannedResult(exercise, m_measured);
   buildLayout();
   retranslate();
   connect(m_recording, &ExerciseRecording::started, this, [this](const QString& error) {
@@ -121,6 +115,12 @@ void ExerciseScreen::buildLayout() {
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
   m_arm->setRefreshRate(0);
   m_arm->setPose(m_demo.at(0).th);
+  // The view holds the light arm all the way: a shoulder raised high leaves the default framing.
+  std::vector<JointVector> reach;
+  for (double t = 0; t <= 6.0; t += 0.1) reach.push_back(m_demo.at(t).th);
+  m_arm->resetView();
+  m_arm->setCamera(
+      fitView(m_arm->camera(), reachOf(m_config.meta.geometry, m_config.meta.side, reach)));
   root->addWidget(m_arm, 3);
 
   connect(m_primary, &QPushButton::clicked, this, [this] {
@@ -282,20 +282,8 @@ void ExerciseScreen::startSet() {
 void ExerciseScreen::closeSet() {
   m_recording->setRecording(false);
   if (!m_feedback) return;
-  const ExerciseFeedback& f = *m_feedback;
-  m_result.repetitions += static_cast<int>(f.repetitions());
-  m_result.partial += static_cast<int>(f.partial());
-  m_result.targetReached += static_cast<int>(f.targetReached());
-  m_result.tooFast += static_cast<int>(f.tooFast());
-  m_result.rangeNotReached += static_cast<int>(f.rangeNotReached());
-  m_result.compensation += static_cast<int>(f.compensations());
-  if (m_measured && f.repetitions() > 0) {
-    const double lo = f.rangeMinRad() / kDegToRad, hi = f.rangeMaxRad() / kDegToRad;
-    m_result.rangeMinDeg = std::min(m_result.rangeMinDeg.value_or(lo), lo);
-    m_result.rangeMaxDeg = std::max(m_result.rangeMaxDeg.value_or(hi), hi);
-  }
+  addSet(m_result, *m_feedback, m_measured);
   m_feedback.reset();
-  ++m_result.setsDone;
 }
 
 void ExerciseScreen::endSet() {
@@ -342,6 +330,10 @@ void ExerciseScreen::cutShort() {
   finish(true, true);
 }
 
+void ExerciseScreen::stopAndSave() {
+  finish(true, true);
+}
+
 void ExerciseScreen::finish(bool stoppedEarly, bool stopForToday) {
   if (m_phase == Phase::Finishing || m_phase == Phase::Done) return;
   m_setDone.stop();
@@ -382,26 +374,15 @@ void ExerciseScreen::tick() {
       if (r.t <= m_lastT) continue;
       m_lastT = r.t;
       // A shoulder angle is trusted only while optical data hold the heading.
-      if (angleNeedsOptics(m_exercise.angle)) {
-        if (!r.headingFromStartPoseOnly)
-          m_blindSince = -1;
-        else if (m_blindSince < 0)
-          m_blindSince = r.t;
-        if (m_measured && m_blindSince >= 0 && r.t - m_blindSince > kBlindSecondsBeforeDistrust)
-          setMeasured(false);
-      }
-      if (m_phase == Phase::Set && m_feedback && m_measured) {
-        std::array<double, 5> angles = asArray(toClinical(r.th));
-        for (double& a : angles) a *= kDegToRad;
-        m_feedback->add(r.t, angles);
-      }
+      m_trust.add(r);
+      if (m_measured && m_trust.blind(r.t)) setMeasured(false);
+      if (m_phase == Phase::Set && m_feedback && m_measured)
+        m_feedback->add(r.t, clinicalRadians(r.th));
     }
     const session::EstimateRow& last = m_rows.back();
     m_arm->setPose(last.th);
     const int j = m_exercise.angle;
-    if (m_measured && angleTrustworthy(j, last.thStd(j),
-                                       angleNeedsOptics(j) && m_blindSince >= 0 &&
-                                           last.t - m_blindSince > kBlindSecondsBeforeDistrust))
+    if (m_measured && m_trust.shown(last))
       m_angle->setText(
           tr("%1: %2\u00b0")
               .arg(ui::angleDisplayName(j))

@@ -12,6 +12,7 @@
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
+#include "app/gui/services/HomeExerciseRules.h"
 #include "app/gui/services/HomeRecords.h"
 #include "app/gui/services/LiveSessionConfig.h"
 #include "core/metrics/ExerciseFeedback.h"
@@ -70,8 +71,12 @@ class ExerciseScreen : public HomeScreen {
   void escapePressed() override;
 
  public slots:
-  /// Ends the exercise now (the window closes): the session is finished as interrupted.
+  /// Ends the exercise now (the application ends without asking): the session is finished as
+  /// interrupted.
   void cutShort();
+  /// Ends the exercise now as "Stop for today" does (the patient chose to close the window):
+  /// the session is finished complete, with what was done, and analysed like any other.
+  void stopAndSave();
 
  signals:
   /// The exercise is over and its session finished in the records. stopForToday: the patient
@@ -111,8 +116,8 @@ class ExerciseScreen : public HomeScreen {
   int m_set = 1;
   bool m_measured = true;
   bool m_stopForToday = false;
-  bool m_closing = false;    // the window is closing: the session is interrupted
-  double m_blindSince = -1;  // session time the heading began resting on the start pose
+  bool m_closing = false;  // the window is closing: the session is interrupted
+  HeadingTrust m_trust;    // whether the exercise's angle can be shown now
   double m_lastT = 0;
   QElapsedTimer m_clock;  // the demonstration's time, and the rest's
   double m_restLeftS = 0;

@@ -24,7 +24,11 @@ HomeCalibrationScreen::HomeCalibrationScreen(const app::PluginRegistry& registry
         "Now ArmTrack learns how the sensors sit on your arm today. It takes about a "
         "minute: press Start, then do what the screen says and what the light arm shows.");
   });
+  m_page->setForPatient(true);
   setHomeFont(m_page);
+  // While the protocol runs the focus rests on the screen, not on a button: a stray Space or
+  // Enter does nothing.
+  setFocusPolicy(Qt::StrongFocus);
   auto* root = new QVBoxLayout(this);
   root->addWidget(m_page, 1);
   auto* buttons = new QHBoxLayout;
@@ -41,10 +45,7 @@ HomeCalibrationScreen::HomeCalibrationScreen(const app::PluginRegistry& registry
     if (m_page->isComplete() && m_page->result()) c = m_page->result()->calibration;
     emit done(c);
   });
-  connect(m_skip, &QPushButton::clicked, this, [this] {
-    m_page->cancel();
-    emit done(std::nullopt);
-  });
+  connect(m_skip, &QPushButton::clicked, this, &HomeCalibrationScreen::askToSkip);
   retranslate();
 }
 
@@ -70,7 +71,10 @@ void HomeCalibrationScreen::update() {
     w->style()->polish(w);
   }
   m_skip->setVisible(!finished || !m_page->isComplete());
-  if (QAbstractButton* main = defaultChoice()) main->setFocus(Qt::OtherFocusReason);
+  if (QAbstractButton* main = defaultChoice())
+    main->setFocus(Qt::OtherFocusReason);
+  else if (isVisible())
+    setFocus(Qt::OtherFocusReason);
   emit choicesChanged();
 }
 
@@ -89,9 +93,30 @@ QAbstractButton* HomeCalibrationScreen::defaultChoice() const {
       return m_page->startButton();
     case State::Recording:
     case State::Solving:
-      break;
+      break;  // nothing to press while the protocol runs: Skip asks first
   }
-  return m_skip;
+  return nullptr;
+}
+
+void HomeCalibrationScreen::askToSkip() {
+  if (m_question) return m_question->raise();
+  auto* box = new QMessageBox(QMessageBox::Question, tr("Skip the calibration?"),
+                              tr("Do you want to go on without the calibration?"),
+                              QMessageBox::NoButton, this);
+  box->setInformativeText(
+      tr("Without it, ArmTrack measures your arm a little less exactly "
+         "today. The calibration takes about a minute."));
+  QPushButton* skip = box->addButton(tr("&Skip it"), QMessageBox::AcceptRole);
+  QPushButton* keep = box->addButton(tr("&Do the calibration"), QMessageBox::RejectRole);
+  box->setDefaultButton(keep);
+  box->setEscapeButton(keep);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  m_question = box;
+  connect(skip, &QPushButton::clicked, this, [this] {
+    m_page->cancel();
+    emit done(std::nullopt);
+  });
+  box->open();
 }
 
 void HomeCalibrationScreen::escapePressed() {

@@ -3,6 +3,8 @@
 // thread, a verdict), in the home window's words, large and driven by the keyboard or a switch.
 #pragma once
 
+#include <QMessageBox>
+#include <QPointer>
 #include <optional>
 
 #include "app/gui/home/HomeScreen.h"
@@ -29,6 +31,8 @@ class HomeCalibrationScreen : public HomeScreen {
                         const QString& folder, QWidget* parent = nullptr);
 
   app::gui::SensorCalibrationPage* page() const { return m_page; }
+  /// The question "Skip the calibration?" while it is open (for tests).
+  QMessageBox* skipQuestion() const { return m_question; }
   QList<QAbstractButton*> choices() const override;
   QAbstractButton* defaultChoice() const override;
   void escapePressed() override;
@@ -42,10 +46,13 @@ class HomeCalibrationScreen : public HomeScreen {
 
  private:
   void update();
+  /// Skip asks first: without the calibration the angles are less exact today.
+  void askToSkip();
 
   app::gui::SensorCalibrationPage* m_page;
   QPushButton* m_goOn;
   QPushButton* m_skip;
+  QPointer<QMessageBox> m_question;
 };
 
 }  // namespace armtrack::gui::home

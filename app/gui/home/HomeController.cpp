@@ -1,5 +1,7 @@
 #include "app/gui/home/HomeController.h"
 
+#include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 #include <QTemporaryDir>
 #include <QThreadPool>
@@ -210,14 +212,16 @@ void HomeController::showProblem(const QString& text) {
 }
 
 void HomeController::onCloseRequested() {
-  // An exercise under way is ended first: its session is kept up to now, marked interrupted.
+  // An exercise under way is ended first. When the patient closes the window, they are asked:
+  // stopping saves the exercise as done so far (complete, analysed at the therapist's next
+  // start); when the application ends (quit()), it is kept as interrupted.
   if (auto* exercise = qobject_cast<ExerciseScreen*>(m_window->currentScreen());
       exercise && exercise->phase() != ExerciseScreen::Phase::Done) {
-    if (!m_closing) {
+    if (m_closing || exercise->phase() == ExerciseScreen::Phase::Finishing) {
       m_closing = true;
-      exercise->cutShort();
+      return;  // finished() comes back here
     }
-    return;  // finished() comes back here
+    return askToStop();
   }
   m_closing = true;
   // What was counted reaches the therapist even when the summary was not saved.
@@ -226,6 +230,45 @@ void HomeController::onCloseRequested() {
   if (recorded && !m_saved)
     return saveAll(std::nullopt, {}, [this](bool, const QString&) { closeNow(); });
   closeNow();
+}
+
+void HomeController::askToStop() {
+  if (m_question) {
+    m_question->raise();
+    return;
+  }
+  auto* box =
+      new QMessageBox(QMessageBox::Question, tr("Stop this exercise?"),
+                      tr("Do you want to stop for today?"), QMessageBox::NoButton, m_window.get());
+  box->setInformativeText(
+      tr("What you have done so far is saved for your therapist. You can also keep "
+         "exercising."));
+  QPushButton* stop = box->addButton(tr("&Stop and save"), QMessageBox::AcceptRole);
+  QPushButton* keep = box->addButton(tr("&Keep exercising"), QMessageBox::RejectRole);
+  box->setDefaultButton(keep);  // one stray key press does not end the exercise
+  box->setEscapeButton(keep);
+  box->setAttribute(Qt::WA_DeleteOnClose);
+  m_question = box;
+  connect(stop, &QPushButton::clicked, this, [this] {
+    auto* exercise = qobject_cast<ExerciseScreen*>(m_window->currentScreen());
+    if (!exercise || exercise->phase() == ExerciseScreen::Phase::Done) return onCloseRequested();
+    m_closing = true;
+    exercise->stopAndSave();  // finished() comes back to onCloseRequested()
+  });
+  box->open();
+}
+
+void HomeController::quit() {
+  if (m_question) m_question->close();
+  if (auto* exercise = qobject_cast<ExerciseScreen*>(m_window->currentScreen());
+      exercise && exercise->phase() != ExerciseScreen::Phase::Done) {
+    if (!m_closing) {
+      m_closing = true;
+      exercise->cutShort();
+    }
+    return;  // finished() comes back to onCloseRequested()
+  }
+  onCloseRequested();
 }
 
 void HomeController::closeNow() {

@@ -5,6 +5,7 @@
 // temporary folder's making and (QThreadPool) removal: the GUI thread never waits for the disk.
 #pragma once
 
+#include <QMessageBox>
 #include <QObject>
 #include <QPointer>
 #include <functional>
@@ -15,6 +16,7 @@
 #include "app/gui/home/HomeSetup.h"
 #include "app/gui/services/HomeRecords.h"
 
+class QMessageBox;
 class QTemporaryDir;
 
 namespace armtrack::app {
@@ -48,6 +50,11 @@ class HomeController : public QObject {
   FeedbackSound* sound() const { return m_sound; }
   /// The calibration made in this session, if any.
   const std::optional<Calibration>& calibration() const { return m_calibration; }
+  /// The question shown when the window is closed during an exercise (null when none is open).
+  QMessageBox* closeQuestion() const { return m_question; }
+  /// Closes the window without asking (the application ends): an exercise under way is kept as
+  /// interrupted, the results are saved.
+  void quit();
 
  signals:
   void planLoaded();
@@ -69,6 +76,8 @@ class HomeController : public QObject {
   void setStep(std::function<QString()> step);
   void onCloseRequested();
   void closeNow();
+  /// Asks the patient whether to stop the exercise under way and save it.
+  void askToStop();
   void saveAll(std::optional<int> pain, const QString& comment,
                const std::function<void(bool, const QString&)>& done);
   app::gui::LiveSessionConfig config(const QStringList& devices,
@@ -89,6 +98,7 @@ class HomeController : public QObject {
   std::vector<HomeExerciseResult> m_results;
   std::optional<Calibration> m_calibration;
   bool m_closing = false;
+  QPointer<QMessageBox> m_question;  // "Stop and save?" while open
   bool m_saved = false;
 };
 

@@ -46,6 +46,9 @@ void applyHomeStyle(QWidget* window) {
       "QPushButton[primary=\"true\"] { background: #0b3d91; color: #ffffff; font-weight: bold; }"
       "QPushButton:focus { border: 6px solid #ffb000; }"
       "QPushButton:disabled { color: #606060; border-color: #909090; }"
+      // A disabled main button keeps readable words: dark text on a pale blue (about 10:1).
+      "QPushButton[primary=\"true\"]:disabled { background: #c9d4e8; color: #303030;"
+      " border-color: #909090; }"
       "QPlainTextEdit { border: 3px solid #101010; }"
       "QPlainTextEdit:focus { border: 6px solid #ffb000; }"));
 }

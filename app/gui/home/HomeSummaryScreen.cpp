@@ -93,12 +93,14 @@ HomeSummaryScreen::HomeSummaryScreen(const HomePlan& plan,
   root->addLayout(right, 2);
   retranslate();
 
+  // From "no answer", the first More pain says 1 and the first Less pain says 0 (none); Less
+  // pain below 0 takes the answer back.
   connect(m_less, &QPushButton::clicked, this, [this] {
-    m_pain = std::max(-1, m_pain - 1);
+    m_pain = m_pain < 0 ? 0 : m_pain - 1;
     showPain();
   });
   connect(m_more, &QPushButton::clicked, this, [this] {
-    m_pain = std::min(10, m_pain + 1);
+    m_pain = m_pain < 0 ? 1 : std::min(10, m_pain + 1);
     showPain();
   });
   connect(m_comment, &QPlainTextEdit::textChanged, this, [this] {
@@ -143,7 +145,7 @@ void HomeSummaryScreen::retranslate() {
 
 void HomeSummaryScreen::showPain() {
   m_painValue->setText(m_pain < 0 ? tr("no answer") : QLocale().toString(m_pain));
-  m_less->setEnabled(m_pain >= 0 && !m_saved);
+  m_less->setEnabled(!m_saved);
   m_more->setEnabled(m_pain < 10 && !m_saved);
 }
 

@@ -4,16 +4,13 @@
 #include <QDateTime>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QPointer>
 #include <QPushButton>
 #include <QStyle>
-#include <QThread>
 #include <QVBoxLayout>
 #include <cmath>
 
 #include "app/gui/home/HomeStyle.h"
 #include "app/gui/home/StrapPicture.h"
-#include "core/io/Recording.h"
 #include "core/simulation/Trajectory.h"
 #include "ui/ArmView.h"
 #include "ui/Retranslate.h"
@@ -31,7 +28,8 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
       m_registry(registry),
       m_config(std::move(config)),
       m_folder(std::move(folder)),
-      m_controller(new app::gui::SessionController(registry, this)) {
+      m_controller(new app::gui::SessionController(registry, this)),
+      m_judge(new SensorCheckJob(this)) {
   auto* root = new QHBoxLayout(this);
   auto* left = new QVBoxLayout;
   m_title = heading({}, this);
@@ -39,6 +37,7 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
   m_banner = bodyText({}, this);
   m_banner->hide();
   m_picture = new StrapPicture(this);
+  m_picture->setSide(m_config.meta.side);
   m_start = bigButton(tr("&Start the check"), this, true);
   m_goOn = bigButton(tr("&Go on"), this, true);
   m_skip = bigButton(tr("S&kip the check"), this);
@@ -94,6 +93,7 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
             judge();
           });
   connect(&m_timer, &QTimer::timeout, this, &SensorCheckScreen::drain);
+  connect(m_judge, &SensorCheckJob::judged, this, &SensorCheckScreen::showResult);
   setState(State::Ready);
   retranslate();
 }
@@ -175,6 +175,7 @@ void SensorCheckScreen::escapePressed() {
 void SensorCheckScreen::start() {
   if (m_state == State::Recording || m_state == State::Judging) return;
   ++m_generation;
+  m_judge->cancel();
   m_result.reset();
   m_banner->hide();
   m_csv = m_folder /
@@ -230,23 +231,7 @@ void SensorCheckScreen::judge() {
   params.side = m_config.meta.side;
   params.up = m_config.meta.up;
   params.g = m_config.meta.g;
-  const int generation = m_generation;
-  QPointer<SensorCheckScreen> self(this);
-  QThread* worker = QThread::create([csv = m_csv, params, self, generation] {
-    SensorCheckResult r;
-    try {
-      r = checkSensors(readRecording(csv).samples, params);
-    } catch (const std::exception& e) {
-      r.status = SensorCheckStatus::MissingUpperArm;
-      r.explanation = e.what();
-    }
-    QMetaObject::invokeMethod(qApp, [self, generation, r] {
-      if (self && self->m_generation == generation) self->showResult(r);
-    });
-  });
-  worker->setObjectName(QStringLiteral("armtrack-sensor-check"));
-  connect(worker, &QThread::finished, worker, &QObject::deleteLater);
-  worker->start(QThread::LowPriority);
+  m_judge->start(m_csv, params);
 }
 
 void SensorCheckScreen::showResult(const SensorCheckResult& r) {

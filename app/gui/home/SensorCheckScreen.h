@@ -13,6 +13,7 @@
 #include "app/gui/home/HomeScreen.h"
 #include "app/gui/services/GatedRecordingSink.h"
 #include "app/gui/services/LiveSessionConfig.h"
+#include "app/gui/services/SensorCheckJob.h"
 #include "app/gui/services/SessionController.h"
 #include "core/calibration/SensorCheck.h"
 
@@ -71,6 +72,7 @@ class SensorCheckScreen : public HomeScreen {
   app::gui::LiveSessionConfig m_config;
   std::filesystem::path m_folder, m_csv;
   app::gui::SessionController* m_controller;
+  SensorCheckJob* m_judge;  // judges the recording off the GUI thread
   std::shared_ptr<app::gui::RecordingGate> m_gate;
   State m_state = State::Ready;
   std::optional<SensorCheckResult> m_result;

@@ -81,16 +81,57 @@ void StrapPicture::paintEvent(QPaintEvent*) {
   paint(p, rect());
 }
 
+void StrapPicture::setSide(Side side) {
+  m_side = side;
+  describe();
+  update();
+}
+
+QStringList StrapPicture::captions() const {
+  // "Right" would read as "correct" too: the arm is named, and "correctly" said so.
+  if (m_findings.empty())
+    return {m_side == Side::Left ? tr("Worn correctly on your left arm")
+                                 : tr("Worn correctly on your right arm")};
+  return {m_side == Side::Left ? tr("Now, on your left arm") : tr("Now, on your right arm"),
+          tr("How it should be")};
+}
+
+// A panel is 28 units wide and 23 high: the caption's band on top (4 units, two lines at most),
+// then the figure from the top of the head (1.4 units above its origin) to the bottom of
+// the hand (17.1 units below it).
+namespace {
+constexpr double kPanelW = 28, kPanelH = 23, kCaptionH = 4, kHeadAbove = 1.6, kHandBelow = 17.1;
+double unitOf(const QRectF& area) {
+  return std::min(area.width() / kPanelW, area.height() / kPanelH);
+}
+}  // namespace
+
+QRectF StrapPicture::captionRect(const QRectF& area) {
+  const double unit = unitOf(area);
+  return {area.left() + 0.5 * unit, area.top() + 0.2 * unit, area.width() - unit,
+          kCaptionH * unit - 0.4 * unit};
+}
+
+QRectF StrapPicture::figureRect(const QRectF& area) {
+  const double unit = unitOf(area);
+  const QPointF origin(area.center().x() - 6 * unit,
+                       area.top() + (kCaptionH + kHeadAbove + 0.2) * unit);
+  // Head (left of the trunk) to the sensor labels on the right, head top to hand bottom.
+  return {origin.x() - 3.8 * unit, origin.y() - kHeadAbove * unit, 20.6 * unit,
+          (kHeadAbove + kHandBelow) * unit};
+}
+
 void StrapPicture::paint(QPainter& p, const QRectF& area) const {
   p.setRenderHint(QPainter::Antialiasing);
+  const QStringList c = captions();
   if (m_findings.empty()) {
-    paintArm(p, area, {}, tr("Worn right"), false);
+    paintArm(p, area, {}, c[0], false);
     return;
   }
   const QRectF left(area.left(), area.top(), area.width() / 2, area.height());
   const QRectF right(area.center().x(), area.top(), area.width() / 2, area.height());
-  paintArm(p, left, m_findings, tr("Now"), true);
-  paintArm(p, right, {}, tr("How it should be"), false);
+  paintArm(p, left, m_findings, c[0], true);
+  paintArm(p, right, {}, c[1], false);
   p.setPen(QPen(QColor(0x90, 0x90, 0x90), 2));
   p.drawLine(QPointF(area.center().x(), area.top() + 8),
              QPointF(area.center().x(), area.bottom() - 8));
@@ -98,8 +139,8 @@ void StrapPicture::paint(QPainter& p, const QRectF& area) const {
 
 void StrapPicture::paintArm(QPainter& p, const QRectF& area, const std::vector<SensorFinding>& f,
                             const QString& caption, bool wrong) const {
-  const double unit = std::min(area.width() / 28, area.height() / 19);
-  const QPointF origin(area.center().x() - 6 * unit, area.top() + 2.5 * unit);
+  const double unit = unitOf(area);
+  const QPointF origin = figureRect(area).topLeft() + QPointF(3.8 * unit, kHeadAbove * unit);
   const auto at = [&](double x, double y) { return origin + QPointF(x * unit, y * unit); };
   // The body from the side: head, trunk; the arm hanging straight, as in the check.
   p.setPen(QPen(kOutline, 0.2 * unit));
@@ -132,8 +173,7 @@ void StrapPicture::paintArm(QPainter& p, const QRectF& area, const std::vector<S
   font.setBold(true);
   p.setFont(font);
   p.setPen(wrong ? kWrong : kRight);
-  p.drawText(QRectF(area.left(), area.bottom() - 2.6 * unit, area.width(), 2.4 * unit),
-             Qt::AlignCenter,
+  p.drawText(captionRect(area), Qt::AlignCenter | Qt::TextWordWrap,
              (wrong ? QStringLiteral("\u2717 ") : QStringLiteral("\u2713 ")) + caption);
 }
 
@@ -163,6 +203,8 @@ void StrapPicture::describe() {
         break;
     }
   }
+  parts.prepend(m_side == Side::Left ? tr("Your left arm, seen from the side.")
+                                     : tr("Your right arm, seen from the side."));
   setAccessibleName(tr("Picture of the sensors on the arm"));
   setAccessibleDescription(parts.join(u' '));
 }

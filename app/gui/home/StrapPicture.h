@@ -7,6 +7,7 @@
 #include <QWidget>
 
 #include "core/calibration/SensorCheck.h"
+#include "core/kinematics/Side.h"
 
 namespace armtrack::gui::home {
 
@@ -19,6 +20,15 @@ class StrapPicture : public QWidget {
   /// panels, "Now" and "How it should be".
   void setFindings(const std::vector<SensorFinding>& findings);
   const std::vector<SensorFinding>& findings() const { return m_findings; }
+  /// The arm wearing the sensors: the captions name it ("your right arm").
+  void setSide(Side side);
+  Side side() const { return m_side; }
+  /// The captions drawn (for the tests): one per panel.
+  QStringList captions() const;
+  /// Where the drawing goes in a panel of area: the figure (head to hand) and the caption's band,
+  /// which do not overlap and stay inside area.
+  static QRectF figureRect(const QRectF& area);
+  static QRectF captionRect(const QRectF& area);
   /// The picture alone, at size (for the user guide and the tests).
   QImage image(const QSize& size) const;
 
@@ -36,6 +46,7 @@ class StrapPicture : public QWidget {
   void describe();
 
   std::vector<SensorFinding> m_findings;
+  Side m_side = Side::Right;
 };
 
 }  // namespace armtrack::gui::home

@@ -8,11 +8,14 @@
 #include <QPushButton>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <memory>
 #include <opencv2/calib3d.hpp>
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "app/plugins/PluginRegistry.h"
+#include "devices/api/Options.h"
 #include "ui/Retranslate.h"
 
 namespace armtrack::app::gui {
@@ -38,6 +41,42 @@ int Coverage::add(const std::vector<cv::Point2f>& corners, cv::Size image) {
     }
   }
   return added;
+}
+
+std::vector<CameraDevice> camerasAmong(const PluginRegistry& registry, const QStringList& specs) {
+  std::vector<CameraDevice> cameras;
+  for (const QString& spec : specs) {
+    const qsizetype colon = spec.indexOf(u':');
+    const QString name = spec.left(colon).trimmed();
+    devices::DevicePlugin* plugin = registry.plugin(name);
+    if (!plugin) continue;
+    QString why;
+    // Devices open nothing before start(): creating one only reads its options and streams.
+    const std::unique_ptr<devices::Device> device =
+        plugin->create(devices::Options::parse(colon < 0 ? QString() : spec.mid(colon + 1)), &why);
+    if (!device) continue;
+    const auto& streams = device->streams();
+    if (std::none_of(streams.begin(), streams.end(),
+                     [](const StreamInfo& s) { return s.role == StreamRole::Camera; }))
+      continue;
+    cameras.push_back({spec, name, name == QLatin1String("webcam")});
+  }
+  return cameras;
+}
+
+QString cameraStepText(const std::vector<CameraDevice>& cameras) {
+  if (cameras.empty())
+    return CameraCalibrationPage::tr(
+        "No device among those chosen gives webcam images or marker pixels: nothing to "
+        "calibrate here.");
+  if (std::any_of(cameras.begin(), cameras.end(), [](const CameraDevice& c) { return c.images; }))
+    return {};
+  QStringList names;
+  for (const CameraDevice& c : cameras) names << c.plugin;
+  return CameraCalibrationPage::tr(
+             "The webcam of %1 brings its own camera model (it is simulated or replayed), so "
+             "there is no chessboard to show it: nothing to calibrate here.")
+      .arg(names.join(QStringLiteral(", ")));
 }
 
 FrameProvider openWebcam(int index) {

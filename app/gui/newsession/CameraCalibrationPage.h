@@ -19,6 +19,10 @@ class QCheckBox;
 class QLabel;
 class QPushButton;
 
+namespace armtrack::app {
+class PluginRegistry;
+}
+
 namespace armtrack::app::gui {
 
 /// Where frames come from: called in the worker thread, returns the next frame (8-bit BGR or
@@ -27,6 +31,24 @@ using FrameProvider = std::function<cv::Mat()>;
 /// A webcam by index (0 = the first) or a video file; the provider reports an empty Mat when the
 /// camera cannot be read. Opened in the thread that first calls it.
 FrameProvider openWebcam(int index);
+
+/// A device among a session's that gives webcam marker pixels (a stream of StreamRole::Camera as
+/// its plugin creates it, not started).
+struct CameraDevice {
+  QString spec;    ///< "plugin:options" as chosen
+  QString plugin;  ///< the plugin's name
+  /// It reads a real camera's images (the webcam plugin), so a chessboard can calibrate it; the
+  /// others (the virtual arm's simulated webcam, a replay) bring their camera model along.
+  bool images = false;
+};
+
+/// The devices among specs that give webcam marker pixels, in order. A spec whose plugin is not
+/// loaded or refuses its options is left out (the devices step says why).
+std::vector<CameraDevice> camerasAmong(const PluginRegistry& registry, const QStringList& specs);
+
+/// What the camera step says when none of cameras reads a real camera's images (empty when one
+/// does: the chessboard page is shown).
+QString cameraStepText(const std::vector<CameraDevice>& cameras);
 
 /// The grid cells (columns x rows over the image) that corners of the boards fall in.
 struct Coverage {

@@ -2,6 +2,7 @@
 
 #include <QEvent>
 #include <QHBoxLayout>
+#include <QHideEvent>
 #include <QLabel>
 #include <QListWidget>
 #include <QPushButton>
@@ -214,7 +215,9 @@ void DevicesPage::drain() {
   const ui::HealthTracker& h = m_health->tracker();
   if (h.allOk()) {
     if (m_okSince < 0) m_okSince = st.elapsed;
-    if (st.elapsed - m_okSince >= kPassAfterSeconds) {
+    if (!m_checkPassed && st.elapsed - m_okSince >= kPassAfterSeconds) {
+      // Passed; the devices go on streaming so that the therapist can see the angles follow
+      // the arm, until the check is stopped or the next step is taken.
       m_checkPassed = true;
       std::vector<std::tuple<QString, QString, double>> rates;
       std::vector<std::pair<QString, double>> batteries;  // per device, where reported
@@ -223,7 +226,7 @@ void DevicesPage::drain() {
         if (r.batteryPercent && (batteries.empty() || batteries.back().first != r.device))
           batteries.emplace_back(r.device, *r.batteryPercent);
       }
-      finishCheck([rates, batteries] {
+      m_passedText = [rates, batteries] {
         QStringList shown, charged;
         for (const auto& [device, stream, hz] : rates)
           shown << tr("%1 %2 %L3 Hz").arg(device, stream).arg(hz, 0, 'f', 0);
@@ -237,14 +240,20 @@ void DevicesPage::drain() {
         if (!charged.isEmpty())
           text += QLatin1Char(' ') + tr("Battery: %1.").arg(charged.join(QStringLiteral(", ")));
         return text;
+      };
+      showStatus([this] {
+        return m_passedText() + QLatin1Char(' ') +
+               tr("The angles keep following the arm: move it and check them, then go on "
+                  "(or stop the check).");
       });
+      emit checkFinished(true, m_status->text());
       return;
     }
-    showStatus([] { return tr("Receiving from every device\u2026"); });
+    if (!m_checkPassed) showStatus([] { return tr("Receiving from every device\u2026"); });
   } else {
     m_okSince = -1.0;
     showStatus([this] { return m_health->tracker().summary(); });
-    if (st.elapsed > kGiveUpSeconds)
+    if (!m_checkPassed && st.elapsed > kGiveUpSeconds)
       finishCheck([summary = h.summary()] {
         return tr("Not every device is streaming: %1. Check that each is switched on, charged "
                   "and within range, then check again.")
@@ -257,19 +266,30 @@ void DevicesPage::updateCheckButton() {
   m_check->setEnabled(m_checking || !m_controller->busy());
 }
 
+void DevicesPage::hideEvent(QHideEvent* event) {
+  if (!event->spontaneous()) stopCheck();  // not when the window is only minimised
+  QWidget::hideEvent(event);
+}
+
 void DevicesPage::stopCheck() {
   if (!m_checking) return;
+  if (m_checkPassed) {
+    // Its verdict was given when it passed; the figures seen then stay.
+    finishCheck([text = m_passedText] { return text() + QLatin1Char(' ') + tr("Check stopped."); },
+                false);
+    return;
+  }
   finishCheck([] { return tr("Check stopped."); });
 }
 
-void DevicesPage::finishCheck(std::function<QString()> message) {
+void DevicesPage::finishCheck(std::function<QString()> message, bool announce) {
   m_timer.stop();
   m_controller->stop();
   m_checking = false;
   m_check->setText(tr("&Check connection"));
   updateCheckButton();
   showStatus(std::move(message));
-  emit checkFinished(m_checkPassed, m_status->text());
+  if (announce) emit checkFinished(m_checkPassed, m_status->text());
 }
 
 }  // namespace armtrack::app::gui

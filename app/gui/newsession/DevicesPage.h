@@ -46,17 +46,22 @@ class DevicesPage : public QWidget {
   QPushButton* checkButton() const { return m_check; }
 
  public slots:
-  /// Runs the chosen devices until stopCheck() (or checkSeconds), showing their signal.
+  /// Runs the chosen devices, showing their signal and angles, until stopCheck() (the next step
+  /// calls it): after passing (every stream streaming for 2 s) the angles keep following the arm.
   void startCheck();
   void stopCheck();
 
  signals:
   void completeChanged();
-  /// The check ended: passed when every stream streamed, message says what was seen.
+  /// The check's verdict: passed when every stream streamed for 2 s (the devices then go on
+  /// streaming until stopCheck()), failed when one did not or the devices could not start (the
+  /// check has ended); message says what was seen.
   void checkFinished(bool passed, const QString& message);
 
  protected:
   void changeEvent(QEvent* event) override;
+  /// A page no longer shown lets go of its devices (the next step needs them).
+  void hideEvent(QHideEvent* event) override;
 
  private:
   void retranslateUi();
@@ -64,7 +69,8 @@ class DevicesPage : public QWidget {
   void showStatus(std::function<QString()> text);
   void showPlugin(QListWidgetItem* item);
   void drain();
-  void finishCheck(std::function<QString()> message);
+  /// Ends the check; announce: emit checkFinished() (not for a check that has passed already).
+  void finishCheck(std::function<QString()> message, bool announce = true);
   void updateCheckButton();
 
   const PluginRegistry& m_registry;
@@ -85,6 +91,7 @@ class DevicesPage : public QWidget {
   QListWidgetItem* m_shown = nullptr;
   bool m_checking = false;
   bool m_checkPassed = false;
+  std::function<QString()> m_passedText;  // what the passed check saw
   double m_okSince = -1.0;
   std::vector<session::EstimateRow> m_rows;
 };

@@ -264,13 +264,14 @@ void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
             "Hold the printed chessboard in front of the webcam in different places and "
             "angles until the grid is covered.");
       },
-      [this]() -> QWidget* {
-        const bool webcam =
-            std::any_of(m_choices.devices.begin(), m_choices.devices.end(),
-                        [](const QString& d) { return d.startsWith(QLatin1String("webcam")); });
-        if (!webcam) {
-          auto* none = new TranslatedLabel(
-              [] { return tr("No webcam among the devices: nothing to calibrate here."); });
+      [this, &plugins]() -> QWidget* {
+        // Every device that gives webcam marker pixels counts; only a real camera's images can
+        // be calibrated with the chessboard.
+        const std::vector<app::gui::CameraDevice> cameras =
+            app::gui::camerasAmong(plugins, m_choices.devices);
+        if (!app::gui::cameraStepText(cameras).isEmpty()) {
+          auto* none = new TranslatedLabel([cameras] { return app::gui::cameraStepText(cameras); });
+          none->setObjectName(QStringLiteral("cameraStepText"));
           none->setProperty("complete", true);
           return none;
         }

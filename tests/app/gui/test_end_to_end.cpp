@@ -9,6 +9,7 @@
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
 #include <QPushButton>
@@ -161,8 +162,13 @@ class TestEndToEnd : public QObject {
     shot("calibration-verdict");
     QTest::mouseClick(wizard->button(QWizard::NextButton), Qt::LeftButton);
 
-    // No webcam device: the camera step has nothing to do; Finish starts the live session.
+    // The virtual arm's webcam is simulated (its camera model known): the camera step names it
+    // and has nothing to do; Finish starts the live session.
     QTRY_COMPARE(wizard->currentPage(), static_cast<QWizardPage*>(ns->cameraStep()));
+    auto* cameraText = ns->cameraStep()->findChild<QLabel*>(QStringLiteral("cameraStepText"));
+    QVERIFY(cameraText);
+    QVERIFY2(cameraText->text().contains(QStringLiteral("virtual-arm")),
+             qPrintable(cameraText->text()));
     QTRY_VERIFY(wizard->button(QWizard::FinishButton)->isEnabled());
     QVERIFY(ns->choices().calibration.has_value());
     QVERIFY(QFileInfo::exists(ns->choices().calibrationFile));

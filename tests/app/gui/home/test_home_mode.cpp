@@ -3,16 +3,19 @@
 // - sees only its own patient: the main window is hidden, the settings' shortcut does nothing,
 //   and the records refuse another patient and every staff action;
 // - wears the IMUs swapped: the sensor check finds it from the data and explains it in words and
-//   a picture; closing the window in the middle of an exercise keeps that session, interrupted;
+//   a picture; closing the window in the middle of an exercise asks first, and "Stop and save"
+//   keeps that session, complete;
 // - with the sensors right, and a single switch (Space, "press to go on") as the only key,
 //   completes a two-exercise programme (elbow flexion 2 sets with a rest, shoulder flexion 1
 //   set): repetitions counted, the target reached, other joints moving noticed, the summary with
 //   a pain score and a comment saved;
-// then the therapist finds those sessions, marked home, with the pain score, in the patient's
-// page. The screenshots are the user guide's "At home" pictures (docs/user-guide.md).
+// then the therapist's sign-in analyses those sessions (a home account may not) and finds them,
+// marked home, with the pain score, in the patient's page. The screenshots are the user guide's "At
+// home" pictures (docs/user-guide.md).
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -36,6 +39,7 @@
 #include "app/gui/home/SwitchAccess.h"
 #include "app/gui/patients/PatientScreen.h"
 #include "app/gui/services/HomeRecords.h"
+#include "app/gui/services/PatientRecords.h"
 #include "app/gui/signin/SignInScreen.h"
 #include "app/i18n/Language.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
@@ -91,6 +95,24 @@ class TestHomeMode : public QObject {
     QTRY_VERIFY(window() && window()->isVisible());
     QVERIFY(armtrack::gui::test::activate(window()));
     QTRY_VERIFY(current<HomeStartScreen>());
+  }
+
+  /// Skip the calibration, and Skip it when asked.
+  void skipCalibration() {
+    auto* calibration = current<HomeCalibrationScreen>();
+    QVERIFY(calibration);
+    findControl<QPushButton>(calibration, QStringLiteral("Skip the calibration"))->click();
+    QMessageBox* box = nullptr;
+    QTRY_VERIFY((box = calibration->skipQuestion()) && box->isVisible());
+    for (QAbstractButton* b : box->buttons())
+      if (b->text().remove(u'&') == QStringLiteral("Skip it")) b->click();
+  }
+
+  /// The question the home window asks when it is closed during an exercise.
+  QMessageBox* closeQuestion() {
+    QMessageBox* box = nullptr;
+    [&] { QTRY_VERIFY((box = m_app->home()->closeQuestion()) && box->isVisible()); }();
+    return box;
   }
 
   /// The sessions of the demo patient as the records hold them (signed in as anyone).
@@ -217,7 +239,7 @@ class TestHomeMode : public QObject {
     shot("home-check-swapped");
   }
 
-  void closingDuringAnExerciseKeepsItInterrupted() {
+  void closingDuringAnExerciseAsksThenSaves() {
     // The check's recording went into the home window's temporary folder (made with the plan, off
     // the GUI thread), which goes when the window does.
     const QString work = m_app->home()->setup().workFolder;
@@ -227,14 +249,24 @@ class TestHomeMode : public QObject {
     // Going on anyway, without the calibration, into the first exercise.
     findControl<QPushButton>(current<SensorCheckScreen>(), QStringLiteral("Go on anyway"))->click();
     QTRY_VERIFY(current<HomeCalibrationScreen>());
-    findControl<QPushButton>(screen(), QStringLiteral("Skip the calibration"))->click();
+    skipCalibration();
     QTRY_VERIFY(current<ExerciseScreen>());
     const std::size_t before = sessions().size();
     press();  // Start set 1
     auto* exercise = current<ExerciseScreen>();
     QTRY_COMPARE(exercise->phase(), ExerciseScreen::Phase::Set);
     QTRY_VERIFY_WITH_TIMEOUT(exercise->counterText().startsWith(QStringLiteral("1 of 3")), kSlowMs);
-    window()->close();  // the window's close button
+    // The window's close button asks first; Enter (the default) keeps exercising.
+    window()->close();
+    QTest::keyClick(closeQuestion(), Qt::Key_Return);
+    QTRY_VERIFY(!m_app->home()->closeQuestion());
+    QCOMPARE(exercise->phase(), ExerciseScreen::Phase::Set);
+    QVERIFY(window()->isVisible());
+    // Asked again: Stop and save.
+    window()->close();
+    QMessageBox* box = closeQuestion();
+    for (QAbstractButton* b : box->buttons())
+      if (b->text().remove(u'&') == QStringLiteral("Stop and save")) b->click();
     QTRY_VERIFY_WITH_TIMEOUT(m_app->home() == nullptr, kSlowMs);
     QTRY_VERIFY(m_app->window()->isVisible());
     QTRY_VERIFY2(!QFileInfo::exists(work), qPrintable(work));
@@ -243,13 +275,23 @@ class TestHomeMode : public QObject {
     QCOMPARE(after.size(), before + 1);
     const storage::SessionInfo& cut = after.back();
     QCOMPARE(cut.setting, QString::fromLatin1(storage::kSettingHome));
-    QCOMPARE(cut.status, QString::fromLatin1(storage::kStatusInterrupted));
+    // Saved as the patient stopped it: complete, its analysis waiting for staff.
+    QCOMPARE(cut.status, QString::fromLatin1(storage::kStatusComplete));
     QVERIFY(cut.durationS > 3.0);  // recorded up to the close
     const auto summary = HomeExerciseResult::fromJson(
         QJsonDocument::fromJson(cut.homeSummaryJson.toUtf8()).object());
     QVERIFY(summary);
     QVERIFY(summary->stoppedEarly);
     QVERIFY(summary->repetitions >= 1);
+    // The therapist's sign-in analyses it (the home account could not).
+    const qint64 id = cut.id;
+    QTRY_VERIFY_WITH_TIMEOUT(
+        [&] {
+          for (const storage::SessionInfo& s : sessions())
+            if (s.id == id) return s.analysis == QLatin1String(storage::kAnalysisDone);
+          return false;
+        }(),
+        kSlowMs);
   }
 
   void completesTheProgrammeWithOneSwitch() {
@@ -264,8 +306,9 @@ class TestHomeMode : public QObject {
     QTRY_COMPARE_WITH_TIMEOUT(check->state(), SensorCheckScreen::State::Passed, kSlowMs);
     press();  // Go on
     QTRY_VERIFY(current<HomeCalibrationScreen>());
-    // The calibration itself is tested with the therapist's page (test_newsession_pages).
-    findControl<QPushButton>(screen(), QStringLiteral("Skip the calibration"))->click();
+    // The calibration itself is tested with the therapist's page (test_newsession_pages) and in
+    // the patient's words in test_home_screens.
+    skipCalibration();
 
     for (int n = 1; n <= 2; ++n) {
       QTRY_VERIFY(current<ExerciseScreen>());
@@ -318,7 +361,7 @@ class TestHomeMode : public QObject {
              qPrintable(summary->lines()[0]));
     for (int i = 0; i < 3; ++i)
       findControl<QPushButton>(summary, QStringLiteral("More pain"))->click();
-    QCOMPARE(summary->painScore(), std::optional<int>(2));  // "no answer", 0, 1, 2
+    QCOMPARE(summary->painScore(), std::optional<int>(3));  // "no answer", 1, 2, 3
     auto* comment = findControl<QPlainTextEdit>(summary, QStringLiteral("Your comment"));
     comment->setFocus();
     QTest::keyClicks(comment, QStringLiteral("Stiff in the morning"));
@@ -330,9 +373,11 @@ class TestHomeMode : public QObject {
     const auto after = sessions();
     QCOMPARE(after.size(), before + 2);
     for (std::size_t i = before; i < after.size(); ++i) {
+      // The home account may not analyse: today's sessions wait, complete, for staff.
+      QCOMPARE(after[i].analysis, QString::fromLatin1(storage::kAnalysisPending));
       QCOMPARE(after[i].setting, QString::fromLatin1(storage::kSettingHome));
       QCOMPARE(after[i].status, QString::fromLatin1(storage::kStatusComplete));
-      QCOMPARE(after[i].painScore, std::optional<int>(2));
+      QCOMPARE(after[i].painScore, std::optional<int>(3));
       QCOMPARE(after[i].patientComment, QStringLiteral("Stiff in the morning"));
     }
     press();  // Close
@@ -341,6 +386,29 @@ class TestHomeMode : public QObject {
 
   void theTherapistSeesTheHomeSessions() {
     signInAs(DemoAccounts::kTherapist);
+    std::vector<qint64> home;
+    for (const storage::SessionInfo& s : sessions())
+      if (s.setting == QLatin1String(storage::kSettingHome)) home.push_back(s.id);
+    QCOMPARE(home.size(), std::size_t{3});
+    // The therapist's start analyses every one of them in the background, however it ended
+    // (stopped by closing the window, or finished), so that they reach the progress chart.
+    const auto analysed = [&] {
+      int n = 0;
+      for (const storage::SessionInfo& s : sessions())
+        if (std::find(home.begin(), home.end(), s.id) != home.end() &&
+            s.analysis == QLatin1String(storage::kAnalysisDone))
+          ++n;
+      return n;
+    };
+    QTRY_COMPARE_WITH_TIMEOUT(analysed(), 3, 2 * kSlowMs);
+    // ... and in the progress chart's data.
+    const PatientOverview overview = m_app->records().callBlocking([](storage::ClinicalStore& s) {
+      return loadPatientOverview(s, QString::fromLatin1(DemoAccounts::kLivePatient));
+    });
+    for (const qint64 id : home)
+      QVERIFY2(std::any_of(overview.progress.begin(), overview.progress.end(),
+                           [id](const SessionExtremes& e) { return e.id == id; }),
+               qPrintable(QString::number(id)));
     QVERIFY(armtrack::gui::test::activate(m_app->window()));
     m_app->showPatient(QString::fromLatin1(DemoAccounts::kLivePatient));
     PatientScreen* page = nullptr;
@@ -348,16 +416,16 @@ class TestHomeMode : public QObject {
     QTableView* table = nullptr;
     QTRY_VERIFY((table = findControl<QTableView>(page, QStringLiteral("Sessions"))) != nullptr);
     QTRY_VERIFY(table->model()->rowCount() > 0);
-    QStringList home;
+    QStringList rows;
     for (int row = 0; row < table->model()->rowCount(); ++row) {
       const QString where = table->model()->index(row, SessionTableModel::Where).data().toString();
       if (where == QLatin1String("home"))
-        home << table->model()->index(row, SessionTableModel::Patient).data().toString();
+        rows << table->model()->index(row, SessionTableModel::Patient).data().toString();
     }
-    QCOMPARE(home.size(), 3);  // the interrupted one and today's two
-    QCOMPARE(home.filter(QStringLiteral("pain 2/10")).size(), 2);
-    QVERIFY(home.filter(QStringLiteral("6 of 6 repetitions")).size() == 1);
-    QVERIFY(home.filter(QStringLiteral("Stiff in the morning")).size() == 2);
+    QCOMPARE(rows.size(), 3);  // the one stopped by closing and today's two
+    QCOMPARE(rows.filter(QStringLiteral("pain 3/10")).size(), 2);
+    QVERIFY(rows.filter(QStringLiteral("6 of 6 repetitions")).size() == 1);
+    QVERIFY(rows.filter(QStringLiteral("Stiff in the morning")).size() == 2);
     armtrack::gui::test::saveScreenshot(m_app->window(), QStringLiteral("home-therapist"));
   }
 

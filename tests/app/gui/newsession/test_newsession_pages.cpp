@@ -23,6 +23,7 @@
 #include "app/plugins/PluginRegistry.h"
 #include "core/simulation/Trajectory.h"
 #include "tests/support/GuiTestMain.h"
+#include "ui/AngleReadouts.h"
 #include "ui/DeviceHealthPanel.h"
 #include "ui/DeviceOptionsForm.h"
 
@@ -154,10 +155,38 @@ class TestNewSessionPages : public QObject {
     QVERIFY(finished.wait(20000));
     QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
     QVERIFY(page.checkPassed());
-    // Until the check's devices are released (the controller's reply needs this thread's event
-    // loop, which has not run since), the button is off: a check started now would be refused.
+    // Passed, the check goes on streaming: the angles keep following the arm (the virtual arm
+    // moves all the time) until the therapist stops it or goes on.
     const auto* controller = page.findChild<gui::SessionController*>();
     QVERIFY(controller);
+    QVERIFY(page.checking());
+    QVERIFY(controller->busy());
+    QVERIFY(page.checkButton()->isEnabled());
+    QCOMPARE(page.checkButton()->text().remove(u'&'), QStringLiteral("Stop check"));
+    const auto* readouts = page.findChild<ui::AngleReadouts*>();
+    QVERIFY(readouts);
+    for (int second = 0; second < 4; ++second) {
+      QStringList before;
+      for (int a = 0; a < 5; ++a) before << readouts->valueText(a);
+      QTRY_VERIFY_WITH_TIMEOUT(
+          [&] {
+            for (int a = 0; a < 5; ++a)
+              if (readouts->valueText(a) != before[a]) return true;
+            return false;
+          }(),
+          3000);
+      QTest::qWait(1000);
+      QVERIFY(page.checking());
+    }
+    QCOMPARE(finished.count(), 1);  // the verdict once
+    page.stopCheck();
+    QVERIFY(!page.checking());
+    QVERIFY(page.checkPassed());
+    QVERIFY2(page.statusText().startsWith(QStringLiteral("Connected:")),
+             qPrintable(page.statusText()));
+    QCOMPARE(finished.count(), 1);
+    // Until the check's devices are released (the controller's reply needs this thread's event
+    // loop, which has not run since), the button is off: a check started now would be refused.
     QVERIFY(controller->busy());
     QVERIFY(!page.checkButton()->isEnabled());
     // The rate in the locale's digits ("1000", "1,000", "1.000"), as measured over the last
@@ -193,6 +222,7 @@ class TestNewSessionPages : public QObject {
     QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
     QVERIFY2(page.statusText().contains(QStringLiteral("Battery: virtual-arm#1 12 % (low")),
              qPrintable(page.statusText()));
+    page.stopCheck();
     battery->setText(QString());
     // A bad option: the plugin's own message, once the previous check has let go of its devices
     // (until then the controller refuses to start).
@@ -333,6 +363,37 @@ class TestNewSessionPages : public QObject {
     page.reset();
     QCOMPARE(page.capturedViews(), 0);
     QVERIFY(!page.isComplete());
+  }
+
+  void everyWebcamIsRecognised() {
+    // The virtual arm's simulated webcam gives marker pixels: it is a webcam among the devices,
+    // with its own camera model (no images for a chessboard).
+    auto cams = camerasAmong(m_registry,
+                             {QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+webcam")});
+    QCOMPARE(cams.size(), std::size_t{1});
+    QCOMPARE(cams[0].plugin, QStringLiteral("virtual-arm"));
+    QVERIFY(!cams[0].images);
+    const QString text = cameraStepText(cams);
+    QVERIFY2(text.contains(QStringLiteral("virtual-arm")), qPrintable(text));
+    QVERIFY2(!text.contains(QStringLiteral("No ")), qPrintable(text));
+    // The demo's devices (and so the wizard's default) have one.
+    QCOMPARE(camerasAmong(m_registry, gui::demoDevices()).size(), std::size_t{1});
+    // Without a webcam stream, or with specs that are not devices: none.
+    QVERIFY(
+        camerasAmong(m_registry, {QStringLiteral("virtual-arm:sensors=upper+forearm")}).empty());
+    QVERIFY(camerasAmong(m_registry,
+                         {QStringLiteral("nope:x=1"), QStringLiteral(""), QStringLiteral(":::"),
+                          QStringLiteral("virtual-arm:sensors=banana")})
+                .empty());
+    QVERIFY(cameraStepText({}).startsWith(QStringLiteral("No device")));
+    // A real camera (the webcam plugin, when it is built) is calibrated with the chessboard.
+    if (m_registry.plugin(QStringLiteral("webcam"))) {
+      cams = camerasAmong(m_registry, {QStringLiteral("virtual-arm:sensors=upper+forearm"),
+                                       QStringLiteral("webcam:source=0")});
+      QCOMPARE(cams.size(), std::size_t{1});
+      QVERIFY(cams[0].images);
+      QVERIFY(cameraStepText(cams).isEmpty());
+    }
   }
 
   void cameraWithoutABoardOrWithoutPictures() {
