@@ -66,6 +66,11 @@ reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint
   d.side = s.side == Side::Left ? "left" : "right";
   d.angles = s.series;
   d.metrics = s.metrics;
+  // Times in recording time, from the first recorded row, as the review shows them.
+  d.recordingStartS = store.recordingStartS(id);
+  d.events =
+      parseEventMarks(s.info.notes.toStdString(),
+                      d.recordingStartS.value_or(s.series.t.empty() ? 0.0 : s.series.t.front()));
   // Earlier sessions of the patient with metrics, oldest first; the latest of the other arm.
   std::vector<storage::SessionInfo> all = store.listSessions(s.info.patientCode);
   std::sort(all.begin(), all.end(),
