@@ -245,6 +245,9 @@ class TestHomeMode : public QObject {
     QCOMPARE(cut.setting, QString::fromLatin1(storage::kSettingHome));
     QCOMPARE(cut.status, QString::fromLatin1(storage::kStatusInterrupted));
     QVERIFY(cut.durationS > 3.0);  // recorded up to the close
+    // The devices stored as the clinic's recordings and the CLI store them (issue 25, item 7).
+    QVERIFY2(cut.devicesJson.contains(QStringLiteral("\"plugin\":\"virtual-arm\"")),
+             qPrintable(cut.devicesJson));
     const auto summary = HomeExerciseResult::fromJson(
         QJsonDocument::fromJson(cut.homeSummaryJson.toUtf8()).object());
     QVERIFY(summary);
