@@ -112,6 +112,13 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
     }
     d.sessions.push_back(p);
   }
+  // No bound asked for (the patient page: all sessions): the period is the sessions' first and
+  // last day, for the report's header and the audit entry, not "- to -".
+  for (const reports::ProgressSession& p : d.sessions) {
+    const QString date = dateOf(p.startedAt);
+    if (from.isEmpty() && (d.fromDate.isEmpty() || date < d.fromDate)) d.fromDate = date;
+    if (to.isEmpty() && (d.toDate.isEmpty() || date > d.toDate)) d.toDate = date;
+  }
   return d;
 }
 
