@@ -65,4 +65,19 @@ std::vector<EventMark> parseEventMarks(std::string_view notes, double recordingS
   return out;
 }
 
+std::string notesWithoutEvents(std::string_view notes) {
+  std::string out;
+  std::size_t from = 0;
+  while (from <= notes.size()) {
+    std::size_t to = notes.find('\n', from);
+    if (to == std::string_view::npos) to = notes.size();
+    const std::string_view line = notes.substr(from, to - from);
+    from = to + 1;
+    if (!parseEventMarks(line, 0).empty()) continue;
+    if (!out.empty()) out += '\n';
+    out += line;
+  }
+  return out;
+}
+
 }  // namespace armtrack

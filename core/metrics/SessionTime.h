@@ -37,4 +37,8 @@ std::string eventLine(const EventMark& event);
 /// session clock and become recording time with recordingStartS. In the order found.
 std::vector<EventMark> parseEventMarks(std::string_view notes, double recordingStartS);
 
+/// The notes without the lines parseEventMarks reads as events, for printing them beside a list
+/// of the events in recording time.
+std::string notesWithoutEvents(std::string_view notes);
+
 }  // namespace armtrack

@@ -264,7 +264,7 @@ void normative(PageWriter& w, const SessionReportData& d) {
     // named direction against that motion's normal range.
     const std::optional<double> percent = percentOfNormal(n, m.minRad, m.maxRad);
     b.caption =
-        Text::tr("largest %1 of %2 deg (%3 % of normal)")
+        Text::tr("%1 of %2 deg, %3 %", "the largest angle, its normal, the percent of normal")
             .arg(formatDeg(m.maxRad * kRadToDeg), formatDeg(motionNormalRad(n, false) * kRadToDeg),
                  percent ? reportLocale().toString(static_cast<qlonglong>(std::lround(*percent)))
                          : QStringLiteral("-"));
@@ -289,10 +289,10 @@ void normative(PageWriter& w, const SessionReportData& d) {
                      "Grey: the normal range of motion; blue: this session's range "
                      "(negative = extension, external rotation, supination). Shoulder "
                      "adduction has no normal limit in the sources; its range is shown from "
-                     "0. \"%% of normal\": the largest angle reached in the motion the angle is "
+                     "0. Beside each bar: the largest angle reached in the motion the angle is "
                      "named after (flexion, abduction, internal rotation, elbow flexion, "
-                     "pronation) against that motion's normal range, as on the patient's page. "
-                     "Sources: %1.")
+                     "pronation), that motion's normal range, and the first as a percentage of "
+                     "the second, as on the patient's page. Sources: %1.")
                      .arg(cited.join(QStringLiteral("; ")));
   if (norms.usesSoucie())
     text += ' ' + Text::tr(
@@ -360,10 +360,14 @@ void notes(PageWriter& w, const SessionReportData& d) {
                     .arg(events.join(QStringLiteral("; "))),
                 w.fonts().body);
   }
-  if (d.session.notes.trimmed().isEmpty())
+  // The event lines are listed above in recording time; the rest as written.
+  const QString text =
+      d.events.empty() ? d.session.notes
+                       : QString::fromStdString(notesWithoutEvents(d.session.notes.toStdString()));
+  if (!text.trimmed().isEmpty())
+    w.paragraph(text, w.fonts().body);
+  else if (d.events.empty())
     w.paragraph(Text::tr("No notes."), w.fonts().body);
-  else
-    w.paragraph(d.session.notes, w.fonts().body);
 }
 
 }  // namespace

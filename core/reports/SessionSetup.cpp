@@ -69,8 +69,13 @@ QStringList calibrationText(const QString& calibrationJson, const QString& filte
     const QString v = verdict == QLatin1String("good")     ? Text::tr("Good")
                       : verdict == QLatin1String("usable") ? Text::tr("Usable")
                                                            : Text::tr("Poor");
-    out << (reason.isEmpty() ? Text::tr("Sensor calibration: %1.").arg(v)
-                             : Text::tr("Sensor calibration: %1. %2").arg(v, reason));
+    // The GUI's reason begins with the verdict ("Usable, not perfect ..."): not said twice.
+    if (reason.isEmpty())
+      out << Text::tr("Sensor calibration: %1.").arg(v);
+    else if (reason.startsWith(v))
+      out << Text::tr("Sensor calibration: %1").arg(reason);
+    else
+      out << Text::tr("Sensor calibration: %1. %2").arg(v, reason);
   } else {
     out << Text::tr(
         "Sensor calibration: none was made for this session; the lengths below are the ones "

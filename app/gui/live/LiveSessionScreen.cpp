@@ -347,11 +347,7 @@ void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
   // Rows the gate dropped while paused were never meant for the recording.
   const bool complete = recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
   m_target->finishAsync(
-      recordedRows, complete,
-      events.isEmpty()
-          ? QString()
-          : tr("Events (time since the recording began):") + u'\n' + events.join(u'\n'),
-      this, [this, recorderError](const QString& line) {
+      recordedRows, complete, events.join(u'\n'), this, [this, recorderError](const QString& line) {
         QString summary = line;
         if (!recorderError.isEmpty())
           summary += QStringLiteral(" ") + tr("Last recording problem: %1").arg(recorderError);

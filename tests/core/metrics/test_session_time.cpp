@@ -63,6 +63,8 @@ TEST(RecordingTime, EventsRoundTripAndOlderNotesConvert) {
   EXPECT_EQ(old[0].label, "Pain");
   EXPECT_NEAR(old[1].recordingS, 16.0, 1e-9);
   EXPECT_EQ(old[1].label, "Fatigue");
+  EXPECT_EQ(notesWithoutEvents(notes), "Patient tired.\n[x] not an event");
+  EXPECT_EQ(notesWithoutEvents("Events: 28.4 s: Pain\nKeep going."), "Keep going.");
   // Garbage: nothing, no throw.
   EXPECT_TRUE(parseEventMarks("", 0).empty());
   EXPECT_TRUE(parseEventMarks("Events: soon; later", 0).empty());

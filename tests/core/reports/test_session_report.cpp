@@ -69,7 +69,7 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
   // stored keys or matrices.
   const QString flat = all.simplified();
   for (const char* s :
-       {"Sensor calibration: Usable. Usable, not perfect (worst: forearm gyroscope at 2.1",
+       {"Sensor calibration: Usable, not perfect (worst: forearm gyroscope at 2.1",
         "upper arm 30.0 cm (shoulder to elbow), forearm 25.0 cm (elbow to wrist)",
         "Upper-arm sensor: 11.0 cm from the shoulder, mounted at 90.0 deg",
         "Forearm sensor: 20.0 cm from the elbow", "Camera: calibrated, 1.00 m from the shoulder"})
@@ -130,7 +130,8 @@ TEST_F(SessionReport, TimesAreRecordingTimeAsInTheReview) {
   SessionReportData d = sessionData(sim);
   const double start = sim.series.t.front() - 1.3;
   d.recordingStartS = start;
-  d.events = parseEventMarks("[0:12.0] Pain", start);
+  d.session.notes = "Tired at the end.\n[0:12.0] Pain";
+  d.events = parseEventMarks(d.session.notes.toStdString(), start);
   EXPECT_DOUBLE_EQ(timeOrigin(d), start);
   const QString pdf = path("times.pdf");
   writeSessionReport(d, pdf);
@@ -149,6 +150,8 @@ TEST_F(SessionReport, TimesAreRecordingTimeAsInTheReview) {
       "Events marked (time since the recording began, as in the review): 0:12.0 Pain"))
       << all.toStdString();
   EXPECT_GE(all.count("Pain"), 2) << "listed and drawn on the plots";
+  EXPECT_FALSE(all.contains("[0:12.0]")) << "the event line is not printed twice";
+  EXPECT_TRUE(all.contains("Tired at the end."));
 }
 
 /// The grey normal-range bars of the normative comparison on a rendered page: per bar (top to
