@@ -368,10 +368,6 @@
         <translation>Aufnahme in %1</translation>
     </message>
     <message>
-        <source>Events: %1</source>
-        <translation>Ereignisse: %1</translation>
-    </message>
-    <message>
         <source>Last recording problem: %1</source>
         <translation>Letztes Aufnahmeproblem: %1</translation>
     </message>
@@ -1734,10 +1730,6 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <translation>%L1 %</translation>
     </message>
     <message>
-        <source>Normal (AAOS) %L1 %2</source>
-        <translation>Normbereich (AAOS) %L1 %2</translation>
-    </message>
-    <message>
         <source>d MMM</source>
         <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
         <translation>d. MMM</translation>
@@ -1801,6 +1793,10 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Forearm pronation</source>
         <translation>Unterarmpronation</translation>
+    </message>
+    <message>
+        <source>Normal (%1) %L2 %3</source>
+        <translation>Normbereich (%1) %L2 %3</translation>
     </message>
 </context>
 <context>
@@ -4027,14 +4023,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Betroffene Seite</translation>
     </message>
     <message>
-        <source>From</source>
-        <translation>Von</translation>
-    </message>
-    <message>
-        <source>To</source>
-        <translation>Bis</translation>
-    </message>
-    <message>
         <source>Therapist</source>
         <translation>Therapeut</translation>
     </message>
@@ -4045,10 +4033,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Range of motion over time</source>
         <translation>Bewegungsausmaß im Verlauf</translation>
-    </message>
-    <message>
-        <source>No sessions between %1 and %2.</source>
-        <translation>Keine Sitzungen zwischen %1 und %2.</translation>
     </message>
     <message>
         <source>%1: largest angle reached (deg)</source>
@@ -4250,10 +4234,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Kalibrierung</translation>
     </message>
     <message>
-        <source>No calibration was recorded for this session.</source>
-        <translation>Für diese Sitzung wurde keine Kalibrierung gespeichert.</translation>
-    </message>
-    <message>
         <source>%1 not defined</source>
         <translation>%1 nicht definiert</translation>
     </message>
@@ -4406,10 +4386,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>%1 Messwerte verwendet, %2 Zeilen verworfen (nicht endlich), %3 Lücken. Glattheit der Handgelenksbahn: %4, %5.</translation>
     </message>
     <message>
-        <source>ROM %1 of %2 deg (%3 %)</source>
-        <translation>ROM %1 von %2° (%3 %)</translation>
-    </message>
-    <message>
         <source>females aged %1-%2</source>
         <translation>Frauen im Alter von %1-%2 Jahren</translation>
     </message>
@@ -4446,10 +4422,6 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Quelle</translation>
     </message>
     <message>
-        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Sources: %1.</source>
-        <translation>Grau: das normale Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Für die Schulteradduktion nennen die Quellen keinen Normwert; ihr Bereich wird ab 0 gezeigt. Quellen: %1.</translation>
-    </message>
-    <message>
         <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
         <translation>Soucie et al. geben das mittlere passive Bewegungsausmaß gesunder %1 an; der Patient war am Tag der Sitzung %2 Jahre alt.</translation>
     </message>
@@ -4469,6 +4441,115 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>Forearm pronation</source>
         <comment>the motion, beside the supination chart</comment>
         <translation>Unterarmpronation</translation>
+    </message>
+    <message>
+        <source>no sessions</source>
+        <translation>keine Sitzungen</translation>
+    </message>
+    <message>
+        <source>until %1</source>
+        <translation>bis %1</translation>
+    </message>
+    <message>
+        <source>from %1</source>
+        <translation>ab %1</translation>
+    </message>
+    <message>
+        <source>Period</source>
+        <translation>Zeitraum</translation>
+    </message>
+    <message>
+        <source>No sessions in the period (%1).</source>
+        <translation>Keine Sitzungen im Zeitraum (%1).</translation>
+    </message>
+    <message>
+        <source>; latest %1 % of normal</source>
+        <translation>; zuletzt %1 % der Norm</translation>
+    </message>
+    <message>
+        <source>%1 of %2 deg, %3 %</source>
+        <comment>the largest angle, its normal, the percent of normal</comment>
+        <translation>%1 von %2°, %3 %</translation>
+    </message>
+    <message>
+        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Beside each bar: the largest angle reached in the motion the angle is named after (flexion, abduction, internal rotation, elbow flexion, pronation), that motion&apos;s normal range, and the first as a percentage of the second, as on the patient&apos;s page. Sources: %1.</source>
+        <translation>Grau: das normale Bewegungsausmaß; blau: das Bewegungsausmaß dieser Sitzung (negativ = Extension, Außenrotation, Supination). Für die Schulteradduktion nennen die Quellen keinen Normwert; ihr Bereich wird ab 0 gezeigt. Neben jedem Balken: der größte erreichte Winkel in der Bewegung, nach der der Winkel benannt ist (Flexion, Abduktion, Innenrotation, Ellbogenflexion, Pronation), der Normbereich dieser Bewegung und der erste in Prozent des zweiten, wie auf der Patientenseite. Quellen: %1.</translation>
+    </message>
+    <message>
+        <source>Events marked (time since the recording began, as in the review): %1</source>
+        <translation>Markierte Ereignisse (Zeit seit Beginn der Aufnahme, wie in der Auswertung): %1</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Good</source>
+        <translation>Gut</translation>
+    </message>
+    <message>
+        <source>Usable</source>
+        <translation>Brauchbar</translation>
+    </message>
+    <message>
+        <source>Poor</source>
+        <translation>Schlecht</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1.</source>
+        <translation>Sensorkalibrierung: %1.</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1</source>
+        <translation>Sensorkalibrierung: %1</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1. %2</source>
+        <translation>Sensorkalibrierung: %1. %2</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: none was made for this session; the lengths below are the ones the session was recorded with (measured or default).</source>
+        <translation>Sensorkalibrierung: für diese Sitzung wurde keine durchgeführt; die folgenden Längen sind die, mit denen die Sitzung aufgenommen wurde (gemessen oder Standardwerte).</translation>
+    </message>
+    <message>
+        <source>Segments: upper arm %1 (shoulder to elbow), forearm %2 (elbow to wrist).</source>
+        <translation>Segmente: Oberarm %1 (Schulter bis Ellbogen), Unterarm %2 (Ellbogen bis Handgelenk).</translation>
+    </message>
+    <message>
+        <source>%1 from the %2, mounted at %3 about the segment, %4 off its axis</source>
+        <translation>%1 von %2 entfernt, um %3 um das Segment gedreht angebracht, %4 neben seiner Achse</translation>
+    </message>
+    <message>
+        <source>shoulder</source>
+        <translation>der Schulter</translation>
+    </message>
+    <message>
+        <source>Upper-arm sensor: %1.</source>
+        <translation>Oberarmsensor: %1.</translation>
+    </message>
+    <message>
+        <source>elbow</source>
+        <translation>dem Ellbogen</translation>
+    </message>
+    <message>
+        <source>Forearm sensor: %1.</source>
+        <translation>Unterarmsensor: %1.</translation>
+    </message>
+    <message>
+        <source>Arm: %1.</source>
+        <translation>Arm: %1.</translation>
+    </message>
+    <message>
+        <source>Camera: calibrated, %1 m from the shoulder.</source>
+        <translation>Kamera: kalibriert, %1 m von der Schulter entfernt.</translation>
+    </message>
+    <message>
+        <source>Camera: calibrated.</source>
+        <translation>Kamera: kalibriert.</translation>
     </message>
 </context>
 <context>

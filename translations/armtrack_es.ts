@@ -368,10 +368,6 @@
         <translation>Grabando en %1</translation>
     </message>
     <message>
-        <source>Events: %1</source>
-        <translation>Eventos: %1</translation>
-    </message>
-    <message>
         <source>Last recording problem: %1</source>
         <translation>Último problema de grabación: %1</translation>
     </message>
@@ -1734,10 +1730,6 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <translation>%L1 %</translation>
     </message>
     <message>
-        <source>Normal (AAOS) %L1 %2</source>
-        <translation>Normal (AAOS) %L1 %2</translation>
-    </message>
-    <message>
         <source>d MMM</source>
         <comment>the date axis&apos; labels, a QDateTime format: day and short month</comment>
         <translation>d MMM</translation>
@@ -1801,6 +1793,10 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Forearm pronation</source>
         <translation>Pronación del antebrazo</translation>
+    </message>
+    <message>
+        <source>Normal (%1) %L2 %3</source>
+        <translation>Normal (%1) %L2 %3</translation>
     </message>
 </context>
 <context>
@@ -4027,14 +4023,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Lado afectado</translation>
     </message>
     <message>
-        <source>From</source>
-        <translation>Desde</translation>
-    </message>
-    <message>
-        <source>To</source>
-        <translation>Hasta</translation>
-    </message>
-    <message>
         <source>Therapist</source>
         <translation>Terapeuta</translation>
     </message>
@@ -4045,10 +4033,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Range of motion over time</source>
         <translation>Rango de movimiento a lo largo del tiempo</translation>
-    </message>
-    <message>
-        <source>No sessions between %1 and %2.</source>
-        <translation>No hay sesiones entre el %1 y el %2.</translation>
     </message>
     <message>
         <source>%1: largest angle reached (deg)</source>
@@ -4250,10 +4234,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Calibración</translation>
     </message>
     <message>
-        <source>No calibration was recorded for this session.</source>
-        <translation>No se registró ninguna calibración para esta sesión.</translation>
-    </message>
-    <message>
         <source>%1 not defined</source>
         <translation>%1 no definido</translation>
     </message>
@@ -4406,10 +4386,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>%1 muestras usadas, %2 filas descartadas (no finitas), %3 huecos. Suavidad de la trayectoria de la muñeca: %4, %5.</translation>
     </message>
     <message>
-        <source>ROM %1 of %2 deg (%3 %)</source>
-        <translation>ROM %1 de %2° (%3 %)</translation>
-    </message>
-    <message>
         <source>females aged %1-%2</source>
         <translation>mujeres de %1 a %2 años</translation>
     </message>
@@ -4446,10 +4422,6 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Fuente</translation>
     </message>
     <message>
-        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Sources: %1.</source>
-        <translation>Gris: el rango de movimiento normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Las fuentes no dan un límite normal para la aducción del hombro; su rango se muestra desde 0. Fuentes: %1.</translation>
-    </message>
-    <message>
         <source>Soucie et al. give the mean passive range of motion of healthy %1; the patient was %2 on the day of the session.</source>
         <translation>Soucie et al. dan el rango de movimiento pasivo medio de personas sanas (%1); el paciente tenía %2 años el día de la sesión.</translation>
     </message>
@@ -4469,6 +4441,115 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>Forearm pronation</source>
         <comment>the motion, beside the supination chart</comment>
         <translation>Pronación del antebrazo</translation>
+    </message>
+    <message>
+        <source>no sessions</source>
+        <translation>sin sesiones</translation>
+    </message>
+    <message>
+        <source>until %1</source>
+        <translation>hasta %1</translation>
+    </message>
+    <message>
+        <source>from %1</source>
+        <translation>desde %1</translation>
+    </message>
+    <message>
+        <source>Period</source>
+        <translation>Periodo</translation>
+    </message>
+    <message>
+        <source>No sessions in the period (%1).</source>
+        <translation>No hay sesiones en el periodo (%1).</translation>
+    </message>
+    <message>
+        <source>; latest %1 % of normal</source>
+        <translation>; última %1 % de lo normal</translation>
+    </message>
+    <message>
+        <source>%1 of %2 deg, %3 %</source>
+        <comment>the largest angle, its normal, the percent of normal</comment>
+        <translation>%1 de %2°, %3 %</translation>
+    </message>
+    <message>
+        <source>Grey: the normal range of motion; blue: this session&apos;s range (negative = extension, external rotation, supination). Shoulder adduction has no normal limit in the sources; its range is shown from 0. Beside each bar: the largest angle reached in the motion the angle is named after (flexion, abduction, internal rotation, elbow flexion, pronation), that motion&apos;s normal range, and the first as a percentage of the second, as on the patient&apos;s page. Sources: %1.</source>
+        <translation>Gris: el rango de movimiento normal; azul: el rango de esta sesión (negativo = extensión, rotación externa, supinación). Las fuentes no dan un límite normal para la aducción del hombro; su rango se muestra desde 0. Junto a cada barra: el mayor ángulo alcanzado en el movimiento que da nombre al ángulo (flexión, abducción, rotación interna, flexión del codo, pronación), el rango normal de ese movimiento y el primero como porcentaje del segundo, como en la página del paciente. Fuentes: %1.</translation>
+    </message>
+    <message>
+        <source>Events marked (time since the recording began, as in the review): %1</source>
+        <translation>Eventos marcados (tiempo desde el inicio de la grabación, como en la revisión): %1</translation>
+    </message>
+    <message>
+        <source>%1 cm</source>
+        <translation>%1 cm</translation>
+    </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>Good</source>
+        <translation>Buena</translation>
+    </message>
+    <message>
+        <source>Usable</source>
+        <translation>Utilizable</translation>
+    </message>
+    <message>
+        <source>Poor</source>
+        <translation>Deficiente</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1.</source>
+        <translation>Calibración de los sensores: %1.</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1</source>
+        <translation>Calibración de los sensores: %1</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: %1. %2</source>
+        <translation>Calibración de los sensores: %1. %2</translation>
+    </message>
+    <message>
+        <source>Sensor calibration: none was made for this session; the lengths below are the ones the session was recorded with (measured or default).</source>
+        <translation>Calibración de los sensores: no se hizo ninguna para esta sesión; las longitudes siguientes son con las que se grabó la sesión (medidas o predeterminadas).</translation>
+    </message>
+    <message>
+        <source>Segments: upper arm %1 (shoulder to elbow), forearm %2 (elbow to wrist).</source>
+        <translation>Segmentos: brazo %1 (del hombro al codo), antebrazo %2 (del codo a la muñeca).</translation>
+    </message>
+    <message>
+        <source>%1 from the %2, mounted at %3 about the segment, %4 off its axis</source>
+        <translation>a %1 del %2, montado a %3 alrededor del segmento, a %4 de su eje</translation>
+    </message>
+    <message>
+        <source>shoulder</source>
+        <translation>hombro</translation>
+    </message>
+    <message>
+        <source>Upper-arm sensor: %1.</source>
+        <translation>Sensor del brazo: %1.</translation>
+    </message>
+    <message>
+        <source>elbow</source>
+        <translation>codo</translation>
+    </message>
+    <message>
+        <source>Forearm sensor: %1.</source>
+        <translation>Sensor del antebrazo: %1.</translation>
+    </message>
+    <message>
+        <source>Arm: %1.</source>
+        <translation>Brazo: %1.</translation>
+    </message>
+    <message>
+        <source>Camera: calibrated, %1 m from the shoulder.</source>
+        <translation>Cámara: calibrada, a %1 m del hombro.</translation>
+    </message>
+    <message>
+        <source>Camera: calibrated.</source>
+        <translation>Cámara: calibrada.</translation>
     </message>
 </context>
 <context>

@@ -21,6 +21,7 @@
 #include "app/cli/Args.h"
 #include "app/cli/ClinicalContext.h"
 #include "app/cli/CsvOutput.h"
+#include "app/plugins/DeviceRecord.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/io/Recording.h"
 #include "core/session/Session.h"
@@ -31,23 +32,6 @@
 
 namespace armtrack::cli {
 namespace {
-
-/// One device as the clinical records keep it (a session's devices_json, docs/storage.md): its
-/// plugin, the options it was created with, and its streams with their nominal rates.
-QJsonObject deviceRecord(const QString& plugin, const QVariantMap& options,
-                         const devices::Device& device) {
-  QJsonObject given;
-  for (auto it = options.begin(); it != options.end(); ++it)
-    given.insert(it.key(), it.value().toString());
-  QStringList streams;
-  for (const StreamInfo& s : device.streams())
-    streams << QStringLiteral("%1 (%2, %3 Hz)")
-                   .arg(QString::fromStdString(s.name), QLatin1String(toString(s.role)))
-                   .arg(s.nominalRateHz, 0, 'g', 6);
-  return {{QStringLiteral("plugin"), plugin},
-          {QStringLiteral("options"), given},
-          {QStringLiteral("streams"), streams.join(QStringLiteral("; "))}};
-}
 
 constexpr const char* kDevicesHelp = R"(usage: armtrack-cli devices [--plugins DIR]...
 
@@ -333,7 +317,7 @@ bool addDevices(const LiveOptions& o, const app::PluginRegistry& registry,
     }
     const QString label = QStringLiteral("%1#%2").arg(name).arg(
         o.devices.size() > 1 ? QString::number(&spec - o.devices.data() + 1) : QStringLiteral("1"));
-    devicesUsed.insert(label, deviceRecord(name, options, *device));
+    devicesUsed.insert(label, app::deviceRecord(name, options, *device));
     session.addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);
   }
   return true;

@@ -66,6 +66,11 @@ reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint
   d.side = s.side == Side::Left ? "left" : "right";
   d.angles = s.series;
   d.metrics = s.metrics;
+  // Times in recording time, from the first recorded row, as the review shows them.
+  d.recordingStartS = store.recordingStartS(id);
+  d.events =
+      parseEventMarks(s.info.notes.toStdString(),
+                      d.recordingStartS.value_or(s.series.t.empty() ? 0.0 : s.series.t.front()));
   // Earlier sessions of the patient with metrics, oldest first; the latest of the other arm.
   std::vector<storage::SessionInfo> all = store.listSessions(s.info.patientCode);
   std::sort(all.begin(), all.end(),
@@ -106,6 +111,13 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
       if (reps.isDouble()) p.repetitions = reps.toInt();
     }
     d.sessions.push_back(p);
+  }
+  // No bound asked for (the patient page: all sessions): the period is the sessions' first and
+  // last day, for the report's header and the audit entry, not "- to -".
+  for (const reports::ProgressSession& p : d.sessions) {
+    const QString date = dateOf(p.startedAt);
+    if (from.isEmpty() && (d.fromDate.isEmpty() || date < d.fromDate)) d.fromDate = date;
+    if (to.isEmpty() && (d.toDate.isEmpty() || date > d.toDate)) d.toDate = date;
   }
   return d;
 }

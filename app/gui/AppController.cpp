@@ -469,8 +469,11 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
   if (!m_records->signedIn()) return;
   auto target = std::make_shared<RecordsRecordingTarget>(
       *m_records, plan.patient.code, plan.protocol ? plan.protocol->name : QString());
-  auto* screen = new app::gui::LiveSessionScreen(
-      m_plugins, liveSessionConfig(plan, choices.devices, m_settings, choices.calibration), target);
+  app::gui::LiveSessionConfig config =
+      liveSessionConfig(plan, choices.devices, m_settings, choices.calibration);
+  config.calibrationVerdict = choices.calibrationVerdict;  // stored with the session
+  config.calibrationReason = choices.calibrationReason;
+  auto* screen = new app::gui::LiveSessionScreen(m_plugins, config, target);
   const QString code = plan.patient.code;
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
           [this, target, code, calibration = choices.calibration](const QString& summary) {

@@ -1,5 +1,8 @@
 #include "core/metrics/NormativeRanges.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace armtrack {
 
 std::string_view normSourceCitation(NormSource s) {
@@ -68,6 +71,14 @@ std::optional<double> largestInDirection(const std::optional<double>& minRad,
                                          const std::optional<double>& maxRad, bool opposite) {
   if (!opposite) return maxRad;
   return minRad ? std::optional<double>(-*minRad) : std::nullopt;
+}
+
+std::optional<double> percentOfNormal(const NormativeRange& r, const std::optional<double>& minRad,
+                                      const std::optional<double>& maxRad, bool opposite) {
+  const std::optional<double> peak = largestInDirection(minRad, maxRad, opposite);
+  const double normal = motionNormalRad(r, opposite);
+  if (!peak || !std::isfinite(*peak) || !(normal > 0)) return std::nullopt;
+  return 100.0 * std::max(0.0, *peak / normal);
 }
 
 }  // namespace armtrack

@@ -80,4 +80,14 @@ double motionNormalRad(const NormativeRange& r, bool opposite);
 std::optional<double> largestInDirection(const std::optional<double>& minRad,
                                          const std::optional<double>& maxRad, bool opposite);
 
+/// "% of normal", the one definition the patient page, the progress chart and the PDF reports
+/// share (docs/metrics.md, "Percent of normal"): the largest angle the session reached in the
+/// direction (largestInDirection) against that direction's normal range from the neutral
+/// position (motionNormalRad), in percent; shoulder flexion of 80 deg against a normal 180 is
+/// 44 %. Not the range of motion against the whole arc (flexion plus extension, 240 deg): a
+/// normal range counts motion in one direction. Never below 0 (a session that did not reach
+/// the neutral position); empty when that end is unknown or the direction has no normal limit.
+std::optional<double> percentOfNormal(const NormativeRange& r, const std::optional<double>& minRad,
+                                      const std::optional<double>& maxRad, bool opposite = false);
+
 }  // namespace armtrack

@@ -126,4 +126,13 @@ PatientNorms patientNorms(std::optional<CivilDate> birth, const CivilDate& on, S
   return n;
 }
 
+std::optional<double> sessionPercentOfNormal(std::optional<CivilDate> birth, Sex sex,
+                                             std::optional<CivilDate> on, int angle,
+                                             const std::optional<double>& minRad,
+                                             const std::optional<double>& maxRad, bool opposite) {
+  if (angle < 0 || angle >= kNumClinicalAngles) return std::nullopt;
+  const PatientNorms norms = patientNorms(birth, on.value_or(CivilDate{}), sex);
+  return percentOfNormal(norms.ranges[static_cast<std::size_t>(angle)], minRad, maxRad, opposite);
+}
+
 }  // namespace armtrack

@@ -96,4 +96,14 @@ struct PatientNorms {
 PatientNorms patientNorms(std::optional<CivilDate> birth, const CivilDate& on, Sex sex,
                           std::span<const SoucieValue> table = soucieReferenceValues());
 
+/// The "% of normal" of one session of a patient, the one the patient page, the progress chart
+/// and both PDF reports show: percentOfNormal() of the largest angle in the direction against
+/// the patient's normal range on the session's day (patientNorms(): Soucie et al. where the
+/// study covers the patient's age and sex, else AAOS). birth and on empty = unknown (AAOS).
+std::optional<double> sessionPercentOfNormal(std::optional<CivilDate> birth, Sex sex,
+                                             std::optional<CivilDate> on, int angle,
+                                             const std::optional<double>& minRad,
+                                             const std::optional<double>& maxRad,
+                                             bool opposite = false);
+
 }  // namespace armtrack

@@ -23,6 +23,17 @@ struct TargetRange {
   double maxRad = 0;
 };
 
+/// The clinical angle a session's repetitions are counted on, live and in its analysis
+/// (docs/metrics.md, "Repetitions"): the protocol's primary angle (clinicalAngleInfo() index),
+/// or shoulder flexion without a protocol. One rule, so that the live counter, the review and the
+/// report count the same session on the same angle.
+inline constexpr int kDefaultRepetitionAngle = 0;  // shoulder flexion
+inline int repetitionAngle(std::optional<int> protocolAngle) {
+  return protocolAngle && *protocolAngle >= 0 && *protocolAngle < kNumClinicalAngles
+             ? *protocolAngle
+             : kDefaultRepetitionAngle;
+}
+
 struct RepetitionParams {
   /// Angle to count on (index in clinicalAngleInfo() order); empty = the angle with the largest
   /// range of motion over the session.

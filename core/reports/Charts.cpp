@@ -101,7 +101,8 @@ std::vector<double> niceTicks(double lo, double hi, int target) {
 
 void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                   const std::vector<double>& tS, const std::vector<double>& yDeg,
-                  const std::optional<Band>& band, const std::vector<TimeMark>& marks) {
+                  const std::optional<Band>& band, const std::vector<TimeMark>& marks,
+                  std::optional<double> originS, const std::vector<TimeMark>& events) {
   Frame f = frameIn(w, r);
   const std::size_t n = std::min(tS.size(), yDeg.size());
   double ylo = std::numeric_limits<double>::infinity(), yhi = -ylo;
@@ -123,7 +124,9 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
   std::vector<double> finiteT;
   for (std::size_t i = 0; i < n; ++i)
     if (std::isfinite(tS[i])) finiteT.push_back(tS[i]);
-  const double t0 = finiteT.empty() ? 0.0 : finiteT.front();
+  const double t0 = originS && std::isfinite(*originS) ? *originS
+                    : finiteT.empty()                  ? 0.0
+                                                       : finiteT.front();
   std::vector<double> steps;
   for (std::size_t i = 1; i < finiteT.size(); ++i) steps.push_back(finiteT[i] - finiteT[i - 1]);
   double medianStep = std::numeric_limits<double>::infinity();
@@ -132,7 +135,7 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
     medianStep = steps[steps.size() / 2];
   }
   f.xlo = 0;
-  f.xhi = finiteT.size() > 1 && finiteT.back() > t0 ? finiteT.back() - t0 : 1.0;
+  f.xhi = !finiteT.empty() && finiteT.back() > t0 + 1e-9 ? finiteT.back() - t0 : 1.0;
   const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
   const std::vector<double> xTicks = niceTicks(f.xlo, f.xhi, 8);
 
@@ -168,6 +171,23 @@ void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                       f.plot.width() * 0.75, fm.height()),
                Qt::AlignLeft | Qt::AlignTop,
                Text::tr("numbers: repetitions at their peaks (p = partial)"));
+  }
+  if (!events.empty()) {
+    const QFontMetricsF fm(w.fonts().small, w.device());
+    p.setFont(w.fonts().small);
+    QPen dashed(QColor(170, 60, 20));
+    dashed.setStyle(Qt::DashLine);
+    dashed.setWidthF(w.mm(0.25));
+    for (const TimeMark& e : events) {
+      const double x = f.px(e.tS - t0);
+      if (!std::isfinite(x) || x < f.plot.left() || x > f.plot.right()) continue;
+      p.setPen(dashed);
+      p.drawLine(QPointF(x, f.plot.top()), QPointF(x, f.plot.bottom()));
+      p.setPen(QColor(170, 60, 20));
+      p.drawText(QRectF(x + w.mm(0.5), f.plot.bottom() - fm.height() - w.mm(0.3),
+                        fm.horizontalAdvance(e.label) + w.mm(1), fm.height()),
+                 Qt::AlignLeft | Qt::AlignVCenter, e.label);
+    }
   }
   // Min and max per column of about 0.25 mm keep every peak while bounding the path's size. The
   // line breaks at a non-finite value and across a gap: a step over 10 times the median step.

@@ -29,13 +29,17 @@ struct TimeMark {
   QString label;
 };
 
-/// One clinical angle (deg) against time (s from the first sample) in rect r, with a shaded
-/// band when given and marks along the top edge (a mark too close to the previous one is left
-/// out). Non-finite values break the line. Long series are reduced to the minimum and maximum
-/// per horizontal step, so peaks are kept.
+/// One clinical angle (deg) against time in rect r, with a shaded band when given, marks along
+/// the top edge (a mark too close to the previous one is left out) and events as dashed
+/// vertical lines labelled at the bottom. The axis shows time since originS (s, on the clock of
+/// tS, marks and events: the recording's first row, so the axis reads recording time), or since
+/// the first finite sample when empty. Non-finite values break the line. Long series are
+/// reduced to the minimum and maximum per horizontal step, so peaks are kept.
 void drawTimePlot(PageWriter& w, const QRectF& r, const QString& title,
                   const std::vector<double>& tS, const std::vector<double>& yDeg,
-                  const std::optional<Band>& band, const std::vector<TimeMark>& marks = {});
+                  const std::optional<Band>& band, const std::vector<TimeMark>& marks = {},
+                  std::optional<double> originS = std::nullopt,
+                  const std::vector<TimeMark>& events = {});
 
 struct NormativeBar {
   QString name;

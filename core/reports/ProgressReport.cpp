@@ -1,8 +1,11 @@
 // The progress report (docs/reports.md, "Progress report").
+#include <QDate>
 #include <algorithm>
+#include <cmath>
 
 #include "core/kinematics/ClinicalAngles.h"
 #include "core/metrics/NormativeRanges.h"
+#include "core/metrics/PatientNorms.h"
 #include "core/reports/Charts.h"
 #include "core/reports/PdfOutput.h"
 #include "core/reports/ReportText.h"
@@ -34,6 +37,30 @@ QString motionName(const MotionDirection& m) {
   }
 }
 
+/// A date of the period: the asked-for one when it is a date, else the first (or last)
+/// session's; "" when neither is known.
+QString periodDate(const QString& asked, const std::vector<ProgressSession>& sessions, bool last) {
+  const QDate date = QDate::fromString(asked.trimmed().left(10), Qt::ISODate);
+  if (date.isValid()) return formatDate(date);
+  QDateTime found;
+  for (const ProgressSession& s : sessions) {
+    const QDateTime t = parseIso(s.startedAt);
+    if (t.isValid() && (!found.isValid() || (last ? t > found : t < found))) found = t;
+  }
+  return found.isValid() ? formatDate(found.date()) : QString();
+}
+
+/// The period the report covers, "12.11.2026 to 26.11.2026": the dates asked for, or where one
+/// is missing (or not a date) the first or last session's date.
+QString periodText(const ProgressReportData& d, const std::vector<ProgressSession>& sessions) {
+  const QString from = periodDate(d.fromDate, sessions, false);
+  const QString to = periodDate(d.toDate, sessions, true);
+  if (from.isEmpty() && to.isEmpty()) return Text::tr("no sessions");
+  if (from.isEmpty()) return Text::tr("until %1").arg(to);
+  if (to.isEmpty()) return Text::tr("from %1").arg(from);
+  return Text::tr("%1 to %2").arg(from, to);
+}
+
 void draw(PageWriter& w, const ProgressReportData& d,
           const std::vector<ProgressSession>& sessions) {
   w.title(Text::tr("Progress report"));
@@ -43,15 +70,13 @@ void draw(PageWriter& w, const ProgressReportData& d,
                {Text::tr("Patient code"), nameText(p.code)},
                {Text::tr("Date of birth"), orDash(formatDate(p.birthDate))},
                {Text::tr("Affected side"), word(p.affectedSide)},
-               {Text::tr("From"), orDash(formatDate(d.fromDate))},
-               {Text::tr("To"), orDash(formatDate(d.toDate))},
+               {Text::tr("Period"), periodText(d, sessions)},
                {Text::tr("Therapist"), nameText(d.therapistName)},
                {Text::tr("Sessions"), QString::number(sessions.size())}});
 
   w.heading(Text::tr("Range of motion over time"), 50);
   if (sessions.empty()) {
-    w.paragraph(Text::tr("No sessions between %1 and %2.")
-                    .arg(orDash(formatDate(d.fromDate)), orDash(formatDate(d.toDate))),
+    w.paragraph(Text::tr("No sessions in the period (%1).").arg(periodText(d, sessions)),
                 w.fonts().body);
   } else {
     std::vector<QDateTime> when;
@@ -66,9 +91,19 @@ void draw(PageWriter& w, const ProgressReportData& d,
       std::vector<std::optional<double>> largest;
       for (const ProgressSession& s : sessions)
         largest.push_back(deg(largestInDirection(s.minRad[a], s.maxRad[a], m.opposite)));
+      // The latest session's "% of normal", as the patient page shows it.
+      QString title = Text::tr("%1: largest angle reached (deg)").arg(motionName(m));
+      for (auto s = sessions.rbegin(); s != sessions.rend(); ++s)
+        if (const auto pc = sessionPercentOfNormal(
+                parseIsoDate(d.patient.birthDate.toStdString()),
+                sexFromCode(d.patient.sex.toStdString()), parseIsoDate(s->startedAt.toStdString()),
+                m.angle, s->minRad[a], s->maxRad[a], m.opposite)) {
+          title += Text::tr("; latest %1 % of normal")
+                       .arg(reportLocale().toString(static_cast<qlonglong>(std::lround(*pc))));
+          break;
+        }
       const QRectF r = w.reserve(w.mm(44));
-      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
-                    Text::tr("%1: largest angle reached (deg)").arg(motionName(m)), when, largest,
+      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)), title, when, largest,
                     motionNormalRad(ranges[a], m.opposite) * kRadToDeg);
     }
     const std::string_view source = normSourceCitation(NormSource::Aaos);
@@ -103,14 +138,17 @@ void draw(PageWriter& w, const ProgressReportData& d,
 
 }  // namespace
 
+QString progressPeriod(const ProgressReportData& d) {
+  return periodText(d, d.sessions);
+}
+
 int writeProgressReport(const ProgressReportData& d, const QString& pdfPath) {
   std::vector<ProgressSession> sessions = d.sessions;
   std::stable_sort(sessions.begin(), sessions.end(),
                    [](const ProgressSession& a, const ProgressSession& b) {
                      return parseIso(a.startedAt) < parseIso(b.startedAt);
                    });
-  const QString period =
-      Text::tr("%1 to %2").arg(orDash(formatDate(d.fromDate)), orDash(formatDate(d.toDate)));
+  const QString period = periodText(d, sessions);
   // Names as nameText() draws them: on one line, in their own direction.
   const QString name = nameText(d.patient.name);
   const QString head = Text::tr("%1 (%2), progress %3").arg(name, nameText(d.patient.code), period);

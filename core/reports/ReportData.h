@@ -12,6 +12,7 @@
 #include "core/metrics/ClinicalMetrics.h"
 #include "core/metrics/PatientNorms.h"
 #include "core/metrics/RangeOfMotion.h"
+#include "core/metrics/SessionTime.h"
 #include "core/storage/Records.h"
 
 namespace armtrack::reports {
@@ -34,7 +35,13 @@ struct SessionReportData {
   /// The arm measured ("left"/"right"); "" = the calibration JSON's "side", else the patient's
   /// affected side.
   QString side;
-  AngleSeries angles;      ///< the session's clinical angles (rad) over time (s)
+  AngleSeries angles;  ///< the session's clinical angles (rad) over time (s, session clock)
+  /// The time of the recording's first row (s, session clock): the report's times are recording
+  /// time from it (core/metrics/SessionTime.h), as the review shows them. Empty = the first
+  /// angle's time.
+  std::optional<double> recordingStartS;
+  /// The events marked during the session (recording time), read from its notes.
+  std::vector<EventMark> events;
   SessionMetrics metrics;  ///< computeSessionMetrics(angles, ...)
   /// Earlier sessions of the same patient, oldest first (the current one is added by the report).
   std::vector<RomSnapshot> earlierSessions;
@@ -47,6 +54,11 @@ struct SessionReportData {
   /// do not give are AAOS.
   std::span<const SoucieValue> soucieValues = soucieReferenceValues();
 };
+
+/// Where the session report's times begin on the session clock (s): the recording's first row
+/// (recordingStartS), else the first angle's time; the report prints recording time,
+/// recordingTime(t, timeOrigin(d)), as the review does.
+double timeOrigin(const SessionReportData& d);
 
 /// One session of a progress report.
 struct ProgressSession {
@@ -73,6 +85,11 @@ struct ProgressReportData {
   std::vector<ProgressSession> sessions;  ///< any order; the report sorts them by startedAt
   QDateTime generatedAt;                  ///< invalid = now (UTC)
 };
+
+/// The period a progress report covers, as its header prints it: the dates asked for, or where
+/// one is empty or not a date the first or last session's date ("12.11.2026 to 26.11.2026",
+/// "no sessions" when nothing is known).
+QString progressPeriod(const ProgressReportData& d);
 
 /// The five ranges of motion of computed metrics, for earlierSessions or otherSide.
 RomSnapshot romSnapshot(const QString& date, std::optional<qint64> sessionId,

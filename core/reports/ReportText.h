@@ -65,6 +65,14 @@ QString formatDuration(double seconds);
 /// on one line; at most maxLines lines (then "... n more"). Empty for "", "{}" or "null"; a
 /// single explanatory line for text that is not JSON.
 QStringList summariseJson(const QString& json, int maxLines = 20);
+/// The devices of a session's devices JSON (docs/storage.md, "Sessions"), one line each: the
+/// plugin, its streams and the options it was made with. Empty when none were stored.
+QStringList devicesText(const QString& devicesJson);
+/// A session's calibration in words: the sensor calibration's verdict and its reason (stored as
+/// "sensor_calibration" in the session's filter settings by the GUI), or that none was made;
+/// the segment lengths in cm, the sensors' mounting (distance in cm, angle in deg), the arm and
+/// whether a camera was calibrated. No raw keys or matrices.
+QStringList calibrationText(const QString& calibrationJson, const QString& filterJson);
 /// The string value of a top-level key of a JSON object, or "".
 QString jsonString(const QString& json, const QString& key);
 

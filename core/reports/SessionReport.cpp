@@ -55,16 +55,25 @@ void details(PageWriter& w, const SessionReportData& d) {
 
 void devices(PageWriter& w, const SessionReportData& d) {
   w.heading(Text::tr("Devices and calibration"));
-  const QStringList dev = summariseJson(d.session.devicesJson);
-  const QStringList cal = summariseJson(d.session.calibrationJson, 30);
+  const QStringList dev = devicesText(d.session.devicesJson);
+  const QStringList cal = calibrationText(d.session.calibrationJson, d.session.filterJson);
   w.paragraph(Text::tr("Devices"), w.fonts().bold);
   w.paragraph(
       dev.isEmpty() ? Text::tr("No devices were recorded for this session.") : dev.join('\n'),
       w.fonts().small);
   w.paragraph(Text::tr("Calibration"), w.fonts().bold);
-  w.paragraph(
-      cal.isEmpty() ? Text::tr("No calibration was recorded for this session.") : cal.join('\n'),
-      w.fonts().small);
+  w.paragraph(cal.join('\n'), w.fonts().small);
+}
+
+/// A recording time as the review's slider shows it ("0:15.4").
+QString clockText(double s) {
+  const long tenths = std::lround(std::abs(s) * 10);
+  return QStringLiteral("%1%2:%3%4%5")
+      .arg(s < 0 && tenths > 0 ? QStringLiteral("-") : QString())
+      .arg(tenths / 600)
+      .arg((tenths / 10) % 60, 2, 10, QLatin1Char('0'))
+      .arg(reportLocale().decimalPoint())
+      .arg(tenths % 10);
 }
 
 QString smoothness(const char* name, const SmoothnessValue& v) {
@@ -128,7 +137,11 @@ void plots(PageWriter& w, const SessionReportData& d) {
                                   ? Text::tr("p", "a partial repetition's mark on the plot")
                                   : QString())});
     }
-    drawTimePlot(w, r.adjusted(0, 0, 0, -w.mm(2)), title, d.angles.t, y, band, marks);
+    std::vector<TimeMark> events;  // on the session clock, as the angles' times
+    for (const EventMark& e : d.events)
+      events.push_back({e.recordingS + timeOrigin(d), QString::fromStdString(e.label)});
+    drawTimePlot(w, r.adjusted(0, 0, 0, -w.mm(2)), title, d.angles.t, y, band, marks, timeOrigin(d),
+                 events);
   }
 }
 
@@ -159,13 +172,14 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
               Text::tr("Peak velocity (deg/s)"),
               Text::tr("Partial")};
   t.widths = {0.08, 0.14, 0.14, 0.26, 0.22, 0.16};
-  const double t0 = d.angles.t.empty() ? 0 : d.angles.t.front();
+  const double t0 = timeOrigin(d);
   for (std::size_t i = 0; i < count; ++i) {
     const Repetition& rep = r.repetitions[i];
     const AngleMetricsDeg m =
         inDegrees(rep.metrics.angle[static_cast<std::size_t>(r.primaryAngle)]);
-    t.rows.push_back({QString::number(i + 1), reportLocale().toString(rep.startS - t0, 'f', 2),
-                      reportLocale().toString(rep.endS - t0, 'f', 2),
+    t.rows.push_back({QString::number(i + 1),
+                      reportLocale().toString(recordingTime(rep.startS, t0), 'f', 2),
+                      reportLocale().toString(recordingTime(rep.endS, t0), 'f', 2),
                       formatDeg(rep.excursionRad * kRadToDeg), formatDeg(m.peakVelocityDegPerS),
                       rep.partial ? Text::tr("yes") : Text::tr("no")});
   }
@@ -246,11 +260,14 @@ void normative(PageWriter& w, const SessionReportData& d) {
     b.normalHiDeg = n.maxRad * kRadToDeg;
     b.minDeg = m.minRad * kRadToDeg;
     b.maxDeg = m.maxRad * kRadToDeg;
+    // "% of normal" as the patient page shows it (percentOfNormal): the largest angle in the
+    // named direction against that motion's normal range.
+    const std::optional<double> percent = percentOfNormal(n, m.minRad, m.maxRad);
     b.caption =
-        Text::tr("ROM %1 of %2 deg (%3 %)")
-            .arg(formatDeg(m.romRad * kRadToDeg), formatDeg(normativeSpanRad(n) * kRadToDeg),
-                 reportLocale().toString(static_cast<qlonglong>(
-                     std::lround(100 * fractionOfNormativeSpan(n, m.romRad)))));
+        Text::tr("%1 of %2 deg, %3 %", "the largest angle, its normal, the percent of normal")
+            .arg(formatDeg(m.maxRad * kRadToDeg), formatDeg(motionNormalRad(n, false) * kRadToDeg),
+                 percent ? reportLocale().toString(static_cast<qlonglong>(std::lround(*percent)))
+                         : QStringLiteral("-"));
     bars.push_back(b);
     sources.rows.push_back({b.name,
                             QStringLiteral("%1 – %2").arg(formatDeg(b.normalLoDeg.value_or(0)),
@@ -272,7 +289,10 @@ void normative(PageWriter& w, const SessionReportData& d) {
                      "Grey: the normal range of motion; blue: this session's range "
                      "(negative = extension, external rotation, supination). Shoulder "
                      "adduction has no normal limit in the sources; its range is shown from "
-                     "0. Sources: %1.")
+                     "0. Beside each bar: the largest angle reached in the motion the angle is "
+                     "named after (flexion, abduction, internal rotation, elbow flexion, "
+                     "pronation), that motion's normal range, and the first as a percentage of "
+                     "the second, as on the patient's page. Sources: %1.")
                      .arg(cited.join(QStringLiteral("; ")));
   if (norms.usesSoucie())
     text += ' ' + Text::tr(
@@ -331,13 +351,31 @@ void earlier(PageWriter& w, const SessionReportData& d) {
 
 void notes(PageWriter& w, const SessionReportData& d) {
   w.heading(Text::tr("Therapist's notes"), 10);
-  if (d.session.notes.trimmed().isEmpty())
+  if (!d.events.empty()) {
+    QStringList events;
+    for (const EventMark& e : d.events)
+      events << QStringLiteral("%1 %2").arg(clockText(e.recordingS),
+                                            QString::fromStdString(e.label));
+    w.paragraph(Text::tr("Events marked (time since the recording began, as in the review): %1")
+                    .arg(events.join(QStringLiteral("; "))),
+                w.fonts().body);
+  }
+  // The event lines are listed above in recording time; the rest as written.
+  const QString text =
+      d.events.empty() ? d.session.notes
+                       : QString::fromStdString(notesWithoutEvents(d.session.notes.toStdString()));
+  if (!text.trimmed().isEmpty())
+    w.paragraph(text, w.fonts().body);
+  else if (d.events.empty())
     w.paragraph(Text::tr("No notes."), w.fonts().body);
-  else
-    w.paragraph(d.session.notes, w.fonts().body);
 }
 
 }  // namespace
+
+double timeOrigin(const SessionReportData& d) {
+  if (d.recordingStartS && std::isfinite(*d.recordingStartS)) return *d.recordingStartS;
+  return d.angles.t.empty() ? 0.0 : d.angles.t.front();
+}
 
 int writeSessionReport(const SessionReportData& d, const QString& pdfPath) {
   if (d.angles.t.empty() || d.angles.angle.empty() || d.metrics.samples == 0)

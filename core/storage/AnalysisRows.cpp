@@ -22,7 +22,10 @@ ClinicalMetricsParams metricsParams(ClinicalStore& store, const SessionInfo& inf
                                     std::optional<Protocol>& protocol) {
   ClinicalMetricsParams mp;
   mp.geometry = geometry;
+  // Without a protocol, the angle the live counter counted on too (repetitionAngle).
+  mp.repetitions.primaryAngle = repetitionAngle(std::nullopt);
   if (info.protocolName.isEmpty()) return mp;
+  mp.repetitions.primaryAngle.reset();
   protocol = store.protocol(info.protocolName);
   const auto& keys = clinicalAngleInfo();
   for (std::size_t a = 0; a < keys.size(); ++a)

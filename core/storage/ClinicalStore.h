@@ -132,6 +132,9 @@ class ClinicalStore {
                         const SessionSettings& settings = {});
   /// The session's stored sidecar (geometry, gravity, side, camera). Throws NotFound, Corrupt.
   RecordingMeta recordingMeta(qint64 sessionId);
+  /// The time of the session's first stored row (s, the session clock), where recording time
+  /// begins (core/metrics/SessionTime.h); nothing before a row is stored. Throws NotFound.
+  std::optional<double> recordingStartS(qint64 sessionId);
   /// An account's name, for reports (administrators and therapists). Throws NotFound.
   QString userName(qint64 userId);
   /// Stores samples as the session's next chunk in one transaction (a chunk is ~1 s).

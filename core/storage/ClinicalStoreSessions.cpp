@@ -161,6 +161,14 @@ RecordingMeta ClinicalStore::recordingMeta(qint64 sessionId) {
   return metaFromText(visibleSession(sessionId).calibrationJson, sessionId);
 }
 
+std::optional<double> ClinicalStore::recordingStartS(qint64 sessionId) {
+  visibleSession(sessionId);  // NotFound for a session the account may not see
+  QSqlQuery q =
+      m_db.exec("SELECT MIN(t_first) FROM recording_chunks WHERE session_id = ?", {sessionId});
+  if (!q.next() || q.value(0).isNull()) return std::nullopt;
+  return q.value(0).toDouble();
+}
+
 QString ClinicalStore::userName(qint64 userId) {
   require(isStaff(), "read account names");
   QSqlQuery q = m_db.exec("SELECT name FROM users WHERE id = ?", {userId});

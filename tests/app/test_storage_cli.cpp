@@ -472,6 +472,15 @@ TEST_P(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
     char rom[32];
     std::snprintf(rom, sizeof rom, "%.1f", flexionRom);
     EXPECT_NE(text.find(rom), std::string::npos) << "flexion ROM " << rom << " not in the report";
+    // The calibration in words (issue 25, item 7): no sensor calibration for an import, the
+    // sidecar's lengths in cm and mounting in deg, no stored keys or matrices.
+    const QString flat = QString::fromStdString(text).simplified();
+    for (const char* words :
+         {"Sensor calibration: none was made for this session", "Segments: upper arm ",
+          " cm (shoulder to elbow), forearm ", "Upper-arm sensor: ", " deg about the segment"})
+      EXPECT_TRUE(flat.contains(QString::fromLatin1(words))) << words << "\n" << text;
+    for (const char* raw : {"geometry.", "camera.R", "geometry.l3"})
+      EXPECT_EQ(text.find(raw), std::string::npos) << raw;
   }
   EXPECT_EQ(runProcess(QStringList{"report", QString::fromStdString(id), "--pdf",
                                    QString::fromStdString(pdf)} +

@@ -46,8 +46,11 @@ void ExerciseRecording::begin() {
   m_begun = true;
   m_records.call(
       this,
-      [patient = m_patient, protocol = m_protocol, meta = layout->first, columns = layout->second](
-          storage::ClinicalStore& s) { return s.beginRecording(patient, protocol, meta, columns); },
+      [patient = m_patient, protocol = m_protocol, meta = layout->first, columns = layout->second,
+       settings = m_target->sessionSettings()](storage::ClinicalStore& s) {
+        // The devices and filter the session controller made, as the clinic's recordings.
+        return s.beginRecording(patient, protocol, meta, columns, settings);
+      },
       [this](qint64 id) {
         m_target->setSessionId(id);
         if (m_stopped)

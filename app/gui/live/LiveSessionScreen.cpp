@@ -13,6 +13,7 @@
 #include <cmath>
 
 #include "core/metrics/RangeOfMotion.h"
+#include "core/metrics/SessionTime.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/AngleReadouts.h"
 #include "ui/AngleTableModel.h"
@@ -30,7 +31,7 @@ constexpr int kMaxMessages = 500;
 
 RepetitionParams counterParams(const LiveSessionConfig& c) {
   RepetitionParams p;
-  p.primaryAngle = c.primaryAngle.value_or(0);
+  p.primaryAngle = repetitionAngle(c.primaryAngle);  // the analysis counts on the same angle
   if (c.targetDeg && c.targetDeg->second > c.targetDeg->first)
     p.target = TargetRange{c.targetDeg->first * kDegToRad, c.targetDeg->second * kDegToRad};
   return p;
@@ -148,7 +149,7 @@ void LiveSessionScreen::buildLayout() {
   m_plots = new ui::AnglePlotPanel(top);
   m_plots->setWindowSeconds(m_config.windowSeconds);
   if (m_config.targetDeg)
-    m_plots->setTarget(m_config.primaryAngle.value_or(0), m_config.targetDeg->first,
+    m_plots->setTarget(repetitionAngle(m_config.primaryAngle), m_config.targetDeg->first,
                        m_config.targetDeg->second);
   top->setStretchFactor(0, 2);
   top->setStretchFactor(1, 3);
@@ -159,7 +160,7 @@ void LiveSessionScreen::buildLayout() {
   m_health = new ui::DeviceHealthPanel(bottom);
   m_reps = new ui::RepetitionCounterWidget(bottom);
   m_reps->setTarget(m_config.targetRepetitions);
-  m_reps->setAngleName(ui::angleDisplayName(m_config.primaryAngle.value_or(0)));
+  m_reps->setAngleName(ui::angleDisplayName(repetitionAngle(m_config.primaryAngle)));
   m_messages = new QListWidget(bottom);
   m_messages->setWordWrap(true);
   bottomLayout->addWidget(m_health, 3);
@@ -218,7 +219,7 @@ void LiveSessionScreen::retranslateUi() {
   if (m_bannerText) m_banner->setText(m_bannerText());
   m_retry->setText(tr("Try &again"));
   m_messages->setAccessibleName(tr("Session messages"));
-  m_reps->setAngleName(ui::angleDisplayName(m_config.primaryAngle.value_or(0)));
+  m_reps->setAngleName(ui::angleDisplayName(repetitionAngle(m_config.primaryAngle)));
   updateButtons();
   updateStatus();
 }
@@ -246,6 +247,7 @@ void LiveSessionScreen::start() {
   m_sessionTime = 0;
   m_recordedSeconds = 0;
   m_recordingSince = -1;
+  m_firstRecordingS = std::numeric_limits<double>::quiet_NaN();
   m_begun = false;
   m_beginning = false;
   setState(State::Starting);
@@ -305,6 +307,7 @@ void LiveSessionScreen::record() {
 void LiveSessionScreen::openGate() {
   m_gate->setRecording(true);
   m_recordingSince = m_sessionTime;
+  if (!std::isfinite(m_firstRecordingS)) m_firstRecordingS = m_sessionTime;
   setState(State::Recording);
 }
 
@@ -334,20 +337,22 @@ void LiveSessionScreen::stop() {
 void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
                                   const QString& recorderError) {
   if (!m_target || !m_begun) return finishStopping(tr("Session ended; nothing was recorded."));
+  // The events in recording time, from the first recorded row, as the review and the report
+  // show times (core/metrics/SessionTime.h); one "[m:ss.s] label" line each.
   QStringList events;
+  const double first = m_gate->firstRecordedS();
   for (const auto& [t, label] : m_events)
-    events << QStringLiteral("%1 s: %2").arg(t, 0, 'f', 1).arg(label);
+    events << QString::fromStdString(eventLine(
+        {recordingTime(t, std::isfinite(first) ? first : m_firstRecordingS), label.toStdString()}));
   // Rows the gate dropped while paused were never meant for the recording.
   const bool complete = recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
-  m_target->finishAsync(recordedRows, complete,
-                        events.isEmpty() ? QString() : tr("Events: %1").arg(events.join(u"; ")),
-                        this, [this, recorderError](const QString& line) {
-                          QString summary = line;
-                          if (!recorderError.isEmpty())
-                            summary += QStringLiteral(" ") +
-                                       tr("Last recording problem: %1").arg(recorderError);
-                          finishStopping(summary);
-                        });
+  m_target->finishAsync(
+      recordedRows, complete, events.join(u'\n'), this, [this, recorderError](const QString& line) {
+        QString summary = line;
+        if (!recorderError.isEmpty())
+          summary += QStringLiteral(" ") + tr("Last recording problem: %1").arg(recorderError);
+        finishStopping(summary);
+      });
 }
 
 void LiveSessionScreen::finishStopping(const QString& summary) {

@@ -6,6 +6,7 @@
 #include <QTimer>
 #include <QWidget>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -137,6 +138,9 @@ class LiveSessionScreen : public QWidget {
   double m_sessionTime = 0.0;
   double m_lastOptical = -1e9;
   double m_recordedSeconds = 0.0, m_recordingSince = -1.0;
+  // When recording first began (s, session clock): recording time's origin when the gate has not
+  // reported its first row.
+  double m_firstRecordingS = std::numeric_limits<double>::quiet_NaN();
   std::vector<session::EstimateRow> m_rows;
   std::vector<ui::AngleSample> m_samples;
   std::vector<std::string> m_sessionEvents;

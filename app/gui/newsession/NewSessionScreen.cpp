@@ -244,9 +244,18 @@ void NewSessionScreen::addDeviceSteps(const app::PluginRegistry& plugins,
       [this](QWidget* w) {
         m_choices.calibration.reset();
         m_choices.calibrationFile.clear();
+        m_choices.calibrationVerdict.clear();
+        m_choices.calibrationReason.clear();
         auto* page = static_cast<SensorCalibrationPage*>(w);
         if (!page || !page->result()) return true;  // skipped
         m_choices.calibration = page->result()->calibration;
+        if (const auto v = page->verdict()) {
+          m_choices.calibrationVerdict =
+              *v == app::gui::CalibrationVerdict::Good     ? QStringLiteral("good")
+              : *v == app::gui::CalibrationVerdict::Usable ? QStringLiteral("usable")
+                                                           : QStringLiteral("poor");
+          m_choices.calibrationReason = page->verdictText();
+        }
         const std::filesystem::path file = page->recordingPath().parent_path() / "calibration.json";
         try {
           writeCalibration(file, *m_choices.calibration);

@@ -56,6 +56,8 @@ struct NewSessionChoices {
   QStringList devices;                     ///< "plugin:options" specs
   std::optional<Calibration> calibration;  ///< the sensor calibration made, if any
   QString calibrationFile;                 ///< where it was saved
+  /// Its verdict ("good", "usable", "poor") and reason, stored with the session for the report.
+  QString calibrationVerdict, calibrationReason;
 };
 
 /// The specs the virtual arm needs to play the calibration protocol (its other options kept);

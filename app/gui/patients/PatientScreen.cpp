@@ -317,6 +317,7 @@ void PatientScreen::show(const PatientOverview& o, bool again) {
                             new QStandardItem(QLocale().toString(item.sessionsPerWeek))});
   }
   if (again) return;  // the chart, the sessions' table and the choices in them stay
+  m_chart->setPatient(o.patient.birthDate, o.patient.sex);
   m_chart->setSessions(o.progress);
   m_sessions->setSessions(o.sessions);
   // Open on the angle the latest protocol trains, if any.

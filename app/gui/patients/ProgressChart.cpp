@@ -4,6 +4,7 @@
 #include <QChart>
 #include <QChartView>
 #include <QComboBox>
+#include <QDate>
 #include <QDateTimeAxis>
 #include <QHBoxLayout>
 #include <QHeaderView>
@@ -19,6 +20,7 @@
 #include "app/gui/common/AngleNames.h"
 #include "app/gui/common/Forms.h"
 #include "core/metrics/NormativeRanges.h"
+#include "core/metrics/PatientNorms.h"
 
 namespace armtrack::gui {
 
@@ -80,6 +82,12 @@ void ProgressChart::setSessions(std::vector<SessionExtremes> sessions) {
   std::sort(sessions.begin(), sessions.end(),
             [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
   m_sessions = std::move(sessions);
+  redraw();
+}
+
+void ProgressChart::setPatient(const QString& birthDate, const QString& sex) {
+  m_birth = parseIsoDate(birthDate.toStdString());
+  m_sex = sexFromCode(sex.toStdString());
   redraw();
 }
 
@@ -155,7 +163,16 @@ QChart* ProgressChart::chart() const {
 void ProgressChart::redraw() {
   const Motion motion = current();
   const int a = motion.angle;
-  const NormativeRange& normal = aaosNormativeRanges()[static_cast<std::size_t>(a)];
+  // The patient's normal range on the newest session's day (today without one), as the
+  // reports choose it; each session's "% of normal" against its own day's.
+  const auto dayOf = [](const QString& iso) { return parseIsoDate(iso.toStdString()); };
+  const QDate today = QDate::currentDate();
+  const std::optional<CivilDate> newest =
+      m_sessions.empty()
+          ? std::optional<CivilDate>(CivilDate{today.year(), today.month(), today.day()})
+          : dayOf(m_sessions.back().startedAt);
+  const NormativeRange normal = patientNorms(m_birth, newest.value_or(CivilDate{}), m_sex)
+                                    .ranges[static_cast<std::size_t>(a)];
   // Drawn in the unit of the settings: "deg" values are radians * scale.
   const double scale = m_radians ? 1.0 : kRadToDeg;
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
@@ -163,6 +180,8 @@ void ProgressChart::redraw() {
   // motion's normal range from the neutral position.
   const double normalRad = motionNormalRad(normal, motion.opposite);
   const double normalDeg = normalRad * scale;
+  const std::string_view source =
+      normSourceShortName(motion.opposite ? normal.minSource : normal.maxSource);
 
   auto* chart = new QChart;
   chart->setLocale(QLocale());
@@ -201,7 +220,11 @@ void ProgressChart::redraw() {
     m_table->appendRow(
         {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
          new QStandardItem(QLocale().toString(deg, 'f', m_radians ? 3 : 1)),
-         new QStandardItem(tr("%L1 %").arg(100.0 * std::max(0.0, *peak / normalRad), 0, 'f', 0))});
+         new QStandardItem(
+             tr("%L1 %").arg(sessionPercentOfNormal(m_birth, m_sex, dayOf(s.startedAt), a,
+                                                    s.minRad[i], s.maxRad[i], motion.opposite)
+                                 .value_or(0),
+                             0, 'f', 0))});
   }
   if (m_points == 0) {
     chart->setTitle(tr("%1: no analysed session yet").arg(nameOf(motion)));
@@ -218,7 +241,10 @@ void ProgressChart::redraw() {
   }
   auto* normalArea = new QAreaSeries(normalTop, normalBottom);
   normalArea->setName(
-      tr("Normal (AAOS) %L1 %2").arg(normalDeg, 0, 'f', m_radians ? 2 : 0).arg(unit));
+      tr("Normal (%1) %L2 %3")
+          .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size())))
+          .arg(normalDeg, 0, 'f', m_radians ? 2 : 0)
+          .arg(unit));
   QColor shade = palette().color(QPalette::Highlight);
   shade.setAlpha(45);
   normalArea->setBrush(shade);

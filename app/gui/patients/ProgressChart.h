@@ -13,6 +13,7 @@
 
 #include "app/gui/services/PatientRecords.h"
 #include "core/metrics/NormativeRanges.h"
+#include "core/metrics/PatientNorms.h"
 
 class QChart;
 class QChartView;
@@ -30,6 +31,9 @@ class ProgressChart : public QWidget {
 
   /// The analysed sessions, any order.
   void setSessions(std::vector<SessionExtremes> sessions);
+  /// The patient's birth date (YYYY-MM-DD) and sex ("f", "m"), which choose the normal ranges
+  /// (patientNorms(): Soucie et al. where they cover the patient, else AAOS) as the reports do.
+  void setPatient(const QString& birthDate, const QString& sex);
   /// Shows angles in radians instead of degrees (the settings' unit).
   void setRadians(bool radians);
   /// Draws the named direction of a clinical angle (clinicalAngleInfo() order).
@@ -67,6 +71,8 @@ class ProgressChart : public QWidget {
   QTableView* m_tableView;
   int m_points = 0;
   bool m_radians = false;
+  std::optional<CivilDate> m_birth;
+  Sex m_sex = Sex::Unknown;
 };
 
 }  // namespace armtrack::gui

@@ -31,11 +31,12 @@ namespace armtrack::gui {
 
 namespace {
 
-std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a) {
+/// The estimates as plot samples, their times in recording time (less origin).
+std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a, double origin) {
   std::vector<ui::AngleSample> out;
   out.reserve(a.t.size());
   for (std::size_t i = 0; i < a.t.size(); ++i)
-    out.push_back(ui::angleSample(a.t[i], a.joints[i], a.sd[i]));
+    out.push_back(ui::angleSample(recordingTime(a.t[i], origin), a.joints[i], a.sd[i]));
   return out;
 }
 
@@ -171,8 +172,7 @@ void ReviewScreen::buildLayout() {
           [this] { emit backRequested(m_data.info.patientCode); });
   connect(m_playButton, &QPushButton::clicked, this, [this] { playing() ? pause() : play(); });
   connect(m_slider, &QSlider::valueChanged, this, [this](int ms) {
-    if (std::abs(ms - static_cast<int>(std::lround((m_cursor - m_t0) * 1000))) > 1)
-      setCursor(m_t0 + ms / 1000.0);
+    if (std::abs(ms - static_cast<int>(std::lround(m_cursor * 1000))) > 1) setCursor(ms / 1000.0);
   });
   connect(m_plots, &ui::AnglePlotPanel::cursorRequested, this, &ReviewScreen::setCursor);
   connect(m_repTable, &QTableView::activated, this, [this](const QModelIndex& i) {
@@ -286,10 +286,22 @@ void ReviewScreen::show(const ReviewData& d) {
   } else {
     m_plots->clearTarget();
   }
+  // One time base on the slider, the plots, the table and the events: recording time, the
+  // seconds since the first recorded row (core/metrics/SessionTime.h), as the report prints it.
+  m_origin = d.timeOrigin();
+  m_plots->clear();  // the events of an earlier load
+  m_events = d.events();
+  double opensAt = 0;
   if (d.analysis && !d.analysis->t.empty()) {
-    m_plots->setSession(samplesOf(*d.analysis));
-    m_t0 = d.analysis->t.front();
-    m_t1 = d.analysis->t.back();
+    m_plots->setSession(samplesOf(*d.analysis, m_origin));
+    m_t0 = recordingTime(d.analysis->t.front(), m_origin);
+    m_t1 = recordingTime(d.analysis->t.back(), m_origin);
+    // The first estimates are the filter's start-up (kStartupSeconds), far off while it
+    // converges: the review opens after them, as the metrics begin.
+    opensAt = recordingTime(firstConvergedTime(d.analysis->t, kStartupSeconds), m_origin);
+    for (const EventMark& e : m_events)
+      m_plots->addEvent(e.recordingS, QString::fromStdString(e.label));
+    if (m_overlay) showOverlay();
   } else {
     m_plots->setSession({});
     m_t0 = m_t1 = 0;
@@ -300,12 +312,15 @@ void ReviewScreen::show(const ReviewData& d) {
     });
     m_tabs->setCurrentWidget(m_reestimate);
   }
-  m_slider->setRange(0, static_cast<int>(std::lround((m_t1 - m_t0) * 1000)));
-  setCursor(first ? m_t0 : std::clamp(m_cursor, m_t0, m_t1));
+  m_slider->setRange(static_cast<int>(std::lround(m_t0 * 1000)),
+                     static_cast<int>(std::lround(m_t1 * 1000)));
+  // A re-estimate keeps the cursor where it was, unless that is in the new start-up.
+  setCursor(first || m_cursor < opensAt ? opensAt : std::clamp(m_cursor, m_t0, m_t1));
 
   m_skippedReps = 0;
-  const std::vector<RepetitionRow> reps =
-      d.metrics ? repetitionRows(*d.metrics, &m_skippedReps) : std::vector<RepetitionRow>{};
+  const std::vector<RepetitionRow> reps = d.metrics
+                                              ? repetitionRows(*d.metrics, &m_skippedReps, m_origin)
+                                              : std::vector<RepetitionRow>{};
   m_reps->setRows(reps);
 
   while (m_compare->count() > 1) m_compare->removeItem(1);
@@ -332,7 +347,7 @@ void ReviewScreen::show(const ReviewData& d) {
 void ReviewScreen::setCursor(double t) {
   m_cursor = std::clamp(t, m_t0, m_t1);
   if (m_data.analysis && !m_data.analysis->t.empty()) {
-    const std::size_t i = rowAt(m_data.analysis->t, m_cursor);
+    const std::size_t i = rowAt(m_data.analysis->t, m_cursor + m_origin);
     m_arm->setPose(m_data.analysis->joints[i]);
   }
   if (m_overlay && !m_overlay->t.empty()) {
@@ -342,12 +357,12 @@ void ReviewScreen::setCursor(double t) {
   }
   m_plots->setCursor(m_cursor);
   const QSignalBlocker block(m_slider);
-  m_slider->setValue(static_cast<int>(std::lround((m_cursor - m_t0) * 1000)));
+  m_slider->setValue(static_cast<int>(std::lround(m_cursor * 1000)));
   updateTimeLabel();
 }
 
 void ReviewScreen::updateTimeLabel() {
-  m_time->setText(tr("%1 / %2").arg(clock(m_cursor - m_t0), clock(m_t1 - m_t0)));
+  m_time->setText(tr("%1 / %2").arg(clock(m_cursor), clock(m_t1)));
 }
 
 void ReviewScreen::play() {
@@ -389,9 +404,7 @@ void ReviewScreen::compareWith(qint64 other) {
           return;
         }
         m_overlay = a;
-        std::vector<ui::AngleSample> samples = samplesOf(*a);
-        for (ui::AngleSample& s : samples) s.t += m_t0 - a->t.front();  // same start
-        m_plots->setOverlay(samples);
+        showOverlay();
         setCursor(m_cursor);
         emit overlayShown(other);
       },
@@ -399,6 +412,11 @@ void ReviewScreen::compareWith(qint64 other) {
         m_message->showMessage(
             [why = f.message] { return tr("That session could not be read: %1").arg(why); });
       });
+}
+
+void ReviewScreen::showOverlay() {
+  // The other session from the same start as this one's first estimate.
+  m_plots->setOverlay(samplesOf(*m_overlay, m_overlay->t.front() - m_t0));
 }
 
 QString ReviewScreen::draftKey() const {

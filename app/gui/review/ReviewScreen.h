@@ -44,8 +44,19 @@ class ReviewScreen : public QWidget {
   const ReviewData& data() const { return m_data; }
   qint64 sessionId() const { return m_id; }
 
-  /// The replay's time (s since the session's first estimate).
+  /// The replay's time: recording time (s since the first recorded row,
+  /// core/metrics/SessionTime.h), the time base of the slider, the plots, the repetitions'
+  /// table, the events and the report. The replay opens on the first estimate after the
+  /// filter's start-up second.
   double cursor() const { return m_cursor; }
+  /// Where recording time begins on the session clock (s).
+  double timeOrigin() const { return m_origin; }
+  /// The slider's range (recording time, s).
+  std::pair<double, double> timeRange() const { return {m_t0, m_t1}; }
+  /// The events drawn on the plots (recording time).
+  const std::vector<EventMark>& events() const { return m_events; }
+  /// The repetitions' table.
+  const RepetitionTableModel* repetitions() const { return m_reps; }
   void setCursor(double t);
   void play();
   void pause();
@@ -84,6 +95,7 @@ class ReviewScreen : public QWidget {
   void showDataTexts();
   void tick();
   void updateTimeLabel();
+  void showOverlay();
   void askReport();
   void askExport(clinical::ExportFormat format);
   void runOutput(const QString& what, const QString& path,
@@ -96,7 +108,9 @@ class ReviewScreen : public QWidget {
   qint64 m_id;
   ReviewData m_data;
   std::optional<storage::StoredAnalysis> m_overlay;
-  double m_cursor = 0, m_t0 = 0, m_t1 = 0;
+  double m_cursor = 0, m_t0 = 0, m_t1 = 0;  // recording time (s)
+  double m_origin = 0;                      // where it begins on the session clock (s)
+  std::vector<EventMark> m_events;
   QTimer m_play;
   QElapsedTimer m_clock;
   bool m_busy = false;

@@ -1,5 +1,7 @@
 #include "app/gui/services/GatedRecordingSink.h"
 
+#include <cmath>
+
 namespace armtrack::app::gui {
 
 QString RecordingGate::openError() const {
@@ -31,6 +33,7 @@ void GatedRecordingSink::append(const ArmSample& sample) {
     }
   }
   m_inner->append(sample);
+  if (std::isnan(m_gate->m_firstRecordedS)) m_gate->m_firstRecordedS = sample.t;
 }
 
 void GatedRecordingSink::flush() {

@@ -5,6 +5,7 @@
 
 #include <QString>
 #include <atomic>
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -24,12 +25,16 @@ class RecordingGate {
   std::uint64_t skipped() const { return m_skipped; }
   /// Why the sink could not be opened, if it could not (recording is then turned off).
   QString openError() const;
+  /// The first recorded row's time (s, session clock), where recording time begins
+  /// (core/metrics/SessionTime.h); NaN until a row was recorded.
+  double firstRecordedS() const { return m_firstRecordedS; }
 
  private:
   friend class GatedRecordingSink;
   std::shared_ptr<RecordingTarget> m_target;
   std::atomic<bool> m_recording{false};
   std::atomic<std::uint64_t> m_skipped{0};
+  std::atomic<double> m_firstRecordedS{std::numeric_limits<double>::quiet_NaN()};
   mutable std::mutex m_mutex;
   QString m_openError;
 };

@@ -32,6 +32,9 @@ struct LiveSessionConfig {
   double windowSeconds = 20.0;
   /// Record from the start (when a recording target was given), without pressing Record.
   bool recordFromStart = false;
+  /// The sensor calibration made for this session, stored with it for the report: "good",
+  /// "usable" or "poor" ("" = none made) and its reason in words.
+  QString calibrationVerdict, calibrationReason;
 };
 
 /// The demo's devices: the virtual arm with both IMUs, a Kinect and a webcam.

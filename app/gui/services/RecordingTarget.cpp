@@ -67,7 +67,7 @@ QString DatabaseRecordingTarget::describe() const {
 QString DatabaseRecordingTarget::begin(const RecordingMeta& meta, const RecordingColumns& columns) {
   if (m_sessionId != 0) return {};
   try {
-    m_sessionId = m_store.beginRecording(m_patient, m_protocol, meta, columns);
+    m_sessionId = m_store.beginRecording(m_patient, m_protocol, meta, columns, sessionSettings());
   } catch (const storage::StorageError& e) {
     return Tr::tr("cannot record into the records: %1").arg(QString::fromStdString(e.what()));
   }

@@ -8,9 +8,11 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <mutex>
 
 #include "core/io/Recording.h"
 #include "core/storage/DatabaseUrl.h"
+#include "core/storage/Records.h"
 
 class QObject;
 
@@ -23,6 +25,18 @@ namespace armtrack::app::gui {
 class RecordingTarget {
  public:
   virtual ~RecordingTarget() = default;
+  /// How the session is made, stored with it when it begins (the records; a file ignores it):
+  /// the devices as `armtrack-cli record --db` stores them (app/plugins/DeviceRecord.h), the
+  /// live filter and the sensor calibration's verdict. The session's control thread sets it
+  /// once the devices are made; begin() reads it. Any thread.
+  void setSessionSettings(const storage::SessionSettings& settings) {
+    std::lock_guard lock(m_settingsMutex);
+    m_settings = settings;
+  }
+  storage::SessionSettings sessionSettings() const {
+    std::lock_guard lock(m_settingsMutex);
+    return m_settings;
+  }
   /// Where, in words, for the screen ("recording.csv", "the records of patient P01").
   virtual QString describe() const = 0;
   /// GUI thread, when Record is first pressed: what must happen before rows flow (the records:
@@ -51,6 +65,10 @@ class RecordingTarget {
     (void)context;
     done(finish(rows, complete, events));
   }
+
+ private:
+  mutable std::mutex m_settingsMutex;
+  storage::SessionSettings m_settings;
 };
 
 /// A recording file; never replaces one that exists (the user picks another name). open() makes

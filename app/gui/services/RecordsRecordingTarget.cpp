@@ -25,10 +25,11 @@ std::function<QString(storage::ClinicalStore&)> RecordsRecordingTarget::beginJob
     const RecordingMeta& meta, const RecordingColumns& columns) const {
   // Holds the state, not the target: a queued call may outlive the screen that asked for it.
   return [state = m_state, url = m_records.url(), patient = m_patient, protocol = m_protocol, meta,
-          columns](storage::ClinicalStore& store) {
+          columns, settings = sessionSettings()](storage::ClinicalStore& store) {
     if (!state->inner)
       state->inner =
           std::make_unique<app::gui::DatabaseRecordingTarget>(store, url, patient, protocol);
+    state->inner->setSessionSettings(settings);  // the devices, as the CLI stores them
     const QString why = state->inner->begin(meta, columns);
     state->sessionId = state->inner->sessionId();
     return why;

@@ -1,13 +1,33 @@
 #include "app/gui/services/SessionController.h"
 
 #include <QCoreApplication>
+#include <QJsonDocument>
+#include <QJsonObject>
 
+#include "app/plugins/DeviceRecord.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/storage/DatabaseRecordingSink.h"
 #include "devices/api/DeviceThread.h"
 #include "devices/api/Options.h"
 
 namespace armtrack::app::gui {
+
+storage::SessionSettings sessionSettings(const LiveSessionConfig& config,
+                                         const QJsonObject& devices) {
+  storage::SessionSettings out;
+  out.devicesJson = QString::fromUtf8(QJsonDocument(devices).toJson(QJsonDocument::Compact));
+  // The live filter, which the session's analysis then uses too (as the CLI stores it), and the
+  // sensor calibration's verdict for the report.
+  QJsonObject filter{{QStringLiteral("filter"), config.estimator.filter == FilterKind::Ukf
+                                                    ? QStringLiteral("ukf")
+                                                    : QStringLiteral("ekf")}};
+  if (!config.calibrationVerdict.isEmpty())
+    filter.insert(QStringLiteral("sensor_calibration"),
+                  QJsonObject{{QStringLiteral("verdict"), config.calibrationVerdict},
+                              {QStringLiteral("reason"), config.calibrationReason}});
+  out.filterJson = QString::fromUtf8(QJsonDocument(filter).toJson(QJsonDocument::Compact));
+  return out;
+}
 
 SessionController::SessionController(const PluginRegistry& registry, QObject* parent)
     : QObject(parent), m_registry(registry), m_worker(new QObject) {
@@ -84,6 +104,7 @@ void SessionController::startInThread(LiveSessionConfig config,
     };
   }
   auto s = std::make_shared<session::Session>(params);
+  QJsonObject devicesUsed;  // stored with the session, as `armtrack-cli record --db` does
   int index = 0;
   for (const QString& spec : config.devices) {
     ++index;
@@ -95,12 +116,16 @@ void SessionController::startInThread(LiveSessionConfig config,
                      "settings.")
                       .arg(name, m_registry.names().join(QStringLiteral(", "))));
     QString why;
-    std::unique_ptr<devices::Device> device =
-        plugin->create(devices::Options::parse(colon < 0 ? QString() : spec.mid(colon + 1)), &why);
+    const QVariantMap options =
+        devices::Options::parse(colon < 0 ? QString() : spec.mid(colon + 1));
+    std::unique_ptr<devices::Device> device = plugin->create(options, &why);
     if (!device) return fail(tr("%1: %2").arg(name, why));
     const QString label = QStringLiteral("%1#%2").arg(name).arg(index);
+    devicesUsed.insert(label, deviceRecord(name, options, *device));
     s->addDevice(std::make_unique<devices::DeviceThread>(std::move(device), label), label);
   }
+  if (gate && gate->target())
+    gate->target()->setSessionSettings(sessionSettings(config, devicesUsed));
   connect(s.get(), &session::Session::deviceStateChanged, this,
           &SessionController::deviceStateChanged, Qt::QueuedConnection);
   connect(s.get(), &session::Session::problem, this, &SessionController::problem,

@@ -3,6 +3,7 @@
 // session (takeResults, takeEvents, stats: any thread) from its timer.
 #pragma once
 
+#include <QJsonObject>
 #include <QObject>
 #include <QThread>
 #include <memory>
@@ -19,6 +20,12 @@ class PluginRegistry;
 }
 
 namespace armtrack::app::gui {
+
+/// What a recording of the session stores with it (RecordingTarget::setSessionSettings): the
+/// devices as made (app/plugins/DeviceRecord.h, by device label), the filter, and the sensor
+/// calibration's verdict when one was made.
+storage::SessionSettings sessionSettings(const LiveSessionConfig& config,
+                                         const QJsonObject& devices);
 
 class SessionController : public QObject {
   Q_OBJECT

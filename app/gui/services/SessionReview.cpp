@@ -15,6 +15,7 @@ ReviewData loadReview(storage::ClinicalStore& store, qint64 id) {
   d.analysis = storage::latestAnalysis(store, id);
   d.metrics = storage::latestMetricsJson(store, id);
   d.versions = store.estimateVersions(id);
+  d.recordingStartS = store.recordingStartS(id);
   for (storage::SessionInfo& s : store.listSessions(d.info.patientCode))
     if (s.id != id) d.others.push_back(std::move(s));
   std::sort(d.others.begin(), d.others.end(),
@@ -23,7 +24,16 @@ ReviewData loadReview(storage::ClinicalStore& store, qint64 id) {
   return d;
 }
 
-std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipped) {
+double ReviewData::timeOrigin() const {
+  if (recordingStartS && std::isfinite(*recordingStartS)) return *recordingStartS;
+  return analysis && !analysis->t.empty() ? analysis->t.front() : 0.0;
+}
+
+std::vector<EventMark> ReviewData::events() const {
+  return parseEventMarks(info.notes.toStdString(), timeOrigin());
+}
+
+std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipped, double origin) {
   std::vector<RepetitionRow> rows;
   int bad = 0;
   const QJsonObject reps = metrics["repetitions"].toObject();
@@ -40,9 +50,9 @@ std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipp
       continue;
     }
     RepetitionRow row;
-    row.startS = *start;
-    row.endS = *end;
-    row.peakS = number(r["peak_s"]).value_or(*start);
+    row.startS = recordingTime(*start, origin);
+    row.endS = recordingTime(*end, origin);
+    row.peakS = recordingTime(number(r["peak_s"]).value_or(*start), origin);
     row.excursionDeg = *excursion;
     row.partial = r["partial"].toBool();
     const QJsonObject angle = r["angles"].toObject()[primary].toObject();

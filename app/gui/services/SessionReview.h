@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/metrics/SessionTime.h"
 #include "core/storage/SessionAnalysis.h"
 
 namespace armtrack::gui {
@@ -20,6 +21,14 @@ struct ReviewData {
   std::optional<QJsonObject> metrics;  ///< the newest metrics with "angles" (latestMetricsJson)
   int versions = 0;                    ///< estimate versions stored
   std::vector<storage::SessionInfo> others;  ///< the patient's other sessions, newest first
+  /// The first recorded row's time (s, session clock): recording time counts from it
+  /// (core/metrics/SessionTime.h); empty when no row was stored.
+  std::optional<double> recordingStartS;
+
+  /// Where recording time begins: recordingStartS, else the first estimate's time, else 0.
+  double timeOrigin() const;
+  /// The events marked during the session (its notes), in recording time.
+  std::vector<EventMark> events() const;
 };
 
 /// Throws StorageError (NotFound, Corrupt).
@@ -35,9 +44,11 @@ struct RepetitionRow {
   std::optional<double> sparc, ldlj;
 };
 
-/// The repetitions of a metrics JSON (docs/storage.md, "Metrics"); a malformed entry is left
-/// out and counted in *skipped.
-std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipped = nullptr);
+/// The repetitions of a metrics JSON (docs/storage.md, "Metrics"), their times in recording
+/// time (the session clock's times less origin, ReviewData::timeOrigin()); a malformed entry is
+/// left out and counted in *skipped.
+std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipped = nullptr,
+                                          double origin = 0);
 
 /// The index of the row at or before t in times (ascending); 0 for t before the first.
 std::size_t rowAt(const std::vector<double>& times, double t);

@@ -183,8 +183,16 @@ inline SessionReportData sessionData(const SimulatedSession& sim) {
   d.session.durationS = sim.metrics.durationS;
   d.session.status = "complete";
   d.session.devicesJson = R"({"imu_upper":{"plugin":"virtual-arm","rate_hz":100},"camera":"none"})";
+  // The recording's sidecar as the records store it (docs/recording-format.md), with a camera.
   d.session.calibrationJson =
-      R"({"side":"right","g":9.81,"up":[-1,0,0],"geometry":{"upper_arm_m":0.3,"forearm_m":0.25}})";
+      R"({"format":"armtrack-recording","version":1,"side":"right","g":9.81,"up":[-1,0,0],)"
+      R"("geometry":{"l3":0.30,"l6":0.25,"lu3":0.11,"thu4":1.5707963,"lu5":0.02,"lf6":0.2,)"
+      R"("thf7":1.5707963,"lf8":0.01},"camera":{"fx":600,"fy":600,"cx":320,"cy":240,)"
+      R"("dist":[0,0,0,0,0],"R":[1,0,0,0,1,0,0,0,1],"t":[0.0,0.6,0.8]}})";
+  // What the GUI stores beside the filter: the sensor calibration's verdict and its reason.
+  d.session.filterJson =
+      R"({"filter":"ekf","sensor_calibration":{"verdict":"usable","reason":"Usable, not )"
+      R"(perfect (worst: forearm gyroscope at 2.1 noise levels)."}})";
   d.session.notes = "Patient tolerated the exercise well.\nContinue the programme twice a week.";
   storage::Protocol p;
   p.name = "Flexion 120";

@@ -131,9 +131,47 @@ TEST_F(ProgressReport, NoSessionsSaysSo) {
   const QString pdf = dir.filePath("none.pdf");
   EXPECT_EQ(writeProgressReport(d, pdf), 1);
   const QString all = pageTexts(pdf).join('\n');
-  EXPECT_TRUE(all.contains("No sessions between 2026-10-01 and 2026-11-30."));
+  EXPECT_TRUE(all.contains("No sessions in the period (2026-10-01 to 2026-11-30)."));
   EXPECT_TRUE(all.contains("Page 1 of 1"));
   EXPECT_FALSE(all.contains("largest angle reached (deg)")) << "no empty charts";
+}
+
+// Dates left empty (all sessions) or not dates at all: the header and the period show the
+// sessions' first and last day, never "progress - to -" or "From - To -".
+TEST_F(ProgressReport, PeriodIsTheSessionsWhenTheDatesAreMissingOrWrong) {
+  ProgressReportData d = progressData();
+  d.fromDate.clear();
+  d.toDate = "not a date";
+  EXPECT_EQ(progressPeriod(d), "2026-10-02 to 2026-11-20");
+  const QString pdf = dir.filePath("open.pdf");
+  writeProgressReport(d, pdf);
+  const QString all = pageTexts(pdf).join('\n').simplified();
+  EXPECT_TRUE(
+      all.contains(QString::fromUtf8("Łukasz Żółć (P-0042), progress 2026-10-02 to "
+                                     "2026-11-20")))
+      << all.left(400).toStdString();
+  EXPECT_TRUE(all.contains("Period 2026-10-02 to 2026-11-20"));
+  EXPECT_FALSE(all.contains("- to -"));
+  EXPECT_FALSE(all.contains("From -"));
+  // One date given: it stays, the other comes from the sessions.
+  d.fromDate = "2026-10-10";
+  EXPECT_EQ(progressPeriod(d), "2026-10-10 to 2026-11-20");
+  d.sessions.clear();
+  d.toDate.clear();
+  EXPECT_EQ(progressPeriod(d), "from 2026-10-10");
+  d.fromDate.clear();
+  EXPECT_EQ(progressPeriod(d), "no sessions");
+}
+
+// The % of normal of each chart is the patient page's (named motion against its own normal):
+// the latest flexion reached 94.5 deg of AAOS 180, 53 %, not its 104.5 deg ROM over 240 (44 %).
+TEST_F(ProgressReport, PercentOfNormalIsThePatientPagesDefinition) {
+  const QString pdf = dir.filePath("percent.pdf");
+  writeProgressReport(progressData(), pdf);
+  const QString all = pageTexts(pdf).join('\n').simplified();
+  EXPECT_TRUE(all.contains("Shoulder flexion: largest angle reached (deg); latest 53 % of normal"))
+      << all.toStdString();
+  EXPECT_FALSE(all.contains("latest 44 %"));
 }
 
 TEST_F(ProgressReport, UnwritablePathIsNamed) {

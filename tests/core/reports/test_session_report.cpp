@@ -63,8 +63,19 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
     EXPECT_TRUE(text[i].contains(QString("Page %1 of %2").arg(i + 1).arg(pages)));
   }
   for (const char* s : {"P-0042", "1961-03-14", "Dr. Jane Smith", "Flexion 120", "virtual-arm",
-                        "upper_arm_m", "Frozen shoulder", "Continue the programme twice a week."})
+                        "Frozen shoulder", "Continue the programme twice a week."})
     EXPECT_TRUE(all.contains(s)) << s;
+  // The calibration in words: the verdict and its reason, lengths in cm, mounting in deg, no
+  // stored keys or matrices.
+  const QString flat = all.simplified();
+  for (const char* s :
+       {"Sensor calibration: Usable, not perfect (worst: forearm gyroscope at 2.1",
+        "upper arm 30.0 cm (shoulder to elbow), forearm 25.0 cm (elbow to wrist)",
+        "Upper-arm sensor: 11.0 cm from the shoulder, mounted at 90.0 deg",
+        "Forearm sensor: 20.0 cm from the elbow", "Camera: calibrated, 1.00 m from the shoulder"})
+    EXPECT_TRUE(flat.contains(s)) << s;
+  for (const char* raw : {"geometry.", "camera.R", "camera.", "l3:", "thu4", "\"verdict\""})
+    EXPECT_FALSE(all.contains(raw)) << raw;
   EXPECT_TRUE(all.contains(QRegularExpression("Duration\\s+\\d+\\.\\d s"))) << "duration";
 
   // Each angle's row: min, max, ROM, peak and mean velocity as the metrics give them, in degrees.
@@ -109,6 +120,38 @@ TEST_F(SessionReport, TextHasEverySectionThePatientOnEveryPageAndTheMetrics) {
   // The counted angle's plot numbers the repetitions; the partial fifth is "5p".
   EXPECT_TRUE(all.contains("numbers: repetitions at their peaks (p = partial)"));
   EXPECT_TRUE(all.contains(QRegularExpression("\\b4\\s+5p\\b")));
+}
+
+// Times are recording time, as the review shows them: from the recording's first row (here
+// 1.3 s before the first analysed angle, the filter's start-up left out), not from the first
+// analysed angle; an event marked 12.0 s into the recording is printed and drawn at 12.0 s.
+TEST_F(SessionReport, TimesAreRecordingTimeAsInTheReview) {
+  const SimulatedSession sim = simulateSession({110, 120, 115});
+  SessionReportData d = sessionData(sim);
+  const double start = sim.series.t.front() - 1.3;
+  d.recordingStartS = start;
+  d.session.notes = "Tired at the end.\n[0:12.0] Pain";
+  d.events = parseEventMarks(d.session.notes.toStdString(), start);
+  EXPECT_DOUBLE_EQ(timeOrigin(d), start);
+  const QString pdf = path("times.pdf");
+  writeSessionReport(d, pdf);
+  const QString all = pageTexts(pdf).join('\n');
+  ASSERT_EQ(sim.metrics.repetitions.repetitions.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Repetition& rep = sim.metrics.repetitions.repetitions[i];
+    // Independent of the report: the session clock's time less the first row's.
+    const QString row = QString("\n%1 +%2 +%3 ")
+                            .arg(i + 1)
+                            .arg(rep.startS - start, 0, 'f', 2)
+                            .arg(rep.endS - start, 0, 'f', 2);
+    EXPECT_TRUE(all.contains(QRegularExpression(row))) << row.toStdString();
+  }
+  EXPECT_TRUE(all.simplified().contains(
+      "Events marked (time since the recording began, as in the review): 0:12.0 Pain"))
+      << all.toStdString();
+  EXPECT_GE(all.count("Pain"), 2) << "listed and drawn on the plots";
+  EXPECT_FALSE(all.contains("[0:12.0]")) << "the event line is not printed twice";
+  EXPECT_TRUE(all.contains("Tired at the end."));
 }
 
 /// The grey normal-range bars of the normative comparison on a rendered page: per bar (top to
@@ -171,7 +214,9 @@ TEST_F(SessionReport, NormalRangesByAgeAndSexNameTheirSourcePerAngle) {
         QString("Elbow flexion -2.5 – 145.5 %1").arg(soucie),
         QString("Forearm pronation -85.5 – 75.5 %1").arg(soucie)})
     EXPECT_TRUE(all.contains(row)) << row;
-  EXPECT_TRUE(all.contains("of 220.5 deg"));  // flexion's span: 160.5 + 60
+  // % of normal: flexion's largest angle against the flexion limit (160.5), not the whole arc.
+  EXPECT_TRUE(all.contains("of 160.5 deg"));
+  EXPECT_FALSE(all.contains("of 220.5 deg"));
   EXPECT_TRUE(all.contains("healthy females aged 45-69; the patient was 65 on the day"));
   EXPECT_TRUE(all.contains("Haemophilia 2011;17(3):500-507, doi:10.1111/j."));  // the line breaks
   EXPECT_TRUE(all.contains("archive.cdc.gov/www_cdc_gov/ncbddd/jointrom/"));

@@ -40,7 +40,13 @@ class Exercise final : public Trajectory {
   std::vector<double> peakDeg;
 
   static constexpr double kRestS = 4.0;
-  explicit Exercise(std::vector<double> peaks) : peakDeg(std::move(peaks)) {
+  /// The same movement between other rest and top postures.
+  Exercise(std::vector<double> peaks, ClinicalAngles restPose, ClinicalAngles topPose)
+      : rest(restPose), top(topPose), peakDeg(std::move(peaks)) {
+    build();
+  }
+  explicit Exercise(std::vector<double> peaks) : peakDeg(std::move(peaks)) { build(); }
+  void build() {
     double t = kRestS;
     m_path.add(0.0, fromClinical(rest));
     m_path.add(t, fromClinical(rest));
@@ -229,7 +235,25 @@ TEST(SessionAnalysis, ExerciseFromTheDatabaseMatchesTheTruth) {
   EXPECT_FALSE(storedAnalysis(*f.store, id, 3).has_value());
 }
 
-TEST(SessionAnalysis, WithoutProtocolCountsOnTheAngleThatMovesMost) {
+// Without a protocol the analysis counts where the live counter counted (repetitionAngle():
+// shoulder flexion), even when another angle moves more: here the forearm turns 100 deg of
+// pronation while the shoulder flexes 40 deg, and the review and report must not count the
+// session on pronation after the live screen counted it on flexion.
+TEST(SessionAnalysis, WithoutProtocolCountsOnTheLiveCountersAngle) {
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  const Exercise exercise({70, 70, 70}, {30, 5, 0, 45, -40}, {70, 10, 5, 55, 60});
+  simulateExercise(f.file("ex.csv"), exercise);
+  const qint64 id = f.store->importRecording(f.file("ex.csv"), "P1");
+  const AnalysisResult r = analyseSession(*f.store, id);
+  const QJsonObject reps = r.metricsJson["repetitions"].toObject();
+  EXPECT_EQ(reps["primary_angle"].toString(), "shoulder_flexion");
+  EXPECT_EQ(r.metrics.repetitions.primaryAngle, repetitionAngle(std::nullopt));
+  // The pronation did move most: the old rule would have chosen it.
+  EXPECT_GT(r.metrics.session.angle[4].romRad, r.metrics.session.angle[0].romRad);
+}
+
+TEST(SessionAnalysis, WithoutProtocolCountsOnShoulderFlexion) {
   Fixture f;
   f.store->addPatient(makePatient("P1"));
   const Exercise exercise({120, 120, 120});

@@ -278,6 +278,9 @@ class TestHomeMode : public QObject {
     // Saved as the patient stopped it: complete, its analysis waiting for staff.
     QCOMPARE(cut.status, QString::fromLatin1(storage::kStatusComplete));
     QVERIFY(cut.durationS > 3.0);  // recorded up to the close
+    // The devices stored as the clinic's recordings and the CLI store them (issue 25, item 7).
+    QVERIFY2(cut.devicesJson.contains(QStringLiteral("\"plugin\":\"virtual-arm\"")),
+             qPrintable(cut.devicesJson));
     const auto summary = HomeExerciseResult::fromJson(
         QJsonDocument::fromJson(cut.homeSummaryJson.toUtf8()).object());
     QVERIFY(summary);

@@ -2,8 +2,11 @@
 // plots fill; a device that drops out turns the health red while the session goes on, and green
 // again; record, pause and stop write a CSV or a session in the clinical records; a session that
 // cannot start says why; keys drive every control.
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QListWidget>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSignalSpy>
 #include <QTableView>
 #include <QTemporaryDir>
@@ -12,8 +15,10 @@
 
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/plugins/PluginRegistry.h"
+#include "core/metrics/SessionTime.h"
 #include "core/storage/ClinicalStore.h"
 #include "core/storage/Database.h"
+#include "core/storage/SessionAnalysis.h"
 #include "tests/support/GuiTestMain.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/AngleReadouts.h"
@@ -273,16 +278,23 @@ class TestLiveSessionScreen : public QObject {
     store.addPatient(p);
     auto target = std::make_shared<DatabaseRecordingTarget>(store, url, QStringLiteral("P01"));
     gui::LiveSessionConfig c = config(gui::demoDevices());
-    c.recordFromStart = true;
+    c.primaryAngle.reset();  // no protocol: the counter's angle is the analysis's rule
+    c.calibrationVerdict = QStringLiteral("good");
+    c.calibrationReason = QStringLiteral("Good: the data fit the arm model.");
     LiveSessionScreen screen(m_registry, c, target);
     screen.show();
     screen.start();
+    // Watched for 1.5 s before Record: the session clock and recording time then differ.
+    QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Live, 10000);
+    QVERIFY(waitForSessionTime(screen, 1.5));
+    screen.record();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), State::Recording, 10000);
     QVERIFY(target->sessionId() > 0);
     // 2.5 s of recording (it starts once the session has begun in the records).
     const double since = screen.sessionTime();
     QVERIFY(waitForSessionTime(screen, since + 1.0));
     screen.markEvent();
+    const double markedAt = screen.events().back().first;  // session clock
     QVERIFY(waitForSessionTime(screen, since + 2.5));
     QSignalSpy stopped(&screen, &LiveSessionScreen::sessionStopped);
     screen.stop();
@@ -292,6 +304,36 @@ class TestLiveSessionScreen : public QObject {
     QVERIFY2(info.sampleRows > 2000, qPrintable(QString::number(info.sampleRows)));
     QVERIFY2(info.notes.contains(QStringLiteral("Pain")), qPrintable(info.notes));
     QVERIFY(stopped.at(0).at(0).toString().contains(QString::number(target->sessionId())));
+    // The devices are stored as `armtrack-cli record --db` stores them (plugin, options,
+    // streams), and the filter and the calibration's verdict beside the filter.
+    const QJsonObject devices = QJsonDocument::fromJson(info.devicesJson.toUtf8()).object();
+    QVERIFY2(devices.contains(QStringLiteral("virtual-arm#1")), qPrintable(info.devicesJson));
+    const QJsonObject arm = devices[QStringLiteral("virtual-arm#1")].toObject();
+    QCOMPARE(arm[QStringLiteral("plugin")].toString(), QStringLiteral("virtual-arm"));
+    QCOMPARE(arm[QStringLiteral("options")].toObject()[QStringLiteral("sensors")].toString(),
+             QStringLiteral("upper+forearm+kinect+webcam"));
+    QVERIFY(!arm[QStringLiteral("streams")].toString().isEmpty());
+    const QJsonObject filter = QJsonDocument::fromJson(info.filterJson.toUtf8()).object();
+    QCOMPARE(filter[QStringLiteral("filter")].toString(), QStringLiteral("ekf"));
+    QCOMPARE(filter[QStringLiteral("sensor_calibration")]
+                 .toObject()[QStringLiteral("verdict")]
+                 .toString(),
+             QStringLiteral("good"));
+    // The event is stored in recording time: since the first recorded row, read as written
+    // (origin 0), not on the session clock.
+    const std::optional<double> first = store.recordingStartS(target->sessionId());
+    QVERIFY(first);
+    QVERIFY2(*first > 1.4, qPrintable(QString::number(*first)));
+    QVERIFY2(info.notes.contains(QRegularExpression(QStringLiteral("\\[0:0\\d\\.\\d\\] Pain"))),
+             qPrintable(info.notes));
+    const std::vector<EventMark> events = parseEventMarks(info.notes.toStdString(), 0.0);
+    QCOMPARE(events.size(), std::size_t{1});
+    QVERIFY2(
+        std::abs(events[0].recordingS - (markedAt - *first)) < 0.051,
+        qPrintable(QStringLiteral("%1 vs %2").arg(events[0].recordingS).arg(markedAt - *first)));
+    // The analysis counts the repetitions on the angle the live counter counted on.
+    const storage::AnalysisResult r = storage::analyseSession(store, target->sessionId());
+    QCOMPARE(r.metrics.repetitions.primaryAngle, screen.repetitionCounter().primaryAngle());
   }
 
   // The records answer late (a busy database): the screen goes on drawing meanwhile, records

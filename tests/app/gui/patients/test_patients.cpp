@@ -208,6 +208,18 @@ class TestPatients : public QObject {
     QCOMPARE(written.at(0).at(1).toString(), QString());
     const QString text = test::pdfText(pdf);
     QVERIFY2(text.contains(QStringLiteral("Ada Example")), qPrintable(text.left(400)));
+    // The page asks for all sessions: the period is their first to last day, in the running
+    // head and the details, never "progress - to -" or "From - To -" (issue 25, item 7).
+    QStringList days;
+    for (const auto& s : page->overview().sessions) days << s.startedAt.left(10);
+    QVERIFY(!days.isEmpty());
+    std::sort(days.begin(), days.end());
+    const QString period = QStringLiteral("%1 to %2").arg(days.front(), days.back());
+    const QString flat = text.simplified();
+    QVERIFY2(flat.contains(QStringLiteral("progress ") + period), qPrintable(flat.left(600)));
+    QVERIFY2(flat.contains(QStringLiteral("Period ") + period), qPrintable(flat.left(1200)));
+    QVERIFY(!flat.contains(QStringLiteral("- to -")));
+    QVERIFY(!flat.contains(QStringLiteral("From -")));
     // A folder that cannot be written: the page says so and stays usable.
     page->writeProgressReport(QStringLiteral("/proc/no-such-dir/x.pdf"));
     QTRY_COMPARE_WITH_TIMEOUT(written.count(), 2, 30000);

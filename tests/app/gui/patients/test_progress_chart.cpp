@@ -10,18 +10,22 @@
 #include <QComboBox>
 #include <QDateTime>
 #include <QLineSeries>
+#include <QRegularExpression>
 #include <QStandardItemModel>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QValueAxis>
 #include <cmath>
 
+#include "app/clinical/Outputs.h"
 #include "app/gui/patients/ProgressChart.h"
 #include "app/gui/services/PatientRecords.h"
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/reports/Reports.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 #include "core/storage/SessionAnalysis.h"
+#include "tests/app/gui/support/GuiTestSupport.h"
 #include "tests/support/GuiTestMain.h"
 
 using namespace armtrack;
@@ -223,6 +227,55 @@ class TestProgressChart : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&chart));
     test::saveScreenshot(test::grabFromScreen(&chart),
                          QStringLiteral("progress_chart_external_rotation"));
+  }
+
+  // One "% of normal" (issue 25, item 3): the page's and the session report's for the same
+  // session, both the largest flexion over the flexion normal (AAOS 180 deg here), not the
+  // report's old range of motion over flexion plus extension (240 deg).
+  void thePageAndTheSessionReportShowTheSamePercentOfNormal() {
+    storage::DatabaseUrl url;
+    url.path = m_dir.filePath(QStringLiteral("records.db"));
+    storage::Database db(url, {});
+    storage::ClinicalStore store(db);
+    store.signIn(QStringLiteral("admin"), "a-long-password");
+    gui::ProgressChart chart;
+    chart.setSessions(m_overview.progress);
+    chart.setAngle(0);
+    for (int row = 0; row < 2; ++row) {
+      const gui::SessionExtremes& s = m_overview.progress[static_cast<std::size_t>(row)];
+      const double page = cell(chart.table(), row, 2);
+      // The independent truth: the largest flexion over 180 deg.
+      QVERIFY(std::abs(page - 100 * *s.maxRad[0] * kRadToDeg / 180) <= 0.5);
+      const QString pdf = m_dir.filePath(QStringLiteral("report%1.pdf").arg(s.id));
+      reports::writeSessionReport(clinical::sessionReportData(store, s.id), pdf);
+      const QString text = gui::test::pdfText(pdf).simplified();
+      const QRegularExpressionMatch m =
+          QRegularExpression(QStringLiteral("(-?[\\d.]+) of 180\\.0 deg, (\\d+) %")).match(text);
+      QVERIFY2(m.hasMatch(), qPrintable(text.left(4000)));
+      QCOMPARE(m.captured(2).toDouble(), page);
+    }
+  }
+
+  // The patient's age and sex choose the normal range as the reports do (patientNorms(): the
+  // CDC's values where this version carries them for the patient's group, else AAOS).
+  void thePatientsNormsAreTheReports() {
+    gui::ProgressChart chart;
+    chart.setSessions(m_overview.progress);
+    chart.setPatient(QStringLiteral("1961-03-14"), QStringLiteral("f"));
+    chart.setAngle(0);
+    const QDate day =
+        QDateTime::fromString(m_overview.progress.back().startedAt, Qt::ISODateWithMs).date();
+    const PatientNorms norms = patientNorms(
+        CivilDate{1961, 3, 14}, CivilDate{day.year(), day.month(), day.day()}, Sex::Female);
+    QAreaSeries* area = nullptr;
+    for (QAbstractSeries* series : chart.chart()->series())
+      if (auto* found = qobject_cast<QAreaSeries*>(series)) area = found;
+    QVERIFY(area);
+    QVERIFY(std::abs(area->upperSeries()->at(0).y() - norms.ranges[0].maxRad * kRadToDeg) < 1e-6);
+    const std::string_view source = normSourceShortName(norms.ranges[0].maxSource);
+    QVERIFY(area->name().contains(QString::fromUtf8(source.data(), source.size())));
+    const double largest = *m_overview.progress.back().maxRad[0];
+    QVERIFY(std::abs(cell(chart.table(), 1, 2) - 100 * largest / norms.ranges[0].maxRad) <= 0.5);
   }
 };
 

@@ -8,6 +8,7 @@
 #include <QJsonDocument>
 #include <QPlainTextEdit>
 #include <QProcess>
+#include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTableView>
@@ -68,16 +69,31 @@ class TestReview : public QObject {
     QVERIFY(r);
     const auto& a = r->data().analysis;
     QVERIFY(a && a->t.size() > 1000);
-    QCOMPARE(r->cursor(), a->t.front());
+    // It opens on the first estimate after the filter's start-up second (issue 25, item 4), not
+    // on the unconverged first one: the cursor there and the arm in that estimate's pose.
+    std::size_t settled = 0;
+    while (a->t[settled] < a->t.front() + 1.0) ++settled;
+    const double origin = r->timeOrigin();
+    QVERIFY(origin <= a->t.front());
+    QCOMPARE(r->cursor(), a->t[settled] - origin);
+    QVERIFY((r->armView()->pose() - a->joints[settled]).cwiseAbs().maxCoeff() < 1e-12);
+    QVERIFY((r->armView()->pose() - a->joints[0]).cwiseAbs().maxCoeff() > 1e-9);
+    // One time base: the slider and the plots both span recording time, from the first
+    // recorded row (not the session clock for one and time since the first estimate for the
+    // other).
+    QVERIFY(std::abs(r->timeRange().first - (a->t.front() - origin)) < 1e-9);
+    QVERIFY(std::abs(r->timeRange().second - (a->t.back() - origin)) < 1e-9);
+    QVERIFY(std::abs(r->plots()->trace().samples().front().t - r->timeRange().first) < 1e-6);
+    QVERIFY(std::abs(r->plots()->trace().samples().back().t - r->timeRange().second) < 1e-6);
     // The arm at a cursor shows the stored estimate of that instant.
     const std::size_t i = a->t.size() / 2;
-    r->setCursor(a->t[i]);
+    r->setCursor(a->t[i] - origin);
     QVERIFY((r->armView()->pose() - a->joints[i]).cwiseAbs().maxCoeff() < 1e-12);
     QCOMPARE(r->plots()->trace().samples().size(), a->t.size());
     // Playback moves on by itself, then stops where asked.
-    r->setCursor(a->t.front());
+    r->setCursor(0);
     r->play();
-    QTRY_VERIFY_WITH_TIMEOUT(r->cursor() > a->t.front() + 1.0, 10000);
+    QTRY_VERIFY_WITH_TIMEOUT(r->cursor() > 1.0, 10000);
     r->pause();
     const double at = r->cursor();
     QTest::qWait(200);  // paused: the cursor stays
@@ -146,6 +162,47 @@ class TestReview : public QObject {
     r = open(id);
     QCOMPARE(r->data().info.notes, QStringLiteral("Shoulder pain at 110 deg."));
     QCOMPARE(r->notesEditor()->toPlainText(), QStringLiteral("Shoulder pain at 110 deg."));
+  }
+
+  // The review and the PDF report of the same session agree on times (issue 25, item 3): the
+  // first repetition starts at the same time in the table and in the report, and an event
+  // marked 5.0 s into the recording is drawn and printed at 5.0 s.
+  void theReviewAndTheReportShareOneTimeBase() {
+    ReviewScreen* r = review();
+    const qint64 id = r->sessionId();
+    // The live screen's older notes line, on the session clock.
+    const double markedAt = r->timeOrigin() + 5.0;
+    bool stored = false;
+    m_app->records().call(
+        m_app->window(),
+        [id, markedAt](armtrack::storage::ClinicalStore& s) {
+          s.updateSessionNotes(id, QStringLiteral("Events: %1 s: Pain").arg(markedAt, 0, 'f', 1));
+        },
+        [&] { stored = true; }, {});
+    QTRY_VERIFY(stored);
+    r = open(id);
+    QVERIFY(r);
+    QCOMPARE(r->events().size(), std::size_t{1});
+    QVERIFY(std::abs(r->events()[0].recordingS - 5.0) < 0.051);
+    QCOMPARE(r->events()[0].label, std::string("Pain"));
+    const QModelIndex first = r->repetitionTable()->model()->index(0, 0);
+    QVERIFY(first.isValid());
+    const double reviewStart = first.data(RepetitionTableModel::StartRole).toDouble();
+
+    QSignalSpy written(r, &ReviewScreen::outputWritten);
+    const QString pdf = m_dir.filePath(QStringLiteral("times.pdf"));
+    r->writeReport(pdf);
+    QVERIFY(written.wait(60000));
+    const QString text = test::pdfText(pdf);
+    // The repetitions' table: "1  <start>  <end>  ...".
+    const QRegularExpressionMatch row =
+        QRegularExpression(QStringLiteral("\\n\\s*1\\s+(\\d+\\.\\d\\d)\\s+(\\d+\\.\\d\\d)\\s"))
+            .match(text);
+    QVERIFY2(row.hasMatch(), qPrintable(text.left(3000)));
+    QVERIFY2(
+        std::abs(row.captured(1).toDouble() - reviewStart) <= 0.0051,
+        qPrintable(QStringLiteral("report %1, review %2").arg(row.captured(1)).arg(reviewStart)));
+    QVERIFY2(text.simplified().contains(QStringLiteral("0:05.0 Pain")), qPrintable(text));
   }
 
   void writesTheReportAndEveryExport() {
