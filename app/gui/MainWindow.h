@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 
 #include "app/gui/common/Forms.h"
 
@@ -15,6 +16,8 @@ class ScreenStack;
 }
 
 namespace armtrack::gui {
+
+class HelpWindow;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -33,6 +36,11 @@ class MainWindow : public QMainWindow {
   void showStatus(TextFn text, int ms = 8000);
   /// The same with a text that stays as it is.
   void showStatus(const QString& text, int ms = 8000);
+  /// Help > User guide (F1): the guide in its own window, at the section about the screen shown
+  /// and with what to do on it (HelpWindow). Also emits userGuideRequested.
+  void showUserGuide();
+  /// The guide's window once F1 opened it, else nullptr.
+  HelpWindow* helpWindow() const;
 
  signals:
   void settingsRequested();
@@ -61,6 +69,7 @@ class MainWindow : public QMainWindow {
   QAction* m_quit;
   QAction* m_guide;
   QAction* m_about;
+  QPointer<HelpWindow> m_helpWindow;
 };
 
 }  // namespace armtrack::gui

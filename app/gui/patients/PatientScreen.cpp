@@ -266,6 +266,7 @@ void PatientScreen::show(const PatientOverview& o, bool again) {
                             new QStandardItem(tr("%L1 s").arg(item.restS, 0, 'f', 0)),
                             new QStandardItem(QLocale().toString(item.sessionsPerWeek))});
   }
+  m_programmeTable->resizeColumnsToContents();  // a narrow pane scrolls; no name is cut
   if (again) return;  // the chart, the sessions' table and the choices in them stay
   m_chart->setSessions(o.progress);
   m_sessions->setSessions(o.sessions);
