@@ -142,7 +142,14 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   buttons->addWidget(m_review);
   sessionsLayout->addLayout(buttons);
   mainLayout->addWidget(m_sessionsBox, 2);
-  split->addWidget(main);
+  // A low screen (1024x600) scrolls the chart and the sessions rather than squeeze the chart
+  // until its labels read "...".
+  m_sessionsBox->setMinimumHeight(220);
+  auto* mainScroll = new QScrollArea;
+  mainScroll->setWidget(main);
+  mainScroll->setWidgetResizable(true);
+  mainScroll->setFrameShape(QFrame::NoFrame);
+  split->addWidget(mainScroll);
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 3);
   layout->addWidget(split, 1);

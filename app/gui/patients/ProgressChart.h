@@ -15,6 +15,7 @@
 #include "core/metrics/NormativeRanges.h"
 
 class QChart;
+class QBoxLayout;
 class QChartView;
 class QComboBox;
 class QLabel;
@@ -50,6 +51,7 @@ class ProgressChart : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   using Motion = MotionDirection;
@@ -65,6 +67,8 @@ class ProgressChart : public QWidget {
   QChartView* m_view;
   QStandardItemModel* m_table;
   QTableView* m_tableView;
+  QBoxLayout* m_row = nullptr;  // chart and table: side by side, or stacked when narrow
+  static constexpr int kBesideWidth = 960;
   int m_points = 0;
   bool m_radians = false;
 };

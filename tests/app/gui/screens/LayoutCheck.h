@@ -10,6 +10,9 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QFontMetrics>
+#include <QGraphicsScene>
+#include <QGraphicsSimpleTextItem>
+#include <QGraphicsTextItem>
 #include <QGroupBox>
 #include <QHeaderView>
 #include <QLabel>
@@ -159,6 +162,18 @@ inline QStringList clippedTexts(QWidget* root, const QStringList& wholeTables = 
   }
   for (QChartView* v : root->findChildren<QChartView*>()) {
     if (!shownIn(v, root)) continue;
+    // Qt Charts shortens what does not fit (axis labels and titles, legend entries) to "...".
+    if (v->scene())
+      for (const QGraphicsItem* item : v->scene()->items()) {
+        if (!item->isVisible()) continue;
+        QString text;
+        if (const auto* t = dynamic_cast<const QGraphicsTextItem*>(item))
+          text = t->toPlainText();
+        else if (const auto* t = dynamic_cast<const QGraphicsSimpleTextItem*>(item))
+          text = t->text();
+        if (text.endsWith(QLatin1String("...")) || text.endsWith(QChar(0x2026)))
+          problems << QStringLiteral("%1: plot text cut to \"%2\"").arg(describe(v), text);
+      }
     if (v->height() < kMinPlotHeight)
       problems << QStringLiteral("%1: plot %2 px high (at least %3)")
                       .arg(describe(v))
