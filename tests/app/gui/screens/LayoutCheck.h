@@ -163,6 +163,7 @@ inline QStringList clippedTexts(QWidget* root, const QStringList& wholeTables = 
   for (QChartView* v : root->findChildren<QChartView*>()) {
     if (!shownIn(v, root)) continue;
     // Qt Charts shortens what does not fit (axis labels and titles, legend entries) to "...".
+    std::vector<std::pair<QRectF, QString>> labels;
     if (v->scene())
       for (const QGraphicsItem* item : v->scene()->items()) {
         if (!item->isVisible()) continue;
@@ -173,6 +174,15 @@ inline QStringList clippedTexts(QWidget* root, const QStringList& wholeTables = 
           text = t->text();
         if (text.endsWith(QLatin1String("...")) || text.endsWith(QChar(0x2026)))
           problems << QStringLiteral("%1: plot text cut to \"%2\"").arg(describe(v), text);
+        if (!text.isEmpty()) {
+          // The text's own box (a text item's bounding rect has a margin around the glyphs).
+          const QRectF box = item->sceneBoundingRect().adjusted(4, 4, -4, -4);
+          for (const auto& [other, otherText] : labels)
+            if (box.intersects(other))
+              problems << QStringLiteral("%1: plot texts \"%2\" and \"%3\" overlap")
+                              .arg(describe(v), text, otherText);
+          labels.emplace_back(box, text);
+        }
       }
     if (v->height() < kMinPlotHeight)
       problems << QStringLiteral("%1: plot %2 px high (at least %3)")

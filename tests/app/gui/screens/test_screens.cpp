@@ -8,6 +8,7 @@
 // the screen's section. Each screen is saved as screens-<screen>-<width>x<height>-<lang>.png in
 // the screenshot folder (the build's screenshots/ by default).
 #include <QApplication>
+#include <QDialog>
 #include <QFile>
 #include <QListWidget>
 #include <QRegularExpression>
@@ -191,6 +192,13 @@ class TestScreens : public QObject {
                                                   QString::fromLatin1(DemoAccounts::kPassword));
     QTRY_VERIFY_WITH_TIMEOUT(current<PatientListScreen>(), 20000);
     expectClean(m_app->window(), QStringLiteral("patients"));
+    // A dialog: its buttons in the user's language too (Qt's own Save and Cancel).
+    QVERIFY(armtrack::gui::test::activate(m_app->window()));
+    QTest::keySequence(screen(), QKeySequence::New);
+    QDialog* dialog = nullptr;
+    QTRY_VERIFY((dialog = screen()->findChild<QDialog*>()) && dialog->isVisible());
+    expectClean(dialog, QStringLiteral("patient-dialog"));
+    dialog->reject();
   }
 
   void newSession() {
