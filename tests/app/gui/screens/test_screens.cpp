@@ -1,7 +1,8 @@
 // The therapist's screens at the size of the screen the test runs on (ctest runs it at 1024x600
 // and 1920x1080, in English and in German: tests/app/gui/screens/CMakeLists.txt), in one
 // application on demo records: the demo's live session, the patient page, a session's review,
-// signing in again, the patient list and the new-session steps, and the home window's exercise.
+// signing in again, the patient list with the new-patient dialog, the new-session steps, and the
+// home window (its start and an exercise under way).
 // On each screen: no text is cut (LayoutCheck.h), no plot is lower than 120 px, the live angle
 // table shows all its columns; in German no text the screen shows is an English source string of
 // translations/armtrack_de.ts, nor one of Qt's own English buttons. F1 opens the user guide at
@@ -22,6 +23,12 @@
 #include <QXmlStreamReader>
 
 #include "app/gui/HelpWindow.h"
+#include "app/gui/home/ExerciseScreen.h"
+#include "app/gui/home/HomeCalibrationScreen.h"
+#include "app/gui/home/HomeController.h"
+#include "app/gui/home/HomeStartScreen.h"
+#include "app/gui/home/HomeWindow.h"
+#include "app/gui/home/SensorCheckScreen.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/newsession/NewSessionScreen.h"
 #include "app/gui/patients/PatientListScreen.h"
@@ -210,6 +217,43 @@ class TestScreens : public QObject {
     QTRY_COMPARE(wizard->currentPage(),
                  static_cast<QWizardPage*>(current<NewSessionScreen>()->devicesStep()));
     expectClean(m_app->window(), QStringLiteral("devices"));
+  }
+
+  // The patient's home window: its start and an exercise under way.
+  void homeExercise() {
+    QSettings().setValue(QStringLiteral("devices/default"),
+                         QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm+webcam")});
+    QSettings().setValue(QStringLiteral("home/access"), QStringLiteral("step"));
+    m_app->signOut();
+    QTRY_VERIFY(current<SignInScreen>());
+    emit current<SignInScreen>()->signInRequested(QString::fromLatin1(DemoAccounts::kHome),
+                                                  QString::fromLatin1(DemoAccounts::kPassword));
+    const auto home = [this] { return m_app->home() ? m_app->home()->window() : nullptr; };
+    QTRY_VERIFY_WITH_TIMEOUT(home() && home()->isVisible(), 20000);
+    home()->setGeometry(QGuiApplication::primaryScreen()->availableGeometry());
+    QVERIFY(armtrack::gui::test::activate(home()));
+    const auto at = [&]<class T>(T*) { return qobject_cast<T*>(home()->currentScreen()); };
+    QTRY_VERIFY(at(static_cast<home::HomeStartScreen*>(nullptr)));
+    expectClean(home(), QStringLiteral("home-start"));
+    const auto press = [&] {
+      QTest::keyClick(QApplication::focusWidget() ? QApplication::focusWidget() : home(),
+                      Qt::Key_Space);
+    };
+    press();  // Start
+    QTRY_VERIFY(at(static_cast<home::SensorCheckScreen*>(nullptr)));
+    press();  // Start the check
+    QTRY_COMPARE_WITH_TIMEOUT(at(static_cast<home::SensorCheckScreen*>(nullptr))->state(),
+                              home::SensorCheckScreen::State::Passed, 60000);
+    press();  // Go on
+    home::HomeCalibrationScreen* calibration = nullptr;
+    QTRY_VERIFY((calibration = at(static_cast<home::HomeCalibrationScreen*>(nullptr))));
+    emit calibration->done(std::nullopt);  // the calibration is another test's
+    home::ExerciseScreen* exercise = nullptr;
+    QTRY_VERIFY((exercise = at(static_cast<home::ExerciseScreen*>(nullptr))));
+    press();  // Start set 1
+    QTRY_COMPARE(exercise->phase(), home::ExerciseScreen::Phase::Set);
+    QTest::qWait(2000);
+    expectClean(home(), QStringLiteral("home-exercise"));
   }
 
   void cleanupTestCase() { m_app.reset(); }
