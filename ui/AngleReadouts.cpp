@@ -23,6 +23,7 @@ AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
     v->setSpacing(0);
     r.name = new QLabel(r.box);
     r.name->setWordWrap(true);
+    r.name->installEventFilter(this);  // its height follows its wrapping (eventFilter())
     r.value = new QLabel(formatDegrees(std::nan("")), r.box);
     r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     r.note = new QLabel(r.box);
@@ -135,6 +136,17 @@ void AngleReadouts::applyColours() {
     p.setColor(QPalette::WindowText, text);
     r.box->setPalette(p);
   }
+}
+
+bool AngleReadouts::eventFilter(QObject* watched, QEvent* event) {
+  // A name that wraps onto a second line (narrow boxes, large fonts, German) gets the height
+  // of both lines: an outer layout that ignores height-for-width would cut it to one.
+  if (event->type() == QEvent::Resize)
+    if (auto* label = qobject_cast<QLabel*>(watched)) {
+      const int need = label->heightForWidth(label->width());
+      if (need > 0 && need != label->minimumHeight()) label->setMinimumHeight(need);
+    }
+  return QWidget::eventFilter(watched, event);
 }
 
 void AngleReadouts::changeEvent(QEvent* event) {
