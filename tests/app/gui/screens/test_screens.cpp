@@ -23,6 +23,7 @@
 #include <QXmlStreamReader>
 
 #include "app/gui/HelpWindow.h"
+#include "app/gui/SettingsDialog.h"
 #include "app/gui/home/ExerciseScreen.h"
 #include "app/gui/home/HomeCalibrationScreen.h"
 #include "app/gui/home/HomeController.h"
@@ -30,6 +31,7 @@
 #include "app/gui/home/HomeWindow.h"
 #include "app/gui/home/SensorCheckScreen.h"
 #include "app/gui/live/LiveSessionScreen.h"
+#include "app/gui/newsession/DevicesPage.h"
 #include "app/gui/newsession/NewSessionScreen.h"
 #include "app/gui/patients/PatientListScreen.h"
 #include "app/gui/patients/PatientScreen.h"
@@ -96,11 +98,12 @@ class TestScreens : public QObject {
     QTest::qWait(200);  // layouts settle, the plots draw
     QStringList problems = armtrack::gui::test::clippedTexts(window, wholeTables);
     if (m_lang == QLatin1String("de")) {
-      static const QStringList qtButtons = {
-          QStringLiteral("Save"),   QStringLiteral("Cancel"), QStringLiteral("Next >"),
-          QStringLiteral("< Back"), QStringLiteral("OK"),     QStringLiteral("Yes"),
-          QStringLiteral("No"),     QStringLiteral("Finish"), QStringLiteral("Close"),
-          QStringLiteral("Apply"),  QStringLiteral("Help")};
+      // Qt's own buttons whose German differs ("OK" is German too).
+      static const QStringList qtButtons = {QStringLiteral("Save"),   QStringLiteral("Cancel"),
+                                            QStringLiteral("Next >"), QStringLiteral("< Back"),
+                                            QStringLiteral("Yes"),    QStringLiteral("No"),
+                                            QStringLiteral("Finish"), QStringLiteral("Close"),
+                                            QStringLiteral("Apply"),  QStringLiteral("Help")};
       for (const QString& text : armtrack::gui::test::shownTexts(window))
         if ((m_english.contains(text) && !m_data.contains(text)) || qtButtons.contains(text))
           problems << QStringLiteral("English: \"%1\"").arg(text);
@@ -217,6 +220,25 @@ class TestScreens : public QObject {
     QTRY_COMPARE(wizard->currentPage(),
                  static_cast<QWizardPage*>(current<NewSessionScreen>()->devicesStep()));
     expectClean(m_app->window(), QStringLiteral("devices"));
+    // The device check, then the sensors' calibration step (before it starts).
+    auto* devices = qobject_cast<armtrack::app::gui::DevicesPage*>(
+        current<NewSessionScreen>()->devicesStep()->page());
+    QVERIFY(devices);
+    devices->startCheck();
+    QTRY_VERIFY_WITH_TIMEOUT(devices->checkPassed(), 30000);
+    expectClean(m_app->window(), QStringLiteral("devices-checked"));
+    QTest::mouseClick(wizard->button(QWizard::NextButton), Qt::LeftButton);
+    QTRY_COMPARE(wizard->currentPage(),
+                 static_cast<QWizardPage*>(current<NewSessionScreen>()->calibrationStep()));
+    expectClean(m_app->window(), QStringLiteral("calibration"));
+  }
+
+  void settings() {
+    m_app->showSettings();
+    QDialog* dialog = nullptr;
+    QTRY_VERIFY((dialog = m_app->window()->findChild<SettingsDialog*>()) && dialog->isVisible());
+    expectClean(dialog, QStringLiteral("settings"));
+    dialog->reject();
   }
 
   // The patient's home window: its start and an exercise under way.
