@@ -11,6 +11,7 @@
 #include <QApplication>
 #include <QDialog>
 #include <QFile>
+#include <QLibraryInfo>
 #include <QListWidget>
 #include <QRegularExpression>
 #include <QScreen>
@@ -140,6 +141,11 @@ class TestScreens : public QObject {
   void initTestCase() {
     m_lang = qEnvironmentVariable("ARMTRACK_TEST_LANG", QStringLiteral("en"));
     m_english = englishSources();
+    if (m_lang != QLatin1String("en"))
+      QVERIFY2(QFile::exists(QLibraryInfo::path(QLibraryInfo::TranslationsPath) +
+                             QStringLiteral("/qtbase_%1.qm").arg(m_lang)),
+               "Qt's own translations are missing: install qt6-translations-l10n "
+               "(packaging/deps-debian12.sh)");
     QVERIFY(m_english.size() > 500);
     AppOptions o;
     o.demo = true;
