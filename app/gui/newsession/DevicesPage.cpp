@@ -11,11 +11,11 @@
 
 #include "app/plugins/PluginRegistry.h"
 #include "devices/api/Options.h"
-#include "ui/DeviceWords.h"
 #include "ui/AngleReadouts.h"
 #include "ui/AngleTrace.h"
 #include "ui/DeviceHealthPanel.h"
 #include "ui/DeviceOptionsForm.h"
+#include "ui/DeviceWords.h"
 
 namespace armtrack::app::gui {
 
