@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev nlohmann-json3-dev libopencv-dev libopencv-contrib-dev libceres-dev
   qt6-base-dev qt6-serialport-dev libqt6sql6-sqlite libfreenect-dev libfreenect-bin
-  qt6-tools-dev qt6-l10n-tools libxcb1-dev
+  qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libxcb1-dev
   libzstd-dev libsodium-dev libpq-dev
   fonts-dejavu-core fonts-wqy-microhei poppler-utils
   libqt6sql6-psql postgresql

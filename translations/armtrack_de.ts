@@ -981,6 +981,57 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     </message>
 </context>
 <context>
+    <name>armtrack::gui::HelpWindow</name>
+    <message>
+        <source>Choose where the records are kept and name the administrator; then press Create.</source>
+        <translation>Wählen Sie, wo die Daten liegen, und benennen Sie den Administrator; dann Anlegen drücken.</translation>
+    </message>
+    <message>
+        <source>Type your account name and password, then press Sign in.</source>
+        <translation>Kontonamen und Passwort eingeben, dann Anmelden drücken.</translation>
+    </message>
+    <message>
+        <source>Find a patient by name or code and open their page (Enter), or add a new patient (Ctrl+N).</source>
+        <translation>Einen Patienten nach Name oder Code suchen und seine Seite öffnen (Eingabe), oder einen neuen Patienten anlegen (Strg+N).</translation>
+    </message>
+    <message>
+        <source>See the patient&apos;s sessions and progress; start a new session (Ctrl+R) or open a session to review it (Enter).</source>
+        <translation>Sitzungen und Verlauf des Patienten ansehen; eine neue Sitzung beginnen (Strg+R) oder eine Sitzung zur Auswertung öffnen (Eingabe).</translation>
+    </message>
+    <message>
+        <source>Go through the steps: protocol and arm, the device check, the sensors&apos; calibration and the camera; Finish starts the session.</source>
+        <translation>Die Schritte durchgehen: Protokoll und Arm, Prüfung der Geräte, Kalibrierung der Sensoren und die Kamera; Fertigstellen startet die Sitzung.</translation>
+    </message>
+    <message>
+        <source>Watch the arm and the angles; press Record (Ctrl+R) to keep the movement and Stop (Ctrl+E) when the exercise is done.</source>
+        <translation>Arm und Winkel beobachten; Aufnehmen (Strg+R) speichert die Bewegung, Beenden (Strg+E), wenn die Übung fertig ist.</translation>
+    </message>
+    <message>
+        <source>Move through the session with the slider or by clicking a plot; compare, re-estimate or write a report.</source>
+        <translation>Mit dem Schieberegler oder einem Klick in ein Diagramm durch die Sitzung gehen; vergleichen, neu schätzen oder einen Bericht schreiben.</translation>
+    </message>
+    <message>
+        <source>The guide describes every screen; its contents are at the top.</source>
+        <translation>Das Handbuch beschreibt jeden Bildschirm; sein Inhalt steht am Anfang.</translation>
+    </message>
+    <message>
+        <source>ArmTrack user guide</source>
+        <translation>ArmTrack-Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>Benutzerhandbuch</translation>
+    </message>
+    <message>
+        <source>What to do here</source>
+        <translation>Was hier zu tun ist</translation>
+    </message>
+    <message>
+        <source>The guide is not yet translated into your language; it is shown in English.</source>
+        <translation>Das Handbuch ist noch nicht in Ihre Sprache übersetzt; es wird auf Englisch gezeigt.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::JobProgress</name>
     <message>
         <source>Cancel</source>
@@ -4571,8 +4622,8 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>%1 (°)</translation>
     </message>
     <message>
-        <source>±2σ</source>
-        <translation>±2σ</translation>
+        <source>likely range</source>
+        <translation>wahrscheinlicher Bereich</translation>
     </message>
 </context>
 <context>
@@ -4597,12 +4648,12 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Aktuelle Gelenkwinkel</translation>
     </message>
     <message>
-        <source>uncertain (%1)</source>
-        <translation>unsicher (%1)</translation>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
     </message>
     <message>
-        <source>uncertain</source>
-        <translation>unsicher</translation>
+        <source>The angle lies within this range of the value shown, with about 95 % probability.</source>
+        <translation>Der Winkel liegt mit etwa 95 % Wahrscheinlichkeit in diesem Bereich um den gezeigten Wert.</translation>
     </message>
 </context>
 <context>
@@ -4628,8 +4679,8 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <translation>Ziel</translation>
     </message>
     <message>
-        <source>±2σ</source>
-        <translation>±2σ</translation>
+        <source>Confidence</source>
+        <translation>Genauigkeit</translation>
     </message>
 </context>
 <context>
@@ -4653,6 +4704,22 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Forearm pronation</source>
         <translation>Pronation/Supination</translation>
+    </message>
+    <message>
+        <source>sensor lost</source>
+        <translation>Sensor verloren</translation>
+    </message>
+    <message>
+        <source>heading</source>
+        <translation>Richtung</translation>
+    </message>
+    <message>
+        <source>heading from the start pose</source>
+        <translation>Richtung nur aus der Anfangshaltung</translation>
+    </message>
+    <message>
+        <source>uncertain</source>
+        <translation>unsicher</translation>
     </message>
 </context>
 <context>
@@ -4777,6 +4844,53 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>(not set)</source>
         <translation>(nicht gesetzt)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceWords</name>
+    <message>
+        <source>disconnected</source>
+        <translation>getrennt</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>verbindet</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>sendet</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>Fehler</translation>
+    </message>
+    <message>
+        <source>simulated IMUs, Kinect and webcam in real time, with fault injection</source>
+        <translation>simulierte IMUs, Kinect und Webcam in Echtzeit, mit eingespielten Fehlern</translation>
+    </message>
+    <message>
+        <source>Kinect v1 (libfreenect): elbow and wrist markers in 3D, shoulder frame</source>
+        <translation>Kinect v1 (libfreenect): Ellenbogen- und Handgelenkmarker in 3D, im Schulter-Koordinatensystem</translation>
+    </message>
+    <message>
+        <source>do-it-yourself IMU (ESP32/Arduino) sending ArmTrack&apos;s $IMU text lines over a serial port or UDP</source>
+        <translation>selbstgebaute IMU (ESP32/Arduino), die ArmTracks $IMU-Textzeilen über eine serielle Schnittstelle oder UDP sendet</translation>
+    </message>
+    <message>
+        <source>x-io NGIMU over Wi-Fi (OSC over UDP, /sensors messages)</source>
+        <translation>x-io NGIMU über WLAN (OSC über UDP, /sensors-Nachrichten)</translation>
+    </message>
+    <message>
+        <source>Shimmer3 IMU (LogAndStream firmware) over its Bluetooth serial port</source>
+        <translation>Shimmer3-IMU (Firmware LogAndStream) über ihre serielle Bluetooth-Schnittstelle</translation>
+    </message>
+    <message>
+        <source>elbow and wrist positions from an external body tracker (Kinect SDK, pose estimator), JSON over UDP</source>
+        <translation>Ellenbogen- und Handgelenkpositionen von einem externen Körper-Tracker (Kinect SDK, Posenschätzer), JSON über UDP</translation>
+    </message>
+    <message>
+        <source>wrist and elbow marker pixels from a camera or a video file (OpenCV)</source>
+        <translation>Pixel der Handgelenk- und Ellenbogenmarker aus einer Kamera oder einer Videodatei (OpenCV)</translation>
     </message>
 </context>
 <context>

@@ -981,6 +981,57 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     </message>
 </context>
 <context>
+    <name>armtrack::gui::HelpWindow</name>
+    <message>
+        <source>Choose where the records are kept and name the administrator; then press Create.</source>
+        <translation>Elija dónde se guardan los registros y nombre al administrador; luego pulse Crear.</translation>
+    </message>
+    <message>
+        <source>Type your account name and password, then press Sign in.</source>
+        <translation>Escriba su nombre de cuenta y su contraseña y pulse Iniciar sesión.</translation>
+    </message>
+    <message>
+        <source>Find a patient by name or code and open their page (Enter), or add a new patient (Ctrl+N).</source>
+        <translation>Busque un paciente por nombre o código y abra su página (Intro), o añada un paciente nuevo (Ctrl+N).</translation>
+    </message>
+    <message>
+        <source>See the patient&apos;s sessions and progress; start a new session (Ctrl+R) or open a session to review it (Enter).</source>
+        <translation>Vea las sesiones y el progreso del paciente; inicie una sesión nueva (Ctrl+R) o abra una sesión para revisarla (Intro).</translation>
+    </message>
+    <message>
+        <source>Go through the steps: protocol and arm, the device check, the sensors&apos; calibration and the camera; Finish starts the session.</source>
+        <translation>Siga los pasos: protocolo y brazo, la comprobación de los dispositivos, la calibración de los sensores y la cámara; Finalizar inicia la sesión.</translation>
+    </message>
+    <message>
+        <source>Watch the arm and the angles; press Record (Ctrl+R) to keep the movement and Stop (Ctrl+E) when the exercise is done.</source>
+        <translation>Observe el brazo y los ángulos; pulse Grabar (Ctrl+R) para guardar el movimiento y Detener (Ctrl+E) al terminar el ejercicio.</translation>
+    </message>
+    <message>
+        <source>Move through the session with the slider or by clicking a plot; compare, re-estimate or write a report.</source>
+        <translation>Recorra la sesión con el control deslizante o haciendo clic en un gráfico; compare, vuelva a estimar o escriba un informe.</translation>
+    </message>
+    <message>
+        <source>The guide describes every screen; its contents are at the top.</source>
+        <translation>La guía describe cada pantalla; su contenido está al principio.</translation>
+    </message>
+    <message>
+        <source>ArmTrack user guide</source>
+        <translation>Guía de usuario de ArmTrack</translation>
+    </message>
+    <message>
+        <source>User guide</source>
+        <translation>Guía de usuario</translation>
+    </message>
+    <message>
+        <source>What to do here</source>
+        <translation>Qué hacer aquí</translation>
+    </message>
+    <message>
+        <source>The guide is not yet translated into your language; it is shown in English.</source>
+        <translation>La guía aún no está traducida a su idioma; se muestra en inglés.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::JobProgress</name>
     <message>
         <source>Cancel</source>
@@ -4571,8 +4622,8 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>%1 (°)</translation>
     </message>
     <message>
-        <source>±2σ</source>
-        <translation>±2σ</translation>
+        <source>likely range</source>
+        <translation>rango probable</translation>
     </message>
 </context>
 <context>
@@ -4597,12 +4648,12 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Ángulos articulares actuales</translation>
     </message>
     <message>
-        <source>uncertain (%1)</source>
-        <translation>incierto (%1)</translation>
+        <source>%1, %2</source>
+        <translation>%1, %2</translation>
     </message>
     <message>
-        <source>uncertain</source>
-        <translation>incierto</translation>
+        <source>The angle lies within this range of the value shown, with about 95 % probability.</source>
+        <translation>El ángulo está dentro de este margen del valor mostrado con una probabilidad de aproximadamente el 95 %.</translation>
     </message>
 </context>
 <context>
@@ -4628,8 +4679,8 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <translation>Objetivo</translation>
     </message>
     <message>
-        <source>±2σ</source>
-        <translation>±2σ</translation>
+        <source>Confidence</source>
+        <translation>Confianza</translation>
     </message>
 </context>
 <context>
@@ -4653,6 +4704,22 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Forearm pronation</source>
         <translation>Pronosupinación</translation>
+    </message>
+    <message>
+        <source>sensor lost</source>
+        <translation>sensor perdido</translation>
+    </message>
+    <message>
+        <source>heading</source>
+        <translation>rumbo</translation>
+    </message>
+    <message>
+        <source>heading from the start pose</source>
+        <translation>rumbo solo de la postura inicial</translation>
+    </message>
+    <message>
+        <source>uncertain</source>
+        <translation>incierto</translation>
     </message>
 </context>
 <context>
@@ -4777,6 +4844,53 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>(not set)</source>
         <translation>(sin definir)</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::DeviceWords</name>
+    <message>
+        <source>disconnected</source>
+        <translation>desconectado</translation>
+    </message>
+    <message>
+        <source>connecting</source>
+        <translation>conectando</translation>
+    </message>
+    <message>
+        <source>streaming</source>
+        <translation>transmitiendo</translation>
+    </message>
+    <message>
+        <source>error</source>
+        <translation>error</translation>
+    </message>
+    <message>
+        <source>simulated IMUs, Kinect and webcam in real time, with fault injection</source>
+        <translation>IMU, Kinect y webcam simulados en tiempo real, con fallos inyectados</translation>
+    </message>
+    <message>
+        <source>Kinect v1 (libfreenect): elbow and wrist markers in 3D, shoulder frame</source>
+        <translation>Kinect v1 (libfreenect): marcadores de codo y muñeca en 3D, en el sistema del hombro</translation>
+    </message>
+    <message>
+        <source>do-it-yourself IMU (ESP32/Arduino) sending ArmTrack&apos;s $IMU text lines over a serial port or UDP</source>
+        <translation>IMU casera (ESP32/Arduino) que envía las líneas de texto $IMU de ArmTrack por un puerto serie o UDP</translation>
+    </message>
+    <message>
+        <source>x-io NGIMU over Wi-Fi (OSC over UDP, /sensors messages)</source>
+        <translation>x-io NGIMU por wifi (OSC sobre UDP, mensajes /sensors)</translation>
+    </message>
+    <message>
+        <source>Shimmer3 IMU (LogAndStream firmware) over its Bluetooth serial port</source>
+        <translation>IMU Shimmer3 (firmware LogAndStream) por su puerto serie Bluetooth</translation>
+    </message>
+    <message>
+        <source>elbow and wrist positions from an external body tracker (Kinect SDK, pose estimator), JSON over UDP</source>
+        <translation>posiciones de codo y muñeca de un seguidor corporal externo (Kinect SDK, estimador de pose), JSON sobre UDP</translation>
+    </message>
+    <message>
+        <source>wrist and elbow marker pixels from a camera or a video file (OpenCV)</source>
+        <translation>píxeles de los marcadores de muñeca y codo de una cámara o un archivo de vídeo (OpenCV)</translation>
     </message>
 </context>
 <context>

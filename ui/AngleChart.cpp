@@ -118,7 +118,7 @@ void AngleChart::retranslateUi() {
   setAccessibleDescription(
       tr("Plot of %1 over time in degrees; the table beside it holds the same numbers").arg(name));
   m_target->setName(tr("Target"));
-  m_band->setName(tr("±2σ"));
+  m_band->setName(tr("likely range"));
   m_overlay->setName(tr("Compared session"));
   m_line->setName(name);
 }

@@ -3,6 +3,7 @@
 #include <QEvent>
 #include <QFontMetrics>
 #include <QHeaderView>
+#include <QScrollArea>
 #include <QScrollBar>
 #include <QSplitter>
 #include <QTableView>
@@ -27,13 +28,19 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
   m_splitter->setChildrenCollapsible(true);
   layout->addWidget(m_splitter);
 
-  auto* plots = new QWidget(m_splitter);
+  // The plots scroll when the panel is too low for each to be at least kMinPlotHeight high.
+  m_scroll = new QScrollArea(m_splitter);
+  m_scroll->setWidgetResizable(true);
+  m_scroll->setFrameShape(QFrame::NoFrame);
+  m_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  auto* plots = new QWidget(m_scroll);
+  m_scroll->setWidget(plots);
   auto* plotLayout = new QVBoxLayout(plots);
   plotLayout->setContentsMargins(0, 0, 0, 0);
   plotLayout->setSpacing(0);
   for (int a = 0; a < kAngleCount; ++a) {
     auto* c = new AngleChart(a, plots);
-    c->setMinimumHeight(0);
+    c->setMinimumHeight(kMinPlotHeight);
     c->setIncremental(m_mode == Mode::Live);
     connect(c, &AngleChart::clicked, this, [this](double t) {
       if (m_mode == Mode::Review) emit cursorRequested(t);
@@ -148,6 +155,7 @@ void AnglePlotPanel::clearTarget() {
 void AnglePlotPanel::showTargetColumn(bool show) {
   if (m_tableView->isColumnHidden(AngleTableModel::Target) != show) return;
   m_tableView->setColumnHidden(AngleTableModel::Target, !show);
+  m_laidOutFor = -1;
   m_sized = false;  // the table's width changed
   sizeTable();
 }
@@ -229,6 +237,7 @@ void AnglePlotPanel::redraw(bool table) {
   else if (!rows.empty())
     current = &rows.back();
   m_table->setValues(current, lo, hi);
+  emit tableUpdated(current);
 }
 
 void AnglePlotPanel::changeEvent(QEvent* event) {
@@ -247,45 +256,69 @@ void AnglePlotPanel::showEvent(QShowEvent* event) {
 }
 
 void AnglePlotPanel::sizeTable() {
-  if (m_sized || !isVisible() || width() < 300) return;
-  // The table as wide as its columns (at most 55 % of the panel), the plots the rest.
-  m_sized = true;
-  m_tableView->resizeColumnsToContents();
-  // The table is sized once, often before the first values arrive: give each number column
-  // room for the widest value it can show, so "-179.9°" is never cut to "-1…".
+  if (!isVisible() || width() < 200) return;
   const QFontMetrics metrics(m_tableView->font());
   const int padding = metrics.horizontalAdvance(QStringLiteral("M"));
-  const QString widestAngle = formatDegrees(-179.9);
-  int numbers = 0;
-  for (int c = AngleTableModel::Value; c < AngleTableModel::ColumnCount; ++c) {
-    const QString widest =
-        c == AngleTableModel::Uncertainty ? QStringLiteral("\u00b1") + widestAngle
-        : c == AngleTableModel::Target
-            ? QStringLiteral("%1 \u2013 %2").arg(formatDegrees(-180, 0), formatDegrees(180, 0))
-            : widestAngle;
-    m_tableView->setColumnWidth(
-        c, std::max(m_tableView->columnWidth(c), metrics.horizontalAdvance(widest) + padding));
-    if (!m_tableView->isColumnHidden(c)) numbers += m_tableView->columnWidth(c);
-  }
-  const int chrome =
-      m_tableView->verticalScrollBar()->sizeHint().width() + 2 * m_tableView->frameWidth();
-  const int cap = width() * 11 / 20;
-  // Too wide: the names take two lines rather than push the numbers out of view.
-  if (numbers + m_tableView->columnWidth(AngleTableModel::Name) + chrome > cap) {
-    int twoLines = 0;  // the narrowest width that holds every name in two lines
+  if (!m_sized) {
+    m_sized = true;
+    m_laidOutFor = -1;
+    m_tableView->resizeColumnsToContents();
+    // The table is sized once, often before the first values arrive: give each number column
+    // room for the widest value it can show, so "-179.9°" is never cut to "-1…".
+    const QString widestAngle = formatDegrees(-179.9);
+    m_numbersWidth = 0;
+    for (int c = AngleTableModel::Value; c < AngleTableModel::ColumnCount; ++c) {
+      QStringList widest{widestAngle};
+      if (c == AngleTableModel::Uncertainty) {
+        widest = {confidenceText(179.9), doubtText(AngleDoubt::SensorLost, true)};
+        for (AngleDoubt d : {AngleDoubt::Heading, AngleDoubt::Uncertain})
+          widest << QStringLiteral("%1 %2").arg(confidenceText(49.9), doubtText(d, true));
+      } else if (c == AngleTableModel::Target) {
+        widest = {
+            QStringLiteral("%1 \u2013 %2").arg(formatDegrees(-180, 0), formatDegrees(180, 0))};
+      }
+      int need = m_tableView->columnWidth(c);
+      for (const QString& w : widest) need = std::max(need, metrics.horizontalAdvance(w) + padding);
+      m_tableView->setColumnWidth(c, need);
+      if (!m_tableView->isColumnHidden(c)) m_numbersWidth += m_tableView->columnWidth(c);
+    }
+    m_nameWidth = m_tableView->columnWidth(AngleTableModel::Name);
+    m_twoLinesWidth = 0;  // the narrowest width that holds every name in two lines
     for (int a = 0; a < kAngleCount; ++a) {
       const QStringList words = angleDisplayName(a).split(QLatin1Char(' '));
       int best = metrics.horizontalAdvance(words.join(QLatin1Char(' ')));
       for (qsizetype k = 1; k < words.size(); ++k)
         best = std::min(best, std::max(metrics.horizontalAdvance(words.mid(0, k).join(' ')),
                                        metrics.horizontalAdvance(words.mid(k).join(' '))));
-      twoLines = std::max(twoLines, best);
+      m_twoLinesWidth = std::max(m_twoLinesWidth, best + 2 * padding);
     }
-    m_tableView->setColumnWidth(AngleTableModel::Name,
-                                std::max(cap - numbers - chrome, twoLines + 2 * padding));
   }
-  const int table = std::min(m_tableView->horizontalHeader()->length() + chrome, cap);
-  m_splitter->setSizes({width() - table, table});
+  if (m_laidOutFor == width()) return;
+  m_laidOutFor = width();
+  const int chrome =
+      m_tableView->verticalScrollBar()->sizeHint().width() + 2 * m_tableView->frameWidth();
+  // Beside the plots, the table takes at most 55 % of the panel, its names in two lines if
+  // need be; narrower than that, it goes below the plots, as wide as the panel, so that every
+  // column stays in view.
+  const int cap = width() * 11 / 20;
+  int name = m_nameWidth;
+  if (m_numbersWidth + name + chrome > cap)
+    name = std::max(cap - m_numbersWidth - chrome, m_twoLinesWidth);
+  const bool beside = m_numbersWidth + name + chrome <= cap;
+  if (!beside)
+    name = std::max(m_twoLinesWidth, std::min(m_nameWidth, width() - m_numbersWidth - chrome));
+  m_tableView->setColumnWidth(AngleTableModel::Name, name);
+  m_tableView->resizeRowsToContents();
+  if (beside) {
+    m_splitter->setOrientation(Qt::Horizontal);
+    const int table = std::min(m_tableView->horizontalHeader()->length() + chrome, cap);
+    m_splitter->setSizes({width() - table, table});
+  } else {
+    m_splitter->setOrientation(Qt::Vertical);
+    const int table = m_tableView->horizontalHeader()->sizeHint().height() +
+                      m_tableView->verticalHeader()->length() + 2 * m_tableView->frameWidth();
+    m_splitter->setSizes({std::max(height() - table, kMinPlotHeight), table});
+  }
 }
 
 void AnglePlotPanel::resizeEvent(QResizeEvent* event) {

@@ -15,6 +15,7 @@
 #include "ui/AngleTableModel.h"
 #include "ui/AngleTrace.h"
 
+class QScrollArea;
 class QTableView;
 class QSplitter;
 
@@ -60,6 +61,8 @@ class AnglePlotPanel : public QWidget {
 
   /// Live, the table's figures change at most this many times a second (refreshIfChanged()).
   static constexpr double kTableHz = 5.0;
+  /// Each plot is at least this high (px); when the panel is lower, the plots scroll.
+  static constexpr int kMinPlotHeight = 120;
   /// At most this many redraws a second (default 30); 0 redraws only on refresh().
   void setRefreshRate(double hz);
 
@@ -85,6 +88,9 @@ class AnglePlotPanel : public QWidget {
  signals:
   /// Review: the user clicked a time on a plot.
   void cursorRequested(double t);
+  /// The table now shows current (nullptr: none): a view that shows the same angles elsewhere
+  /// (the live screen's big numbers) follows it, so that both always show the same sample.
+  void tableUpdated(const armtrack::ui::AngleSample* current);
 
  protected:
   void changeEvent(QEvent* event) override;
@@ -105,6 +111,7 @@ class AnglePlotPanel : public QWidget {
   std::optional<AngleTrace> m_overlay;
   std::array<AngleChart*, kAngleCount> m_charts{};
   QSplitter* m_splitter = nullptr;
+  QScrollArea* m_scroll = nullptr;
   QTableView* m_tableView = nullptr;
   AngleTableModel* m_table = nullptr;
   ChartDecor m_decor;
@@ -116,6 +123,8 @@ class AnglePlotPanel : public QWidget {
   double m_t0 = 0.0, m_t1 = 20.0;
   std::uint64_t m_redraws = 0;
   bool m_sized = false;
+  int m_laidOutFor = -1;  // the width the table was last laid out for
+  int m_numbersWidth = 0, m_nameWidth = 0, m_twoLinesWidth = 0;
 };
 
 }  // namespace armtrack::ui

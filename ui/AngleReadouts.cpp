@@ -23,6 +23,7 @@ AngleReadouts::AngleReadouts(QWidget* parent) : QWidget(parent) {
     v->setSpacing(0);
     r.name = new QLabel(r.box);
     r.name->setWordWrap(true);
+    r.name->installEventFilter(this);  // its height follows its wrapping (eventFilter())
     r.value = new QLabel(formatDegrees(std::nan("")), r.box);
     r.value->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     r.note = new QLabel(r.box);
@@ -81,22 +82,31 @@ QString AngleReadouts::valueText(int angle) const {
   return m_readouts[static_cast<std::size_t>(angle)].value->text();
 }
 
+QString AngleReadouts::noteText(int angle) const {
+  return m_readouts[static_cast<std::size_t>(angle)].note->text();
+}
+
 void AngleReadouts::refresh() {
   m_dirty = false;
   for (std::size_t a = 0; a < kAngleCount; ++a) {
     Readout& r = m_readouts[a];
     const double v = m_sample ? m_sample->deg[a] : std::nan("");
-    const double twoSigma = m_sample ? 2.0 * m_sample->sigmaDeg[a] : 0.0;
-    const bool uncertain =
-        std::isfinite(v) && (!std::isfinite(twoSigma) || twoSigma > m_uncertainAbove);
+    // In doubt: the confidence and the reason in words (not by colour alone).
+    const AngleDoubt doubt = m_sample && std::isfinite(v)
+                                 ? angleDoubt(*m_sample, static_cast<int>(a), m_uncertainAbove)
+                                 : AngleDoubt::None;
+    const bool uncertain = doubt != AngleDoubt::None;
     r.value->setText(formatDegrees(v, 0));
     QString note;
     if (std::isfinite(v)) {
-      note = QStringLiteral("\u00b1") + formatDegrees(twoSigma, 0);
-      if (uncertain) note = tr("uncertain (%1)").arg(note);
+      note = confidenceText(m_sample->sigmaDeg[a]);
+      if (uncertain) note = tr("%1, %2").arg(note, doubtText(doubt));
     }
     r.note->setText(note);
-    r.value->setAccessibleDescription(uncertain ? tr("uncertain") : QString());
+    r.note->setToolTip(
+        tr("The angle lies within this range of the value shown, with about 95 % "
+           "probability."));
+    r.value->setAccessibleDescription(uncertain ? doubtText(doubt) : QString());
     if (uncertain != m_uncertain[a]) {
       m_uncertain[a] = uncertain;
       applyColours();
@@ -120,12 +130,23 @@ void AngleReadouts::applyColours() {
     p.setColor(QPalette::Window, base.color(QPalette::Base));
     QColor text = base.color(QPalette::WindowText);
     if (m_uncertain[a]) {
-      text = base.color(QPalette::PlaceholderText);
+      text = dark ? QColor(0xff, 0xe0, 0xa0) : QColor(0x5a, 0x3a, 0x00);
       p.setColor(QPalette::Window, dark ? QColor(0x4a, 0x3b, 0x12) : QColor(0xff, 0xf1, 0xc7));
     }
     p.setColor(QPalette::WindowText, text);
     r.box->setPalette(p);
   }
+}
+
+bool AngleReadouts::eventFilter(QObject* watched, QEvent* event) {
+  // A name that wraps onto a second line (narrow boxes, large fonts, German) gets the height
+  // of both lines: an outer layout that ignores height-for-width would cut it to one.
+  if (event->type() == QEvent::Resize)
+    if (auto* label = qobject_cast<QLabel*>(watched)) {
+      const int need = label->heightForWidth(label->width());
+      if (need > 0 && need != label->minimumHeight()) label->setMinimumHeight(need);
+    }
+  return QWidget::eventFilter(watched, event);
 }
 
 void AngleReadouts::changeEvent(QEvent* event) {

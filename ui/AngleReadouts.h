@@ -1,6 +1,7 @@
-// Large readouts of the current clinical angles, for reading across the room. An angle whose
-// uncertainty is large (e.g. the shoulder's heading without optical data) is greyed and marked
-// "uncertain" in words, so the mark does not rest on colour alone.
+// Large readouts of the current clinical angles, for reading across the room, each with its
+// confidence ("±3°"). An angle not to be trusted (a wide confidence, a lost sensor, the
+// shoulder's heading resting on the start pose without a camera) is shown on amber with the
+// reason in words, so the mark does not rest on colour alone.
 #pragma once
 
 #include <QTimer>
@@ -22,7 +23,8 @@ class AngleReadouts : public QWidget {
   /// The newest values; shown at the next refresh (at most refreshRate() a second, default 10,
   /// so the digits can be read). nullptr clears them.
   void setSample(const AngleSample* sample);
-  /// An angle is marked uncertain when its 2-sigma half-width exceeds this (deg, default 10).
+  /// An angle is marked uncertain when its confidence (2-sigma half-width) exceeds this (deg,
+  /// default 10) or its sensor is lost (angleDoubt()).
   void setUncertainAboveDeg(double deg) { m_uncertainAbove = deg; }
   /// 0: only refresh() or refreshIfChanged() redraw.
   void setRefreshRate(double hz);
@@ -34,6 +36,8 @@ class AngleReadouts : public QWidget {
 
   /// For tests: the text shown and whether the angle is marked uncertain.
   QString valueText(int angle) const;
+  /// The line under the value: its confidence and, in doubt, why.
+  QString noteText(int angle) const;
   bool isUncertain(int angle) const { return m_uncertain[static_cast<std::size_t>(angle)]; }
 
  public slots:
@@ -41,6 +45,7 @@ class AngleReadouts : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  bool eventFilter(QObject* watched, QEvent* event) override;
 
  private:
   struct Readout {

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include <QColor>
 #include <QCoreApplication>
 
 #include "ui/Retranslate.h"
@@ -28,6 +29,38 @@ QString formatDegrees(double deg, int decimals) {
   return QStringLiteral("%L1\u00b0").arg(deg, 0, 'f', decimals);
 }
 
+QString confidenceText(double sigmaDeg) {
+  if (!std::isfinite(sigmaDeg)) return QStringLiteral("\u2013");
+  return QStringLiteral("\u00b1") + formatDegrees(2.0 * sigmaDeg, 0);
+}
+
+AngleDoubt angleDoubt(const AngleSample& s, int angle, double limitDeg) {
+  if (angle < 0 || angle >= kAngleCount) return AngleDoubt::None;
+  const auto a = static_cast<std::size_t>(angle);
+  if (!std::isfinite(s.deg[a]) || s.predicted) return AngleDoubt::SensorLost;
+  const double twoSigma = 2.0 * s.sigmaDeg[a];
+  if (std::isfinite(twoSigma) && twoSigma <= limitDeg) return AngleDoubt::None;
+  // The three shoulder angles hang on the arm's heading about the vertical.
+  if (s.headingFromStartPose && angle <= 2) return AngleDoubt::Heading;
+  return AngleDoubt::Uncertain;
+}
+
+QString doubtText(AngleDoubt doubt, bool shortForm) {
+  switch (doubt) {
+    case AngleDoubt::None:
+      return {};
+    case AngleDoubt::SensorLost:
+      return QCoreApplication::translate("armtrack::ui::Angles", "sensor lost");
+    case AngleDoubt::Heading:
+      return shortForm ? QCoreApplication::translate("armtrack::ui::Angles", "heading")
+                       : QCoreApplication::translate("armtrack::ui::Angles",
+                                                     "heading from the start pose");
+    case AngleDoubt::Uncertain:
+      return QCoreApplication::translate("armtrack::ui::Angles", "uncertain");
+  }
+  return {};
+}
+
 AngleTableModel::AngleTableModel(QObject* parent) : QAbstractTableModel(parent) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
   m_value.fill(nan);
@@ -49,6 +82,12 @@ QVariant AngleTableModel::data(const QModelIndex& index, int role) const {
   const auto r = static_cast<std::size_t>(index.row());
   if (role == Qt::TextAlignmentRole && index.column() != Name)
     return QVariant::fromValue(Qt::AlignRight | Qt::AlignVCenter);
+  // An angle in doubt: its value and confidence on amber, the reason in the confidence cell.
+  const bool doubted =
+      m_doubt[r] != AngleDoubt::None && (index.column() == Value || index.column() == Uncertainty);
+  if (role == Qt::BackgroundRole && doubted) return QColor(0xff, 0xd5, 0x80);
+  if (role == Qt::ForegroundRole && doubted) return QColor(Qt::black);
+  if (role == Qt::ToolTipRole && doubted) return doubtText(m_doubt[r]);
   if (role != Qt::DisplayRole && role != Qt::AccessibleTextRole) return {};
   switch (index.column()) {
     case Name:
@@ -56,8 +95,10 @@ QVariant AngleTableModel::data(const QModelIndex& index, int role) const {
     case Value:
       return formatDegrees(m_value[r]);
     case Uncertainty:
-      return std::isfinite(m_sigma[r]) ? QStringLiteral("\u00b1") + formatDegrees(2 * m_sigma[r])
-                                       : QStringLiteral("\u2013");
+      if (m_doubt[r] == AngleDoubt::SensorLost) return doubtText(m_doubt[r], true);
+      if (m_doubt[r] != AngleDoubt::None)
+        return QStringLiteral("%1 %2").arg(confidenceText(m_sigma[r]), doubtText(m_doubt[r], true));
+      return confidenceText(m_sigma[r]);
     case Minimum:
       return formatDegrees(m_min[r]);
     case Maximum:
@@ -79,7 +120,7 @@ QVariant AngleTableModel::headerData(int section, Qt::Orientation orientation, i
     case Value:
       return tr("Now");
     case Uncertainty:
-      return tr("±2σ");
+      return tr("Confidence");
     case Minimum:
       return tr("Min");
     case Maximum:
@@ -103,6 +144,8 @@ void AngleTableModel::setValues(const AngleSample* current,
   for (std::size_t i = 0; i < kAngleCount; ++i) {
     m_value[i] = current ? current->deg[i] : nan;
     m_sigma[i] = current ? current->sigmaDeg[i] : nan;
+    m_doubt[i] =
+        current ? angleDoubt(*current, static_cast<int>(i), m_doubtAbove) : AngleDoubt::None;
   }
   m_min = minDeg;
   m_max = maxDeg;

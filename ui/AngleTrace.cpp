@@ -42,7 +42,10 @@ AngleSample angleSample(double t, const JointVector& thRad, const JointVector& t
 }
 
 AngleSample angleSample(const session::EstimateRow& row) {
-  return angleSample(row.t, row.th, row.thStd);
+  AngleSample s = angleSample(row.t, row.th, row.thStd);
+  s.headingFromStartPose = row.headingFromStartPoseOnly;
+  s.predicted = row.status == UpdateResult::Predicted;
+  return s;
 }
 
 std::size_t AngleTrace::append(const std::vector<AngleSample>& rows) {

@@ -26,6 +26,10 @@ struct AngleSample {
   double t = 0.0;                              ///< s
   std::array<double, kAngleCount> deg{};       ///< degrees; NaN where unknown
   std::array<double, kAngleCount> sigmaDeg{};  ///< 1-sigma (deg); 0 when not known
+  /// No camera or Kinect for a while: the shoulder's heading rests on the start pose alone.
+  bool headingFromStartPose = false;
+  /// No new IMU data: the estimate is the filter's prediction (a sensor is lost).
+  bool predicted = false;
 };
 
 /// An estimate as clinical angles (degrees) with its uncertainty.

@@ -379,10 +379,12 @@ void ArmScene::resetCamera() {
   CameraView v;
   // In front of the patient and a little to the arm's side, looking at the space the arm
   // reaches (about 0.45 m round the shoulder), the trunk at the side.
-  v.focalPoint = -m->up * 0.1 - med * 0.08 + f * 0.1;
+  // The view takes in the head (its top 0.3 m above the shoulder) and the trunk down to the
+  // hips, whatever the pane's shape (prepareFrame()).
+  v.focalPoint = -m->up * 0.08 - med * 0.08 + f * 0.1;
   v.position = v.focalPoint + f * 1.3 - med * 0.65 + m->up * 0.4;
   v.viewUp = m->up;
-  v.viewAngleDeg = 30.0;
+  v.viewAngleDeg = 38.0;
   setCamera(v);
 }
 
@@ -436,6 +438,11 @@ void ArmScene::zoom(double factor) {
 }
 
 void ArmScene::prepareFrame() {
+  // The view angle spans the pane's shorter side: a narrow, tall pane (the review's) sees as
+  // much across as a wide one sees up and down, instead of cutting the trunk at its sides.
+  const int* size = m->renderer->GetSize();
+  if (size && size[0] > 0 && size[1] > 0)
+    m->renderer->GetActiveCamera()->SetUseHorizontalViewAngle(size[0] < size[1]);
   m->renderer->ResetCameraClippingRange();
 }
 

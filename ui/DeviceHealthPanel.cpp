@@ -1,6 +1,7 @@
 #include "ui/DeviceHealthPanel.h"
 
 #include <QEvent>
+#include <QFontMetrics>
 #include <QGuiApplication>
 #include <QHeaderView>
 #include <QIcon>
@@ -264,7 +265,9 @@ DeviceHealthPanel::DeviceHealthPanel(QWidget* parent)
   m_view->verticalHeader()->hide();
   // Sized to the contents when the rows change, not at every update (that measures every cell).
   m_view->horizontalHeader()->setSectionResizeMode(QHeaderView::Interactive);
-  m_view->horizontalHeader()->setSectionResizeMode(DeviceHealthModel::Status, QHeaderView::Stretch);
+  // Status too: it grows to its longest state (below), and a narrow panel scrolls sideways
+  // rather than cutting "streaming" to "strea".
+  m_view->horizontalHeader()->setStretchLastSection(true);
   m_view->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_view->setSelectionBehavior(QAbstractItemView::SelectRows);
   m_view->setTabKeyNavigation(false);
@@ -306,6 +309,16 @@ void DeviceHealthPanel::publish() {
   const bool resized = m_tracker.rows().size() != static_cast<std::size_t>(m_model->rowCount());
   m_model->setRows(m_tracker.rows());
   if (resized) m_view->resizeColumnsToContents();
+  // A state longer than any before ("reconnecting: ..."): the column widens to it.
+  const QFontMetrics metrics(m_view->font());
+  const int padding = metrics.horizontalAdvance(QStringLiteral("M"));
+  int status = m_view->columnWidth(DeviceHealthModel::Status);
+  for (int r = 0; r < m_model->rowCount(); ++r)
+    status = std::max(status, metrics.horizontalAdvance(
+                                  m_model->index(r, DeviceHealthModel::Status).data().toString()) +
+                                  padding);
+  if (status != m_view->columnWidth(DeviceHealthModel::Status))
+    m_view->setColumnWidth(DeviceHealthModel::Status, status);
   const QString summary = m_tracker.summary();
   const bool ok = m_tracker.allOk();
   m_summary->setText(summary);

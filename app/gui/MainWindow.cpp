@@ -8,6 +8,7 @@
 #include <QMessageBox>
 #include <QStatusBar>
 
+#include "app/gui/HelpWindow.h"
 #include "app/gui/common/Forms.h"
 #include "ui/ScreenStack.h"
 
@@ -16,8 +17,8 @@ namespace armtrack::gui {
 MainWindow::MainWindow(QWidget* parent)
     : QMainWindow(parent), m_stack(new ui::ScreenStack(this)), m_who(new QLabel(this)) {
   setCentralWidget(m_stack);
-  setMinimumSize(900, 600);
-  resize(1200, 760);  // fits a 1280x800 screen; a window manager may maximise it
+  setMinimumSize(640, 480);  // the screens scroll and split down to a 1024x600 netbook
+  resize(1200, 760);         // fits a 1280x800 screen; a window manager may maximise it
   statusBar()->addPermanentWidget(m_who);
 
   m_file = menuBar()->addMenu(QString());
@@ -30,7 +31,7 @@ MainWindow::MainWindow(QWidget* parent)
   m_quit->setShortcut(QKeySequence::Quit);
 
   m_help = menuBar()->addMenu(QString());
-  m_guide = m_help->addAction(QString(), this, &MainWindow::userGuideRequested);
+  m_guide = m_help->addAction(QString(), this, &MainWindow::showUserGuide);
   m_guide->setShortcut(QKeySequence::HelpContents);
   m_about = m_help->addAction(QString(), this, [this] {
     QMessageBox::about(this, tr("About ArmTrack"),
@@ -82,6 +83,23 @@ void MainWindow::showScreen(QWidget* screen) {
        w = w->nextInFocusChain())
     if ((w->focusPolicy() & Qt::TabFocus) && w->isEnabled()) focus = w;
   if (focus) focus->setFocus(Qt::OtherFocusReason);
+}
+
+void MainWindow::showUserGuide() {
+  if (!m_helpWindow) {
+    m_helpWindow = new HelpWindow(this);
+    m_helpWindow->setAttribute(Qt::WA_DeleteOnClose);
+  }
+  const ScreenHelp help = screenHelp(m_stack->screen());
+  m_helpWindow->showFor(help.hint, help.headings);
+  m_helpWindow->show();
+  m_helpWindow->raise();
+  m_helpWindow->activateWindow();
+  emit userGuideRequested();
+}
+
+HelpWindow* MainWindow::helpWindow() const {
+  return m_helpWindow.data();
 }
 
 QWidget* MainWindow::currentScreen() const {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <QMainWindow>
+#include <QPointer>
 #include <functional>
 
 #include "app/gui/common/Forms.h"
@@ -16,6 +17,8 @@ class ScreenStack;
 }
 
 namespace armtrack::gui {
+
+class HelpWindow;
 
 class MainWindow : public QMainWindow {
   Q_OBJECT
@@ -39,6 +42,11 @@ class MainWindow : public QMainWindow {
   /// Asked before the window closes (its close button, File > Quit): false keeps it open (e.g.
   /// while the question whether to stop a recording is open).
   void setCloseGuard(std::function<bool()> mayClose) { m_mayClose = std::move(mayClose); }
+  /// Help > User guide (F1): the guide in its own window, at the section about the screen shown
+  /// and with what to do on it (HelpWindow). Also emits userGuideRequested.
+  void showUserGuide();
+  /// The guide's window once F1 opened it, else nullptr.
+  HelpWindow* helpWindow() const;
 
  signals:
   void settingsRequested();
@@ -70,6 +78,7 @@ class MainWindow : public QMainWindow {
   QAction* m_quit;
   QAction* m_guide;
   QAction* m_about;
+  QPointer<HelpWindow> m_helpWindow;
 };
 
 }  // namespace armtrack::gui

@@ -7,5 +7,6 @@ if ! command -v xvfb-run >/dev/null 2>&1; then
 fi
 export QT_QPA_PLATFORM=xcb
 export LIBGL_ALWAYS_SOFTWARE=1
-# -a picks a free display number; the screen is the size the screenshots are taken at.
-exec xvfb-run -a -s "-screen 0 1280x800x24 -nolisten tcp" "$@"
+# -a picks a free display number; the screen is the size the screenshots are taken at
+# (ARMTRACK_XVFB_SCREEN, e.g. 1024x600; default 1280x800).
+exec xvfb-run -a -s "-screen 0 ${ARMTRACK_XVFB_SCREEN:-1280x800}x24 -nolisten tcp" "$@"

@@ -16,7 +16,8 @@
 namespace armtrack::test {
 
 /// Where a world point appears in a widget of size w x h (logical pixels) seen by camera v, by
-/// the textbook pinhole model (vertical field of view, square pixels), not by VTK's matrices.
+/// the textbook pinhole model (square pixels), not by VTK's matrices. The view angle spans the
+/// shorter side: the height of a wide view, the width of a tall one (ArmScene::prepareFrame).
 inline QPointF project(const ui::CameraView& v, const Eigen::Vector3d& p, double w, double h) {
   const Eigen::Vector3d d = (v.focalPoint - v.position).normalized();
   const Eigen::Vector3d up = (v.viewUp - v.viewUp.dot(d) * d).normalized();
@@ -24,8 +25,9 @@ inline QPointF project(const ui::CameraView& v, const Eigen::Vector3d& p, double
   const Eigen::Vector3d rel = p - v.position;
   const double z = rel.dot(d);
   const double t = std::tan(v.viewAngleDeg * std::numbers::pi / 360.0);
-  const double xn = rel.dot(right) / (z * t * (w / h));
-  const double yn = rel.dot(up) / (z * t);
+  const double sx = w >= h ? w / h : 1.0, sy = w >= h ? 1.0 : h / w;
+  const double xn = rel.dot(right) / (z * t * sx);
+  const double yn = rel.dot(up) / (z * t * sy);
   return {(xn + 1.0) / 2.0 * w, (1.0 - yn) / 2.0 * h};
 }
 

@@ -241,6 +241,52 @@ class TestAngleWidgets : public QObject {
     QVERIFY(!r.isUncertain(0));
   }
 
+  // The therapist reads a confidence in degrees ("±3°": two standard deviations) and, for an
+  // angle not to be trusted, why; the table says the same on amber.
+  void confidenceIsPlainAndSaysWhy() {
+    AngleReadouts r;
+    r.show();
+    AngleSample s = sampleAt(0.0);
+    s.sigmaDeg = {1.5, 6.0, 0.5, 6.0, 0.4};
+    s.headingFromStartPose = true;
+    r.setSample(&s);
+    r.refresh();
+    const QString deg = QStringLiteral("\u00b0");
+    QCOMPARE(r.noteText(0), QStringLiteral("\u00b13") + deg);
+    QVERIFY(!r.isUncertain(0));
+    QCOMPARE(r.noteText(1),
+             QStringLiteral("\u00b112") + deg + QStringLiteral(", heading from the start pose"));
+    QVERIFY(r.isUncertain(1));
+    QCOMPARE(r.noteText(3), QStringLiteral("\u00b112") + deg + QStringLiteral(", uncertain"));
+    QVERIFY(!r.noteText(4).contains(QStringLiteral("\u03c3")));
+    AngleTableModel m;
+    QCOMPARE(m.headerData(AngleTableModel::Uncertainty, Qt::Horizontal).toString(),
+             QStringLiteral("Confidence"));
+    const std::array<double, kAngleCount> none{kNan, kNan, kNan, kNan, kNan};
+    m.setValues(&s, none, none);
+    QCOMPARE(m.index(0, AngleTableModel::Uncertainty).data().toString(),
+             QStringLiteral("\u00b13") + deg);
+    QVERIFY(!m.index(0, AngleTableModel::Value).data(Qt::BackgroundRole).isValid());
+    QCOMPARE(m.index(1, AngleTableModel::Uncertainty).data().toString(),
+             QStringLiteral("\u00b112") + deg + QStringLiteral(" heading"));
+    QVERIFY(m.index(1, AngleTableModel::Value).data(Qt::BackgroundRole).isValid());
+    QCOMPARE(m.index(1, AngleTableModel::Value).data(Qt::ToolTipRole).toString(),
+             QStringLiteral("heading from the start pose"));
+    // A lost sensor: every angle is only predicted.
+    s.predicted = true;
+    s.headingFromStartPose = false;
+    s.sigmaDeg = {0.5, 0.5, 0.5, 0.5, 0.5};
+    m.setValues(&s, none, none);
+    r.setSample(&s);
+    r.refresh();
+    for (int a = 0; a < kAngleCount; ++a) {
+      QCOMPARE(m.index(a, AngleTableModel::Uncertainty).data().toString(),
+               QStringLiteral("sensor lost"));
+      QVERIFY(r.isUncertain(a));
+      QVERIFY(r.noteText(a).endsWith(QStringLiteral("sensor lost")));
+    }
+  }
+
   void repetitionCounterShowsTheCount() {
     RepetitionParams p;
     p.primaryAngle = 0;

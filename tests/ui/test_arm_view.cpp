@@ -201,6 +201,42 @@ class TestArmView : public QObject {
     QVERIFY(isArmBlue(pixelAt(img, px)));
   }
 
+  // Issue 25, item 13: the default view cut off the head in a wide pane (the live screen's) and
+  // the trunk in a narrow one (the review's). The head (a 0.1 m sphere 0.2 m above the shoulder,
+  // 0.19 m medial) and the trunk's corners (0.30 x 0.52 x 0.19 m, its top 0.05 m above the
+  // shoulder) are in view in both.
+  void headAndTrunkInViewWideAndNarrow() {
+    m_view->setArm(ArmGeometry{}, Side::Right);
+    const Eigen::Vector3d up = -Eigen::Vector3d::UnitX(), m = medialDirection(Side::Right);
+    const Eigen::Vector3d side = m.cross(up);
+    std::vector<Eigen::Vector3d> body;
+    const Eigen::Vector3d head = m * 0.19 + up * 0.2;
+    for (const Eigen::Vector3d& d : {up, Eigen::Vector3d(-up), m, Eigen::Vector3d(-m)})
+      body.push_back(head + d * 0.1);
+    const Eigen::Vector3d trunk = m * 0.19 - up * 0.21;
+    for (double a : {-1.0, 1.0})
+      for (double b : {-1.0, 1.0})
+        for (double c : {-1.0, 1.0})
+          body.push_back(trunk + m * (0.15 * a) + up * (0.26 * b) + side * (0.095 * c));
+    for (const QSize size : {QSize(440, 230), QSize(320, 460)}) {
+      m_window->resize(size);
+      QTRY_COMPARE(m_view->size(), size);
+      m_view->resetView();
+      QVERIFY(!freshShot().isNull());
+      for (const Eigen::Vector3d& p : body) {
+        const QPointF px = project(m_view->camera(), p, size.width(), size.height());
+        QVERIFY2(px.x() >= 0 && px.x() <= size.width() && px.y() >= 0 && px.y() <= size.height(),
+                 qPrintable(QStringLiteral("%1x%2: (%3, %4) out of view")
+                                .arg(size.width())
+                                .arg(size.height())
+                                .arg(px.x())
+                                .arg(px.y())));
+      }
+    }
+    m_window->resize(640, 480);
+    QTRY_COMPARE(m_view->width(), 640);
+  }
+
   void darkAndLightPalettes() {
     m_view->setPalette(darkPalette());
     const QImage dark = freshShot();

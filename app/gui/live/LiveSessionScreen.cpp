@@ -18,6 +18,7 @@
 #include "ui/AngleReadouts.h"
 #include "ui/AngleTableModel.h"
 #include "ui/DeviceHealthPanel.h"
+#include "ui/DeviceWords.h"
 #include "ui/Fonts.h"
 #include "ui/RepetitionCounterWidget.h"
 #include "ui/Retranslate.h"
@@ -79,6 +80,13 @@ LiveSessionScreen::LiveSessionScreen(const PluginRegistry& registry, LiveSession
   m_arm->setRefreshRate(0);
   m_plots->setRefreshRate(0);
   m_readouts->setRefreshRate(0);
+  // The big numbers show the sample the table shows, when it shows it (kTableHz): both read
+  // the same during fast movement.
+  connect(m_plots, &ui::AnglePlotPanel::tableUpdated, m_readouts,
+          [this](const ui::AngleSample* current) {
+            m_readouts->setSample(current);
+            m_readouts->refresh();
+          });
   m_drainTimer.setTimerType(Qt::PreciseTimer);
   connect(&m_drainTimer, &QTimer::timeout, this, &LiveSessionScreen::drain);
   setDrainRate(m_drainHz);
@@ -402,12 +410,12 @@ void LiveSessionScreen::drain() {
     m_sessionTime = last.t;
     if (m_sessionTime - m_lastOptical > kOpticalShownSeconds) m_marks = {};
     m_plots->append(m_samples);
-    m_readouts->setSample(&m_samples.back());
     m_arm->setPose(last.th);
     m_arm->setOptical(m_marks);
     m_reps->showCount(m_counter);
   }
-  for (const std::string& e : m_sessionEvents) addMessage(QString::fromStdString(e));
+  for (const std::string& e : m_sessionEvents)
+    addMessage(ui::sessionEventText(QString::fromStdString(e)));
   lap(m_times.feedMs);
   m_plots->refreshIfChanged();
   lap(m_times.plotsMs);

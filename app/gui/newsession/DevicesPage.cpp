@@ -16,6 +16,7 @@
 #include "ui/AngleTrace.h"
 #include "ui/DeviceHealthPanel.h"
 #include "ui/DeviceOptionsForm.h"
+#include "ui/DeviceWords.h"
 
 namespace armtrack::app::gui {
 
@@ -42,7 +43,7 @@ DevicesPage::DevicesPage(const PluginRegistry& registry, LiveSessionConfig base,
     auto* item = new QListWidgetItem(r.name, m_plugins);
     item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
     item->setCheckState(Qt::Unchecked);
-    item->setToolTip(p ? p->description() : QString());
+    item->setToolTip(p ? ui::pluginDescriptionText(p->description()) : QString());
     item->setData(kOptionsRole, QString());
   }
   for (const PluginRecord& r : registry.records())
@@ -136,7 +137,7 @@ void DevicesPage::showPlugin(QListWidgetItem* item) {
   m_shown = nullptr;  // while the form is rebuilt, edits belong to no plugin
   if (!item) return;
   devices::DevicePlugin* p = m_registry.plugin(item->text());
-  m_description->setText(p ? p->description() : QString());
+  m_description->setText(p ? ui::pluginDescriptionText(p->description()) : QString());
   m_form->setOptionsHelp(p ? p->optionsHelp() : QString());
   m_form->setValues(devices::Options::parse(item->data(kOptionsRole).toString()));
   m_shown = item;

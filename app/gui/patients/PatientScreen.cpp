@@ -171,7 +171,14 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   buttons->addWidget(m_review);
   sessionsLayout->addLayout(buttons);
   mainLayout->addWidget(m_sessionsBox, 2);
-  split->addWidget(main);
+  // A low screen (1024x600) scrolls the chart and the sessions rather than squeeze the chart
+  // until its labels read "...".
+  m_sessionsBox->setMinimumHeight(220);
+  auto* mainScroll = new QScrollArea;
+  mainScroll->setWidget(main);
+  mainScroll->setWidgetResizable(true);
+  mainScroll->setFrameShape(QFrame::NoFrame);
+  split->addWidget(mainScroll);
   split->setStretchFactor(0, 1);
   split->setStretchFactor(1, 3);
   layout->addWidget(split, 1);
@@ -316,6 +323,7 @@ void PatientScreen::show(const PatientOverview& o, bool again) {
                             new QStandardItem(tr("%L1 s").arg(item.restS, 0, 'f', 0)),
                             new QStandardItem(QLocale().toString(item.sessionsPerWeek))});
   }
+  m_programmeTable->resizeColumnsToContents();  // a narrow pane scrolls; no name is cut
   if (again) return;  // the chart, the sessions' table and the choices in them stay
   m_chart->setPatient(o.patient.birthDate, o.patient.sex);
   m_chart->setSessions(o.progress);

@@ -45,15 +45,17 @@ ProgressChart::ProgressChart(QWidget* parent)
   top->addWidget(m_angle);
   top->addStretch();
   layout->addLayout(top);
-  auto* row = new QHBoxLayout;
+  auto* row = m_row = new QBoxLayout(QBoxLayout::LeftToRight);
   m_view->setRenderHint(QPainter::Antialiasing);
-  m_view->setMinimumHeight(220);
+  // Room for the vertical axis' title ("Largest angle (°)", longer in German) and the legend.
+  m_view->setMinimumSize(420, 320);
   row->addWidget(m_view, 3);
   m_tableView->setModel(m_table);
   m_tableView->setEditTriggers(QAbstractItemView::NoEditTriggers);
   m_tableView->verticalHeader()->hide();
   m_tableView->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
   m_tableView->setTabKeyNavigation(false);
+  m_tableView->setMinimumHeight(160);
   row->addWidget(m_tableView, 2);
   layout->addLayout(row, 1);
   connect(m_angle, &QComboBox::currentIndexChanged, this, &ProgressChart::redraw);
@@ -71,6 +73,13 @@ void ProgressChart::retranslateUi() {
          "beside it holds the same values."));
   m_tableView->setAccessibleName(tr("Progress values"));
   redraw();  // titles, series, axes and the table's header in the new words and number format
+}
+
+void ProgressChart::resizeEvent(QResizeEvent* event) {
+  // Narrow (a small screen): the table below the chart, so the chart keeps the width its legend
+  // and date labels need.
+  m_row->setDirection(width() < kBesideWidth ? QBoxLayout::TopToBottom : QBoxLayout::LeftToRight);
+  QWidget::resizeEvent(event);
 }
 
 void ProgressChart::changeEvent(QEvent* event) {

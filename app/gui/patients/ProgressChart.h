@@ -16,6 +16,7 @@
 #include "core/metrics/PatientNorms.h"
 
 class QChart;
+class QBoxLayout;
 class QChartView;
 class QComboBox;
 class QLabel;
@@ -54,6 +55,7 @@ class ProgressChart : public QWidget {
 
  protected:
   void changeEvent(QEvent* event) override;
+  void resizeEvent(QResizeEvent* event) override;
 
  private:
   using Motion = MotionDirection;
@@ -69,6 +71,8 @@ class ProgressChart : public QWidget {
   QChartView* m_view;
   QStandardItemModel* m_table;
   QTableView* m_tableView;
+  QBoxLayout* m_row = nullptr;  // chart and table: side by side, or stacked when narrow
+  static constexpr int kBesideWidth = 960;
   int m_points = 0;
   bool m_radians = false;
   std::optional<CivilDate> m_birth;

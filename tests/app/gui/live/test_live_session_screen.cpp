@@ -2,6 +2,7 @@
 // plots fill; a device that drops out turns the health red while the session goes on, and green
 // again; record, pause and stop write a CSV or a session in the clinical records; a session that
 // cannot start says why; keys drive every control.
+#include <QElapsedTimer>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QListWidget>
@@ -139,6 +140,40 @@ class TestLiveSessionScreen : public QObject {
     screen.stop();
     QVERIFY(stopped.wait(15000));
     QCOMPARE(screen.state(), State::Stopped);
+  }
+
+  // Issue 25, item 13: during fast movement the big numbers showed another sample than the
+  // table's "Now" (26 against 39.3 deg). Whenever one looks, they agree.
+  void bigNumbersAndTheTableShowTheSameSample() {
+    LiveSessionScreen screen(m_registry, config(gui::demoDevices()));
+    screen.resize(1280, 800);
+    screen.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&screen));
+    QSignalSpy started(&screen, &LiveSessionScreen::sessionStarted);
+    screen.start();
+    QVERIFY(started.wait(10000));
+    QVERIFY(waitForSessionTime(screen, 1.0));
+    int looks = 0, differ = 0;
+    QString example;
+    QElapsedTimer clock;
+    clock.start();
+    while (clock.elapsed() < 3000) {
+      QTest::qWait(13);
+      const double now = screen.plots()->tableModel()->value(0);
+      if (!std::isfinite(now)) continue;
+      ++looks;
+      const QString table = ui::formatDegrees(now, 0);
+      if (screen.readouts()->valueText(0) != table) {
+        ++differ;
+        example = screen.readouts()->valueText(0) + QStringLiteral(" vs ") + table;
+      }
+    }
+    QVERIFY(looks > 50);
+    QVERIFY2(
+        differ == 0,
+        qPrintable(
+            QStringLiteral("%1 of %2 looks differ, e.g. %3").arg(differ).arg(looks).arg(example)));
+    screen.stop();
   }
 
   void deviceDropsOutTurnsRedAndRecovers() {
