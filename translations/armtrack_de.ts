@@ -2096,10 +2096,6 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>not analysed yet</source>
         <translation>noch nicht ausgewertet</translation>
     </message>
-    <message>
-        <source>This session has no analysis yet (it may have been cut short or failed). Open &quot;Re-estimate&quot; to estimate its joint angles from the recording.</source>
-        <translation>Diese Sitzung ist noch nicht ausgewertet (sie wurde vielleicht abgebrochen oder die Auswertung schlug fehl). Öffnen Sie „Neu berechnen“, um ihre Gelenkwinkel aus der Aufnahme zu berechnen.</translation>
-    </message>
     <message numerus="yes">
         <source>%n repetition(s) could not be read.</source>
         <translation>
@@ -2260,6 +2256,22 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
             <numerusform>%n Wiederholung bei %1 (%2 vollständig, %3 teilweise). Glattheit: SPARC %4, LDLJ %5.</numerusform>
             <numerusform>%n Wiederholungen bei %1 (%2 vollständig, %3 teilweise). Glattheit: SPARC %4, LDLJ %5.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>This session is waiting for its analysis, which ArmTrack runs in the background while a therapist is signed in: open the review again in a moment, or open &quot;Re-estimate&quot; to analyse it now.</source>
+        <translation>Diese Sitzung wartet auf ihre Auswertung, die ArmTrack im Hintergrund ausführt, solange eine Therapeutin oder ein Therapeut angemeldet ist: Öffnen Sie die Ansicht gleich noch einmal, oder öffnen Sie „Neu berechnen“, um sie jetzt auszuwerten.</translation>
+    </message>
+    <message>
+        <source>This session could not be analysed: %1. Open &quot;Re-estimate&quot; to try again, for example with other filter settings.</source>
+        <translation>Diese Sitzung konnte nicht ausgewertet werden: %1. Öffnen Sie „Neu berechnen“, um es erneut zu versuchen, zum Beispiel mit anderen Filtereinstellungen.</translation>
+    </message>
+    <message>
+        <source>no reason was stored</source>
+        <translation>es wurde kein Grund gespeichert</translation>
+    </message>
+    <message>
+        <source>This recording was cut short, so it was not analysed. Open &quot;Re-estimate&quot; to estimate its joint angles from what was recorded.</source>
+        <translation>Diese Aufnahme wurde abgebrochen und daher nicht ausgewertet. Öffnen Sie „Neu berechnen“, um ihre Gelenkwinkel aus dem Aufgenommenen zu berechnen.</translation>
     </message>
 </context>
 <context>

@@ -2096,10 +2096,6 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>not analysed yet</source>
         <translation>todavía sin analizar</translation>
     </message>
-    <message>
-        <source>This session has no analysis yet (it may have been cut short or failed). Open &quot;Re-estimate&quot; to estimate its joint angles from the recording.</source>
-        <translation>Esta sesión aún no tiene análisis (quizá se interrumpió o falló). Abra «Recalcular» para calcular sus ángulos articulares a partir de la grabación.</translation>
-    </message>
     <message numerus="yes">
         <source>%n repetition(s) could not be read.</source>
         <translation>
@@ -2260,6 +2256,22 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
             <numerusform>%n repetición de %1 (%2 completas, %3 parciales). Suavidad: SPARC %4, LDLJ %5.</numerusform>
             <numerusform>%n repeticiones de %1 (%2 completas, %3 parciales). Suavidad: SPARC %4, LDLJ %5.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>This session is waiting for its analysis, which ArmTrack runs in the background while a therapist is signed in: open the review again in a moment, or open &quot;Re-estimate&quot; to analyse it now.</source>
+        <translation>Esta sesión espera su análisis, que ArmTrack realiza en segundo plano mientras un terapeuta tiene la sesión iniciada: vuelva a abrir la revisión en un momento o abra «Recalcular» para analizarla ahora.</translation>
+    </message>
+    <message>
+        <source>This session could not be analysed: %1. Open &quot;Re-estimate&quot; to try again, for example with other filter settings.</source>
+        <translation>No se pudo analizar esta sesión: %1. Abra «Recalcular» para intentarlo de nuevo, por ejemplo con otros ajustes del filtro.</translation>
+    </message>
+    <message>
+        <source>no reason was stored</source>
+        <translation>no se guardó ningún motivo</translation>
+    </message>
+    <message>
+        <source>This recording was cut short, so it was not analysed. Open &quot;Re-estimate&quot; to estimate its joint angles from what was recorded.</source>
+        <translation>Esta grabación se interrumpió, por lo que no se analizó. Abra «Recalcular» para estimar sus ángulos articulares a partir de lo grabado.</translation>
     </message>
 </context>
 <context>

@@ -305,10 +305,21 @@ void ReviewScreen::show(const ReviewData& d) {
   } else {
     m_plots->setSession({});
     m_t0 = m_t1 = 0;
-    m_message->showMessage([] {
+    // Say why, from the session's analysis state: waiting for its turn, failed, or cut short.
+    const QString state = d.info.analysis, note = d.info.analysisNote;
+    m_message->showMessage([state, note] {
+      if (state == QLatin1String(storage::kAnalysisPending))
+        return tr(
+            "This session is waiting for its analysis, which ArmTrack runs in the "
+            "background while a therapist is signed in: open the review again in a "
+            "moment, or open \"Re-estimate\" to analyse it now.");
+      if (state == QLatin1String(storage::kAnalysisFailed))
+        return tr("This session could not be analysed: %1. Open \"Re-estimate\" to try "
+                  "again, for example with other filter settings.")
+            .arg(note.isEmpty() ? tr("no reason was stored") : note);
       return tr(
-          "This session has no analysis yet (it may have been cut short or failed). Open "
-          "\"Re-estimate\" to estimate its joint angles from the recording.");
+          "This recording was cut short, so it was not analysed. Open \"Re-estimate\" "
+          "to estimate its joint angles from what was recorded.");
     });
     m_tabs->setCurrentWidget(m_reestimate);
   }

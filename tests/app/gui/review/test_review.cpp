@@ -2,7 +2,7 @@
 // shows the stored estimate at the cursor, playback advances, repetitions are listed, another
 // session is overlaid, a re-estimation with another filter and method makes a new version (a
 // calibration of the wrong file is refused in words), notes typed and left unsaved come back,
-// and the report and every export are written.
+// and the report and every export are written; a session without an analysis says why.
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
@@ -11,10 +11,14 @@
 #include <QRegularExpression>
 #include <QSettings>
 #include <QSignalSpy>
+#include <QSqlDatabase>
+#include <QSqlError>
+#include <QSqlQuery>
 #include <QTableView>
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/common/Forms.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/review/ReviewScreen.h"
 #include "app/gui/services/DemoData.h"
@@ -239,6 +243,60 @@ class TestReview : public QObject {
     QVERIFY(written.wait(60000));
     QVERIFY2(written.last().at(1).toString().contains(QStringLiteral("could not be written")),
              qPrintable(written.last().at(1).toString()));
+  }
+
+  // Issue 25, item 2: a session waiting for its analysis (a home session before a therapist
+  // signed in) said "no analysis yet (it may have been cut short or failed)". The review now
+  // says why from the session's analysis state: pending, failed (with the stored reason), or cut
+  // short. The states are set in the file, as another program would leave them.
+  void saysWhyASessionHasNoAnalysis() {
+    const qint64 id = m_sessions.front();
+    {
+      QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), "edit");
+      db.setDatabaseName(m_dir.filePath(QStringLiteral("demo.db")));
+      db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000"));
+      QVERIFY(db.open());
+      QSqlQuery q(db);
+      QVERIFY(q.exec(QStringLiteral("PRAGMA foreign_keys = ON")));
+      for (const char* sql : {"DELETE FROM metrics WHERE session_id = %1",
+                              "DELETE FROM estimates WHERE session_id = %1",
+                              "UPDATE sessions SET analysis = 'pending' WHERE id = %1"})
+        QVERIFY2(q.exec(QString::fromLatin1(sql).arg(id)), qPrintable(q.lastError().text()));
+      db.close();
+    }
+    QSqlDatabase::removeDatabase(QStringLiteral("edit"));
+    const auto said = [&](const QString& what) {
+      for (const MessageLine* m : review()->findChildren<MessageLine*>())
+        if (m->isVisible() && m->text().contains(what)) return true;
+      return false;
+    };
+    const auto setState = [&](const QString& state, const QString& note) {
+      QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), "edit");
+      db.setDatabaseName(m_dir.filePath(QStringLiteral("demo.db")));
+      db.setConnectOptions(QStringLiteral("QSQLITE_BUSY_TIMEOUT=10000"));
+      bool ok = db.open();
+      QSqlQuery q(db);
+      q.prepare(QStringLiteral("UPDATE sessions SET analysis = ?, analysis_note = ? WHERE id = ?"));
+      q.addBindValue(state);
+      q.addBindValue(note);
+      q.addBindValue(id);
+      ok = ok && q.exec();
+      if (!ok) qWarning("%s", qPrintable(q.lastError().text()));
+      q.finish();
+      db.close();
+      return ok;
+    };
+    QVERIFY(open(id));
+    QVERIFY(said(QStringLiteral("waiting for its analysis")));
+    QVERIFY(!said(QStringLiteral("cut short")));
+    QVERIFY(setState(QStringLiteral("failed"), QStringLiteral("the recording holds no arm rows")));
+    QSqlDatabase::removeDatabase(QStringLiteral("edit"));
+    QVERIFY(open(id));
+    QVERIFY(said(QStringLiteral("could not be analysed: the recording holds no arm rows")));
+    QVERIFY(setState(QStringLiteral("none"), QStringLiteral("")));
+    QSqlDatabase::removeDatabase(QStringLiteral("edit"));
+    QVERIFY(open(id));
+    QVERIFY(said(QStringLiteral("was cut short, so it was not analysed")));
   }
 
   void cleanupTestCase() { m_app.reset(); }
