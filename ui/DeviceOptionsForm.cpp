@@ -67,6 +67,19 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
     label->setBuddy(edit);
     label->setToolTip(f.meaning);
     m_form->addRow(label, edit);
+    // What the option means, in the plugin's words, under its field: the key alone ("wrist-hsv")
+    // says nothing to a therapist.
+    if (!f.meaning.isEmpty()) {
+      auto* meaning = new QLabel(f.meaning, this);
+      meaning->setTextFormat(Qt::PlainText);
+      meaning->setWordWrap(true);
+      meaning->setObjectName(QStringLiteral("optionMeaning"));
+      meaning->setAccessibleName(f.key);
+      QFont small = meaning->font();
+      small.setPointSizeF(small.pointSizeF() * 0.9);
+      meaning->setFont(small);
+      m_form->addRow(meaning);
+    }
     m_edits.push_back(edit);
   }
 }

@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <opencv2/calib3d.hpp>
@@ -146,6 +147,17 @@ class TestNewSessionPages : public QObject {
     QCOMPARE(page.devices(), QStringList{QStringLiteral("virtual-arm")});  // all at defaults
     QLineEdit* sensors = page.optionsForm()->edit(QStringLiteral("sensors"));
     QVERIFY(sensors);
+    // Issue 25, item 12: the options were shown as raw keys ("wrist-hsv") alone. Each field now
+    // has its meaning written under it.
+    QString meaning;
+    for (const ui::OptionField& f : page.optionsForm()->fields())
+      if (f.key == QLatin1String("sensors")) meaning = f.meaning;
+    QVERIFY(meaning.contains(QStringLiteral("joined by")));
+    const QList<QLabel*> labels = page.optionsForm()->findChildren<QLabel*>();
+    QVERIFY(std::any_of(labels.cbegin(), labels.cend(), [&](const QLabel* l) {
+      return l->objectName() == QLatin1String("optionMeaning") && l->text() == meaning &&
+             l->wordWrap();
+    }));
     sensors->setText(QStringLiteral("upper+forearm+kinect+webcam"));
     QCOMPARE(page.devices(),
              QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+webcam")});
