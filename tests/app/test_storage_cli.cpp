@@ -359,7 +359,9 @@ TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
 // works.
 TEST_P(StorageCli, OlderSchemaNeedsDbMigrate) {
   addPatients();
-  // Version 6's triggers, indexes, tables and columns, then those of versions 2 to 4.
+  // Version 7's column, version 6's triggers, indexes, tables and columns, then those of
+  // versions 2 to 4.
+  sql({"ALTER TABLE users DROP COLUMN disabled"});
   if (m_engine == Engine::Postgres)
     sql({"DROP TRIGGER audit_log_no_change ON audit_log",
          "DROP TRIGGER audit_log_no_truncate ON audit_log"});
