@@ -53,11 +53,6 @@ class TestAdmin : public QObject {
   QWidget* screen() const { return m_app->window()->currentScreen(); }
   admin::AdminScreen* adminScreen() const { return qobject_cast<admin::AdminScreen*>(screen()); }
 
-  static QString message(QWidget* w) {
-    for (auto* m : w->findChildren<MessageLine*>())
-      if (m->isVisible()) return m->text();
-    return {};
-  }
   static QStringList column(QTableWidget* table, int c) {
     QStringList out;
     for (int r = 0; r < table->rowCount(); ++r)
@@ -155,28 +150,31 @@ class TestAdmin : public QObject {
     typeInto(password, QStringLiteral("short"));
     typeInto(again, QStringLiteral("short"));
     QTest::keyClick(again, Qt::Key_Return);
-    QVERIFY2(message(d).contains(QStringLiteral("at least 10")), qPrintable(message(d)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("at least 10")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     QCOMPARE(d->focusWidget(), password);
     typeInto(password, kTherapistPassword);
     typeInto(again, QStringLiteral("tess-password-2"));
     QTest::keyClick(again, Qt::Key_Return);
-    QVERIFY2(message(d).contains(QStringLiteral("differ")), qPrintable(message(d)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("differ")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     // The administrator's own name in other letters is taken: the records say so, the dialog
     // stays with everything typed.
     typeInto(name, QStringLiteral("BOSS"));
     typeInto(again, kTherapistPassword);
     save(d);
-    QTRY_VERIFY(!message(d).startsWith(QStringLiteral("Saving")));
-    QVERIFY2(
-        message(d).contains(QStringLiteral("BOSS")) || message(d).contains(QStringLiteral("boss")),
-        qPrintable(message(d)));
+    QTRY_VERIFY(!armtrack::gui::test::visibleMessage(d).startsWith(QStringLiteral("Saving")));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("BOSS")) ||
+                 armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("boss")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     QVERIFY(d->isVisible());
     QCOMPARE(password->text(), kTherapistPassword);
     typeInto(name, kTherapist);
     save(d);
     QTRY_VERIFY(!screen()->findChild<admin::AccountDialog*>());
     QTRY_VERIFY(column(page->table(), 0).contains(kTherapist));
-    QVERIFY2(message(page).contains(kTherapist), qPrintable(message(page)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(page).contains(kTherapist),
+             qPrintable(armtrack::gui::test::visibleMessage(page)));
   }
 
   void addAHomeAccountForThePatient() {
@@ -245,7 +243,8 @@ class TestAdmin : public QObject {
                       Qt::LeftButton);
     QTRY_VERIFY((box = page->findChild<QMessageBox*>()) && box->isVisible());
     box->button(QMessageBox::Yes)->click();
-    QTRY_VERIFY(message(page).contains(QStringLiteral("cannot remove itself")));
+    QTRY_VERIFY(
+        armtrack::gui::test::visibleMessage(page).contains(QStringLiteral("cannot remove itself")));
   }
 
   // Issue 25, item 12: accounts could not be disabled. Disabling asks first, the table says
@@ -314,7 +313,9 @@ class TestAdmin : public QObject {
     from->setValue(130);
     to->setValue(20);  // backwards
     save(d);
-    QVERIFY2(message(d).contains(QStringLiteral("below where it starts")), qPrintable(message(d)));
+    QVERIFY2(
+        armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("below where it starts")),
+        qPrintable(armtrack::gui::test::visibleMessage(d)));
     from->setValue(20);
     to->setValue(120);
     findControl<QSpinBox>(d, QStringLiteral("Repetitions"))->setValue(8);
@@ -347,7 +348,7 @@ class TestAdmin : public QObject {
     QTest::mouseClick(findControl<QPushButton>(page, QStringLiteral("Add exercise...")),
                       Qt::LeftButton);
     auto* d = dialog<admin::ExerciseDialog>();
-    QVERIFY2(d, qPrintable(message(page)));
+    QVERIFY2(d, qPrintable(armtrack::gui::test::visibleMessage(page)));
     QCOMPARE(findControl<QComboBox>(d, QStringLiteral("Protocol"))->currentText(),
              QStringLiteral("Reach forward"));
     findControl<QSpinBox>(d, QStringLiteral("Sets"))->setValue(3);

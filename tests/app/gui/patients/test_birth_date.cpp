@@ -65,12 +65,6 @@ class TestBirthDate : public QObject {
     return focused() && focused()->accessibleName() == QStringLiteral("Birth date");
   }
 
-  static QString message(QWidget* d) {
-    for (auto* m : d->findChildren<MessageLine*>())
-      if (m->isVisible()) return m->text();
-    return {};
-  }
-
   static void setLocale(const QString& name) {
     QLocale::setDefault(name == QLatin1String("de")
                             ? QLocale(QLocale::German, QLocale::Germany)
@@ -154,7 +148,8 @@ class TestBirthDate : public QObject {
       }
     }
     QTest::keyClick(focused(), Qt::Key_Return);  // Save is the default button
-    QVERIFY2(o.saved->count() == 1, qPrintable(message(o.dialog.get())));
+    QVERIFY2(o.saved->count() == 1,
+             qPrintable(armtrack::gui::test::visibleMessage(o.dialog.get())));
     const Patient saved = o.saved->at(0).at(0).value<Patient>();
     QCOMPARE(saved.birthDate, expected);
   }
@@ -183,7 +178,7 @@ class TestBirthDate : public QObject {
     typeKeys(typed);
     QTest::keyClick(focused(), Qt::Key_Return);
     QCOMPARE(o.saved->count(), 0);
-    const QString said = message(o.dialog.get());
+    const QString said = armtrack::gui::test::visibleMessage(o.dialog.get());
     // The field, and the range with its first year.
     QVERIFY2(said.startsWith(QStringLiteral("Born:")) && said.contains(QStringLiteral("1900")),
              qPrintable(said));
@@ -192,7 +187,7 @@ class TestBirthDate : public QObject {
     // Mended, it saves; the problem goes as soon as the date is right.
     QTest::keyClick(focused(), Qt::Key_A, Qt::ControlModifier);
     typeKeys(QStringLiteral("1947-11-02"));
-    QCOMPARE(message(o.dialog.get()), QString());
+    QCOMPARE(armtrack::gui::test::visibleMessage(o.dialog.get()), QString());
     QTest::keyClick(focused(), Qt::Key_Return);
     QCOMPARE(o.saved->count(), 1);
     QCOMPARE(o.saved->at(0).at(0).value<Patient>().birthDate, QStringLiteral("1947-11-02"));
@@ -238,10 +233,10 @@ class TestBirthDate : public QObject {
     Open o = open({}, true);
     QVERIFY(o.dialog);
     QTest::keyClick(focused(), Qt::Key_Return);
-    QVERIFY2(message(o.dialog.get()).contains(QStringLiteral("code")),
-             qPrintable(message(o.dialog.get())));
+    QVERIFY2(armtrack::gui::test::visibleMessage(o.dialog.get()).contains(QStringLiteral("code")),
+             qPrintable(armtrack::gui::test::visibleMessage(o.dialog.get())));
     typeKeys(QStringLiteral("P7"));
-    QCOMPARE(message(o.dialog.get()), QString());
+    QCOMPARE(armtrack::gui::test::visibleMessage(o.dialog.get()), QString());
     QCOMPARE(o.saved->count(), 0);
   }
 };

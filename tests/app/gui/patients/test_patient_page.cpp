@@ -45,11 +45,6 @@ class TestPatientPage : public QObject {
   T* current() const {
     return qobject_cast<T*>(screen());
   }
-  static QString message(QWidget* w) {
-    for (auto* m : w->findChildren<MessageLine*>())
-      if (m->isVisible()) return m->text();
-    return {};
-  }
   template <class Fn>
   auto asAdmin(Fn fn) {
     storage::DatabaseUrl url;
@@ -221,7 +216,8 @@ class TestPatientPage : public QObject {
     QVERIFY(yes);
     yes->click();
     QTRY_COMPARE(table->model()->rowCount(), n - 1);
-    QVERIFY2(message(page).contains(QString::number(id)), qPrintable(message(page)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(page).contains(QString::number(id)),
+             qPrintable(armtrack::gui::test::visibleMessage(page)));
     const bool gone = asAdmin([id](storage::ClinicalStore& s) {
       for (const auto& x : s.listSessions(QStringLiteral("P001")))
         if (x.id == id) return false;
@@ -240,14 +236,18 @@ class TestPatientPage : public QObject {
     SignInScreen s(QStringLiteral("test.db"), QStringLiteral("someone"));
     s.show();
     s.showError(QStringLiteral("too many wrong passwords for 'someone': try again in 3 s"));
-    QVERIFY2(message(&s).contains(QStringLiteral("wait 3 s")), qPrintable(message(&s)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(&s).contains(QStringLiteral("wait 3 s")),
+             qPrintable(armtrack::gui::test::visibleMessage(&s)));
     QPushButton* button = nullptr;
     for (auto* b : s.findChildren<QPushButton*>()) button = b;
     QVERIFY(button && !button->isEnabled());
-    QTRY_VERIFY2(message(&s).contains(QStringLiteral("wait 2 s")), qPrintable(message(&s)));
-    QTRY_VERIFY2(message(&s).contains(QStringLiteral("wait 1 s")), qPrintable(message(&s)));
+    QTRY_VERIFY2(armtrack::gui::test::visibleMessage(&s).contains(QStringLiteral("wait 2 s")),
+                 qPrintable(armtrack::gui::test::visibleMessage(&s)));
+    QTRY_VERIFY2(armtrack::gui::test::visibleMessage(&s).contains(QStringLiteral("wait 1 s")),
+                 qPrintable(armtrack::gui::test::visibleMessage(&s)));
     QTRY_VERIFY_WITH_TIMEOUT(button->isEnabled(), 3000);
-    QVERIFY2(message(&s).contains(QStringLiteral("try again now")), qPrintable(message(&s)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(&s).contains(QStringLiteral("try again now")),
+             qPrintable(armtrack::gui::test::visibleMessage(&s)));
   }
 
   void userTextNamesNoSourceFile() {

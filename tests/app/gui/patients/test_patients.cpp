@@ -44,11 +44,6 @@ class TestPatients : public QObject {
   T* current() const {
     return qobject_cast<T*>(screen());
   }
-  static QString message(QWidget* w) {
-    for (auto* m : w->findChildren<MessageLine*>())
-      if (m->isVisible()) return m->text();
-    return {};
-  }
   QTableView* patientTable() const {
     return findControl<QTableView>(screen(), QStringLiteral("Patient list"));
   }
@@ -99,14 +94,16 @@ class TestPatients : public QObject {
     typeInto(code, QStringLiteral("bad code!"));
     typeInto(name, QStringLiteral("Dora Test"));
     QTest::mouseClick(save, Qt::LeftButton);
-    QVERIFY2(message(d).contains(QStringLiteral("letters, digits")), qPrintable(message(d)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("letters, digits")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     QCOMPARE(d->focusWidget(), code);  // the field to mend has the dialog's focus
     QCOMPARE(name->text(), QStringLiteral("Dora Test"));
     typeInto(code, QStringLiteral("P010"));
     upper->setValue(30);
     forearm->setValue(3);  // a typing slip: 3 cm
     QTest::mouseClick(save, Qt::LeftButton);
-    QVERIFY2(message(d).contains(QStringLiteral("forearm length")), qPrintable(message(d)));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("forearm length")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     QCOMPARE(d->focusWidget(), forearm);
     forearm->setValue(25);
     side->setCurrentIndex(side->findData(QStringLiteral("left")));
@@ -124,8 +121,9 @@ class TestPatients : public QObject {
     auto* notes = findControl<QPlainTextEdit>(d, QStringLiteral("Notes"));
     notes->setPlainText(QStringLiteral("long notes typed with care"));
     QTest::mouseClick(findControl<QPushButton>(d, QStringLiteral("Save")), Qt::LeftButton);
-    QTRY_VERIFY(!message(d).startsWith(QStringLiteral("Saving")));
-    QVERIFY2(message(d).contains(QStringLiteral("P001")), qPrintable(message(d)));
+    QTRY_VERIFY(!armtrack::gui::test::visibleMessage(d).startsWith(QStringLiteral("Saving")));
+    QVERIFY2(armtrack::gui::test::visibleMessage(d).contains(QStringLiteral("P001")),
+             qPrintable(armtrack::gui::test::visibleMessage(d)));
     QVERIFY(d->isVisible());
     QCOMPARE(notes->toPlainText(), QStringLiteral("long notes typed with care"));
     QVERIFY(findControl<QPushButton>(d, QStringLiteral("Save"))->isEnabled());

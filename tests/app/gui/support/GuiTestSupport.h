@@ -16,6 +16,7 @@
 
 #include "app/gui/AppController.h"
 #include "app/gui/MainWindow.h"
+#include "app/gui/common/Forms.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/signin/SignInScreen.h"
@@ -61,6 +62,13 @@ inline bool activate(QWidget* w) {
 }
 
 /// The text of a PDF (pdftotext), or "" when it cannot be read.
+/// The text of the first visible message line (common/Forms.h MessageLine) in w, or "".
+inline QString visibleMessage(QWidget* w) {
+  for (auto* m : w->findChildren<MessageLine*>())
+    if (m->isVisible()) return m->text();
+  return {};
+}
+
 inline QString pdfText(const QString& pdf) {
   QProcess p;
   p.start(QStringLiteral("pdftotext"), {pdf, QStringLiteral("-")});
