@@ -291,6 +291,12 @@ void Shimmer3Parser::decode(const std::uint8_t* p, std::vector<Sample>& out) {
   int nLn = 0, nWr = 0, nGyro = 0;
   std::size_t off = 4;
   for (std::uint8_t id : m_config->channels) {
+    // Only the two-byte channels below are decoded; ExG status is a single byte and may end
+    // the packet, so its neighbour must not be read.
+    if (channelSize(id) != 2) {
+      off += channelSize(id);
+      continue;
+    }
     const std::uint8_t lo = p[off], hi = p[off + 1];
     if (id <= 0x02) {
       ln[id] = static_cast<double>(lo | (hi << 8));

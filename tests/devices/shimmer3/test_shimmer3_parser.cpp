@@ -128,6 +128,33 @@ TEST(Shimmer3Parser, WideRangeAccelAndRanges) {
   EXPECT_NEAR(out[0].gyr[2], 5.0 * kDeg, 1e-12);
 }
 
+TEST(Shimmer3Parser, OneByteChannelsAtThePacketEndAreSkippedWithoutReadingPastIt) {
+  // The ExG status channels (0x1D, 0x20) are one byte each. With them last, the packet ends one
+  // byte after each; the decoder once read a second byte for every channel, past the packet's end
+  // (found by fuzz_shimmer3, kept as tests/fuzz/corpus/fuzz_shimmer3/exg_status_last). Here the
+  // last packet is released by flush() from a buffer that ends exactly where the packet does.
+  Bytes b = {0x02, 0x40, 0x00, 0x00, 0x00, 0x00, 0x00, 0x08, 0x01,
+             0x00, 0x01, 0x02, 0x0A, 0x0B, 0x0C, 0x1D, 0x20};
+  for (std::uint32_t ts : {100u, 164u}) {
+    Bytes pk = packet(ts, {2047, 2047, 2130}, {131, 0, -131});
+    pk.push_back(0xA5);  // ExG 1 status
+    pk.push_back(0x5A);  // ExG 2 status
+    append(b, pk);
+  }
+  Shimmer3Parser p;
+  std::vector<Sample> out;
+  p.feed(b, out);
+  p.flush(out);
+  ASSERT_EQ(out.size(), 2u);
+  EXPECT_EQ(out[1].rawTimestamp, 164u);
+  // Gyro raw 131 at range 0 (131 LSB per deg/s) is 1 deg/s on the sensor's x axis, which the
+  // default alignment [[0,-1,0],[-1,0,0],[0,0,-1]] turns into (0, -1, 1) deg/s.
+  EXPECT_NEAR(out[1].gyr[0], 0.0, 1e-12);
+  EXPECT_NEAR(out[1].gyr[1], -1.0 * kDeg, 1e-12);
+  EXPECT_NEAR(out[1].gyr[2], 1.0 * kDeg, 1e-12);
+  EXPECT_EQ(p.garbageBytes(), 0u);
+}
+
 TEST(Shimmer3Parser, SplitAnywhereGivesTheSameSamples) {
   const Bytes s = session(60);
   Shimmer3Parser whole;
