@@ -8,6 +8,8 @@ ArmSample mirrorSample(const ArmSample& s) {
   if (s.forearm) m.forearm = mirrorImu(*s.forearm);
   if (s.elbow) m.elbow = mirrorPoint(*s.elbow);
   if (s.wrist) m.wrist = mirrorPoint(*s.wrist);
+  if (s.trunk) m.trunk = mirrorImu(*s.trunk);
+  if (s.shoulder) m.shoulder = mirrorPoint(*s.shoulder);
   return m;
 }
 

@@ -17,15 +17,23 @@ struct ImuReading {
 
 /// Everything measured at one instant. Sensors run at different rates: absent ones are empty.
 struct ArmSample {
-  double t = 0.0;                           ///< time (s)
-  std::optional<ImuReading> upperArm;       ///< upper-arm IMU
-  std::optional<ImuReading> forearm;        ///< forearm IMU
-  std::optional<Eigen::Vector3d> elbow;     ///< optical elbow position, shoulder frame (m)
-  std::optional<Eigen::Vector3d> wrist;     ///< optical wrist position, shoulder frame (m)
+  double t = 0.0;                      ///< time (s)
+  std::optional<ImuReading> upperArm;  ///< upper-arm IMU
+  std::optional<ImuReading> forearm;   ///< forearm IMU
+  /// Sternum (trunk) IMU, optional. When a recording has one, or an optical shoulder, the
+  /// optical positions and the camera's pose are in the world frame: frame 0 as it was with the
+  /// trunk upright at the start (docs/arm-model.md, "Trunk"); otherwise in the shoulder frame.
+  std::optional<ImuReading> trunk;
+  std::optional<Eigen::Vector3d> elbow;     ///< optical elbow position (m), see trunk
+  std::optional<Eigen::Vector3d> wrist;     ///< optical wrist position (m), see trunk
+  std::optional<Eigen::Vector3d> shoulder;  ///< optical shoulder position, world frame (m)
   std::optional<Eigen::Vector2d> camWrist;  ///< wrist marker pixel (u, v)
   std::optional<Eigen::Vector2d> camElbow;  ///< elbow marker pixel (u, v)
   std::optional<JointVector> trueAngles;    ///< known true joint angles (rad), simulations
-  std::optional<JointVector> estimate;      ///< angles a live session estimated (rad), if recorded
+  /// Known true trunk flexion, lateral bending and axial rotation (rad, core/kinematics/Trunk.h),
+  /// simulations.
+  std::optional<Eigen::Vector3d> trueTrunk;
+  std::optional<JointVector> estimate;  ///< angles a live session estimated (rad), if recorded
 
   bool hasImu() const { return upperArm.has_value() || forearm.has_value(); }
 };

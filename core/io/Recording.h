@@ -21,6 +21,14 @@
 
 namespace armtrack {
 
+/// Where the sternum IMU sits (the sidecar's "trunk" block), in frame 0 with the trunk upright at
+/// the start.
+struct TrunkMount {
+  Eigen::Vector3d imuPosition = Eigen::Vector3d::Zero();  ///< m, relative to the shoulder centre
+  /// Columns: the IMU's axes in frame 0 (the sidecar stores it row-major).
+  Eigen::Matrix3d imuRotation = Eigen::Matrix3d::Identity();
+};
+
 /// The sidecar's contents.
 struct RecordingMeta {
   ArmGeometry geometry;
@@ -28,6 +36,8 @@ struct RecordingMeta {
   double g = 9.81;                     ///< m/s^2
   std::optional<CameraParams> camera;
   Side side = Side::Right;  ///< which arm; a left arm's data are in its own shoulder frame
+  /// The sternum IMU's mounting; present when the recording has a trunk IMU.
+  std::optional<TrunkMount> trunk;
 
   Eigen::Vector3d gUp() const { return g * up; }
 };
@@ -59,6 +69,9 @@ class RecordingError : public std::runtime_error {
 struct RecordingColumns {
   bool upperArm = false, forearm = false;   ///< gyroscope and accelerometer of each IMU
   bool elbow = false, wrist = false;        ///< optical positions
+  bool trunk = false;                       ///< tr_*: the sternum IMU
+  bool shoulder = false;                    ///< shoulder_*: optical shoulder position
+  bool trueTrunk = false;                   ///< true_trunk_*
   bool camWrist = false, camElbow = false;  ///< marker pixels
   bool truth = false;                       ///< true_th*
   bool estimate = false;                    ///< est_th*

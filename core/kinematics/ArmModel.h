@@ -174,16 +174,25 @@ struct ArmKinematics {
 /// Runs the recursion for the whole arm. th, thd, thdd: joint angles (rad), rates (rad/s),
 /// accelerations (rad/s^2). gUp: g times the unit vector pointing up, in frame 0 (m/s^2); the
 /// accelerometer reading predicted by eqs. 17-18 is then frame.up + frame.accel.
+/// With a moving trunk, frame 0 moves with the thorax: base holds frame 0's angular velocity,
+/// angular acceleration, the shoulder centre's acceleration and g * up, all in frame-0
+/// coordinates (core/kinematics/Trunk.h); the recursion carries them to every sensor, Coriolis
+/// and centripetal terms included. A still trunk is base = {0, 0, 0, gUp}. Positions stay in
+/// frame 0.
 template <typename T>
 ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5, 1>& th,
                                const Eigen::Matrix<T, 5, 1>& thd,
-                               const Eigen::Matrix<T, 5, 1>& thdd, const Eigen::Vector3d& gUp) {
+                               const Eigen::Matrix<T, 5, 1>& thdd,
+                               const FrameState<double>& base) {
   using std::cos;
   using std::sin;
   using Vec3 = Eigen::Matrix<T, 3, 1>;
   constexpr double kHalfPi = detail::kHalfPi;
   FrameState<T> f0;
-  f0.up = gUp.cast<T>();
+  f0.omega = base.omega.cast<T>();
+  f0.omegaDot = base.omegaDot.cast<T>();
+  f0.accel = base.accel.cast<T>();
+  f0.up = base.up.cast<T>();
   // Shoulder, rows 1-3 (shared by Tables 1-4). Rows 1 and 2 rotate by th0 and th1 + pi/2.
   const T c1 = cos(th(0)), s1 = sin(th(0));
   const T c2 = -sin(th(1)), s2 = cos(th(1));  // cos and sin of th1 + pi/2
@@ -227,6 +236,16 @@ ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5,
   out.wrist = detail::toParent(v, c1, s1, kHalfPi);
   out.elbow = detail::toParent(e, c1, s1, kHalfPi);
   return out;
+}
+
+/// A still trunk: frame 0 fixed in the world.
+template <typename T>
+ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5, 1>& th,
+                               const Eigen::Matrix<T, 5, 1>& thd,
+                               const Eigen::Matrix<T, 5, 1>& thdd, const Eigen::Vector3d& gUp) {
+  FrameState<double> base;
+  base.up = gUp;
+  return armKinematics<T>(geo, th, thd, thdd, base);
 }
 
 /// ArmGeometry with a generic scalar (a ceres::Jet or Eigen::AutoDiffScalar), so that predicted
