@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 #include <system_error>
 
@@ -83,7 +84,9 @@ std::optional<std::string> rawOptionValue(const std::vector<std::string>& args,
 
 CsvOutput::CsvOutput(std::string header, std::optional<std::filesystem::path> target,
                      std::ostream* out)
-    : m_out(out), m_target(std::move(target)) {
+    : m_out(out),
+      m_target(std::move(target)),
+      m_columns(1 + static_cast<int>(std::count(header.begin(), header.end(), ','))) {
   if (m_target) {
     guarded([&] { m_file.emplace(*m_target); });
   } else if (!m_out) {
@@ -101,7 +104,8 @@ void CsvOutput::row(double t, const double* values, int n) {
   m_buf.append(num, std::to_chars(num, num + sizeof num, t).ptr);
   for (int k = 0; k < n; ++k) {
     m_buf += ',';
-    m_buf.append(num, std::to_chars(num, num + sizeof num, values[k]).ptr);
+    if (std::isfinite(values[k]))  // a value the data cannot give is an empty cell
+      m_buf.append(num, std::to_chars(num, num + sizeof num, values[k]).ptr);
   }
   m_buf += '\n';
   if (m_buf.size() >= kFlushBytes) flush();

@@ -42,8 +42,10 @@ class CsvOutput {
   CsvOutput& operator=(const CsvOutput&) = delete;
   ~CsvOutput();
 
-  /// Appends the row "t,values[0],...,values[n-1]".
+  /// Appends the row "t,values[0],...,values[n-1]"; a non-finite value is an empty cell.
   void row(double t, const double* values, int n);
+  /// The header's number of columns.
+  int columns() const { return m_columns; }
   /// Writes out what is buffered and, with a target, closes the file and renames it into place.
   void commit();
 
@@ -63,6 +65,7 @@ class CsvOutput {
   std::optional<std::filesystem::path> m_target;
   std::optional<AtomicFile> m_file;
   std::string m_buf;
+  int m_columns = 0;
 };
 
 }  // namespace armtrack::cli

@@ -35,12 +35,15 @@ EstimatorParams makeParams(const RecordingMeta& meta, const EstimateOptions& opt
 namespace {
 
 /// The values of one output row after its time, as CsvOutput::row takes them.
-using RowValues = std::array<double, 2 * kNumJoints + 1>;
+/// The trunk's six follow; a writer whose header has no trunk columns takes the first 11.
+using RowValues = std::array<double, 2 * kNumJoints + 1 + 6>;
 
 void fillValues(const EstimateRow& r, RowValues& values) {
   std::copy(r.th.data(), r.th.data() + kNumJoints, values.begin());
   std::copy(r.sd.data(), r.sd.data() + kNumJoints, values.begin() + kNumJoints);
-  values.back() = r.status;
+  values[2 * kNumJoints] = r.status;
+  std::copy(r.trunk.data(), r.trunk.data() + 3, values.begin() + 2 * kNumJoints + 1);
+  std::copy(r.trunkSd.data(), r.trunkSd.data() + 3, values.begin() + 2 * kNumJoints + 4);
 }
 
 // Rows between two looks at the cancel flag and the progress.
@@ -55,7 +58,7 @@ EstimateStats estimateRecording(const Recording& recording, const EstimatorParam
   if (writer) {
     callbacks.row = [&](const EstimateRow& r) {
       fillValues(r, values);
-      writer->row(r.t, values.data(), static_cast<int>(values.size()));
+      writer->row(r.t, values.data(), writer->columns() - 1);
     };
   }
   if (progress && recording.samples.size() > kProgressRows) callbacks.progress = progress;
@@ -77,7 +80,7 @@ EstimateStats estimateSerially(RecordingReader& reader, const EstimatorParams& p
     if (calibration) applyCalibration(*calibration, sample);
     if (estimator.push(sample, row) && writer) {
       fillValues(row, values);
-      writer->row(row.t, values.data(), static_cast<int>(values.size()));
+      writer->row(row.t, values.data(), writer->columns() - 1);
     }
     if (++n % kCheckRows == 0) {
       if (cancel && cancel->load(std::memory_order_relaxed)) {
@@ -153,7 +156,7 @@ EstimateStats estimateOverlapped(RecordingReader& reader, const EstimatorParams&
         while (RowBatch* b = out.receive()) {
           for (std::size_t i = 0; i < b->count; ++i) {
             fillValues(b->rows[i], values);
-            writer->row(b->rows[i].t, values.data(), static_cast<int>(values.size()));
+            writer->row(b->rows[i].t, values.data(), writer->columns() - 1);
           }
           out.release(b);
         }
@@ -270,6 +273,16 @@ std::string formatReport(const EstimateStats& st) {
       s += "| " + std::string(kJointLabels[j]) + " | " + fixed(st.rmseDeg(j), 3) + " | " +
            fixed(st.peakDeg(j), 3) + " |\n";
     }
+  }
+  if (st.trunkTruthCount > 0) {
+    constexpr const char* kTrunkLabels[3] = {"trunk flexion", "trunk lateral bending",
+                                             "trunk axial rotation"};
+    if (!s.empty()) s += "\n";
+    s += "Error against the true trunk angles (" + std::to_string(st.trunkTruthCount) +
+         " samples):\n\n| trunk angle | RMSE (deg) | peak (deg) |\n|---|---:|---:|\n";
+    for (int i = 0; i < 3; ++i)
+      s += "| " + std::string(kTrunkLabels[i]) + " | " + fixed(st.trunkRmseDeg(i), 3) + " | " +
+           fixed(st.trunkPeakDeg(i), 3) + " |\n";
   }
   if (!st.opticalUsed) {
     if (!s.empty()) s += "\n";

@@ -102,6 +102,17 @@ std::string summaryLine(const EstimateStats& st, const EstimateOptions& opt, dou
   return s + "\n";
 }
 
+// The output's header: with the trunk's columns when the recording has a trunk IMU or an optical
+// shoulder. A recording that cannot be opened gets the plain header; reading it reports why.
+std::string estimateHeaderFor(const fs::path& input) {
+  try {
+    RecordingReader peek(input);
+    return hasTrunkOutput(peek.columns()) ? kEstimateTrunkHeader : kEstimateHeader;
+  } catch (const RecordingError&) {
+    return kEstimateHeader;
+  }
+}
+
 void requireFile(const fs::path& input) {
   std::error_code ec;
   if (!fs::exists(input, ec)) throw std::runtime_error(input.string() + ": no such file");
@@ -193,7 +204,7 @@ int estimateOne(const Args& a, std::ostream& out, std::ostream& err) {
   std::optional<Calibration> calibration;
   if (setup.calibration) calibration = readCalibration(*setup.calibration);
   std::optional<CsvOutput> writer;
-  if (outPath) writer.emplace(kEstimateHeader, *outPath);
+  if (outPath) writer.emplace(estimateHeaderFor(input), *outPath);
   // Progress for recordings of more than kProgressRows rows, judged by the bytes per row of the
   // first ones (the number of rows is known only at the end).
   std::optional<bool> showProgress;
@@ -291,7 +302,7 @@ int estimateBatch(const Args& a, std::ostream& out, std::ostream& err) {
   const BatchWork work = [&](std::size_t i, const BatchProgress& progress) {
     std::ostringstream log;
     std::optional<CsvOutput> writer;
-    if (outDir) writer.emplace(kEstimateHeader, csvOut[i]);
+    if (outDir) writer.emplace(estimateHeaderFor(inputs[i]), csvOut[i]);
     runs[i] = runFile(
         inputs[i], setup, calibration ? &*calibration : nullptr, writer ? &*writer : nullptr,
         [&](std::uint64_t, std::uint64_t bytes, std::uint64_t size) {

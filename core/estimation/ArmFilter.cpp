@@ -75,6 +75,13 @@ void ArmFilter<N>::reset() {
   m_opticalDisagrees = false;
   m_fitAt.reset();
   m_counters = {};
+  m_trunk.reset();
+  m_base = FrameState<double>{};
+  m_base.up = m_p.gUp;
+  m_up = m_p.gUp.normalized();
+  m_heading.reset();
+  m_geometry.reset();
+  if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);
 }
 
 template <int N>
@@ -102,7 +109,9 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   }
   m_lastSeenT = s.t;
 
-  ArmSample clean = sanitise(m_p.side == Side::Left ? mirrorSample(s) : s);
+  ArmSample in = m_p.side == Side::Left ? mirrorSample(s) : s;
+  applyTrunk(in);  // a moving trunk: its motion, and the optical data into frame 0
+  ArmSample clean = sanitise(in);
   const bool hasImu = clean.upperArm || clean.forearm;
   const bool hasOptical = clean.elbow || clean.wrist || clean.camWrist || clean.camElbow;
   if (!hasImu && !hasOptical) {
@@ -251,18 +260,31 @@ BlockList ArmFilter<N>::gather(const ArmSample& s) const {
       m_p.accelVariance *
           (gyro && m_t - m_t0 < m_p.gyroFirstSeconds ? m_p.gyroFirstAccelGain : 1.0) +
       (jerkModelled ? m_p.accelJerkVariance * m_jerkSquared : 0.0);
+  // A moving trunk adds the noise of its own readings (frame 0's rates and the shoulder's
+  // acceleration) and of its pose (optical data brought into frame 0).
+  const TrunkState* trunk = m_trunk && m_trunk->state().haveImu ? &m_trunk->state() : nullptr;
+  const double gyroVar = m_p.gyroVariance + (trunk ? trunk->baseGyroVariance : 0.0);
+  const double armAccelVar = accelVar + (trunk ? trunk->baseAccelVariance : 0.0);
   if (s.upperArm) {
-    if (gyro) b.add(kUaGyr, s.upperArm->gyr, m_p.gyroVariance);
-    b.add(kUaAcc, s.upperArm->acc, accelVar);
+    if (gyro) b.add(kUaGyr, s.upperArm->gyr, gyroVar);
+    b.add(kUaAcc, s.upperArm->acc, armAccelVar);
   }
   if (s.forearm) {
-    if (gyro) b.add(kFaGyr, s.forearm->gyr, m_p.gyroVariance);
-    b.add(kFaAcc, s.forearm->acc, accelVar);
+    if (gyro) b.add(kFaGyr, s.forearm->gyr, gyroVar);
+    b.add(kFaAcc, s.forearm->acc, armAccelVar);
   }
-  if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance);
-  if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance);
-  if (s.camWrist) b.add(kCamWrist, *s.camWrist, m_p.pixelVariance);
-  if (s.camElbow) b.add(kCamElbow, *s.camElbow, m_p.pixelVariance);
+  if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance + trunkPositionVariance(*s.elbow));
+  if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance + trunkPositionVariance(*s.wrist));
+  // A marker's pixel moves by about fx / depth per metre the point moves (depth: the camera's
+  // distance from the shoulder).
+  double pixelVar = m_p.pixelVariance;
+  if (m_trunk && m_p.camera) {
+    const double perMetre = m_p.camera->fx / std::max(0.5, m_p.camera->t.norm());
+    const double reach = m_p.geometry.l3 + m_p.geometry.l6;
+    pixelVar += perMetre * perMetre * trunkPositionVariance(Eigen::Vector3d(reach, 0.0, 0.0));
+  }
+  if (s.camWrist) b.add(kCamWrist, *s.camWrist, pixelVar);
+  if (s.camElbow) b.add(kCamElbow, *s.camElbow, pixelVar);
   return b;
 }
 
@@ -318,10 +340,10 @@ bool ArmFilter<N>::measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* ja
     derivatives = &m_prior->jacobian;
   } else if (jac) {
     // Optical rows (positions, and marker pixels through them) read the position rows.
-    predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, base, own,
+    predictReadings(m_p.geometry, m_base, m_p.model == MeasurementModel::AccelGyro, base, own,
                     &ownJac, b.anyOptical());
   } else {
-    predictBase<double>(m_p, base, own);
+    predictBase<double>(m_p, base, own, &m_base);
   }
   const Eigen::Matrix<double, kModelRows, 1>& all = *readings;
   const Eigen::Matrix<double, kModelRows, kBase>& allJac = *derivatives;
@@ -545,6 +567,7 @@ EstimatorParams recordingParams(const RecordingMeta& meta) {
   EstimatorParams p;
   p.geometry = meta.geometry;
   p.gUp = meta.gUp();
+  p.trunk = meta.trunk;
   p.side = meta.side;
   p.camera = meta.camera;
   return p;

@@ -137,6 +137,15 @@ struct EstimatorParams {
 
   bool useOptical = true;  ///< fuse Kinect elbow/wrist positions when a sample carries them
 
+  /// The sternum IMU's mounting (the sidecar's trunk block). Samples with a trunk IMU move frame
+  /// 0 with the thorax (docs/estimator.md, "Trunk"); without a mounting, trunk IMU readings are
+  /// refused and counted (EstimatorCounters::rejectedTrunk).
+  std::optional<TrunkMount> trunk;
+  /// Where the trunk turns (the hip pivot), in frame 0 at the start for a right arm (m): a
+  /// typical place 0.45 m below and 0.15 m medial to the shoulder centre. Refined from an optical
+  /// shoulder when one is seen.
+  Eigen::Vector3d hipPivot{0.45, 0.0, -0.15};
+
   /// What the sensors and an arm can produce; implausible blocks are refused before the filter
   /// sees them (core/estimation/SampleGate.h). maxReach is capped at 1.5 x (l3 + l6) + 0.2 m.
   PlausibilityLimits plausibility;
@@ -240,6 +249,16 @@ struct EstimatorParams {
 /// A's for Methods B and C with kinematicStartup, params.model otherwise.
 MeasurementModel startupModel(const EstimatorParams& params);
 
+/// The trunk as the filter sees it (with a trunk IMU or an optical shoulder).
+struct TrunkEstimate {
+  bool measured = false;  ///< a trunk IMU gives the angles; false: an optical shoulder alone
+  /// Flexion, lateral bending, axial rotation (rad, patient terms, core/kinematics/Trunk.h),
+  /// relative to the start pose; zero without a trunk IMU.
+  Eigen::Vector3d angles = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angleStd = Eigen::Vector3d::Zero();  ///< rad
+  Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();  ///< shoulder centre, world frame (m)
+};
+
 /// Output of the filter at one instant.
 struct JointEstimate {
   double t = 0.0;                           ///< s
@@ -268,6 +287,8 @@ struct EstimatorCounters {
   std::uint64_t rejectedOutliers = 0;   ///< pixels and positions dropped by the innovation gate
   std::uint64_t gatedPositions = 0;     ///< of which Kinect positions
   std::uint64_t cameraNotVisible = 0;   ///< marker pixels dropped: predicted point not in view
+  /// Trunk IMU readings refused: non-finite, beyond a sensor's range, or no mounting known.
+  std::uint64_t rejectedTrunk = 0;
 };
 
 enum class UpdateResult {
@@ -303,6 +324,8 @@ class JointEstimator {
   /// start-pose assumption alone.
   virtual bool headingFromStartPoseOnly() const = 0;
   virtual void reset() = 0;
+  /// The trunk, once a sample brought a trunk IMU reading or an optical shoulder.
+  virtual std::optional<TrunkEstimate> trunk() const { return std::nullopt; }
   /// Full state covariance (for tests and diagnostics).
   virtual Eigen::MatrixXd covariance() const = 0;
 };

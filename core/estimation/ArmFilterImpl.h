@@ -5,6 +5,7 @@
 //   ArmFilterHeading.cpp   the heading the IMUs cannot see: symmetry, heading-blind update, floor
 //   ArmFilterUkf.cpp       the unscented update
 //   ArmFilterRecovery.cpp  start, window fits, the consistency watch and recovery, limits
+//   ArmFilterTrunk.cpp     a moving trunk: frame 0's motion, optical data into frame 0
 // each instantiated there for both state sizes. docs/estimator.md explains the method.
 #pragma once
 
@@ -23,6 +24,7 @@
 #include "core/estimation/Heading.h"
 #include "core/estimation/MeasurementBlocks.h"
 #include "core/estimation/SampleGate.h"
+#include "core/estimation/TrunkTracker.h"
 #include "core/estimation/WindowFit.h"
 
 namespace armtrack::detail {
@@ -49,6 +51,7 @@ class ArmFilter final : public JointEstimator {
   explicit ArmFilter(const EstimatorParams& p)
       : m_p(mirrored(p)), m_model(p.model), m_up(m_p.gUp.normalized()), m_gate(gateLimits(m_p)) {
     if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);  // throws on a bad camera
+    m_base.up = m_p.gUp;
     reset();
   }
 
@@ -62,7 +65,14 @@ class ArmFilter final : public JointEstimator {
   // Everything below works on a right arm: a left arm's gravity direction is mirrored once here,
   // its samples on arrival.
   static EstimatorParams mirrored(EstimatorParams p) {
-    if (p.side == Side::Left) p.gUp = mirrorPoint(p.gUp);
+    if (p.side == Side::Left) {
+      p.gUp = mirrorPoint(p.gUp);
+      if (p.trunk) {
+        const Eigen::Matrix3d m = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+        p.trunk->imuPosition = mirrorPoint(p.trunk->imuPosition);
+        p.trunk->imuRotation = m * p.trunk->imuRotation * m;
+      }
+    }
     return p;
   }
 
@@ -78,6 +88,7 @@ class ArmFilter final : public JointEstimator {
   }
 
   JointEstimate estimate() const override;
+  std::optional<TrunkEstimate> trunk() const override;
 
   UpdateResult update(const ArmSample& s) override;
 
@@ -107,6 +118,10 @@ class ArmFilter final : public JointEstimator {
   void finishUpdate();
   static void symmetrise(Mat& p);
   static void mirrorLower(Mat& p);
+
+  // ArmFilterTrunk.cpp: a moving trunk
+  void applyTrunk(ArmSample& s);
+  double trunkPositionVariance(const Eigen::Vector3d& p) const;
 
   // ArmFilterOptical.cpp: the optical rows' gate and heading matching
   bool gateOptical(BlockList& b);
@@ -245,6 +260,9 @@ class ArmFilter final : public JointEstimator {
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
   SampleGate m_gate;
   EstimatorCounters m_counters;
+  // Frame 0's motion for the predicted readings: still ({0, 0, 0, gUp}) until a trunk IMU speaks.
+  FrameState<double> m_base;
+  std::optional<TrunkTracker> m_trunk;  // from the first trunk IMU reading or optical shoulder
 };
 
 }  // namespace armtrack::detail

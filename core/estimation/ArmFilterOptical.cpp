@@ -95,7 +95,7 @@ auto ArmFilter<N>::priorPrediction() -> const Prediction& {
   if (!m_prior) {
     m_prior.emplace();
     m_prior->at = m_x.template head<kBase>();
-    predictReadings(m_p.geometry, m_p.gUp, m_p.model == MeasurementModel::AccelGyro, m_prior->at,
+    predictReadings(m_p.geometry, m_base, m_p.model == MeasurementModel::AccelGyro, m_prior->at,
                     m_prior->readings, &m_prior->jacobian);
   }
   return *m_prior;

@@ -308,8 +308,8 @@ void ArmFilter<N>::handOver() {
     // Method B's body-acceleration states start from what the kinematics say they are.
     Eigen::Matrix<double, kModelRows, 1> with, without;
     const Vec15 base = m_x.template head<kBase>();
-    predictReadings(m_p.geometry, m_p.gUp, true, base, with, nullptr);
-    predictReadings(m_p.geometry, m_p.gUp, false, base, without, nullptr);
+    predictReadings(m_p.geometry, m_base, true, base, with, nullptr);
+    predictReadings(m_p.geometry, m_base, false, base, without, nullptr);
     m_x.template segment<3>(kBase) = (with - without).template segment<3>(3 * kUaAcc);
     m_x.template segment<3>(kBase + 3) = (with - without).template segment<3>(3 * kFaAcc);
   }

@@ -89,13 +89,15 @@ inline bool markerPixel(const PinholeCamera& camera, bool left, const Eigen::Vec
 }
 
 // Predicted readings of all six blocks for the 15-state base, templated for AutoDiff.
+// base: frame 0's motion (a still trunk when null: gravity p.gUp alone).
 template <typename T>
 void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
-                 Eigen::Matrix<T, kModelRows, 1>& out) {
+                 Eigen::Matrix<T, kModelRows, 1>& out, const FrameState<double>* base = nullptr) {
   const Eigen::Matrix<T, 5, 1> thdd = x.template segment<5>(0);
   const Eigen::Matrix<T, 5, 1> thd = x.template segment<5>(5);
   const Eigen::Matrix<T, 5, 1> th = x.template segment<5>(10);
-  const ArmKinematics<T> k = armKinematics<T>(p.geometry, th, thd, thdd, p.gUp);
+  const ArmKinematics<T> k = base ? armKinematics<T>(p.geometry, th, thd, thdd, *base)
+                                  : armKinematics<T>(p.geometry, th, thd, thdd, p.gUp);
   const bool bodyAccel = p.model == MeasurementModel::AccelGyro;
   out.template segment<3>(0) = k.upperImu.omega;
   out.template segment<3>(3) =

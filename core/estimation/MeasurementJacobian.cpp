@@ -203,6 +203,14 @@ void imuRows(const Frame& f, bool bodyAccel, int row, ModelReadings& h, ModelJac
 void predictReadings(const ArmGeometry& geo, const Eigen::Vector3d& gUp, bool bodyAccel,
                      const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
                      ModelJacobian* jac, bool positions) {
+  FrameState<double> base;
+  base.up = gUp;
+  predictReadings(geo, base, bodyAccel, x, h, jac, positions);
+}
+
+void predictReadings(const ArmGeometry& geo, const FrameState<double>& base, bool bodyAccel,
+                     const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
+                     ModelJacobian* jac, bool positions) {
   const auto thdd = x.segment<5>(0);
   const auto thd = x.segment<5>(5);
   const auto th = x.segment<5>(10);
@@ -215,8 +223,11 @@ void predictReadings(const ArmGeometry& geo, const Eigen::Vector3d& gUp, bool bo
 
   // One frame carried down the chain in place; the forearm's branch starts from a copy at
   // frame 3.
-  Frame f;
-  f.up.v = gUp;
+  Frame f;  // frame 0: still, or moving with the trunk (constants: no derivatives)
+  f.w.v = base.omega;
+  f.wd.v = base.omegaDot;
+  f.acc.v = base.accel;
+  f.up.v = base.up;
   jointRow<1>(f, c1, s1, thd(0), thdd(0), kHalfPi, bodyAccel);
   jointRow<2>(f, c2, s2, thd(1), thdd(1), kHalfPi, bodyAccel);
   jointRow<3>(f, c3, s3, thd(2), thdd(2), 0.0, bodyAccel);

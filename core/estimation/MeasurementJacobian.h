@@ -30,5 +30,9 @@ using ModelJacobian = Eigen::Matrix<double, kMeasurementModelRows, kMeasurementS
 void predictReadings(const ArmGeometry& geometry, const Eigen::Vector3d& gUp, bool bodyAccel,
                      const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
                      ModelJacobian* jac, bool positions = true);
+/// The same with frame 0 moving with the trunk: base is its motion (armKinematics' base).
+void predictReadings(const ArmGeometry& geometry, const FrameState<double>& base, bool bodyAccel,
+                     const Eigen::Matrix<double, kMeasurementStates, 1>& x, ModelReadings& h,
+                     ModelJacobian* jac, bool positions = true);
 
 }  // namespace armtrack

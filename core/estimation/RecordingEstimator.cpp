@@ -51,6 +51,8 @@ struct StreamingEstimator::Impl {
   double tStart = 0.0;                                         // time of the latest (re)start
   double tLastImu = std::numeric_limits<double>::quiet_NaN();  // the latest IMU sample's time
   double firstFrom = 0.0, firstTo = 0.0;  // the first window, before it is cut at the data's end
+  Eigen::Vector3d trunkSquared = Eigen::Vector3d::Zero();  // summed squared trunk errors (rad^2)
+  Eigen::Vector3d trunkPeak = Eigen::Vector3d::Zero();     // largest trunk errors (rad)
 };
 
 StreamingEstimator::StreamingEstimator(const EstimatorParams& params)
@@ -81,6 +83,18 @@ bool StreamingEstimator::push(const ArmSample& s, EstimateRow& row) {
   row.th = e.th;
   row.sd = e.thStd;
   row.status = statusOf(r);
+  row.trunk.setConstant(std::numeric_limits<double>::quiet_NaN());
+  row.trunkSd = row.trunk;
+  if (const std::optional<TrunkEstimate> trunk = d.filter->trunk(); trunk && trunk->measured) {
+    row.trunk = trunk->angles;
+    row.trunkSd = trunk->angleStd;
+    if (s.trueTrunk && e.t >= d.tStart + kStartupSeconds) {
+      const Eigen::Vector3d err = trunk->angles - *s.trueTrunk;
+      d.trunkSquared += err.cwiseAbs2();
+      d.trunkPeak = d.trunkPeak.cwiseMax(err.cwiseAbs());
+      ++m_st.trunkTruthCount;
+    }
+  }
   m_st.truthRows += s.trueAngles.has_value();
   if (s.trueAngles && e.t >= d.tStart + kStartupSeconds) {
     d.all.add(e.th, *s.trueAngles);
@@ -114,6 +128,10 @@ EstimateStats StreamingEstimator::stats() const {
   st.truthCount = d.all.count();
   st.rmseDeg = d.all.rmse() / kDeg;
   st.peakDeg = d.all.peak() / kDeg;
+  if (st.trunkTruthCount > 0) {
+    st.trunkRmseDeg = (d.trunkSquared / double(st.trunkTruthCount)).cwiseSqrt() / kDeg;
+    st.trunkPeakDeg = d.trunkPeak / kDeg;
+  }
   st.firstWindow.count = d.first.count();
   st.firstWindow.rmseDeg = d.first.rmse() / kDeg;
   st.lastWindow.count = last.count();

@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 
@@ -32,6 +33,16 @@ EstimatorParams estimatorParamsFor(const RecordingMeta& meta, const EstimateOpti
 /// and a status (kStatus* below). Also the header of `estimate --out`.
 inline constexpr const char* kEstimateHeader =
     "t,th0,th1,th2,th4,th5,sd_th0,sd_th1,sd_th2,sd_th4,sd_th5,status";
+/// The same with the trunk's angles (rad, patient terms, core/kinematics/Trunk.h) and their
+/// standard deviations, for a recording with a trunk IMU or an optical shoulder. Cells the
+/// recording cannot give (no trunk IMU) are empty.
+inline constexpr const char* kEstimateTrunkHeader =
+    "t,th0,th1,th2,th4,th5,sd_th0,sd_th1,sd_th2,sd_th4,sd_th5,status,"
+    "trunk_flex,trunk_lat,trunk_rot,sd_trunk_flex,sd_trunk_lat,sd_trunk_rot";
+/// Whether a recording with these columns gets the trunk columns.
+inline bool hasTrunkOutput(const RecordingColumns& c) {
+  return c.trunk || c.shoulder;
+}
 /// Status of an output row: 0 the readings were fused; 1 every reading of the row was refused as
 /// implausible and the estimate is a prediction; 2 the filter (re)started here; 3 the filter had
 /// lost the arm (or its start-up guess was poor) and re-initialised from the recent window. At 2
@@ -49,6 +60,10 @@ struct EstimateRow {
   JointVector th = JointVector::Zero();  ///< DH joint angles (rad)
   JointVector sd = JointVector::Zero();  ///< their standard deviations (rad)
   int status = kStatusFused;             ///< kStatus*
+  /// The trunk's angles and standard deviations (rad) when a trunk IMU measures them; NaN
+  /// otherwise.
+  Eigen::Vector3d trunk = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
+  Eigen::Vector3d trunkSd = Eigen::Vector3d::Constant(std::numeric_limits<double>::quiet_NaN());
 };
 
 /// Per-joint RMSE of the estimates whose time lies in [from, to].
@@ -75,8 +90,12 @@ struct EstimateStats {
   JointVector rmseDeg = JointVector::Zero();
   JointVector peakDeg = JointVector::Zero();
   std::size_t truthRows = 0;  ///< estimates that had true angles, start-up seconds included
-  WindowError firstWindow;    ///< the first 10 s after start-up (shorter for a short recording)
-  WindowError lastWindow;     ///< the last 10 s after the first window (may be empty)
+  /// Trunk angles against the recording's true ones (flexion, lateral, axial), after start-up.
+  std::size_t trunkTruthCount = 0;
+  Eigen::Vector3d trunkRmseDeg = Eigen::Vector3d::Zero();
+  Eigen::Vector3d trunkPeakDeg = Eigen::Vector3d::Zero();
+  WindowError firstWindow;  ///< the first 10 s after start-up (shorter for a short recording)
+  WindowError lastWindow;   ///< the last 10 s after the first window (may be empty)
 };
 
 /// Receives each output row, in time order, on the calling thread.

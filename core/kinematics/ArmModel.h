@@ -182,8 +182,7 @@ struct ArmKinematics {
 template <typename T>
 ArmKinematics<T> armKinematics(const ArmGeometry& geo, const Eigen::Matrix<T, 5, 1>& th,
                                const Eigen::Matrix<T, 5, 1>& thd,
-                               const Eigen::Matrix<T, 5, 1>& thdd,
-                               const FrameState<double>& base) {
+                               const Eigen::Matrix<T, 5, 1>& thdd, const FrameState<double>& base) {
   using std::cos;
   using std::sin;
   using Vec3 = Eigen::Matrix<T, 3, 1>;

@@ -5,9 +5,12 @@
 // rotation, in the patient's terms (the same numbers for a left and a right arm):
 //   flexion > 0 leans forward, lateral bending > 0 leans to the patient's right,
 //   axial rotation > 0 brings the right shoulder forward.
-// For a right arm (x0 down, y0 forward, z0 to the patient's right) the trunk's rotation to the
-// world is R = Rz(-flexion) Ry(lateral) Rx(-rotation); a left arm's frame 0 is the mirror image
-// (z0 reversed, core/kinematics/Side.h), in which R = Rz(-flexion) Ry(-lateral) Rx(rotation).
+// Both arms' own frame 0 have x0 down, y0 forward and z0 to the patient's right
+// (core/kinematics/Side.h), and there the trunk's rotation to the world is
+// R = Rz(-flexion) Ry(lateral) Rx(-rotation): trunkRotation(a) (Side::Right). The estimator and
+// the simulator work on a left arm as its mirror image, a virtual right arm whose z0 is reversed;
+// in that frame the same trunk turns by M R M (M = diag(1, 1, -1)), which is
+// Rz(-flexion) Ry(-lateral) Rx(rotation): trunkRotation(a, Side::Left).
 #pragma once
 
 #include <Eigen/Core>
@@ -23,7 +26,8 @@ namespace armtrack {
 using TrunkAngles = Eigen::Vector3d;
 
 /// The trunk's rotation to the world (columns: frame 0's axes as the trunk holds them, in world
-/// coordinates), in the side's frame-0 axes.
+/// coordinates): in an arm's own frame 0 with Side::Right, in a left arm's mirror image (the
+/// virtual right arm) with Side::Left.
 inline Eigen::Matrix3d trunkRotation(const TrunkAngles& a, Side side = Side::Right) {
   const double s = side == Side::Left ? -1.0 : 1.0;
   return (Eigen::AngleAxisd(-a(0), Eigen::Vector3d::UnitZ()) *

@@ -33,8 +33,8 @@ TEST(Trunk, SignsFollowThePatientsWords) {
   const Eigen::Matrix3d rot = trunkRotation({0, 0, 10 * kDeg});
   EXPECT_NEAR((rot * kPatientRight).dot(kForward), std::sin(10 * kDeg), 1e-12);
   EXPECT_NEAR((rot * kUp).dot(kUp), 1.0, 1e-12);
-  // A left arm's frame 0 has z0 pointing to the patient's right medially, i.e. the same world
-  // direction reversed in its coordinates: the same words give the mirrored rotation.
+  // A left arm estimated as its mirror image (z0 reversed): the same words give the mirrored
+  // rotation.
   for (const TrunkAngles& a :
        {TrunkAngles(20 * kDeg, 0, 0), TrunkAngles(0, 10 * kDeg, 0), TrunkAngles(0, 0, 10 * kDeg),
         TrunkAngles(15 * kDeg, -8 * kDeg, 6 * kDeg)}) {
