@@ -128,7 +128,8 @@ class TrunkMotionDetector {
   const TrunkMotionParams& params() const { return m_params; }
   void reset();
 
-  /// A cue's robust running average of a vector, relative to its start value (exposed for tests).
+ private:
+  /// A cue's robust running average of a vector, relative to its start value (docs/trunk.md).
   template <int N>
   class Level {
    public:
@@ -155,7 +156,6 @@ class TrunkMotionDetector {
     TrunkMotionParams m_p;
     double m_gate;
     std::deque<Entry> m_window, m_pending;
-    Vec m_sum = Vec::Zero();
     Vec m_refSum = Vec::Zero();
     int m_refCount = 0;
     std::optional<double> m_refStartT;
@@ -165,7 +165,6 @@ class TrunkMotionDetector {
     std::uint64_t m_outliers = 0;
   };
 
- private:
   void decide(double t, TrunkMotionStatus& s);
 
   TrunkMotionParams m_params;
