@@ -165,6 +165,13 @@ TEST(TrunkChunks, DamagedTrunkChunksAreRefused) {
   const Recording rec = trunkSession(dir.filePath("t.csv").toStdString());
   const std::vector<ArmSample> head(rec.samples.begin(), rec.samples.begin() + 300);
   const std::string frame = ChunkCodec::encode(head);
+  if (std::getenv("ARMTRACK_WRITE_GOLDEN")) {  // the fuzz_chunk seed with the trunk's groups
+    const std::vector<ArmSample> few(rec.samples.begin(), rec.samples.begin() + 24);
+    const std::string seed = ChunkCodec::encode(few);
+    std::ofstream(fs::path(ARMTRACK_SOURCE_DIR) / "tests/fuzz/corpus/fuzz_chunk/atc3-trunk",
+                  std::ios::binary)
+        << '\x02' << static_cast<char>(few.size()) << '\x00' << seed;
+  }
   // Cut short, anywhere.
   for (std::size_t cut : {std::size_t{0}, std::size_t{10}, frame.size() / 2, frame.size() - 1})
     EXPECT_THROW(ChunkCodec::decode(frame.substr(0, cut), head.size()), std::runtime_error) << cut;
