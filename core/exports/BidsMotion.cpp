@@ -54,10 +54,24 @@ void addXyz(System& s, const std::string& prefix, const std::string& type, const
         {prefix + "_" + axis, axis, type, point, units, frame, what + ", " + axis + " axis"});
 }
 
+bool hasTrunkImu(const Recording& rec) {
+  return std::any_of(rec.samples.begin(), rec.samples.end(),
+                     [](const ArmSample& a) { return a.trunk.has_value(); });
+}
+
+bool hasShoulder(const Recording& rec) {
+  return std::any_of(rec.samples.begin(), rec.samples.end(),
+                     [](const ArmSample& a) { return a.shoulder.has_value(); });
+}
+
 System imuSystem(const Recording& rec, Side side) {
   System s;
   s.label = "imu";
-  s.trackingSystemName = "ArmTrack IMUs (upper arm and forearm)";
+  // The sternum's channels only when the session had a trunk IMU: an export without one keeps
+  // its files of before.
+  const bool trunk = hasTrunkImu(rec);
+  s.trackingSystemName = trunk ? "ArmTrack IMUs (upper arm, forearm and sternum)"
+                               : "ArmTrack IMUs (upper arm and forearm)";
   const std::string sw = sideWord(side);
   addXyz(s, "upperarm_gyro", "GYRO", sw + "UpperArm", "rad/s", "sensor",
          "upper-arm IMU angular velocity");
@@ -67,14 +81,23 @@ System imuSystem(const Recording& rec, Side side) {
          "forearm IMU angular velocity");
   addXyz(s, "forearm_acc", "ACCEL", sw + "Forearm", "m/s^2", "sensor",
          "forearm IMU specific force");
-  for (std::size_t i = 0; i < rec.samples.size(); ++i)
-    if (rec.samples[i].hasImu() && std::isfinite(rec.samples[i].t)) s.rows.push_back(i);
+  if (trunk) {
+    addXyz(s, "trunk_gyro", "GYRO", "Sternum", "rad/s", "sensor",
+           "trunk (sternum) IMU angular velocity");
+    addXyz(s, "trunk_acc", "ACCEL", "Sternum", "m/s^2", "sensor",
+           "trunk (sternum) IMU specific force");
+  }
+  for (std::size_t i = 0; i < rec.samples.size(); ++i) {
+    const ArmSample& a = rec.samples[i];
+    if ((a.hasImu() || a.trunk) && std::isfinite(a.t)) s.rows.push_back(i);
+  }
   s.time = [&rec](std::size_t i) { return rec.samples[i].t; };
-  s.fill = [&rec](std::size_t i, std::vector<double>& v) {
+  s.fill = [&rec, trunk](std::size_t i, std::vector<double>& v) {
     const ArmSample& a = rec.samples[i];
     std::fill(v.begin(), v.end(), NAN);
     int k = 0;
-    for (const auto* imu : {&a.upperArm, &a.forearm}) {
+    for (const auto* imu : {&a.upperArm, &a.forearm, &a.trunk}) {
+      if (imu == &a.trunk && !trunk) break;
       if (imu->has_value())
         for (int j = 0; j < 3; ++j) {
           v[k + j] = (*imu)->gyr(j);
@@ -86,24 +109,35 @@ System imuSystem(const Recording& rec, Side side) {
   return s;
 }
 
+/// Whether the recording's optical positions are in the world frame (docs/recording-format.md,
+/// "Trunk": with a trunk IMU or an optical shoulder) rather than the shoulder frame.
+bool worldFrame(const Recording& rec) {
+  return hasTrunkImu(rec) || hasShoulder(rec) || rec.meta.trunk.has_value();
+}
+
 System opticalSystem(const Recording& rec, Side side) {
   System s;
   s.label = "optical";
-  s.trackingSystemName = "Optical elbow and wrist positions (Kinect)";
+  const bool shoulder = hasShoulder(rec);
+  s.trackingSystemName = shoulder ? "Optical shoulder, elbow and wrist positions (Kinect)"
+                                  : "Optical elbow and wrist positions (Kinect)";
   const std::string sw = sideWord(side);
-  addXyz(s, "elbow_pos", "POS", sw + "Elbow", "m", "shoulder", "elbow position");
-  addXyz(s, "wrist_pos", "POS", sw + "Wrist", "m", "shoulder", "wrist position");
+  const std::string frame = worldFrame(rec) ? "world" : "shoulder";
+  addXyz(s, "elbow_pos", "POS", sw + "Elbow", "m", frame, "elbow position");
+  addXyz(s, "wrist_pos", "POS", sw + "Wrist", "m", frame, "wrist position");
+  if (shoulder) addXyz(s, "shoulder_pos", "POS", sw + "Shoulder", "m", frame, "shoulder position");
   for (std::size_t i = 0; i < rec.samples.size(); ++i) {
     const ArmSample& a = rec.samples[i];
-    if ((a.elbow || a.wrist) && std::isfinite(a.t)) s.rows.push_back(i);
+    if ((a.elbow || a.wrist || a.shoulder) && std::isfinite(a.t)) s.rows.push_back(i);
   }
   s.time = [&rec](std::size_t i) { return rec.samples[i].t; };
-  s.fill = [&rec](std::size_t i, std::vector<double>& v) {
+  s.fill = [&rec, shoulder](std::size_t i, std::vector<double>& v) {
     const ArmSample& a = rec.samples[i];
     std::fill(v.begin(), v.end(), NAN);
     for (int j = 0; j < 3; ++j) {
       if (a.elbow) v[j] = (*a.elbow)(j);
       if (a.wrist) v[3 + j] = (*a.wrist)(j);
+      if (shoulder && a.shoulder) v[6 + j] = (*a.shoulder)(j);
     }
   };
   return s;
@@ -451,10 +485,15 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     if (s.label == "imu")
       levels["sensor"]["Description"] =
           "the IMU's own axes as the sensor reports them (for a left arm, as recorded)";
-    if (s.label == "optical")
+    if (s.label == "optical" && s.channels.front().referenceFrame == "shoulder")
       levels["shoulder"]["Description"] =
           "ArmTrack's shoulder frame, fixed to the trunk with its origin at the shoulder joint: "
           "x down, y forward, z to the patient's right (docs/arm-model.md)";
+    if (s.label == "optical" && s.channels.front().referenceFrame == "world")
+      levels["world"]["Description"] =
+          "ArmTrack's world frame: the shoulder frame as it was with the trunk upright at the "
+          "start (origin at the shoulder joint then; x down, y forward, z to the patient's "
+          "right), fixed while the trunk moves (docs/recording-format.md, \"Trunk\")";
     if (!levels.empty()) {
       cj["reference_frame"]["Description"] = "frame the channel's axes belong to";
       cj["reference_frame"]["Levels"] = levels;

@@ -29,6 +29,18 @@ struct TrunkMount {
   Eigen::Matrix3d imuRotation = Eigen::Matrix3d::Identity();
 };
 
+/// The mounting a reader assumes for a recording with a trunk IMU (tr_* columns) whose sidecar has
+/// no "trunk" block (with a warning, docs/recording-format.md): the sensor flat on the middle of
+/// the sternum, its axes those of frame 0 (x down the sternum, y out of the chest, z to the
+/// patient's right), 0.10 m below, 0.06 m in front of and 0.18 m medial to the shoulder centre
+/// (z0 points to the patient's right for both arms, so medial is -z for a right arm, +z for a
+/// left one).
+inline TrunkMount defaultTrunkMount(Side side) {
+  TrunkMount m;
+  m.imuPosition = Eigen::Vector3d(0.10, 0.06, side == Side::Left ? 0.18 : -0.18);
+  return m;
+}
+
 /// The sidecar's contents.
 struct RecordingMeta {
   ArmGeometry geometry;
@@ -105,8 +117,8 @@ struct RecordingLimits {
   /// after, must hold no control byte other than tab, CR and LF (a NUL says binary, or a sparse
   /// file's hole).
   static constexpr std::size_t kSniffBytes = std::size_t{64} << 10;
-  /// The longest line (bytes, without its line end): 64 KiB. The widest valid row, 33 numbers, is
-  /// under 1 KiB.
+  /// The longest line (bytes, without its line end): 64 KiB. The widest valid row, 45 numbers, is
+  /// about 1 KiB.
   static constexpr std::size_t kMaxLineBytes = std::size_t{64} << 10;
   /// The longest span of a recording (s): 12 h. A row more than this after the first row is
   /// refused (a clock jump, a corrupted time), so a recording's analysis stays bounded.
@@ -240,7 +252,7 @@ class RecordingWriter : public RecordingSink {
   void writeAll(std::string_view data, std::size_t& written);
 
   std::filesystem::path m_path;
-  std::array<bool, 10> m_present{};
+  std::array<bool, 14> m_present{};
   std::string m_buf;
   int m_fd = -1;
   double m_prevT;
@@ -263,6 +275,8 @@ struct MetaLimits {
   static constexpr double kMaxPrincipal = 1e6;       ///< |cx|, |cy| at most (pixels)
   static constexpr double kMaxCameraDistance = 100;  ///< |t| at most (m)
   static constexpr double kRotationTolerance = 1e-3;  ///< max |R^T R - I|, as PinholeCamera
+  /// |trunk.imu_position| at most (m): a sternum IMU is within about 0.3 m of either shoulder.
+  static constexpr double kMaxTrunkImuDistance = 1.0;
 };
 
 /// The first value of meta that is not finite or outside MetaLimits, as a message that starts

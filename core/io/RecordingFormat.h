@@ -26,14 +26,18 @@ enum Group {
   kUaAcc,
   kFaGyr,
   kFaAcc,
+  kTrGyr,
+  kTrAcc,
   kElbow,
   kWrist,
+  kShoulder,
   kCamWrist,
   kCamElbow,
   kTruth,
+  kTrueTrunk,
   kEstimate
 };
-inline constexpr int kNumGroups = 10;
+inline constexpr int kNumGroups = 14;
 
 struct GroupDef {
   std::string_view label;  // for messages
@@ -42,20 +46,36 @@ struct GroupDef {
   int firstSlot;
 };
 
-// The fixed write order; also the slot layout of a parsed row.
+// The fixed write order; also the slot layout of a parsed row. A recording without the trunk's
+// groups (tr_*, shoulder_*, true_trunk_*) has no columns for them, so its bytes are those of
+// the format before they existed (tests/data/recording).
 inline constexpr std::array<GroupDef, kNumGroups> kGroups{{
     {"upper-arm gyroscope", 3, {"ua_gx", "ua_gy", "ua_gz"}, 1},
     {"upper-arm accelerometer", 3, {"ua_ax", "ua_ay", "ua_az"}, 4},
     {"forearm gyroscope", 3, {"fa_gx", "fa_gy", "fa_gz"}, 7},
     {"forearm accelerometer", 3, {"fa_ax", "fa_ay", "fa_az"}, 10},
-    {"elbow position", 3, {"elbow_x", "elbow_y", "elbow_z"}, 13},
-    {"wrist position", 3, {"wrist_x", "wrist_y", "wrist_z"}, 16},
-    {"wrist marker pixel", 2, {"cam_wrist_u", "cam_wrist_v"}, 19},
-    {"elbow marker pixel", 2, {"cam_elbow_u", "cam_elbow_v"}, 21},
-    {"true joint angles", 5, {"true_th0", "true_th1", "true_th2", "true_th4", "true_th5"}, 23},
-    {"estimated joint angles", 5, {"est_th0", "est_th1", "est_th2", "est_th4", "est_th5"}, 28},
+    {"trunk (sternum) gyroscope", 3, {"tr_gx", "tr_gy", "tr_gz"}, 13},
+    {"trunk (sternum) accelerometer", 3, {"tr_ax", "tr_ay", "tr_az"}, 16},
+    {"elbow position", 3, {"elbow_x", "elbow_y", "elbow_z"}, 19},
+    {"wrist position", 3, {"wrist_x", "wrist_y", "wrist_z"}, 22},
+    {"shoulder position", 3, {"shoulder_x", "shoulder_y", "shoulder_z"}, 25},
+    {"wrist marker pixel", 2, {"cam_wrist_u", "cam_wrist_v"}, 28},
+    {"elbow marker pixel", 2, {"cam_elbow_u", "cam_elbow_v"}, 30},
+    {"true joint angles", 5, {"true_th0", "true_th1", "true_th2", "true_th4", "true_th5"}, 32},
+    {"true trunk angles", 3, {"true_trunk_flex", "true_trunk_lat", "true_trunk_rot"}, 37},
+    {"estimated joint angles", 5, {"est_th0", "est_th1", "est_th2", "est_th4", "est_th5"}, 40},
 }};
-inline constexpr int kNumSlots = 33;
+inline constexpr int kNumSlots = 45;
+
+constexpr bool slotsContiguous() {
+  int next = 1;
+  for (const GroupDef& g : kGroups) {
+    if (g.firstSlot != next) return false;
+    next += g.size;
+  }
+  return next == kNumSlots;
+}
+static_assert(slotsContiguous(), "kGroups' slots must follow one another");
 
 using GroupSet = std::array<bool, kNumGroups>;
 
@@ -66,7 +86,6 @@ inline std::string osReason(int err) {
 inline std::string inQuotes(std::string_view s) {
   return "\"" + std::string(s) + "\"";
 }
-
 
 inline std::string formatDouble(double v) {
   char buf[32];

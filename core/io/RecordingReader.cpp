@@ -122,6 +122,7 @@ class CsvParser {
     for (int g = 0; g < kNumGroups; ++g) present[g] = groupPresent(g, filled, lineNo);
     checkImu(kUaGyr, kUaAcc, present, lineNo);
     checkImu(kFaGyr, kFaAcc, present, lineNo);
+    checkImu(kTrGyr, kTrAcc, present, lineNo);
 
     s = ArmSample{};
     s.t = t;
@@ -135,8 +136,11 @@ class CsvParser {
     };
     if (present[kUaGyr]) s.upperArm = ImuReading{vec3(kUaGyr), vec3(kUaAcc)};
     if (present[kFaGyr]) s.forearm = ImuReading{vec3(kFaGyr), vec3(kFaAcc)};
+    if (present[kTrGyr]) s.trunk = ImuReading{vec3(kTrGyr), vec3(kTrAcc)};
     if (present[kElbow]) s.elbow = vec3(kElbow);
     if (present[kWrist]) s.wrist = vec3(kWrist);
+    if (present[kShoulder]) s.shoulder = vec3(kShoulder);
+    if (present[kTrueTrunk]) s.trueTrunk = vec3(kTrueTrunk);
     if (present[kCamWrist]) s.camWrist = vec2(kCamWrist);
     if (present[kCamElbow]) s.camElbow = vec2(kCamElbow);
     auto joints = [&](Group g) {
@@ -332,12 +336,28 @@ RecordingReader::RecordingReader(const fs::path& csvPath) {
   const CsvParser& p = m_impl->parser;
   m_columns.upperArm = p.hasGroup(kUaGyr);
   m_columns.forearm = p.hasGroup(kFaGyr);
+  m_columns.trunk = p.hasGroup(kTrGyr);
   m_columns.elbow = p.hasGroup(kElbow);
   m_columns.wrist = p.hasGroup(kWrist);
+  m_columns.shoulder = p.hasGroup(kShoulder);
   m_columns.camWrist = p.hasGroup(kCamWrist);
   m_columns.camElbow = p.hasGroup(kCamElbow);
   m_columns.truth = p.hasGroup(kTruth);
+  m_columns.trueTrunk = p.hasGroup(kTrueTrunk);
   m_columns.estimate = p.hasGroup(kEstimate);
+  if (m_columns.trunk && !m_meta.trunk) {
+    // A trunk IMU needs its mounting; without one the recording is still read (docs/
+    // recording-format.md, "Trunk"), with the usual mounting and a warning saying what to add.
+    m_meta.trunk = defaultTrunkMount(m_meta.side);
+    m_warnings.push_back(
+        "the recording has a trunk IMU (tr_* columns) but its sidecar " +
+        inQuotes(sidecarPath(csvPath).string()) +
+        " has no \"trunk\" block; assuming the sensor flat on the middle of the sternum with "
+        "frame 0's axes (\"imu_position\" [0.1, 0.06, " +
+        std::string(m_meta.side == Side::Left ? "0.18" : "-0.18") +
+        "], \"imu_rotation\" the identity): add the block with the sensor's mounting for "
+        "accurate trunk angles");
+  }
 }
 
 RecordingReader::~RecordingReader() = default;

@@ -44,11 +44,14 @@ GroupSet groupsOf(const ArmSample& s) {
   GroupSet g{};
   g[kUaGyr] = g[kUaAcc] = s.upperArm.has_value();
   g[kFaGyr] = g[kFaAcc] = s.forearm.has_value();
+  g[kTrGyr] = g[kTrAcc] = s.trunk.has_value();
   g[kElbow] = s.elbow.has_value();
   g[kWrist] = s.wrist.has_value();
+  g[kShoulder] = s.shoulder.has_value();
   g[kCamWrist] = s.camWrist.has_value();
   g[kCamElbow] = s.camElbow.has_value();
   g[kTruth] = s.trueAngles.has_value();
+  g[kTrueTrunk] = s.trueTrunk.has_value();
   g[kEstimate] = s.estimate.has_value();
   return g;
 }
@@ -61,11 +64,14 @@ GroupSet groupsOf(const RecordingColumns& c) {
   GroupSet g{};
   g[kUaGyr] = g[kUaAcc] = c.upperArm;
   g[kFaGyr] = g[kFaAcc] = c.forearm;
+  g[kTrGyr] = g[kTrAcc] = c.trunk;
   g[kElbow] = c.elbow;
   g[kWrist] = c.wrist;
+  g[kShoulder] = c.shoulder;
   g[kCamWrist] = c.camWrist;
   g[kCamElbow] = c.camElbow;
   g[kTruth] = c.truth;
+  g[kTrueTrunk] = c.trueTrunk;
   g[kEstimate] = c.estimate;
   return g;
 }
@@ -74,11 +80,14 @@ RecordingColumns columnsOf(const GroupSet& g) {
   RecordingColumns c;
   c.upperArm = g[kUaGyr];
   c.forearm = g[kFaGyr];
+  c.trunk = g[kTrGyr];
   c.elbow = g[kElbow];
   c.wrist = g[kWrist];
+  c.shoulder = g[kShoulder];
   c.camWrist = g[kCamWrist];
   c.camElbow = g[kCamElbow];
   c.truth = g[kTruth];
+  c.trueTrunk = g[kTrueTrunk];
   c.estimate = g[kEstimate];
   return c;
 }
@@ -97,11 +106,17 @@ std::array<double, kNumSlots> slotsOf(const ArmSample& s) {
     put(kFaGyr, s.forearm->gyr);
     put(kFaAcc, s.forearm->acc);
   }
+  if (s.trunk) {
+    put(kTrGyr, s.trunk->gyr);
+    put(kTrAcc, s.trunk->acc);
+  }
   if (s.elbow) put(kElbow, *s.elbow);
   if (s.wrist) put(kWrist, *s.wrist);
+  if (s.shoulder) put(kShoulder, *s.shoulder);
   if (s.camWrist) put(kCamWrist, *s.camWrist);
   if (s.camElbow) put(kCamElbow, *s.camElbow);
   if (s.trueAngles) put(kTruth, *s.trueAngles);
+  if (s.trueTrunk) put(kTrueTrunk, *s.trueTrunk);
   if (s.estimate) put(kEstimate, *s.estimate);
   return v;
 }

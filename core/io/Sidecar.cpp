@@ -162,6 +162,27 @@ std::string metaProblem(const RecordingMeta& meta) {
                        formatDouble(L::kMaxG) + " m/s^2");
   if (!meta.up.allFinite() || !(std::abs(meta.up.norm() - 1.0) <= 0.5))
     return "\"up\" must be a unit vector (pointing up in the shoulder frame)";
+  if (meta.trunk) {
+    const TrunkMount& m = *meta.trunk;
+    if (!m.imuPosition.allFinite())
+      return "\"trunk.imu_position\" holds a value that is not a finite number";
+    if (!m.imuRotation.allFinite())
+      return "\"trunk.imu_rotation\" holds a value that is not a finite number";
+    if (!(m.imuPosition.norm() <= L::kMaxTrunkImuDistance))
+      return outside("trunk.imu_position", m.imuPosition.norm(), "m from the shoulder centre",
+                     "a sternum IMU sits within " + formatDouble(L::kMaxTrunkImuDistance) +
+                         " m of the shoulder (about 0.2-0.3 m); is it in metres, relative to "
+                         "the shoulder centre?");
+    const Eigen::Matrix3d& r = m.imuRotation;
+    const double orthoError =
+        (r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (!(orthoError <= L::kRotationTolerance && r.determinant() > 0.0))
+      return "\"trunk.imu_rotation\" is not a rotation matrix (orthonormal to " +
+             formatDouble(L::kRotationTolerance) +
+             ", determinant +1; 9 numbers row by row, its columns the IMU's axes in frame 0): "
+             "|R^T R - I| reaches " +
+             formatDouble(orthoError) + ", det R = " + formatDouble(r.determinant());
+  }
   if (!meta.camera) return {};
   const CameraParams& c = *meta.camera;
   const std::pair<const char*, double> cam[] = {
@@ -228,6 +249,15 @@ std::string sidecarText(const RecordingMeta& meta) {
                    {"R", r},
                    {"t", {c.t.x(), c.t.y(), c.t.z()}}};
   }
+  if (meta.trunk) {  // only then: a sidecar without a trunk keeps its bytes of before
+    const TrunkMount& m = *meta.trunk;
+    OJson r = OJson::array();
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 3; ++k) r.push_back(m.imuRotation(i, k));
+    }
+    j["trunk"] = {{"imu_position", {m.imuPosition.x(), m.imuPosition.y(), m.imuPosition.z()}},
+                  {"imu_rotation", r}};
+  }
   return j.dump(2) + "\n";
 }
 
@@ -243,6 +273,8 @@ void checkMetaWritable(const std::string& file, const RecordingMeta& meta) {
          std::isfinite(c.cy) && c.R.allFinite() && c.t.allFinite() &&
          std::all_of(c.dist.begin(), c.dist.end(), [](double d) { return std::isfinite(d); });
   }
+  if (meta.trunk)
+    ok = ok && meta.trunk->imuPosition.allFinite() && meta.trunk->imuRotation.allFinite();
   if (!ok) throw RecordingError(file, 0, 0, "cannot write non-finite values in the sidecar");
   if (const std::string why = metaProblem(meta); !why.empty())
     throw RecordingError(file, 0, 0, "cannot write the sidecar: " + why);
@@ -343,6 +375,28 @@ RecordingMeta sidecarFromJson(const std::string& file, Json& j) {
       cam.t = Eigen::Vector3d(t[0], t[1], t[2]);
     }
     meta.camera = cam;
+  }
+  if (j.contains("trunk")) {
+    const Json& t = j["trunk"];
+    if (!t.is_object())
+      metaFail(file,
+               "\"trunk\" must be an object {\"imu_position\": [x, y, z], \"imu_rotation\": "
+               "[9 numbers]}, got " +
+                   t.dump());
+    TrunkMount mount;
+    for (const char* key : {"imu_position", "imu_rotation"}) {
+      if (!t.contains(key))
+        metaFail(file, std::string("missing \"trunk.") + key +
+                           "\": the trunk block needs both the sternum IMU's position "
+                           "(imu_position, m) and its axes (imu_rotation, 9 numbers row by row)");
+    }
+    const auto p = jsonNumbers<3>(file, t["imu_position"], "trunk.imu_position");
+    mount.imuPosition = Eigen::Vector3d(p[0], p[1], p[2]);
+    const auto r = jsonNumbers<9>(file, t["imu_rotation"], "trunk.imu_rotation");
+    for (int i = 0; i < 3; ++i) {
+      for (int k = 0; k < 3; ++k) mount.imuRotation(i, k) = r[3 * i + k];
+    }
+    meta.trunk = mount;
   }
   if (j.contains("side")) {
     if (!j["side"].is_string()) metaFail(file, "\"side\" must be \"left\" or \"right\"");

@@ -23,10 +23,16 @@ constexpr std::uint32_t kMagic = 0x31435441;   // "ATC1" little-endian
 constexpr std::uint32_t kMagic2 = 0x32435441;  // "ATC2" little-endian
 constexpr std::uint32_t kMagic3 = 0x33435441;  // "ATC3" little-endian
 constexpr std::uint32_t kMaxRows = 1u << 24;   // a chunk holds about a second; this is far beyond
-constexpr int kGroups = 8;
+constexpr int kGroups = 11;
+// Groups 0-7 are in every chunk (their columns, possibly empty, always follow the time); the
+// trunk's groups (8: sternum IMU, 9: optical shoulder, 10: true trunk angles, issue 26) have
+// columns only in a chunk with a row that has them. A chunk without them is therefore the same
+// bytes as before they existed (an older version reads it), and a chunk written before them
+// decodes unchanged; an older version refuses a chunk with them ("unknown sensor group").
+constexpr int kAlwaysGroups = 8;
 
 // The sensor groups of an ArmSample in a fixed order, and their number of doubles.
-constexpr std::array<int, kGroups> kGroupSize{6, 6, 3, 3, 2, 2, 5, 5};
+constexpr std::array<int, kGroups> kGroupSize{6, 6, 3, 3, 2, 2, 5, 5, 6, 3, 3};
 
 std::uint16_t presenceOf(const ArmSample& s) {
   std::uint16_t m = 0;
@@ -38,6 +44,9 @@ std::uint16_t presenceOf(const ArmSample& s) {
   if (s.camElbow) m |= 1u << 5;
   if (s.trueAngles) m |= 1u << 6;
   if (s.estimate) m |= 1u << 7;
+  if (s.trunk) m |= 1u << 8;
+  if (s.shoulder) m |= 1u << 9;
+  if (s.trueTrunk) m |= 1u << 10;
   return m;
 }
 
@@ -70,8 +79,18 @@ void valuesOf(const ArmSample& s, int g, double* v) {
     case 6:
       put(*s.trueAngles, 0);
       break;
-    default:
+    case 7:
       put(*s.estimate, 0);
+      break;
+    case 8:
+      put(s.trunk->gyr, 0);
+      put(s.trunk->acc, 3);
+      break;
+    case 9:
+      put(*s.shoulder, 0);
+      break;
+    default:
+      put(*s.trueTrunk, 0);
       break;
   }
 }
@@ -111,11 +130,29 @@ void setValues(ArmSample& s, int g, const double* v) {
       s.trueAngles.emplace();
       get(*s.trueAngles, 0);
       break;
-    default:
+    case 7:
       s.estimate.emplace();
       get(*s.estimate, 0);
       break;
+    case 8:
+      s.trunk.emplace();
+      get(s.trunk->gyr, 0);
+      get(s.trunk->acc, 3);
+      break;
+    case 9:
+      s.shoulder.emplace();
+      get(*s.shoulder, 0);
+      break;
+    default:
+      s.trueTrunk.emplace();
+      get(*s.trueTrunk, 0);
+      break;
   }
+}
+
+// Whether group g has columns in a chunk whose rows have these presence masks (kAlwaysGroups).
+bool hasColumns(int g, std::uint16_t anyPresence) {
+  return g < kAlwaysGroups || ((anyPresence >> g) & 1u);
 }
 
 // Appends words as byte planes: every word's byte 0, then every byte 1, ...
@@ -352,8 +389,10 @@ std::string content(std::span<const ArmSample> samples, std::uint32_t magic,
   appendPlanes(raw, std::vector<std::uint32_t>{static_cast<std::uint32_t>(n)});
   std::vector<std::uint16_t> presence(n);
   std::vector<double> times(n);
+  std::uint16_t any = 0;
   for (std::size_t i = 0; i < n; ++i) {
     presence[i] = presenceOf(samples[i]);
+    any |= presence[i];
     times[i] = samples[i].t;
   }
   appendPlanes(raw, presence);
@@ -361,6 +400,7 @@ std::string content(std::span<const ArmSample> samples, std::uint32_t magic,
   std::vector<double> values;
   double v[6];
   for (int g = 0; g < kGroups; ++g) {
+    if (!hasColumns(g, any)) continue;
     for (int c = 0; c < kGroupSize[g]; ++c) {
       values.clear();
       for (std::size_t i = 0; i < n; ++i) {
@@ -411,11 +451,14 @@ std::vector<ArmSample> parse(const std::string& raw, std::uint32_t magic,
   const auto presence = in.planes<std::uint16_t>(n);
   const auto times = readColumn(in, n, bits, version);
   std::vector<ArmSample> samples(n);
+  std::uint16_t any = 0;
   for (std::size_t i = 0; i < n; ++i) {
     if (presence[i] >> kGroups) throw std::runtime_error("unknown sensor group in a row");
     samples[i].t = times[i];
+    any |= presence[i];
   }
   for (int g = 0; g < kGroups; ++g) {
+    if (!hasColumns(g, any)) continue;
     std::size_t count = 0;
     for (std::size_t i = 0; i < n; ++i) count += (presence[i] >> g) & 1u;
     std::vector<std::vector<double>> cols;
@@ -521,9 +564,10 @@ std::vector<ArmSample> ChunkCodec::decode(const std::string& frame, std::uint64_
                                           std::string_view codec) {
   // Header + presence + time + at most every value of every row (9 bytes each at most, plus a
   // few per column): a bound that a forged size field cannot push past. A lattice column may
-  // take 18 bytes a value (count and distance, each stored whole) and 11 of its own.
-  const std::uint64_t bound = 8 + 34 * 3 + expectedRows * (2 + 9 * 33);
-  const std::uint64_t bound3 = 8 + 34 * 11 + expectedRows * (2 + 18 * 34);
+  // take 18 bytes a value (count and distance, each stored whole) and 11 of its own. 46 columns:
+  // the time and 45 values a row (33 before the trunk's groups).
+  const std::uint64_t bound = 8 + 46 * 3 + expectedRows * (2 + 9 * 45);
+  const std::uint64_t bound3 = 8 + 46 * 11 + expectedRows * (2 + 18 * 46);
   if (codec == kLegacyName)
     return parse(decompress(frame.data(), frame.size(), bound, expectedRows), kMagic, expectedRows,
                  nullptr, 1);

@@ -13,7 +13,8 @@ namespace armtrack::storage {
 
 /// Encodes and decodes one recording chunk (docs/storage.md, "Recording chunks"). Every double is
 /// kept bit for bit: the decoded samples equal the encoded ones exactly. The layout is columnar
-/// (time, then each sensor value across the rows that have it); a column of short decimals is
+/// (time, then each sensor value across the rows that have it; the trunk's groups only in a chunk
+/// that has them, so a chunk without them is the bytes of before); a column of short decimals is
 /// kept as decimal exponents and significand steps, a column of counts times a step (a real
 /// sensor's converted readings, ATC3) as predicted counts plus each value's distance in doubles
 /// from count x step, any other (ATC2 on) as the residuals of a per-column predictor on the

@@ -26,7 +26,8 @@ std::string text(const QString& s) {
 int maskOf(const RecordingColumns& c) {
   return (c.upperArm ? 1 : 0) | (c.forearm ? 2 : 0) | (c.elbow ? 4 : 0) | (c.wrist ? 8 : 0) |
          (c.camWrist ? 16 : 0) | (c.camElbow ? 32 : 0) | (c.truth ? 64 : 0) |
-         (c.estimate ? 128 : 0);
+         (c.estimate ? 128 : 0) | (c.trunk ? 256 : 0) | (c.shoulder ? 512 : 0) |
+         (c.trueTrunk ? 1024 : 0);
 }
 
 RecordingColumns columnsOf(int m) {
@@ -39,6 +40,9 @@ RecordingColumns columnsOf(int m) {
   c.camElbow = m & 32;
   c.truth = m & 64;
   c.estimate = m & 128;
+  c.trunk = m & 256;
+  c.shoulder = m & 512;
+  c.trueTrunk = m & 1024;
   return c;
 }
 

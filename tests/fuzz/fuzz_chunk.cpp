@@ -47,7 +47,9 @@ void expectRoundTrip(const std::vector<ArmSample>& rows) {
     if (!same(a.t, b.t) || !sameImu(a.upperArm, b.upperArm) || !sameImu(a.forearm, b.forearm) ||
         !sameOpt(a.elbow, b.elbow) || !sameOpt(a.wrist, b.wrist) ||
         !sameOpt(a.camWrist, b.camWrist) || !sameOpt(a.camElbow, b.camElbow) ||
-        !sameOpt(a.trueAngles, b.trueAngles) || !sameOpt(a.estimate, b.estimate))
+        !sameOpt(a.trueAngles, b.trueAngles) || !sameOpt(a.estimate, b.estimate) ||
+        !sameImu(a.trunk, b.trunk) || !sameOpt(a.shoulder, b.shoulder) ||
+        !sameOpt(a.trueTrunk, b.trueTrunk))
       std::abort();
   }
 }
@@ -80,7 +82,14 @@ std::vector<ArmSample> rowsOf(const std::uint8_t* data, std::size_t size, bool c
       }
       (k < 3 ? r.gyr : r.acc)[k % 3] = v;
     }
-    s.upperArm = r;
+    // Every third record goes to the trunk IMU (and its gyroscope to the true trunk angles), so
+    // chunks with the trunk's groups on some rows are stored too.
+    if (rows.size() % 3 == 2) {
+      s.trunk = r;
+      s.trueTrunk = r.gyr;
+    } else {
+      s.upperArm = r;
+    }
     rows.push_back(s);
   }
   return rows;

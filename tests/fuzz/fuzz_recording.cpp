@@ -1,6 +1,7 @@
 // libFuzzer target: one input = the CSV text of a recording (no sidecar), read with
 // RecordingReader row by row and with readRecording; what is accepted is checked (finite, in time
-// order within the limits, text only, gaps counted, a cut-short line flagged) and written back.
+// order within the limits, text only, gaps counted, a cut-short line flagged) and written back
+// (every group, the trunk's included, read back the same).
 #include <unistd.h>
 
 #include <algorithm>
@@ -39,6 +40,27 @@ void checkRow(const ArmSample& s) {
   if (s.elbow && !finite(*s.elbow)) std::abort();
   if (s.wrist && !finite(*s.wrist)) std::abort();
   if (s.trueAngles && !finite(*s.trueAngles)) std::abort();
+  if (s.trunk && !(finite(s.trunk->gyr) && finite(s.trunk->acc))) std::abort();
+  if (s.shoulder && !finite(*s.shoulder)) std::abort();
+  if (s.trueTrunk && !finite(*s.trueTrunk)) std::abort();
+  if (s.camWrist && !finite(*s.camWrist)) std::abort();
+  if (s.camElbow && !finite(*s.camElbow)) std::abort();
+  if (s.estimate && !finite(*s.estimate)) std::abort();
+}
+
+/// Whether a and b hold the same sensors with the same values (a write and read back is exact).
+bool sameSample(const ArmSample& a, const ArmSample& b) {
+  auto imu = [](const std::optional<ImuReading>& x, const std::optional<ImuReading>& y) {
+    return x.has_value() == y.has_value() && (!x || (x->gyr == y->gyr && x->acc == y->acc));
+  };
+  auto opt = [](const auto& x, const auto& y) {
+    return x.has_value() == y.has_value() && (!x || *x == *y);
+  };
+  return a.t == b.t && imu(a.upperArm, b.upperArm) && imu(a.forearm, b.forearm) &&
+         imu(a.trunk, b.trunk) && opt(a.elbow, b.elbow) && opt(a.wrist, b.wrist) &&
+         opt(a.shoulder, b.shoulder) && opt(a.camWrist, b.camWrist) &&
+         opt(a.camElbow, b.camElbow) && opt(a.trueAngles, b.trueAngles) &&
+         opt(a.trueTrunk, b.trueTrunk) && opt(a.estimate, b.estimate);
 }
 
 /// Whether data holds a byte that text never holds (a C0 control other than tab, LF, CR; DEL),
@@ -115,6 +137,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Recording back = readRecording(again);
   if (back.samples.size() != rows) std::abort();
   for (std::size_t i = 0; i < back.samples.size(); ++i)
-    if (back.samples[i].t != rec.samples[i].t) std::abort();
+    if (!sameSample(back.samples[i], rec.samples[i])) std::abort();
+  // A trunk IMU always comes with a mounting (the sidecar's, or the assumed one with a warning),
+  // and the mounting written is read back.
+  if (std::any_of(rec.samples.begin(), rec.samples.end(),
+                  [](const ArmSample& x) { return x.trunk.has_value(); }) &&
+      !rec.meta.trunk)
+    std::abort();
+  if (back.meta.trunk.has_value() != rec.meta.trunk.has_value()) std::abort();
   return 0;
 }

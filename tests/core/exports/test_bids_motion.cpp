@@ -173,6 +173,82 @@ TEST(BidsMotion, OneFileSetPerTrackingSystemWithTheSpecificationsColumnsAndField
   EXPECT_TRUE(ocj.at("reference_frame").at("Levels").contains("shoulder"));
 }
 
+// A session with a sternum IMU and an optical shoulder (issue 26): the IMU system carries the
+// sternum's gyroscope and accelerometer (rad/s, m/s^2, its own axes), the optical system the
+// shoulder, and the optical positions say they are in the world frame.
+TEST(BidsMotion, TrunkImuAndShoulderHaveTheirChannels) {
+  const SinusoidTrajectory tr = knownMovement();
+  Recording rec = simulatedSession(tr, 2.0, 100.0);
+  std::size_t k = 0;
+  for (ArmSample& s : rec.samples) {
+    const double x = 0.1 * static_cast<double>(k++);
+    if (s.hasImu())
+      s.trunk = ImuReading{Eigen::Vector3d(0.01 * x, -0.02, 1e-7),
+                           Eigen::Vector3d(9.81, 0.3 * std::sin(x), -0.1)};
+    if (s.elbow) s.shoulder = Eigen::Vector3d(0.001 * x, 0.05, -0.01);
+  }
+  // A row with the sternum alone: the arm's channels are n/a there.
+  ArmSample* alone = nullptr;
+  for (ArmSample& s : rec.samples)
+    if (s.hasImu() && s.t > 1.0) {
+      s.upperArm.reset();
+      s.forearm.reset();
+      alone = &s;
+      break;
+    }
+  ASSERT_NE(alone, nullptr);
+  TempDir dir;
+  const BidsExportResult r = writeBidsMotion(dir.path(), &rec, nullptr, Side::Left, options());
+  ASSERT_EQ(r.systems.size(), 2u);
+  for (const auto& f : r.systems) checkSystem(f, "flexion");
+  EXPECT_EQ(r.systems[0].channels, 19u);  // latency + 3 IMUs x (3 gyro + 3 accel)
+  EXPECT_EQ(r.systems[1].channels, 10u);  // latency + elbow, wrist and shoulder x 3
+  const Channels ic = readChannels(r.systems[0].channelsTsv);
+  EXPECT_EQ(ic.rows[13],
+            (std::vector<std::string>{"trunk_gyro_x", "x", "GYRO", "Sternum", "rad/s", "sensor",
+                                      "trunk (sternum) IMU angular velocity, x axis"}));
+  EXPECT_EQ(ic.rows[18],
+            (std::vector<std::string>{"trunk_acc_z", "z", "ACCEL", "Sternum", "m/s^2", "sensor",
+                                      "trunk (sternum) IMU specific force, z axis"}));
+  const json imu = json::parse(readText(r.systems[0].motionJson));
+  EXPECT_EQ(imu.at("GYROChannelCount"), 9);
+  EXPECT_EQ(imu.at("ACCELChannelCount"), 9);
+  EXPECT_EQ(imu.at("TrackedPointsCount"), 3);
+  EXPECT_NE(imu.at("TrackingSystemName").get<std::string>().find("sternum"), std::string::npos);
+  const auto rows = readMotion(r.systems[0].motionTsv);
+  std::size_t i = 0, sternumOnly = 0;
+  for (const ArmSample& s : rec.samples) {
+    if (!s.hasImu() && !s.trunk) continue;
+    const auto& row = rows.at(i++);
+    for (int j = 0; j < 3; ++j) {
+      EXPECT_EQ(row[13 + j], s.trunk->gyr(j));
+      EXPECT_EQ(row[16 + j], s.trunk->acc(j));
+    }
+    if (!s.hasImu()) {
+      ++sternumOnly;
+      for (int c = 1; c <= 12; ++c) EXPECT_TRUE(std::isnan(row[c])) << c;
+    }
+  }
+  EXPECT_EQ(i, rows.size());
+  EXPECT_EQ(sternumOnly, 1u);
+
+  const Channels oc = readChannels(r.systems[1].channelsTsv);
+  EXPECT_EQ(oc.rows[7], (std::vector<std::string>{"shoulder_pos_x", "x", "POS", "LeftShoulder", "m",
+                                                  "world", "shoulder position, x axis"}));
+  for (std::size_t c = 1; c < oc.rows.size(); ++c) EXPECT_EQ(oc.rows[c][5], "world");
+  const json ocj = json::parse(readText(r.systems[1].channelsJson));
+  EXPECT_TRUE(ocj.at("reference_frame").at("Levels").contains("world"));
+  EXPECT_FALSE(ocj.at("reference_frame").at("Levels").contains("shoulder"));
+  const auto opt = readMotion(r.systems[1].motionTsv);
+  std::size_t o = 0;
+  for (const ArmSample& s : rec.samples) {
+    if (!s.elbow) continue;
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(opt.at(o)[7 + j], (*s.shoulder)(j));
+    ++o;
+  }
+  EXPECT_EQ(o, opt.size());
+}
+
 TEST(BidsMotion, ValuesAreTheSimulatedOnes) {
   const SinusoidTrajectory tr = knownMovement();
   const Recording rec = simulatedSession(tr, 3.0, 100.0);
