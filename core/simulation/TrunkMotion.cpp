@@ -16,6 +16,26 @@ bool finite(double v) {
   return std::isfinite(v);
 }
 
+// The quintic smoothstep of x = (u - lo) / span and its first two time derivatives, given u's.
+struct Ramp {
+  double s = 0.0, sd = 0.0, sdd = 0.0;
+};
+Ramp smoothstep(double u, double ud, double udd, double lo, double span) {
+  const double x = (u - lo) / span;
+  Ramp r;
+  if (x >= 1.0) {
+    r.s = 1.0;
+  } else if (x > 0.0) {
+    const double xd = ud / span, xdd = udd / span;
+    const double s1 = 30.0 * x * x * (1.0 - x) * (1.0 - x);    // S'(x)
+    const double s2 = 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x);  // S''(x)
+    r.s = x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
+    r.sd = s1 * xd;
+    r.sdd = s2 * xd * xd + s1 * xdd;
+  }
+  return r;
+}
+
 }  // namespace
 
 Eigen::Vector3d defaultHip(Side side) {
@@ -25,7 +45,8 @@ Eigen::Vector3d defaultHip(Side side) {
 TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
   if (!finite(p.leanDeg) || !finite(p.lateralRatio) || !finite(p.rotationRatio) ||
       !finite(p.reachStartDeg) || !finite(p.fullReachDeg) || !finite(p.swayDeg) ||
-      !finite(p.swayMinHz) || !finite(p.swayMaxHz) || (p.hip && !p.hip->allFinite()))
+      !finite(p.swayMinHz) || !finite(p.swayMaxHz) || !finite(p.startSeconds) ||
+      (p.hip && !p.hip->allFinite()))
     throw std::invalid_argument("trunk motion: every value must be finite");
   if (std::abs(p.lateralSign) != 1.0 || std::abs(p.rotationSign) != 1.0)
     throw std::invalid_argument("trunk motion: the lateral and rotation signs must be +1 or -1");
@@ -33,6 +54,8 @@ TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
     throw std::invalid_argument(
         "trunk motion: the fullest reach must be a larger shoulder flexion than the lean's start");
   if (p.swayDeg < 0.0) throw std::invalid_argument("trunk motion: the sway must be >= 0 deg");
+  if (p.startSeconds < 0.0)
+    throw std::invalid_argument("trunk motion: the lean's start must be >= 0 s");
   if (!(p.swayMinHz > 0.0) || !(p.swayMaxHz >= p.swayMinHz))
     throw std::invalid_argument("trunk motion: sway frequencies must satisfy 0 < min <= max");
   // One sway component per angle, drawn in a fixed order (frequency, then phase).
@@ -48,20 +71,14 @@ TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
 
 TrunkMotionState TrunkMotion::at(double t, const JointMotion& arm) const {
   const TrunkSimParams& p = m_params;
-  // The reach w in [0, 1] and its derivatives, from shoulder flexion.
-  const double lo = p.reachStartDeg * kDeg, span = (p.fullReachDeg - p.reachStartDeg) * kDeg;
-  const double x = (arm.th(0) - lo) / span;
-  double w = 0.0, wd = 0.0, wdd = 0.0;
-  if (x >= 1.0) {
-    w = 1.0;
-  } else if (x > 0.0) {
-    const double xd = arm.thd(0) / span, xdd = arm.thdd(0) / span;
-    const double s1 = 30.0 * x * x * (1.0 - x) * (1.0 - x);    // S'(x)
-    const double s2 = 60.0 * x * (1.0 - x) * (1.0 - 2.0 * x);  // S''(x)
-    w = x * x * x * (10.0 + x * (-15.0 + 6.0 * x));
-    wd = s1 * xd;
-    wdd = s2 * xd * xd + s1 * xdd;
-  }
+  // The reach w in [0, 1] and its derivatives: shoulder flexion's ramp times the start's.
+  const Ramp reach = smoothstep(arm.th(0), arm.thd(0), arm.thdd(0), p.reachStartDeg * kDeg,
+                                (p.fullReachDeg - p.reachStartDeg) * kDeg);
+  const Ramp start =
+      p.startSeconds > 0.0 ? smoothstep(t, 1.0, 0.0, 0.0, p.startSeconds) : Ramp{1.0, 0.0, 0.0};
+  const double w = reach.s * start.s;
+  const double wd = reach.sd * start.s + reach.s * start.sd;
+  const double wdd = reach.sdd * start.s + 2.0 * reach.sd * start.sd + reach.s * start.sdd;
   const double lean = p.leanDeg * kDeg;
   const Eigen::Vector3d full(lean, p.lateralSign * p.lateralRatio * lean,
                              p.rotationSign * p.rotationRatio * lean);

@@ -20,17 +20,19 @@ namespace armtrack {
 /// exactly what it was before the trunk existed).
 ///
 /// The lean follows the arm's reaches as patients compensate: with shoulder flexion th0, the reach
-/// w = S((th0 - reachStartDeg) / (fullReachDeg - reachStartDeg)), S the quintic smoothstep
-/// 10x^3 - 15x^4 + 6x^5 clamped to [0, 1] (flat at both ends, so the trunk's motion is as smooth
-/// as the arm's: continuous rates and accelerations for minimum-jerk and sinusoidal arms). Each
-/// angle is then
+/// w = S((th0 - reachStartDeg) / (fullReachDeg - reachStartDeg)) S(t / startSeconds), S the
+/// quintic smoothstep 10x^3 - 15x^4 + 6x^5 clamped to [0, 1] (flat at both ends, so the trunk's
+/// motion is as smooth as the arm's: continuous rates and accelerations for minimum-jerk and
+/// sinusoidal arms). The second factor brings the lean in over the first startSeconds, so the
+/// trunk is upright at t = 0, where the world frame is registered, whatever the arm's first
+/// posture. Each angle is then
 ///   flexion  = leanDeg w                          + (1 - w) sway_flexion(t)
 ///   lateral  = lateralSign  lateralRatio leanDeg w + (1 - w) sway_lateral(t)
 ///   rotation = rotationSign rotationRatio leanDeg w + (1 - w) sway_rotation(t)
-/// so at the fullest reach the trunk is at exactly leanDeg forward, and no angle ever exceeds
-/// max(its lean part, swayDeg). The sway of each angle is (swayDeg / 2) (sin(2 pi f t + p) - sin p)
-/// with f in [swayMinHz, swayMaxHz] and p drawn from swaySeed: zero at t = 0 (the trunk starts
-/// upright when the arm starts below reachStartDeg), never beyond swayDeg.
+/// so at the fullest reach (after startSeconds) the trunk is at exactly leanDeg forward, and no
+/// angle ever exceeds max(its lean part, swayDeg). The sway of each angle is
+/// (swayDeg / 2) (sin(2 pi f t + p) - sin p) with f in [swayMinHz, swayMaxHz] and p drawn from
+/// swaySeed: zero at t = 0, never beyond swayDeg.
 struct TrunkSimParams {
   bool enabled = false;
   /// The hip pivot the trunk turns about, in the arm's frame 0 with the trunk upright (m, relative
@@ -45,6 +47,7 @@ struct TrunkSimParams {
   double rotationSign = 1.0;    ///< +1: the right shoulder comes forward when reaching
   double reachStartDeg = 20.0;  ///< shoulder flexion at which the lean starts (deg)
   double fullReachDeg = 90.0;   ///< shoulder flexion of the fullest reach (deg)
+  double startSeconds = 2.0;    ///< the lean comes in over this time from t = 0 (s, >= 0)
   double swayDeg = 1.0;         ///< largest sway of each angle on its own (deg, >= 0)
   double swayMinHz = 0.1;       ///< sway frequencies are drawn from [swayMinHz, swayMaxHz]
   double swayMaxHz = 0.3;
@@ -72,9 +75,9 @@ Eigen::Vector3d defaultHip(Side side);
 
 class TrunkMotion {
  public:
-  /// Throws std::invalid_argument for non-finite values, a negative sway, sway frequencies
-  /// outside (0, inf) or in the wrong order, a sign other than +-1, or fullReachDeg not above
-  /// reachStartDeg.
+  /// Throws std::invalid_argument for non-finite values, a negative sway or start, sway
+  /// frequencies outside (0, inf) or in the wrong order, a sign other than +-1, or fullReachDeg
+  /// not above reachStartDeg.
   explicit TrunkMotion(const TrunkSimParams& params);
   /// The trunk's motion while the arm moves as given (its shoulder flexion drives the lean).
   TrunkMotionState at(double t, const JointMotion& arm) const;

@@ -225,6 +225,7 @@ TEST(SimulateTrunk, LeaningAndTurningFollowThePatientsWords) {
       SimulationParams p = movingTrunk(side);
       p.duration = 0.0;
       p.trunk.swayDeg = 0.0;
+      p.trunk.startSeconds = 0.0;  // leaning from the first instant
       p.trunk.leanDeg = lean;
       p.trunk.lateralSign = p.trunk.rotationSign = 1.0;
       p.trunk.lateralRatio = lateralRatio;
@@ -266,7 +267,7 @@ TEST(SimulateTrunk, AnglesAreSmoothAndStayInRangeFollowingTheReaches) {
     largest = largest.cwiseMax(s.angles.cwiseAbs());
     // At the fullest reach the lean is exactly the configured one; below the lean's start
     // only the sway moves the trunk.
-    if (arm.th(0) >= p.fullReachDeg * kDeg) {
+    if (t >= p.startSeconds && arm.th(0) >= p.fullReachDeg * kDeg) {
       EXPECT_NEAR(s.angles(0), 19.0 * kDeg, 1e-12);
       EXPECT_NEAR(s.angles(1), 9.5 * kDeg, 1e-12);
       EXPECT_NEAR(s.angles(2), 9.5 * kDeg, 1e-12);
@@ -277,6 +278,13 @@ TEST(SimulateTrunk, AnglesAreSmoothAndStayInRangeFollowingTheReaches) {
     }
   }
   EXPECT_GT(atFullReach, 100);
+  // An arm that starts at the fullest reach: the trunk is upright at t = 0 (where the world
+  // frame is registered) and has leaned fully once the start is over.
+  SinusoidTrajectory held;
+  held.offset << 100 * kDeg, 0, 0, -20 * kDeg, 0;
+  EXPECT_TRUE(trunk.at(0.0, held.at(0.0)).angles.isZero(0.0));
+  EXPECT_LT(trunk.at(0.2, held.at(0.2)).angles(0), 1.0 * kDeg);
+  EXPECT_NEAR(trunk.at(p.startSeconds, held.at(p.startSeconds)).angles(0), 19.0 * kDeg, 1e-12);
   EXPECT_LE(largest(0), 20.0 * kDeg);
   EXPECT_LE(largest(1), 10.0 * kDeg);
   EXPECT_LE(largest(2), 10.0 * kDeg);
@@ -411,6 +419,7 @@ TEST(SimulateTrunk, RejectsBadTrunkSettings) {
   bad([](SimulationParams& p) { p.trunk.lateralSign = 0.5; });
   bad([](SimulationParams& p) { p.trunk.fullReachDeg = p.trunk.reachStartDeg; });
   bad([](SimulationParams& p) { p.trunk.swayMinHz = 0.0; });
+  bad([](SimulationParams& p) { p.trunk.startSeconds = -1.0; });
   bad([](SimulationParams& p) { p.trunk.hip = Eigen::Vector3d(INFINITY, 0, 0); });
   bad([](SimulationParams& p) { p.trunkImu.rateHz = 0.0; });
   bad([](SimulationParams& p) {
