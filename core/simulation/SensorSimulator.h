@@ -1,4 +1,5 @@
-// Simulates the two IMUs and the Kinect from a trajectory and the arm model.
+// Simulates the two arm IMUs, the Kinect, a webcam and (optionally) a moving trunk with a sternum
+// IMU, from a trajectory and the arm model.
 #pragma once
 
 #include <Eigen/Core>
