@@ -108,7 +108,7 @@ double Table5::posStd() {
   return std::sqrt(1e-4);
 }
 
-TrunkMount defaultTrunkMount(Side side) {
+TrunkMount defaultSimulatedTrunkMount(Side side) {
   TrunkMount m;
   m.imuPosition = {0.10, 0.08, side == Side::Left ? 0.18 : -0.18};
   m.imuRotation << -1, 0, 0,  //
@@ -205,7 +205,7 @@ struct SensorStream::Impl {
     // F -> S F D (docs/arm-model.md, "Left arm"), so mirrorSample gives the left arm's readings.
     const Eigen::Matrix3d sd = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
     hip = p.trunk.hip.value_or(defaultHip(p.side));
-    const TrunkMount mount = p.trunkMount.value_or(defaultTrunkMount(p.side));
+    const TrunkMount mount = p.trunkMount.value_or(defaultSimulatedTrunkMount(p.side));
     mountPosition = mount.imuPosition;
     mountRotation = mount.imuRotation;
     if (left) {

@@ -84,7 +84,7 @@ struct SimulationParams {
     return p;
   }();
   /// Where the sternum IMU sits, in the arm's frame 0 with the trunk upright (the sidecar's
-  /// "trunk" block). Unset: defaultTrunkMount(side).
+  /// "trunk" block). Unset: defaultSimulatedTrunkMount(side).
   std::optional<TrunkMount> trunkMount;
 };
 
@@ -93,7 +93,7 @@ struct SimulationParams {
 /// For a right arm: position (0.10, 0.08, -0.18), rotation [[-1 0 0] [0 0 1] [0 1 0]] (columns:
 /// the IMU's axes in frame 0); a left arm's frame 0 has the same axes, the sternum on its other
 /// side: (0.10, 0.08, 0.18), the same rotation.
-TrunkMount defaultTrunkMount(Side side);
+TrunkMount defaultSimulatedTrunkMount(Side side);
 
 /// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise; the webcam is off
 /// (frontCamera(2), 30 Hz, 1 px noise when switched on). The trunk is still and the sternum IMU

@@ -125,8 +125,10 @@ TEST_F(SimulateTrunkFile, TheRecordingCarriesTheSternumTheShoulderAndTheTruth) {
   ASSERT_EQ(r.code, 0) << r.err;
   const Recording back = readRecording(rec);
   ASSERT_TRUE(back.meta.trunk.has_value());
-  EXPECT_TRUE(back.meta.trunk->imuRotation.isApprox(defaultTrunkMount(Side::Right).imuRotation));
-  EXPECT_TRUE(back.meta.trunk->imuPosition.isApprox(defaultTrunkMount(Side::Right).imuPosition));
+  EXPECT_TRUE(
+      back.meta.trunk->imuRotation.isApprox(defaultSimulatedTrunkMount(Side::Right).imuRotation));
+  EXPECT_TRUE(
+      back.meta.trunk->imuPosition.isApprox(defaultSimulatedTrunkMount(Side::Right).imuPosition));
   int imuRows = 0, sternum = 0, truth = 0, shoulders = 0;
   double largestLean = 0.0;
   for (const ArmSample& s : back.samples) {

@@ -89,7 +89,7 @@ WorldPoses worldPoses(const Trajectory& traj, const SimulationParams& params, do
   w.elbow = h + r * (elbow - h);
   w.wrist = h + r * (wrist - h);
   w.shoulder = h - r * h;
-  const TrunkMount mount = params.trunkMount.value_or(defaultTrunkMount(params.side));
+  const TrunkMount mount = params.trunkMount.value_or(defaultSimulatedTrunkMount(params.side));
   w.sternum = {r * mount.imuRotation, h + r * (mount.imuPosition - h)};
   return w;
 }
@@ -317,7 +317,7 @@ TEST(SimulateTrunk, StillTrunkSternumReadsGravityThroughItsMounting) {
     ASSERT_TRUE(rec.meta.trunk.has_value());
     // The default mounting: x up, y to the patient's right, z forward; at rest the accelerometer
     // reads +g along its x axis, and the gyroscope nothing.
-    EXPECT_TRUE(rec.meta.trunk->imuRotation.isApprox(defaultTrunkMount(side).imuRotation));
+    EXPECT_TRUE(rec.meta.trunk->imuRotation.isApprox(defaultSimulatedTrunkMount(side).imuRotation));
     EXPECT_NEAR(rec.meta.trunk->imuPosition.z(), side == Side::Left ? 0.18 : -0.18, 1e-15);
     int rows = 0;
     for (const ArmSample& s : rec.samples) {
@@ -333,7 +333,7 @@ TEST(SimulateTrunk, StillTrunkSternumReadsGravityThroughItsMounting) {
     // The sensor turned 90 deg about its own z axis: its y axis now points down, so gravity's
     // reaction reads along -y.
     SimulationParams tilted = p;
-    TrunkMount mount = defaultTrunkMount(side);
+    TrunkMount mount = defaultSimulatedTrunkMount(side);
     mount.imuRotation = mount.imuRotation *
                         Eigen::AngleAxisd(90 * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     tilted.trunkMount = mount;
@@ -386,7 +386,7 @@ TEST(SimulateTrunk, TrunkOffLeavesEverythingAsItWas) {
     off.trunk.leanDeg = 20.0;
     off.trunk.swayDeg = 3.0;
     off.trunk.hip = Eigen::Vector3d(0.5, 0.1, -0.2);
-    off.trunkMount = defaultTrunkMount(side);
+    off.trunkMount = defaultSimulatedTrunkMount(side);
     const Recording a = simulateRecording(traj, plain);
     const Recording b = simulateRecording(traj, off);
     EXPECT_EQ(flatten(a), flatten(b));
