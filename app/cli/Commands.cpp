@@ -21,6 +21,7 @@
 #include "app/cli/Estimate.h"
 #include "app/cli/Live.h"
 #include "app/cli/Orientation.h"
+#include "app/cli/SimulateTrunk.h"
 #include "app/cli/Text.h"
 #include "core/camera/PinholeCamera.h"
 #include "core/io/Recording.h"
@@ -76,7 +77,8 @@ constexpr std::string_view kSimulateHelp =
     R"(Usage: armtrack-cli simulate --trajectory NAME --out REC.csv [options]
 
 Simulates both IMUs and the Kinect along a joint trajectory and writes a recording (REC.csv plus
-the sidecar REC.json) that includes the true joint angles.
+the sidecar REC.json) that includes the true joint angles (and, with a moving trunk or a sternum
+IMU, the true trunk angles).
 
 Options:
   --trajectory NAME    sinusoid, multi-joint, shoulder-wheel, calibration or reaching (required)
@@ -97,7 +99,7 @@ Options:
   --side right|left    which arm (default right; a left arm is the right one mirrored)
   --gyro-noise RAD_S   gyroscope noise std, rad/s (default Table 5: sqrt(0.1) deg/s)
   --accel-noise M_S2   accelerometer noise std, m/s^2 (default Table 5: 0.1)
-  --gyro-bias RAD_S    constant gyroscope bias on every axis of both IMUs (default 0)
+  --gyro-bias RAD_S    constant gyroscope bias on every axis of every IMU (default 0)
   --misalignment DEG   IMU mounting error: rotation by DEG about a random axis per IMU (default 0)
   --amplitude DEG      sinusoid: amplitude of every joint (default 28.6, i.e. 0.5 rad)
   --frequency HZ       sinusoid: frequency of every joint (default 0.5)
@@ -130,20 +132,22 @@ void noPositionals(const Args& a) {
 // ---------------------------------------------------------------------------------------------
 
 int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  const Args a("simulate", args, {{"--trajectory", true},      {"--out", true},
-                                  {"--duration", true},        {"--seed", true},
-                                  {"--imu-rate", true},        {"--kinect-rate", true},
-                                  {"--kinect-noise", true},    {"--no-kinect", false},
-                                  {"--webcam", false},         {"--webcam-rate", true},
-                                  {"--webcam-noise", true},    {"--webcam-outliers", true},
-                                  {"--camera-distance", true}, {"--side", true},
-                                  {"--gyro-noise", true},      {"--accel-noise", true},
-                                  {"--gyro-bias", true},       {"--misalignment", true},
-                                  {"--amplitude", true},       {"--frequency", true},
-                                  {"--wheel-period", true},    {"--peak-rate", true},
-                                  {"--peak-accel", true},      {"--overwrite", false}});
+  std::vector<OptionSpec> specs = {{"--trajectory", true},      {"--out", true},
+                                   {"--duration", true},        {"--seed", true},
+                                   {"--imu-rate", true},        {"--kinect-rate", true},
+                                   {"--kinect-noise", true},    {"--no-kinect", false},
+                                   {"--webcam", false},         {"--webcam-rate", true},
+                                   {"--webcam-noise", true},    {"--webcam-outliers", true},
+                                   {"--camera-distance", true}, {"--side", true},
+                                   {"--gyro-noise", true},      {"--accel-noise", true},
+                                   {"--gyro-bias", true},       {"--misalignment", true},
+                                   {"--amplitude", true},       {"--frequency", true},
+                                   {"--wheel-period", true},    {"--peak-rate", true},
+                                   {"--peak-accel", true},      {"--overwrite", false}};
+  for (const OptionSpec& o : trunkOptionSpecs()) specs.push_back(o);
+  const Args a("simulate", args, specs);
   if (a.help()) {
-    out << kSimulateHelp;
+    out << kSimulateHelp << kTrunkOptionsHelp;
     return 0;
   }
   noPositionals(a);
@@ -174,6 +178,7 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
     sim.forearm.misalignment = randomMisalignment(misalignDeg * kDeg, 2 * sim.seed + 2);
   }
   sim.kinect.enabled = !a.flag("--no-kinect");
+  applyTrunkOptions(a, sim, misalignDeg, err);
   if (const auto side = a.value("--side")) {
     try {
       sim.side = parseSide(*side);

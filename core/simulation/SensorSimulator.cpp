@@ -17,7 +17,14 @@ namespace {
 
 // Independent noise streams per sensor, so that e.g. switching the Kinect on or off leaves the
 // IMU noise unchanged. Each is an mt19937_64 seeded from (seed, stream id).
-enum class NoiseStream : std::uint32_t { kUpperArm = 1, kForearm = 2, kKinect = 3, kCamera = 4 };
+enum class NoiseStream : std::uint32_t {
+  kUpperArm = 1,
+  kForearm = 2,
+  kKinect = 3,
+  kCamera = 4,
+  kTrunk = 5,
+  kShoulder = 6
+};
 
 class Noise {
  public:
@@ -101,15 +108,25 @@ double Table5::posStd() {
   return std::sqrt(1e-4);
 }
 
+TrunkMount defaultSimulatedTrunkMount(Side side) {
+  TrunkMount m;
+  m.imuPosition = {0.10, 0.08, side == Side::Left ? 0.18 : -0.18};
+  m.imuRotation << -1, 0, 0,  //
+      0, 0, 1,                //
+      0, 1, 0;
+  return m;
+}
+
 SimulationParams defaultSimulation() {
   SimulationParams p;
   p.duration = 10.0;
-  for (ImuSimParams* imu : {&p.upperArm, &p.forearm}) {
+  for (ImuSimParams* imu : {&p.upperArm, &p.forearm, &p.trunkImu}) {
     imu->enabled = true;
     imu->rateHz = 1000.0;
     imu->gyroNoiseStd = Table5::gyroStd();
     imu->accelNoiseStd = Table5::accelStd();
   }
+  p.trunkImu.enabled = false;
   p.kinect.enabled = true;
   p.kinect.rateHz = 30.0;
   p.kinect.noiseStd = Table5::posStd();
@@ -124,6 +141,15 @@ void checkParams(const SimulationParams& params) {
     throw std::invalid_argument("simulateRecording: duration must be >= 0");
   checkImu(params.upperArm, "upper-arm IMU");
   checkImu(params.forearm, "forearm IMU");
+  checkImu(params.trunkImu, "sternum IMU");
+  if (params.trunkMount) {
+    const Eigen::Matrix3d m = params.trunkMount->imuRotation;
+    if (!params.trunkMount->imuPosition.allFinite() || !m.allFinite() ||
+        !(m.transpose() * m).isIdentity(1e-9) || m.determinant() < 0.0)
+      throw std::invalid_argument(
+          "simulateRecording: the sternum IMU's mounting needs a finite position and a rotation "
+          "matrix");
+  }
   if (params.kinect.enabled) {
     if (!(params.kinect.rateHz > 0.0) || !std::isfinite(params.kinect.rateHz))
       throw std::invalid_argument("simulateRecording: Kinect rate must be > 0");
@@ -152,8 +178,11 @@ struct SensorStream::Impl {
         upperNoise(p.seed, NoiseStream::kUpperArm),
         forearmNoise(p.seed, NoiseStream::kForearm),
         kinectNoise(p.seed, NoiseStream::kKinect),
-        cameraNoise(p.seed, NoiseStream::kCamera) {
+        cameraNoise(p.seed, NoiseStream::kCamera),
+        trunkNoise(p.seed, NoiseStream::kTrunk),
+        shoulderNoise(p.seed, NoiseStream::kShoulder) {
     checkParams(p);
+    if (p.trunk.enabled) trunkMotion.emplace(p.trunk);      // throws on bad trunk motion
     if (p.webcam.enabled) camera.emplace(p.webcam.camera);  // throws on bad intrinsics
     meta.geometry = p.geometry;
     meta.up = p.up;
@@ -169,11 +198,27 @@ struct SensorStream::Impl {
     cameraClock = makeClock(p.webcam.enabled, p.webcam.rateHz, p.duration);
     // A left arm is simulated as its right-arm mirror image, then mirrored back sample by sample.
     gUp = p.g * (left ? mirrorPoint(p.up) : p.up);
+    trunkClock = makeClock(p.trunkImu.enabled, p.trunkImu.rateHz, p.duration);
+    kinectShoulder = p.kinect.shoulder.value_or(p.trunk.enabled);
+    trueTrunk = p.trunk.enabled || p.trunkImu.enabled;
+    // The hip and the sternum IMU in the mirror image's frame: points p -> S p, a sensor's axes
+    // F -> S F D (docs/arm-model.md, "Left arm"), so mirrorSample gives the left arm's readings.
+    const Eigen::Matrix3d sd = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+    hip = p.trunk.hip.value_or(defaultHip(p.side));
+    const TrunkMount mount = p.trunkMount.value_or(defaultSimulatedTrunkMount(p.side));
+    mountPosition = mount.imuPosition;
+    mountRotation = mount.imuRotation;
+    if (left) {
+      hip = mirrorPoint(hip);
+      mountPosition = mirrorPoint(mountPosition);
+      mountRotation = sd * mountRotation * sd;
+    }
+    if (p.trunkImu.enabled) meta.trunk = mount;
   }
 
   double nextTime() const {
     return std::min({upperClock.nextTime(), forearmClock.nextTime(), kinectClock.nextTime(),
-                     cameraClock.nextTime()});
+                     cameraClock.nextTime(), trunkClock.nextTime()});
   }
 
   // One marker's pixel: the projection plus noise, a uniform outlier, or nothing when the marker
@@ -201,9 +246,24 @@ struct SensorStream::Impl {
     const bool forearmDue = shared ? upperDue : forearmClock.nextTime() == t;
     const bool kinectDue = kinectClock.nextTime() == t;
     const bool cameraDue = cameraClock.nextTime() == t;
+    const bool trunkDue = trunkClock.nextTime() == t;
     const JointMotion m = trajectory->at(t);
-    const ArmPrediction ideal = predictSensors(params.geometry, m.th, m.thd, m.thdd, gUp);
+    // With a still trunk, frame 0 is the world and the arm's prediction is the classic one.
+    ArmPrediction ideal;
+    TrunkPose pose;
+    std::optional<TrunkMotionState> trunkState;
+    if (trunkMotion) {
+      trunkState = trunkMotion->at(t, m);
+      pose = trunkPose(*trunkState, params.side);
+      ideal = movingTrunkPrediction(m, pose);
+    } else {
+      ideal = predictSensors(params.geometry, m.th, m.thd, m.thdd, gUp);
+    }
     ArmSample s;
+    if (trunkDue) {
+      s.trunk = simulateImu(sternumPrediction(pose), params.trunkImu, trunkNoise);
+      ++trunkClock.next;
+    }
     s.t = t;
     if (upperDue) {
       s.upperArm = simulateImu(ideal.upper, params.upperArm, upperNoise);
@@ -216,12 +276,16 @@ struct SensorStream::Impl {
     if (kinectDue) {
       s.elbow = ideal.elbow + kinectNoise.vec3(params.kinect.noiseStd);
       s.wrist = ideal.wrist + kinectNoise.vec3(params.kinect.noiseStd);
+      if (kinectShoulder)
+        s.shoulder = shoulderInWorld(pose) + shoulderNoise.vec3(params.kinect.noiseStd);
       ++kinectClock.next;
     }
-    if (params.includeTruth && (upperDue || forearmDue)) {
+    if (params.includeTruth && (upperDue || forearmDue || trunkDue)) {
       JointVector truth;
       for (int j = 0; j < kNumJoints; ++j) truth(j) = wrapAngle(m.th(j));
       s.trueAngles = truth;
+      // Patient terms: the same numbers for both sides, so the mirror leaves them alone.
+      if (trueTrunk) s.trueTrunk = trunkState ? trunkState->angles : TrunkAngles::Zero();
     }
     if (left) s = mirrorSample(s);
     if (cameraDue) {
@@ -235,14 +299,46 @@ struct SensorStream::Impl {
     return s;
   }
 
+  // The arm's readings with frame 0 turning with the thorax (docs/arm-model.md, "Trunk"): the
+  // IMUs from the recursion with frame 0's motion as its base, the points carried to the world.
+  ArmPrediction movingTrunkPrediction(const JointMotion& m, const TrunkPose& pose) const {
+    const FrameState<double> base = trunkBase(pose, hip, gUp);
+    const ArmKinematics<double> k =
+        armKinematics<double>(params.geometry, m.th, m.thd, m.thdd, base);
+    ArmPrediction p;
+    p.upper = {k.upperImu.omega, k.upperImu.up + k.upperImu.accel};
+    p.forearm = {k.forearmImu.omega, k.forearmImu.up + k.forearmImu.accel};
+    p.elbow = trunkPointInWorld(pose, hip, k.elbow);
+    p.wrist = trunkPointInWorld(pose, hip, k.wrist);
+    return p;
+  }
+
+  // The sternum IMU: the thorax's angular velocity and the specific force of the sternum point
+  // (turning about the hip), in the IMU's axes R * mountRotation.
+  ImuPrediction sternumPrediction(const TrunkPose& pose) const {
+    const Eigen::Vector3d r = pose.rotation * (mountPosition - hip);
+    const Eigen::Vector3d acc = pose.omegaDot.cross(r) + pose.omega.cross(pose.omega.cross(r));
+    const Eigen::Matrix3d axes = pose.rotation * mountRotation;
+    return {axes.transpose() * pose.omega, axes.transpose() * (acc + gUp)};
+  }
+
+  Eigen::Vector3d shoulderInWorld(const TrunkPose& pose) const {
+    return trunkPointInWorld(pose, hip, Eigen::Vector3d::Zero());
+  }
+
   const Trajectory* trajectory;
   SimulationParams params;
+  std::optional<TrunkMotion> trunkMotion;
   std::optional<PinholeCamera> camera;
   RecordingMeta meta;
   bool left = false, shared = false;
-  Clock upperClock, forearmClock, kinectClock, cameraClock;
-  Noise upperNoise, forearmNoise, kinectNoise, cameraNoise;
+  bool kinectShoulder = false, trueTrunk = false;
+  Clock upperClock, forearmClock, kinectClock, cameraClock, trunkClock;
+  Noise upperNoise, forearmNoise, kinectNoise, cameraNoise, trunkNoise, shoulderNoise;
   Eigen::Vector3d gUp;
+  // The hip pivot and the sternum IMU's mounting in the (mirror image's) frame 0.
+  Eigen::Vector3d hip = Eigen::Vector3d::Zero(), mountPosition = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d mountRotation = Eigen::Matrix3d::Identity();
 };
 
 SensorStream::SensorStream(const Trajectory& trajectory, const SimulationParams& params)
@@ -257,7 +353,8 @@ std::optional<ArmSample> SensorStream::next() {
   return m->next();
 }
 void SensorStream::skipTo(double t) {
-  for (Clock* c : {&m->upperClock, &m->forearmClock, &m->kinectClock, &m->cameraClock}) {
+  for (Clock* c :
+       {&m->upperClock, &m->forearmClock, &m->kinectClock, &m->cameraClock, &m->trunkClock}) {
     if (!c->active || !(t > 0.0)) continue;
     const double k = std::ceil(t * c->rate - 1e-9);
     const auto first = k >= static_cast<double>(c->count) ? c->count : static_cast<std::size_t>(k);
@@ -280,7 +377,8 @@ Recording simulateRecording(const Trajectory& trajectory, const SimulationParams
   rec.samples.reserve(count(params.upperArm.enabled, params.upperArm.rateHz) +
                       count(params.forearm.enabled, params.forearm.rateHz) +
                       count(params.kinect.enabled, params.kinect.rateHz) +
-                      count(params.webcam.enabled, params.webcam.rateHz));
+                      count(params.webcam.enabled, params.webcam.rateHz) +
+                      count(params.trunkImu.enabled, params.trunkImu.rateHz));
   while (auto s = stream.next()) rec.samples.push_back(std::move(*s));
   return rec;
 }

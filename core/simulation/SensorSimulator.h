@@ -1,4 +1,5 @@
-// Simulates the two IMUs and the Kinect from a trajectory and the arm model.
+// Simulates the two arm IMUs, the Kinect, a webcam and (optionally) a moving trunk with a sternum
+// IMU, from a trajectory and the arm model.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +9,7 @@
 
 #include "core/io/Recording.h"
 #include "core/simulation/Trajectory.h"
+#include "core/simulation/TrunkMotion.h"
 
 namespace armtrack {
 
@@ -21,8 +23,8 @@ struct Table5 {
 struct ImuSimParams {
   bool enabled = true;
   double rateHz = 1000.0;
-  double gyroNoiseStd = 0.0;                           ///< white noise, rad/s
-  double accelNoiseStd = 0.0;                          ///< white noise, m/s^2
+  double gyroNoiseStd = 0.0;                            ///< white noise, rad/s
+  double accelNoiseStd = 0.0;                           ///< white noise, m/s^2
   Eigen::Vector3d gyroBias = Eigen::Vector3d::Zero();   ///< constant, rad/s
   Eigen::Vector3d accelBias = Eigen::Vector3d::Zero();  ///< constant, m/s^2
   /// Rotation of the physical sensor's axes relative to the model's IMU frame: the sensor reads
@@ -34,6 +36,9 @@ struct OpticalSimParams {
   bool enabled = true;
   double rateHz = 30.0;
   double noiseStd = 0.01;  ///< per axis, m
+  /// Whether the Kinect also reports the shoulder centre (ArmSample::shoulder, world frame, the
+  /// same noise). Unset: reported when the trunk moves (SimulationParams::trunk.enabled).
+  std::optional<bool> shoulder;
 };
 
 /// A webcam tracking coloured markers on the elbow and the wrist (Tao & Hu): pixel positions
@@ -65,10 +70,34 @@ struct SimulationParams {
   /// Which arm. A left arm is the mirror image of the right one (core/kinematics/Side.h): its
   /// data come out in the left shoulder's frame, with `up` given in that frame.
   Side side = Side::Right;
+  /// The trunk's motion (off: a still trunk, and every other reading exactly as without it).
+  /// When it moves, frame 0 turns with the thorax about the hip; the optical points (and the
+  /// webcam's pixels) are in the world frame, frame 0 as it was upright at the start, the IMUs
+  /// feel the thorax's motion, trueAngles stay relative to the thorax and trueTrunk holds the
+  /// trunk's angles (core/kinematics/Trunk.h).
+  TrunkSimParams trunk;
+  /// The sternum IMU, off unless asked for; defaultSimulation() gives it Table 5 noise at 1 kHz.
+  /// Its rows carry ArmSample::trunk, and the sidecar its mounting (RecordingMeta::trunk).
+  ImuSimParams trunkImu = [] {
+    ImuSimParams p;
+    p.enabled = false;
+    return p;
+  }();
+  /// Where the sternum IMU sits, in the arm's frame 0 with the trunk upright (the sidecar's
+  /// "trunk" block). Unset: defaultSimulatedTrunkMount(side).
+  std::optional<TrunkMount> trunkMount;
 };
 
+/// The sternum IMU's default mounting: 0.10 m below, 0.08 m forward of and 0.18 m medial to the
+/// shoulder centre, x axis up, y axis to the patient's right, z axis forward (out of the chest).
+/// For a right arm: position (0.10, 0.08, -0.18), rotation [[-1 0 0] [0 0 1] [0 1 0]] (columns:
+/// the IMU's axes in frame 0); a left arm's frame 0 has the same axes, the sternum on its other
+/// side: (0.10, 0.08, 0.18), the same rotation.
+TrunkMount defaultSimulatedTrunkMount(Side side);
+
 /// Table 5 noise on both IMUs (1 kHz) and a 30 Hz Kinect with 1 cm noise; the webcam is off
-/// (frontCamera(2), 30 Hz, 1 px noise when switched on).
+/// (frontCamera(2), 30 Hz, 1 px noise when switched on). The trunk is still and the sternum IMU
+/// off (Table 5 noise at 1 kHz when switched on).
 SimulationParams defaultSimulation();
 
 /// Returns a recording: one row per IMU sample (both IMUs share the IMU clock when their rates
@@ -76,9 +105,10 @@ SimulationParams defaultSimulation();
 /// on, the sidecar carries its camera block. Deterministic given seed.
 /// Sample times are k / rate while t <= duration; rows at the same instant are merged. Each
 /// sensor has its own noise stream, so enabling one sensor does not change another's noise.
-/// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading. Throws
+/// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading, and trueTrunk on those
+/// rows when the trunk moves or the sternum IMU is on. Throws
 /// std::invalid_argument on bad parameters (rate <= 0, negative std or duration, up not a unit
-/// vector, misalignment not a rotation).
+/// vector, misalignment not a rotation, bad trunk motion or mounting).
 Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params);
 
 /// The same simulation, one row at a time, for live sources (the virtual-arm device). With an
