@@ -247,6 +247,31 @@ void writeDiagnostics(std::ostream& err, const EstimateStats& st, const Estimato
            "readings longer than "
         << shortest(params.maxGap) << " s)\n";
   }
+  if (c.rejectedTrunk > 0)
+    err << "trunk: " << c.rejectedTrunk
+        << " trunk IMU readings or optical shoulder positions refused (not finite, beyond a "
+           "sensor's range, or no sternum mounting known)\n";
+  if (!st.trunkMovedSpans.empty()) {
+    // The patient leaned or turned with no trunk IMU to measure it: say when, so nobody reads
+    // the lean as shoulder range of motion.
+    double total = 0.0, largest = 0.0;
+    for (const TrunkMotionSpan& span : st.trunkMovedSpans) {
+      total += span.endS - span.startS;
+      largest = std::max(largest, span.maxDisplacementM);
+    }
+    err << "trunk: the trunk moved from its start pose with no trunk IMU to measure it, in "
+        << st.trunkMovedSpans.size() << (st.trunkMovedSpans.size() == 1 ? " span" : " spans")
+        << " (" << fixed(total, 1) << " s in all; the shoulder moved up to "
+        << fixed(100.0 * largest, 1) << " cm):";
+    constexpr std::size_t kListed = 5;
+    for (std::size_t i = 0; i < st.trunkMovedSpans.size() && i < kListed; ++i)
+      err << (i ? ", " : " ") << fixed(st.trunkMovedSpans[i].startS, 1) << "-"
+          << fixed(st.trunkMovedSpans[i].endS, 1) << " s";
+    if (st.trunkMovedSpans.size() > kListed)
+      err << " and " << st.trunkMovedSpans.size() - kListed << " more";
+    err << ". Shoulder angles there include the lean (status 4 in --out); a sternum IMU "
+           "measures it.\n";
+  }
   const std::uint64_t gatedPixels = c.rejectedOutliers - c.gatedPositions;
   if (c.gatedPositions > 0)
     err << "kinect: " << c.opticalUpdates << " positions fused, " << c.gatedPositions

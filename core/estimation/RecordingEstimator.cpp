@@ -51,6 +51,9 @@ struct StreamingEstimator::Impl {
   double tStart = 0.0;                                         // time of the latest (re)start
   double tLastImu = std::numeric_limits<double>::quiet_NaN();  // the latest IMU sample's time
   double firstFrom = 0.0, firstTo = 0.0;  // the first window, before it is cut at the data's end
+  // Without a trunk IMU, an optical shoulder tells whether the trunk moved (status 4).
+  std::optional<TrunkMotionDetector> trunkDetector;
+  bool trunkImuSeen = false;
   Eigen::Vector3d trunkSquared = Eigen::Vector3d::Zero();  // summed squared trunk errors (rad^2)
   Eigen::Vector3d trunkPeak = Eigen::Vector3d::Zero();     // largest trunk errors (rad)
 };
@@ -64,6 +67,15 @@ bool StreamingEstimator::push(const ArmSample& s, EstimateRow& row) {
   Impl& d = *m_impl;
   ++m_st.rows;
   const UpdateResult r = d.filter->update(s);
+  if (s.trunk) d.trunkImuSeen = true;
+  if (s.shoulder && !d.trunkDetector && !d.trunkImuSeen) d.trunkDetector.emplace();
+  bool trunkMoved = false;
+  if (d.trunkDetector && !d.trunkImuSeen) {
+    TrunkMotionInput in;
+    in.t = s.t;
+    in.shoulder = s.shoulder;
+    trunkMoved = d.trunkDetector->update(in).moving;
+  }
   if (!s.hasImu()) return false;
   ++m_st.imuRows;
   d.tLastImu = s.t;
@@ -83,6 +95,7 @@ bool StreamingEstimator::push(const ArmSample& s, EstimateRow& row) {
   row.th = e.th;
   row.sd = e.thStd;
   row.status = statusOf(r);
+  if (trunkMoved && row.status == kStatusFused) row.status = kStatusTrunkMoved;
   row.trunk.setConstant(std::numeric_limits<double>::quiet_NaN());
   row.trunkSd = row.trunk;
   if (const std::optional<TrunkEstimate> trunk = d.filter->trunk(); trunk && trunk->measured) {
@@ -128,6 +141,7 @@ EstimateStats StreamingEstimator::stats() const {
   st.truthCount = d.all.count();
   st.rmseDeg = d.all.rmse() / kDeg;
   st.peakDeg = d.all.peak() / kDeg;
+  if (d.trunkDetector && !d.trunkImuSeen) st.trunkMovedSpans = d.trunkDetector->spans();
   if (st.trunkTruthCount > 0) {
     st.trunkRmseDeg = (d.trunkSquared / double(st.trunkTruthCount)).cwiseSqrt() / kDeg;
     st.trunkPeakDeg = d.trunkPeak / kDeg;

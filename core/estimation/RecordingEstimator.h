@@ -10,8 +10,10 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/TrunkMotionDetector.h"
 #include "core/io/Recording.h"
 
 namespace armtrack {
@@ -46,9 +48,11 @@ inline bool hasTrunkOutput(const RecordingColumns& c) {
 /// Status of an output row: 0 the readings were fused; 1 every reading of the row was refused as
 /// implausible and the estimate is a prediction; 2 the filter (re)started here; 3 the filter had
 /// lost the arm (or its start-up guess was poor) and re-initialised from the recent window. At 2
-/// and 3 the angles may jump without the arm having moved.
+/// and 3 the angles may jump without the arm having moved. 4: fused, but the trunk had moved from
+/// its start pose with no trunk IMU to measure it (an optical shoulder saw it,
+/// core/estimation/TrunkMotionDetector.h): the shoulder angles then include the patient's lean.
 inline constexpr int kStatusFused = 0, kStatusPredicted = 1, kStatusRestarted = 2,
-                     kStatusRecovered = 3;
+                     kStatusRecovered = 3, kStatusTrunkMoved = 4;
 
 /// After a (re)start (status 2) or a recovery (status 3) the filter settles for about this long
 /// (s): the error statistics leave these rows out, and so do the clinical metrics of a session.
@@ -90,6 +94,8 @@ struct EstimateStats {
   JointVector rmseDeg = JointVector::Zero();
   JointVector peakDeg = JointVector::Zero();
   std::size_t truthRows = 0;  ///< estimates that had true angles, start-up seconds included
+  /// Spans in which the trunk moved with no trunk IMU to measure it (rows of status 4).
+  std::vector<TrunkMotionSpan> trunkMovedSpans;
   /// Trunk angles against the recording's true ones (flexion, lateral, axial), after start-up.
   std::size_t trunkTruthCount = 0;
   Eigen::Vector3d trunkRmseDeg = Eigen::Vector3d::Zero();
