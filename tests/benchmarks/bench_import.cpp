@@ -4,7 +4,10 @@
 // and peak resident memory (the kernel's ru_maxrss) are printed beside the target. Not a test:
 // timings depend on the machine; the tests check the behaviour.
 //
-//   bench_import --cli build/app/armtrack-cli [--minutes 60] [--skip-hour] [--dir DIR]
+//   bench_import --cli build/app/armtrack-cli [--minutes 60] [--skip-hour] [--trunk-hour]
+//                [--dir DIR]
+// --trunk-hour adds the hour's re-estimation with a sternum IMU and a leaning trunk (issue 26):
+// `estimate` of the same hour simulated with the trunk, against the one without.
 #include <fcntl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
@@ -122,7 +125,7 @@ void editTimes(const fs::path& in, const fs::path& out, std::size_t row, double 
 int main(int argc, char** argv) {
   std::string cli;
   double minutes = 60;
-  bool hour = true;
+  bool hour = true, trunkHour = false;
   fs::path dir;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -132,11 +135,14 @@ int main(int argc, char** argv) {
       minutes = std::atof(argv[++i]);
     else if (a == "--skip-hour")
       hour = false;
+    else if (a == "--trunk-hour")
+      trunkHour = true;
     else if (a == "--dir" && i + 1 < argc)
       dir = argv[++i];
     else {
       std::fprintf(stderr,
-                   "usage: bench_import --cli PATH [--minutes N] [--skip-hour] [--dir D]\n");
+                   "usage: bench_import --cli PATH [--minutes N] [--skip-hour] [--trunk-hour] "
+                   "[--dir D]\n");
       return 2;
     }
   }
@@ -216,6 +222,30 @@ int main(int argc, char** argv) {
           tool({"report", id, "--pdf", (dir / "hour.pdf").string(), "--db", db, "--user", "boss"}),
           2 * scale, 300);
     fs::remove(big);
+  }
+  if (trunkHour) {
+    const std::string duration = std::to_string(static_cast<int>(minutes * 60));
+    const double scale = minutes / 60.0;
+    std::printf(
+        "\n%.0f min at 1 kHz re-estimated (two IMUs, Kinect), still trunk and leaning "
+        "trunk with a sternum IMU:\n",
+        minutes);
+    for (const bool trunk : {false, true}) {
+      const fs::path rec = dir / (trunk ? "trunk-hour.csv" : "still-hour.csv");
+      std::vector<std::string> sim = {"simulate", "--trajectory", "reaching",  "--peak-rate",
+                                      "90",       "--peak-accel", "300",       "--duration",
+                                      duration,   "--out",        rec.string()};
+      if (trunk) sim.insert(sim.end(), {"--trunk-lean", "15", "--trunk-imu"});
+      r = tool(sim);
+      std::printf("%-44s exit %3d  %7.2f s  (%.0f MB of CSV)\n",
+                  trunk ? "simulate (trunk)" : "simulate (still)", r.exitCode, r.seconds,
+                  static_cast<double>(fs::file_size(rec)) / 1e6);
+      print(trunk ? "estimate, sternum IMU and leaning trunk" : "estimate, still trunk",
+            tool({"estimate", rec.string(), "--out", (dir / "est.csv").string(), "--overwrite"}),
+            60 * scale, 300);
+      fs::remove(rec);
+      fs::remove(fs::path(rec).replace_extension(".json"));
+    }
   }
   if (ownDir) fs::remove_all(dir);
   return 0;
