@@ -26,14 +26,32 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
 
 mkdir -p "$build/artifacts"
+# One fuzzer per core at a time (each is one process on one core, so each still gets its seconds
+# of a whole core); the results are printed in the order of the list.
+jobs="${ARMTRACK_FUZZ_JOBS:-$(nproc)}"
+fuzz() {
+  local t="$1"
+  mkdir -p "$build/corpus/$t"
+  # The first corpus dir collects new inputs; the seeds in the tree are only read.
+  "$build/tests/fuzz/$t" "$build/corpus/$t" "$root/tests/fuzz/corpus/$t" \
+    -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
+    -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$build/$t.log" 2>&1
+}
+running=0
+for t in "${targets[@]}"; do
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+  rm -f "$build/$t.status"
+  { if fuzz "$t"; then echo ok; else echo failed; fi >"$build/$t.status"; } &
+  running=$((running + 1))
+done
+wait
 status=0
 for t in "${targets[@]}"; do
-  mkdir -p "$build/corpus/$t"
   log="$build/$t.log"
-  # The first corpus dir collects new inputs; the seeds in the tree are only read.
-  if "$build/tests/fuzz/$t" "$build/corpus/$t" "$root/tests/fuzz/corpus/$t" \
-      -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=1024 \
-      -print_final_stats=1 -artifact_prefix="$build/artifacts/$t-" >"$log" 2>&1; then
+  if [ "$(cat "$build/$t.status" 2>/dev/null)" = ok ]; then
     runs="$(grep -m1 'stat::number_of_executed_units' "$log" | awk '{print $2}')"
     echo "run-fuzzers: $t ok, ${runs:-?} executions in ${seconds} s"
   else
