@@ -126,7 +126,6 @@ void TrunkTracker::addImu(double t, const ImuReading& r) {
 }
 
 void TrunkTracker::addShoulder(double t, const Eigen::Vector3d& s) {
-  static_cast<void>(t);
   if (!m_haveShoulder) {
     m_haveShoulder = true;
     m_referenceCount = 0;
