@@ -136,7 +136,7 @@ void applyCalibration(const Calibration& c, EstimatorParams& params) {
 
 ImuCalibration mirrorImuCalibration(const ImuCalibration& c) {
   ImuCalibration m;
-  m.rotation = kMirror * c.rotation * kMirror;
+  m.rotation = mirrorRotation(c.rotation);
   m.gyroBias = -(kMirror * c.gyroBias);
   return m;
 }

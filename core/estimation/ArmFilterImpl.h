@@ -67,11 +67,7 @@ class ArmFilter final : public JointEstimator {
   static EstimatorParams mirrored(EstimatorParams p) {
     if (p.side == Side::Left) {
       p.gUp = mirrorPoint(p.gUp);
-      if (p.trunk) {
-        const Eigen::Matrix3d m = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
-        p.trunk->imuPosition = mirrorPoint(p.trunk->imuPosition);
-        p.trunk->imuRotation = m * p.trunk->imuRotation * m;
-      }
+      if (p.trunk) p.trunk = mirrorMount(*p.trunk);
     }
     return p;
   }

@@ -75,8 +75,7 @@ void ArmFilter<N>::applyTrunk(ArmSample& s) {
     Eigen::Matrix3d rot = ts.rotation;
     Eigen::Vector3d shoulder = ts.shoulder;
     if (m_p.side == Side::Left) {
-      const Eigen::Matrix3d m = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
-      rot = m * rot * m;
+      rot = mirrorRotation(rot);
       shoulder = mirrorPoint(shoulder);
     }
     CameraParams c = *m_p.camera;

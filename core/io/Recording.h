@@ -41,6 +41,11 @@ inline TrunkMount defaultTrunkMount(Side side) {
   return m;
 }
 
+/// The mounting of the same sensor on the other side's mirror image (core/kinematics/Side.h).
+inline TrunkMount mirrorMount(const TrunkMount& m) {
+  return {mirrorPoint(m.imuPosition), mirrorRotation(m.imuRotation)};
+}
+
 /// The sidecar's contents.
 struct RecordingMeta {
   ArmGeometry geometry;

@@ -23,4 +23,12 @@ inline Eigen::Vector3d mirrorPoint(const Eigen::Vector3d& p) {
   return {p.x(), p.y(), -p.z()};
 }
 
+/// The same mirror for a rotation between two mirrored frames, D R D with D = diag(1, 1, -1): a
+/// sensor's axes F (columns in frame 0) become those of its twin (z reversed, still right-handed),
+/// and a turn of frame 0 becomes the mirror image's turn. An involution.
+inline Eigen::Matrix3d mirrorRotation(const Eigen::Matrix3d& r) {
+  const Eigen::Matrix3d d = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+  return d * r * d;
+}
+
 }  // namespace armtrack

@@ -203,16 +203,12 @@ struct SensorStream::Impl {
     trueTrunk = p.trunk.enabled || p.trunkImu.enabled;
     // The hip and the sternum IMU in the mirror image's frame: points p -> S p, a sensor's axes
     // F -> S F D (docs/arm-model.md, "Left arm"), so mirrorSample gives the left arm's readings.
-    const Eigen::Matrix3d sd = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
     hip = p.trunk.hip.value_or(defaultHip(p.side));
     const TrunkMount mount = p.trunkMount.value_or(defaultSimulatedTrunkMount(p.side));
-    mountPosition = mount.imuPosition;
-    mountRotation = mount.imuRotation;
-    if (left) {
-      hip = mirrorPoint(hip);
-      mountPosition = mirrorPoint(mountPosition);
-      mountRotation = sd * mountRotation * sd;
-    }
+    const TrunkMount twin = left ? mirrorMount(mount) : mount;
+    if (left) hip = mirrorPoint(hip);
+    mountPosition = twin.imuPosition;
+    mountRotation = twin.imuRotation;
     if (p.trunkImu.enabled) meta.trunk = mount;
   }
 
