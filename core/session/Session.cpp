@@ -156,6 +156,9 @@ QString Session::columnsOfStreams(RecordingColumns& columns, bool& imu) {
       case StreamRole::Truth:
         columns.truth = true;
         break;
+      case StreamRole::TrunkImu:
+        columns.trunk = true;
+        break;
     }
   }
   return {};

@@ -77,6 +77,17 @@ struct EstimateRow {
   /// positions in the shoulder frame of the arm's side (m), webcam marker pixels.
   std::optional<Eigen::Vector3d> opticalElbow, opticalWrist;
   std::optional<Eigen::Vector2d> camElbow, camWrist;
+  /// The trunk's flexion, lateral bending and axial rotation and their 1-sigma uncertainty
+  /// (rad, patient terms, relative to the start pose; core/kinematics/Trunk.h), when a trunk IMU
+  /// measures them (docs/trunk.md).
+  std::optional<Eigen::Vector3d> trunk, trunkStd;
+  /// The simulated trunk's true angles (rad), simulated devices.
+  std::optional<Eigen::Vector3d> trueTrunk;
+  /// The newest optical shoulder position (world frame, m) since the previous estimate.
+  std::optional<Eigen::Vector3d> opticalShoulder;
+  /// The trunk has moved from its start pose with no trunk IMU to measure it (an optical
+  /// shoulder saw it; the row's kStatusTrunkMoved): the shoulder angles include the lean.
+  bool trunkMoved = false;
 };
 
 /// Latencies in 0.1 ms bins up to 1 s.

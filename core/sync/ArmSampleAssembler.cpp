@@ -15,11 +15,13 @@ bool ArmSampleAssembler::slotFilled(StreamRole slot) const {
     case StreamRole::ForearmImu:
       return r.forearm.has_value();
     case StreamRole::Optical:
-      return r.elbow.has_value() || r.wrist.has_value();
+      return r.elbow.has_value() || r.wrist.has_value() || r.shoulder.has_value();
     case StreamRole::Camera:
       return r.camWrist.has_value() || r.camElbow.has_value();
     case StreamRole::Truth:
       return r.trueAngles.has_value();
+    case StreamRole::TrunkImu:
+      return r.trunk.has_value();
   }
   return false;
 }
@@ -37,6 +39,7 @@ void ArmSampleAssembler::fill(StreamRole slot, const SensorPayload& payload) {
       const auto& o = std::get<OpticalPositions>(payload);
       r.elbow = o.elbow;
       r.wrist = o.wrist;
+      r.shoulder = o.shoulder;
       break;
     }
     case StreamRole::Camera: {
@@ -45,8 +48,14 @@ void ArmSampleAssembler::fill(StreamRole slot, const SensorPayload& payload) {
       r.camElbow = m.elbow;
       break;
     }
-    case StreamRole::Truth:
-      r.trueAngles = std::get<TruthAngles>(payload).th;
+    case StreamRole::Truth: {
+      const auto& truth = std::get<TruthAngles>(payload);
+      r.trueAngles = truth.th;
+      r.trueTrunk = truth.trunk;
+      break;
+    }
+    case StreamRole::TrunkImu:
+      r.trunk = std::get<ImuReading>(payload);
       break;
   }
 }
@@ -57,7 +66,8 @@ std::optional<ArmSample> ArmSampleAssembler::add(const SensorEvent& event) {
     return std::nullopt;
   }
   const StreamRole slot = m_roles[static_cast<std::size_t>(event.device)];
-  const bool imu = slot == StreamRole::UpperArmImu || slot == StreamRole::ForearmImu;
+  const bool imu = slot == StreamRole::UpperArmImu || slot == StreamRole::ForearmImu ||
+                   slot == StreamRole::TrunkImu;
   const bool ok = imu ? std::holds_alternative<ImuReading>(event.payload)
                   : slot == StreamRole::Optical
                       ? std::holds_alternative<OpticalPositions>(event.payload)

@@ -25,6 +25,8 @@ const char* toString(StreamRole role) {
       return "camera markers";
     case StreamRole::Truth:
       return "true angles";
+    case StreamRole::TrunkImu:
+      return "trunk IMU";
   }
   return "?";
 }
@@ -32,13 +34,14 @@ const char* toString(StreamRole role) {
 bool validPayload(StreamRole role, const SensorPayload& p) {
   switch (role) {
     case StreamRole::UpperArmImu:
-    case StreamRole::ForearmImu: {
+    case StreamRole::ForearmImu:
+    case StreamRole::TrunkImu: {
       const auto* r = std::get_if<ImuReading>(&p);
       return r && r->gyr.allFinite() && r->acc.allFinite();
     }
     case StreamRole::Optical: {
       const auto* o = std::get_if<OpticalPositions>(&p);
-      return o && finiteOpt(o->elbow) && finiteOpt(o->wrist);
+      return o && finiteOpt(o->elbow) && finiteOpt(o->wrist) && finiteOpt(o->shoulder);
     }
     case StreamRole::Camera: {
       const auto* m = std::get_if<MarkerPixels>(&p);
@@ -46,7 +49,7 @@ bool validPayload(StreamRole role, const SensorPayload& p) {
     }
     case StreamRole::Truth: {
       const auto* t = std::get_if<TruthAngles>(&p);
-      return t && t->th.allFinite();
+      return t && t->th.allFinite() && finiteOpt(t->trunk);
     }
   }
   return false;

@@ -18,14 +18,20 @@ enum class StreamRole {
   Optical,      ///< OpticalPositions in the shoulder frame (m)
   Camera,       ///< MarkerPixels in the camera image (pixels)
   Truth,        ///< TruthAngles of a simulated arm (rad)
+  TrunkImu,     ///< ImuReading in the sternum (trunk) sensor's axes (docs/trunk.md)
 };
-/// "upper-arm IMU", "forearm IMU", "optical positions", "camera markers", "true angles".
+/// "upper-arm IMU", "forearm IMU", "optical positions", "camera markers", "true angles",
+/// "trunk IMU".
 const char* toString(StreamRole role);
 
-/// Kinect (or external tracker) positions in the shoulder frame (m).
+/// Kinect (or external tracker) positions (m): in the shoulder frame, or, when the session has a
+/// trunk IMU or a shoulder, in the world frame (frame 0 with the trunk upright at the start;
+/// docs/recording-format.md). The shoulder centre, where the tracker sees it, is the optional
+/// `shoulder_*` group of a recording.
 struct OpticalPositions {
   std::optional<Eigen::Vector3d> elbow;
   std::optional<Eigen::Vector3d> wrist;
+  std::optional<Eigen::Vector3d> shoulder;
 };
 
 /// Webcam marker pixels (u, v).
@@ -37,6 +43,9 @@ struct MarkerPixels {
 /// The true joint angles (rad) of a simulated arm, for end-to-end accuracy checks.
 struct TruthAngles {
   JointVector th = JointVector::Zero();
+  /// The simulated trunk's flexion, lateral bending and axial rotation (rad, patient terms,
+  /// core/kinematics/Trunk.h), when the simulation has a trunk.
+  std::optional<Eigen::Vector3d> trunk;
 };
 
 /// Payload of a sensor sample: an IMU reading, optical positions, marker pixels or simulated truth.
