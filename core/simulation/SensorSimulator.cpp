@@ -249,7 +249,7 @@ struct SensorStream::Impl {
     TrunkPose pose;
     std::optional<TrunkMotionState> trunkState;
     if (trunkMotion) {
-      trunkState = trunkMotion->at(t, m);
+      trunkState = trunkMotion->at(t, *trajectory);
       pose = trunkPose(*trunkState, params.side);
       ideal = movingTrunkPrediction(m, pose);
     } else {

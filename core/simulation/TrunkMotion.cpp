@@ -46,6 +46,7 @@ TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
   if (!finite(p.leanDeg) || !finite(p.lateralRatio) || !finite(p.rotationRatio) ||
       !finite(p.reachStartDeg) || !finite(p.fullReachDeg) || !finite(p.swayDeg) ||
       !finite(p.swayMinHz) || !finite(p.swayMaxHz) || !finite(p.startSeconds) ||
+      !finite(p.followSeconds) ||
       (p.hip && !p.hip->allFinite()))
     throw std::invalid_argument("trunk motion: every value must be finite");
   if (std::abs(p.lateralSign) != 1.0 || std::abs(p.rotationSign) != 1.0)
@@ -56,6 +57,8 @@ TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
   if (p.swayDeg < 0.0) throw std::invalid_argument("trunk motion: the sway must be >= 0 deg");
   if (p.startSeconds < 0.0)
     throw std::invalid_argument("trunk motion: the lean's start must be >= 0 s");
+  if (p.followSeconds < 0.0 || p.followSeconds > 10.0)
+    throw std::invalid_argument("trunk motion: the trunk's following time must be 0-10 s");
   if (!(p.swayMinHz > 0.0) || !(p.swayMaxHz >= p.swayMinHz))
     throw std::invalid_argument("trunk motion: sway frequencies must satisfy 0 < min <= max");
   // One sway component per angle, drawn in a fixed order (frequency, then phase).
@@ -67,18 +70,44 @@ TrunkMotion::TrunkMotion(const TrunkSimParams& p) : m_params(p) {
     s.frequency = freq(rng);
     s.phase = phase(rng);
   }
+  // Raised-cosine weights at the taps' midpoints: the newest and oldest count least.
+  double sum = 0.0;
+  for (int i = 0; i < kFollowTaps; ++i) {
+    const double x = std::sin(std::numbers::pi * (i + 0.5) / kFollowTaps);
+    m_weight[static_cast<std::size_t>(i)] = x * x;
+    sum += x * x;
+  }
+  for (double& w : m_weight) w /= sum;
 }
 
-TrunkMotionState TrunkMotion::at(double t, const JointMotion& arm) const {
+TrunkMotion::Reach TrunkMotion::target(double t, const JointMotion& arm) const {
   const TrunkSimParams& p = m_params;
-  // The reach w in [0, 1] and its derivatives: shoulder flexion's ramp times the start's.
   const Ramp reach = smoothstep(arm.th(0), arm.thd(0), arm.thdd(0), p.reachStartDeg * kDeg,
                                 (p.fullReachDeg - p.reachStartDeg) * kDeg);
   const Ramp start =
       p.startSeconds > 0.0 ? smoothstep(t, 1.0, 0.0, 0.0, p.startSeconds) : Ramp{1.0, 0.0, 0.0};
-  const double w = reach.s * start.s;
-  const double wd = reach.sd * start.s + reach.s * start.sd;
-  const double wdd = reach.sdd * start.s + 2.0 * reach.sd * start.sd + reach.s * start.sdd;
+  return {reach.s * start.s, reach.sd * start.s + reach.s * start.sd,
+          reach.sdd * start.s + 2.0 * reach.sd * start.sd + reach.s * start.sdd};
+}
+
+TrunkMotionState TrunkMotion::at(double t, const Trajectory& arm) const {
+  const TrunkSimParams& p = m_params;
+  // The trunk's reach w: the target's average over the last followSeconds (before t = 0 the
+  // target holds its value at 0, so its derivatives there are 0).
+  Reach avg;
+  if (p.followSeconds <= 0.0) {
+    avg = target(t, arm.at(t));
+  } else {
+    for (int i = 0; i < kFollowTaps; ++i) {
+      const double u = t - p.followSeconds * (i + 0.5) / kFollowTaps;
+      const Reach r = u > 0.0 ? target(u, arm.at(u)) : Reach{target(0.0, arm.at(0.0)).w, 0.0, 0.0};
+      const double c = m_weight[static_cast<std::size_t>(i)];
+      avg.w += c * r.w;
+      avg.wd += c * r.wd;
+      avg.wdd += c * r.wdd;
+    }
+  }
+  const double w = avg.w, wd = avg.wd, wdd = avg.wdd;
   const double lean = p.leanDeg * kDeg;
   const Eigen::Vector3d full(lean, p.lateralSign * p.lateralRatio * lean,
                              p.rotationSign * p.rotationRatio * lean);

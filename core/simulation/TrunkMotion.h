@@ -19,20 +19,24 @@ namespace armtrack {
 /// How the simulated trunk moves. Off by default: a still, upright trunk (the simulation is then
 /// exactly what it was before the trunk existed).
 ///
-/// The lean follows the arm's reaches as patients compensate: with shoulder flexion th0, the reach
-/// w = S((th0 - reachStartDeg) / (fullReachDeg - reachStartDeg)) S(t / startSeconds), S the
-/// quintic smoothstep 10x^3 - 15x^4 + 6x^5 clamped to [0, 1] (flat at both ends, so the trunk's
-/// motion is as smooth as the arm's: continuous rates and accelerations for minimum-jerk and
-/// sinusoidal arms). The second factor brings the lean in over the first startSeconds, so the
-/// trunk is upright at t = 0, where the world frame is registered, whatever the arm's first
-/// posture. Each angle is then
+/// The lean follows the arm's reaches as patients compensate: with shoulder flexion th0, the
+/// reach's target r(t) = S((th0 - reachStartDeg) / (fullReachDeg - reachStartDeg)) S(t /
+/// startSeconds), S the quintic smoothstep 10x^3 - 15x^4 + 6x^5 clamped to [0, 1] (flat at both
+/// ends). The second factor brings the lean in over the first startSeconds, so the trunk is
+/// upright at t = 0, where the world frame is registered, whatever the arm's first posture.
+///
+/// The trunk is heavier and slower than the arm, so it does not follow r at the arm's pace: its
+/// reach w(t) is r averaged over the last followSeconds with a raised-cosine weight (kFollowTaps
+/// samples; r before t = 0 is r(0)). Fast reaches then lean the trunk over about followSeconds,
+/// and rates and accelerations stay continuous and exact (the average of r's derivatives). Each
+/// angle is
 ///   flexion  = leanDeg w                          + (1 - w) sway_flexion(t)
 ///   lateral  = lateralSign  lateralRatio leanDeg w + (1 - w) sway_lateral(t)
 ///   rotation = rotationSign rotationRatio leanDeg w + (1 - w) sway_rotation(t)
-/// so at the fullest reach (after startSeconds) the trunk is at exactly leanDeg forward, and no
-/// angle ever exceeds max(its lean part, swayDeg). The sway of each angle is
-/// (swayDeg / 2) (sin(2 pi f t + p) - sin p) with f in [swayMinHz, swayMaxHz] and p drawn from
-/// swaySeed: zero at t = 0, never beyond swayDeg.
+/// so once the arm has held its fullest reach for followSeconds (after startSeconds) the trunk is
+/// at exactly leanDeg forward, and no angle ever exceeds max(its lean part, swayDeg). The sway of
+/// each angle is (swayDeg / 2) (sin(2 pi f t + p) - sin p) with f in [swayMinHz, swayMaxHz] and p
+/// drawn from swaySeed: zero at t = 0, never beyond swayDeg.
 struct TrunkSimParams {
   bool enabled = false;
   /// The hip pivot the trunk turns about, in the arm's frame 0 with the trunk upright (m, relative
@@ -48,6 +52,10 @@ struct TrunkSimParams {
   double reachStartDeg = 20.0;  ///< shoulder flexion at which the lean starts (deg)
   double fullReachDeg = 90.0;   ///< shoulder flexion of the fullest reach (deg)
   double startSeconds = 2.0;    ///< the lean comes in over this time from t = 0 (s, >= 0)
+  /// The trunk follows the reach averaged over this long (s, >= 0; 0: at the arm's own pace).
+  /// Default 0.8 s: a fast reach (the arm at 400 deg/s) leans the trunk 20 deg at up to about
+  /// 50 deg/s, where following at the arm's pace turned it at 225 deg/s.
+  double followSeconds = 0.8;
   double swayDeg = 1.0;         ///< largest sway of each angle on its own (deg, >= 0)
   double swayMinHz = 0.1;       ///< sway frequencies are drawn from [swayMinHz, swayMaxHz]
   double swayMaxHz = 0.3;
@@ -79,15 +87,26 @@ class TrunkMotion {
   /// frequencies outside (0, inf) or in the wrong order, a sign other than +-1, or fullReachDeg
   /// not above reachStartDeg.
   explicit TrunkMotion(const TrunkSimParams& params);
-  /// The trunk's motion while the arm moves as given (its shoulder flexion drives the lean).
-  TrunkMotionState at(double t, const JointMotion& arm) const;
+  /// The trunk's motion at t while the arm moves as given (its shoulder flexion over the last
+  /// followSeconds drives the lean).
+  TrunkMotionState at(double t, const Trajectory& arm) const;
+
+  /// Samples of the reach's average (see TrunkSimParams).
+  static constexpr int kFollowTaps = 48;
 
  private:
+  struct Reach {
+    double w = 0.0, wd = 0.0, wdd = 0.0;
+  };
+  /// The reach's target r and its derivatives at t with the arm's motion there.
+  Reach target(double t, const JointMotion& arm) const;
+
   struct Sway {
     double amplitude, frequency, phase;  // rad, Hz, rad
   };
   TrunkSimParams m_params;
   std::array<Sway, 3> m_sway;
+  std::array<double, kFollowTaps> m_weight{};  // the average's weights, summing to 1
 };
 
 /// R, its angular velocity and angular acceleration (world coordinates) from the angles' motion.
