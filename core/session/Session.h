@@ -216,6 +216,7 @@ class Session : public QObject {
   SessionParams m_params;
   std::vector<DeviceEntry> m_devices;
   std::vector<Stream> m_streams;
+  RecordingColumns m_columns;  // the recording's, set by start()
   bool m_running = false;
   double m_startTime = 0.0;
   double m_scale = 1.0;  // device seconds per host second (replays faster than real time)

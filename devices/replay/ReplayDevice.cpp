@@ -132,10 +132,10 @@ void ReplayDevice::tick() {
     const ArmSample& s = m_pending;
     if (s.upperArm) add(StreamRole::UpperArmImu, s.t, *s.upperArm);
     if (s.forearm) add(StreamRole::ForearmImu, s.t, *s.forearm);
-    if (s.elbow || s.wrist) add(StreamRole::Optical, s.t, OpticalPositions{s.elbow, s.wrist});
+    if (s.elbow || s.wrist) add(StreamRole::Optical, s.t, OpticalPositions{s.elbow, s.wrist, s.shoulder});
     if (s.camWrist || s.camElbow)
       add(StreamRole::Camera, s.t, MarkerPixels{s.camWrist, s.camElbow});
-    if (s.trueAngles) add(StreamRole::Truth, s.t, TruthAngles{*s.trueAngles});
+    if (s.trueAngles) add(StreamRole::Truth, s.t, TruthAngles{*s.trueAngles, s.trueTrunk});
     m_lastT = s.t;
     ++m_passRows;
     try {
