@@ -5,7 +5,9 @@
 namespace armtrack::devices::kinect {
 
 QString KinectPlugin::description() const {
-  return QStringLiteral("Kinect v1 (libfreenect): elbow and wrist markers in 3D, shoulder frame");
+  return QStringLiteral(
+      "Kinect v1 (libfreenect): elbow and wrist markers, and a shoulder marker if set, in 3D in "
+      "the registered frame");
 }
 
 QString KinectPlugin::optionsHelp() const {
@@ -20,6 +22,9 @@ QString KinectPlugin::optionsHelp() const {
       "dictionary=DICT_4X4_50     aruco markers: OpenCV dictionary\n"
       "wrist-id=0                 aruco markers: wrist marker id\n"
       "elbow-id=1                 aruco markers: elbow marker id\n"
+      "shoulder-hsv=H1-H2:S1-S2:V1-V2  colour markers: a third marker on the shoulder (acromion),\n"
+      "                           e.g. magenta 140-170:100-255:70-255; shows the trunk's lean\n"
+      "shoulder-id=               aruco markers: the shoulder marker's id (e.g. 2)\n"
       "window=5                   depth pixels (odd square side) whose median is a marker's depth\n"
       "joint-depth=0              m from the marker's surface to the joint centre, along the ray\n"
       "retry=1                    s between attempts to reopen\n"
