@@ -5,9 +5,9 @@
 namespace armtrack::devices::kinect {
 
 QString KinectPlugin::description() const {
-  return QStringLiteral(
-      "Kinect v1 (libfreenect): elbow and wrist markers, and a shoulder marker if set, in 3D in "
-      "the registered frame");
+  // Word for word as in ui/DeviceWords.cpp, which translates it. "Shoulder frame": the one it was
+  // registered in, which is the world frame of a session with a trunk sensor.
+  return QStringLiteral("Kinect v1 (libfreenect): elbow and wrist markers in 3D, shoulder frame");
 }
 
 QString KinectPlugin::optionsHelp() const {

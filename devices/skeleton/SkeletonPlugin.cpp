@@ -9,8 +9,9 @@ QString SkeletonPlugin::name() const {
 }
 
 QString SkeletonPlugin::description() const {
+  // Word for word as in ui/DeviceWords.cpp, which translates it (the shoulder comes too).
   return QStringLiteral(
-      "elbow, wrist and shoulder positions from an external body tracker (Kinect SDK, "
+      "elbow and wrist positions from an external body tracker (Kinect SDK, "
       "pose estimator), JSON over UDP");
 }
 
