@@ -55,14 +55,31 @@ StreamRole Options::imuRole(const QString& key) {
   const QString role = text(key).trimmed().toLower();
   if (role == u"upper") return StreamRole::UpperArmImu;
   if (role == u"forearm") return StreamRole::ForearmImu;
+  // The third sensor sits flat on the sternum and measures the trunk (docs/trunk.md).
+  if (role == u"trunk" || role == u"sternum") return StreamRole::TrunkImu;
   if (role.isEmpty())
     m_problems << QStringLiteral(
-                      "option '%1' is required: %1=upper or %1=forearm (the arm segment the "
-                      "sensor is strapped to)")
+                      "option '%1' is required: %1=upper, %1=forearm or %1=trunk (where the "
+                      "sensor is strapped: the upper arm, the forearm, or the sternum for the "
+                      "trunk)")
                       .arg(key);
   else
-    m_problems << QStringLiteral("option '%1' must be upper or forearm, not '%2'").arg(key, role);
+    m_problems << QStringLiteral(
+                      "option '%1' must be upper, forearm or trunk (the sternum sensor), not "
+                      "'%2'")
+                      .arg(key, role);
   return StreamRole::UpperArmImu;
+}
+
+const char* imuPlaceName(StreamRole role) {
+  switch (role) {
+    case StreamRole::ForearmImu:
+      return "forearm";
+    case StreamRole::TrunkImu:
+      return "trunk";
+    default:
+      return "upper-arm";
+  }
 }
 
 QString Options::error() const {

@@ -22,8 +22,9 @@ class Options {
   /// "1/0", "true/false", "yes/no", "on/off".
   bool flag(const QString& key, bool fallback);
   QString text(const QString& key, const QString& fallback = {});
-  /// The arm segment an IMU is strapped to: "upper" or "forearm" (required; any case). On a
-  /// missing or bad value the problem is noted and UpperArmImu returned.
+  /// Where an IMU is strapped: "upper" (UpperArmImu), "forearm" (ForearmImu), or "trunk" or
+  /// "sternum" (TrunkImu, the third sensor on the sternum); required, any case. On a missing or
+  /// bad value the problem is noted and UpperArmImu returned.
   StreamRole imuRole(const QString& key = QStringLiteral("role"));
   bool has(const QString& key) const { return m_values.contains(key); }
 
@@ -38,5 +39,18 @@ class Options {
   QStringList m_known;
   QStringList m_problems;
 };
+
+/// Declares that an Optical stream's samples carry the shoulder (OpticalPositions::shoulder, in
+/// the world frame), so that the session records the shoulder_* columns (StreamInfo::shoulder).
+/// Written to compile before StreamInfo has that flag (it comes with the live session's trunk
+/// work); once it has, this is a plain `info.shoulder = true`.
+template <class Info>
+void declareShoulder(Info& info) {
+  if constexpr (requires { info.shoulder = true; }) info.shoulder = true;
+}
+
+/// Where an IMU of this role is worn, as the start of a stream's name: "upper-arm", "forearm" or
+/// "trunk" (e.g. "trunk Shimmer3").
+const char* imuPlaceName(StreamRole role);
 
 }  // namespace armtrack::devices

@@ -3,6 +3,7 @@
 #include <libfreenect.h>
 
 #include <QTimer>
+#include <bitset>
 #include <opencv2/imgproc.hpp>
 
 #include "devices/api/Options.h"
@@ -18,6 +19,41 @@ constexpr double kMaxPairAge = 0.05;  // s between a colour frame and the depth 
 webcam::MarkerDetector makeDetector(const KinectSettings& s) {
   return s.markers == webcam::MarkerKind::Colour ? webcam::MarkerDetector(s.colour)
                                                  : webcam::MarkerDetector(s.aruco);
+}
+
+// The shoulder marker's detector: one of the webcam's, with the shoulder marker as its wrist.
+// Throws std::invalid_argument for an ArUco id the dictionary does not have.
+std::optional<webcam::MarkerDetector> makeShoulderDetector(const KinectSettings& s) {
+  if (s.markers == webcam::MarkerKind::Colour && s.shoulderHsv) {
+    webcam::ColourMarkerParams c = s.colour;
+    c.wrist = c.elbow = *s.shoulderHsv;
+    return webcam::MarkerDetector(c);
+  }
+  if (s.markers == webcam::MarkerKind::Aruco && s.shoulderId) {
+    webcam::ArucoMarkerParams a = s.aruco;
+    a.wristId = *s.shoulderId;
+    a.elbowId = *s.shoulderId == 0 ? 1 : 0;  // any other id: its result is not used
+    return webcam::MarkerDetector(a);
+  }
+  return std::nullopt;
+}
+
+// The hues (0-179) an HSV box takes, wrapping through 0 when hueMin > hueMax.
+std::bitset<180> hues(const webcam::HsvRange& r) {
+  std::bitset<180> h;
+  for (int k = 0; k < 180; ++k)
+    if (r.hueMin <= r.hueMax ? (k >= r.hueMin && k <= r.hueMax) : (k >= r.hueMin || k <= r.hueMax))
+      h.set(static_cast<std::size_t>(k));
+  return h;
+}
+
+StreamInfo opticalStream(const KinectSettings& s) {
+  StreamInfo info{"Kinect elbow and wrist", StreamRole::Optical, 30.0, 0.0, std::nullopt};
+  if (s.shoulderHsv || s.shoulderId) {
+    info.name = "Kinect elbow, wrist and shoulder";
+    declareShoulder(info);
+  }
+  return info;
 }
 
 }  // namespace
@@ -39,6 +75,9 @@ std::optional<KinectSettings> readKinectSettings(const QVariantMap& options, QSt
           .toStdString();
   s.aruco.wristId = o.integer(QStringLiteral("wrist-id"), s.aruco.wristId, 0, 100000);
   s.aruco.elbowId = o.integer(QStringLiteral("elbow-id"), s.aruco.elbowId, 0, 100000);
+  const QString shoulderHsv = o.text(QStringLiteral("shoulder-hsv")).trimmed();
+  if (o.has(QStringLiteral("shoulder-id")))
+    s.shoulderId = o.integer(QStringLiteral("shoulder-id"), 0, 0, 100000);
   s.processing.depthWindowPx = o.integer(QStringLiteral("window"), 5, 1, 31);
   s.processing.jointDepth = o.number(QStringLiteral("joint-depth"), 0.0, -0.2, 0.2);
   s.retrySeconds = o.number(QStringLiteral("retry"), 1.0, 0.05, 60.0);
@@ -65,6 +104,41 @@ std::optional<KinectSettings> readKinectSettings(const QVariantMap& options, QSt
       webcam::ArucoMarkerDetector check(s.aruco);
     } catch (const std::invalid_argument& e) {
       problems << QString::fromStdString(e.what());
+    }
+  }
+  // The shoulder marker: a third colour, or a third id, that neither arm marker has.
+  if (!shoulderHsv.isEmpty()) {
+    if (s.markers != webcam::MarkerKind::Colour)
+      problems << QStringLiteral(
+          "shoulder-hsv is for colour markers; with markers=aruco give shoulder-id");
+    else if (const auto r = webcam::parseHsvRange(shoulderHsv.toStdString()); !r)
+      problems << QStringLiteral(
+                      "shoulder-hsv=%1: expected H1-H2:S1-S2:V1-V2, e.g. 140-170:100-255:70-255 "
+                      "(magenta)")
+                      .arg(shoulderHsv);
+    else if ((hues(*r) & (hues(s.colour.wrist) | hues(s.colour.elbow))).any())
+      problems << QStringLiteral(
+                      "shoulder-hsv=%1: its hues overlap the wrist's or the elbow's marker; choose "
+                      "a third colour, e.g. magenta 140-170:100-255:70-255")
+                      .arg(shoulderHsv);
+    else
+      s.shoulderHsv = *r;
+  }
+  if (s.shoulderId) {
+    if (s.markers != webcam::MarkerKind::Aruco)
+      problems << QStringLiteral(
+          "shoulder-id is for ArUco markers; with colour markers give shoulder-hsv");
+    else if (*s.shoulderId == s.aruco.wristId || *s.shoulderId == s.aruco.elbowId)
+      problems << QStringLiteral(
+                      "shoulder-id=%1 is the wrist's or the elbow's marker; give the shoulder a "
+                      "third id")
+                      .arg(*s.shoulderId);
+    else {
+      try {
+        makeShoulderDetector(s);
+      } catch (const std::invalid_argument& e) {
+        problems << QStringLiteral("shoulder-id: %1").arg(QString::fromStdString(e.what()));
+      }
     }
   }
   if (s.cameraPath.isEmpty()) {
@@ -104,10 +178,10 @@ std::optional<KinectSettings> readKinectSettings(const QVariantMap& options, QSt
 // ---------------------------------------------------------------------------------------------
 
 KinectDevice::KinectDevice(KinectSettings settings, QObject* parent)
-    : Device({StreamInfo{"Kinect elbow and wrist", StreamRole::Optical, 30.0, 0.0, std::nullopt}},
-             parent),
+    : Device({opticalStream(settings)}, parent),
       m_settings(std::move(settings)),
-      m_processor(m_settings.processing, makeDetector(m_settings)) {}
+      m_processor(m_settings.processing, makeDetector(m_settings),
+                  makeShoulderDetector(m_settings)) {}
 
 KinectDevice::~KinectDevice() {
   close();
@@ -257,6 +331,8 @@ void KinectDevice::handleDepth(const std::uint16_t* depth) {
   OpticalPositions p;
   if (f.wrist) p.wrist = Eigen::Vector3d((*f.wrist)[0], (*f.wrist)[1], (*f.wrist)[2]);
   if (f.elbow) p.elbow = Eigen::Vector3d((*f.elbow)[0], (*f.elbow)[1], (*f.elbow)[2]);
+  if (f.shoulder)
+    p.shoulder = Eigen::Vector3d((*f.shoulder)[0], (*f.shoulder)[1], (*f.shoulder)[2]);
   if (f.depthMissing > 0) {
     m_depthMissingReported += static_cast<std::uint64_t>(f.depthMissing);
     if (now - m_lastProblemHost >= 1.0) {

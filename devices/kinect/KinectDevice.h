@@ -1,5 +1,6 @@
-// The Kinect v1 device: colour and registered depth frames from libfreenect, turned into elbow and
-// wrist positions in the shoulder frame by KinectProcessor (docs/devices/kinect.md).
+// The Kinect v1 device: colour and registered depth frames from libfreenect, turned into elbow,
+// wrist and (with a shoulder marker) shoulder positions in the registered frame by KinectProcessor
+// (docs/devices/kinect.md).
 #pragma once
 
 #include <QString>
@@ -24,6 +25,10 @@ struct KinectSettings {
   webcam::MarkerKind markers = webcam::MarkerKind::Colour;
   webcam::ColourMarkerParams colour;
   webcam::ArucoMarkerParams aruco;
+  /// A third marker on the shoulder (acromion): its HSV box (colour markers) or its id (ArUco);
+  /// neither: no shoulder is published.
+  std::optional<webcam::HsvRange> shoulderHsv;
+  std::optional<int> shoulderId;
   QString cameraPath;
   double retrySeconds = 1.0;    ///< s between attempts to (re)open
   double timeoutSeconds = 2.0;  ///< s without a depth frame before reopening
@@ -33,7 +38,8 @@ struct KinectSettings {
 /// camera= is required: the colour camera's calibration file with its pose (camera-register).
 std::optional<KinectSettings> readKinectSettings(const QVariantMap& options, QString* error);
 
-/// One Kinect v1 as one Optical stream of OpticalPositions. libfreenect runs in the device thread:
+/// One Kinect v1 as one Optical stream of OpticalPositions (the shoulder too, declared on the
+/// stream, when a shoulder marker is set). libfreenect runs in the device thread:
 /// a 5 ms timer calls freenect_process_events_timeout with a zero timeout, and the video and depth
 /// callbacks run inside that call. Each depth frame is paired with the newest colour frame (if it
 /// is under 50 ms older) and published; device time is the host time (hostNow()) when the depth

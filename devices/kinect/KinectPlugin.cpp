@@ -5,6 +5,8 @@
 namespace armtrack::devices::kinect {
 
 QString KinectPlugin::description() const {
+  // Word for word as in ui/DeviceWords.cpp, which translates it. "Shoulder frame": the one it was
+  // registered in, which is the world frame of a session with a trunk sensor.
   return QStringLiteral("Kinect v1 (libfreenect): elbow and wrist markers in 3D, shoulder frame");
 }
 
@@ -20,6 +22,10 @@ QString KinectPlugin::optionsHelp() const {
       "dictionary=DICT_4X4_50     aruco markers: OpenCV dictionary\n"
       "wrist-id=0                 aruco markers: wrist marker id\n"
       "elbow-id=1                 aruco markers: elbow marker id\n"
+      "shoulder-hsv=              colour markers: HSV box of a third marker, on the shoulder\n"
+      "                           (acromion), e.g. magenta 140-170:100-255:70-255; empty: none.\n"
+      "                           It shows the trunk's lean\n"
+      "shoulder-id=               aruco markers: the shoulder marker's id (e.g. 2)\n"
       "window=5                   depth pixels (odd square side) whose median is a marker's depth\n"
       "joint-depth=0              m from the marker's surface to the joint centre, along the ray\n"
       "retry=1                    s between attempts to reopen\n"

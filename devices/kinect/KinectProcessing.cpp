@@ -8,8 +8,11 @@
 
 namespace armtrack::devices::kinect {
 
-KinectProcessor::KinectProcessor(KinectProcessingParams params, webcam::MarkerDetector detector)
-    : m_params(std::move(params)), m_detector(std::move(detector)) {
+KinectProcessor::KinectProcessor(KinectProcessingParams params, webcam::MarkerDetector detector,
+                                 std::optional<webcam::MarkerDetector> shoulder)
+    : m_params(std::move(params)),
+      m_detector(std::move(detector)),
+      m_shoulder(std::move(shoulder)) {
   const webcam::Intrinsics& in = m_params.colour;
   if (!(in.fx > 0.0) || !(in.fy > 0.0) || !std::isfinite(in.cx) || !std::isfinite(in.cy))
     throw std::invalid_argument(
@@ -66,7 +69,10 @@ KinectFrame KinectProcessor::process(const cv::Mat& bgr, const cv::Mat& depthMm)
         "differ)");
   KinectFrame f;
   f.pixels = m_detector.detect(bgr);
-  for (auto [pixel, out] : {std::pair{&f.pixels.wrist, &f.wrist}, {&f.pixels.elbow, &f.elbow}}) {
+  if (m_shoulder) f.shoulderPixel = m_shoulder->detect(bgr).wrist;
+  for (auto [pixel, out] : {std::pair{&f.pixels.wrist, &f.wrist},
+                            {&f.pixels.elbow, &f.elbow},
+                            {&f.shoulderPixel, &f.shoulder}}) {
     if (!*pixel) continue;
     const auto z = depthAt(**pixel, depthMm);
     if (!z) {

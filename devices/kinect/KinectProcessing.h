@@ -1,6 +1,7 @@
 // The Kinect v1's image side, without Qt or libfreenect (docs/devices/kinect.md): the wrist and
-// elbow markers found in the colour image (the webcam's detectors), their depth read from the
-// depth image registered to it, and the 3D points moved into the shoulder frame.
+// elbow markers, and optionally a shoulder marker, found in the colour image (the webcam's
+// detectors), their depth read from the depth image registered to it, and the 3D points moved
+// into the registered frame (the shoulder frame at registration: the world frame).
 #pragma once
 
 #include <opencv2/core.hpp>
@@ -30,19 +31,24 @@ struct KinectProcessingParams {
 /// One processed frame. A position is absent when its marker was not found, or when no valid
 /// depth lies under it (then depthMissing counts it).
 struct KinectFrame {
-  webcam::MarkerPair pixels;       ///< in the colour image, pixels
-  std::optional<cv::Vec3d> wrist;  ///< shoulder frame, m
-  std::optional<cv::Vec3d> elbow;  ///< shoulder frame, m
-  int depthMissing = 0;            ///< markers seen without a usable depth (0-2)
+  webcam::MarkerPair pixels;                 ///< in the colour image, pixels
+  std::optional<cv::Point2d> shoulderPixel;  ///< the shoulder marker, with a shoulder detector
+  std::optional<cv::Vec3d> wrist;            ///< registered frame, m
+  std::optional<cv::Vec3d> elbow;            ///< registered frame, m
+  std::optional<cv::Vec3d> shoulder;         ///< registered frame, m (the marker's point)
+  int depthMissing = 0;                      ///< markers seen without a usable depth (0-3)
 };
 
-/// Turns colour + registered depth frames into shoulder-frame marker positions. Not thread-safe;
-/// one per thread.
+/// Turns colour + registered depth frames into marker positions in the registered frame. Not
+/// thread-safe; one per thread.
 class KinectProcessor {
  public:
   /// Throws std::invalid_argument when the intrinsics are not positive, R is not a rotation, the
-  /// window is not odd and within 1-31, or the depth range is empty.
-  KinectProcessor(KinectProcessingParams params, webcam::MarkerDetector detector);
+  /// window is not odd and within 1-31, or the depth range is empty. `shoulder`, when given, finds
+  /// the shoulder marker as its *wrist* marker (a detector of its own, so the webcam's pair of
+  /// markers stays as it is; its elbow result is ignored).
+  KinectProcessor(KinectProcessingParams params, webcam::MarkerDetector detector,
+                  std::optional<webcam::MarkerDetector> shoulder = std::nullopt);
 
   /// bgr: 8-bit BGR colour image; depthMm: 16-bit depth in mm (0 = no reading), registered to the
   /// colour image (same size, pixel for pixel). Throws std::invalid_argument when the types or
@@ -51,7 +57,7 @@ class KinectProcessor {
 
   /// The median valid depth (m) around a pixel, if any.
   std::optional<double> depthAt(const cv::Point2d& pixel, const cv::Mat& depthMm) const;
-  /// The shoulder-frame point (m) seen at pixel at depth z (m, along the optical axis), plus
+  /// The registered-frame point (m) seen at pixel at depth z (m, along the optical axis), plus
   /// jointDepth along the ray.
   cv::Vec3d toShoulder(const cv::Point2d& pixel, double z) const;
 
@@ -60,6 +66,7 @@ class KinectProcessor {
  private:
   KinectProcessingParams m_params;
   webcam::MarkerDetector m_detector;
+  std::optional<webcam::MarkerDetector> m_shoulder;
   cv::Matx33d m_K;
   cv::Mat m_dist;
 };

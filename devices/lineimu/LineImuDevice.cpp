@@ -5,6 +5,7 @@
 #include <QUdpSocket>
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "devices/api/Options.h"
 #include "devices/api/TimerMs.h"
@@ -17,7 +18,7 @@ namespace {
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
-  info.name = role == StreamRole::ForearmImu ? "forearm line IMU" : "upper-arm line IMU";
+  info.name = std::string(imuPlaceName(role)) + " line IMU";
   info.role = role;
   return info;  // the rate comes with $HELLO; the time is unwrapped by the parser
 }

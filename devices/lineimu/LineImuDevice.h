@@ -25,7 +25,7 @@ struct LineImuSettings {
   QString serialPort;                         ///< e.g. /dev/ttyUSB0; empty for UDP
   int baud = 115200;                          ///< serial only (bit/s)
   std::uint16_t udpPort = 0;                  ///< local UDP port; 0 for serial
-  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu or ForearmImu
+  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu, ForearmImu or TrunkImu
   double retrySeconds = 1.0;                  ///< s between attempts to open the serial port
   double timeoutSeconds = 3.0;                ///< s without a sample: back to Connecting
 };

@@ -18,7 +18,8 @@ QString LineImuPlugin::optionsHelp() const {
   return QStringLiteral(
       "port=         serial port, e.g. /dev/ttyUSB0 (give port or udp)\n"
       "udp=          local UDP port to listen on, e.g. 9871 (give port or udp)\n"
-      "role=         upper or forearm, required: the arm segment the sensor is on\n"
+      "role=         upper, forearm or trunk, required: where the sensor is strapped (trunk:\n"
+      "              a third sensor flat on the sternum, measuring the patient's lean)\n"
       "baud=115200   serial speed (bit/s), serial only\n"
       "retry=1       seconds between attempts to open the serial port\n"
       "timeout=3     seconds without a sample before the state goes back to connecting");

@@ -5,6 +5,7 @@
 #include <QUdpSocket>
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "devices/api/Options.h"
 #include "devices/api/TimerMs.h"
@@ -17,7 +18,7 @@ namespace {
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
-  info.name = role == StreamRole::ForearmImu ? "forearm NGIMU" : "upper-arm NGIMU";
+  info.name = std::string(imuPlaceName(role)) + " NGIMU";
   info.role = role;
   return info;  // the send rate is set on the NGIMU; the time tag does not wrap
 }

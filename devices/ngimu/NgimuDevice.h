@@ -23,7 +23,7 @@ namespace armtrack::devices::ngimu {
 /// What the plugin's options select.
 struct NgimuSettings {
   std::uint16_t port = 0;                     ///< local UDP port the NGIMU sends to
-  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu or ForearmImu
+  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu, ForearmImu or TrunkImu
   double timeoutSeconds = 3.0;                ///< s without a sample: back to Connecting
 };
 

@@ -15,7 +15,8 @@ QString NgimuPlugin::description() const {
 QString NgimuPlugin::optionsHelp() const {
   return QStringLiteral(
       "port=         local UDP port the NGIMU sends to, required (e.g. 8001)\n"
-      "role=         upper or forearm, required: the arm segment the sensor is on\n"
+      "role=         upper, forearm or trunk, required: where the sensor is strapped (trunk:\n"
+      "              a third sensor flat on the sternum, measuring the patient's lean)\n"
       "timeout=3     seconds without a sample before the state goes back to connecting");
 }
 

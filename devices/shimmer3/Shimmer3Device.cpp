@@ -3,6 +3,7 @@
 #include <QLoggingCategory>
 #include <QTimer>
 #include <cmath>
+#include <string>
 
 #include "devices/api/Options.h"
 #include "devices/api/TimerMs.h"
@@ -17,7 +18,7 @@ constexpr double kWrapSeconds = static_cast<double>(kTimestampWrap) / kTickHz;  
 
 StreamInfo imuStream(StreamRole role) {
   StreamInfo info;
-  info.name = role == StreamRole::ForearmImu ? "forearm Shimmer3" : "upper-arm Shimmer3";
+  info.name = std::string(imuPlaceName(role)) + " Shimmer3";
   info.role = role;
   return info;  // rate unknown until the inquiry; the time is unwrapped here
 }

@@ -21,7 +21,7 @@ namespace armtrack::devices::shimmer3 {
 /// What the plugin's options select.
 struct Shimmer3Settings {
   QString port;                               ///< serial device, e.g. /dev/rfcomm0
-  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu or ForearmImu
+  StreamRole role = StreamRole::UpperArmImu;  ///< UpperArmImu, ForearmImu or TrunkImu
   double retrySeconds = 1.0;                  ///< s between attempts to open the port
   double timeoutSeconds = 3.0;                ///< s without an answer or data: reopen
 };

@@ -15,7 +15,8 @@ QString Shimmer3Plugin::description() const {
 QString Shimmer3Plugin::optionsHelp() const {
   return QStringLiteral(
       "port=         serial port of the Shimmer, required (e.g. /dev/rfcomm0)\n"
-      "role=         upper or forearm, required: the arm segment the sensor is on\n"
+      "role=         upper, forearm or trunk, required: where the sensor is strapped (trunk:\n"
+      "              a third sensor flat on the sternum, measuring the patient's lean)\n"
       "retry=1       seconds between attempts to open the port\n"
       "timeout=3     seconds without an answer or data before the port is reopened");
 }

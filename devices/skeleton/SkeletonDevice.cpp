@@ -16,10 +16,16 @@ Q_LOGGING_CATEGORY(lcSkeleton, "armtrack.devices.skeleton")
 namespace armtrack::devices::skeleton {
 namespace {
 
-StreamInfo opticalStream() {
+StreamInfo opticalStream(Origin origin) {
   StreamInfo info;
-  info.name = "tracker elbow and wrist";
   info.role = StreamRole::Optical;
+  // Relative to the moving shoulder, the shoulder would always be zero: it is not published.
+  if (origin == Origin::Shoulder) {
+    info.name = "tracker elbow and wrist";
+  } else {
+    info.name = "tracker elbow, wrist and shoulder";
+    declareShoulder(info);
+  }
   return info;  // the tracker's rate is unknown here; its time does not wrap
 }
 
@@ -35,14 +41,19 @@ std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options,
   QStringList problems;
   s.port = static_cast<std::uint16_t>(opts.integer(QStringLiteral("port"), 9870, 1, 65535));
   const QString origin =
-      opts.text(QStringLiteral("origin"), QStringLiteral("shoulder")).trimmed().toLower();
+      opts.text(QStringLiteral("origin"), QStringLiteral("start")).trimmed().toLower();
   s.timeoutSeconds = opts.number(QStringLiteral("timeout"), 3.0, 0.2, 60.0);
   if (origin == u"shoulder")
     s.origin = Origin::Shoulder;
+  else if (origin == u"start")
+    s.origin = Origin::Start;
   else if (origin == u"camera")
     s.origin = Origin::Camera;
   else
-    problems << QStringLiteral("option 'origin' must be shoulder or camera, not '%1'").arg(origin);
+    problems << QStringLiteral(
+                    "option 'origin' must be shoulder, start or camera, not '%1' (start: the "
+                    "world frame, for a session with a trunk sensor)")
+                    .arg(origin);
   const QString cameraPath = opts.text(QStringLiteral("camera")).trimmed();
   const QString axes = opts.text(QStringLiteral("axes")).trimmed().toLower();
   if (!axes.isEmpty() && axes != u"shoulder")
@@ -82,7 +93,7 @@ std::optional<SkeletonSettings> readSkeletonSettings(const QVariantMap& options,
 }
 
 SkeletonDevice::SkeletonDevice(const SkeletonSettings& settings, QObject* parent)
-    : Device({opticalStream()}, parent), m_settings(settings) {}
+    : Device({opticalStream(settings.origin)}, parent), m_settings(settings) {}
 
 SkeletonDevice::~SkeletonDevice() = default;
 
@@ -100,6 +111,7 @@ void SkeletonDevice::start() {
   m_running = true;
   m_streaming = false;
   m_everStreamed = false;
+  m_start.reset();
   m_errorsSeen = m_parser.errors().count();
   m_droppedSeen = m_parser.droppedFrames();
   m_reorderedSeen = m_parser.reorderedFrames();
@@ -137,7 +149,8 @@ void SkeletonDevice::onReadyRead() {
         ++unusable;
         unusableWhy = QStringLiteral(
                           "frame %1 has no shoulder: elbow and wrist cannot be placed "
-                          "relative to it (send the shoulder, or set origin=camera)")
+                          "relative to it (send the shoulder, or set origin=start, which needs "
+                          "it only at the start, or origin=camera)")
                           .arg(frame->frame);
         return;
       }
@@ -145,11 +158,28 @@ void SkeletonDevice::onReadyRead() {
       if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - shoulder);
       if (frame->wrist) p.wrist = toShoulderAxes(vec(frame->wrist->position) - shoulder);
     } else {
-      const Eigen::Vector3d t = m_settings.pose ? m_settings.pose->t : Eigen::Vector3d::Zero();
-      if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - t);
-      if (frame->wrist) p.wrist = toShoulderAxes(vec(frame->wrist->position) - t);
+      Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+      if (m_settings.origin == Origin::Start) {
+        if (frame->shoulder) m_start.add(frame->t, frame->shoulder->position);
+        const auto start = m_start.origin();
+        if (!start) {
+          ++unusable;
+          unusableWhy = QStringLiteral(
+                            "frame %1: no shoulder seen yet, so the world origin (where the "
+                            "shoulder is at the start) is unknown; have the tracker see the "
+                            "shoulder while the patient sits upright at the start")
+                            .arg(frame->frame);
+          return;
+        }
+        origin = vec(*start);
+      } else if (m_settings.pose) {
+        origin = m_settings.pose->t;
+      }
+      if (frame->elbow) p.elbow = toShoulderAxes(vec(frame->elbow->position) - origin);
+      if (frame->wrist) p.wrist = toShoulderAxes(vec(frame->wrist->position) - origin);
+      if (frame->shoulder) p.shoulder = toShoulderAxes(vec(frame->shoulder->position) - origin);
     }
-    if (!p.elbow && !p.wrist) {
+    if (!p.elbow && !p.wrist && !p.shoulder) {  // a shoulder alone still shows the trunk
       ++unusable;
       unusableWhy = QStringLiteral("frame %1 tracks neither elbow nor wrist").arg(frame->frame);
       return;

@@ -5,6 +5,7 @@
 #include "devices/api/Options.h"
 
 using armtrack::StreamRole;
+using armtrack::devices::declareShoulder;
 using armtrack::devices::Options;
 
 TEST(Options, ParseSplitsPairsAndBareKeysAreOn) {
@@ -41,7 +42,7 @@ TEST(Options, EveryBadOrUnknownKeyIsNamedAndDefaultsKept) {
     EXPECT_TRUE(e.contains(QLatin1String(needle))) << needle << " not in: " << e.toStdString();
 }
 
-TEST(Options, ImuRoleIsRequiredAndOneOfTwo) {
+TEST(Options, ImuRoleIsRequiredAndOneOfThree) {
   {
     Options o(Options::parse(QStringLiteral("role= Forearm ")));
     EXPECT_EQ(o.imuRole(), StreamRole::ForearmImu);
@@ -55,13 +56,50 @@ TEST(Options, ImuRoleIsRequiredAndOneOfTwo) {
   {
     Options o(QVariantMap{});
     o.imuRole();
-    EXPECT_TRUE(o.error().contains(QStringLiteral("option 'role' is required: role=upper or "
-                                                  "role=forearm")))
+    EXPECT_TRUE(
+        o.error().contains(QStringLiteral("option 'role' is required: role=upper, "
+                                          "role=forearm or role=trunk")))
         << o.error().toStdString();
   }
   {
     Options o(Options::parse(QStringLiteral("side=wrist")));
     o.imuRole(QStringLiteral("side"));
-    EXPECT_EQ(o.error(), QStringLiteral("option 'side' must be upper or forearm, not 'wrist'"));
+    EXPECT_EQ(o.error(), QStringLiteral("option 'side' must be upper, forearm or trunk (the "
+                                        "sternum sensor), not 'wrist'"));
   }
+}
+
+// The third sensor, on the sternum, is the trunk IMU: "trunk" or "sternum", any case.
+TEST(Options, ImuRoleTrunkIsTheSternumSensor) {
+  for (const char* text : {"role=trunk", "role= TRUNK ", "role=Sternum"}) {
+    Options o(Options::parse(QString::fromLatin1(text)));
+    EXPECT_EQ(o.imuRole(), StreamRole::TrunkImu) << text;
+    EXPECT_EQ(o.error(), QString()) << text;
+  }
+  // Near misses are refused with the three choices named, not taken for an arm segment.
+  for (const char* text : {"role=trunks", "role=chest", "role=trunk imu", "role=torso"}) {
+    Options o(Options::parse(QString::fromLatin1(text)));
+    EXPECT_EQ(o.imuRole(), StreamRole::UpperArmImu) << text;
+    EXPECT_TRUE(o.error().contains(QStringLiteral("must be upper, forearm or trunk")))
+        << text << ": " << o.error().toStdString();
+  }
+}
+
+namespace {
+struct WithShoulder {
+  bool shoulder = false;
+};
+struct WithoutShoulder {
+  int other = 0;
+};
+}  // namespace
+
+// An optical stream declares its shoulder where StreamInfo can say so, and compiles where not.
+TEST(Options, DeclareShoulderSetsTheFlagWhereThereIsOne) {
+  WithShoulder a;
+  declareShoulder(a);
+  EXPECT_TRUE(a.shoulder);
+  WithoutShoulder b;
+  declareShoulder(b);
+  EXPECT_EQ(b.other, 0);
 }

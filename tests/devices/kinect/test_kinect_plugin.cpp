@@ -51,6 +51,40 @@ TEST(KinectPlugin, OptionsAreCheckedWithReasons) {
   ASSERT_TRUE(device) << error.toStdString();
   ASSERT_EQ(device->streams().size(), 1u);
   EXPECT_EQ(device->streams()[0].role, StreamRole::Optical);
+  EXPECT_EQ(device->streams()[0].name, "Kinect elbow and wrist");
+}
+
+// A third marker on the shoulder: a colour or an id of its own, which the arm markers do not
+// have; the stream then says it brings the shoulder.
+TEST(KinectPlugin, AShoulderMarkerNeedsAThirdColourOrId) {
+  DevicePlugin* plugin = test::loadPlugin(QStringLiteral("kinect"));
+  ASSERT_TRUE(plugin);
+  const test::webcam::TempDir dir("kinect-shoulder");
+  const QString cam = QString::fromStdString(writeCamera(dir, true));
+  const auto refuse = [&](const QVariantMap& options, const char* needle) {
+    QString error;
+    EXPECT_FALSE(plugin->create(options, &error));
+    EXPECT_TRUE(error.contains(QLatin1String(needle))) << error.toStdString();
+  };
+  refuse({{"camera", cam}, {"shoulder-hsv", "magenta"}}, "expected H1-H2:S1-S2:V1-V2");
+  refuse({{"camera", cam}, {"shoulder-hsv", "60-90:100-255:70-255"}}, "overlap the wrist's");
+  refuse({{"camera", cam}, {"shoulder-hsv", "170-50:100-255:70-255"}}, "overlap");  // wraps
+  refuse({{"camera", cam}, {"shoulder-id", "2"}}, "shoulder-id is for ArUco markers");
+  refuse({{"camera", cam}, {"markers", "aruco"}, {"shoulder-hsv", "140-170:100-255:70-255"}},
+         "shoulder-hsv is for colour markers");
+  refuse({{"camera", cam}, {"markers", "aruco"}, {"shoulder-id", "1"}},
+         "the wrist's or the elbow's marker");
+  refuse({{"camera", cam}, {"markers", "aruco"}, {"shoulder-id", "50"}}, "shoulder-id:");
+  refuse({{"camera", cam}, {"markers", "aruco"}, {"shoulder-id", "-1"}}, "option 'shoulder-id'");
+  for (const QVariantMap& options :
+       {QVariantMap{{"camera", cam}, {"shoulder-hsv", "140-170:100-255:70-255"}},
+        QVariantMap{{"camera", cam}, {"markers", "aruco"}, {"shoulder-id", "2"}}}) {
+    QString error;
+    auto device = plugin->create(options, &error);
+    ASSERT_TRUE(device) << error.toStdString();
+    EXPECT_EQ(device->streams()[0].role, StreamRole::Optical);
+    EXPECT_EQ(device->streams()[0].name, "Kinect elbow, wrist and shoulder");
+  }
 }
 
 TEST(KinectPlugin, NoKinectMeansConnectingWithAReason) {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <opencv2/calib3d.hpp>
 #include <tuple>
 
@@ -17,6 +18,7 @@ namespace {
 
 const cv::Scalar kGreen(30, 200, 40);
 const cv::Scalar kBlue(210, 60, 20);
+const cv::Scalar kMagenta(200, 40, 210);  // BGR: hue about 150 of 179
 
 /// A Kinect-like colour camera 2 m in front of the shoulder, looking back at it (the pose of
 /// core's frontCamera: image down = +x0, optical axis = -y0).
@@ -40,7 +42,8 @@ struct Scene {
 /// Markers at shoulder-frame points; each sits on a patch of arm surface (a disc of depth equal to
 /// the point's camera depth) in front of a wall at 3.5 m.
 Scene render(const KinectProcessingParams& p, const std::optional<cv::Vec3d>& wrist,
-             const std::optional<cv::Vec3d>& elbow, bool holeUnderWrist = false) {
+             const std::optional<cv::Vec3d>& elbow, bool holeUnderWrist = false,
+             const std::optional<cv::Vec3d>& shoulder = std::nullopt) {
   Scene s{cv::Mat(480, 640, CV_8UC3, cv::Scalar(100, 100, 100)),
           cv::Mat(480, 640, CV_16UC1, cv::Scalar(3500))};
   cv::Vec3d rvec;
@@ -48,7 +51,8 @@ Scene render(const KinectProcessingParams& p, const std::optional<cv::Vec3d>& wr
   // Far to near, so that a nearer patch hides a farther one, as in a real depth image.
   std::vector<std::tuple<cv::Vec3d, cv::Scalar, bool, double>> markers;
   for (auto [point, colour, hole] :
-       {std::tuple{wrist, kGreen, holeUnderWrist}, std::tuple{elbow, kBlue, false}})
+       {std::tuple{wrist, kGreen, holeUnderWrist}, std::tuple{elbow, kBlue, false},
+        std::tuple{shoulder, kMagenta, false}})
     if (point) markers.emplace_back(*point, colour, hole, (p.pose.R * *point + p.pose.t)[2]);
   std::sort(markers.begin(), markers.end(),
             [](const auto& a, const auto& b) { return std::get<3>(a) > std::get<3>(b); });
@@ -156,4 +160,73 @@ TEST(KinectProcessing, BadParametersAreRefused) {
   p.pose.R(0, 0) = 1;
   EXPECT_THROW(KinectProcessor(p, webcam::MarkerDetector(webcam::ColourMarkerParams{})),
                std::invalid_argument);
+}
+
+namespace {
+
+// The shoulder marker's detector: magenta, as the docs suggest.
+std::optional<webcam::MarkerDetector> shoulderDetector() {
+  webcam::ColourMarkerParams c;
+  c.wrist = c.elbow = *webcam::parseHsvRange("140-170:100-255:70-255");
+  return webcam::MarkerDetector(c);
+}
+
+// A trunk leaning forward by `lean` rad about a hip 0.45 m below and 0.15 m medial to the
+// shoulder, in the registered frame (x down, y forward, z to the right): the shoulder centre
+// moves to h - R h and everything on the trunk turns with it.
+cv::Vec3d onLeaningTrunk(const cv::Vec3d& p, double lean) {
+  const cv::Vec3d hip(0.45, 0.0, -0.15);
+  const double c = std::cos(lean), s = std::sin(lean);
+  const cv::Matx33d r(c, s, 0, -s, c, 0, 0, 0, 1);  // about z0, x0 (down) towards +y0 (forward)
+  return hip - r * hip + r * p;
+}
+
+}  // namespace
+
+// Without a shoulder detector nothing changes; with one, elbow and wrist are the same and the
+// shoulder marker comes back where it is, in the same (registered, world) frame.
+TEST(KinectProcessing, AShoulderMarkerInTheSameFrame) {
+  const cv::Vec3d elbow(0.30, 0.00, 0.02), wrist(0.30, 0.27, 0.05);
+  const cv::Vec3d shoulder(-0.05, 0.0, 0.03);  // the acromion, above the joint centre
+  KinectProcessor plain(params(), webcam::MarkerDetector(webcam::ColourMarkerParams{}));
+  KinectProcessor withShoulder(params(), webcam::MarkerDetector(webcam::ColourMarkerParams{}),
+                               shoulderDetector());
+  const Scene s = render(plain.params(), wrist, elbow, false, shoulder);
+  const KinectFrame a = plain.process(s.bgr, s.depth);
+  const KinectFrame b = withShoulder.process(s.bgr, s.depth);
+  ASSERT_TRUE(a.wrist && a.elbow && b.wrist && b.elbow);
+  EXPECT_FALSE(a.shoulder || a.shoulderPixel);
+  ASSERT_TRUE(b.shoulder);
+  EXPECT_EQ(cv::norm(*a.wrist - *b.wrist), 0.0);
+  EXPECT_EQ(cv::norm(*a.elbow - *b.elbow), 0.0);
+  EXPECT_LT(cv::norm(*b.shoulder - shoulder), 0.002);
+  EXPECT_EQ(b.depthMissing, 0);
+  // No shoulder marker in view: no shoulder, the rest as before.
+  const Scene none = render(plain.params(), wrist, elbow);
+  const KinectFrame c = withShoulder.process(none.bgr, none.depth);
+  EXPECT_FALSE(c.shoulder || c.shoulderPixel);
+  ASSERT_TRUE(c.wrist && c.elbow);
+  EXPECT_LT(cv::norm(*c.wrist - wrist), 0.002);
+}
+
+// A trunk that leans 10 deg forward about the hips moves the shoulder marker by
+// |h - R h + (R - I) p| (about 8 cm); a still trunk leaves it where it was.
+TEST(KinectProcessing, ALeaningTrunkMovesTheShoulderMarker) {
+  const double kLean = 10.0 * CV_PI / 180.0;
+  const cv::Vec3d elbow(0.30, 0.00, 0.02), wrist(0.30, 0.27, 0.05), shoulder(-0.05, 0.0, 0.03);
+  KinectProcessor proc(params(), webcam::MarkerDetector(webcam::ColourMarkerParams{}),
+                       shoulderDetector());
+  const Scene still = render(proc.params(), wrist, elbow, false, shoulder);
+  const KinectFrame f0 = proc.process(still.bgr, still.depth);
+  const Scene leaning =
+      render(proc.params(), onLeaningTrunk(wrist, kLean), onLeaningTrunk(elbow, kLean), false,
+             onLeaningTrunk(shoulder, kLean));
+  const KinectFrame f1 = proc.process(leaning.bgr, leaning.depth);
+  ASSERT_TRUE(f0.shoulder && f1.shoulder && f1.elbow && f1.wrist);
+  const cv::Vec3d moved = onLeaningTrunk(shoulder, kLean) - shoulder;
+  EXPECT_GT(cv::norm(moved), 0.07);
+  EXPECT_LT(cv::norm((*f1.shoulder - *f0.shoulder) - moved), 0.003);
+  // Elbow and wrist are where the lean carried them in the world, not relative to the shoulder.
+  EXPECT_LT(cv::norm(*f1.elbow - onLeaningTrunk(elbow, kLean)), 0.002);
+  EXPECT_LT(cv::norm(*f1.wrist - onLeaningTrunk(wrist, kLean)), 0.002);
 }

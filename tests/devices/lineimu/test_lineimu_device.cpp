@@ -504,3 +504,38 @@ TEST_F(LineImuDevice, UdpFloodLosesNoGoodSampleUncountedAndStampsArrivalsHonestl
   }
   EXPECT_EQ(early, 0u);
 }
+
+// A third sensor on the sternum: role=trunk makes the stream the trunk IMU, named for it. NaN and
+// numbers beyond a double are refused like any bad sentence; a reading at a sensor's full scale
+// (saturated) is a reading, passed on as sent: the estimator judges it (docs/estimator.md).
+TEST_F(LineImuDevice, TrunkRoleStreamsTheSternumSensorAndRefusesNaN) {
+  const std::uint16_t port = freeUdpPort();
+  Harness h(
+      create({{QStringLiteral("udp"), port}, {QStringLiteral("role"), QStringLiteral("trunk")}}));
+  ASSERT_EQ(h.device->streams().size(), 1u);
+  EXPECT_EQ(h.device->streams()[0].role, StreamRole::TrunkImu);
+  EXPECT_EQ(h.device->streams()[0].name, "trunk line IMU");
+  ASSERT_TRUE(h.waitState(DeviceState::Connecting));
+  QUdpSocket tx;
+  auto sendDatagram = [&](const std::string& d) {
+    ASSERT_EQ(
+        tx.writeDatagram(d.data(), static_cast<qint64>(d.size()), QHostAddress::LocalHost, port),
+        static_cast<qint64>(d.size()));
+  };
+  std::vector<Imu> good{imu(0, 0), imu(1, 10000)};
+  Imu saturated{4, 40000, {34.9, -34.9, 34.9}, {156.9, -156.9, 156.9}};  // 2000 deg/s, 16 g
+  sendDatagram(imuSentence(good[0]) + imuSentence(good[1]));
+  sendDatagram(sentence("IMU,2,20000,nan,0,0,0,-9.81,0"));    // refused: NaN
+  sendDatagram(sentence("IMU,3,30000,0,0,0,1e400,-9.81,0"));  // refused: beyond a double
+  sendDatagram(sentence("IMU,3,30000,0,0,inf,0,-9.81,0"));    // refused: infinite
+  sendDatagram(imuSentence(saturated));
+  good.push_back(saturated);
+  ASSERT_TRUE(h.waitSamples(good.size()));
+  QTest::qWait(50);
+  ASSERT_EQ(h.samples.size(), good.size());
+  for (std::size_t i = 0; i < good.size(); ++i)
+    expectSample(h.samples[i], good[i], 1e-6 * good[i].us);
+  EXPECT_EQ(h.state(), DeviceState::Streaming);
+  EXPECT_EQ(h.device->health().streams[0].corrupt, 3u);
+  EXPECT_FALSE(h.problems.isEmpty());
+}

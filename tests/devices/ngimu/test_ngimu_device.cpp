@@ -92,10 +92,11 @@ class NgimuDevice : public ::testing::Test {
     ASSERT_TRUE(probe.bind(QHostAddress::LocalHost, 0));
     m_port = probe.localPort();
   }
-  std::unique_ptr<Harness> start(const QString& timeout = QStringLiteral("3")) {
+  std::unique_ptr<Harness> start(const QString& timeout = QStringLiteral("3"),
+                                 const QString& role = QStringLiteral("upper")) {
     QString error;
     auto d = m_plugin->create({{QStringLiteral("port"), m_port},
-                               {QStringLiteral("role"), QStringLiteral("upper")},
+                               {QStringLiteral("role"), role},
                                {QStringLiteral("timeout"), timeout}},
                               &error);
     EXPECT_TRUE(d) << error.toStdString();
@@ -260,4 +261,37 @@ TEST_F(NgimuDevice, LossesAndReorderingAreCountedFromTheTimeTags) {
   EXPECT_EQ(s.dropped, 2u);  // 6 and 7
   EXPECT_EQ(s.reordered, 1u);
   EXPECT_FALSE(h->problems.isEmpty());  // the duplicate is reported
+}
+
+// A third NGIMU on the sternum: role=trunk makes its stream the trunk IMU. A /sensors message with
+// NaN is refused and counted; one at the sensor's full scale (saturated, 2000 deg/s and 16 g) is a
+// reading and passes unchanged: the estimator judges it.
+TEST_F(NgimuDevice, TrunkRoleStreamsTheSternumSensorAndRefusesNaN) {
+  auto h = start(QStringLiteral("3"), QStringLiteral("Trunk"));
+  ASSERT_TRUE(h);
+  ASSERT_EQ(h->device->streams().size(), 1u);
+  EXPECT_EQ(h->device->streams()[0].role, StreamRole::TrunkImu);
+  EXPECT_EQ(h->device->streams()[0].name, "trunk NGIMU");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const std::vector<float> saturated = {2000.0f, -2000.0f, 2000.0f, 16.0f, -16.0f,
+                                        16.0f,   0.0f,     0.0f,    0.0f,  1013.25f};
+  send(sensorsBundle(0));
+  QTest::qWait(2);
+  send(bundle(kSeconds, tagFraction(1),
+              {message("/sensors", {nan, 0.0f, 0.0f, 0.0f, -1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 0.0f})}));
+  QTest::qWait(2);
+  send(bundle(kSeconds, tagFraction(2), {message("/sensors", saturated)}));
+  QTest::qWait(2);
+  send(sensorsBundle(3));
+  ASSERT_TRUE(h->waitSamples(3));
+  QTest::qWait(50);
+  ASSERT_EQ(h->samples.size(), 3u);
+  expectSample(h->samples[0], 0);
+  expectSample(h->samples[2], 3);
+  const ImuReading& r = std::get<ImuReading>(h->samples[1].payload);
+  EXPECT_NEAR(r.gyr.x(), 2000.0 * kDeg, 1e-9);
+  EXPECT_NEAR(r.gyr.y(), -2000.0 * kDeg, 1e-9);
+  EXPECT_NEAR(r.acc.z(), 16.0 * kG, 1e-9);
+  EXPECT_EQ(h->device->health().streams[0].corrupt, 1u);
+  EXPECT_FALSE(h->problems.isEmpty());
 }

@@ -217,7 +217,8 @@ TEST_F(Shimmer3Device, PluginDescribesItselfAndChecksOptions) {
   EXPECT_TRUE(m_plugin->optionsHelp().contains(QStringLiteral("role=")));
   QString error;
   EXPECT_FALSE(m_plugin->create({{QStringLiteral("port"), m_link}}, &error));
-  EXPECT_TRUE(error.contains(QStringLiteral("role=upper or role=forearm"))) << error.toStdString();
+  EXPECT_TRUE(error.contains(QStringLiteral("role=upper, role=forearm or role=trunk")))
+      << error.toStdString();
   EXPECT_FALSE(m_plugin->create({{QStringLiteral("role"), QStringLiteral("upper")}}, &error));
   EXPECT_TRUE(error.contains(QStringLiteral("'port' is required"))) << error.toStdString();
   EXPECT_FALSE(m_plugin->create(
@@ -236,6 +237,15 @@ TEST_F(Shimmer3Device, PluginDescribesItselfAndChecksOptions) {
   ASSERT_EQ(d->streams().size(), 1u);
   EXPECT_EQ(d->streams()[0].role, StreamRole::UpperArmImu);
   EXPECT_EQ(d->streams()[0].wrapPeriod, 0.0);  // the time is unwrapped by the device
+  EXPECT_EQ(d->streams()[0].name, "upper-arm Shimmer3");
+  // A third Shimmer on the sternum is the trunk IMU, named for it.
+  auto trunk = m_plugin->create(
+      {{QStringLiteral("port"), m_link}, {QStringLiteral("role"), QStringLiteral("trunk")}},
+      &error);
+  ASSERT_TRUE(trunk) << error.toStdString();
+  ASSERT_EQ(trunk->streams().size(), 1u);
+  EXPECT_EQ(trunk->streams()[0].role, StreamRole::TrunkImu);
+  EXPECT_EQ(trunk->streams()[0].name, "trunk Shimmer3");
 }
 
 TEST_F(Shimmer3Device, HandshakeThenEveryPacketAcrossTheTimestampWrap) {

@@ -8,10 +8,14 @@
 #include <QTest>
 #include <QThread>
 #include <QUdpSocket>
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "devices/api/Device.h"
@@ -139,7 +143,7 @@ TEST_F(SkeletonDevice, OptionsSayWhatToChange) {
     return error.toStdString();
   };
   expectHas(errorOf({{QStringLiteral("origin"), QStringLiteral("hip")}, {axes, shoulder}}),
-            "shoulder or camera, not 'hip'");
+            "shoulder, start or camera, not 'hip'");
   expectHas(errorOf({{QStringLiteral("role"), QStringLiteral("upper")}, {axes, shoulder}}),
             "unknown option 'role'");
   // Positions must reach the filter in the shoulder frame: a registration is required.
@@ -159,6 +163,12 @@ TEST_F(SkeletonDevice, OptionsSayWhatToChange) {
   ASSERT_TRUE(d) << error.toStdString();
   ASSERT_EQ(d->streams().size(), 1u);
   EXPECT_EQ(d->streams()[0].role, StreamRole::Optical);
+  // The default is the world frame, shoulder included; relative to the moving shoulder there is
+  // no shoulder to publish.
+  EXPECT_EQ(d->streams()[0].name, "tracker elbow, wrist and shoulder");
+  d = m_plugin->create({{axes, shoulder}, {QStringLiteral("origin"), shoulder}}, &error);
+  ASSERT_TRUE(d) << error.toStdString();
+  EXPECT_EQ(d->streams()[0].name, "tracker elbow and wrist");
 }
 
 TEST_F(SkeletonDevice, RegisteredTrackerAxesBecomeShoulderFrameAxes) {
@@ -191,7 +201,8 @@ TEST_F(SkeletonDevice, RegisteredTrackerAxesBecomeShoulderFrameAxes) {
     EXPECT_NEAR((*p.wrist - *p.elbow).norm(), (wr - el).norm(), 1e-9);
   };
   {
-    auto h = start({{QStringLiteral("camera"), path}});
+    auto h = start(
+        {{QStringLiteral("camera"), path}, {QStringLiteral("origin"), QStringLiteral("shoulder")}});
     ASSERT_TRUE(h);
     for (int k = 0; k < 3; ++k) send(frameJson(k));
     ASSERT_TRUE(h->waitSamples(3));
@@ -209,7 +220,7 @@ TEST_F(SkeletonDevice, RegisteredTrackerAxesBecomeShoulderFrameAxes) {
 }
 
 TEST_F(SkeletonDevice, FramesBecomeShoulderRelativePositions) {
-  auto h = start();
+  auto h = start({{QStringLiteral("origin"), QStringLiteral("shoulder")}});
   ASSERT_TRUE(h);
   const double before = hostNow();
   for (int k = 0; k < 10; ++k) send(frameJson(k));
@@ -274,7 +285,7 @@ TEST_F(SkeletonDevice, MalformedDatagramsAreReportedAndLaterFramesKept) {
 }
 
 TEST_F(SkeletonDevice, FrameWithoutShoulderIsReportedNotPublished) {
-  auto h = start();
+  auto h = start({{QStringLiteral("origin"), QStringLiteral("shoulder")}});
   ASSERT_TRUE(h);
   send(frameJson(0, /*shoulder=*/false));
   send(frameJson(1));
@@ -316,4 +327,153 @@ TEST_F(SkeletonDevice, PortInUseIsAnError) {
   Harness h(std::move(device));
   ASSERT_TRUE(h.waitState(DeviceState::Error));
   EXPECT_TRUE(h.reason().contains(QStringLiteral("already in use"))) << h.reason().toStdString();
+}
+
+namespace {
+
+// A frame from given camera-frame positions (m), any of them absent.
+std::string jointsJson(int k, double t, const std::optional<Eigen::Vector3d>& shoulder,
+                       const std::optional<Eigen::Vector3d>& elbow,
+                       const std::optional<Eigen::Vector3d>& wrist) {
+  char head[96];
+  std::snprintf(head, sizeof head, R"({"v":1,"t":%.6f,"frame":%d,"side":"right","joints":{)", t, k);
+  std::string s = head, sep;
+  const auto add = [&](const char* name, const std::optional<Eigen::Vector3d>& p) {
+    if (!p) return;
+    char v[128];
+    std::snprintf(v, sizeof v, "\"%s\":[%.12f,%.12f,%.12f]", name, p->x(), p->y(), p->z());
+    s += std::exchange(sep, ",") + v;
+  };
+  add("shoulder", shoulder);
+  add("elbow", elbow);
+  add("wrist", wrist);
+  return s + "}}";
+}
+
+// A seated patient in the world frame (frame 0 with the trunk upright at the start: x down,
+// y forward, z to the right, the shoulder centre at the origin), seen by a registered tracker
+// camera: p_cam = Rc p_world + tc. The trunk leans about a hip point h, so the shoulder centre
+// moves to h - R h and the arm (fixed to the trunk here) goes with it.
+struct Scene {
+  Eigen::Matrix3d Rc = (Eigen::AngleAxisd(2.6, Eigen::Vector3d(0.2, -1.0, 0.3).normalized()) *
+                        Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()))
+                           .toRotationMatrix();
+  Eigen::Vector3d tc{0.1, -0.3, 2.2};
+  Eigen::Vector3d hip{0.45, 0.0, -0.15};
+  Eigen::Vector3d elbowT{0.28, 0.05, 0.02}, wristT{0.30, 0.30, 0.05};  // trunk frame, m
+
+  // Forward lean by `lean` rad (about the lateral axis z0).
+  Eigen::Matrix3d trunk(double lean) const {
+    return Eigen::AngleAxisd(-lean, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  }
+  Eigen::Vector3d shoulderW(double lean) const { return hip - trunk(lean) * hip; }
+  Eigen::Vector3d elbowW(double lean) const { return shoulderW(lean) + trunk(lean) * elbowT; }
+  Eigen::Vector3d wristW(double lean) const { return shoulderW(lean) + trunk(lean) * wristT; }
+  Eigen::Vector3d cam(const Eigen::Vector3d& w) const { return Rc * w + tc; }
+  std::string frame(int k, double t, double lean, bool shoulder = true) const {
+    return jointsJson(k, t, shoulder ? std::optional(cam(shoulderW(lean))) : std::nullopt,
+                      cam(elbowW(lean)), cam(wristW(lean)));
+  }
+};
+
+QString writeSceneCamera(const QTemporaryDir& dir, const Scene& sc) {
+  webcam::Extrinsics e;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) e.R(r, c) = sc.Rc(r, c);
+    e.t[r] = sc.tc[r];
+  }
+  return QString::fromStdString(writeCamera(dir, "tracker.json", e));
+}
+
+}  // namespace
+
+// origin=start on a still trunk: the same elbow and wrist as origin=shoulder, and the shoulder,
+// now published, at the world origin. The old mode publishes no shoulder.
+TEST_F(SkeletonDevice, StartOriginOnAStillTrunkMatchesTheShoulderOrigin) {
+  const Scene sc;
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  const QString path = writeSceneCamera(dir, sc);
+  std::vector<DeviceSample> bySample[2];
+  for (int mode = 0; mode < 2; ++mode) {
+    auto h = start(
+        {{QStringLiteral("camera"), path},
+         {QStringLiteral("origin"), mode ? QStringLiteral("start") : QStringLiteral("shoulder")}});
+    ASSERT_TRUE(h);
+    for (int k = 0; k < 60; ++k) send(sc.frame(k, 10.0 + k / 30.0, 0.0));
+    ASSERT_TRUE(h->waitSamples(60));
+    bySample[mode] = h->samples;
+    EXPECT_TRUE(h->problems.isEmpty()) << h->problems.join(u'\n').toStdString();
+  }
+  for (int k = 0; k < 60; ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    const auto& old = std::get<OpticalPositions>(bySample[0][k].payload);
+    const auto& now = std::get<OpticalPositions>(bySample[1][k].payload);
+    ASSERT_TRUE(old.elbow && old.wrist && now.elbow && now.wrist && now.shoulder);
+    EXPECT_FALSE(old.shoulder.has_value());
+    EXPECT_LT((*now.elbow - *old.elbow).norm(), 1e-9);
+    EXPECT_LT((*now.wrist - *old.wrist).norm(), 1e-9);
+    EXPECT_LT(now.shoulder->norm(), 1e-9);
+    // And both are the truth: the trunk frame is the world frame while the trunk is upright.
+    EXPECT_LT((*now.elbow - sc.elbowT).norm(), 1e-6);  // the camera file keeps about 9 digits
+    EXPECT_LT((*now.wrist - sc.wristT).norm(), 1e-6);
+  }
+}
+
+// origin=start on a leaning trunk: the first second sets the origin; then a 10 deg forward lean
+// about the hip moves the published shoulder by |h - R h| = 2 * 0.45 m * sin(5 deg) = 7.84 cm,
+// and elbow and wrist are where the leaning trunk carries them in the world, not relative to the
+// moving shoulder.
+TEST_F(SkeletonDevice, StartOriginFollowsALeaningTrunkInTheWorldFrame) {
+  const Scene sc;
+  QTemporaryDir dir;
+  ASSERT_TRUE(dir.isValid());
+  auto h = start({{QStringLiteral("camera"), writeSceneCamera(dir, sc)},
+                  {QStringLiteral("origin"), QStringLiteral("start")}});
+  ASSERT_TRUE(h);
+  constexpr double kLean = 10.0 * 3.14159265358979323846 / 180.0;
+  std::vector<double> lean;
+  for (int k = 0; k < 90; ++k) {
+    // Upright for the first 1.2 s, then leaning over 0.5 s, then held.
+    const double t = k / 30.0;
+    lean.push_back(kLean * std::clamp((t - 1.2) / 0.5, 0.0, 1.0));
+    send(sc.frame(k, 50.0 + t, lean.back(), /*shoulder=*/k % 7 != 3));  // some frames lose it
+    if (k % 10 == 0) QTest::qWait(2);
+  }
+  ASSERT_TRUE(h->waitSamples(90));
+  for (int k = 0; k < 90; ++k) {
+    SCOPED_TRACE("frame " + std::to_string(k));
+    const auto& p = std::get<OpticalPositions>(h->samples[k].payload);
+    ASSERT_TRUE(p.elbow && p.wrist);
+    ASSERT_EQ(p.shoulder.has_value(), k % 7 != 3);
+    if (p.shoulder) {
+      EXPECT_LT((*p.shoulder - sc.shoulderW(lean[k])).norm(), 1e-6);
+    }
+    EXPECT_LT((*p.elbow - sc.elbowW(lean[k])).norm(), 1e-6);
+    EXPECT_LT((*p.wrist - sc.wristW(lean[k])).norm(), 1e-6);
+  }
+  const auto& last = std::get<OpticalPositions>(h->samples.back().payload);
+  ASSERT_TRUE(last.shoulder);
+  EXPECT_NEAR(last.shoulder->norm(), 2.0 * 0.45 * std::sin(kLean / 2.0), 1e-6);
+  EXPECT_NEAR(last.shoulder->norm(), 0.0784, 5e-4);
+}
+
+// origin=start before any shoulder: nothing can be placed, which is said; the first shoulder
+// sets the origin, and later frames without one are placed.
+TEST_F(SkeletonDevice, StartOriginWaitsForAShoulderAndSaysSo) {
+  auto h = start({{QStringLiteral("origin"), QStringLiteral("start")}});
+  ASSERT_TRUE(h);
+  send(frameJson(0, /*shoulder=*/false));
+  QTest::qWait(20);
+  send(frameJson(1));
+  QTest::qWait(20);
+  send(frameJson(2, /*shoulder=*/false));
+  ASSERT_TRUE(h->waitSamples(2));
+  QTest::qWait(50);
+  ASSERT_EQ(h->samples.size(), 2u);
+  expectFrame(h->samples[0], 1, /*relative=*/true);  // the shoulder of frame 1 is the origin
+  expectFrame(h->samples[1], 2, true);               // joints(k) keeps the shoulder still
+  ASSERT_FALSE(h->problems.isEmpty());
+  EXPECT_TRUE(h->problems[0].contains(QStringLiteral("no shoulder seen yet")))
+      << h->problems[0].toStdString();
 }

@@ -1,9 +1,12 @@
 // Skeleton JSON datagrams: documented example, round trip, and malformed input.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <string>
 
 #include "devices/skeleton/SkeletonParser.h"
+#include "devices/skeleton/StartOrigin.h"
 
 using namespace armtrack::devices::skeleton;
 
@@ -106,4 +109,47 @@ TEST(SkeletonParser, ParseErrorsGiveTheByteOffset) {
   SkeletonParser p;
   EXPECT_FALSE(p.parseDatagram(R"({"v":1,"t":1,)"));
   EXPECT_GT(p.errors().recent().back().offset, 0u);
+}
+
+// The world origin of origin=start: the shoulder's per-axis median over the first second, then
+// fixed. A wild first frame (a tracker locking on) moves it only until the median outvotes it.
+TEST(StartOrigin, MedianOfTheFirstSecondThenFixed) {
+  StartOrigin o(1.0);
+  EXPECT_FALSE(o.origin());
+  const std::array<double, 3> wild{0.6, -0.4, 2.5}, still{0.25, 0.5, 2.0};
+  o.add(10.0, wild);
+  ASSERT_TRUE(o.origin());
+  EXPECT_EQ(*o.origin(), wild);  // the first frame's own shoulder until more arrive
+  for (int k = 1; k <= 30; ++k) {
+    // Noise of +-1 cm about the still shoulder, symmetric, so the median is the still shoulder.
+    const double n = (k % 2 ? 0.01 : -0.01) * ((k % 4) < 2 ? 1.0 : 0.5);
+    o.add(10.0 + k / 31.0, {still[0] + n, still[1] - n, still[2] + n});
+  }
+  EXPECT_FALSE(o.fixed());
+  const std::array<double, 3> before = *o.origin();
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(before[i], still[i], 0.0051) << i;
+  // After the window a leaning trunk's shoulder no longer moves the origin.
+  o.add(11.2, {0.3, 0.6, 1.95});
+  EXPECT_TRUE(o.fixed());
+  for (int k = 0; k < 100; ++k) o.add(11.3 + k, {0.4, 0.7, 1.9});
+  EXPECT_EQ(*o.origin(), before);
+  o.reset();
+  EXPECT_FALSE(o.origin());
+  EXPECT_FALSE(o.fixed());
+}
+
+// A tracker clock that goes back, or a flood of frames within the window, ends the window early;
+// memory stays bounded.
+TEST(StartOrigin, ClockGoingBackOrAFloodFixesIt) {
+  StartOrigin a(1.0);
+  a.add(5.0, {0.1, 0.2, 0.3});
+  a.add(5.1, {0.1, 0.2, 0.5});
+  a.add(1.0, {9.0, 9.0, 9.0});  // restarted clock
+  EXPECT_TRUE(a.fixed());
+  EXPECT_DOUBLE_EQ((*a.origin())[2], 0.4);
+  StartOrigin b(1.0);
+  for (std::size_t k = 0; k < StartOrigin::kMaxFrames + 10; ++k)
+    b.add(1e-6 * static_cast<double>(k), {0.0, 0.0, static_cast<double>(k % 2)});
+  EXPECT_TRUE(b.fixed());
+  EXPECT_DOUBLE_EQ((*b.origin())[2], 0.5);
 }
