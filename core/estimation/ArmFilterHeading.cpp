@@ -50,6 +50,7 @@ void projectRows(Rows&& rows, const Vec& v, const Vec& w) {
 // heading look observable and its variance collapse. Returns whether any row was changed.
 template <int N>
 bool ArmFilter<N>::projectHeading(const Vec& x, const BlockList& b, Jac& jac) {
+  if (trunkTurning()) return false;
   Vec v = Vec::Zero();
   v.template head<kBase>() = headingSymmetryAt(x.template head<kBase>());
   const double vv = v.squaredNorm();

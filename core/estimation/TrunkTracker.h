@@ -34,6 +34,9 @@ struct TrunkTrackerParams {
   Eigen::Vector3d gUp{-9.81, 0.0, 0.0};               ///< world, frame-0 axes (m/s^2)
   Eigen::Vector3d hipPrior{0.45, 0.0, -0.15};         ///< m: below and medial (right arm)
   double hipPriorStd = 0.10;                          ///< m, per axis
+  /// The optical shoulder's constant offset from the model's shoulder centre (a skeleton's
+  /// shoulder joint need not sit at the centre, only move with it): prior std, m per axis.
+  double shoulderOffsetStd = 0.05;
   double gyroVariance = 0.1 * 3.0461741978670859e-4;  ///< (rad/s)^2: Table 5, 0.1 (deg/s)^2
   double accelVariance = 1e-2;                        ///< (m/s^2)^2, Table 5
   double shoulderVariance = 1e-4;                     ///< m^2 per axis, optical shoulder
@@ -81,15 +84,17 @@ class TrunkTracker {
   // Per-axis [omega, alpha] filters of frame 0's angular velocity.
   Eigen::Matrix<double, 2, 3> m_rate = Eigen::Matrix<double, 2, 3>::Zero();
   std::array<Eigen::Matrix2d, 3> m_rateP{};
-  // Hip pivot: information form of the least-squares fit.
-  Eigen::Matrix3d m_hipInfo = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d m_hipVec = Eigen::Vector3d::Zero();
+  // Hip pivot h and the optical shoulder's offset c: the information form of their joint
+  // least-squares fit (each frame s = (I - R) h + c + noise), with priors on both.
+  Eigen::Matrix<double, 6, 6> m_fitInfo = Eigen::Matrix<double, 6, 6>::Identity();
+  Eigen::Matrix<double, 6, 1> m_fitVec = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Vector3d m_hip = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d m_hipCov = Eigen::Matrix3d::Zero();  // h's marginal covariance
   // Without a trunk IMU: the optical shoulder, low-passed.
   Eigen::Vector3d m_shoulderSmooth = Eigen::Vector3d::Zero();
   double m_shoulderT = 0.0;
-  // The optical shoulder's start position (its mean over the first frames): a skeleton's shoulder
-  // joint need not sit at the model's shoulder centre, only move with it.
+  // Without a trunk IMU: the optical shoulder's start position (its mean over the first frames),
+  // from which its displacement is taken.
   Eigen::Vector3d m_reference = Eigen::Vector3d::Zero();
   int m_referenceCount = 0;
 };
