@@ -119,6 +119,8 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
       p.minRad = angleFieldOf(*m, "min_deg");
       const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
       if (reps.isDouble()) p.repetitions = reps.toInt();
+      const QJsonValue trunk = (*m)["trunk"].toObject()["max_flexion_deg"];
+      if (trunk.isDouble()) p.trunkFlexionDeg = trunk.toDouble();
     }
     d.sessions.push_back(p);
   }

@@ -81,6 +81,8 @@ struct ProgressSession {
   /// rad, the smallest angle reached: minus the peak in the opposite direction (shoulder
   /// extension, external rotation, supination).
   std::array<std::optional<double>, kNumClinicalAngles> minRad{};
+  /// deg, the session's largest trunk flexion (its metrics' "trunk"); empty when not measured.
+  std::optional<double> trunkFlexionDeg;
 };
 
 /// A patient's range of motion over a date range.
