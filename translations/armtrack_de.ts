@@ -4780,6 +4780,10 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>Compensated</source>
         <translation>Kompensiert</translation>
     </message>
+    <message>
+        <source>Trunk compensation: largest trunk flexion (deg)</source>
+        <translation>Rumpfkompensation: größte Rumpfflexion (°)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::AngleChart</name>

@@ -4780,6 +4780,10 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>Compensated</source>
         <translation>Compensada</translation>
     </message>
+    <message>
+        <source>Trunk compensation: largest trunk flexion (deg)</source>
+        <translation>Compensación del tronco: flexión máxima del tronco (°)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::AngleChart</name>
