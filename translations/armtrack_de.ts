@@ -2765,16 +2765,13 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>%L1 cm</source>
         <translation>%L1 cm</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n repetition(s) made with trunk compensation (flexion over %2).</source>
-        <translation>
-            <numerusform>%1 von %n Wiederholung mit Rumpfkompensation ausgeführt (Flexion über %2).</numerusform>
-            <numerusform>%1 von %n Wiederholungen mit Rumpfkompensation ausgeführt (Flexion über %2).</numerusform>
-        </translation>
+    <message>
+        <source>Repetitions with compensation:</source>
+        <translation>Wiederholungen mit Kompensation:</translation>
     </message>
     <message>
-        <source>This session had no trunk sensor (sternum IMU) and no optical shoulder.</source>
-        <translation>Diese Sitzung hatte keinen Rumpfsensor (Brustbein-IMU) und keine optisch erfasste Schulter.</translation>
+        <source>%1 of %2 (flexion over %3)</source>
+        <translation>%1 von %2 (Flexion über %3)</translation>
     </message>
 </context>
 <context>

@@ -114,16 +114,6 @@
     </message>
 </context>
 <context>
-    <name>armtrack::gui::TrunkPanel</name>
-    <message numerus="yes">
-        <source>%1 of %n repetition(s) made with trunk compensation (flexion over %2).</source>
-        <translation>
-            <numerusform>%1 of %n repetition made with trunk compensation (flexion over %2).</numerusform>
-            <numerusform>%1 of %n repetitions made with trunk compensation (flexion over %2).</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>armtrack::gui::home::ExerciseScreen</name>
     <message numerus="yes">
         <source>Then press Start: %n set(s) of %1 repetitions.</source>

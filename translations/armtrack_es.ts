@@ -2765,16 +2765,13 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>%L1 cm</source>
         <translation>%L1 cm</translation>
     </message>
-    <message numerus="yes">
-        <source>%1 of %n repetition(s) made with trunk compensation (flexion over %2).</source>
-        <translation>
-            <numerusform>%1 de %n repetición hecha con compensación del tronco (flexión por encima de %2).</numerusform>
-            <numerusform>%1 de %n repeticiones hechas con compensación del tronco (flexión por encima de %2).</numerusform>
-        </translation>
+    <message>
+        <source>Repetitions with compensation:</source>
+        <translation>Repeticiones con compensación:</translation>
     </message>
     <message>
-        <source>This session had no trunk sensor (sternum IMU) and no optical shoulder.</source>
-        <translation>Esta sesión no tenía sensor de tronco (IMU en el esternón) ni hombro óptico.</translation>
+        <source>%1 of %2 (flexion over %3)</source>
+        <translation>%1 de %2 (flexión por encima de %3)</translation>
     </message>
 </context>
 <context>

@@ -11,16 +11,13 @@
 namespace armtrack::gui {
 
 TrunkPanel::TrunkPanel(QWidget* parent) : QGroupBox(parent) {
-  auto* form = new QFormLayout(this);
+  m_form = new QFormLayout(this);
   for (std::size_t i = 0; i < m_values.size(); ++i) {
     m_names[i] = new QLabel(this);
     m_values[i] = new QLabel(this);
     m_values[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    form->addRow(m_names[i], m_values[i]);
+    m_form->addRow(m_names[i], m_values[i]);
   }
-  m_compensation = new QLabel(this);
-  m_compensation->setWordWrap(true);
-  form->addRow(m_compensation);
   retranslateUi();
 }
 
@@ -35,7 +32,7 @@ QString TrunkPanel::valueText(int index) const {
 }
 
 QString TrunkPanel::compensationText() const {
-  return m_compensation->text();
+  return m_values[4]->text();
 }
 
 void TrunkPanel::changeEvent(QEvent* event) {
@@ -49,6 +46,7 @@ void TrunkPanel::retranslateUi() {
   m_names[1]->setText(tr("Largest lateral bending:"));
   m_names[2]->setText(tr("Largest axial rotation:"));
   m_names[3]->setText(tr("Largest shoulder displacement:"));
+  m_names[4]->setText(tr("Repetitions with compensation:"));
   const std::optional<TrunkCompensation> t =
       m_metrics ? storage::trunkCompensationFromJson(*m_metrics) : std::nullopt;
   const TrunkExtremes x = t ? t->session : TrunkExtremes{};
@@ -68,16 +66,13 @@ void TrunkPanel::retranslateUi() {
   QString line;
   if (t && t->repetitionsWithCompensation) {
     const QJsonValue limit = (*m_metrics)["trunk"].toObject()["flexion_limit_deg"];
-    line = tr("%1 of %n repetition(s) made with trunk compensation (flexion over %2).", nullptr,
-              static_cast<int>(t->repetitions.size()))
+    line = tr("%1 of %2 (flexion over %3)")
                .arg(*t->repetitionsWithCompensation)
+               .arg(t->repetitions.size())
                .arg(angle(limit.isDouble() ? std::optional(limit.toDouble()) : std::nullopt));
-  } else if (!t || !storage::measured(x)) {
-    line = m_metrics ? tr("This session had no trunk sensor (sternum IMU) and no optical shoulder.")
-                     : QString();
   }
-  m_compensation->setText(line);
-  m_compensation->setVisible(!line.isEmpty());
+  m_values[4]->setText(line);
+  m_form->setRowVisible(4, !line.isEmpty());
 }
 
 }  // namespace armtrack::gui

@@ -1,7 +1,7 @@
 // The review's "Trunk" block: how far the patient leaned and turned the trunk and how far the
 // shoulder moved over the session (docs/metrics.md, "Trunk compensation"), and how many
 // repetitions were made with compensation when a limit was set; "not measured" where the session
-// had no sensor for a value.
+// had no sensor for a value. One line a row, so it fits beside the repetitions on a small screen.
 #pragma once
 
 #include <QGroupBox>
@@ -9,6 +9,7 @@
 #include <array>
 #include <optional>
 
+class QFormLayout;
 class QLabel;
 
 namespace armtrack::gui {
@@ -21,7 +22,7 @@ class TrunkPanel : public QGroupBox {
   void setMetrics(const std::optional<QJsonObject>& metrics, bool radians);
   /// The four values' texts (flexion, lateral bending, axial rotation, shoulder), for tests.
   QString valueText(int index) const;
-  /// The compensation line ("" when no limit was set).
+  /// The repetitions made with compensation ("" when no limit was set).
   QString compensationText() const;
 
  protected:
@@ -30,9 +31,9 @@ class TrunkPanel : public QGroupBox {
  private:
   void retranslateUi();
 
-  std::array<QLabel*, 4> m_names{};
-  std::array<QLabel*, 4> m_values{};
-  QLabel* m_compensation;
+  std::array<QLabel*, 5> m_names{};  // the four values, then the repetitions with compensation
+  std::array<QLabel*, 5> m_values{};
+  QFormLayout* m_form;
   std::optional<QJsonObject> m_metrics;
   bool m_radians = false;
 };
