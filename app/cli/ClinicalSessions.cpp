@@ -278,7 +278,8 @@ void addMetrics(QJsonObject& o, const std::optional<QJsonObject>& m) {
   o.insert("repetitions", field("repetitions"));
   o.insert("sparc", field("sparc"));
   o.insert("ldlj", field("ldlj"));
-  o.insert("trunk", field("trunk"));
+  // null, not absent, for metrics stored before the trunk was measured
+  o.insert("trunk", m && m->contains("trunk") ? m->value("trunk") : QJsonValue());
   o.insert("estimate_version", field("estimate_version"));
 }
 
