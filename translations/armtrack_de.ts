@@ -1849,6 +1849,18 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>Normal (%1) %L2 %3</source>
         <translation>Normbereich (%1) %L2 %3</translation>
     </message>
+    <message>
+        <source>Trunk flexion (compensation)</source>
+        <translation>Rumpfflexion (Kompensation)</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion (%1)</source>
+        <translation>Größte Rumpfflexion (%1)</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion</source>
+        <translation>Größte Rumpfflexion</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::RecordsRecordingTarget</name>
@@ -1996,6 +2008,50 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Peak velocity (°/s)</source>
         <translation>Spitzengeschwindigkeit (°/s)</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (rad)</source>
+        <translation>Rumpfflexion (rad)</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (°)</source>
+        <translation>Rumpfflexion (°)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (rad)</source>
+        <translation>Seitneigung (rad)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (°)</source>
+        <translation>Seitneigung (°)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (rad)</source>
+        <translation>Rumpfrotation (rad)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (°)</source>
+        <translation>Rumpfrotation (°)</translation>
+    </message>
+    <message>
+        <source>Shoulder displacement (cm)</source>
+        <translation>Schulterverschiebung (cm)</translation>
+    </message>
+    <message>
+        <source>Trunk compensation</source>
+        <translation>Rumpfkompensation</translation>
     </message>
 </context>
 <context>
@@ -2669,6 +2725,53 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Too many wrong passwords for this account. You may try again now.</source>
         <translation>Zu viele falsche Passwörter für dieses Konto. Sie können es jetzt erneut versuchen.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::TrunkPanel</name>
+    <message>
+        <source>Trunk</source>
+        <translation>Rumpf</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion:</source>
+        <translation>Größte Rumpfflexion:</translation>
+    </message>
+    <message>
+        <source>Largest lateral bending:</source>
+        <translation>Größte Seitneigung:</translation>
+    </message>
+    <message>
+        <source>Largest axial rotation:</source>
+        <translation>Größte Rumpfrotation:</translation>
+    </message>
+    <message>
+        <source>Largest shoulder displacement:</source>
+        <translation>Größte Schulterverschiebung:</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>%L1 rad</source>
+        <translation>%L1 rad</translation>
+    </message>
+    <message>
+        <source>%L1°</source>
+        <translation>%L1°</translation>
+    </message>
+    <message>
+        <source>%L1 cm</source>
+        <translation>%L1 cm</translation>
+    </message>
+    <message>
+        <source>Repetitions with compensation:</source>
+        <translation>Wiederholungen mit Kompensation:</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (flexion over %3)</source>
+        <translation>%1 von %2 (Flexion über %3)</translation>
     </message>
 </context>
 <context>
@@ -4613,6 +4716,70 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Camera: calibrated.</source>
         <translation>Kamera: kalibriert.</translation>
+    </message>
+    <message>
+        <source>Trunk compensation</source>
+        <translation>Rumpfkompensation</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>nicht gemessen</translation>
+    </message>
+    <message>
+        <source>Not measured: the session had no sternum sensor (trunk IMU) and no optical shoulder position.</source>
+        <translation>Nicht gemessen: Die Sitzung hatte keinen Brustbeinsensor (Rumpf-IMU) und keine optisch erfasste Schulterposition.</translation>
+    </message>
+    <message>
+        <source>The largest trunk flexion (forward lean), lateral bending and axial rotation from the upright start pose, and the largest displacement of the shoulder, over the session and in each repetition.</source>
+        <translation>Die größte Rumpfflexion (Vorneigung), Seitneigung und Rumpfrotation gegenüber der aufrechten Ausgangsstellung und die größte Verschiebung der Schulter, über die Sitzung und in jeder Wiederholung.</translation>
+    </message>
+    <message>
+        <source>Trunk flexion</source>
+        <translation>Rumpfflexion</translation>
+    </message>
+    <message>
+        <source>Lateral bending</source>
+        <translation>Seitneigung</translation>
+    </message>
+    <message>
+        <source>Axial rotation</source>
+        <translation>Rumpfrotation</translation>
+    </message>
+    <message>
+        <source>Shoulder displacement</source>
+        <translation>Schulterverschiebung</translation>
+    </message>
+    <message>
+        <source>%1 of %2 repetitions were made with trunk compensation (trunk flexion over %3 deg).</source>
+        <translation>%1 von %2 Wiederholungen wurden mit Rumpfkompensation ausgeführt (Rumpfflexion über %3°).</translation>
+    </message>
+    <message>
+        <source>Per repetition</source>
+        <translation>Je Wiederholung</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (deg)</source>
+        <translation>Rumpfflexion (°)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (deg)</source>
+        <translation>Seitneigung (°)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (deg)</source>
+        <translation>Rumpfrotation (°)</translation>
+    </message>
+    <message>
+        <source>Shoulder (cm)</source>
+        <translation>Schulter (cm)</translation>
+    </message>
+    <message>
+        <source>Compensated</source>
+        <translation>Kompensiert</translation>
+    </message>
+    <message>
+        <source>Trunk compensation: largest trunk flexion (deg)</source>
+        <translation>Rumpfkompensation: größte Rumpfflexion (°)</translation>
     </message>
 </context>
 <context>

@@ -1849,6 +1849,18 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>Normal (%1) %L2 %3</source>
         <translation>Normal (%1) %L2 %3</translation>
     </message>
+    <message>
+        <source>Trunk flexion (compensation)</source>
+        <translation>Flexión del tronco (compensación)</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion (%1)</source>
+        <translation>Flexión máxima del tronco (%1)</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion</source>
+        <translation>Flexión máxima del tronco</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::RecordsRecordingTarget</name>
@@ -1996,6 +2008,50 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Peak velocity (°/s)</source>
         <translation>Velocidad máxima (°/s)</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>sí</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>no</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (rad)</source>
+        <translation>Flexión del tronco (rad)</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (°)</source>
+        <translation>Flexión del tronco (°)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (rad)</source>
+        <translation>Inclinación lateral (rad)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (°)</source>
+        <translation>Inclinación lateral (°)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (rad)</source>
+        <translation>Rotación axial (rad)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (°)</source>
+        <translation>Rotación axial (°)</translation>
+    </message>
+    <message>
+        <source>Shoulder displacement (cm)</source>
+        <translation>Desplazamiento del hombro (cm)</translation>
+    </message>
+    <message>
+        <source>Trunk compensation</source>
+        <translation>Compensación del tronco</translation>
     </message>
 </context>
 <context>
@@ -2669,6 +2725,53 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Too many wrong passwords for this account. You may try again now.</source>
         <translation>Demasiadas contraseñas incorrectas para esta cuenta. Ya puede volver a intentarlo.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::TrunkPanel</name>
+    <message>
+        <source>Trunk</source>
+        <translation>Tronco</translation>
+    </message>
+    <message>
+        <source>Largest trunk flexion:</source>
+        <translation>Flexión máxima del tronco:</translation>
+    </message>
+    <message>
+        <source>Largest lateral bending:</source>
+        <translation>Inclinación lateral máxima:</translation>
+    </message>
+    <message>
+        <source>Largest axial rotation:</source>
+        <translation>Rotación axial máxima:</translation>
+    </message>
+    <message>
+        <source>Largest shoulder displacement:</source>
+        <translation>Desplazamiento máximo del hombro:</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>%L1 rad</source>
+        <translation>%L1 rad</translation>
+    </message>
+    <message>
+        <source>%L1°</source>
+        <translation>%L1°</translation>
+    </message>
+    <message>
+        <source>%L1 cm</source>
+        <translation>%L1 cm</translation>
+    </message>
+    <message>
+        <source>Repetitions with compensation:</source>
+        <translation>Repeticiones con compensación:</translation>
+    </message>
+    <message>
+        <source>%1 of %2 (flexion over %3)</source>
+        <translation>%1 de %2 (flexión por encima de %3)</translation>
     </message>
 </context>
 <context>
@@ -4613,6 +4716,70 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Camera: calibrated.</source>
         <translation>Cámara: calibrada.</translation>
+    </message>
+    <message>
+        <source>Trunk compensation</source>
+        <translation>Compensación del tronco</translation>
+    </message>
+    <message>
+        <source>not measured</source>
+        <translation>no medido</translation>
+    </message>
+    <message>
+        <source>Not measured: the session had no sternum sensor (trunk IMU) and no optical shoulder position.</source>
+        <translation>No medido: la sesión no tenía sensor en el esternón (IMU de tronco) ni posición óptica del hombro.</translation>
+    </message>
+    <message>
+        <source>The largest trunk flexion (forward lean), lateral bending and axial rotation from the upright start pose, and the largest displacement of the shoulder, over the session and in each repetition.</source>
+        <translation>La mayor flexión del tronco (inclinación hacia delante), inclinación lateral y rotación axial respecto a la postura inicial erguida, y el mayor desplazamiento del hombro, en la sesión y en cada repetición.</translation>
+    </message>
+    <message>
+        <source>Trunk flexion</source>
+        <translation>Flexión del tronco</translation>
+    </message>
+    <message>
+        <source>Lateral bending</source>
+        <translation>Inclinación lateral</translation>
+    </message>
+    <message>
+        <source>Axial rotation</source>
+        <translation>Rotación axial</translation>
+    </message>
+    <message>
+        <source>Shoulder displacement</source>
+        <translation>Desplazamiento del hombro</translation>
+    </message>
+    <message>
+        <source>%1 of %2 repetitions were made with trunk compensation (trunk flexion over %3 deg).</source>
+        <translation>%1 de %2 repeticiones se hicieron con compensación del tronco (flexión del tronco por encima de %3°).</translation>
+    </message>
+    <message>
+        <source>Per repetition</source>
+        <translation>Por repetición</translation>
+    </message>
+    <message>
+        <source>Trunk flexion (deg)</source>
+        <translation>Flexión del tronco (°)</translation>
+    </message>
+    <message>
+        <source>Lateral bending (deg)</source>
+        <translation>Inclinación lateral (°)</translation>
+    </message>
+    <message>
+        <source>Axial rotation (deg)</source>
+        <translation>Rotación axial (°)</translation>
+    </message>
+    <message>
+        <source>Shoulder (cm)</source>
+        <translation>Hombro (cm)</translation>
+    </message>
+    <message>
+        <source>Compensated</source>
+        <translation>Compensada</translation>
+    </message>
+    <message>
+        <source>Trunk compensation: largest trunk flexion (deg)</source>
+        <translation>Compensación del tronco: flexión máxima del tronco (°)</translation>
     </message>
 </context>
 <context>

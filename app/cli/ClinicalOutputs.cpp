@@ -24,8 +24,9 @@ constexpr std::string_view kReportHelp =
                            [--lang CODE] [--overwrite]
 
 The first form writes session ID's report: patient and session details, devices and calibration,
-the metrics per clinical angle, joint-angle plots, repetitions, the angles against normative
-ranges and against the patient's earlier sessions, the notes. The second writes a progress report:
+the metrics per clinical angle, joint-angle plots, repetitions, the trunk's compensation (with a
+sternum IMU or an optical shoulder), the angles against normative ranges and against the
+patient's earlier sessions, the notes. The second writes a progress report:
 range of motion per clinical angle against date over the sessions from --from to --to
 (inclusive). Every report is written to the audit log.
 

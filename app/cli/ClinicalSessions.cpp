@@ -40,8 +40,10 @@ constexpr std::string_view kSessionHelp =
                             samples (rows with IMU data), rows, chunks, stored_bytes, devices,
                             filter_settings, setting (clinic or home), a home session's
                             pain_score, patient_comment and home_summary, and the newest
-                            metrics: per clinical angle, repetitions, sparc, ldlj,
-                            estimate_version (docs/cli.md)
+                            metrics: per clinical angle, repetitions, sparc, ldlj, trunk
+                            (largest trunk flexion, lateral bending, axial rotation and
+                            shoulder displacement; null where not measured), estimate_version
+                            (docs/cli.md)
 
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
@@ -276,7 +278,30 @@ void addMetrics(QJsonObject& o, const std::optional<QJsonObject>& m) {
   o.insert("repetitions", field("repetitions"));
   o.insert("sparc", field("sparc"));
   o.insert("ldlj", field("ldlj"));
+  // null, not absent, for metrics stored before the trunk was measured
+  o.insert("trunk", m && m->contains("trunk") ? m->value("trunk") : QJsonValue());
   o.insert("estimate_version", field("estimate_version"));
+}
+
+// "trunk: flexion 18.1 deg, lateral 9.0 deg, rotation 8.9 deg, shoulder 17.6 cm" and the
+// repetitions made with compensation; "-" for a value not measured. Nothing when none was.
+void printTrunk(std::ostream& out, const QJsonObject& m) {
+  const std::optional<TrunkCompensation> t = storage::trunkCompensationFromJson(m);
+  if (!t || !storage::measured(t->session)) return;
+  const auto value = [](const std::optional<double>& v, const char* unit) {
+    return v ? fixed(*v, 1) + " " + unit : std::string("-");
+  };
+  const TrunkExtremes& x = t->session;
+  out << "trunk (largest): flexion " << value(x.maxFlexionDeg, "deg") << ", lateral bending "
+      << value(x.maxLateralDeg, "deg") << ", axial rotation " << value(x.maxRotationDeg, "deg")
+      << ", shoulder displacement " << value(x.maxShoulderDisplacementCm, "cm") << "\n";
+  if (t->repetitionsWithCompensation) {
+    const QJsonValue limit = m["trunk"].toObject()["flexion_limit_deg"];
+    out << "repetitions with trunk compensation: " << *t->repetitionsWithCompensation << " of "
+        << t->repetitions.size();
+    if (limit.isDouble()) out << " (flexion over " << fixed(limit.toDouble(), 1) << " deg)";
+    out << "\n";
+  }
 }
 
 // The metrics as a Markdown table and a few lines.
@@ -301,9 +326,17 @@ void printMetrics(std::ostream& out, const QJsonObject& m) {
     const QJsonObject r = v.toObject();
     out << "  " << fixed(r["start_s"].toDouble(), 2) << "-" << fixed(r["end_s"].toDouble(), 2)
         << " s: " << fixed(r["excursion_deg"].toDouble(), 1) << " deg"
-        << (r["partial"].toBool() ? " (partial)" : "") << "\n";
+        << (r["partial"].toBool() ? " (partial)" : "");
+    const QJsonObject trunk = r["trunk"].toObject();
+    if (trunk["max_flexion_deg"].isDouble())
+      out << ", trunk flexion " << fixed(trunk["max_flexion_deg"].toDouble(), 1) << " deg";
+    if (trunk["max_shoulder_displacement_cm"].isDouble())
+      out << ", shoulder " << fixed(trunk["max_shoulder_displacement_cm"].toDouble(), 1) << " cm";
+    if (trunk["compensated"].toBool()) out << " (trunk compensation)";
+    out << "\n";
   }
   out << "SPARC: " << cell(m["sparc"], 2) << "\nLDLJ: " << cell(m["ldlj"], 2) << "\n";
+  printTrunk(out, m);
 }
 
 int sessionShow(const std::vector<std::string>& rest, std::ostream& out, std::ostream&) {

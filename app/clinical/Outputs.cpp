@@ -66,6 +66,16 @@ reports::SessionReportData sessionReportData(storage::ClinicalStore& store, qint
   d.side = s.side == Side::Left ? "left" : "right";
   d.angles = s.series;
   d.metrics = s.metrics;
+  // The trunk's compensation as the analysis stored it, when its metrics are those of the
+  // estimates reported (the same repetitions).
+  if (const std::optional<QJsonObject> m = storage::latestMetricsJson(store, id);
+      m && (*m)["estimate_version"].toInt() == s.version) {
+    d.trunk = storage::trunkCompensationFromJson(*m);
+    if (d.trunk && d.trunk->repetitions.size() != d.metrics.repetitions.repetitions.size())
+      d.trunk->repetitions.clear();  // not the same repetitions: the session's values only
+    const QJsonValue limit = (*m)["trunk"].toObject()["flexion_limit_deg"];
+    if (limit.isDouble()) d.trunkFlexionLimitDeg = limit.toDouble();
+  }
   // Times in recording time, from the first recorded row, as the review shows them.
   d.recordingStartS = store.recordingStartS(id);
   d.events =
@@ -109,6 +119,8 @@ reports::ProgressReportData progressReportData(storage::ClinicalStore& store, co
       p.minRad = angleFieldOf(*m, "min_deg");
       const QJsonValue reps = (*m)["repetitions"].toObject()["count"];
       if (reps.isDouble()) p.repetitions = reps.toInt();
+      const QJsonValue trunk = (*m)["trunk"].toObject()["max_flexion_deg"];
+      if (trunk.isDouble()) p.trunkFlexionDeg = trunk.toDouble();
     }
     d.sessions.push_back(p);
   }

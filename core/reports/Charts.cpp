@@ -289,13 +289,14 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
 
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
                    const std::vector<QDateTime>& when,
-                   const std::vector<std::optional<double>>& valuesDeg, double normalSpanDeg) {
+                   const std::vector<std::optional<double>>& valuesDeg,
+                   std::optional<double> normalSpanDeg) {
   Frame f = frameIn(w, r);
   const std::size_t n = std::min(when.size(), valuesDeg.size());
   // Days since the first session, so the x axis is proportional to time.
   const QDateTime origin = n > 0 ? when.front() : QDateTime::currentDateTimeUtc();
   auto day = [&](const QDateTime& t) { return origin.msecsTo(t) / 86400000.0; };
-  double last = 0, top = normalSpanDeg, bottom = 0;
+  double last = 0, top = normalSpanDeg.value_or(5.0), bottom = 0;
   for (std::size_t i = 0; i < n; ++i) {
     last = std::max(last, day(when[i]));
     if (valuesDeg[i]) {
@@ -313,22 +314,25 @@ void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
   const std::vector<double> yTicks = niceTicks(f.ylo, f.yhi, 4);
   QPainter& p = w.painter();
   p.save();
-  p.fillRect(
-      QRectF(f.plot.left(), f.py(normalSpanDeg), f.plot.width(), f.py(0) - f.py(normalSpanDeg)),
-      kNormalSpan);
+  if (normalSpanDeg)
+    p.fillRect(
+        QRectF(f.plot.left(), f.py(*normalSpanDeg), f.plot.width(), f.py(0) - f.py(*normalSpanDeg)),
+        kNormalSpan);
   const QDate first = origin.date();
   drawAxes(
       w, f, r, title, xTicks,
       [&](double d) { return formatDate(first.addDays(static_cast<qint64>(std::lround(d)))); },
       Text::tr("date"), yTicks, Text::tr("deg"));
-  p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
-  p.drawLine(QPointF(f.plot.left(), f.py(normalSpanDeg)),
-             QPointF(f.plot.right(), f.py(normalSpanDeg)));
-  p.setFont(w.fonts().small);
-  p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
-             Qt::AlignRight | Qt::AlignVCenter,
-             Text::tr("shaded: AAOS normal range of motion, 0-%1 deg")
-                 .arg(reportLocale().toString(normalSpanDeg, 'f', 0)));
+  if (normalSpanDeg) {
+    p.setPen(QPen(QColor(90, 90, 90), w.mm(0.25), Qt::DashLine));
+    p.drawLine(QPointF(f.plot.left(), f.py(*normalSpanDeg)),
+               QPointF(f.plot.right(), f.py(*normalSpanDeg)));
+    p.setFont(w.fonts().small);
+    p.drawText(QRectF(f.plot.left(), r.top(), f.plot.width(), w.mm(4)),
+               Qt::AlignRight | Qt::AlignVCenter,
+               Text::tr("shaded: AAOS normal range of motion, 0-%1 deg")
+                   .arg(reportLocale().toString(*normalSpanDeg, 'f', 0)));
+  }
   QPainterPath path;
   bool open = false;
   p.setPen(QPen(kLine, w.mm(0.35)));

@@ -57,10 +57,11 @@ void drawNormativeBars(PageWriter& w, const QRectF& r, const std::vector<Normati
 double normativeBarsHeight(const PageWriter& w, std::size_t n);
 
 /// Values (deg, e.g. the largest angle reached per session) against date in rect r; the normal
-/// span (0 to normalSpanDeg) shaded and its limit dashed. Points with no value are skipped; the
-/// axis goes below 0 when a value does.
+/// span (0 to normalSpanDeg) shaded and its limit dashed (none without a normal span: the trunk's
+/// compensation). Points with no value are skipped; the axis goes below 0 when a value does.
 void drawDateChart(PageWriter& w, const QRectF& r, const QString& title,
                    const std::vector<QDateTime>& when,
-                   const std::vector<std::optional<double>>& valuesDeg, double normalSpanDeg);
+                   const std::vector<std::optional<double>>& valuesDeg,
+                   std::optional<double> normalSpanDeg);
 
 }  // namespace armtrack::reports

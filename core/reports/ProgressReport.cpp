@@ -106,6 +106,16 @@ void draw(PageWriter& w, const ProgressReportData& d,
       drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)), title, when, largest,
                     motionNormalRad(ranges[a], m.opposite) * kRadToDeg);
     }
+    // The trunk's compensation over the weeks, when sessions measured it (a sternum sensor):
+    // how far the patient leaned forward at most, which therapy means to bring down.
+    std::vector<std::optional<double>> trunk;
+    for (const ProgressSession& s : sessions) trunk.push_back(s.trunkFlexionDeg);
+    if (std::any_of(trunk.begin(), trunk.end(), [](const auto& v) { return v.has_value(); })) {
+      const QRectF r = w.reserve(w.mm(44));
+      drawDateChart(w, r.adjusted(0, 0, 0, -w.mm(2)),
+                    Text::tr("Trunk compensation: largest trunk flexion (deg)"), when, trunk,
+                    std::nullopt);
+    }
     const std::string_view source = normSourceCitation(NormSource::Aaos);
     w.paragraph(Text::tr("Normal ranges: %1.")
                     .arg(QString::fromUtf8(source.data(), static_cast<qsizetype>(source.size()))),

@@ -13,6 +13,7 @@
 #include "core/metrics/PatientNorms.h"
 #include "core/metrics/RangeOfMotion.h"
 #include "core/metrics/SessionTime.h"
+#include "core/metrics/TrunkCompensation.h"
 #include "core/storage/Records.h"
 
 namespace armtrack::reports {
@@ -43,6 +44,11 @@ struct SessionReportData {
   /// The events marked during the session (recording time), read from its notes.
   std::vector<EventMark> events;
   SessionMetrics metrics;  ///< computeSessionMetrics(angles, ...)
+  /// The trunk's compensation (docs/metrics.md, "Trunk compensation"), one entry per repetition
+  /// of metrics; empty for an analysis made before the trunk was measured (no section then).
+  std::optional<TrunkCompensation> trunk;
+  /// The trunk flexion limit (deg) the repetitions were judged against; empty = none.
+  std::optional<double> trunkFlexionLimitDeg;
   /// Earlier sessions of the same patient, oldest first (the current one is added by the report).
   std::vector<RomSnapshot> earlierSessions;
   /// The other side's latest range of motion, when it was measured.
@@ -75,6 +81,8 @@ struct ProgressSession {
   /// rad, the smallest angle reached: minus the peak in the opposite direction (shoulder
   /// extension, external rotation, supination).
   std::array<std::optional<double>, kNumClinicalAngles> minRad{};
+  /// deg, the session's largest trunk flexion (its metrics' "trunk"); empty when not measured.
+  std::optional<double> trunkFlexionDeg;
 };
 
 /// A patient's range of motion over a date range.

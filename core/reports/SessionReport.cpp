@@ -186,6 +186,64 @@ void repetitions(PageWriter& w, const SessionReportData& d) {
   w.table(t);
 }
 
+QString cm(const std::optional<double>& v) {
+  return v ? reportLocale().toString(*v, 'f', 1) : QStringLiteral("-");
+}
+
+// How far the patient leaned and turned the trunk to move the arm, and how far the shoulder
+// moved (docs/reports.md, "Session report"); "not measured" without the sensors for it.
+void trunk(PageWriter& w, const SessionReportData& d) {
+  if (!d.trunk) return;  // analysed before the trunk was measured
+  w.heading(Text::tr("Trunk compensation"));
+  const TrunkExtremes& x = d.trunk->session;
+  const auto deg = [](const std::optional<double>& v) {
+    return v ? Text::tr("%1 deg").arg(formatDeg(v)) : Text::tr("not measured");
+  };
+  if (!(x.maxFlexionDeg || x.maxLateralDeg || x.maxRotationDeg || x.maxShoulderDisplacementCm)) {
+    w.paragraph(Text::tr("Not measured: the session had no sternum sensor (trunk IMU) and no "
+                         "optical shoulder position."),
+                w.fonts().body);
+    return;
+  }
+  w.paragraph(Text::tr("The largest trunk flexion (forward lean), lateral bending and axial "
+                       "rotation from the upright start pose, and the largest displacement of "
+                       "the shoulder, over the session and in each repetition."),
+              w.fonts().small);
+  w.keyValues({{Text::tr("Trunk flexion"), deg(x.maxFlexionDeg)},
+               {Text::tr("Lateral bending"), deg(x.maxLateralDeg)},
+               {Text::tr("Axial rotation"), deg(x.maxRotationDeg)},
+               {Text::tr("Shoulder displacement"),
+                x.maxShoulderDisplacementCm ? Text::tr("%1 cm").arg(cm(x.maxShoulderDisplacementCm))
+                                            : Text::tr("not measured")}});
+  if (d.trunk->repetitionsWithCompensation && d.trunkFlexionLimitDeg)
+    w.paragraph(Text::tr("%1 of %2 repetitions were made with trunk compensation (trunk flexion "
+                         "over %3 deg).")
+                    .arg(*d.trunk->repetitionsWithCompensation)
+                    .arg(d.trunk->repetitions.size())
+                    .arg(formatDeg(d.trunkFlexionLimitDeg)),
+                w.fonts().body);
+  if (d.trunk->repetitions.empty()) return;
+  w.ensureSpace(w.mm(22));  // the label with the table's header and first row
+  w.paragraph(Text::tr("Per repetition"), w.fonts().bold);
+  Table t;
+  t.header = {Text::tr("#"),
+              Text::tr("Trunk flexion (deg)"),
+              Text::tr("Lateral bending (deg)"),
+              Text::tr("Axial rotation (deg)"),
+              Text::tr("Shoulder (cm)"),
+              Text::tr("Compensated")};
+  t.widths = {0.08, 0.18, 0.19, 0.19, 0.18, 0.18};
+  for (std::size_t i = 0; i < d.trunk->repetitions.size(); ++i) {
+    const TrunkExtremes& r = d.trunk->repetitions[i];
+    t.rows.push_back({QString::number(i + 1), formatDeg(r.maxFlexionDeg),
+                      formatDeg(r.maxLateralDeg), formatDeg(r.maxRotationDeg),
+                      cm(r.maxShoulderDisplacementCm),
+                      r.compensated ? (*r.compensated ? Text::tr("yes") : Text::tr("no"))
+                                    : QStringLiteral("-")});
+  }
+  w.table(t);
+}
+
 QString sourceName(NormSource s) {
   const std::string_view n = normSourceShortName(s);
   return QString::fromUtf8(n.data(), static_cast<qsizetype>(n.size()));
@@ -394,6 +452,7 @@ int writeSessionReport(const SessionReportData& d, const QString& pdfPath) {
                     metricsTable(w, d);
                     plots(w, d);
                     repetitions(w, d);
+                    trunk(w, d);
                     normative(w, d);
                     earlier(w, d);
                     notes(w, d);

@@ -17,7 +17,8 @@ constexpr std::uint32_t kMagic = 0x31455441;  // "ATE1" little-endian
 constexpr std::uint32_t kColumns = 12;        // t, 5 angles, 5 standard deviations, status
 constexpr std::size_t kDoubleColumns = 11;
 constexpr std::size_t kHeaderBytes = 16;
-constexpr int kMaxStatus = 3;
+// kStatusFused .. kStatusTrunkMoved (4: the trunk moved with no trunk IMU to measure it).
+constexpr int kMaxStatus = kStatusTrunkMoved;
 
 void putU32(std::string& out, std::uint32_t v) {
   for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xff));
@@ -107,7 +108,7 @@ std::string EstimateCodec::encode(const EstimateColumns& e, int level) {
     throw std::invalid_argument("estimate columns of different lengths");
   for (int s : e.status)
     if (s < 0 || s > kMaxStatus)
-      throw std::invalid_argument("estimate status " + std::to_string(s) + " outside 0-3");
+      throw std::invalid_argument("estimate status " + std::to_string(s) + " outside 0-4");
   FrameWriter frame(level, kHeaderBytes + n * (8 * kDoubleColumns + 1));
   std::string header;
   putU32(header, kMagic);
@@ -174,7 +175,7 @@ EstimateColumns EstimateCodec::decode(const std::string& blob, std::uint64_t exp
   for (std::size_t r = 0; r < n; ++r) {
     if (p[r] > kMaxStatus)
       throw std::runtime_error("row " + std::to_string(r) + ": status " + std::to_string(p[r]) +
-                               " outside 0-3");
+                               " outside 0-4");
     e.status[r] = p[r];
   }
   for (std::size_t r = 0; r < n; ++r) {

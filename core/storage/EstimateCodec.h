@@ -16,7 +16,7 @@ struct EstimateColumns {
   std::vector<double> t;        ///< s
   std::vector<JointVector> th;  ///< DH joint angles (rad)
   std::vector<JointVector> sd;  ///< their standard deviations (rad)
-  std::vector<int> status;      ///< kStatus* of core/estimation/RecordingEstimator.h (0-3)
+  std::vector<int> status;      ///< kStatus* of core/estimation/RecordingEstimator.h (0-4)
   std::size_t size() const { return t.size(); }
   /// Adds one output row of the estimator at the end of every column.
   void append(const EstimateRow& row) {
@@ -40,12 +40,12 @@ class EstimateCodec {
   static constexpr const char* kChunkedName = "est-f64-zstd-v1-chunks";
 
   /// The blob of columns (all of one length; throws std::invalid_argument otherwise, or for a
-  /// status outside 0-3).
+  /// status outside 0-4).
   static std::string encode(const EstimateColumns& columns, int level = 3);
 
   /// The columns of a blob made by encode. Throws std::runtime_error saying what is wrong (not a
   /// zstd frame, damaged, wrong size, bad header, a row count other than expectedRows, a status
-  /// outside 0-3, times that are not finite or decrease); the caller adds which session and
+  /// outside 0-4, times that are not finite or decrease); the caller adds which session and
   /// version.
   static EstimateColumns decode(const std::string& blob, std::uint64_t expectedRows);
 };

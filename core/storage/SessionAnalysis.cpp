@@ -104,8 +104,21 @@ void putSmoothness(QJsonObject& o, const char* name, const SmoothnessValue& v) {
   o.insert(QString(name) + "_status", toString(v.status));
 }
 
+QJsonValue optionalNumber(const std::optional<double>& v) {
+  return v ? number(*v) : QJsonValue(QJsonValue::Null);
+}
+
+// The trunk's four values (docs/storage.md, "Metrics"): null where not measured.
+QJsonObject trunkJson(const TrunkExtremes& x) {
+  return QJsonObject{{"max_flexion_deg", optionalNumber(x.maxFlexionDeg)},
+                     {"max_lateral_deg", optionalNumber(x.maxLateralDeg)},
+                     {"max_rotation_deg", optionalNumber(x.maxRotationDeg)},
+                     {"max_shoulder_displacement_cm", optionalNumber(x.maxShoulderDisplacementCm)}};
+}
+
 // The summary stored in metrics.per_repetition_json: everything but the per-angle table.
-QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
+QJsonObject summaryJson(const SessionMetrics& m, const TrunkCompensation& trunk,
+                        const std::optional<double>& flexionLimitDeg, int estimateVersion,
                         const std::optional<Protocol>& protocol, std::size_t droppedRows,
                         std::size_t settlingRows) {
   const RepetitionResult& r = m.repetitions;
@@ -119,6 +132,10 @@ QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
       putSmoothness(o, "sparc", m.repetitionSmoothness[i].sparc);
       putSmoothness(o, "ldlj", m.repetitionSmoothness[i].ldlj);
     }
+    const TrunkExtremes x = i < trunk.repetitions.size() ? trunk.repetitions[i] : TrunkExtremes{};
+    QJsonObject t = trunkJson(x);
+    t.insert("compensated", x.compensated ? QJsonValue(*x.compensated) : QJsonValue());
+    o.insert("trunk", t);
     list.append(o);
   }
   QJsonObject reps{{"primary_angle", angleKey(r.primaryAngle)},
@@ -128,6 +145,10 @@ QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
                    {"full", static_cast<qint64>(r.fullCount)},
                    {"partial", static_cast<qint64>(r.partialCount)},
                    {"truncated", static_cast<qint64>(r.truncated)},
+                   {"repetitions_with_compensation",
+                    trunk.repetitionsWithCompensation
+                        ? QJsonValue(static_cast<qint64>(*trunk.repetitionsWithCompensation))
+                        : QJsonValue()},
                    {"list", list}};
   if (protocol) {
     reps.insert("protocol", protocol->name);
@@ -143,6 +164,9 @@ QJsonObject summaryJson(const SessionMetrics& m, int estimateVersion,
                 {"settling_rows", static_cast<qint64>(settlingRows)},
                 {"gaps", static_cast<qint64>(m.gaps)},
                 {"repetitions", reps}};
+  QJsonObject t = trunkJson(trunk.session);
+  t.insert("flexion_limit_deg", optionalNumber(flexionLimitDeg));
+  s.insert("trunk", t);
   putSmoothness(s, "sparc", m.sparc);
   putSmoothness(s, "ldlj", m.ldlj);
   return s;
@@ -168,6 +192,38 @@ ClinicalStore::StoredSeries encodeMetricRows(const std::vector<double>& t,
   const std::string blob = EstimateCodec::encode(c);
   return {kMetricRowsCodec, QByteArray(blob.data(), static_cast<qsizetype>(blob.size()))};
 }
+
+// The rows the trunk's compensation is measured from, collected as the samples go: the trunk
+// angles of the estimates (a trunk IMU's; the filter's settling time after each (re)start or
+// recovery left out as the metrics leave it out, and at most one row per 1/kMetricsRateHz cell
+// of time, as the metrics thin theirs) and every optical shoulder the recording holds. Rows of
+// status 4 (the trunk moved unseen) are kept: their trunk values are what was measured.
+class TrunkRowCollector {
+ public:
+  void add(const ArmSample& sample, const EstimateRow* row) {
+    TrunkRow r;
+    r.t = sample.t;
+    if (row) {
+      if (row->status == kStatusRestarted || row->status == kStatusRecovered)
+        m_settledFrom = row->t + kStartupSeconds;
+      if (row->t >= m_settledFrom && row->trunk.allFinite()) {
+        const double cell = std::floor(row->t * kMetricsRateHz);
+        if (!(cell <= m_lastCell)) {
+          m_lastCell = cell;
+          r.angle = row->trunk;
+        }
+      }
+    }
+    r.shoulder = sample.shoulder;
+    if (r.angle || r.shoulder) m_rows.push_back(r);
+  }
+  const std::vector<TrunkRow>& rows() const { return m_rows; }
+
+ private:
+  std::vector<TrunkRow> m_rows;
+  double m_settledFrom = -std::numeric_limits<double>::infinity();
+  double m_lastCell = -std::numeric_limits<double>::infinity();
+};
 
 // A session's analysis as it runs: the estimates go to the database a chunk at a time and the
 // rows the metrics use are collected, so neither the recording nor its estimates are ever in
@@ -280,12 +336,18 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                          sessionText(sessionId) + ": the calibration does not fit: " + e.what());
     }
   }
+  if (options.trunkFlexionLimitDeg &&
+      !(std::isfinite(*options.trunkFlexionLimitDeg) && *options.trunkFlexionLimitDeg > 0))
+    throw StorageError(Kind::Usage, sessionText(sessionId) +
+                                        ": the trunk flexion limit must be a positive number of "
+                                        "degrees (or none)");
   const EstimatorParams params = estimatorParamsFor(meta, result.settings);
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp =
       storedProblem([&] { return metricsParams(store, info, params.geometry, protocol); });
 
   AnalysisRun run(store, sessionId);
+  TrunkRowCollector trunkRows;
   {
     const auto n = options.expectedRows > 0
                        ? options.expectedRows
@@ -298,7 +360,12 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
     std::size_t nextRow = n / 10;
     bool cancelled = false;
     const auto one = [&](const ArmSample& s) {
-      if (estimator.push(s, row)) run.add(row);
+      if (estimator.push(s, row)) {
+        run.add(row);
+        trunkRows.add(s, &row);
+      } else {
+        trunkRows.add(s, nullptr);
+      }
       if (++done >= nextRow) {
         progress(nextPercent * 9 / 10);
         nextPercent += 10;
@@ -359,6 +426,10 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       throw StorageError(Kind::Usage,
                          sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
     }
+    TrunkCompensationParams tp;
+    tp.flexionLimitDeg = options.trunkFlexionLimitDeg;
+    result.trunk =
+        computeTrunkCompensation(trunkRows.rows(), repetitionSpans(result.metrics.repetitions), tp);
     series = encodeMetricRows(settled.metricSeries.t, std::move(settled.metricJoints));
   } catch (const StorageError& e) {
     failAnalysis(store, sessionId, e);
@@ -392,7 +463,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
       QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
       [&](int estimateVersion) {
-        summary = summaryJson(result.metrics, estimateVersion, protocol, dropped, settling);
+        summary = summaryJson(result.metrics, result.trunk, options.trunkFlexionLimitDeg,
+                              estimateVersion, protocol, dropped, settling);
         return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
       },
       series);

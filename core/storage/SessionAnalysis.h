@@ -14,6 +14,7 @@
 #include "core/calibration/Calibration.h"
 #include "core/estimation/RecordingEstimator.h"
 #include "core/metrics/ClinicalMetrics.h"
+#include "core/metrics/TrunkCompensation.h"
 #include "core/storage/ClinicalStore.h"
 
 namespace armtrack::storage {
@@ -52,6 +53,11 @@ struct AnalysisOptions {
   std::function<bool(const std::function<bool(std::span<const ArmSample>)>&)> samples;
   /// The rows samples will hand over, for progress (0: the session's stored row count).
   std::size_t expectedRows = 0;
+  /// A repetition whose largest trunk flexion exceeds this (deg) was made with compensation
+  /// (core/metrics/TrunkCompensation.h): each repetition's "compensated" and the count
+  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default) = no limit, and
+  /// both null. Not positive and finite: StorageError(Usage).
+  std::optional<double> trunkFlexionLimitDeg;
 };
 
 struct AnalysisResult {
@@ -62,7 +68,10 @@ struct AnalysisResult {
   QString settingsSource;    ///< "session" (its stored filter settings) or "defaults"
   EstimateStats stats;       ///< the estimator's run
   SessionMetrics metrics;    ///< SI units
-  QJsonObject metricsJson;   ///< as latestAnalysis() returns it
+  /// The trunk's compensation over the session and per repetition (one per repetition of
+  /// metrics); its values are empty without a trunk IMU or an optical shoulder.
+  TrunkCompensation trunk;
+  QJsonObject metricsJson;  ///< as latestAnalysis() returns it
 };
 
 /// Filter settings as a session's filter_json holds them (docs/storage.md, "Filter settings"):
@@ -132,6 +141,13 @@ std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 se
 /// The metrics of a stored metrics JSON (latestMetricsJson's form) as SessionMetrics: what the
 /// reports draw. Fields the JSON does not hold (sample indices, hysteresis levels) stay zero.
 SessionMetrics sessionMetricsFromJson(const QJsonObject& metrics);
+/// The trunk compensation of a stored metrics JSON (its "trunk", each repetition's "trunk" and
+/// "repetitions_with_compensation"; docs/storage.md, "Metrics"), with one entry in repetitions
+/// per repetition of the JSON. Nothing when the JSON has no "trunk" object (analysed before the
+/// trunk was measured). Values that are not numbers read as empty; the row counts stay zero.
+std::optional<TrunkCompensation> trunkCompensationFromJson(const QJsonObject& metrics);
+/// Whether any of the four values was measured.
+bool measured(const TrunkExtremes& x);
 
 /// Which rows sessionAngles puts in its series: those the metrics use (at most kMetricsRateHz a
 /// second; reports) or every settled row (exports). The metrics are the same either way.

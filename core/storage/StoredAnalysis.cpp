@@ -223,6 +223,43 @@ SessionMetrics sessionMetricsFromJson(const QJsonObject& m) {
   return out;
 }
 
+namespace {
+
+std::optional<double> optionalOf(const QJsonObject& o, const char* key) {
+  const QJsonValue v = o.value(key);
+  if (!v.isDouble() || !std::isfinite(v.toDouble())) return std::nullopt;
+  return v.toDouble();
+}
+
+TrunkExtremes extremesFromJson(const QJsonObject& o) {
+  TrunkExtremes x;
+  x.maxFlexionDeg = optionalOf(o, "max_flexion_deg");
+  x.maxLateralDeg = optionalOf(o, "max_lateral_deg");
+  x.maxRotationDeg = optionalOf(o, "max_rotation_deg");
+  x.maxShoulderDisplacementCm = optionalOf(o, "max_shoulder_displacement_cm");
+  if (o.value("compensated").isBool()) x.compensated = o.value("compensated").toBool();
+  return x;
+}
+
+}  // namespace
+
+bool measured(const TrunkExtremes& x) {
+  return x.maxFlexionDeg || x.maxLateralDeg || x.maxRotationDeg || x.maxShoulderDisplacementCm;
+}
+
+std::optional<TrunkCompensation> trunkCompensationFromJson(const QJsonObject& m) {
+  if (!m.value("trunk").isObject()) return std::nullopt;
+  TrunkCompensation out;
+  out.session = extremesFromJson(m.value("trunk").toObject());
+  const QJsonObject reps = m.value("repetitions").toObject();
+  for (const QJsonValue& v : reps.value("list").toArray())
+    out.repetitions.push_back(extremesFromJson(v.toObject().value("trunk").toObject()));
+  const QJsonValue n = reps.value("repetitions_with_compensation");
+  if (n.isDouble() && n.toDouble() >= 0)
+    out.repetitionsWithCompensation = static_cast<std::size_t>(n.toInteger());
+  return out;
+}
+
 std::optional<SessionAngles> storedSessionAngles(ClinicalStore& store, qint64 sessionId) {
   const std::optional<ClinicalStore::StoredSeries> series = store.latestMetricSeries(sessionId);
   if (!series) return std::nullopt;

@@ -544,5 +544,74 @@ TEST_P(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
   EXPECT_EQ(audit.out.find("Name P01"), std::string::npos);  // identifiers only
 }
 
+// `session show` of a session whose patient leaned with each reach (a sternum IMU and a Kinect
+// that sees the shoulder; issue 26): --json has the trunk's four values and each repetition's,
+// the text a trunk line, the report a trunk section; a session without trunk sensors has null
+// values and no line.
+TEST_F(StorageCliSqlite, SessionShowPrintsTheTrunk) {
+  addPatients();
+  armtrack::TrajectoryOptions options;
+  options.exercise.angle = 0;  // shoulder flexion
+  options.exercise.fromDeg = 10;
+  options.exercise.toDeg = 110;
+  options.exercise.startSeconds = 4;
+  const auto trajectory = armtrack::makeTrajectory("exercise", options);
+  armtrack::SimulationParams sim = armtrack::defaultSimulation();
+  sim.duration = 24;
+  sim.seed = 821;
+  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
+  sim.trunk.enabled = true;
+  sim.trunk.leanDeg = 18;
+  sim.trunkImu.enabled = true;
+  sim.kinect.shoulder = true;
+  const armtrack::Recording rec = armtrack::simulateRecording(*trajectory, sim);
+  armtrack::writeRecording(path("lean.csv"), rec);
+  const std::string id = importFor("P01", path("lean.csv"));
+
+  Result show = run({"session", "show", id, "--json"});
+  ASSERT_EQ(show.code, 0) << show.err;
+  const QJsonObject s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  const QJsonObject trunk = s["trunk"].toObject();
+  double trueLean = 0;
+  for (const armtrack::ArmSample& a : rec.samples)
+    if (a.trueTrunk) trueLean = std::max(trueLean, std::abs((*a.trueTrunk)(0)) * 180 / M_PI);
+  EXPECT_NEAR(trueLean, 18.0, 0.5);
+  EXPECT_NEAR(trunk["max_flexion_deg"].toDouble(), trueLean, 1.5) << show.out;
+  for (const char* key : {"max_lateral_deg", "max_rotation_deg", "max_shoulder_displacement_cm"})
+    EXPECT_GT(trunk[key].toDouble(), 5.0) << key;
+  const QJsonArray list = s["repetitions"].toObject()["list"].toArray();
+  ASSERT_GE(list.size(), 3);
+  for (const QJsonValue& v : list) {
+    const QJsonObject t = v.toObject()["trunk"].toObject();
+    EXPECT_NEAR(t["max_flexion_deg"].toDouble(), trueLean, 1.5);
+    EXPECT_TRUE(t.contains("compensated") && t["compensated"].isNull());
+  }
+  show = run({"session", "show", id});
+  ASSERT_EQ(show.code, 0) << show.err;
+  EXPECT_NE(show.out.find("trunk (largest): flexion 1"), std::string::npos) << show.out;
+  EXPECT_NE(show.out.find(", trunk flexion 1"), std::string::npos) << show.out;
+  // The session report's trunk section, with the session's largest flexion as stored.
+  const Result report = runProcess({"report", QString::fromStdString(id), "--pdf",
+                                    QString::fromStdString(path("lean.pdf")), "--lang", "en",
+                                    "--db", QString::fromStdString(m_db), "--user", "boss"});
+  ASSERT_EQ(report.code, 0) << report.err;
+  const std::string text = pdfText(path("lean.pdf"));
+  EXPECT_NE(text.find("Trunk compensation"), std::string::npos) << text;
+  char flexion[64];
+  std::snprintf(flexion, sizeof flexion, "Trunk flexion %.1f deg",
+                trunk["max_flexion_deg"].toDouble());
+  EXPECT_NE(QString::fromStdString(text).simplified().indexOf(QLatin1String(flexion)), -1)
+      << flexion << "\n"
+      << text;
+
+  const std::string plain = importFor("P02", simulate("arm.csv", 4.0));
+  show = run({"session", "show", plain, "--json"});
+  const QJsonObject p = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
+  EXPECT_TRUE(p["trunk"].isObject());
+  EXPECT_TRUE(p["trunk"].toObject()["max_flexion_deg"].isNull());
+  show = run({"session", "show", plain});
+  EXPECT_EQ(show.out.find("trunk"), std::string::npos) << show.out;
+}
+
 INSTANTIATE_TEST_SUITE_P(Engines, StorageCli, testing::Values(Engine::Sqlite, Engine::Postgres),
                          armtrack::test::engineName);

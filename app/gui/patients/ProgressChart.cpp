@@ -12,6 +12,7 @@
 #include <QLineSeries>
 #include <QLocale>
 #include <QScatterSeries>
+#include <QSignalBlocker>
 #include <QStandardItemModel>
 #include <QTableView>
 #include <QValueAxis>
@@ -66,6 +67,8 @@ void ProgressChart::retranslateUi() {
   m_angleLabel->setText(tr("&Motion:"));
   for (std::size_t i = 0; i < m_motions.size(); ++i)
     m_angle->setItemText(static_cast<int>(i), nameOf(m_motions[i]));
+  if (m_hasTrunk)
+    m_angle->setItemText(static_cast<int>(m_motions.size()), tr("Trunk flexion (compensation)"));
   m_angle->setAccessibleName(tr("Motion shown in the progress chart"));
   m_view->setAccessibleName(tr("Progress chart"));
   m_view->setAccessibleDescription(
@@ -91,7 +94,30 @@ void ProgressChart::setSessions(std::vector<SessionExtremes> sessions) {
   std::sort(sessions.begin(), sessions.end(),
             [](const auto& a, const auto& b) { return a.startedAt < b.startedAt; });
   m_sessions = std::move(sessions);
+  fillChooser();
   redraw();
+}
+
+void ProgressChart::fillChooser() {
+  const bool has = std::any_of(m_sessions.begin(), m_sessions.end(), [](const SessionExtremes& s) {
+    return s.trunkFlexionDeg.has_value();
+  });
+  if (has == m_hasTrunk) return;
+  const QSignalBlocker block(m_angle);
+  m_hasTrunk = has;
+  if (has)
+    m_angle->addItem(tr("Trunk flexion (compensation)"));
+  else
+    m_angle->removeItem(static_cast<int>(m_motions.size()));
+  if (m_angle->currentIndex() < 0) m_angle->setCurrentIndex(0);
+}
+
+void ProgressChart::showTrunk() {
+  if (m_hasTrunk) m_angle->setCurrentIndex(static_cast<int>(m_motions.size()));
+}
+
+bool ProgressChart::trunkShown() const {
+  return m_hasTrunk && m_angle->currentIndex() == static_cast<int>(m_motions.size());
 }
 
 void ProgressChart::setPatient(const QString& birthDate, const QString& sex) {
@@ -158,7 +184,7 @@ bool ProgressChart::opposite() const {
 }
 
 QString ProgressChart::motionName() const {
-  return nameOf(current());
+  return trunkShown() ? tr("Trunk flexion (compensation)") : nameOf(current());
 }
 
 int ProgressChart::points() const {
@@ -170,6 +196,10 @@ QChart* ProgressChart::chart() const {
 }
 
 void ProgressChart::redraw() {
+  if (trunkShown()) {
+    redrawTrunk();
+    return;
+  }
   const Motion motion = current();
   const int a = motion.angle;
   // The patient's normal range on the newest session's day (today without one), as the
@@ -274,6 +304,70 @@ void ProgressChart::redraw() {
   const double spanDeg = (highest - lowest) / scale * kRadToDeg;
   const double step = (spanDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
   y->setRange(std::floor(lowest * 1.05 / step) * step, std::ceil(highest * 1.05 / step) * step);
+  y->setTickType(QValueAxis::TicksDynamic);
+  y->setTickAnchor(0);
+  y->setTickInterval(step);
+  y->setLabelFormat(m_radians ? QStringLiteral("%.2f") : QStringLiteral("%.0f"));
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+  for (QAbstractSeries* s : chart->series()) {
+    s->attachAxis(x);
+    s->attachAxis(y);
+  }
+  QChart* old = m_view->chart();
+  m_view->setChart(chart);
+  delete old;
+}
+
+// The largest trunk flexion per session: how far the patient leaned to reach, which therapy means
+// to reduce (no normal range: ideally none at all).
+void ProgressChart::redrawTrunk() {
+  const double scale = m_radians ? 1.0 / kRadToDeg : 1.0;  // from degrees
+  const QString unit = m_radians ? tr("rad") : tr("\u00b0");
+  auto* chart = new QChart;
+  chart->setLocale(QLocale());
+  chart->setLocalizeNumbers(true);
+  chart->setTitle(tr("Trunk flexion (compensation)"));
+  chart->legend()->setAlignment(Qt::AlignBottom);
+  chart->setBackgroundRoundness(0);
+  chart->setTheme(palette().color(QPalette::Window).lightness() < 128 ? QChart::ChartThemeDark
+                                                                      : QChart::ChartThemeLight);
+  m_table->clear();
+  m_table->setHorizontalHeaderLabels({tr("Date"), tr("Largest trunk flexion (%1)").arg(unit)});
+  auto* line = new QLineSeries;
+  line->setName(tr("Largest trunk flexion"));
+  auto* dots = new QScatterSeries;
+  dots->setMarkerSize(9);
+  dots->setName(tr("Sessions"));
+  QDateTime first, last;
+  double highest = 10 * scale;
+  m_points = 0;
+  for (const SessionExtremes& s : m_sessions) {
+    if (!s.trunkFlexionDeg) continue;
+    const QDateTime when = QDateTime::fromString(s.startedAt, Qt::ISODateWithMs);
+    if (!when.isValid()) continue;
+    const double v = *s.trunkFlexionDeg * scale;
+    line->append(static_cast<qreal>(when.toMSecsSinceEpoch()), v);
+    dots->append(static_cast<qreal>(when.toMSecsSinceEpoch()), v);
+    if (!first.isValid()) first = when;
+    last = when;
+    highest = std::max(highest, v);
+    ++m_points;
+    m_table->appendRow(
+        {new QStandardItem(QLocale().toString(when.toLocalTime().date(), QLocale::ShortFormat)),
+         new QStandardItem(QLocale().toString(v, 'f', m_radians ? 3 : 1))});
+  }
+  const QDateTime from = first.addDays(-1), to = last.addDays(1);
+  chart->addSeries(line);
+  chart->addSeries(dots);
+  auto* x = new QDateTimeAxis;
+  x->setFormat(tr("d MMM", "the date axis' labels, a QDateTime format: day and short month"));
+  x->setRange(from, to);
+  x->setTickCount(std::clamp(m_points + 1, 3, 6));
+  auto* y = new QValueAxis;
+  y->setTitleText(tr("Largest trunk flexion (%1)").arg(unit));
+  const double step = 5 * scale;  // 5 deg
+  y->setRange(0, std::ceil(highest * 1.1 / step) * step);
   y->setTickType(QValueAxis::TicksDynamic);
   y->setTickAnchor(0);
   y->setTickInterval(step);

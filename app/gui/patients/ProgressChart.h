@@ -5,7 +5,8 @@
 // abduction, internal rotation, elbow flexion, pronation) and the opposite one where the normal
 // range gives a limit for it (shoulder extension, external rotation, supination). The largest
 // angle, not the range (largest - smallest): a normal range counts motion in one direction only,
-// and a range would add the opposite motion to it.
+// and a range would add the opposite motion to it. When sessions measured the trunk, the chooser
+// also offers the largest trunk flexion per session: compensation over the weeks.
 #pragma once
 
 #include <QWidget>
@@ -42,6 +43,11 @@ class ProgressChart : public QWidget {
   /// Draws one direction of a clinical angle: opposite = extension, external rotation,
   /// supination; ignored (the named direction drawn) where the normal range has no such limit.
   void setMotion(int index, bool opposite);
+  /// Draws the largest trunk flexion per session (trunk compensation over the weeks), when some
+  /// session measured it (the chooser then offers it last); otherwise nothing changes.
+  void showTrunk();
+  /// Whether the trunk's compensation is drawn.
+  bool trunkShown() const;
   /// The clinical angle drawn, and whether in its opposite direction.
   int angle() const;
   bool opposite() const;
@@ -62,10 +68,13 @@ class ProgressChart : public QWidget {
   static QString nameOf(const Motion& m);
   void retranslateUi();
   void redraw();
+  void redrawTrunk();
+  void fillChooser();
   Motion current() const;
 
   std::vector<SessionExtremes> m_sessions;
-  std::vector<Motion> m_motions;  // the chooser's entries, in its order
+  std::vector<Motion> m_motions;  // the chooser's entries, in its order (then the trunk's)
+  bool m_hasTrunk = false;        // some session measured the trunk: the chooser offers it
   QLabel* m_angleLabel;
   QComboBox* m_angle;
   QChartView* m_view;

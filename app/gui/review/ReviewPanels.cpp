@@ -10,6 +10,7 @@
 #include <QLocale>
 #include <QPushButton>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "app/gui/common/Forms.h"
 #include "app/gui/common/SessionTableModel.h"
@@ -39,6 +40,25 @@ void RepetitionTableModel::setRadians(bool radians) {
   endResetModel();
 }
 
+bool RepetitionTableModel::hasValues(int column) const {
+  return std::any_of(m_rows.begin(), m_rows.end(), [&](const RepetitionRow& r) {
+    switch (column) {
+      case TrunkFlexion:
+        return r.trunkFlexionDeg.has_value();
+      case TrunkLateral:
+        return r.trunkLateralDeg.has_value();
+      case TrunkRotation:
+        return r.trunkRotationDeg.has_value();
+      case Shoulder:
+        return r.shoulderCm.has_value();
+      case Compensation:
+        return r.compensated.has_value();
+      default:
+        return true;
+    }
+  });
+}
+
 int RepetitionTableModel::rowCount(const QModelIndex& parent) const {
   return parent.isValid() ? 0 : static_cast<int>(m_rows.size());
 }
@@ -52,7 +72,9 @@ QVariant RepetitionTableModel::data(const QModelIndex& index, int role) const {
   const RepetitionRow& r = m_rows[static_cast<std::size_t>(index.row())];
   if (role == StartRole) return r.startS;
   if (role == Qt::TextAlignmentRole)
-    return index.column() == Kind ? QVariant() : QVariant(Qt::AlignRight | Qt::AlignVCenter);
+    return index.column() == Kind || index.column() == Compensation
+               ? QVariant()
+               : QVariant(Qt::AlignRight | Qt::AlignVCenter);
   if (role != Qt::DisplayRole && role != Qt::AccessibleTextRole) return {};
   const double k = m_radians ? 3.14159265358979323846 / 180 : 1.0;
   const int d = m_radians ? 3 : 1;
@@ -76,6 +98,16 @@ QVariant RepetitionTableModel::data(const QModelIndex& index, int role) const {
       return number(r.sparc, 2);
     case Kind:
       return r.partial ? tr("partial") : tr("full");
+    case TrunkFlexion:
+      return r.trunkFlexionDeg ? angle(r.trunkFlexionDeg, d) : tr("not measured");
+    case TrunkLateral:
+      return r.trunkLateralDeg ? angle(r.trunkLateralDeg, d) : tr("not measured");
+    case TrunkRotation:
+      return r.trunkRotationDeg ? angle(r.trunkRotationDeg, d) : tr("not measured");
+    case Shoulder:
+      return r.shoulderCm ? number(r.shoulderCm, 1) : tr("not measured");
+    case Compensation:
+      return r.compensated ? (*r.compensated ? tr("yes") : tr("no")) : QStringLiteral("-");
     default:
       return {};
   }
@@ -100,6 +132,16 @@ QVariant RepetitionTableModel::headerData(int section, Qt::Orientation o, int ro
       return tr("SPARC");
     case Kind:
       return tr("Full or partial");
+    case TrunkFlexion:
+      return m_radians ? tr("Trunk flexion (rad)") : tr("Trunk flexion (\u00b0)");
+    case TrunkLateral:
+      return m_radians ? tr("Lateral bending (rad)") : tr("Lateral bending (\u00b0)");
+    case TrunkRotation:
+      return m_radians ? tr("Axial rotation (rad)") : tr("Axial rotation (\u00b0)");
+    case Shoulder:
+      return tr("Shoulder displacement (cm)");
+    case Compensation:
+      return tr("Trunk compensation");
     default:
       return {};
   }

@@ -23,11 +23,29 @@ struct AppSettings;
 class RepetitionTableModel : public QAbstractTableModel {
   Q_OBJECT
  public:
-  enum Column { Number, Start, End, Excursion, Rom, PeakVelocity, Sparc, Kind, ColumnCount };
+  enum Column {
+    Number,
+    Start,
+    End,
+    Excursion,
+    Rom,
+    PeakVelocity,
+    Sparc,
+    Kind,
+    TrunkFlexion,
+    TrunkLateral,
+    TrunkRotation,
+    Shoulder,
+    Compensation,
+    ColumnCount
+  };
   static constexpr int StartRole = Qt::UserRole;  ///< the repetition's start (s)
 
   using QAbstractTableModel::QAbstractTableModel;
   void setRows(std::vector<RepetitionRow> rows);
+  /// Whether some row has a value in column (the view hides the trunk's columns that have none:
+  /// a session without a trunk sensor).
+  bool hasValues(int column) const;
   /// Angles and velocities in radians instead of degrees (the settings' unit).
   void setRadians(bool radians);
   int rowCount(const QModelIndex& parent = {}) const override;

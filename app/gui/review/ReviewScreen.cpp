@@ -20,6 +20,7 @@
 #include "app/gui/common/Forms.h"
 #include "app/gui/common/JobProgress.h"
 #include "app/gui/common/SessionTableModel.h"
+#include "app/gui/review/TrunkPanel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
 #include "core/storage/DatabaseFiles.h"
@@ -136,7 +137,11 @@ void ReviewScreen::buildLayout() {
   m_repTable->setTabKeyNavigation(false);
   m_repTable->verticalHeader()->hide();
   m_repTable->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-  repsLayout->addWidget(m_repTable);
+  auto* repsRow = new QHBoxLayout;
+  repsRow->addWidget(m_repTable, 1);
+  m_trunk = new TrunkPanel(m_repsTab);
+  repsRow->addWidget(m_trunk, 0, Qt::AlignTop);
+  repsLayout->addLayout(repsRow);
   m_tabs->addTab(m_repsTab, QString());
 
   m_compareTab = new QWidget;
@@ -333,6 +338,9 @@ void ReviewScreen::show(const ReviewData& d) {
                                               ? repetitionRows(*d.metrics, &m_skippedReps, m_origin)
                                               : std::vector<RepetitionRow>{};
   m_reps->setRows(reps);
+  for (int c = RepetitionTableModel::TrunkFlexion; c < RepetitionTableModel::ColumnCount; ++c)
+    m_repTable->setColumnHidden(c, !m_reps->hasValues(c));
+  m_trunk->setMetrics(d.metrics, m_settings.units == AppSettings::AngleUnit::Radians);
 
   while (m_compare->count() > 1) m_compare->removeItem(1);
   for (const storage::SessionInfo& o : d.others) m_compare->addItem(QString(), o.id);

@@ -30,6 +30,7 @@ class ArmView;
 namespace armtrack::gui {
 
 class MessageLine;
+class TrunkPanel;
 class RecordsService;
 struct AppSettings;
 
@@ -73,6 +74,7 @@ class ReviewScreen : public QWidget {
   ui::ArmView* armView() const { return m_arm; }
   ui::AnglePlotPanel* plots() const { return m_plots; }
   QTableView* repetitionTable() const { return m_repTable; }
+  TrunkPanel* trunkPanel() const { return m_trunk; }
 
  signals:
   void loaded();
@@ -132,6 +134,7 @@ class ReviewScreen : public QWidget {
   QLabel* m_repSummary = nullptr;
   RepetitionTableModel* m_reps = nullptr;
   QTableView* m_repTable = nullptr;
+  TrunkPanel* m_trunk = nullptr;
   QComboBox* m_compare = nullptr;
   QPlainTextEdit* m_notes = nullptr;
   QPushButton* m_saveNotes = nullptr;

@@ -69,7 +69,9 @@ PatientOverview loadPatientOverview(storage::ClinicalStore& store, const QString
     const std::optional<QJsonObject> metrics = storage::latestMetricsJson(store, e->id);
     if (!metrics) continue;
     SessionExtremes x{e->id, e->startedAt, clinical::angleFieldOf(*metrics, "min_deg"),
-                      clinical::angleFieldOf(*metrics, "max_deg")};
+                      clinical::angleFieldOf(*metrics, "max_deg"), std::nullopt};
+    const QJsonValue trunk = (*metrics)["trunk"].toObject()["max_flexion_deg"];
+    if (trunk.isDouble() && std::isfinite(trunk.toDouble())) x.trunkFlexionDeg = trunk.toDouble();
     if (std::any_of(x.maxRad.begin(), x.maxRad.end(), [](const auto& v) { return v.has_value(); }))
       o.progress.push_back(std::move(x));
   }

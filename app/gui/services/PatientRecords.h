@@ -36,6 +36,9 @@ struct SessionExtremes {
   QString startedAt;  ///< ISO 8601 UTC (storage::SessionInfo::startedAt)
   /// Per angle (clinicalAngleInfo() order); empty where not measured.
   std::array<std::optional<double>, kNumClinicalAngles> minRad{}, maxRad{};
+  /// The largest trunk flexion of the session (deg, the metrics' "trunk"); empty when the
+  /// session had no trunk sensor (docs/metrics.md, "Trunk compensation").
+  std::optional<double> trunkFlexionDeg;
 };
 
 /// What the patient page shows.

@@ -60,6 +60,12 @@ std::vector<RepetitionRow> repetitionRows(const QJsonObject& metrics, int* skipp
     row.peakVelocityDegS = number(angle["peak_velocity_deg_s"]);
     row.sparc = number(r["sparc"]);
     row.ldlj = number(r["ldlj"]);
+    const QJsonObject trunk = r["trunk"].toObject();
+    row.trunkFlexionDeg = number(trunk["max_flexion_deg"]);
+    row.trunkLateralDeg = number(trunk["max_lateral_deg"]);
+    row.trunkRotationDeg = number(trunk["max_rotation_deg"]);
+    row.shoulderCm = number(trunk["max_shoulder_displacement_cm"]);
+    if (trunk["compensated"].isBool()) row.compensated = trunk["compensated"].toBool();
     rows.push_back(row);
   }
   if (skipped) *skipped = bad;

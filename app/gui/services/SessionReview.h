@@ -42,6 +42,11 @@ struct RepetitionRow {
   std::optional<double> romDeg;            ///< of the primary angle
   std::optional<double> peakVelocityDegS;  ///< of the primary angle
   std::optional<double> sparc, ldlj;
+  /// The repetition's largest trunk flexion, lateral bending and axial rotation (deg) and
+  /// shoulder displacement (cm); empty when not measured (docs/storage.md, "Metrics").
+  std::optional<double> trunkFlexionDeg, trunkLateralDeg, trunkRotationDeg, shoulderCm;
+  /// Made with trunk compensation (flexion over the session's limit); empty without a limit.
+  std::optional<bool> compensated;
 };
 
 /// The repetitions of a metrics JSON (docs/storage.md, "Metrics"), their times in recording

@@ -86,6 +86,27 @@ TEST_F(ProgressReport, ChartsAndTableForEverySession) {
   EXPECT_GT(b.count, 100) << "the ROM lines";
 }
 
+// The trunk's compensation over the weeks (issue 26): a chart of each session's largest trunk
+// flexion when some session measured it, without a normal range; none otherwise.
+TEST_F(ProgressReport, TrunkCompensationChartWhenMeasured) {
+  ProgressReportData d = progressData();
+  QString pdf = dir.filePath("no-trunk.pdf");
+  writeProgressReport(d, pdf);
+  const QString title = "Trunk compensation: largest trunk flexion (deg)";
+  QString all = pageTexts(pdf).join('\n');
+  EXPECT_FALSE(all.contains(title));
+  const int normals = all.count("shaded: AAOS normal range");
+  for (ProgressSession& s : d.sessions)  // 16 deg down to 7 deg, one session not measured
+    if (s.id != 101) s.trunkFlexionDeg = 16.0 - 3.0 * static_cast<double>(s.id - 100);
+  pdf = dir.filePath("trunk.pdf");
+  writeProgressReport(d, pdf);
+  all = pageTexts(pdf).join('\n');
+  EXPECT_TRUE(all.contains(title)) << all.toStdString();
+  EXPECT_EQ(all.count("shaded: AAOS normal range"), normals) << "no normal range for the trunk";
+  const std::vector<QImage> images = renderPages(pdf, dir.path());
+  ASSERT_FALSE(images.empty());
+}
+
 // Three simulated sessions of growing range, turned into rows by progressSession(): the table
 // shows each session's shoulder-flexion ROM as the metrics give it, within 1 deg of the truth.
 TEST_F(ProgressReport, FromSimulatedSessions) {

@@ -401,6 +401,67 @@ TEST_F(SessionReport, NoRepetitionsNoNotesNoEarlierSessions) {
   EXPECT_FALSE(all.contains("numbers: repetitions at their peaks"));
 }
 
+// The trunk section (issue 26): the session's four values and each repetition's as given, the
+// repetitions over the limit counted; "not measured" for a value without its sensor; no section
+// for an analysis made before the trunk was measured.
+TEST_F(SessionReport, TrunkCompensationSection) {
+  const SimulatedSession sim = simulateSession({110, 120, 60});
+  SessionReportData d = sessionData(sim);
+  ASSERT_EQ(d.metrics.repetitions.repetitions.size(), 3u);
+  TrunkCompensation t;
+  t.session = {17.84, 9.12, 8.46, 18.27, std::nullopt};
+  t.repetitions = {{17.84, 9.12, 8.46, 18.27, true},
+                   {16.31, 8.05, 7.9, 16.6, true},
+                   {6.52, 2.8, 3.51, 6.7, false}};
+  t.repetitionsWithCompensation = 2;
+  d.trunk = t;
+  d.trunkFlexionLimitDeg = 12;
+  QString pdf = path("trunk.pdf");
+  writeSessionReport(d, pdf);
+  QString all = pageTexts(pdf).join('\n');
+  EXPECT_TRUE(all.contains("Trunk compensation")) << all.toStdString();
+  EXPECT_TRUE(all.contains("17.8 deg"));
+  EXPECT_TRUE(all.contains("18.3 cm"));
+  EXPECT_TRUE(
+      all.contains("2 of 3 repetitions were made with trunk compensation (trunk flexion "
+                   "over 12.0 deg)."))
+      << all.toStdString();
+  // The table: one line per repetition with its four values and the verdict.
+  const QRegularExpression row3(
+      QStringLiteral("\\b3\\s+6\\.5\\s+2\\.8\\s+3\\.5\\s+6\\.7\\s+no\\b"));
+  EXPECT_TRUE(row3.match(all).hasMatch()) << all.toStdString();
+  const QRegularExpression row2(
+      QStringLiteral("\\b2\\s+16\\.3\\s+8\\.1\\s+7\\.9\\s+16\\.6\\s+yes\\b"));
+  EXPECT_TRUE(row2.match(all).hasMatch()) << all.toStdString();
+  QDir().mkpath(path("trunkpages"));
+  const std::vector<QImage> pages = renderPages(pdf, path("trunkpages"));
+  EXPECT_FALSE(pages.empty());
+
+  // A shoulder without a sternum sensor: the angles not measured, no limit.
+  t.session = {std::nullopt, std::nullopt, std::nullopt, 12.5, std::nullopt};
+  for (TrunkExtremes& r : t.repetitions) r = {std::nullopt, std::nullopt, std::nullopt, 11.0, {}};
+  t.repetitionsWithCompensation.reset();
+  d.trunk = t;
+  d.trunkFlexionLimitDeg.reset();
+  pdf = path("shoulder.pdf");
+  writeSessionReport(d, pdf);
+  all = pageTexts(pdf).join('\n');
+  EXPECT_TRUE(all.contains("not measured"));
+  EXPECT_TRUE(all.contains("12.5 cm"));
+  EXPECT_FALSE(all.contains("repetitions were made with trunk compensation"));
+
+  // Nothing measured: one sentence; analysed before the trunk: no section.
+  d.trunk = TrunkCompensation{};
+  pdf = path("none.pdf");
+  writeSessionReport(d, pdf);
+  all = pageTexts(pdf).join('\n');
+  EXPECT_TRUE(all.contains("Not measured: the session had no sternum sensor"));
+  d.trunk.reset();
+  pdf = path("old.pdf");
+  writeSessionReport(d, pdf);
+  EXPECT_FALSE(pageTexts(pdf).join('\n').contains("Trunk compensation"));
+}
+
 TEST_F(SessionReport, LongNotesFlowOntoFurtherPagesWithNothingLost) {
   const SimulatedSession sim = simulateSession({110, 120});
   SessionReportData d = sessionData(sim);

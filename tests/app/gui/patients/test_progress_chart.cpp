@@ -277,6 +277,79 @@ class TestProgressChart : public QObject {
     const double largest = *m_overview.progress.back().maxRad[0];
     QVERIFY(std::abs(cell(chart.table(), 1, 2) - 100 * largest / norms.ranges[0].maxRad) <= 0.5);
   }
+
+  // Trunk compensation over the weeks (issue 26): two sessions of a patient who leaned less with
+  // therapy (16 deg, then 8 deg; sternum IMU and Kinect), each point its session's largest trunk
+  // flexion against the simulated lean; patients without a trunk sensor see no trunk entry.
+  void theTrunksCompensationOverTheWeeks() {
+    storage::DatabaseUrl url;
+    url.path = m_dir.filePath(QStringLiteral("records.db"));
+    storage::Database db(url, {});
+    storage::ClinicalStore store(db);
+    store.signIn(QStringLiteral("admin"), "a-long-password");
+    storage::Patient p;
+    p.code = QStringLiteral("P2");
+    p.name = QStringLiteral("Leaning Less");
+    store.addPatient(p);
+    TrajectoryOptions options;
+    options.exercise.angle = 0;  // shoulder flexion
+    options.exercise.fromDeg = 10;
+    options.exercise.toDeg = 110;
+    options.exercise.startSeconds = 4;
+    const auto trajectory = makeTrajectory("exercise", options);
+    std::vector<double> trueLean;
+    for (const double lean : {16.0, 8.0}) {
+      SimulationParams sim = defaultSimulation();
+      sim.duration = 16;
+      sim.seed = lean > 10 ? 841 : 842;
+      sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 100;
+      sim.trunk.enabled = true;
+      sim.trunk.leanDeg = lean;
+      sim.trunkImu.enabled = true;
+      sim.kinect.shoulder = true;
+      const Recording rec = simulateRecording(*trajectory, sim);
+      double truth = 0;
+      for (const ArmSample& a : rec.samples)
+        if (a.trueTrunk) truth = std::max(truth, std::abs((*a.trueTrunk)(0)) * kRadToDeg);
+      trueLean.push_back(truth);
+      const std::string csv = m_dir.filePath(QStringLiteral("lean%1.csv").arg(lean)).toStdString();
+      writeRecording(csv, rec);
+      const qint64 id = store.importRecording(csv, QStringLiteral("P2"), {});
+      storage::analyseSession(store, id);
+      db.exec(QStringLiteral("UPDATE sessions SET started_at = ? WHERE id = ?"),
+              {QDateTime::currentDateTimeUtc()
+                   .addDays(lean > 10 ? -21 : -2)
+                   .toString(Qt::ISODateWithMs),
+               id});
+    }
+    const gui::PatientOverview o = gui::loadPatientOverview(store, QStringLiteral("P2"));
+    QCOMPARE(o.progress.size(), std::size_t{2});
+    gui::ProgressChart chart;
+    chart.resize(900, 400);
+    chart.show();
+    chart.setSessions(o.progress);
+    const auto* chooser = chart.findChild<QComboBox*>();
+    QCOMPARE(chooser->count(), 9);
+    chart.showTrunk();
+    QVERIFY(chart.trunkShown());
+    QCOMPARE(chart.motionName(), QStringLiteral("Trunk flexion (compensation)"));
+    QCOMPARE(chart.points(), 2);
+    const QStandardItemModel* t = chart.table();
+    QCOMPARE(t->rowCount(), 2);
+    for (int row = 0; row < 2; ++row)  // oldest first: the 16-degree session
+      QVERIFY2(std::abs(cell(t, row, 1) - trueLean[static_cast<std::size_t>(row)]) < 1.5,
+               qPrintable(t->item(row, 1)->text()));
+    QVERIFY(QTest::qWaitForWindowExposed(&chart));
+    test::saveScreenshot(test::grabFromScreen(&chart), QStringLiteral("progress_chart_trunk"));
+    // Back to an arm motion from the chooser, and patients without a trunk sensor.
+    chart.setAngle(0);
+    QVERIFY(!chart.trunkShown());
+    QCOMPARE(chart.table()->columnCount(), 3);
+    chart.setSessions(m_overview.progress);
+    QCOMPARE(chooser->count(), 8);
+    chart.showTrunk();
+    QVERIFY(!chart.trunkShown());
+  }
 };
 
 ARMTRACK_GUI_TEST_MAIN(TestProgressChart)

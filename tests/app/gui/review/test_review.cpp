@@ -21,8 +21,13 @@
 #include "app/gui/common/Forms.h"
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/gui/review/ReviewScreen.h"
+#include "app/gui/review/TrunkPanel.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/signin/SignInScreen.h"
+#include "core/io/Recording.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
+#include "core/storage/SessionAnalysis.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
@@ -249,6 +254,84 @@ class TestReview : public QObject {
   // signed in) said "no analysis yet (it may have been cut short or failed)". The review now
   // says why from the session's analysis state: pending, failed (with the stored reason), or cut
   // short. The states are set in the file, as another program would leave them.
+  // A session whose patient leaned with each reach (sternum IMU, Kinect with the shoulder),
+  // analysed with a 10-degree trunk limit: the Trunk block shows the session's four values and
+  // the repetition table each repetition's, with the compensated ones marked; an arm-only
+  // session says "not measured" and hides the trunk's columns (issue 26).
+  void showsTheTrunk() {
+    armtrack::TrajectoryOptions options;
+    options.exercise.angle = 0;  // shoulder flexion
+    options.exercise.fromDeg = 10;
+    options.exercise.toDeg = 110;
+    options.exercise.startSeconds = 4;
+    const auto trajectory = armtrack::makeTrajectory("exercise", options);
+    armtrack::SimulationParams sim = armtrack::defaultSimulation();
+    sim.duration = 20;
+    sim.seed = 831;
+    sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
+    sim.trunk.enabled = true;
+    sim.trunk.leanDeg = 18;
+    sim.trunkImu.enabled = true;
+    sim.kinect.shoulder = true;
+    const armtrack::Recording rec = armtrack::simulateRecording(*trajectory, sim);
+    double trueLean = 0;
+    for (const armtrack::ArmSample& a : rec.samples)
+      if (a.trueTrunk) trueLean = std::max(trueLean, std::abs((*a.trueTrunk)(0)) * 180 / M_PI);
+    const std::string csv = m_dir.filePath(QStringLiteral("lean.csv")).toStdString();
+    armtrack::writeRecording(csv, rec);
+    qint64 id = 0;
+    QString failure;
+    m_app->records().call(
+        m_app->window(),
+        [csv](armtrack::storage::ClinicalStore& s) {
+          const qint64 id = s.importRecording(csv, QStringLiteral("P001"), QString());
+          armtrack::storage::AnalysisOptions o;
+          o.trunkFlexionLimitDeg = 10.0;
+          armtrack::storage::analyseSession(s, id, o);
+          return id;
+        },
+        [&](qint64 done) { id = done; }, [&](const RecordsFailure& e) { failure = e.message; });
+    QTRY_VERIFY_WITH_TIMEOUT(id != 0 || !failure.isEmpty(), 60000);
+    QVERIFY2(failure.isEmpty(), qPrintable(failure));
+
+    ReviewScreen* r = open(id);
+    QVERIFY(r);
+    const TrunkPanel* trunk = r->trunkPanel();
+    // Largest trunk flexion: the true lean's to a degree and a half, in the locale's numbers.
+    const QString flexion = trunk->valueText(0);
+    QVERIFY2(flexion.endsWith(QChar(0x00b0)), qPrintable(flexion));
+    bool ok = false;
+    const double shown = QLocale().toDouble(flexion.chopped(1), &ok);
+    QVERIFY2(ok, qPrintable(flexion));
+    QVERIFY2(std::abs(shown - trueLean) < 1.5, qPrintable(flexion));
+    for (int i = 1; i < 4; ++i) QVERIFY(!trunk->valueText(i).contains(QStringLiteral("not")));
+    QVERIFY2(trunk->valueText(3).endsWith(QStringLiteral(" cm")), qPrintable(trunk->valueText(3)));
+    // 10-degree limit, every repetition leaning about 18 deg: all of them.
+    QCOMPARE(trunk->compensationText(), QStringLiteral("%1 of %1 (flexion over 10.0\u00b0)")
+                                            .arg(r->repetitionTable()->model()->rowCount()));
+    QTableView* table = r->repetitionTable();
+    const QAbstractItemModel* m = table->model();
+    QVERIFY(m->rowCount() >= 3);
+    for (int c = RepetitionTableModel::TrunkFlexion; c < RepetitionTableModel::ColumnCount; ++c)
+      QVERIFY(!table->isColumnHidden(c));
+    for (int row = 0; row < m->rowCount(); ++row) {
+      const double rep =
+          QLocale().toDouble(m->index(row, RepetitionTableModel::TrunkFlexion).data().toString());
+      QVERIFY2(std::abs(rep - trueLean) < 1.5, qPrintable(QString::number(rep)));
+      QCOMPARE(m->index(row, RepetitionTableModel::Compensation).data().toString(),
+               QStringLiteral("yes"));
+    }
+    test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk"));
+
+    r = open(m_sessions.back());
+    QVERIFY(r);
+    for (int i = 0; i < 4; ++i)
+      QCOMPARE(r->trunkPanel()->valueText(i), QStringLiteral("not measured"));
+    QCOMPARE(r->trunkPanel()->compensationText(), QString());
+    for (int c = RepetitionTableModel::TrunkFlexion; c < RepetitionTableModel::ColumnCount; ++c)
+      QVERIFY(r->repetitionTable()->isColumnHidden(c));
+  }
+
   void saysWhyASessionHasNoAnalysis() {
     const qint64 id = m_sessions.front();
     {
