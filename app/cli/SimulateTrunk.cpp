@@ -1,8 +1,10 @@
 #include "app/cli/SimulateTrunk.h"
 
-#include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
+
+#include "core/simulation/TrunkOptions.h"
 
 namespace armtrack::cli {
 
@@ -34,43 +36,33 @@ std::vector<OptionSpec> trunkOptionSpecs() {
 
 void applyTrunkOptions(const Args& a, SimulationParams& sim, double misalignmentDeg,
                        std::ostream& err) {
-  const auto inRange = [&](std::string_view name, double fallback, double lo, double hi) {
-    const double v = a.number(name, fallback);
+  using O = TrunkSimOptions;
+  const auto inRange = [&](std::string_view name, double lo, double hi) -> std::optional<double> {
+    if (!a.flag(name)) return std::nullopt;
+    const double v = a.number(name, 0.0);
     if (v < lo || v > hi)
       a.fail(std::string(name) + ": must be between " + std::to_string(static_cast<int>(lo)) +
              " and " + std::to_string(static_cast<int>(hi)) + ", got " + *a.value(name));
     return v;
   };
-  TrunkSimParams& trunk = sim.trunk;
-  trunk.enabled = a.flag("--trunk-lean");
-  trunk.leanDeg = inRange("--trunk-lean", trunk.leanDeg, 0.0, 45.0);
-  const double lateral = inRange("--trunk-lateral", trunk.lateralRatio, -2.0, 2.0);
-  const double rotation = inRange("--trunk-rotation", trunk.rotationRatio, -2.0, 2.0);
-  trunk.lateralRatio = std::abs(lateral);
-  trunk.lateralSign = lateral < 0.0 ? -1.0 : 1.0;
-  trunk.rotationRatio = std::abs(rotation);
-  trunk.rotationSign = rotation < 0.0 ? -1.0 : 1.0;
-  trunk.swayDeg = inRange("--trunk-sway", trunk.swayDeg, 0.0, 5.0);
-  trunk.swaySeed = sim.seed;
-  if (!trunk.enabled) {
-    for (std::string_view o : {"--trunk-lateral", "--trunk-rotation", "--trunk-sway"}) {
-      if (a.flag(o)) err << "warning: " << o << " only applies with --trunk-lean; ignored\n";
+  TrunkSimOptions o;
+  o.leanDeg = inRange("--trunk-lean", 0.0, O::kMaxLeanDeg);
+  o.lateralRatio = inRange("--trunk-lateral", -O::kMaxRatio, O::kMaxRatio);
+  o.rotationRatio = inRange("--trunk-rotation", -O::kMaxRatio, O::kMaxRatio);
+  o.swayDeg = inRange("--trunk-sway", 0.0, O::kMaxSwayDeg);
+  if (!o.leanDeg) {
+    for (std::string_view opt : {"--trunk-lateral", "--trunk-rotation", "--trunk-sway"}) {
+      if (a.flag(opt)) err << "warning: " << opt << " only applies with --trunk-lean; ignored\n";
     }
   }
-
-  ImuSimParams& imu = sim.trunkImu;
-  imu = sim.upperArm;
-  imu.enabled = a.flag("--trunk-imu");
-  imu.misalignment = Eigen::Matrix3d::Identity();
-  if (misalignmentDeg != 0.0)
-    imu.misalignment = randomMisalignment(misalignmentDeg * kDeg, 2 * sim.seed + 3);
-
+  o.trunkImu = a.flag("--trunk-imu");
   if (a.flag("--kinect-shoulder") && a.flag("--no-kinect-shoulder"))
     a.fail("--kinect-shoulder and --no-kinect-shoulder contradict each other; give one");
-  if (a.flag("--kinect-shoulder")) sim.kinect.shoulder = true;
-  if (a.flag("--no-kinect-shoulder")) sim.kinect.shoulder = false;
-  if ((a.flag("--kinect-shoulder") || a.flag("--no-kinect-shoulder")) && !sim.kinect.enabled)
+  if (a.flag("--kinect-shoulder")) o.kinectShoulder = true;
+  if (a.flag("--no-kinect-shoulder")) o.kinectShoulder = false;
+  if (o.kinectShoulder && !sim.kinect.enabled)
     err << "warning: the Kinect's shoulder only applies with a Kinect; ignored\n";
+  applyTrunkSimOptions(o, sim, misalignmentDeg * kDeg);
 }
 
 }  // namespace armtrack::cli

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/camera/CameraParams.h"
+#include "core/io/Recording.h"
 #include "core/sync/SensorPayload.h"
 
 namespace armtrack {
@@ -35,6 +36,16 @@ struct StreamInfo {
   /// The camera model of a Camera stream (intrinsics and pose in the shoulder frame), when the
   /// device knows it (a calibration file, a simulation). The estimator needs it for pixels.
   std::optional<CameraParams> camera;
+  /// The sternum sensor's mounting of a TrunkImu stream (the recording's "trunk" block), when the
+  /// device knows it (a simulation, a recording, a calibration). Without one the session assumes
+  /// defaultTrunkMount(side) and says so.
+  std::optional<TrunkMount> trunkMount = std::nullopt;
+  /// Optional groups the stream's samples fill, which the recording then gets columns for: an
+  /// Optical stream's shoulder (OpticalPositions::shoulder, shoulder_*), a Truth stream's trunk
+  /// angles (TruthAngles::trunk, true_trunk_*). Values of a group a stream does not declare are
+  /// estimated with but not recorded.
+  bool shoulder = false;
+  bool trueTrunk = false;
 };
 
 /// One timestamped sample in SI units.

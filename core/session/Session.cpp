@@ -142,6 +142,7 @@ QString Session::columnsOfStreams(RecordingColumns& columns, bool& imu) {
         break;
       case StreamRole::Optical:
         columns.elbow = columns.wrist = true;
+        columns.shoulder = columns.shoulder || s.info.shoulder;
         break;
       case StreamRole::Camera:
         columns.camWrist = columns.camElbow = true;
@@ -155,9 +156,21 @@ QString Session::columnsOfStreams(RecordingColumns& columns, bool& imu) {
         break;
       case StreamRole::Truth:
         columns.truth = true;
+        columns.trueTrunk = columns.trueTrunk || s.info.trueTrunk;
         break;
       case StreamRole::TrunkImu:
         columns.trunk = true;
+        // The sidecar's trunk block: the device's mounting (a simulation, a recording), else the
+        // one the session was given, else the sensor flat on the middle of the sternum.
+        if (s.info.trunkMount) m_params.meta.trunk = s.info.trunkMount;
+        if (!m_params.meta.trunk) {
+          m_params.meta.trunk = defaultTrunkMount(m_params.meta.side);
+          logEvent(m_devices[static_cast<std::size_t>(s.device)].label.toStdString() + " " +
+                   s.info.name +
+                   ": the sternum sensor's mounting is not known; assuming it flat on the middle "
+                   "of the sternum, 10 cm below the shoulder. The trunk angles are only as good "
+                   "as that guess: calibrate the sternum sensor from the upright start pose");
+        }
         break;
     }
   }
@@ -214,6 +227,7 @@ QString Session::start() {
   bool imu = false;
   RecordingColumns columns;
   if (QString why = columnsOfStreams(columns, imu); !why.isEmpty()) return why;
+  m_columns = columns;
   m_scale = m_devices.front().device->timeScale();
   for (const DeviceEntry& d : m_devices)
     if (d.device->timeScale() != m_scale)
@@ -235,6 +249,7 @@ QString Session::start() {
     p.gUp = e.gUp;
     p.camera = e.camera;
     p.side = e.side;
+    p.trunk = e.trunk;  // the sternum IMU's mounting: frame 0 then moves with the thorax
     m_params.estimator = p;
   }
   if (QString why = openRecording(columns); !why.isEmpty()) return why;

@@ -56,6 +56,9 @@ struct SessionParams {
   double refusalQuietSeconds = 0.5;
   /// s between summaries while refusals go on.
   double refusalSummarySeconds = 5.0;
+  /// s between messages that the trunk left its start pose with no trunk IMU to measure it (a
+  /// patient leaning on every reach); departures in between are counted in the next message.
+  double trunkMessageSeconds = 10.0;
 };
 
 /// One estimate, for the GUI and `live`. Every row with IMU data gets one once the estimator has
@@ -74,7 +77,8 @@ struct EstimateRow {
   bool headingFromStartPoseOnly = false;
   /// The newest optical measurements that arrived since the previous estimate (rows without IMU
   /// data get no estimate of their own), for a view to draw beside the estimate: Kinect
-  /// positions in the shoulder frame of the arm's side (m), webcam marker pixels.
+  /// positions in the shoulder frame of the arm's side (m; in the world frame when the session
+  /// has a trunk IMU or an optical shoulder, docs/trunk.md), webcam marker pixels.
   std::optional<Eigen::Vector3d> opticalElbow, opticalWrist;
   std::optional<Eigen::Vector2d> camElbow, camWrist;
   /// The trunk's flexion, lateral bending and axial rotation and their 1-sigma uncertainty
@@ -86,7 +90,8 @@ struct EstimateRow {
   /// The newest optical shoulder position (world frame, m) since the previous estimate.
   std::optional<Eigen::Vector3d> opticalShoulder;
   /// The trunk has moved from its start pose with no trunk IMU to measure it (an optical
-  /// shoulder saw it; the row's kStatusTrunkMoved): the shoulder angles include the lean.
+  /// shoulder saw it, TrunkMotionDetector; `estimate`'s kStatusTrunkMoved): the shoulder angles
+  /// include the lean. Never set in a session with a trunk IMU.
   bool trunkMoved = false;
 };
 
@@ -216,6 +221,7 @@ class Session : public QObject {
   SessionParams m_params;
   std::vector<DeviceEntry> m_devices;
   std::vector<Stream> m_streams;
+  RecordingColumns m_columns;  // the recording's, set by start()
   bool m_running = false;
   double m_startTime = 0.0;
   double m_scale = 1.0;  // device seconds per host second (replays faster than real time)

@@ -12,8 +12,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/estimation/TrunkMotionDetector.h"
 #include "core/session/EstimatorMessages.h"
 #include "core/session/Session.h"
+#include "core/session/TrunkMessages.h"
 #include "core/sync/ArmSampleAssembler.h"
 #include "core/sync/SensorPayload.h"
 #include "core/sync/TimeSync.h"
@@ -65,8 +67,15 @@ class Session::Worker {
         m_received(s.m_streams.size()),
         m_rejected(s.m_streams.size()),
         m_messages(blockStreams(s), s.m_params.refusalQuietSeconds,
-                   s.m_params.refusalSummarySeconds) {
+                   s.m_params.refusalSummarySeconds),
+        m_trunkMessages(s.m_params.trunkMessageSeconds) {
     if (s.m_params.estimate) m_filter = makeEstimator(s.m_params.estimator);
+    // Without a trunk IMU, an optical shoulder tells whether the trunk moved (as `estimate` does,
+    // core/estimation/RecordingEstimator.cpp).
+    const bool trunkImu = std::any_of(s.m_streams.begin(), s.m_streams.end(), [](const Stream& st) {
+      return st.info.role == StreamRole::TrunkImu;
+    });
+    if (!trunkImu && s.m_columns.elbow) m_trunkDetector.emplace();
     m_local.reserve(4096);
   }
 
@@ -89,6 +98,7 @@ class Session::Worker {
     m_sync.flush(Sink{this});
     if (auto done = m_assembler.flush()) processRow(std::move(*done), m_rowOldestArrival);
     m_messages.finish(m_notes);
+    m_trunkMessages.finish(m_notes);
     publish(true);
     {
       std::lock_guard lock(m_s.m_recMutex);
@@ -178,6 +188,16 @@ class Session::Worker {
     if (row.wrist) m_pendingOptical.opticalWrist = row.wrist;
     if (row.camElbow) m_pendingOptical.camElbow = row.camElbow;
     if (row.camWrist) m_pendingOptical.camWrist = row.camWrist;
+    if (row.shoulder) m_pendingOptical.opticalShoulder = row.shoulder;
+    bool trunkMoved = false;
+    if (m_trunkDetector) {
+      TrunkMotionInput in;
+      in.t = row.t;
+      in.shoulder = row.shoulder;
+      const TrunkMotionStatus st = m_trunkDetector->update(in);
+      trunkMoved = st.moving;
+      m_trunkMessages.update(st, row.t, m_notes);
+    }
     if (m_filter) {
       const UpdateResult r = m_filter->update(row);
       m_messages.update(m_filter->counters(), row.t, m_notes);
@@ -201,10 +221,19 @@ class Session::Worker {
         out.opticalWrist = std::exchange(m_pendingOptical.opticalWrist, std::nullopt);
         out.camElbow = std::exchange(m_pendingOptical.camElbow, std::nullopt);
         out.camWrist = std::exchange(m_pendingOptical.camWrist, std::nullopt);
+        out.opticalShoulder = std::exchange(m_pendingOptical.opticalShoulder, std::nullopt);
+        if (const std::optional<TrunkEstimate> trunk = m_filter->trunk();
+            trunk && trunk->measured) {
+          out.trunk = trunk->angles;
+          out.trunkStd = trunk->angleStd;
+        }
+        out.trueTrunk = row.trueTrunk;
+        out.trunkMoved = trunkMoved;
         m_fresh.push_back(std::move(out));
       }
     }
     if (m_s.m_writer) {
+      keepRecordedGroups(row);
       std::unique_lock lock(m_s.m_recMutex);
       if (m_s.m_recQueue.size() >= m_s.m_params.recorderCapacity) {
         ++m_recorderWaits;  // never drop a row: wait for the recorder
@@ -215,6 +244,23 @@ class Session::Worker {
       m_s.m_recQueue.push_back(std::move(row));
       lock.unlock();
       if (wake) m_s.m_recCv.notify_one();
+    }
+  }
+
+  /// Leaves out of a row what the recording has no columns for (a device that sent a shoulder or
+  /// true trunk angles it did not declare in its StreamInfo): the rest of the row is recorded,
+  /// and the user told once.
+  void keepRecordedGroups(ArmSample& row) {
+    const RecordingColumns& c = m_s.m_columns;
+    const bool shoulder = row.shoulder && !c.shoulder, trueTrunk = row.trueTrunk && !c.trueTrunk;
+    if (!shoulder && !trueTrunk) return;
+    if (shoulder) row.shoulder.reset();
+    if (trueTrunk) row.trueTrunk.reset();
+    if (!m_toldUndeclared) {
+      m_toldUndeclared = true;
+      m_notes.push_back(std::string("recording: a device sent ") +
+                        (shoulder ? "shoulder positions" : "true trunk angles") +
+                        " its stream does not declare; they are used but not recorded");
     }
   }
 
@@ -294,6 +340,10 @@ class Session::Worker {
   // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
   EstimatorMessages m_messages;
   std::vector<std::string> m_notes;  // messages made under no lock, told by publish()
+  // Without a trunk IMU: whether the trunk left its start pose (an optical shoulder's cue).
+  std::optional<TrunkMotionDetector> m_trunkDetector;
+  TrunkMessages m_trunkMessages;
+  bool m_toldUndeclared = false;
   // Optical measurements waiting for the next estimate (they often come in rows of their own).
   EstimateRow m_pendingOptical;
 };

@@ -1,10 +1,14 @@
 #include "devices/replay/ReplayDevice.h"
 
+#include <array>
+
 namespace armtrack::devices::replay {
 namespace {
 
 // The stream rates are measured over the recording's first seconds.
 constexpr double kRateWindowSeconds = 10.0;
+// StreamRole values, UpperArmImu to TrunkImu.
+constexpr std::size_t kRoles = static_cast<std::size_t>(StreamRole::TrunkImu) + 1;
 
 }  // namespace
 
@@ -23,28 +27,44 @@ std::vector<StreamInfo> ReplayDevice::describe(const std::filesystem::path& file
   Opened o = open(file);
   const RecordingColumns& c = o.reader->columns();
   // Rows of each stream within the window, and the span they cover.
-  std::array<std::uint64_t, 5> n{};
+  std::array<std::uint64_t, kRoles> n{};
   const double t0 = o.first.t;
   double t1 = t0;
   ArmSample s = o.first;
+  auto count = [&](StreamRole role, bool has) { n[static_cast<std::size_t>(role)] += has; };
   do {
     if (s.t - t0 > kRateWindowSeconds) break;
     t1 = s.t;
-    n[0] += s.upperArm.has_value();
-    n[1] += s.forearm.has_value();
-    n[2] += s.elbow || s.wrist;
-    n[3] += s.camWrist || s.camElbow;
-    n[4] += s.trueAngles.has_value();
+    count(StreamRole::UpperArmImu, s.upperArm.has_value());
+    count(StreamRole::ForearmImu, s.forearm.has_value());
+    count(StreamRole::TrunkImu, s.trunk.has_value());
+    count(StreamRole::Optical, s.elbow || s.wrist || s.shoulder);
+    count(StreamRole::Camera, s.camWrist || s.camElbow);
+    count(StreamRole::Truth, s.trueAngles.has_value());
   } while (o.reader->next(s));
   const double span = t1 - t0;
-  auto rate = [&](std::uint64_t k) { return span > 0.0 && k > 1 ? (k - 1) / span : 0.0; };
+  auto rate = [&](StreamRole role) {
+    const std::uint64_t k = n[static_cast<std::size_t>(role)];
+    return span > 0.0 && k > 1 ? (k - 1) / span : 0.0;
+  };
   std::vector<StreamInfo> out;
-  if (c.upperArm) out.push_back({"upper", StreamRole::UpperArmImu, rate(n[0]), 0.0, {}});
-  if (c.forearm) out.push_back({"forearm", StreamRole::ForearmImu, rate(n[1]), 0.0, {}});
-  if (c.elbow || c.wrist) out.push_back({"optical", StreamRole::Optical, rate(n[2]), 0.0, {}});
+  auto stream = [&](const char* name, StreamRole role) -> StreamInfo& {
+    StreamInfo& info = out.emplace_back();
+    info.name = name;
+    info.role = role;
+    info.nominalRateHz = rate(role);
+    return info;
+  };
+  if (c.upperArm) stream("upper", StreamRole::UpperArmImu);
+  if (c.forearm) stream("forearm", StreamRole::ForearmImu);
+  // The sternum sensor with the recording's mounting (the reader's assumed one, with its
+  // warning, when the sidecar has none).
+  if (c.trunk) stream("trunk", StreamRole::TrunkImu).trunkMount = o.reader->meta().trunk;
+  if (c.elbow || c.wrist || c.shoulder)
+    stream("optical", StreamRole::Optical).shoulder = c.shoulder;
   if (c.camWrist || c.camElbow)
-    out.push_back({"camera", StreamRole::Camera, rate(n[3]), 0.0, o.reader->meta().camera});
-  if (c.truth) out.push_back({"truth", StreamRole::Truth, rate(n[4]), 0.0, {}});
+    stream("camera", StreamRole::Camera).camera = o.reader->meta().camera;
+  if (c.truth) stream("truth", StreamRole::Truth).trueTrunk = c.trueTrunk;
   return out;
 }
 
@@ -54,7 +74,7 @@ ReplayDevice::ReplayDevice(const std::filesystem::path& file, double speed, bool
 ReplayDevice::ReplayDevice(const std::filesystem::path& file, double speed, bool loop,
                            std::vector<StreamInfo> streams)
     : Device(std::move(streams)), m_file(file), m_speed(speed), m_loop(loop) {
-  m_streamOf.assign(5, -1);
+  m_streamOf.assign(kRoles, -1);
   for (std::size_t i = 0; i < this->streams().size(); ++i)
     m_streamOf[static_cast<std::size_t>(this->streams()[i].role)] = static_cast<int>(i);
 }
@@ -132,10 +152,12 @@ void ReplayDevice::tick() {
     const ArmSample& s = m_pending;
     if (s.upperArm) add(StreamRole::UpperArmImu, s.t, *s.upperArm);
     if (s.forearm) add(StreamRole::ForearmImu, s.t, *s.forearm);
-    if (s.elbow || s.wrist) add(StreamRole::Optical, s.t, OpticalPositions{s.elbow, s.wrist});
+    if (s.trunk) add(StreamRole::TrunkImu, s.t, *s.trunk);
+    if (s.elbow || s.wrist || s.shoulder)
+      add(StreamRole::Optical, s.t, OpticalPositions{s.elbow, s.wrist, s.shoulder});
     if (s.camWrist || s.camElbow)
       add(StreamRole::Camera, s.t, MarkerPixels{s.camWrist, s.camElbow});
-    if (s.trueAngles) add(StreamRole::Truth, s.t, TruthAngles{*s.trueAngles});
+    if (s.trueAngles) add(StreamRole::Truth, s.t, TruthAngles{*s.trueAngles, s.trueTrunk});
     m_lastT = s.t;
     ++m_passRows;
     try {

@@ -30,6 +30,9 @@ std::vector<StreamInfo> VirtualArmDevice::describe(const VirtualArmSource& sourc
     s.nominalRateHz = v.rateHz;
     s.role = v.role;
     if (v.role == StreamRole::Camera) s.camera = source.meta().camera;
+    if (v.role == StreamRole::TrunkImu) s.trunkMount = source.meta().trunk;
+    s.shoulder = v.shoulder;
+    s.trueTrunk = v.trueTrunk;
     out.push_back(std::move(s));
   }
   return out;

@@ -7,18 +7,21 @@
 #include <stdexcept>
 
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/simulation/TrunkOptions.h"
 #include "devices/api/Options.h"
 #include "devices/virtual_arm/VirtualArmDevice.h"
 
 namespace armtrack::devices::virtualarm {
 
 QString VirtualArmPlugin::description() const {
-  return QStringLiteral("simulated IMUs, Kinect and webcam in real time, with fault injection");
+  return QStringLiteral(
+      "simulated IMUs, Kinect and webcam in real time, a leaning trunk, with fault injection");
 }
 
 QString VirtualArmPlugin::optionsHelp() const {
   return QStringLiteral(
-      "sensors=upper+forearm+kinect  any of upper, forearm, kinect, webcam joined by '+'\n"
+      "sensors=upper+forearm+kinect  any of upper, forearm, trunk (sternum IMU), kinect, webcam\n"
+      "                              joined by '+'\n"
       "trajectory=multi-joint        sinusoid, multi-joint, shoulder-wheel, calibration,\n"
       "                              reaching, sensor-check or exercise\n"
       "exercise=elbow_flexion        trajectory=exercise: the clinical angle repeated\n"
@@ -27,6 +30,15 @@ QString VirtualArmPlugin::optionsHelp() const {
       "exercise-pause=1              s at rest between repetitions\n"
       "exercise-start=1              s at rest before the first\n"
       "exercise-compensation=0       deg another joint moves with each repetition\n"
+      "trunk-lean=0                  deg the trunk leans forward at the fullest reach (shoulder\n"
+      "                              flexion 90 deg; from 20 deg), turning about the hip;\n"
+      "                              0 = a still trunk (0-45)\n"
+      "trunk-lateral=0.5             sideways lean per degree of lean (-2-2; negative: left)\n"
+      "trunk-rotation=0.5            axial turn per degree of lean (-2-2; negative: the left\n"
+      "                              shoulder comes forward)\n"
+      "trunk-sway=1                  deg of the leaning trunk's own slow sway (0-5)\n"
+      "kinect-shoulder=              on or off: the Kinect also reports the shoulder (default:\n"
+      "                              when the trunk leans)\n"
       "seed=1                        noise and trajectory seed\n"
       "imu-rate=1000                 Hz, both IMUs\n"
       "kinect-rate=30                Hz\n"
@@ -93,6 +105,20 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   motion.pauseSeconds = o.number(QStringLiteral("exercise-pause"), 1.0, 0.0, 600.0);
   motion.startSeconds = o.number(QStringLiteral("exercise-start"), 1.0, 0.0, 600.0);
   motion.compensationDeg = o.number(QStringLiteral("exercise-compensation"), 0.0, -90.0, 90.0);
+  TrunkSimOptions trunk;
+  const double lean =
+      o.number(QStringLiteral("trunk-lean"), 0.0, 0.0, TrunkSimOptions::kMaxLeanDeg);
+  if (lean > 0.0) trunk.leanDeg = lean;
+  if (o.has(QStringLiteral("trunk-lateral")))
+    trunk.lateralRatio = o.number(QStringLiteral("trunk-lateral"), 0.5, -TrunkSimOptions::kMaxRatio,
+                                  TrunkSimOptions::kMaxRatio);
+  if (o.has(QStringLiteral("trunk-rotation")))
+    trunk.rotationRatio = o.number(QStringLiteral("trunk-rotation"), 0.5,
+                                   -TrunkSimOptions::kMaxRatio, TrunkSimOptions::kMaxRatio);
+  if (o.has(QStringLiteral("trunk-sway")))
+    trunk.swayDeg = o.number(QStringLiteral("trunk-sway"), 1.0, 0.0, TrunkSimOptions::kMaxSwayDeg);
+  if (o.has(QStringLiteral("kinect-shoulder")))
+    trunk.kinectShoulder = o.flag(QStringLiteral("kinect-shoulder"), false);
   QStringList problems;
   if (!o.error().isEmpty()) problems << o.error();
   if (battery == u"off") {
@@ -137,10 +163,11 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.sim.forearm.enabled = sensors.contains(QStringLiteral("forearm"));
   p.sim.kinect.enabled = sensors.contains(QStringLiteral("kinect"));
   p.sim.webcam.enabled = sensors.contains(QStringLiteral("webcam"));
+  trunk.trunkImu = sensors.contains(QStringLiteral("trunk"));
   for (const QString& s : sensors)
-    if (s != u"upper" && s != u"forearm" && s != u"kinect" && s != u"webcam")
+    if (s != u"upper" && s != u"forearm" && s != u"trunk" && s != u"kinect" && s != u"webcam")
       problems << QStringLiteral(
-                      "unknown sensor '%1' in sensors= (use upper, forearm, kinect, "
+                      "unknown sensor '%1' in sensors= (use upper, forearm, trunk, kinect, "
                       "webcam joined by '+')")
                       .arg(s);
   for (ImuSimParams* imu : {&p.sim.upperArm, &p.sim.forearm}) {
@@ -148,6 +175,13 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
     if (!noise) imu->gyroNoiseStd = imu->accelNoiseStd = 0.0;
   }
   if (!noise) p.sim.kinect.noiseStd = p.sim.webcam.noiseStdPx = 0.0;
+  // The trunk as `armtrack-cli simulate` maps its --trunk-* flags (the sternum IMU takes the
+  // upper-arm IMU's rate and noise).
+  try {
+    applyTrunkSimOptions(trunk, p.sim);
+  } catch (const std::invalid_argument& e) {
+    problems << QString::fromStdString(e.what());
+  }
   p.sim.duration = duration > 0.0 ? duration : std::numeric_limits<double>::infinity();
   p.trajectory = trajectory.toStdString();
   try {

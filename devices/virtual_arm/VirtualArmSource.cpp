@@ -169,18 +169,26 @@ VirtualArmSource::VirtualArmSource(const VirtualArmParams& params)
   if (s.upperArm.enabled)
     m_streams.push_back({"upper", StreamRole::UpperArmImu, s.upperArm.rateHz});
   if (s.forearm.enabled) m_streams.push_back({"forearm", StreamRole::ForearmImu, s.forearm.rateHz});
-  if (s.kinect.enabled) m_streams.push_back({"kinect", StreamRole::Optical, s.kinect.rateHz});
+  if (s.trunkImu.enabled) m_streams.push_back({"trunk", StreamRole::TrunkImu, s.trunkImu.rateHz});
+  if (s.kinect.enabled)
+    m_streams.push_back({"kinect", StreamRole::Optical, s.kinect.rateHz,
+                         s.kinect.shoulder.value_or(s.trunk.enabled)});
   if (s.webcam.enabled) m_streams.push_back({"webcam", StreamRole::Camera, s.webcam.rateHz});
-  if (m_p.truth && (s.upperArm.enabled || s.forearm.enabled))
+  // The simulator gives the truth on every IMU row, the trunk's with a moving trunk or a sternum
+  // IMU (SensorSimulator.h).
+  if (m_p.truth && (s.upperArm.enabled || s.forearm.enabled || s.trunkImu.enabled))
     m_streams.push_back({"truth", StreamRole::Truth,
-                         std::max(s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
-                                  s.forearm.enabled ? s.forearm.rateHz : 0.0)});
+                         std::max({s.upperArm.enabled ? s.upperArm.rateHz : 0.0,
+                                   s.forearm.enabled ? s.forearm.rateHz : 0.0,
+                                   s.trunkImu.enabled ? s.trunkImu.rateHz : 0.0}),
+                         false, s.trunk.enabled || s.trunkImu.enabled});
   if (m_streams.empty()) throw std::invalid_argument("the virtual arm needs at least one sensor");
   // Every fault names a stream this arm has (and saturation one of its IMUs).
   auto checkStream = [&](const std::string& stream, const std::string& what, bool imuOnly) {
     std::string names;
     for (const VirtualStream& v : m_streams) {
-      const bool imu = v.role == StreamRole::UpperArmImu || v.role == StreamRole::ForearmImu;
+      const bool imu = v.role == StreamRole::UpperArmImu || v.role == StreamRole::ForearmImu ||
+                       v.role == StreamRole::TrunkImu;
       if (v.role == StreamRole::Truth && what != "dropout") continue;
       if (imuOnly && !imu) continue;
       if (v.name == stream) return;
@@ -291,11 +299,12 @@ void VirtualArmSource::emitRow(const ArmSample& row, std::vector<VirtualSample>&
   const std::optional<ImuReading>& forearm = m_p.swapImus ? row.upperArm : row.forearm;
   if (upper) deliver(StreamRole::UpperArmImu, imuT, *upper);
   if (forearm) deliver(StreamRole::ForearmImu, imuT, *forearm);
-  if (row.elbow || row.wrist)
-    deliver(StreamRole::Optical, t, OpticalPositions{row.elbow, row.wrist});
+  if (row.trunk) deliver(StreamRole::TrunkImu, imuT, *row.trunk);
+  if (row.elbow || row.wrist || row.shoulder)
+    deliver(StreamRole::Optical, t, OpticalPositions{row.elbow, row.wrist, row.shoulder});
   if (row.camWrist || row.camElbow)
     deliver(StreamRole::Camera, t, MarkerPixels{row.camWrist, row.camElbow});
-  if (row.trueAngles) deliver(StreamRole::Truth, imuT, TruthAngles{*row.trueAngles});
+  if (row.trueAngles) deliver(StreamRole::Truth, imuT, TruthAngles{*row.trueAngles, row.trueTrunk});
 }
 
 void VirtualArmSource::injectValues(std::size_t i, double t, SensorPayload& payload,
@@ -312,6 +321,7 @@ void VirtualArmSource::injectValues(std::size_t i, double t, SensorPayload& payl
           } else if constexpr (std::is_same_v<P, OpticalPositions>) {
             if (p.elbow) p.elbow->setConstant(v);
             if (p.wrist) p.wrist->setConstant(v);
+            if (p.shoulder) p.shoulder->setConstant(v);
           } else if constexpr (std::is_same_v<P, MarkerPixels>) {
             if (p.wrist) p.wrist->setConstant(v);
             if (p.elbow) p.elbow->setConstant(v);

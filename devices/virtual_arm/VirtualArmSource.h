@@ -27,7 +27,7 @@ struct Window {
 /// Something happens to one stream for a while: it goes silent (a marker occluded, a sensor's
 /// radio fading), saturates or reads all zeros.
 struct StreamWindow {
-  std::string stream;  ///< "upper", "forearm", "kinect" or "webcam"
+  std::string stream;  ///< "upper", "forearm", "trunk", "kinect" or "webcam"
   Window window;
 };
 using Dropout = StreamWindow;
@@ -35,7 +35,7 @@ using Dropout = StreamWindow;
 /// One sample of a stream carries absurd but finite values (a packet that passed its checksum
 /// with garbage in it; NGIMU's float maximum 3.4e38).
 struct Spike {
-  std::string stream;  ///< "upper", "forearm", "kinect" or "webcam"
+  std::string stream;  ///< "upper", "forearm", "trunk", "kinect" or "webcam"
   double at = 0.0;     ///< s: the first sample at or after this simulated time
   double value = 1e6;  ///< put in every value of the sample (rad/s, m/s^2, m or px)
 };
@@ -101,7 +101,9 @@ struct ImuResolution {
 ImuResolution parseResolution(const std::string& text);
 
 struct VirtualArmParams {
-  SimulationParams sim;  ///< sensors, rates, noise; duration may be +infinity
+  /// Sensors, rates, noise, the trunk's motion and the sternum IMU (a "trunk" stream); duration
+  /// may be +infinity.
+  SimulationParams sim;
   std::string trajectory = "multi-joint";
   TrajectoryOptions trajectoryOptions;
   bool truth = true;  ///< a Truth stream beside the IMUs
@@ -119,9 +121,11 @@ struct VirtualArmParams {
 
 /// One stream of the virtual arm.
 struct VirtualStream {
-  std::string name;  ///< "upper", "forearm", "kinect", "webcam", "truth"
+  std::string name;  ///< "upper", "forearm", "trunk", "kinect", "webcam", "truth"
   StreamRole role = StreamRole::UpperArmImu;
   double rateHz = 0.0;
+  bool shoulder = false;   ///< kinect: its samples carry the shoulder (OpticalPositions)
+  bool trueTrunk = false;  ///< truth: its samples carry the trunk's true angles (TruthAngles)
 };
 
 struct VirtualSample {
