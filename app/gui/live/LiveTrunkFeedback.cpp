@@ -15,7 +15,8 @@ constexpr double kShownSeconds = 1.0;  // angles and the note vanish when no lon
 constexpr double kRadToDeg = 180.0 / std::numbers::pi;
 
 QString degrees(double deg) {
-  return QLocale().toString(deg, 'f', 0) + QChar(0x00b0);
+  const double whole = std::round(deg);
+  return QLocale().toString(whole == 0 ? 0.0 : whole, 'f', 0) + QChar(0x00b0);  // never "-0"
 }
 }  // namespace
 

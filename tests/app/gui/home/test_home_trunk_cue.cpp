@@ -4,7 +4,8 @@
 // trunk limit and a 25 deg lean in the second and fourth repetitions, "Keep your back against
 // the chair" shows (big, with the hint sound) during those leans only, and the result stored with
 // the session counts two repetitions leaning too far; leaning 10 deg, or sitting still, never
-// shows it and counts none. Screenshots at 1024x600, English and German.
+// shows it and counts none. End to end, the virtual arm leaning 25 deg at each reach of a
+// shoulder exercise is cued and counted. Screenshots at 1024x600, English and German.
 #include <QLabel>
 #include <QPushButton>
 #include <QSignalSpy>
@@ -102,16 +103,22 @@ class TestHomeTrunkCue : public QObject {
   QTemporaryDir m_dir;
   std::unique_ptr<AppController> m_app;
 
-  /// Runs one exercise to its end with the patient; returns its result.
-  HomeExerciseResult exercise(std::optional<double> limit, Patient& patient,
-                              const QString& shot = {}) {
+  /// Runs one exercise to its end with the patient (nullptr: the virtual arm's own session,
+  /// with devices and the exercise given); returns its result.
+  HomeExerciseResult exercise(
+      std::optional<double> limit, Patient* patient, const QString& shot = {},
+      const QString& devices = QStringLiteral("virtual-arm:sensors=upper+forearm"),
+      std::optional<HomeExercise> given = std::nullopt) {
     app::gui::LiveSessionConfig config;
-    config.devices = QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm")};
+    config.devices = QStringList{devices};
     FeedbackSound sound;
-    ExerciseScreen screen(m_app->plugins(), m_app->records(), elbowExercise(limit), 1, 1,
-                          QString::fromLatin1(DemoAccounts::kLivePatient), config, false, &sound);
-    patient.screen = &screen;
-    screen.setEstimateSource(std::ref(patient));
+    ExerciseScreen screen(m_app->plugins(), m_app->records(), given.value_or(elbowExercise(limit)),
+                          1, 1, QString::fromLatin1(DemoAccounts::kLivePatient), config, !patient,
+                          &sound);
+    if (patient) {
+      patient->screen = &screen;
+      screen.setEstimateSource(std::ref(*patient));
+    }
     screen.resize(1024, 600);
     screen.show();
     [&] { QVERIFY(QTest::qWaitForWindowExposed(&screen)); }();
@@ -130,7 +137,7 @@ class TestHomeTrunkCue : public QObject {
       [&] { QVERIFY(cue && cue->isVisible()); }();
       armtrack::gui::test::saveScreenshot(&screen, shot);
     }
-    [&] { QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), 60000); }();
+    [&] { QTRY_VERIFY_WITH_TIMEOUT(result.has_value(), 90000); }();
     const int hints = static_cast<int>(sound.asked(FeedbackSound::Cue::Hint));
     const int cues = static_cast<int>(screen.feedbackShown().count(QCoreApplication::translate(
         "armtrack::gui::home::ExerciseScreen", "Keep your back against the chair")));
@@ -158,7 +165,7 @@ class TestHomeTrunkCue : public QObject {
     Patient patient;
     patient.leanDeg = 25;
     patient.leaning = {1, 3};
-    const HomeExerciseResult r = exercise(15.0, patient, QStringLiteral("home-trunk-cue"));
+    const HomeExerciseResult r = exercise(15.0, &patient, QStringLiteral("home-trunk-cue"));
     QCOMPARE(patient.repsCued, patient.leaning);
     QCOMPARE(m_cues, 2);
     QCOMPARE(r.repetitions, kReps);
@@ -180,7 +187,7 @@ class TestHomeTrunkCue : public QObject {
       Patient patient;
       patient.leanDeg = lean;
       patient.leaning = {0, 1, 2, 3};
-      const HomeExerciseResult r = exercise(15.0, patient);
+      const HomeExerciseResult r = exercise(15.0, &patient);
       QVERIFY(patient.repsCued.empty());
       QCOMPARE(m_cues, 0);
       QCOMPARE(r.repetitions, kReps);
@@ -192,7 +199,7 @@ class TestHomeTrunkCue : public QObject {
     Patient leaning;
     leaning.leanDeg = 30;
     leaning.leaning = {0, 1, 2, 3};
-    HomeExerciseResult r = exercise(std::nullopt, leaning);
+    HomeExerciseResult r = exercise(std::nullopt, &leaning);
     QVERIFY(leaning.repsCued.empty());
     QCOMPARE(r.trunkCompensation, 0);
     QVERIFY(!r.trunkLimitDeg);
@@ -201,9 +208,31 @@ class TestHomeTrunkCue : public QObject {
     unmeasured.leanDeg = 30;
     unmeasured.leaning = {0, 1, 2, 3};
     unmeasured.trunkSensor = false;
-    r = exercise(15.0, unmeasured);
+    r = exercise(15.0, &unmeasured);
     QVERIFY(unmeasured.repsCued.empty());
     QCOMPARE(r.trunkCompensation, 0);
+  }
+
+  // End to end: the virtual arm raises the arm forward (shoulder flexion, a Kinect and a sternum
+  // sensor) three times, leaning 25 deg at each reach: cued, and counted in the result.
+  void aVirtualPatientLeaningPastTheLimitIsCued() {
+    HomeExercise e = elbowExercise(15.0);
+    e.protocol.name = QStringLiteral("Shoulder flexion");
+    e.protocol.angleKey = QStringLiteral("shoulder_flexion");
+    e.item.protocolName = e.protocol.name;
+    e.angle = 0;
+    e.repetitions = 3;
+    e.targetMinDeg = 20;
+    e.targetMaxDeg = 110;
+    const HomeExerciseResult r = exercise(
+        15.0, nullptr, QStringLiteral("home-trunk-cue-virtual-arm"),
+        QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+trunk,trajectory=exercise,"
+                       "exercise=shoulder_flexion,exercise-range=20:120,trunk-lean=25"),
+        e);
+    QVERIFY(m_cues >= 1);
+    QVERIFY2(r.repetitions >= 3, qPrintable(QString::number(r.repetitions)));
+    QVERIFY2(r.trunkCompensation >= 1 && r.trunkCompensation <= r.repetitions,
+             qPrintable(QString::number(r.trunkCompensation)));
   }
 
   void theCueInGerman() {
@@ -211,7 +240,7 @@ class TestHomeTrunkCue : public QObject {
     Patient patient;
     patient.leanDeg = 25;
     patient.leaning = {1};
-    const HomeExerciseResult r = exercise(15.0, patient, QStringLiteral("home-trunk-cue-de"));
+    const HomeExerciseResult r = exercise(15.0, &patient, QStringLiteral("home-trunk-cue-de"));
     QCOMPARE(r.trunkCompensation, 1);
     i18n::resetLanguage();
   }

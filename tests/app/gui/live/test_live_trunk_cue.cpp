@@ -5,11 +5,16 @@
 // appears during those leans only, and two repetitions are counted with compensation, also in
 // the line the session's notes keep; leaning 10 deg, or not at all, never shows it; without a
 // limit there is neither cue nor count, but the trunk's angles are shown, and the trunk-moved
-// flag of an estimate shows its note. Screenshots at 1024x600, English and German.
+// flag of an estimate shows its note. End to end, a virtual-arm session with a sternum sensor
+// leaning 25 deg at each reach is cued and counted, one leaning 6 deg never. Screenshots at
+// 1024x600, English and German.
+#include <QElapsedTimer>
 #include <QLabel>
+#include <QSignalSpy>
 #include <QTest>
 #include <cmath>
 #include <numbers>
+#include <tuple>
 
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/i18n/Language.h"
@@ -21,6 +26,7 @@
 using namespace armtrack;
 using namespace armtrack::app;
 using namespace armtrack::app::gui;
+using State = LiveSessionScreen::State;
 
 namespace {
 
@@ -120,7 +126,11 @@ class TestLiveTrunkCue : public QObject {
 
  private slots:
   // English as the application starts it (its plural forms come from armtrack_en).
-  void initTestCase() { QCOMPARE(i18n::setLanguage(QStringLiteral("en")), QStringLiteral("en")); }
+  void initTestCase() {
+    QCOMPARE(i18n::setLanguage(QStringLiteral("en")), QStringLiteral("en"));
+    m_registry.load({QStringLiteral(ARMTRACK_PLUGIN_DIR)});
+    QVERIFY2(m_registry.plugin(QStringLiteral("virtual-arm")), "virtual-arm plugin not built");
+  }
 
   void leaningPastTheLimitCuesAndCounts() {
     LiveSessionScreen screen(m_registry, config(15.0));
@@ -216,6 +226,51 @@ class TestLiveTrunkCue : public QObject {
     for (int i = 0; i < 150; ++i) later.push_back(row(2.01 + i / 100.0, std::nullopt));
     screen.showEstimates(later);
     QVERIFY(!screen.trunk().anglesLabel()->isVisible());
+  }
+
+  // End to end: the virtual arm raises the arm (shoulder flexion 20 to 120 deg) wearing a
+  // sternum sensor, its trunk leaning at each reach; the session estimates the trunk and the
+  // screen drains it. Leaning 25 deg past a 15 deg limit cues and counts; leaning 6 deg never.
+  void aVirtualPatientLeaningPastTheLimitIsCued() {
+    const auto session = [&](double leanDeg, double seconds) {
+      gui::LiveSessionConfig c = config(15.0);
+      c.targetDeg = std::make_pair(20.0, 120.0);
+      c.devices = QStringList{
+          QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+trunk,trajectory=exercise,"
+                         "exercise=shoulder_flexion,exercise-range=20:120,trunk-lean=%1")
+              .arg(leanDeg)};
+      auto screen = std::make_unique<LiveSessionScreen>(m_registry, c);
+      showAt1024(*screen);
+      QSignalSpy started(screen.get(), &LiveSessionScreen::sessionStarted);
+      screen->start();
+      [&] { QVERIFY(started.wait(15000)); }();
+      bool cueSeen = false, anglesSeen = false;
+      QElapsedTimer wall;
+      wall.start();
+      while (screen->sessionTime() < seconds && wall.elapsed() < 120000) {
+        QTest::qWait(25);
+        cueSeen = cueSeen || screen->trunk().cueLabel()->isVisible();
+        anglesSeen = anglesSeen || screen->trunk().anglesLabel()->isVisible();
+        if (cueSeen && leanDeg > 15 && screen->trunk().compensated() > 0) break;
+      }
+      if (cueSeen && leanDeg > 15)
+        test::saveScreenshot(test::grabFromScreen(screen.get()),
+                             QStringLiteral("live-trunk-cue-virtual-arm"));
+      screen->stop();
+      [&] { QTRY_COMPARE_WITH_TIMEOUT(screen->state(), State::Stopped, 15000); }();
+      return std::make_tuple(cueSeen, anglesSeen, screen->trunk().compensated(),
+                             screen->repetitionCounter().count(), screen->sessionTime());
+    };
+    const auto [cued, angles, compensated, reps, t] = session(25.0, 40.0);
+    QVERIFY2(angles, "no trunk angles reached the screen");
+    QVERIFY2(cued, qPrintable(QStringLiteral("no cue in %1 s").arg(t)));
+    QVERIFY2(compensated >= 1 && compensated <= reps,
+             qPrintable(QStringLiteral("%1 of %2").arg(compensated).arg(reps)));
+    const auto [cuedLess, anglesLess, compensatedLess, repsLess, tLess] = session(6.0, 25.0);
+    QVERIFY(anglesLess);
+    QVERIFY2(repsLess >= 2, qPrintable(QString::number(repsLess)));
+    QVERIFY2(!cuedLess, qPrintable(QStringLiteral("cued in %1 s").arg(tLess)));
+    QCOMPARE(compensatedLess, std::size_t(0));
   }
 
   void theCueInGerman() {
