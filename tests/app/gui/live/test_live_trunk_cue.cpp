@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QSignalSpy>
+#include <QTemporaryDir>
 #include <QTest>
 #include <cmath>
 #include <numbers>
@@ -20,6 +21,8 @@
 #include "app/i18n/Language.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/storage/ClinicalStore.h"
+#include "core/storage/Database.h"
 #include "tests/support/GuiTestMain.h"
 #include "ui/AnglePlotPanel.h"
 
@@ -232,14 +235,27 @@ class TestLiveTrunkCue : public QObject {
   // sternum sensor, its trunk leaning at each reach; the session estimates the trunk and the
   // screen drains it. Leaning 25 deg past a 15 deg limit cues and counts; leaning 6 deg never.
   void aVirtualPatientLeaningPastTheLimitIsCued() {
+    // The leaning session is recorded into the records: its notes keep the count.
+    QTemporaryDir dir;
+    const auto url = storage::DatabaseUrl::parse(dir.filePath(QStringLiteral("clinic.db")));
+    storage::Database db(url, {.create = true, .migrate = false});
+    storage::ClinicalStore store(db);
+    store.initialise(QStringLiteral("boss"), "a long enough password");
+    store.signIn(QStringLiteral("boss"), "a long enough password");
+    storage::Patient p;
+    p.code = QStringLiteral("P01");
+    p.name = QStringLiteral("Ada Example");
+    store.addPatient(p);
+    std::shared_ptr<DatabaseRecordingTarget> target;
     const auto session = [&](double leanDeg, double seconds) {
       gui::LiveSessionConfig c = config(15.0);
+      c.recordFromStart = target != nullptr;
       c.targetDeg = std::make_pair(20.0, 120.0);
       c.devices = QStringList{
           QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+trunk,trajectory=exercise,"
                          "exercise=shoulder_flexion,exercise-range=20:120,trunk-lean=%1")
               .arg(leanDeg)};
-      auto screen = std::make_unique<LiveSessionScreen>(m_registry, c);
+      auto screen = std::make_unique<LiveSessionScreen>(m_registry, c, target);
       showAt1024(*screen);
       QSignalSpy started(screen.get(), &LiveSessionScreen::sessionStarted);
       screen->start();
@@ -256,16 +272,26 @@ class TestLiveTrunkCue : public QObject {
       if (cueSeen && leanDeg > 15)
         test::saveScreenshot(test::grabFromScreen(screen.get()),
                              QStringLiteral("live-trunk-cue-virtual-arm"));
+      [&] { QTRY_VERIFY_WITH_TIMEOUT(!target || screen->state() == State::Recording, 10000); }();
       screen->stop();
       [&] { QTRY_COMPARE_WITH_TIMEOUT(screen->state(), State::Stopped, 15000); }();
       return std::make_tuple(cueSeen, anglesSeen, screen->trunk().compensated(),
                              screen->repetitionCounter().count(), screen->sessionTime());
     };
+    target = std::make_shared<DatabaseRecordingTarget>(store, url, QStringLiteral("P01"));
     const auto [cued, angles, compensated, reps, t] = session(25.0, 40.0);
     QVERIFY2(angles, "no trunk angles reached the screen");
     QVERIFY2(cued, qPrintable(QStringLiteral("no cue in %1 s").arg(t)));
     QVERIFY2(compensated >= 1 && compensated <= reps,
              qPrintable(QStringLiteral("%1 of %2").arg(compensated).arg(reps)));
+    QVERIFY(target->sessionId() > 0);
+    const QString notes = store.session(target->sessionId()).notes;
+    QVERIFY2(notes.contains(
+                 QStringLiteral("Trunk limit 15\u00b0: %1 of %2 repetitions with compensation")
+                     .arg(compensated)
+                     .arg(reps)),
+             qPrintable(notes));
+    target.reset();
     const auto [cuedLess, anglesLess, compensatedLess, repsLess, tLess] = session(6.0, 25.0);
     QVERIFY(anglesLess);
     QVERIFY2(repsLess >= 2, qPrintable(QString::number(repsLess)));
