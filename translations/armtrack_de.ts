@@ -453,6 +453,48 @@
     </message>
 </context>
 <context>
+    <name>armtrack::app::gui::LiveTrunkFeedback</name>
+    <message>
+        <source>Trunk: flexion %1, lateral bending %2, axial rotation %3</source>
+        <translation>Rumpf: Flexion %1, Seitneigung %2, Rotation %3</translation>
+    </message>
+    <message>
+        <source>The trunk moved: shoulder angles include the lean.</source>
+        <translation>Der Rumpf hat sich bewegt: Die Schulterwinkel enthalten die Neigung.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) with compensation</source>
+        <translation>
+            <numerusform>%n Wiederholung mit Kompensation</numerusform>
+            <numerusform>%n Wiederholungen mit Kompensation</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(trunk limit %1)</source>
+        <translation>(Rumpfgrenze %1)</translation>
+    </message>
+    <message>
+        <source>Keep your back against the chair</source>
+        <translation>Lehnen Sie den Rücken an den Stuhl</translation>
+    </message>
+    <message>
+        <source>Trunk cue</source>
+        <translation>Hinweis zum Rumpf</translation>
+    </message>
+    <message>
+        <source>Trunk</source>
+        <translation>Rumpf</translation>
+    </message>
+    <message>
+        <source>Repetitions with compensation</source>
+        <translation>Wiederholungen mit Kompensation</translation>
+    </message>
+    <message>
+        <source>Trunk limit %1: %2 of %3 repetitions with compensation</source>
+        <translation>Rumpfgrenze %1: %2 von %3 Wiederholungen mit Kompensation</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::app::gui::RecordingTarget</name>
     <message>
         <source>a recording with this name exists; choose another name</source>
@@ -3057,6 +3099,18 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
         <translation>Das Ziel endet unter seinem Anfang: „bis“ muss mindestens „von“ sein.</translation>
     </message>
+    <message>
+        <source>Tr&amp;unk limit:</source>
+        <translation>R&amp;umpfgrenze:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (%1 deg)</source>
+        <translation>die des Protokolls (%1°)</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (off)</source>
+        <translation>die des Protokolls (aus)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::FormDialog</name>
@@ -3095,6 +3149,14 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Saving...</source>
         <translation>Wird gespeichert...</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Rumpfgrenze</translation>
+    </message>
+    <message>
+        <source>Degrees of trunk flexion: leaning further, the patient is told &quot;Keep your back against the chair&quot; and the repetition counts as made with compensation. Needs a trunk sensor.</source>
+        <translation>Grad Rumpfflexion: Neigt sich der Patient weiter, heißt es „Lehnen Sie den Rücken an den Stuhl“, und die Wiederholung zählt als mit Kompensation ausgeführt. Braucht einen Rumpfsensor.</translation>
     </message>
 </context>
 <context>
@@ -3222,6 +3284,18 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>%1 removed from the programme.</source>
         <translation>%1 aus dem Programm entfernt.</translation>
     </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Rumpfgrenze</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::ProtocolDialog</name>
@@ -3301,6 +3375,14 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
         <translation>Das Ziel endet unter seinem Anfang: „bis“ muss mindestens „von“ sein.</translation>
     </message>
+    <message>
+        <source>Off</source>
+        <translation>Aus</translation>
+    </message>
+    <message>
+        <source>Tr&amp;unk limit:</source>
+        <translation>R&amp;umpfgrenze:</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::ProtocolsPage</name>
@@ -3363,6 +3445,18 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Protocol %1 saved.</source>
         <translation>Protokoll %1 gespeichert.</translation>
+    </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Rumpfgrenze</translation>
     </message>
 </context>
 <context>
@@ -3552,6 +3646,25 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>Keep your upper arm still; move only your elbow and forearm.</source>
         <translation>Halten Sie den Oberarm ruhig; bewegen Sie nur Ellbogen und Unterarm.</translation>
+    </message>
+    <message>
+        <source>Trunk cue</source>
+        <translation>Hinweis zum Rumpf</translation>
+    </message>
+    <message>
+        <source>Repetitions leaning too far</source>
+        <translation>Wiederholungen zu weit geneigt</translation>
+    </message>
+    <message>
+        <source>Keep your back against the chair</source>
+        <translation>Lehnen Sie den Rücken an den Stuhl</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n Wiederholung zu weit geneigt</numerusform>
+            <numerusform>%n Wiederholungen zu weit geneigt</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3871,6 +3984,13 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>It could not be saved: %1. Press Save to try again.</source>
         <translation>Es konnte nicht gespeichert werden: %1. Drücken Sie Speichern, um es noch einmal zu versuchen.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n Wiederholung zu weit geneigt</numerusform>
+            <numerusform>%n Wiederholungen zu weit geneigt</numerusform>
+        </translation>
     </message>
 </context>
 <context>

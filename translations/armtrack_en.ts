@@ -2,6 +2,16 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>armtrack::app::gui::LiveTrunkFeedback</name>
+    <message numerus="yes">
+        <source>%n repetition(s) with compensation</source>
+        <translation>
+            <numerusform>%n repetition with compensation</numerusform>
+            <numerusform>%n repetitions with compensation</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>armtrack::app::gui::SensorCalibrationPage</name>
     <message numerus="yes">
         <source>Hold still: %n s</source>
@@ -122,6 +132,13 @@
             <numerusform>Then press Start: %n sets of %1 repetitions.</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n repetition leaning too far</numerusform>
+            <numerusform>%n repetitions leaning too far</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::HomeStartScreen</name>
@@ -130,6 +147,16 @@
         <translation>
             <numerusform>%1: %n set of %2 repetitions, %3 s rest</numerusform>
             <numerusform>%1: %n sets of %2 repetitions, %3 s rest</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::home::HomeSummaryScreen</name>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n repetition leaning too far</numerusform>
+            <numerusform>%n repetitions leaning too far</numerusform>
         </translation>
     </message>
 </context>

@@ -453,6 +453,48 @@
     </message>
 </context>
 <context>
+    <name>armtrack::app::gui::LiveTrunkFeedback</name>
+    <message>
+        <source>Trunk: flexion %1, lateral bending %2, axial rotation %3</source>
+        <translation>Tronco: flexión %1, inclinación lateral %2, rotación axial %3</translation>
+    </message>
+    <message>
+        <source>The trunk moved: shoulder angles include the lean.</source>
+        <translation>El tronco se ha movido: los ángulos del hombro incluyen la inclinación.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) with compensation</source>
+        <translation>
+            <numerusform>%n repetición con compensación</numerusform>
+            <numerusform>%n repeticiones con compensación</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>(trunk limit %1)</source>
+        <translation>(límite del tronco %1)</translation>
+    </message>
+    <message>
+        <source>Keep your back against the chair</source>
+        <translation>Mantenga la espalda contra la silla</translation>
+    </message>
+    <message>
+        <source>Trunk cue</source>
+        <translation>Aviso del tronco</translation>
+    </message>
+    <message>
+        <source>Trunk</source>
+        <translation>Tronco</translation>
+    </message>
+    <message>
+        <source>Repetitions with compensation</source>
+        <translation>Repeticiones con compensación</translation>
+    </message>
+    <message>
+        <source>Trunk limit %1: %2 of %3 repetitions with compensation</source>
+        <translation>Límite del tronco %1: %2 de %3 repeticiones con compensación</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::app::gui::RecordingTarget</name>
     <message>
         <source>a recording with this name exists; choose another name</source>
@@ -3057,6 +3099,18 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
         <translation>El objetivo termina por debajo de donde empieza: «hasta» debe ser al menos «desde».</translation>
     </message>
+    <message>
+        <source>Tr&amp;unk limit:</source>
+        <translation>Límite del tron&amp;co:</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (%1 deg)</source>
+        <translation>la del protocolo (%1°)</translation>
+    </message>
+    <message>
+        <source>the protocol&apos;s (off)</source>
+        <translation>la del protocolo (desactivado)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::FormDialog</name>
@@ -3095,6 +3149,14 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Saving...</source>
         <translation>Guardando...</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Límite del tronco</translation>
+    </message>
+    <message>
+        <source>Degrees of trunk flexion: leaning further, the patient is told &quot;Keep your back against the chair&quot; and the repetition counts as made with compensation. Needs a trunk sensor.</source>
+        <translation>Grados de flexión del tronco: si el paciente se inclina más, se le dice «Mantenga la espalda contra la silla» y la repetición cuenta como hecha con compensación. Requiere un sensor de tronco.</translation>
     </message>
 </context>
 <context>
@@ -3222,6 +3284,18 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>%1 removed from the programme.</source>
         <translation>%1 quitado del programa.</translation>
     </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>desactivado</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Límite del tronco</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::ProtocolDialog</name>
@@ -3301,6 +3375,14 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <source>The target ends below where it starts: make &quot;to&quot; at least &quot;from&quot;.</source>
         <translation>El objetivo termina por debajo de donde empieza: «hasta» debe ser al menos «desde».</translation>
     </message>
+    <message>
+        <source>Off</source>
+        <translation>Desactivado</translation>
+    </message>
+    <message>
+        <source>Tr&amp;unk limit:</source>
+        <translation>Límite del tron&amp;co:</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::admin::ProtocolsPage</name>
@@ -3363,6 +3445,18 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Protocol %1 saved.</source>
         <translation>Protocolo %1 guardado.</translation>
+    </message>
+    <message>
+        <source>%1 deg</source>
+        <translation>%1°</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>desactivado</translation>
+    </message>
+    <message>
+        <source>Trunk limit</source>
+        <translation>Límite del tronco</translation>
     </message>
 </context>
 <context>
@@ -3552,6 +3646,25 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>Keep your upper arm still; move only your elbow and forearm.</source>
         <translation>Mantenga quieto el brazo; mueva solo el codo y el antebrazo.</translation>
+    </message>
+    <message>
+        <source>Trunk cue</source>
+        <translation>Aviso del tronco</translation>
+    </message>
+    <message>
+        <source>Repetitions leaning too far</source>
+        <translation>Repeticiones inclinándose demasiado</translation>
+    </message>
+    <message>
+        <source>Keep your back against the chair</source>
+        <translation>Mantenga la espalda contra la silla</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n repetición inclinándose demasiado</numerusform>
+            <numerusform>%n repeticiones inclinándose demasiado</numerusform>
+        </translation>
     </message>
 </context>
 <context>
@@ -3871,6 +3984,13 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>It could not be saved: %1. Press Save to try again.</source>
         <translation>No se pudo guardar: %1. Pulse Guardar para intentarlo de nuevo.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n repetition(s) leaning too far</source>
+        <translation>
+            <numerusform>%n repetición inclinándose demasiado</numerusform>
+            <numerusform>%n repeticiones inclinándose demasiado</numerusform>
+        </translation>
     </message>
 </context>
 <context>

@@ -66,15 +66,21 @@ constexpr std::string_view kPatientHelp = R"(Usage: armtrack-cli patient <add|li
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
-constexpr std::string_view kProtocolHelp = R"(Usage: armtrack-cli protocol <add|list> [options]
+constexpr std::string_view kProtocolHelp =
+    R"(Usage: armtrack-cli protocol <add|edit|list|assign> [options]
 
   protocol add --name NAME --angle KEY --target-min DEG --target-max DEG --reps N
-               [--side left|right|either]
+               [--side left|right|either] [--trunk-limit DEG|off]
+  protocol edit NAME [--angle KEY] [--target-min DEG] [--target-max DEG] [--reps N]
+               [--side left|right|either] [--trunk-limit DEG|off]
+                             change what is given, keep the rest
   protocol list [--json]
   protocol assign NAME --patient CODE [--per-week N] [--notes TEXT]
                              put the protocol in the patient's home programme
 
-KEY is a clinical angle such as shoulder_flexion or elbow_flexion.
+KEY is a clinical angle such as shoulder_flexion or elbow_flexion. The trunk limit (degrees of
+trunk flexion, 1-90; default off): when the patient leans further, the live screen and the home
+window say "Keep your back against the chair" and count the repetitions made so.
 --db URL and --user NAME as for every database command (password: ARMTRACK_PASSWORD).
 )";
 
@@ -290,7 +296,8 @@ int protocolAdd(const std::vector<std::string>& rest, std::ostream& out, std::os
                        {"--target-min", true},
                        {"--target-max", true},
                        {"--reps", true},
-                       {"--side", true}}));
+                       {"--side", true},
+                       {"--trunk-limit", true}}));
   if (a.help()) return out << kProtocolHelp, 0;
   storage::Protocol p;
   p.name = qs(a.required("--name"));
@@ -301,9 +308,34 @@ int protocolAdd(const std::vector<std::string>& rest, std::ostream& out, std::os
     a.fail("--target-min and --target-max are required (deg)");
   p.repetitions = static_cast<int>(a.integer("--reps", 0));
   p.side = qs(a.value("--side").value_or("either"));
+  p.trunkLimitDeg = trunkLimitArg(a, "off").value_or(std::nullopt);
   ClinicalContext c(a, {}, true);
   c.store().addProtocol(p);
   err << "protocol add: " << ss(p.name) << "\n";
+  return 0;
+}
+
+int protocolEdit(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
+  const Args a("protocol edit", rest,
+               withDb({{"--angle", true},
+                       {"--target-min", true},
+                       {"--target-max", true},
+                       {"--reps", true},
+                       {"--side", true},
+                       {"--trunk-limit", true}}));
+  if (a.help()) return out << kProtocolHelp, 0;
+  const std::string name = a.single("protocol name");
+  const auto trunk = trunkLimitArg(a, "off");
+  ClinicalContext c(a, {}, true);
+  storage::Protocol p = c.store().protocol(qs(name));
+  if (const auto v = a.value("--angle")) p.angleKey = qs(*v);
+  p.targetMinDeg = a.number("--target-min", p.targetMinDeg);
+  p.targetMaxDeg = a.number("--target-max", p.targetMaxDeg);
+  if (a.value("--reps")) p.repetitions = static_cast<int>(a.integer("--reps", 0));
+  if (const auto v = a.value("--side")) p.side = qs(*v);
+  if (trunk) p.trunkLimitDeg = *trunk;
+  c.store().updateProtocol(p);
+  err << "protocol edit: " << ss(p.name) << "\n";
   return 0;
 }
 
@@ -313,15 +345,20 @@ int protocolList(const std::vector<std::string>& rest, std::ostream& out, std::o
   ClinicalContext c(a, {}, true);
   QJsonArray list;
   for (const storage::Protocol& p : c.store().listProtocols()) {
-    if (!a.flag("--json"))
+    if (!a.flag("--json")) {
       out << line(p.name) << "\t" << ss(p.angleKey) << "\t" << p.targetMinDeg << "\t"
-          << p.targetMaxDeg << "\t" << p.repetitions << "\t" << ss(p.side) << "\n";
-    list.append(QJsonObject{{"name", p.name},
-                            {"angle", p.angleKey},
-                            {"target_min_deg", p.targetMinDeg},
-                            {"target_max_deg", p.targetMaxDeg},
-                            {"repetitions", p.repetitions},
-                            {"side", p.side}});
+          << p.targetMaxDeg << "\t" << p.repetitions << "\t" << ss(p.side);
+      if (p.trunkLimitDeg) out << "\ttrunk limit " << *p.trunkLimitDeg << " deg";
+      out << "\n";
+    }
+    list.append(QJsonObject{
+        {"name", p.name},
+        {"angle", p.angleKey},
+        {"target_min_deg", p.targetMinDeg},
+        {"target_max_deg", p.targetMaxDeg},
+        {"repetitions", p.repetitions},
+        {"side", p.side},
+        {"trunk_limit_deg", p.trunkLimitDeg ? QJsonValue(*p.trunkLimitDeg) : QJsonValue()}});
   }
   if (a.flag("--json")) printJson(out, QJsonDocument(list));
   return 0;
@@ -348,8 +385,10 @@ int patientCommand(const std::vector<std::string>& args, std::ostream& out, std:
 }
 
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  static const std::vector<std::pair<std::string, SubcommandFn>> table{
-      {"add", protocolAdd}, {"list", protocolList}, {"assign", protocolAssign}};
+  static const std::vector<std::pair<std::string, SubcommandFn>> table{{"add", protocolAdd},
+                                                                       {"edit", protocolEdit},
+                                                                       {"list", protocolList},
+                                                                       {"assign", protocolAssign}};
   return dispatchSubcommand("protocol", kProtocolHelp, args, out, err, table);
 }
 

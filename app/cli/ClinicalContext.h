@@ -123,6 +123,10 @@ inline int dispatchSubcommand(const char* command, std::string_view help,
 /// protocol's repetitions and target where the programme has none of its own.
 void listProgramme(storage::ClinicalStore& store, const QString& patientCode, bool json,
                    std::ostream& out);
+/// --trunk-limit: absent (nothing to change), a number of degrees, or emptyWord ("off" for a
+/// protocol, "protocol" for an exercise: its protocol's), which gives an empty limit. The range
+/// is the store's to check. ProgrammeCommands.cpp.
+std::optional<std::optional<double>> trunkLimitArg(const Args& a, std::string_view emptyWord);
 
 /// Writes doc indented, for --json.
 inline void printJson(std::ostream& out, const QJsonDocument& doc) {

@@ -16,11 +16,15 @@ constexpr std::string_view kProgrammeHelp =
 
   programme add --patient CODE --protocol NAME [--sets N] [--reps N] [--target MIN:MAX]
                 [--rest S] [--position N] [--per-week N] [--notes TEXT]
+                [--trunk-limit DEG|protocol]
                              put an exercise in the patient's home programme (or replace the
                              one of that protocol): N sets of N repetitions (default: 1 set of
                              the protocol's repetitions), the target range of the protocol's
                              angle in degrees (default: the protocol's), S seconds of rest
-                             between sets (default 60), at place N (default: after the last)
+                             between sets (default 60), at place N (default: after the last),
+                             the trunk limit in degrees of trunk flexion, 1-90: leaning further,
+                             the patient is told to keep the back against the chair (default:
+                             the protocol's)
   programme list --patient CODE [--json]
                              the exercises in their order
   programme remove --patient CODE --protocol NAME
@@ -40,6 +44,10 @@ std::pair<double, double> parseTarget(const Args& a, const std::string& text) {
   return {*lo, *hi};
 }
 
+QJsonValue optionalNumber(const std::optional<double>& v) {
+  return v ? QJsonValue(*v) : QJsonValue();
+}
+
 int programmeAdd(const std::vector<std::string>& rest, std::ostream& out, std::ostream& err) {
   const Args a("programme add", rest,
                withDb({{"--patient", true},
@@ -50,7 +58,8 @@ int programmeAdd(const std::vector<std::string>& rest, std::ostream& out, std::o
                        {"--rest", true},
                        {"--position", true},
                        {"--per-week", true},
-                       {"--notes", true}}));
+                       {"--notes", true},
+                       {"--trunk-limit", true}}));
   if (a.help()) return out << kProgrammeHelp, 0;
   if (!a.positionals().empty()) a.fail("unexpected argument '" + a.positionals()[0] + "'");
   const std::string patient = a.required("--patient");
@@ -75,6 +84,11 @@ int programmeAdd(const std::vector<std::string>& rest, std::ostream& out, std::o
   if (a.value("--position") && item.position == 0) a.fail("--position: places start at 1");
   item.sessionsPerWeek = whole("--per-week", 0);
   item.notes = qs(a.value("--notes").value_or(""));
+  if (a.value("--trunk-limit") == "off")
+    a.fail(
+        "--trunk-limit: an exercise takes its protocol's limit or its own; to turn it off, "
+        "turn it off in the protocol (protocol edit NAME --trunk-limit off)");
+  item.trunkLimitDeg = trunkLimitArg(a, "protocol").value_or(std::nullopt);
   ClinicalContext c(a, {}, true);
   c.store().setProgrammeExercise(qs(patient), item);
   err << "programme add: " << ss(item.protocolName) << " for " << patient << "\n";
@@ -103,6 +117,17 @@ int programmeRemove(const std::vector<std::string>& rest, std::ostream& out, std
 
 }  // namespace
 
+std::optional<std::optional<double>> trunkLimitArg(const Args& a, std::string_view emptyWord) {
+  const std::optional<std::string> text = a.value("--trunk-limit");
+  if (!text) return std::nullopt;
+  if (*text == emptyWord) return std::optional<double>();
+  const std::optional<double> deg = parseDouble(*text);
+  if (!deg)
+    a.fail("--trunk-limit: expected degrees of trunk flexion (1-90, e.g. 15) or '" +
+           std::string(emptyWord) + "', got '" + *text + "'");
+  return deg;
+}
+
 void listProgramme(storage::ClinicalStore& store, const QString& patientCode, bool json,
                    std::ostream& out) {
   QJsonArray list;
@@ -110,11 +135,14 @@ void listProgramme(storage::ClinicalStore& store, const QString& patientCode, bo
     const storage::Protocol p = store.protocol(item.protocolName);
     const int reps = storage::effectiveRepetitions(item, p);
     const auto [lo, hi] = storage::effectiveTarget(item, p);
+    const std::optional<double> trunk = storage::effectiveTrunkLimit(item, p);
     if (!json) {
       std::ostringstream line;
       line << item.position << "\t" << ss(item.protocolName) << "\t" << ss(p.angleKey) << "\t"
            << item.sets << " x " << reps << "\t" << lo << " to " << hi << " deg\trest "
-           << item.restS << " s\t" << item.sessionsPerWeek << "/week\t" << ss(item.notes);
+           << item.restS << " s\t" << item.sessionsPerWeek << "/week\t";
+      if (trunk) line << "trunk limit " << *trunk << " deg\t";
+      line << ss(item.notes);
       out << line.str() << "\n";
     }
     QJsonObject o{{"position", item.position},
@@ -128,7 +156,9 @@ void listProgramme(storage::ClinicalStore& store, const QString& patientCode, bo
                   {"target_from_protocol", !item.targetMinDeg.has_value()},
                   {"rest_s", item.restS},
                   {"sessions_per_week", item.sessionsPerWeek},
-                  {"notes", item.notes}};
+                  {"notes", item.notes},
+                  {"trunk_limit_deg", optionalNumber(trunk)},
+                  {"trunk_limit_from_protocol", !item.trunkLimitDeg.has_value()}};
     list.append(o);
   }
   if (json) printJson(out, QJsonDocument(list));

@@ -42,13 +42,14 @@ Protocol protocolFrom(const QSqlQuery& q) {
   p.targetMaxDeg = q.value(4).toDouble();
   p.repetitions = q.value(5).toInt();
   p.side = q.value(6).toString();
+  if (!q.value(7).isNull()) p.trunkLimitDeg = q.value(7).toDouble();
   return p;
 }
 
 const QString kPatientColumns =
     "id, code, name, birth_date, sex, affected_side, diagnosis, segment_lengths_json, notes";
 const QString kProtocolColumns =
-    "id, name, angle_key, target_min_deg, target_max_deg, repetitions, side";
+    "id, name, angle_key, target_min_deg, target_max_deg, repetitions, side, trunk_limit_deg";
 
 QVariant nullable(const QString& s) {
   return s.isEmpty() ? QVariant() : QVariant(s);
@@ -87,6 +88,7 @@ void checkProtocol(const Protocol& p, bool newName) {
   if (p.repetitions < 0) throw StorageError(Kind::Usage, "repetitions must be >= 0");
   if (!QStringList{"left", "right", "either"}.contains(p.side))
     throw StorageError(Kind::Usage, "the protocol's side must be left, right or either");
+  checkTrunkLimit(p.trunkLimitDeg);
 }
 
 }  // namespace
@@ -193,9 +195,11 @@ qint64 ClinicalStore::addProtocol(const Protocol& p) {
   m_db.transaction([&] {
     id = m_db.insert(
         "INSERT INTO protocols (name, name_key, angle_key, target_min_deg, target_max_deg, "
-        "repetitions, side) VALUES (?, ?, ?, ?, ?, ?, ?)",
-        {p.name, key, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side});
-    audit("create", "protocol", p.name);
+        "repetitions, side, trunk_limit_deg) VALUES (?, ?, ?, ?, ?, ?, ?, ?)",
+        {p.name, key, p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side,
+         p.trunkLimitDeg ? QVariant(*p.trunkLimitDeg) : QVariant()});
+    audit("create", "protocol", p.name,
+          p.trunkLimitDeg ? trunkLimitText(p.trunkLimitDeg) : QString());
   });
   return id;
 }
@@ -225,13 +229,16 @@ void ClinicalStore::updateProtocol(const Protocol& p) {
   require(isStaff(), "change protocols");
   checkProtocol(p, false);
   m_db.transaction([&] {
+    // The trunk limit's change is named in the audit log: it changes what patients are told.
+    const std::optional<double> before = protocol(p.name).trunkLimitDeg;
     if (m_db.exec("UPDATE protocols SET angle_key = ?, target_min_deg = ?, target_max_deg = ?, "
-                  "repetitions = ?, side = ? WHERE name_key = ?",
+                  "repetitions = ?, side = ?, trunk_limit_deg = ? WHERE name_key = ?",
                   {p.angleKey, p.targetMinDeg, p.targetMaxDeg, p.repetitions, p.side,
-                   nameKey(p.name)})
+                   p.trunkLimitDeg ? QVariant(*p.trunkLimitDeg) : QVariant(), nameKey(p.name)})
             .numRowsAffected() == 0)
       throw StorageError(Kind::NotFound, text("unknown protocol '" + p.name + "'"));
-    audit("update", "protocol", p.name);
+    audit("update", "protocol", p.name,
+          before != p.trunkLimitDeg ? trunkLimitText(p.trunkLimitDeg) : QString());
   });
 }
 

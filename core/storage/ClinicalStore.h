@@ -19,6 +19,11 @@
 
 namespace armtrack::storage {
 
+/// Throws StorageError (Usage) unless the trunk limit is empty or 1-90 deg, saying so.
+void checkTrunkLimit(const std::optional<double>& limitDeg);
+/// The trunk limit as the audit log names it: "trunk limit 15 deg", "trunk limit off".
+QString trunkLimitText(const std::optional<double>& limitDeg);
+
 /// Every read and write of the records goes through here, as the signed-in user. Access rules:
 /// administrators may do everything; therapists everything but managing accounts, backups,
 /// migrations and reading the audit log; a home account sees and records only its own patient

@@ -38,6 +38,7 @@ void checkExercise(const ProgrammeItem& item) {
     throw StorageError(Kind::Usage, "the target range needs finite min < max within +-360 deg");
   if (!(std::isfinite(item.restS) && item.restS >= 0 && item.restS <= kMaxRestS))
     throw StorageError(Kind::Usage, "the rest between sets must be 0-3600 s");
+  checkTrunkLimit(item.trunkLimitDeg);
 }
 
 QVariant optional(const std::optional<int>& v) {
@@ -49,6 +50,19 @@ QVariant optional(const std::optional<double>& v) {
 }
 
 }  // namespace
+
+void checkTrunkLimit(const std::optional<double>& limitDeg) {
+  if (limitDeg && !(std::isfinite(*limitDeg) && *limitDeg >= kMinTrunkLimitDeg &&
+                    *limitDeg <= kMaxTrunkLimitDeg))
+    throw StorageError(Kind::Usage,
+                       "the trunk limit must be 1-90 deg of trunk flexion (e.g. 15), or off; got " +
+                           QString::number(*limitDeg).toStdString());
+}
+
+QString trunkLimitText(const std::optional<double>& limitDeg) {
+  return limitDeg ? QStringLiteral("trunk limit %1 deg").arg(*limitDeg)
+                  : QStringLiteral("trunk limit off");
+}
 
 void ClinicalStore::assignProtocol(const QString& patientCode, const QString& protocolName,
                                    int sessionsPerWeek, const QString& notes) {
@@ -84,13 +98,15 @@ void ClinicalStore::setProgrammeExercise(const QString& patientCode, const Progr
     }
     m_db.exec(
         "INSERT INTO programmes (patient_id, protocol_id, sessions_per_week, notes, created_at, "
-        "position, sets, repetitions, target_min_deg, target_max_deg, rest_s) "
-        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
+        "position, sets, repetitions, target_min_deg, target_max_deg, rest_s, trunk_limit_deg) "
+        "VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?)",
         {patientId, protocolId, item.sessionsPerWeek, item.notes, utcNow(), position, item.sets,
          optional(item.repetitions), optional(item.targetMinDeg), optional(item.targetMaxDeg),
-         item.restS});
+         item.restS, optional(item.trunkLimitDeg)});
     renumberProgramme(patientId);
-    audit("update", "programme", patientCode, "set " + item.protocolName);
+    audit("update", "programme", patientCode,
+          "set " + item.protocolName +
+              (item.trunkLimitDeg ? ", " + trunkLimitText(item.trunkLimitDeg) : QString()));
   });
 }
 
@@ -125,7 +141,8 @@ std::vector<ProgrammeItem> ClinicalStore::programme(const QString& patientCode) 
   std::vector<ProgrammeItem> items;
   QSqlQuery q = m_db.exec(
       "SELECT pr.name, g.sessions_per_week, g.notes, g.position, g.sets, g.repetitions, "
-      "g.target_min_deg, g.target_max_deg, g.rest_s FROM programmes g JOIN protocols pr ON "
+      "g.target_min_deg, g.target_max_deg, g.rest_s, g.trunk_limit_deg FROM programmes g JOIN "
+      "protocols pr ON "
       "pr.id = g.protocol_id WHERE g.patient_id = ? ORDER BY g.position, g.id",
       {patientId});
   while (q.next()) {
@@ -141,6 +158,7 @@ std::vector<ProgrammeItem> ClinicalStore::programme(const QString& patientCode) 
       item.targetMaxDeg = q.value(7).toDouble();
     }
     item.restS = q.value(8).toDouble();
+    if (!q.value(9).isNull()) item.trunkLimitDeg = q.value(9).toDouble();
     items.push_back(item);
   }
   return items;

@@ -42,6 +42,10 @@ struct Protocol {
   double targetMaxDeg = 0;  ///< deg
   int repetitions = 0;
   QString side = "either";  ///< "left", "right" or "either"
+  /// The trunk limit (deg of trunk flexion, forward or back, 1-90): past it the live screen and
+  /// the home window cue "Keep your back against the chair" and count the repetitions made with
+  /// compensation (core/metrics/TrunkLimitCue.h). Empty: off (the default).
+  std::optional<double> trunkLimitDeg;
 };
 
 /// One exercise of a patient's home programme: a protocol (the movement and its angle), how
@@ -56,6 +60,8 @@ struct ProgrammeItem {
   std::optional<double> targetMinDeg;  ///< deg; both or neither; empty: the protocol's range
   std::optional<double> targetMaxDeg;  ///< deg
   double restS = 60;                   ///< s of rest between sets, 0-3600
+  std::optional<double>
+      trunkLimitDeg;  ///< deg, 1-90 (Protocol::trunkLimitDeg); empty: the protocol's
 };
 
 /// The repetitions per set an exercise asks for: its own, else its protocol's.
@@ -68,6 +74,16 @@ inline std::pair<double, double> effectiveTarget(const ProgrammeItem& item,
   if (item.targetMinDeg && item.targetMaxDeg) return {*item.targetMinDeg, *item.targetMaxDeg};
   return {protocol.targetMinDeg, protocol.targetMaxDeg};
 }
+
+/// The trunk limit (deg) of an exercise: its own, else its protocol's; empty: off.
+inline std::optional<double> effectiveTrunkLimit(const ProgrammeItem& item,
+                                                 const Protocol& protocol) {
+  return item.trunkLimitDeg ? item.trunkLimitDeg : protocol.trunkLimitDeg;
+}
+
+/// The trunk limits a protocol or an exercise may set (deg).
+inline constexpr double kMinTrunkLimitDeg = 1.0;
+inline constexpr double kMaxTrunkLimitDeg = 90.0;
 
 /// Where a session was recorded: "clinic" (by a therapist) or "home" (by a home account).
 inline constexpr const char* kSettingClinic = "clinic";

@@ -231,6 +231,14 @@ const std::vector<MigrationStep>& migrationSteps() {
        {"ALTER TABLE users ADD COLUMN disabled INTEGER NOT NULL DEFAULT 0 "
         "CHECK (disabled IN (0, 1))"},
        {}},
+      // NULL: no limit (a protocol), the protocol's limit (a programme's exercise).
+      {8,
+       "a trunk limit per protocol and per home exercise (deg of trunk flexion)",
+       {"ALTER TABLE protocols ADD COLUMN trunk_limit_deg DOUBLE PRECISION "
+        "CHECK (trunk_limit_deg >= 1 AND trunk_limit_deg <= 90)",
+        "ALTER TABLE programmes ADD COLUMN trunk_limit_deg DOUBLE PRECISION "
+        "CHECK (trunk_limit_deg >= 1 AND trunk_limit_deg <= 90)"},
+       {}},
   };
   return steps;
 }

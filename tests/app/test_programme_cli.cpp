@@ -9,8 +9,8 @@
 #include "tests/app/StorageCliFixture.h"
 
 using armtrack::test::CliFixture;
-using armtrack::test::Result;
 using armtrack::test::Engine;
+using armtrack::test::Result;
 
 namespace {
 
@@ -152,6 +152,85 @@ TEST_P(ProgrammeCli, AHomeAccountListsItsOwnAndChangesNothing) {
                 .code,
             1);
   EXPECT_EQ(list("P01").size(), 1);
+}
+
+// The trunk limit (issue 26): a protocol's set, changed and turned off with `protocol add|edit
+// --trunk-limit`, an exercise's own or its protocol's with `programme add --trunk-limit`, each
+// listed; values out of range or not numbers refused saying what to give.
+TEST_P(ProgrammeCli, TrunkLimitsOfProtocolsAndExercises) {
+  const auto protocols = [&] {
+    const Result r = run({"protocol", "list", "--json"});
+    EXPECT_EQ(r.code, 0) << r.err;
+    QJsonObject byName;
+    for (const QJsonValue& v : QJsonDocument::fromJson(QByteArray::fromStdString(r.out)).array())
+      byName[v.toObject()["name"].toString()] = v;
+    return byName;
+  };
+  EXPECT_TRUE(protocols()["Elbow flexion"].toObject()["trunk_limit_deg"].isNull());
+  Result r =
+      run({"protocol", "add", "--name", "Reach", "--angle", "shoulder_flexion", "--target-min", "0",
+           "--target-max", "100", "--reps", "8", "--trunk-limit", "15"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(protocols()["Reach"].toObject()["trunk_limit_deg"].toDouble(), 15);
+  r = run({"protocol", "list"});
+  EXPECT_NE(r.out.find("Reach\tshoulder_flexion\t0\t100\t8\teither\ttrunk limit 15 deg"),
+            std::string::npos)
+      << r.out;
+  // An edit changes what it is given and keeps the rest.
+  r = run({"protocol", "edit", "Elbow flexion", "--trunk-limit", "12"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  QJsonObject elbow = protocols()["Elbow flexion"].toObject();
+  EXPECT_EQ(elbow["trunk_limit_deg"].toDouble(), 12);
+  EXPECT_EQ(elbow["repetitions"].toInt(), 12);
+  EXPECT_EQ(elbow["target_max_deg"].toDouble(), 130);
+  r = run({"protocol", "edit", "Elbow flexion", "--reps", "5"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(protocols()["Elbow flexion"].toObject()["trunk_limit_deg"].toDouble(), 12);
+  r = run({"protocol", "edit", "Elbow flexion", "--trunk-limit", "off"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(protocols()["Elbow flexion"].toObject()["trunk_limit_deg"].isNull());
+
+  // Exercises: the protocol's, or their own.
+  ASSERT_EQ(run({"programme", "add", "--patient", "P01", "--protocol", "Reach"}).code, 0);
+  ASSERT_EQ(run({"programme", "add", "--patient", "P01", "--protocol", "Elbow flexion",
+                 "--trunk-limit", "20"})
+                .code,
+            0);
+  QJsonArray p = list("P01");
+  ASSERT_EQ(p.size(), 2);
+  EXPECT_EQ(at(p, 0)["trunk_limit_deg"].toDouble(), 15);
+  EXPECT_TRUE(at(p, 0)["trunk_limit_from_protocol"].toBool());
+  EXPECT_EQ(at(p, 1)["trunk_limit_deg"].toDouble(), 20);
+  EXPECT_FALSE(at(p, 1)["trunk_limit_from_protocol"].toBool());
+  r = run({"programme", "list", "--patient", "P01"});
+  EXPECT_NE(r.out.find("/week\ttrunk limit 20 deg"), std::string::npos) << r.out;
+  ASSERT_EQ(run({"programme", "add", "--patient", "P01", "--protocol", "Elbow flexion",
+                 "--trunk-limit", "protocol"})
+                .code,
+            0);
+  EXPECT_TRUE(at(list("P01"), 1)["trunk_limit_deg"].isNull());
+
+  // Refusals, and nothing changed by them.
+  for (const auto& [args, says] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+           {{"protocol", "edit", "Reach", "--trunk-limit", "0"}, "1-90 deg"},
+           {{"protocol", "edit", "Reach", "--trunk-limit", "120"}, "1-90 deg"},
+           {{"protocol", "edit", "Reach", "--trunk-limit", "lots"}, "expected degrees"},
+           {{"protocol", "edit", "Reach", "--trunk-limit", "nan"}, "expected degrees"},
+           {{"protocol", "edit", "Juggling", "--trunk-limit", "10"}, "unknown protocol"},
+           {{"protocol", "add", "--name", "X", "--angle", "elbow_flexion", "--target-min", "0",
+             "--target-max", "90", "--trunk-limit", "-5"},
+            "1-90 deg"},
+           {{"programme", "add", "--patient", "P01", "--protocol", "Reach", "--trunk-limit", "95"},
+            "1-90 deg"},
+           {{"programme", "add", "--patient", "P01", "--protocol", "Reach", "--trunk-limit", "off"},
+            "turn it off in the protocol"}}) {
+    r = run(args);
+    EXPECT_NE(r.code, 0) << args[0] << " " << args.back();
+    EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
+  }
+  EXPECT_EQ(protocols()["Reach"].toObject()["trunk_limit_deg"].toDouble(), 15);
+  EXPECT_FALSE(protocols().contains("X"));
+  EXPECT_TRUE(at(list("P01"), 0)["trunk_limit_from_protocol"].toBool());
 }
 
 INSTANTIATE_TEST_SUITE_P(Engines, ProgrammeCli, testing::Values(Engine::Sqlite, Engine::Postgres),

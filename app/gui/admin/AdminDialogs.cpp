@@ -6,6 +6,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
@@ -35,6 +36,25 @@ QDoubleSpinBox* degreesBox(QWidget* parent, const QString& name, double value) {
   box->setValue(value);
   box->setAccessibleName(name);
   return box;
+}
+
+/// A trunk limit in whole degrees, 1-90; 0 shows offText (no limit of its own).
+QDoubleSpinBox* trunkLimitBox(QWidget* parent, std::optional<double> value) {
+  auto* box = new QDoubleSpinBox(parent);
+  box->setRange(0, storage::kMaxTrunkLimitDeg);
+  box->setDecimals(0);
+  box->setSuffix(FormDialog::tr(" deg"));
+  box->setValue(value.value_or(0));
+  box->setAccessibleName(FormDialog::tr("Trunk limit"));
+  box->setToolTip(
+      FormDialog::tr("Degrees of trunk flexion: leaning further, the patient is told \"Keep your "
+                     "back against the chair\" and the repetition counts as made with "
+                     "compensation. Needs a trunk sensor."));
+  return box;
+}
+
+std::optional<double> trunkLimitOf(const QDoubleSpinBox* box) {
+  return box->value() > 0 ? std::optional(box->value()) : std::nullopt;
 }
 
 /// What is wrong with a new password typed twice (empty: nothing).
@@ -186,7 +206,8 @@ ProtocolDialog::ProtocolDialog(const storage::Protocol& protocol, QWidget* paren
       m_min(degreesBox(this, tr("Target from"), protocol.targetMinDeg)),
       m_max(degreesBox(this, tr("Target to"), protocol.targetMaxDeg)),
       m_reps(new QSpinBox(this)),
-      m_side(new QComboBox(this)) {
+      m_side(new QComboBox(this)),
+      m_trunk(trunkLimitBox(this, protocol.trunkLimitDeg)) {
   const bool adding = protocol.name.isEmpty();
   setWindowTitle(adding ? tr("New protocol") : tr("Edit protocol %1").arg(protocol.name));
   m_name->setReadOnly(!adding);
@@ -208,6 +229,8 @@ ProtocolDialog::ProtocolDialog(const storage::Protocol& protocol, QWidget* paren
   form()->addRow(tr("Target &to:"), m_max);
   form()->addRow(tr("&Repetitions:"), m_reps);
   form()->addRow(tr("&Side:"), m_side);
+  m_trunk->setSpecialValueText(tr("Off"));
+  form()->addRow(tr("Tr&unk limit:"), m_trunk);
   finish();
 }
 
@@ -219,6 +242,7 @@ storage::Protocol ProtocolDialog::protocol() const {
   p.targetMaxDeg = m_max->value();
   p.repetitions = m_reps->value();
   p.side = m_side->currentData().toString();
+  p.trunkLimitDeg = trunkLimitOf(m_trunk);
   return p;
 }
 
@@ -247,7 +271,8 @@ ExerciseDialog::ExerciseDialog(const std::vector<storage::Protocol>& protocols,
       m_max(degreesBox(this, tr("Target to"), m_original.targetMaxDeg.value_or(0))),
       m_rest(new QDoubleSpinBox(this)),
       m_perWeek(new QSpinBox(this)),
-      m_notes(new QLineEdit(m_original.notes, this)) {
+      m_notes(new QLineEdit(m_original.notes, this)),
+      m_trunk(trunkLimitBox(this, m_original.trunkLimitDeg)) {
   setWindowTitle(item ? tr("Edit exercise %1").arg(item->protocolName) : tr("New exercise"));
   m_protocol->setAccessibleName(tr("Protocol"));
   for (const storage::Protocol& p : protocols) m_protocol->addItem(p.name, p.name);
@@ -277,6 +302,7 @@ ExerciseDialog::ExerciseDialog(const std::vector<storage::Protocol>& protocols,
   form()->addRow(QString(), m_ownTarget);
   form()->addRow(tr("Target &from:"), m_min);
   form()->addRow(tr("Target &to:"), m_max);
+  form()->addRow(tr("Tr&unk limit:"), m_trunk);
   form()->addRow(tr("Re&st between sets:"), m_rest);
   form()->addRow(tr("Sessions per &week:"), m_perWeek);
   form()->addRow(tr("&Notes:"), m_notes);
@@ -292,6 +318,11 @@ void ExerciseDialog::showProtocolValues() {
       i >= 0 && i < static_cast<int>(m_protocols.size()) ? &m_protocols[i] : nullptr;
   m_reps->setSpecialValueText(p ? tr("the protocol's (%1)").arg(p->repetitions)
                                 : tr("the protocol's"));
+  m_trunk->setSpecialValueText(
+      !p ? tr("the protocol's")
+      : p->trunkLimitDeg
+          ? tr("the protocol's (%1 deg)").arg(QLocale().toString(*p->trunkLimitDeg, 'f', 0))
+          : tr("the protocol's (off)"));
   m_min->setEnabled(m_ownTarget->isChecked());
   m_max->setEnabled(m_ownTarget->isChecked());
   if (!m_ownTarget->isChecked() && p) {
@@ -310,6 +341,7 @@ storage::ProgrammeItem ExerciseDialog::item() const {
   item.restS = m_rest->value();
   item.sessionsPerWeek = m_perWeek->value();
   item.notes = m_notes->text().trimmed();
+  item.trunkLimitDeg = trunkLimitOf(m_trunk);
   return item;
 }
 

@@ -107,6 +107,7 @@ class ProtocolDialog : public FormDialog {
   QDoubleSpinBox* m_max;
   QSpinBox* m_reps;
   QComboBox* m_side;
+  QDoubleSpinBox* m_trunk;  ///< 0: off
 };
 
 /// An exercise of a home programme: a new one (any protocol) or an existing one (its protocol
@@ -135,6 +136,7 @@ class ExerciseDialog : public FormDialog {
   QDoubleSpinBox* m_rest;
   QSpinBox* m_perWeek;
   QLineEdit* m_notes;
+  QDoubleSpinBox* m_trunk;  ///< 0: the protocol's
 };
 
 }  // namespace armtrack::gui::admin

@@ -105,15 +105,17 @@ void ProgrammePage::loadProgramme(const QString& select) {
           for (const storage::Protocol& candidate : m_protocols)
             if (candidate.name == item.protocolName) protocol = candidate;
           const auto [lo, hi] = storage::effectiveTarget(item, protocol);
+          const std::optional<double> trunk = storage::effectiveTrunkLimit(item, protocol);
           rows.push_back(
               {item.protocolName,
                tr("%1 x %2").arg(item.sets).arg(storage::effectiveRepetitions(item, protocol)),
                tr("%1 to %2 deg").arg(locale.toString(lo, 'f', 0), locale.toString(hi, 'f', 0)),
                tr("%1 s").arg(locale.toString(item.restS, 'f', 0)),
+               trunk ? tr("%1 deg").arg(locale.toString(*trunk, 'f', 0)) : tr("off"),
                locale.toString(item.sessionsPerWeek), item.notes});
         }
-        fill({tr("Exercise"), tr("Sets x repetitions"), tr("Target"), tr("Rest"), tr("Per week"),
-              tr("Notes")},
+        fill({tr("Exercise"), tr("Sets x repetitions"), tr("Target"), tr("Rest"), tr("Trunk limit"),
+              tr("Per week"), tr("Notes")},
              rows, select);
         emit loaded();
       },

@@ -49,9 +49,14 @@ void ProtocolsPage::reload() {
                           tr("%1 to %2 deg")
                               .arg(locale.toString(p.targetMinDeg, 'f', 0),
                                    locale.toString(p.targetMaxDeg, 'f', 0)),
-                          locale.toString(p.repetitions), sideText(p.side)});
+                          locale.toString(p.repetitions), sideText(p.side),
+                          p.trunkLimitDeg
+                              ? tr("%1 deg").arg(locale.toString(*p.trunkLimitDeg, 'f', 0))
+                              : tr("off")});
         }
-        fill({tr("Name"), tr("Angle"), tr("Target"), tr("Repetitions"), tr("Side")}, rows, {});
+        fill({tr("Name"), tr("Angle"), tr("Target"), tr("Repetitions"), tr("Side"),
+              tr("Trunk limit")},
+             rows, {});
         emit loaded();
       },
       [this](const RecordsFailure& f) { failed(f.message); });

@@ -54,6 +54,11 @@ ExerciseScreen::ExerciseScreen(const app::PluginRegistry& registry, RecordsServi
       m_trust(exercise.angle) {
   m_measured = !(angleNeedsOptics(exercise.angle) && !optical);
   m_result = plannedResult(exercise, m_measured);
+  if (exercise.trunkLimitDeg) {
+    TrunkLimitCueParams trunk;
+    trunk.limitDeg = *exercise.trunkLimitDeg;
+    m_trunkCue.emplace(trunk);
+  }
   buildLayout();
   retranslate();
   connect(m_recording, &ExerciseRecording::started, this, [this](const QString& error) {
@@ -96,6 +101,13 @@ void ExerciseScreen::buildLayout() {
   m_banner = bodyText({}, this);
   setHomeFont(m_banner, 1.3, true);
   m_banner->hide();
+  // The trunk limit's cue: the largest words on the screen while the patient leans too far.
+  m_trunk = bodyText({}, this);
+  setHomeFont(m_trunk, 1.8, true);
+  m_trunk->setAlignment(Qt::AlignCenter);
+  m_trunk->hide();
+  m_trunkCount = bodyText({}, this);
+  m_trunkCount->hide();
   m_primary = bigButton({}, this, true);
   m_pause = bigButton({}, this);
   m_skip = bigButton({}, this);
@@ -106,6 +118,8 @@ void ExerciseScreen::buildLayout() {
   left->addWidget(m_text);
   left->addWidget(m_counter);
   left->addWidget(m_angle);
+  left->addWidget(m_trunkCount);
+  left->addWidget(m_trunk);
   left->addWidget(m_banner);
   left->addStretch(1);
   left->addLayout(buttons);
@@ -152,6 +166,9 @@ void ExerciseScreen::retranslate() {
   m_counter->setAccessibleName(tr("Repetitions"));
   m_angle->setAccessibleName(tr("Your angle now"));
   m_banner->setAccessibleName(tr("Feedback"));
+  m_trunk->setAccessibleName(tr("Trunk cue"));
+  m_trunkCount->setAccessibleName(tr("Repetitions leaning too far"));
+  updateTrunk();
   ui::setButtonText(m_pause, tr("&Pause"));
   m_pause->setToolTip(tr("Pause (Escape)"));
   ui::setButtonText(m_skip, tr("S&kip this exercise"));
@@ -274,6 +291,7 @@ void ExerciseScreen::startSet() {
     if (m_optical || !angleNeedsOptics(a)) still.push_back(a);
   spec.stillAngles = still;
   m_feedback.emplace(spec);
+  if (m_trunkCue) m_trunkCue->startRepetitions(m_lastT);
   m_banner->hide();
   m_recording->setRecording(true);
   setPhase(Phase::Set);
@@ -283,6 +301,7 @@ void ExerciseScreen::closeSet() {
   m_recording->setRecording(false);
   if (!m_feedback) return;
   addSet(m_result, *m_feedback, m_measured);
+  if (m_trunkCue) m_result.trunkCompensation = static_cast<int>(m_trunkCue->compensated());
   m_feedback.reset();
 }
 
@@ -361,7 +380,7 @@ void ExerciseScreen::setMeasured(bool measured) {
 
 void ExerciseScreen::tick() {
   std::vector<std::string> events;
-  const bool live = m_recording->drain(m_rows, events);
+  const bool live = m_source ? m_source(m_rows, events) : m_recording->drain(m_rows, events);
   const double clock = m_clock.elapsed() / 1000.0;
   // The light arm: the movement played in the demonstration and the rests; in a set, the far
   // end to reach.
@@ -375,6 +394,8 @@ void ExerciseScreen::tick() {
       m_lastT = r.t;
       // A shoulder angle is trusted only while optical data hold the heading.
       m_trust.add(r);
+      if (m_trunkCue)
+        m_trunkCue->add(r.t, r.trunk ? std::optional((*r.trunk)(0)) : std::nullopt, r.trunkMoved);
       if (m_measured && m_trust.blind(r.t)) setMeasured(false);
       if (m_phase == Phase::Set && m_feedback && m_measured)
         m_feedback->add(r.t, clinicalRadians(r.th));
@@ -397,6 +418,7 @@ void ExerciseScreen::tick() {
         !m_setDone.isActive())
       m_setDone.start(kSetEndDelayMs);
   }
+  updateTrunk();
   if (m_phase == Phase::Rest) {
     const double left = m_restLeftS - clock;
     m_counter->setText(tr("Rest: %1 s").arg(static_cast<int>(std::ceil(std::max(0.0, left)))));
@@ -418,6 +440,7 @@ void ExerciseScreen::handleEvents(const std::vector<FeedbackEvent>& events) {
         break;
       case FeedbackKind::RepetitionCounted:
         counted = true;
+        if (m_trunkCue) m_trunkCue->repetitionEnded(e.t);
         if (good.isEmpty()) good = tr("Good: %1 done.").arg(e.repetition);
         break;
       case FeedbackKind::RangeNotReached:
@@ -444,6 +467,33 @@ void ExerciseScreen::handleEvents(const std::vector<FeedbackEvent>& events) {
     if (hint.isEmpty() && m_sound) m_sound->play(FeedbackSound::Cue::Counted);
     updateCounter();
   }
+}
+
+void ExerciseScreen::updateTrunk() {
+  if (!m_trunkCue) return;
+  const bool cue = trunkCueShown();
+  const QString words = tr("Keep your back against the chair");
+  if (cue && m_trunkCue->cues() > m_trunkCues) {
+    // Once each time it comes on: sounded and logged with the other feedback.
+    m_trunkCues = m_trunkCue->cues();
+    m_shown << words;
+    if (m_sound) m_sound->play(FeedbackSound::Cue::Hint);
+  }
+  if (cue == m_trunk->isHidden() || (cue && m_trunk->text() != words))
+    setBanner(m_trunk, cue ? words : QString(), Tone::Hint);
+  const QString count = trunkCountText();
+  m_trunkCount->setText(count);
+  m_trunkCount->setVisible(!count.isEmpty() && (m_phase == Phase::Set || m_phase == Phase::Paused));
+}
+
+bool ExerciseScreen::trunkCueShown() const {
+  return m_trunkCue && m_phase == Phase::Set && m_trunkCue->cueShown();
+}
+
+QString ExerciseScreen::trunkCountText() const {
+  if (!m_trunkCue || m_trunkCue->compensated() == 0) return {};
+  return tr("%n repetition(s) leaning too far", nullptr,
+            static_cast<int>(m_trunkCue->compensated()));
 }
 
 void ExerciseScreen::showFeedback(const QString& text, int tone) {

@@ -8,6 +8,7 @@
 
 #include <QElapsedTimer>
 #include <QTimer>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -16,6 +17,7 @@
 #include "app/gui/services/HomeRecords.h"
 #include "app/gui/services/LiveSessionConfig.h"
 #include "core/metrics/ExerciseFeedback.h"
+#include "core/metrics/TrunkLimitCue.h"
 #include "core/session/Session.h"
 #include "core/simulation/Trajectory.h"
 
@@ -65,6 +67,20 @@ class ExerciseScreen : public HomeScreen {
   /// Feedback messages shown so far (for tests and the log).
   const QStringList& feedbackShown() const { return m_shown; }
   ui::ArmView* armView() const { return m_arm; }
+  /// "Keep your back against the chair": shown while the patient leans past the exercise's trunk
+  /// limit during a set (never without a limit).
+  bool trunkCueShown() const;
+  /// The trunk limit's cue and count (nullptr when the exercise sets no limit).
+  const TrunkLimitCue* trunkCue() const { return m_trunkCue ? &*m_trunkCue : nullptr; }
+  /// The count shown under the counter ("" when nothing to count).
+  QString trunkCountText() const;
+
+  /// Where the screen takes its estimates from: the exercise's session (default), or, given
+  /// here, a function that moves new rows and messages into the vectors as
+  /// ExerciseRecording::drain does (a test's made rows).
+  using EstimateSource =
+      std::function<bool(std::vector<session::EstimateRow>&, std::vector<std::string>&)>;
+  void setEstimateSource(EstimateSource source) { m_source = std::move(source); }
 
   QList<QAbstractButton*> choices() const override;
   QAbstractButton* defaultChoice() const override;
@@ -100,6 +116,7 @@ class ExerciseScreen : public HomeScreen {
   void showFeedback(const QString& text, int tone);
   void setMeasured(bool measured);
   void updateCounter();
+  void updateTrunk();
   QString demonstrationText() const;
 
   HomeExercise m_exercise;
@@ -125,12 +142,17 @@ class ExerciseScreen : public HomeScreen {
   QTimer m_setDone;  // a moment after the last repetition, the set ends
   std::vector<session::EstimateRow> m_rows;
   QStringList m_shown;
+  EstimateSource m_source;
+  std::optional<TrunkLimitCue> m_trunkCue;
+  std::size_t m_trunkCues = 0;  // cues sounded so far
 
   QLabel* m_title = nullptr;
   QLabel* m_text = nullptr;
   QLabel* m_counter = nullptr;
   QLabel* m_angle = nullptr;
   QLabel* m_banner = nullptr;
+  QLabel* m_trunk = nullptr;
+  QLabel* m_trunkCount = nullptr;
   ui::ArmView* m_arm = nullptr;
   QPushButton* m_primary = nullptr;
   QPushButton* m_pause = nullptr;

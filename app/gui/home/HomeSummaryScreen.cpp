@@ -41,6 +41,11 @@ QString HomeSummaryScreen::line(const HomeExerciseResult& r,
   if (!history.empty() && history.back().result.rangeMaxDeg)
     text += QStringLiteral("; ") +
             tr("last time %L1\u00b0").arg(*history.back().result.rangeMaxDeg, 0, 'f', 0);
+  if (r.trunkCompensation > 0)
+    text +=
+        QStringLiteral("; ") + QCoreApplication::translate("armtrack::gui::home::HomeSummaryScreen",
+                                                           "%n repetition(s) leaning too far",
+                                                           nullptr, r.trunkCompensation);
   if (r.stoppedEarly) text += QStringLiteral("; ") + tr("stopped early");
   return text + u'.';
 }

@@ -139,6 +139,9 @@ void LiveSessionScreen::buildLayout() {
   bannerRow->addWidget(m_banner, 1);
   bannerRow->addWidget(m_retry);
   root->addLayout(bannerRow);
+  // The trunk limit's cue, across the screen while the patient leans past it.
+  m_trunk = std::make_unique<LiveTrunkFeedback>(m_config.trunkLimitDeg, this);
+  root->addWidget(m_trunk->cueLabel());
   connect(m_retry, &QPushButton::clicked, this, &LiveSessionScreen::start);
 
   // Body: 3D arm and readouts | plots; below: health, repetitions, messages.
@@ -154,6 +157,7 @@ void LiveSessionScreen::buildLayout() {
   m_readouts->setColumns(3);
   leftLayout->addWidget(m_arm, 3);
   leftLayout->addWidget(m_readouts, 0);
+  leftLayout->addWidget(m_trunk->anglesLabel(), 0);
   m_plots = new ui::AnglePlotPanel(top);
   m_plots->setWindowSeconds(m_config.windowSeconds);
   if (m_config.targetDeg)
@@ -171,8 +175,12 @@ void LiveSessionScreen::buildLayout() {
   m_reps->setAngleName(ui::angleDisplayName(repetitionAngle(m_config.primaryAngle)));
   m_messages = new QListWidget(bottom);
   m_messages->setWordWrap(true);
+  auto* repsColumn = new QVBoxLayout;
+  repsColumn->setContentsMargins(0, 0, 0, 0);
+  repsColumn->addWidget(m_reps, 1);
+  repsColumn->addWidget(m_trunk->countLabel(), 0);
   bottomLayout->addWidget(m_health, 3);
-  bottomLayout->addWidget(m_reps, 1);
+  bottomLayout->addLayout(repsColumn, 1);
   bottomLayout->addWidget(m_messages, 3);
   vertical->setStretchFactor(0, 4);
   vertical->setStretchFactor(1, 1);
@@ -228,6 +236,7 @@ void LiveSessionScreen::retranslateUi() {
   m_retry->setText(tr("Try &again"));
   m_messages->setAccessibleName(tr("Session messages"));
   m_reps->setAngleName(ui::angleDisplayName(repetitionAngle(m_config.primaryAngle)));
+  m_trunk->retranslate();
   updateButtons();
   updateStatus();
 }
@@ -251,6 +260,7 @@ void LiveSessionScreen::start() {
   m_plots->clear();
   m_health->clear();
   m_counter.reset();
+  m_trunk->reset();
   m_events.clear();
   m_sessionTime = 0;
   m_recordedSeconds = 0;
@@ -354,6 +364,8 @@ void LiveSessionScreen::onStopped(quint64 recordedRows, quint64 rowsToRecord,
         {recordingTime(t, std::isfinite(first) ? first : m_firstRecordingS), label.toStdString()}));
   // Rows the gate dropped while paused were never meant for the recording.
   const bool complete = recorderError.isEmpty() && recordedRows + m_gate->skipped() == rowsToRecord;
+  // The trunk limit's count stays with the session, after its events.
+  if (const QString trunk = m_trunk->notesLine(); !trunk.isEmpty()) events << trunk;
   m_target->finishAsync(
       recordedRows, complete, events.join(u'\n'), this, [this, recorderError](const QString& line) {
         QString summary = line;
@@ -392,28 +404,7 @@ void LiveSessionScreen::drain() {
   ++m_drains;
   lap(m_times.takeMs);
   m_times.mostRows = std::max(m_times.mostRows, m_rows.size());
-  if (!m_rows.empty()) {
-    m_estimates += m_rows.size();
-    m_samples.clear();
-    m_samples.reserve(m_rows.size());
-    const int primary = m_counter.primaryAngle();
-    for (const session::EstimateRow& r : m_rows) {
-      m_samples.push_back(ui::angleSample(r));
-      m_counter.add(r.t, m_samples.back().deg[static_cast<std::size_t>(primary)] * kDegToRad);
-      if (r.opticalElbow) m_marks.elbow = r.opticalElbow;
-      if (r.opticalWrist) m_marks.wrist = r.opticalWrist;
-      if (r.camElbow) m_marks.camElbow = r.camElbow;
-      if (r.camWrist) m_marks.camWrist = r.camWrist;
-      if (r.opticalElbow || r.opticalWrist || r.camElbow || r.camWrist) m_lastOptical = r.t;
-    }
-    const session::EstimateRow& last = m_rows.back();
-    m_sessionTime = last.t;
-    if (m_sessionTime - m_lastOptical > kOpticalShownSeconds) m_marks = {};
-    m_plots->append(m_samples);
-    m_arm->setPose(last.th);
-    m_arm->setOptical(m_marks);
-    m_reps->showCount(m_counter);
-  }
+  showEstimates(m_rows);
   for (const std::string& e : m_sessionEvents)
     addMessage(ui::sessionEventText(QString::fromStdString(e)));
   lap(m_times.feedMs);
@@ -436,6 +427,33 @@ void LiveSessionScreen::drain() {
     lap(m_times.statsMs);
   }
   m_times.wholeMs = std::max(m_times.wholeMs, static_cast<double>(clock.nsecsElapsed()) * 1e-6);
+}
+
+void LiveSessionScreen::showEstimates(const std::vector<session::EstimateRow>& rows) {
+  if (rows.empty()) return;
+  m_estimates += rows.size();
+  m_samples.clear();
+  m_samples.reserve(rows.size());
+  const int primary = m_counter.primaryAngle();
+  for (const session::EstimateRow& r : rows) {
+    m_samples.push_back(ui::angleSample(r));
+    m_trunk->add(r);
+    m_counter.add(r.t, m_samples.back().deg[static_cast<std::size_t>(primary)] * kDegToRad);
+    m_trunk->judgeRepetitions(m_counter);
+    if (r.opticalElbow) m_marks.elbow = r.opticalElbow;
+    if (r.opticalWrist) m_marks.wrist = r.opticalWrist;
+    if (r.camElbow) m_marks.camElbow = r.camElbow;
+    if (r.camWrist) m_marks.camWrist = r.camWrist;
+    if (r.opticalElbow || r.opticalWrist || r.camElbow || r.camWrist) m_lastOptical = r.t;
+  }
+  const session::EstimateRow& last = rows.back();
+  m_sessionTime = last.t;
+  if (m_sessionTime - m_lastOptical > kOpticalShownSeconds) m_marks = {};
+  m_plots->append(m_samples);
+  m_arm->setPose(last.th);
+  m_arm->setOptical(m_marks);
+  m_reps->showCount(m_counter);
+  m_trunk->refresh();
 }
 
 void LiveSessionScreen::showBanner(std::function<QString()> text, bool error) {

@@ -11,6 +11,7 @@
 #include <optional>
 #include <vector>
 
+#include "app/gui/live/LiveTrunkFeedback.h"
 #include "app/gui/services/GatedRecordingSink.h"
 #include "app/gui/services/LiveSessionConfig.h"
 #include "app/gui/services/RecordingTarget.h"
@@ -57,6 +58,12 @@ class LiveSessionScreen : public QWidget {
   /// Event markers so far: time (s) and label.
   const std::vector<std::pair<double, QString>>& events() const { return m_events; }
   const RepetitionCounter& repetitionCounter() const { return m_counter; }
+  /// The trunk's angles, the trunk limit's cue and its count of repetitions with compensation.
+  const LiveTrunkFeedback& trunk() const { return *m_trunk; }
+
+  /// Shows a batch of estimates as the drain does (plots, readouts, counter, 3D view, trunk):
+  /// the drain's own path, open so that a test can show rows it made without a session.
+  void showEstimates(const std::vector<session::EstimateRow>& rows);
 
   void setDrainRate(double hz);
   double drainRate() const { return m_drainHz; }
@@ -147,6 +154,7 @@ class LiveSessionScreen : public QWidget {
   std::vector<std::pair<double, QString>> m_events;
   ui::OpticalMarks m_marks;
   RepetitionCounter m_counter;
+  std::unique_ptr<LiveTrunkFeedback> m_trunk;
 
   ui::ArmView* m_arm = nullptr;
   ui::AnglePlotPanel* m_plots = nullptr;

@@ -39,6 +39,7 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
     if (angle >= 0) c.primaryAngle = angle;
     c.targetDeg = std::make_pair(plan.protocol->targetMinDeg, plan.protocol->targetMaxDeg);
     if (plan.protocol->repetitions > 0) c.targetRepetitions = plan.protocol->repetitions;
+    c.trunkLimitDeg = plan.protocol->trunkLimitDeg;
   }
   return c;
 }

@@ -31,6 +31,7 @@ HomeExerciseResult plannedResult(const HomeExercise& exercise, bool measured) {
   r.repetitionsPlanned = exercise.item.sets * exercise.repetitions;
   r.targetMinDeg = exercise.targetMinDeg;
   r.targetMaxDeg = exercise.targetMaxDeg;
+  r.trunkLimitDeg = exercise.trunkLimitDeg;
   r.measured = measured;
   return r;
 }

@@ -35,6 +35,8 @@ QJsonObject HomeExerciseResult::toJson() const {
                      {"too_fast", tooFast},
                      {"range_not_reached", rangeNotReached},
                      {"compensation", compensation},
+                     {"trunk_limit_deg", optionalNumber(trunkLimitDeg)},
+                     {"trunk_compensation", trunkCompensation},
                      {"measured", measured},
                      {"stopped_early", stoppedEarly}};
 }
@@ -59,6 +61,9 @@ std::optional<HomeExerciseResult> HomeExerciseResult::fromJson(const QJsonObject
   r.tooFast = o.value("too_fast").toInt();
   r.rangeNotReached = o.value("range_not_reached").toInt();
   r.compensation = o.value("compensation").toInt();
+  if (o.value("trunk_limit_deg").isDouble())
+    r.trunkLimitDeg = o.value("trunk_limit_deg").toDouble();
+  r.trunkCompensation = o.value("trunk_compensation").toInt();
   r.measured = o.value("measured").toBool(true);
   r.stoppedEarly = o.value("stopped_early").toBool();
   return r;
@@ -75,6 +80,7 @@ HomePlan loadHomePlan(storage::ClinicalStore& store, const QString& patientCode)
     if (e.angle < 0) continue;
     e.repetitions = std::max(1, storage::effectiveRepetitions(item, e.protocol));
     std::tie(e.targetMinDeg, e.targetMaxDeg) = storage::effectiveTarget(item, e.protocol);
+    e.trunkLimitDeg = storage::effectiveTrunkLimit(item, e.protocol);
     plan.exercises.push_back(e);
   }
   plan.history.resize(plan.exercises.size());

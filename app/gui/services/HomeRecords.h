@@ -20,6 +20,7 @@ struct HomeExercise {
   int angle = 0;        ///< clinical angle index of the protocol's angle key
   int repetitions = 1;  ///< per set
   double targetMinDeg = 0, targetMaxDeg = 0;
+  std::optional<double> trunkLimitDeg;  ///< effectiveTrunkLimit(); empty: off
 };
 
 /// What one exercise of a home session came to (the home window's count, not an analysis).
@@ -34,6 +35,9 @@ struct HomeExerciseResult {
   double targetMinDeg = 0, targetMaxDeg = 0;
   std::optional<double> rangeMinDeg, rangeMaxDeg;  ///< empty when not measured
   int targetReached = 0, tooFast = 0, rangeNotReached = 0, compensation = 0;
+  /// The trunk limit in effect (deg; empty: off) and the repetitions made leaning past it.
+  std::optional<double> trunkLimitDeg;
+  int trunkCompensation = 0;
   bool measured = true;       ///< false: the angle could not be trusted (no camera)
   bool stoppedEarly = false;  ///< skipped or stopped before its sets were done
 

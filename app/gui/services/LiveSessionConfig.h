@@ -28,6 +28,9 @@ struct LiveSessionConfig {
   std::optional<std::pair<double, double>> targetDeg;
   /// The protocol's number of repetitions.
   std::optional<int> targetRepetitions;
+  /// The protocol's trunk limit (deg of trunk flexion; storage::Protocol::trunkLimitDeg): past
+  /// it the screen cues "Keep your back against the chair" and counts the repetitions made so.
+  std::optional<double> trunkLimitDeg;
   /// The plots' window (s, 10-30).
   double windowSeconds = 20.0;
   /// Record from the start (when a recording target was given), without pressing Record.

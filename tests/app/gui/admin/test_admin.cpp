@@ -344,7 +344,7 @@ class TestAdmin : public QObject {
     adminScreen()->tabs()->setCurrentWidget(adminScreen()->programmes());
     auto* page = adminScreen()->programmes();
     QTRY_COMPARE(page->patientCode(), QStringLiteral("P001"));
-    QTRY_COMPARE(page->table()->columnCount(), 6);  // the programme is read
+    QTRY_COMPARE(page->table()->columnCount(), 7);  // the programme is read (with the trunk limit)
     QTest::mouseClick(findControl<QPushButton>(page, QStringLiteral("Add exercise...")),
                       Qt::LeftButton);
     auto* d = dialog<admin::ExerciseDialog>();
