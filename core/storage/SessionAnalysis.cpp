@@ -295,6 +295,14 @@ class AnalysisRun {
 
 }  // namespace
 
+// The trunk flexion limit the repetitions are judged by: the caller's, else the session's
+// protocol's (Protocol::trunkLimitDeg), else none.
+static std::optional<double> trunkLimit(const AnalysisOptions& options,
+                                        const std::optional<Protocol>& protocol) {
+  if (options.trunkFlexionLimitDeg) return options.trunkFlexionLimitDeg;
+  return protocol ? protocol->trunkLimitDeg : std::nullopt;
+}
+
 AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                               const AnalysisOptions& options) {
   const SessionInfo info = store.session(sessionId);  // NotFound for an invisible session
@@ -427,7 +435,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                          sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
     }
     TrunkCompensationParams tp;
-    tp.flexionLimitDeg = options.trunkFlexionLimitDeg;
+    tp.flexionLimitDeg = trunkLimit(options, protocol);
     result.trunk =
         computeTrunkCompensation(trunkRows.rows(), repetitionSpans(result.metrics.repetitions), tp);
     series = encodeMetricRows(settled.metricSeries.t, std::move(settled.metricJoints));
@@ -463,7 +471,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
       QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
       [&](int estimateVersion) {
-        summary = summaryJson(result.metrics, result.trunk, options.trunkFlexionLimitDeg,
+        summary = summaryJson(result.metrics, result.trunk, trunkLimit(options, protocol),
                               estimateVersion, protocol, dropped, settling);
         return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
       },

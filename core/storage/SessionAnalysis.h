@@ -55,8 +55,9 @@ struct AnalysisOptions {
   std::size_t expectedRows = 0;
   /// A repetition whose largest trunk flexion exceeds this (deg) was made with compensation
   /// (core/metrics/TrunkCompensation.h): each repetition's "compensated" and the count
-  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default) = no limit, and
-  /// both null. Not positive and finite: StorageError(Usage).
+  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default): the session's
+  /// protocol's limit (Protocol::trunkLimitDeg), and without one no limit, both null. Not
+  /// positive and finite: StorageError(Usage).
   std::optional<double> trunkFlexionLimitDeg;
 };
 

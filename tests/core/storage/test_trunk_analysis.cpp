@@ -216,6 +216,35 @@ TEST(TrunkAnalysis, EveryRepetitionsTrunkMatchesTheSimulatedTruth) {
 
 // A trunk that stays still (only the sternum IMU's and the Kinect's noise): every repetition's
 // trunk values stay near zero. Without a limit, "compensated" and the count are null.
+// Without a limit from the caller, the session's protocol's trunk limit (set by a therapist in
+// the admin screen or `protocol edit --trunk-limit`) judges the repetitions; the caller's wins.
+TEST(TrunkAnalysis, TheProtocolsTrunkLimitJudgesTheRepetitions) {
+  Fixture f;
+  f.store->addPatient(makePatient("P1"));
+  Protocol limited = makeProtocol("reach", "shoulder_flexion", 10, 110, 4);
+  limited.trunkLimitDeg = kLimitDeg;
+  f.store->addProtocol(limited);
+  const Reaches reaches(kPeaks);
+  SimSetup setup;
+  setup.seed = 811;
+  setup.leanDeg = 18.0;
+  const Recording rec = simulateReaches(f.file("lean.csv"), reaches, setup);
+  qint64 id = 0;
+  const AnalysisResult byProtocol = importAndAnalyse(f, f.file("lean.csv"), std::nullopt, &id);
+  const QJsonObject reps = byProtocol.metricsJson.value("repetitions").toObject();
+  EXPECT_EQ(reps.value("repetitions_with_compensation").toInt(-1), 3);
+  EXPECT_EQ(num(byProtocol.metricsJson.value("trunk").toObject(), "flexion_limit_deg"), kLimitDeg);
+  // A caller's limit above every lean: no repetition was made with compensation.
+  AnalysisOptions high;
+  high.trunkFlexionLimitDeg = 40.0;
+  const AnalysisResult byCaller = analyseSession(*f.store, id, high);
+  EXPECT_EQ(byCaller.metricsJson.value("repetitions")
+                .toObject()
+                .value("repetitions_with_compensation")
+                .toInt(-1),
+            0);
+}
+
 TEST(TrunkAnalysis, StillTrunkGivesNearZero) {
   Fixture f;
   withPatient(f);
