@@ -326,12 +326,11 @@ QString SensorCheckScreen::explain(const SensorCheckResult& r) {
         "Straighten the strap and let your arm hang loosely.");
   if (r.has(SensorFinding::TrunkUpsideDown))
     lines << tr(
-        "The chest sensor seems to be on upside down: its arrow points down. Turn it round "
-        "so that the arrow points up towards your chin.");
+        "The chest sensor seems to be on upside down. Turn it the other way up, as your "
+        "therapist showed you, and sit upright.");
   if (r.has(SensorFinding::TrunkTurned))
     lines << tr("The chest sensor seems to be turned: it sits %1\u00b0 off. Put it flat on the "
-                "middle "
-                "of your breastbone with the arrow pointing up, and sit upright.")
+                "middle of your breastbone, the way your therapist showed you, and sit upright.")
                  .arg(std::lround(r.trunkAngleDeg));
   return lines.join(u'\n');
 }
