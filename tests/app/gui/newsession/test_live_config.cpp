@@ -24,8 +24,7 @@ class TestLiveConfig : public QObject {
       QVERIFY2(gui::hasSternumSensor({QStringLiteral("virtual-arm:sensors=upper"), spec}),
                qPrintable(spec));
       const auto c = gui::liveSessionConfig(plan, {spec}, settings, cal);
-      QVERIFY2(c.meta.trunk && c.meta.trunk->imuRotation.isApprox(m.imuRotation),
-               qPrintable(spec));
+      QVERIFY2(c.meta.trunk && c.meta.trunk->imuRotation.isApprox(m.imuRotation), qPrintable(spec));
     }
     // Without a sternum sensor (a lean simulated, a role that is not the trunk's), none.
     for (const QString& spec : {QStringLiteral("virtual-arm:sensors=upper+forearm,trunk-lean=10"),
