@@ -693,6 +693,10 @@
         <source>You can relax. ArmTrack is working this out; it takes a few seconds.</source>
         <translation>Sie können sich entspannen. ArmTrack rechnet das jetzt aus; das dauert einige Sekunden.</translation>
     </message>
+    <message>
+        <source>Chest (sternum) sensor: its tilt is taken from the upright start pose; its heading about the vertical is kept as assumed.</source>
+        <translation>Brustbeinsensor: seine Neigung wird aus der aufrechten Ausgangshaltung bestimmt; seine Ausrichtung um die Senkrechte bleibt wie angenommen.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>
@@ -4182,6 +4186,26 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>The sensor on your forearm sits crooked, or your elbow was not straight. Straighten the strap and let your arm hang loosely.</source>
         <translation>Der Sensor an Ihrem Unterarm sitzt schief, oder Ihr Ellbogen war nicht gestreckt. Richten Sie das Band gerade und lassen Sie den Arm locker hängen.</translation>
     </message>
+    <message>
+        <source>Sit upright with your back against the chair, let your arm hang loosely straight down, and keep still.</source>
+        <translation>Setzen Sie sich aufrecht mit dem Rücken an die Stuhllehne, lassen Sie den Arm locker gerade nach unten hängen und halten Sie still.</translation>
+    </message>
+    <message>
+        <source>All three sensors are on the right places and the right way round.</source>
+        <translation>Alle drei Sensoren sitzen an der richtigen Stelle und richtig herum.</translation>
+    </message>
+    <message>
+        <source>No data came from the chest sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>Vom Brustsensor kamen keine Daten. Prüfen Sie, ob er eingeschaltet und geladen ist, und drücken Sie dann „Erneut prüfen“.</translation>
+    </message>
+    <message>
+        <source>The chest sensor seems to be on upside down. Turn it the other way up, as your therapist showed you, and sit upright.</source>
+        <translation>Der Brustsensor scheint verkehrt herum zu sitzen. Drehen Sie ihn um, so wie Ihre Therapeutin oder Ihr Therapeut es gezeigt hat, und setzen Sie sich aufrecht.</translation>
+    </message>
+    <message>
+        <source>The chest sensor seems to be turned: it sits %1° off. Put it flat on the middle of your breastbone, the way your therapist showed you, and sit upright.</source>
+        <translation>Der Brustsensor scheint verdreht zu sein: Er sitzt %1° schief. Legen Sie ihn flach auf die Mitte des Brustbeins, so wie Ihre Therapeutin oder Ihr Therapeut es gezeigt hat, und setzen Sie sich aufrecht.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::StrapPicture</name>
@@ -5242,6 +5266,10 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>All devices are streaming</source>
         <translation>Alle Geräte senden</translation>
     </message>
+    <message>
+        <source>Trunk (sternum) sensor</source>
+        <translation>Rumpfsensor (Brustbein)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::RepetitionCounterWidget</name>
@@ -5275,6 +5303,37 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>target reached</source>
         <translation>Ziel erreicht</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::TrunkChart</name>
+    <message>
+        <source>Trunk flexion</source>
+        <translation>Rumpfbeugung</translation>
+    </message>
+    <message>
+        <source>Trunk lateral bending</source>
+        <translation>Rumpfseitneigung</translation>
+    </message>
+    <message>
+        <source>Trunk axial rotation</source>
+        <translation>Rumpfrotation</translation>
+    </message>
+    <message>
+        <source>Trunk</source>
+        <translation>Rumpf</translation>
+    </message>
+    <message>
+        <source>%1 (°)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>Trunk plot</source>
+        <translation>Rumpfdiagramm</translation>
+    </message>
+    <message>
+        <source>Trunk flexion, lateral bending and axial rotation over time in degrees, relative to the start pose</source>
+        <translation>Rumpfbeugung, Seitneigung und Rotation im Zeitverlauf in Grad, bezogen auf die Ausgangshaltung</translation>
     </message>
 </context>
 <context>

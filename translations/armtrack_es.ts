@@ -693,6 +693,10 @@
         <source>You can relax. ArmTrack is working this out; it takes a few seconds.</source>
         <translation>Ya puede relajarse. ArmTrack lo está calculando; tarda unos segundos.</translation>
     </message>
+    <message>
+        <source>Chest (sternum) sensor: its tilt is taken from the upright start pose; its heading about the vertical is kept as assumed.</source>
+        <translation>Sensor del pecho (esternón): su inclinación se toma de la postura inicial erguida; su orientación alrededor de la vertical se mantiene como se supuso.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>
@@ -4182,6 +4186,26 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>The sensor on your forearm sits crooked, or your elbow was not straight. Straighten the strap and let your arm hang loosely.</source>
         <translation>El sensor de su antebrazo está torcido, o su codo no estaba estirado. Enderece la correa y deje el brazo colgando suelto.</translation>
     </message>
+    <message>
+        <source>Sit upright with your back against the chair, let your arm hang loosely straight down, and keep still.</source>
+        <translation>Siéntese erguido con la espalda contra la silla, deje el brazo colgando suelto y recto hacia abajo y quédese quieto.</translation>
+    </message>
+    <message>
+        <source>All three sensors are on the right places and the right way round.</source>
+        <translation>Los tres sensores están en su sitio y en la posición correcta.</translation>
+    </message>
+    <message>
+        <source>No data came from the chest sensor. Check that it is switched on and charged, then press Check again.</source>
+        <translation>No llegaron datos del sensor del pecho. Compruebe que esté encendido y cargado y pulse «Comprobar de nuevo».</translation>
+    </message>
+    <message>
+        <source>The chest sensor seems to be on upside down. Turn it the other way up, as your therapist showed you, and sit upright.</source>
+        <translation>El sensor del pecho parece estar al revés. Gírelo, como le mostró su terapeuta, y siéntese erguido.</translation>
+    </message>
+    <message>
+        <source>The chest sensor seems to be turned: it sits %1° off. Put it flat on the middle of your breastbone, the way your therapist showed you, and sit upright.</source>
+        <translation>El sensor del pecho parece estar girado: está desviado %1°. Colóquelo plano en el centro del esternón, como le mostró su terapeuta, y siéntese erguido.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::StrapPicture</name>
@@ -5242,6 +5266,10 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>All devices are streaming</source>
         <translation>Todos los dispositivos transmiten</translation>
     </message>
+    <message>
+        <source>Trunk (sternum) sensor</source>
+        <translation>Sensor del tronco (esternón)</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::RepetitionCounterWidget</name>
@@ -5275,6 +5303,37 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>target reached</source>
         <translation>objetivo alcanzado</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::ui::TrunkChart</name>
+    <message>
+        <source>Trunk flexion</source>
+        <translation>Flexión del tronco</translation>
+    </message>
+    <message>
+        <source>Trunk lateral bending</source>
+        <translation>Inclinación lateral del tronco</translation>
+    </message>
+    <message>
+        <source>Trunk axial rotation</source>
+        <translation>Rotación axial del tronco</translation>
+    </message>
+    <message>
+        <source>Trunk</source>
+        <translation>Tronco</translation>
+    </message>
+    <message>
+        <source>%1 (°)</source>
+        <translation>%1 (°)</translation>
+    </message>
+    <message>
+        <source>Trunk plot</source>
+        <translation>Gráfico del tronco</translation>
+    </message>
+    <message>
+        <source>Trunk flexion, lateral bending and axial rotation over time in degrees, relative to the start pose</source>
+        <translation>Flexión, inclinación lateral y rotación axial del tronco a lo largo del tiempo en grados, respecto a la postura inicial</translation>
     </message>
 </context>
 <context>

@@ -21,7 +21,8 @@ bool isDark(const QPalette& p) {
 }
 }  // namespace
 
-AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_window + 1.0) {
+AnglePlotPanel::AnglePlotPanel(QWidget* parent)
+    : QWidget(parent), m_trace(m_window + 1.0), m_trunkTrace(m_window + 1.0) {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   m_splitter = new QSplitter(Qt::Horizontal, this);
@@ -48,6 +49,13 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
     m_charts[static_cast<std::size_t>(a)] = c;
     plotLayout->addWidget(c, 1);
   }
+  m_trunkChart = new TrunkChart(plots);
+  m_trunkChart->setMinimumHeight(kMinPlotHeight);
+  m_trunkChart->hide();  // until rows carry trunk angles
+  connect(m_trunkChart, &TrunkChart::clicked, this, [this](double t) {
+    if (m_mode == Mode::Review) emit cursorRequested(t);
+  });
+  plotLayout->addWidget(m_trunkChart, 1);
   m_table = new AngleTableModel(this);
   m_tableView = new QTableView(m_splitter);
   m_tableView->setModel(m_table);
@@ -67,6 +75,7 @@ AnglePlotPanel::AnglePlotPanel(QWidget* parent) : QWidget(parent), m_trace(m_win
 
   const bool dark = isDark(palette());
   for (AngleChart* c : m_charts) c->setDark(dark);
+  m_trunkChart->setDark(dark);
   connect(&m_timer, &QTimer::timeout, this, [this] {
     if (m_dirty && isVisible()) redraw(false);
   });
@@ -90,21 +99,47 @@ void AnglePlotPanel::setMode(Mode mode) {
   for (AngleChart* c : m_charts) c->setIncremental(mode == Mode::Live);
   m_trace.setKeepSeconds(mode == Mode::Live ? m_window + 1.0
                                             : std::numeric_limits<double>::infinity());
+  m_trunkTrace.setKeepSeconds(mode == Mode::Live ? m_window + 1.0
+                                                 : std::numeric_limits<double>::infinity());
   markDirty();
 }
 
 void AnglePlotPanel::setWindowSeconds(double seconds) {
   m_window = std::clamp(std::isfinite(seconds) ? seconds : 20.0, 10.0, 30.0);
-  if (m_mode == Mode::Live) m_trace.setKeepSeconds(m_window + 1.0);
+  if (m_mode == Mode::Live) {
+    m_trace.setKeepSeconds(m_window + 1.0);
+    m_trunkTrace.setKeepSeconds(m_window + 1.0);
+  }
   markDirty();
 }
 
 void AnglePlotPanel::append(const std::vector<AngleSample>& rows) {
   if (m_trace.append(rows) > 0) markDirty();
+  appendTrunk(rows);
+}
+
+void AnglePlotPanel::appendTrunk(const std::vector<AngleSample>& rows) {
+  std::vector<AngleSample> trunk;
+  for (const AngleSample& r : rows) {
+    if (!r.hasTrunk()) continue;
+    AngleSample s;
+    s.t = r.t;
+    s.deg.fill(kNoAngle);
+    for (std::size_t i = 0; i < kTrunkAngleCount; ++i) {
+      s.deg[i] = r.trunkDeg[i];
+      s.sigmaDeg[i] = r.trunkSigmaDeg[i];
+    }
+    trunk.push_back(s);
+  }
+  if (trunk.empty() || m_trunkTrace.append(trunk) == 0) return;
+  if (m_trunkChart->isHidden()) m_trunkChart->show();
+  markDirty();
 }
 
 void AnglePlotPanel::clear() {
   m_trace.clear();
+  m_trunkTrace.clear();
+  m_trunkChart->hide();
   m_overlay.reset();
   m_decor.events.clear();
   m_decor.cursor.reset();
@@ -115,6 +150,10 @@ void AnglePlotPanel::setSession(const std::vector<AngleSample>& rows) {
   setMode(Mode::Review);
   m_trace.clear();
   m_trace.append(rows);
+  // Stored analyses without trunk angles show no trunk plot.
+  m_trunkTrace.clear();
+  m_trunkChart->hide();
+  appendTrunk(rows);
   markDirty();
 }
 
@@ -206,6 +245,9 @@ void AnglePlotPanel::redraw(bool table) {
     if (!m_targetAngle || *m_targetAngle != static_cast<int>(a)) decor.targetDeg.reset();
     if (m_charts[a]->isVisible()) m_charts[a]->draw(m_trace, overlay, m_t0, m_t1, decor);
   }
+  if (!m_trunkChart->isHidden())
+    m_trunkChart->draw(m_trunkTrace, m_t0, m_t1,
+                       m_mode == Mode::Review ? m_decor.cursor : std::nullopt);
   // The table: the value at the cursor (review) or the newest (live), and the plotted range.
   if (m_mode == Mode::Live && !table && m_tableClock.isValid() &&
       m_tableClock.elapsed() < 1000.0 / kTableHz)
@@ -245,6 +287,7 @@ void AnglePlotPanel::changeEvent(QEvent* event) {
   if (event->type() == QEvent::PaletteChange) {
     const bool dark = isDark(palette());
     for (AngleChart* c : m_charts) c->setDark(dark);
+    m_trunkChart->setDark(dark);
     markDirty();
   }
   QWidget::changeEvent(event);

@@ -14,6 +14,7 @@
 #include "ui/AngleChart.h"
 #include "ui/AngleTableModel.h"
 #include "ui/AngleTrace.h"
+#include "ui/TrunkChart.h"
 
 class QScrollArea;
 class QTableView;
@@ -70,6 +71,10 @@ class AnglePlotPanel : public QWidget {
   QTableView* tableView() const { return m_tableView; }
   const AngleTrace& trace() const { return m_trace; }
   AngleChart* chart(int angle) const { return m_charts[static_cast<std::size_t>(angle)]; }
+  /// The trunk's plot: shown once rows carry trunk angles (a sternum sensor), hidden otherwise.
+  TrunkChart* trunkChart() const { return m_trunkChart; }
+  /// The trunk's angles as plotted (deg[0..2]: flexion, lateral bending, axial rotation).
+  const AngleTrace& trunkTrace() const { return m_trunkTrace; }
   /// The time span plotted (s).
   std::pair<double, double> timeSpan() const { return {m_t0, m_t1}; }
   std::uint64_t redraws() const { return m_redraws; }
@@ -104,12 +109,16 @@ class AnglePlotPanel : public QWidget {
   /// the table as wide as its columns, within 55 % of the panel (names wrap before numbers hide).
   void sizeTable();
   void showTargetColumn(bool show);
+  /// Keeps the rows' trunk angles in m_trunkTrace; shows the trunk's plot when there are some.
+  void appendTrunk(const std::vector<AngleSample>& rows);
 
   Mode m_mode = Mode::Live;
   double m_window = 20.0;
   AngleTrace m_trace;
   std::optional<AngleTrace> m_overlay;
   std::array<AngleChart*, kAngleCount> m_charts{};
+  AngleTrace m_trunkTrace;
+  TrunkChart* m_trunkChart = nullptr;
   QSplitter* m_splitter = nullptr;
   QScrollArea* m_scroll = nullptr;
   QTableView* m_tableView = nullptr;

@@ -45,7 +45,18 @@ AngleSample angleSample(const session::EstimateRow& row) {
   AngleSample s = angleSample(row.t, row.th, row.thStd);
   s.headingFromStartPose = row.headingFromStartPoseOnly;
   s.predicted = row.status == UpdateResult::Predicted;
+  if (row.trunk)
+    for (int i = 0; i < kTrunkAngleCount; ++i) {
+      const double v = (*row.trunk)(i)*kRadToDegree;
+      s.trunkDeg[i] = std::isfinite(v) ? v : kNoAngle;
+      const double sd = row.trunkStd ? std::abs((*row.trunkStd)(i)) * kRadToDegree : 0.0;
+      s.trunkSigmaDeg[i] = std::isfinite(sd) ? sd : 0.0;
+    }
   return s;
+}
+
+bool AngleSample::hasTrunk() const {
+  return std::any_of(trunkDeg.begin(), trunkDeg.end(), [](double v) { return std::isfinite(v); });
 }
 
 std::size_t AngleTrace::append(const std::vector<AngleSample>& rows) {

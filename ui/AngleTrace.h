@@ -20,6 +20,9 @@ struct EstimateRow;
 namespace armtrack::ui {
 
 inline constexpr int kAngleCount = 5;
+/// Trunk flexion, lateral bending and axial rotation.
+inline constexpr int kTrunkAngleCount = 3;
+inline constexpr double kNoAngle = std::numeric_limits<double>::quiet_NaN();
 
 /// The five clinical angles at one time, in the order and signs of clinicalAngleInfo().
 struct AngleSample {
@@ -30,6 +33,11 @@ struct AngleSample {
   bool headingFromStartPose = false;
   /// No new IMU data: the estimate is the filter's prediction (a sensor is lost).
   bool predicted = false;
+  /// The trunk's flexion, lateral bending and axial rotation (degrees, patient terms,
+  /// core/kinematics/Trunk.h) when a sternum sensor measures them; NaN otherwise.
+  std::array<double, kTrunkAngleCount> trunkDeg{kNoAngle, kNoAngle, kNoAngle};
+  std::array<double, kTrunkAngleCount> trunkSigmaDeg{};  ///< 1-sigma (deg); 0 when not known
+  bool hasTrunk() const;
 };
 
 /// An estimate as clinical angles (degrees) with its uncertainty.

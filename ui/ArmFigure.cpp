@@ -21,6 +21,16 @@ Eigen::Vector3d medialDirection(Side side) {
   return Eigen::Vector3d(0.0, 0.0, side == Side::Left ? 1.0 : -1.0);
 }
 
+ArmFigure transformed(const ArmFigure& f, const Eigen::Isometry3d& motion) {
+  ArmFigure out = f;
+  for (Eigen::Vector3d* p :
+       {&out.shoulder, &out.elbow, &out.wrist, &out.upperStrap, &out.forearmStrap})
+    *p = motion * *p;
+  for (Eigen::Isometry3d* t : {&out.upperImu, &out.forearmImu}) *t = motion * *t;
+  out.hand = motion.linear() * out.hand;
+  return out;
+}
+
 ArmFigure armFigure(const ArmGeometry& geometry, const JointVector& th, Side side) {
   const ArmPose pose = forwardKinematics(geometry, th);
   ArmFigure f;

@@ -31,6 +31,10 @@ struct ArmFigure {
 /// S = D = diag(1, 1, -1).
 ArmFigure armFigure(const ArmGeometry& geometry, const JointVector& th, Side side);
 
+/// The figure carried by a rigid motion (the trunk's pose: the arm hangs from the moving
+/// shoulder): points p -> T p, frames F -> R F.
+ArmFigure transformed(const ArmFigure& figure, const Eigen::Isometry3d& motion);
+
 /// The unit vector towards the body's midline in the shoulder frame of that side: -z0 for the
 /// right arm, +z0 for the left.
 Eigen::Vector3d medialDirection(Side side);

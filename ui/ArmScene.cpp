@@ -35,6 +35,8 @@ constexpr double kForearmRadius = 0.034;
 constexpr double kJointRadius = 0.046;
 constexpr double kFloorBelowShoulder = 1.05;  // m: a seated patient's shoulder height
 constexpr double kTrunkOffset = 0.19;         // m from the shoulder to the body's midline
+constexpr double kHipBelow = 0.45;            // m: the trunk's pivot below the shoulder...
+constexpr double kHipMedial = 0.15;           // ...and medial to it (TrunkSimParams::hip)
 
 /// An actor drawn from a shared unit shape through its own matrix.
 struct Part {
@@ -154,8 +156,12 @@ struct ArmScene::Impl {
   Vec3 up = -Vec3::UnitX();
   std::optional<PinholeCamera> camera;
   JointVector pose = JointVector::Zero();
+  std::optional<JointVector> targetPose;
   ArmFigure figure;
   bool dark = true;
+  // The trunk's pose in the world: the torso, the head and the arms move with it.
+  Eigen::Isometry3d body = Eigen::Isometry3d::Identity();
+  std::optional<TrunkAngles> trunkAngles;
 
   Vec3 forward() const {
     Vec3 f = Vec3::UnitY() - Vec3::UnitY().dot(up) * up;
@@ -167,16 +173,34 @@ struct ArmScene::Impl {
     return m.norm() > 1e-6 ? Vec3(m.normalized()) : up.cross(forward());
   }
 
-  void placeStatic() {
-    // Trunk and head on the body's side of the shoulder; floor below.
-    const Vec3 f = forward(), m = medial();
+  Vec3 hip() const { return -up * kHipBelow + medial() * kHipMedial; }
+
+  void placeBody() {
+    // Frame 0 turns with the thorax about the hip h: a point p of the trunk's frame is at
+    // h + R (p - h) in the world. In an arm's own frame 0 (z0 to the patient's right for either
+    // side) the trunk's rotation is trunkRotation(angles) for both sides (core/kinematics/Trunk.h).
+    body = Eigen::Isometry3d::Identity();
+    if (trunkAngles) {
+      const Eigen::Matrix3d r = trunkRotation(*trunkAngles, Side::Right);
+      const Vec3 h = hip();
+      body.linear() = r;
+      body.translation() = h - r * h;
+    }
+    // Trunk and head on the body's side of the shoulder.
+    const Vec3 m = medial();
     const Vec3 trunkCentre = m * kTrunkOffset - up * 0.21;
     Eigen::Matrix3d trunkFrame;
     trunkFrame.col(0) = m;
     trunkFrame.col(1) = up;
     trunkFrame.col(2) = m.cross(up);
-    placeBox(*trunk, trunkFrame, Vec3(0.30, 0.52, 0.19), trunkCentre);
-    placeSphere(*head, m * kTrunkOffset + up * 0.2, 0.1);
+    placeBox(*trunk, body.linear() * trunkFrame, Vec3(0.30, 0.52, 0.19), body * trunkCentre);
+    placeSphere(*head, body * Vec3(m * kTrunkOffset + up * 0.2), 0.1);
+  }
+
+  void placeStatic() {
+    // The floor below, where the patient sits (it does not lean).
+    placeBody();
+    const Vec3 f = forward(), m = medial();
     const Vec3 centre = -up * kFloorBelowShoulder + m * kTrunkOffset + f * 0.25;
     const Vec3 a = f * 1.0, b = m * 1.0;
     const Vec3 o = centre - a - b;
@@ -186,12 +210,13 @@ struct ArmScene::Impl {
   }
 
   void placeArm() {
-    figure = armFigure(geometry, pose, side);
+    figure = transformed(armFigure(geometry, pose, side), body);
     arm->place(figure);
     const Vec3 upperDir = (figure.elbow - figure.shoulder).normalized();
     const Vec3 foreDir = (figure.wrist - figure.elbow).normalized();
     upperImu->place(figure.upperImu, figure.upperStrap, upperDir, kUpperRadius);
     forearmImu->place(figure.forearmImu, figure.forearmStrap, foreDir, kForearmRadius);
+    if (targetPose) target->place(transformed(armFigure(geometry, *targetPose, side), body));
   }
 
   void applyColours() {
@@ -322,9 +347,53 @@ void ArmScene::setPose(const JointVector& th) {
   m->placeArm();
 }
 
+void ArmScene::setTrunk(const std::optional<TrunkAngles>& angles) {
+  m->trunkAngles = angles && angles->allFinite() ? angles : std::nullopt;
+  m->placeBody();
+  m->placeArm();
+}
+
+Eigen::Vector3d ArmScene::hipPivot() const {
+  return m->hip();
+}
+
+Eigen::Isometry3d ArmScene::trunkPose() const {
+  return m->body;
+}
+
+const ArmFigure& ArmScene::figure() const {
+  return m->figure;
+}
+
+namespace {
+Eigen::Vector3d actorOrigin(const Part& p) {
+  return {p.matrix->GetElement(0, 3), p.matrix->GetElement(1, 3), p.matrix->GetElement(2, 3)};
+}
+}  // namespace
+
+Eigen::Vector3d ArmScene::shoulderActorCentre() const {
+  return actorOrigin(m->arm->shoulder);
+}
+
+Eigen::Matrix3d ArmScene::torsoAxes() const {
+  Eigen::Matrix3d a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a(r, c) = m->trunk->matrix->GetElement(r, c);
+  return a.colwise().normalized();
+}
+
+Eigen::Vector3d ArmScene::torsoCentre() const {
+  return actorOrigin(*m->trunk);
+}
+
+Eigen::Vector3d ArmScene::headCentre() const {
+  return actorOrigin(*m->head);
+}
+
 void ArmScene::setTargetPose(const std::optional<JointVector>& th) {
   for (Part* p : m->target->all()) p->setVisible(th.has_value());
-  if (th) m->target->place(armFigure(m->geometry, *th, m->side));
+  m->targetPose = th;
+  if (th) m->target->place(transformed(armFigure(m->geometry, *th, m->side), m->body));
 }
 
 void ArmScene::setOptical(const OpticalMarks& marks) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "core/io/Recording.h"
+#include "core/kinematics/Trunk.h"
 #include "ui/ArmFigure.h"
 
 class vtkRenderer;
@@ -33,6 +34,24 @@ class ArmScene {
   /// The webcam's model, to draw marker pixels as rays (none or invalid: pixels not drawn).
   void setCameraModel(const std::optional<CameraParams>& camera);
   void setPose(const JointVector& th);
+  /// The trunk's flexion, lateral bending and axial rotation (rad, patient terms,
+  /// core/kinematics/Trunk.h); empty: upright. The torso, the head and the arms (which hang from
+  /// the moving shoulder) turn with it about the hip pivot; the floor, the camera and the optical
+  /// marks (world frame) stay.
+  void setTrunk(const std::optional<TrunkAngles>& angles);
+  /// The pivot the drawn trunk turns about (shoulder frame, m): 0.45 m below and 0.15 m medial to
+  /// the shoulder, the simulator's default hip (core/simulation/TrunkMotion.h).
+  Eigen::Vector3d hipPivot() const;
+  /// The trunk's pose in the world as drawn: p_world = pose * p_trunk, i.e. s + R p with
+  /// R = trunkRotation(angles) and s = h - R h (docs/trunk.md).
+  Eigen::Isometry3d trunkPose() const;
+  /// What is drawn, for the tests: the estimated arm in the world and the actors' matrices.
+  const ArmFigure& figure() const;
+  Eigen::Vector3d shoulderActorCentre() const;
+  /// The torso box's axes (unit columns: medial, up, forward as drawn) and its centre.
+  Eigen::Matrix3d torsoAxes() const;
+  Eigen::Vector3d torsoCentre() const;
+  Eigen::Vector3d headCentre() const;
   void setTargetPose(const std::optional<JointVector>& th);
   void setOptical(const OpticalMarks& marks);
   void setSideLabel(const std::string& text);

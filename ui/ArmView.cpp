@@ -84,6 +84,17 @@ void ArmView::setPose(const JointVector& th) {
   markDirty();
 }
 
+void ArmView::setTrunk(const std::optional<TrunkAngles>& angles) {
+  if (angles && !angles->allFinite()) {
+    ++m_rejected;
+    return;
+  }
+  if (angles == m_trunk) return;
+  m_trunk = angles;
+  m_scene->setTrunk(angles);
+  markDirty();
+}
+
 void ArmView::setTargetPose(const std::optional<JointVector>& th) {
   if (th && !th->allFinite()) {
     ++m_rejected;

@@ -12,6 +12,7 @@
 #include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
+#include "core/kinematics/Trunk.h"
 #include "ui/VtkView.h"
 
 class QAction;
@@ -53,6 +54,12 @@ class ArmView : public VtkView {
   /// The estimated joint angles (rad). A vector with a non-finite value is ignored (the last
   /// good pose stays) and counted in rejectedPoses().
   void setPose(const JointVector& th);
+  /// The trunk's flexion, lateral bending and axial rotation (rad, patient terms,
+  /// core/kinematics/Trunk.h), e.g. the estimate's when a sternum sensor measures them; empty:
+  /// upright. The torso leans and turns about the hip and the arm hangs from the moving shoulder.
+  /// Non-finite angles are ignored (the last good trunk stays) and counted in rejectedPoses().
+  void setTrunk(const std::optional<TrunkAngles>& angles);
+  const std::optional<TrunkAngles>& trunk() const { return m_trunk; }
   /// A second, translucent arm (a demonstration or another session); empty hides it.
   void setTargetPose(const std::optional<JointVector>& th);
   void setOptical(const OpticalMarks& marks);
@@ -95,6 +102,7 @@ class ArmView : public VtkView {
   double m_refreshHz = 60.0;
   bool m_dirty = true;
   JointVector m_pose = JointVector::Zero();
+  std::optional<TrunkAngles> m_trunk;
   Side m_side = Side::Right;
   std::uint64_t m_rejected = 0;
   QAction* m_resetView = nullptr;

@@ -44,6 +44,10 @@ QString healthWord(HealthLevel level) {
   return DeviceHealthModel::tr("idle");
 }
 
+QString trunkSensorName() {
+  return HealthTracker::tr("Trunk (sternum) sensor");
+}
+
 // --- HealthTracker ---------------------------------------------------------------------------
 
 void HealthTracker::setDeviceState(int device, DeviceState state, const QString& reason) {
@@ -67,7 +71,9 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
     Track& t = m_tracks[i];
     StreamHealthRow& r = m_rows[i];
     r.device = QString::fromStdString(s.device);
-    r.stream = QString::fromStdString(s.stream);
+    // The sternum sensor by what it is, as the arm sensors are known by their place.
+    r.stream =
+        s.role == StreamRole::TrunkImu ? trunkSensorName() : QString::fromStdString(s.stream);
     r.rateHz = s.rateHz;
     r.lost = s.deviceDropped;
     r.rejected = s.rejected + s.late;

@@ -96,6 +96,9 @@ class DeviceHealthModel : public QAbstractTableModel {
 /// The colour of a level (green, amber, red, grey), readable on either palette.
 QColor healthColour(HealthLevel level, bool dark);
 QString healthWord(HealthLevel level);
+/// "Trunk (sternum) sensor": how a trunk IMU stream is listed (its device's own stream name
+/// says little to a therapist).
+QString trunkSensorName();
 
 class DeviceHealthPanel : public QWidget {
   Q_OBJECT

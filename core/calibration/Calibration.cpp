@@ -118,6 +118,8 @@ void applyCalibration(const Calibration& c, RecordingMeta& meta) {
                                 " arm but the recording is of the " + sideName(meta.side) + " arm");
   }
   meta.geometry = c.geometry;
+  // Only a recording with a sternum sensor has a mounting for it.
+  if (c.trunk && meta.trunk) meta.trunk = c.trunk;
 }
 
 void applyCalibration(const Calibration& c, Recording& rec) {
@@ -153,6 +155,15 @@ std::string calibrationProblem(const Calibration& c) {
     if (e > MetaLimits::kRotationTolerance || imu->rotation.determinant() < 0.0)
       return std::string("\"") + key + ".rotation\" is not a rotation";
   }
+  if (c.trunk) {
+    const Eigen::Matrix3d& r = c.trunk->imuRotation;
+    if (!r.allFinite() || !c.trunk->imuPosition.allFinite())
+      return "\"trunk\" holds a value that is not a finite number";
+    if ((r.transpose() * r - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff() >
+            MetaLimits::kRotationTolerance ||
+        r.determinant() < 0.0)
+      return "\"trunk.imu_rotation\" is not a rotation";
+  }
   RecordingMeta meta;  // the limits of a sidecar's geometry; the rest are defaults
   meta.geometry = c.geometry;
   return metaProblem(meta);
@@ -186,6 +197,15 @@ void writeCalibration(const fs::path& path, const Calibration& c) {
                    {"lu5", g.lu5}, {"lf6", g.lf6}, {"thf7", g.thf7}, {"lf8", g.lf8}};
   j["upperArm"] = imuJson(c.upperArm);
   j["forearm"] = imuJson(c.forearm);
+  if (c.trunk) {
+    const Eigen::Vector3d& p = c.trunk->imuPosition;
+    const Eigen::Matrix3d& r = c.trunk->imuRotation;
+    OJson t;
+    t["imu_position"] = {p.x(), p.y(), p.z()};
+    t["imu_rotation"] = {r(0, 0), r(0, 1), r(0, 2), r(1, 0), r(1, 1),
+                         r(1, 2), r(2, 0), r(2, 1), r(2, 2)};
+    j["trunk"] = t;
+  }
   j["opticalUsed"] = c.opticalUsed;
   j["headingFromStartPoseOnly"] = c.headingFromStartPoseOnly;
   j["estimated"] = c.estimated;
@@ -258,6 +278,21 @@ Calibration readCalibration(const fs::path& path) {
   }
   if (j.contains("upperArm")) c.upperArm = imuFromJson(path, j["upperArm"], "upperArm");
   if (j.contains("forearm")) c.forearm = imuFromJson(path, j["forearm"], "forearm");
+  if (j.contains("trunk")) {
+    const Json& t = j["trunk"];
+    if (!t.is_object() || !t.contains("imu_position") || !t.contains("imu_rotation"))
+      fail(path, "\"trunk\" must be an object with \"imu_position\" and \"imu_rotation\"");
+    TrunkMount m;
+    m.imuPosition = vector3(path, t["imu_position"], "trunk.imu_position");
+    const Json& r = t["imu_rotation"];
+    if (!r.is_array() || r.size() != 9)
+      fail(path,
+           "\"trunk.imu_rotation\" must be an array of 9 numbers (row-major), got " + r.dump());
+    for (int i = 0; i < 9; ++i)
+      m.imuRotation(i / 3, i % 3) = number(path, r[static_cast<std::size_t>(i)],
+                                           "trunk.imu_rotation[" + std::to_string(i) + "]");
+    c.trunk = m;
+  }
   if (j.contains("opticalUsed") && j["opticalUsed"].is_boolean())
     c.opticalUsed = j["opticalUsed"].get<bool>();
   if (j.contains("headingFromStartPoseOnly") && j["headingFromStartPoseOnly"].is_boolean())

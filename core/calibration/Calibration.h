@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -34,6 +35,11 @@ struct Calibration {
   ArmGeometry geometry;     ///< segment lengths and strap distances/angles (m, rad)
   ImuCalibration upperArm;
   ImuCalibration forearm;
+  /// The sternum sensor's mounting (frame 0 of the side, the trunk upright), its tilt levelled
+  /// from the start pose (core/calibration/TrunkMounting.h); empty when the recording had no
+  /// sternum sensor. The file's "trunk" block: {"imu_position": [3], "imu_rotation": [9,
+  /// row-major]}.
+  std::optional<TrunkMount> trunk;
 
   // What the estimate rests on (written to the file for the record; not needed to apply it).
   bool opticalUsed = false;                ///< optical positions took part in the fit
@@ -58,7 +64,8 @@ JointVector protocolStartPose();
 ImuReading applyCalibration(const ImuCalibration& c, const ImuReading& r);
 /// Corrects both IMU readings of a sample in place (optical positions are left as they are).
 void applyCalibration(const Calibration& c, ArmSample& s);
-/// Puts the calibrated geometry into a recording's metadata, for a recording whose samples are
+/// Puts the calibrated geometry (and the sternum sensor's mounting, when calibrated) into a
+/// recording's metadata, for a recording whose samples are
 /// corrected one by one as they are read. Throws std::invalid_argument when the recording's side
 /// differs from the calibration's.
 void applyCalibration(const Calibration& c, RecordingMeta& meta);

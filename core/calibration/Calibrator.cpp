@@ -24,6 +24,7 @@
 
 #include "core/calibration/CalibrationCosts.h"
 #include "core/calibration/TrajectoryMoves.h"
+#include "core/calibration/TrunkMounting.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/Heading.h"
 #include "core/estimation/SampleGate.h"
@@ -594,6 +595,39 @@ class CalibrationFit {
 
 }  // namespace
 
+namespace {
+
+// The sternum sensor's tilt from the still start pose, when the recording has one; its heading
+// and position stay the sidecar's (or the default flat on the sternum).
+void calibrateSternum(const Recording& recording, const CalibrationOptions& options,
+                      CalibrationResult& result, const CalibrationProgress& say) {
+  const auto first = std::find_if(recording.samples.begin(), recording.samples.end(),
+                                  [](const ArmSample& s) { return s.trunk.has_value(); });
+  if (first == recording.samples.end()) return;
+  const double t0 = recording.samples.front().t;
+  TrunkMountingParams p;
+  p.up = recording.meta.up;
+  p.g = recording.meta.g;
+  p.fromS = t0 + 0.3;
+  p.toS = t0 + options.startStillSeconds;
+  const TrunkMount initial = recording.meta.trunk.value_or(defaultTrunkMount(recording.meta.side));
+  const TrunkMounting m = calibrateTrunkMount(recording.samples, initial, p);
+  if (!m.mount) {
+    result.warnings.push_back("the sternum sensor's mounting was not calibrated: " + m.problem);
+    say("calibrate: " + result.warnings.back());
+    return;
+  }
+  result.calibration.trunk = m.mount;
+  char line[160];
+  std::snprintf(line, sizeof line,
+                "calibrate: sternum sensor levelled from the start pose (%.1f deg from the "
+                "assumed mounting; heading kept)",
+                m.tiltDeg);
+  say(line);
+}
+
+}  // namespace
+
 CalibrationResult calibrate(const Recording& recording, const CalibrationOptions& options,
                             const CalibrationProgress& progress) {
   const auto wallStart = std::chrono::steady_clock::now();
@@ -613,6 +647,7 @@ CalibrationResult calibrate(const Recording& recording, const CalibrationOptions
   fit.solve(result);
   result.trajectory = fit.trajectory();
   result.calibration = fit.calibration(recording.meta.side);
+  calibrateSternum(recording, options, result, say);
   // A fit no real arm can have (e.g. segment lengths pulled to their bounds) is refused.
   if (const std::string problem = calibrationProblem(result.calibration); !problem.empty()) {
     throw std::runtime_error(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 
 namespace armtrack {
@@ -17,11 +18,20 @@ bool finite(const ImuReading& r) {
   return r.gyr.allFinite() && r.acc.allFinite();
 }
 
-// The readings of one sensor, mirrored onto a right arm when worn on the left.
-std::vector<Reading> readingsOf(std::span<const ArmSample> samples, bool upper, Side side) {
+enum class Worn { UpperArm, Forearm, Trunk };
+
+// The readings of one sensor, an arm's mirrored onto a right arm when worn on the left (the
+// sternum sensor's stay in its own axes: its mounting is given in the side's own frame 0).
+std::vector<Reading> readingsOf(std::span<const ArmSample> samples, Worn worn, Side side) {
   std::vector<Reading> out;
   for (const ArmSample& s : samples) {
-    const std::optional<ImuReading>& r = upper ? s.upperArm : s.forearm;
+    const std::optional<ImuReading>& r = worn == Worn::UpperArm  ? s.upperArm
+                                         : worn == Worn::Forearm ? s.forearm
+                                                                 : s.trunk;
+    if (worn == Worn::Trunk) {
+      if (r && finite(*r) && std::isfinite(s.t)) out.push_back({s.t, *r});
+      continue;
+    }
     if (!r || !finite(*r) || !std::isfinite(s.t)) continue;
     out.push_back({s.t, side == Side::Left ? mirrorImu(*r) : *r});
   }
@@ -82,8 +92,10 @@ bool SensorCheckResult::has(SensorFinding f) const {
 
 SensorCheckResult checkSensors(std::span<const ArmSample> samples, const SensorCheckParams& p) {
   SensorCheckResult result;
-  const std::vector<Reading> upper = readingsOf(samples, true, p.side);
-  const std::vector<Reading> fore = readingsOf(samples, false, p.side);
+  const std::vector<Reading> upper = readingsOf(samples, Worn::UpperArm, p.side);
+  const std::vector<Reading> fore = readingsOf(samples, Worn::Forearm, p.side);
+  const std::vector<Reading> trunk =
+      p.trunk ? readingsOf(samples, Worn::Trunk, p.side) : std::vector<Reading>{};
   if (upper.size() < 10) {
     result.status = SensorCheckStatus::MissingUpperArm;
     result.explanation = "no readings from the upper-arm sensor";
@@ -94,15 +106,23 @@ SensorCheckResult checkSensors(std::span<const ArmSample> samples, const SensorC
     result.explanation = "no readings from the forearm sensor";
     return result;
   }
+  if (p.trunk && trunk.size() < 10) {
+    result.status = SensorCheckStatus::MissingTrunk;
+    result.explanation = "no readings from the sternum sensor";
+    return result;
+  }
   const Rest restU = restOf(upper, p), restF = restOf(fore, p);
+  const Rest restT = p.trunk ? restOf(trunk, p) : Rest{};
   result.restSeconds = std::min(restU.seconds, restF.seconds);
+  if (p.trunk) result.restSeconds = std::min(result.restSeconds, restT.seconds);
   if (result.restSeconds < p.minRestS) {
     result.status = SensorCheckStatus::NotStill;
     result.explanation = "the arm was still for " + fixed(result.restSeconds) + " s, needs " +
                          fixed(p.minRestS) + " s";
     return result;
   }
-  for (const Rest* r : {&restU, &restF}) {
+  for (const Rest* r : {&restU, &restF, &restT}) {
+    if (r == &restT && !p.trunk) continue;
     const double g = r->acc.norm();
     if (!(g > 0.6 * p.g && g < 1.4 * p.g)) {
       result.status = SensorCheckStatus::ImplausibleReadings;
@@ -146,10 +166,21 @@ SensorCheckResult checkSensors(std::span<const ArmSample> samples, const SensorC
   };
   judge(result.upperCos, SensorFinding::UpperArmUpsideDown, SensorFinding::UpperArmTilted);
   judge(result.forearmCos, SensorFinding::ForearmUpsideDown, SensorFinding::ForearmTilted);
+  if (p.trunk) {
+    // Sitting upright and still, the sternum sensor reads +g up: R^T up in its own axes.
+    const Eigen::Vector3d expected = (p.trunk->imuRotation.transpose() * p.up).normalized();
+    const double c = std::clamp(restT.acc.normalized().dot(expected), -1.0, 1.0);
+    result.trunkAngleDeg = std::acos(c) * 180.0 / std::numbers::pi;
+    if (c < -p.uprightCos)
+      result.findings.push_back(SensorFinding::TrunkUpsideDown);
+    else if (result.trunkAngleDeg > p.trunkToleranceDeg)
+      result.findings.push_back(SensorFinding::TrunkTurned);
+  }
   std::ostringstream why;
   why << (swapped ? "swapped" : "on their segments") << "; rotation upper " << fixed(mu)
       << " rad/s, forearm " << fixed(mf) << " rad/s; gravity cos upper " << fixed(result.upperCos)
       << ", forearm " << fixed(result.forearmCos);
+  if (p.trunk) why << "; sternum sensor " << fixed(result.trunkAngleDeg) << " deg from upright";
   result.explanation = why.str();
   return result;
 }

@@ -9,15 +9,21 @@
 //   arm model (core/kinematics) says where that axis is in each sensor's frame, whatever the
 //   strap's angle around the arm. A sensor whose accelerometer reads gravity the other way along
 //   it is upside down; far from either way, it is tilted (or the arm did not hang straight).
+// - The sternum sensor (when the session has one): the patient sits upright and still, so its
+//   accelerometer reads gravity along the direction its mounting (RecordingMeta::trunk) says is
+//   up. Read the other way it is upside down; more than trunkToleranceDeg away, it is turned.
 // Plain C++ and Eigen, no Qt.
 #pragma once
 
 #include <Eigen/Core>
+#include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
 #include "core/kinematics/Side.h"
 
@@ -35,6 +41,10 @@ struct SensorCheckParams {
   double minMotionRadS = 0.35;         ///< RMS rotation (rad/s) that counts as a bend
   double swapRatio = 2.0;              ///< one gyroscope this many times the other's
   double uprightCos = 0.7;             ///< cos of the angle to gravity: within ~45 deg
+  /// The sternum sensor's expected mounting (frame 0 of the side, the trunk upright): set when
+  /// the session has a trunk IMU, whose readings are then checked as well.
+  std::optional<TrunkMount> trunk;
+  double trunkToleranceDeg = 25.0;  ///< gravity read this far from expected: the sensor is turned
 };
 
 /// Whether the check could judge at all.
@@ -42,6 +52,7 @@ enum class SensorCheckStatus {
   Judged,           ///< findings (possibly none) below
   MissingUpperArm,  ///< no reading of the upper-arm sensor
   MissingForearm,   ///< no reading of the forearm sensor
+  MissingTrunk,     ///< the session has a sternum sensor but it sent no readings
   NotStill,         ///< the arm did not hang still long enough at the start
   NoMovement,       ///< no elbow bend was seen
   BothMoved,        ///< both sensors turned alike: the upper arm moved, or both are on one segment
@@ -56,6 +67,8 @@ enum class SensorFinding {
   ForearmUpsideDown,
   UpperArmTilted,  ///< neither way round: crooked on the strap, or the arm was not straight
   ForearmTilted,
+  TrunkUpsideDown,  ///< the sternum sensor reads gravity the other way round
+  TrunkTurned,      ///< the sternum sensor reads gravity more than trunkToleranceDeg off
 };
 
 struct SensorCheckResult {
@@ -66,6 +79,9 @@ struct SensorCheckResult {
   double forearmMotionRadS = 0;
   double upperCos = 0;  ///< cos(angle) between gravity read and expected, sensor on the upper arm
   double forearmCos = 0;
+  /// Angle between gravity as the sternum sensor read it and as its mounting expects (deg); NaN
+  /// without a sternum sensor.
+  double trunkAngleDeg = std::numeric_limits<double>::quiet_NaN();
   double restSeconds = 0;   ///< stillness found at the start
   std::string explanation;  ///< one English line saying what was found (logs, not the GUI)
 

@@ -8,7 +8,11 @@
 #include <limits>
 #include <numbers>
 
+#include <QLegendMarker>
+#include <QLineSeries>
+
 #include "core/metrics/RepetitionCounter.h"
+#include "core/session/Session.h"
 #include "tests/support/GuiTestMain.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/AngleReadouts.h"
@@ -155,6 +159,66 @@ class TestAngleWidgets : public QObject {
     readouts.refresh();
     QCoreApplication::processEvents();
     QVERIFY(!readouts.valueText(0).isEmpty());
+  }
+
+  void trunkAnglesGetTheirOwnPlotWithALegend() {
+    AnglePlotPanel panel;
+    panel.resize(900, 900);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    // Rows without trunk angles (no sternum sensor): no trunk plot.
+    panel.append(batch(0, 2, 100));
+    panel.refresh();
+    QVERIFY(panel.trunkChart()->isHidden());
+    // Rows from the session with a trunk estimate: 20 deg of flexion, -6 of lateral bending, 9 of
+    // axial rotation (rad in the session, degrees on the plot).
+    std::vector<AngleSample> rows;
+    for (int i = 0; i < 300; ++i) {
+      session::EstimateRow r;
+      r.t = 2.0 + i * 0.01;
+      r.trunk = Eigen::Vector3d(20, -6, 9) * std::numbers::pi / 180.0;
+      r.trunkStd = Eigen::Vector3d(0.5, 0.5, 1.0) * std::numbers::pi / 180.0;
+      rows.push_back(angleSample(r));
+    }
+    QCOMPARE(rows.back().trunkDeg[0], 20.0);
+    panel.append(rows);
+    panel.refresh();
+    TrunkChart* chart = panel.trunkChart();
+    QVERIFY(chart->isVisible());
+    const double expected[3] = {20, -6, 9};
+    QSet<QRgb> colours;
+    for (int a = 0; a < kTrunkAngleCount; ++a) {
+      QLineSeries* line = chart->series(a);
+      QVERIFY(line->count() > 0);
+      for (const QPointF& p : line->points()) QVERIFY(std::abs(p.y() - expected[a]) < 1e-9);
+      QCOMPARE(line->name(), TrunkChart::angleName(a));
+      QVERIFY(!line->name().isEmpty());
+      colours.insert(line->pen().color().rgb());
+      // In the legend, by name.
+      const auto markers = chart->chart()->legend()->markers(line);
+      QCOMPARE(markers.size(), 1);
+      QVERIFY(markers.front()->isVisible());
+    }
+    QCOMPARE(colours.size(), 3);
+    QVERIFY(chart->chart()->legend()->isVisible());
+    QVERIFY(chart->yRange().second >= 20.0 && chart->yRange().first <= -6.0);
+    // Absurd trunk angles do not wreck the axis; a new session forgets the trunk.
+    session::EstimateRow wild;
+    wild.t = 6.0;
+    wild.trunk = Eigen::Vector3d(1e9, kNan, -1e9);
+    panel.append({angleSample(wild)});
+    panel.refresh();
+    QVERIFY(chart->yRange().second <= 90.0 && chart->yRange().first >= -90.0);
+    panel.clear();
+    QVERIFY(panel.trunkChart()->isHidden());
+    // Review: a stored analysis without trunk angles shows no trunk plot; with them, it does.
+    panel.setSession(batch(0, 5, 50));
+    QVERIFY(panel.trunkChart()->isHidden());
+    panel.setSession(rows);
+    panel.setCursor(2.5);
+    panel.refresh();
+    QVERIFY(panel.trunkChart()->isVisible());
+    QCOMPARE(panel.trunkTrace().samples().size(), rows.size());
   }
 
   void reviewWithCursorOverlayAndEvents() {

@@ -59,6 +59,41 @@ TEST(HealthTracker, SilentStreamTurnsRedAndRecovers) {
   EXPECT_EQ(h.rows()[1].level, HealthLevel::Ok);
 }
 
+TEST(HealthTracker, TrunkSensorIsListedByWhatItIsWithItsRateAndHealth) {
+  HealthTracker h;
+  session::SessionStats s = twoDevices();
+  session::StreamStats trunk = s.streams[0];
+  trunk.stream = "trunk";
+  trunk.role = StreamRole::TrunkImu;
+  trunk.rateHz = 200;
+  s.streams.push_back(trunk);
+  h.update(s, s.elapsed);
+  ASSERT_EQ(h.rows().size(), 3u);
+  EXPECT_EQ(h.rows()[2].stream, QStringLiteral("Trunk (sternum) sensor"));
+  EXPECT_EQ(h.rows()[2].rateHz, 200);
+  EXPECT_EQ(h.rows()[0].stream, QStringLiteral("upper"));  // the arm's as their device names them
+  EXPECT_EQ(h.rows()[2].level, HealthLevel::Warning);      // no data yet
+  for (int i = 0; i < 10; ++i) {
+    advance(s, 0.1);
+    s.streams[2].received += 20;
+    h.update(s, s.elapsed);
+  }
+  EXPECT_TRUE(h.allOk()) << h.summary().toStdString();
+  // It goes silent while the arm sensors stream: it alone turns red, and the summary says so.
+  for (int i = 0; i < 10; ++i) {
+    advance(s, 0.1);
+    h.update(s, s.elapsed);
+  }
+  EXPECT_EQ(h.rows()[2].level, HealthLevel::Down);
+  EXPECT_EQ(h.rows()[0].level, HealthLevel::Ok);
+  EXPECT_TRUE(h.summary().contains(QStringLiteral("Trunk (sternum) sensor: no data")))
+      << h.summary().toStdString();
+  s.streams[2].received += 200;
+  advance(s, 0.1);
+  h.update(s, s.elapsed);
+  EXPECT_EQ(h.rows()[2].level, HealthLevel::Ok);
+}
+
 TEST(HealthTracker, DeviceThatReconnectsIsDownWithItsReason) {
   HealthTracker h;
   session::SessionStats s = twoDevices();

@@ -363,6 +363,10 @@ void SensorCalibrationPage::solve() {
                    fixed(result->rmsForearmGyro), fixed(result->rmsForearmAcc),
                    fixed(result->rmsPosition))
               .arg(result->iterations));
+      if (c.trunk)
+        self->m_details->appendPlainText(
+            tr("Chest (sternum) sensor: its tilt is taken from the upright start pose; its "
+               "heading about the vertical is kept as assumed."));
       self->showStep([] { return tr("Calibration done"); }, {});
       self->setState(State::Done);
       emit self->finished(*self->m_verdict != CalibrationVerdict::Poor);

@@ -177,6 +177,7 @@ void SensorCheckScreen::start() {
   ++m_generation;
   m_judge->cancel();
   m_result.reset();
+  m_withTrunk = false;
   m_banner->hide();
   m_csv = m_folder /
           ("check-" +
@@ -198,9 +199,14 @@ void SensorCheckScreen::drain() {
   const double rest = SensorCheckTrajectory::restSeconds();
   const double bend = SensorCheckTrajectory::bendSeconds();
   const int bends = SensorCheckTrajectory::bends();
+  // With a sternum sensor (its angles in the rows), it is judged from the still start as well.
+  m_withTrunk = m_withTrunk || m_rows.back().trunk.has_value();
   if (t < rest) {
     m_title->setText(tr("Keep still: %1").arg(static_cast<int>(std::ceil(rest - t))));
-    m_text->setText(tr("Let your arm hang loosely straight down, and keep it still."));
+    m_text->setText(m_withTrunk
+                        ? tr("Sit upright with your back against the chair, let your arm hang "
+                             "loosely straight down, and keep still.")
+                        : tr("Let your arm hang loosely straight down, and keep it still."));
   } else if (t < rest + bends * bend) {
     const int n = std::min(bends, static_cast<int>((t - rest) / bend) + 1);
     m_title->setText(tr("Bend your elbow: %1 of %2").arg(n).arg(bends));
@@ -215,6 +221,7 @@ void SensorCheckScreen::drain() {
   static const SensorCheckTrajectory guide;
   m_arm->setTargetPose(guide.at(t).th);
   m_arm->setPose(m_rows.back().th);
+  m_arm->setTrunk(m_rows.back().trunk);
   m_arm->updateIfChanged();
   if (t >= SensorCheckTrajectory::duration() + kEndMarginS) {
     m_timer.stop();
@@ -241,7 +248,9 @@ void SensorCheckScreen::showResult(const SensorCheckResult& r) {
   if (r.ok()) {
     setState(State::Passed);
     m_title->setText(tr("The sensors are right"));
-    m_text->setText(tr("Both sensors are on the right places and the right way round."));
+    m_text->setText(std::isfinite(r.trunkAngleDeg)
+                        ? tr("All three sensors are on the right places and the right way round.")
+                        : tr("Both sensors are on the right places and the right way round."));
     setBanner(m_banner, tr("Well done."), Tone::Good);
     m_picture->setFindings({});
     return;
@@ -271,6 +280,10 @@ QString SensorCheckScreen::explain(const SensorCheckResult& r) {
       return tr(
           "No data came from the forearm sensor. Check that it is switched on and "
           "charged, then press Check again.");
+    case SensorCheckStatus::MissingTrunk:
+      return tr(
+          "No data came from the chest sensor. Check that it is switched on and charged, "
+          "then press Check again.");
     case SensorCheckStatus::NotStill:
       return tr(
           "Your arm was not still at the start. Let it hang loosely and keep it still "
@@ -311,6 +324,14 @@ QString SensorCheckScreen::explain(const SensorCheckResult& r) {
     lines << tr(
         "The sensor on your forearm sits crooked, or your elbow was not straight. "
         "Straighten the strap and let your arm hang loosely.");
+  if (r.has(SensorFinding::TrunkUpsideDown))
+    lines << tr(
+        "The chest sensor seems to be on upside down. Turn it the other way up, as your "
+        "therapist showed you, and sit upright.");
+  if (r.has(SensorFinding::TrunkTurned))
+    lines << tr("The chest sensor seems to be turned: it sits %1\u00b0 off. Put it flat on the "
+                "middle of your breastbone, the way your therapist showed you, and sit upright.")
+                 .arg(std::lround(r.trunkAngleDeg));
   return lines.join(u'\n');
 }
 

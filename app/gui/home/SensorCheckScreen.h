@@ -77,6 +77,7 @@ class SensorCheckScreen : public HomeScreen {
   State m_state = State::Ready;
   std::optional<SensorCheckResult> m_result;
   int m_generation = 0;
+  bool m_withTrunk = false;  // the check's session has a sternum sensor
   QTimer m_timer;
   std::vector<session::EstimateRow> m_rows;
 

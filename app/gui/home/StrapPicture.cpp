@@ -201,6 +201,9 @@ void StrapPicture::describe() {
       case SensorFinding::ForearmTilted:
         parts << tr("Now the sensor on the forearm sits crooked.");
         break;
+      case SensorFinding::TrunkUpsideDown:
+      case SensorFinding::TrunkTurned:
+        break;  // the chest sensor is not in the arm's picture; the text says what to do
     }
   }
   parts.prepend(m_side == Side::Left ? tr("Your left arm, seen from the side.")

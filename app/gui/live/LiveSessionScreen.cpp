@@ -451,6 +451,7 @@ void LiveSessionScreen::showEstimates(const std::vector<session::EstimateRow>& r
   if (m_sessionTime - m_lastOptical > kOpticalShownSeconds) m_marks = {};
   m_plots->append(m_samples);
   m_arm->setPose(last.th);
+  m_arm->setTrunk(last.trunk);  // the sternum sensor's estimate; none: upright
   m_arm->setOptical(m_marks);
   m_reps->showCount(m_counter);
   m_trunk->refresh();

@@ -1,5 +1,6 @@
 #include "app/gui/newsession/LiveConfig.h"
 
+#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 
@@ -28,7 +29,11 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
     if (l.forearmStrapM) c.meta.geometry.lf6 = *l.forearmStrapM;
   }
   // A sensor calibration made for this session brings the arm's fitted lengths and mounting.
-  if (calibration && calibration->side == c.meta.side) c.meta.geometry = calibration->geometry;
+  if (calibration && calibration->side == c.meta.side) {
+    c.meta.geometry = calibration->geometry;
+    // And the sternum sensor's mounting levelled from the start pose, for the same sensor.
+    if (calibration->trunk && hasSternumSensor(devices)) c.meta.trunk = calibration->trunk;
+  }
   c.estimator.filter = settings.filter == QLatin1String("ukf") ? FilterKind::Ukf : FilterKind::Ekf;
   try {
     c.estimator.model = parseMethod(settings.method.toStdString());
@@ -42,6 +47,14 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
     c.trunkLimitDeg = plan.protocol->trunkLimitDeg;
   }
   return c;
+}
+
+bool hasSternumSensor(const QStringList& devices) {
+  // "virtual-arm:sensors=upper+forearm+trunk,...", "shimmer:port=...,role=trunk".
+  static const QRegularExpression sternum(
+      QStringLiteral("[:,](?:sensors=(?:[^,]*\\+)?trunk|role=(?:trunk|sternum))(?:[+,]|$)"));
+  return std::any_of(devices.begin(), devices.end(),
+                     [](const QString& d) { return sternum.match(d).hasMatch(); });
 }
 
 QStringList demoDevicesFor(const SessionPlan& plan) {

@@ -12,7 +12,12 @@ SensorCheckResult judgeSensorCheck(const std::filesystem::path& csv,
                                    const SensorCheckParams& params) {
   SensorCheckResult r;
   try {
-    r = checkSensors(readRecording(csv).samples, params);
+    const Recording rec = readRecording(csv);
+    // A check recorded with a sternum sensor judges it too, against the mounting the session
+    // assumed for it (the recording's sidecar).
+    SensorCheckParams p = params;
+    if (!p.trunk && rec.meta.trunk) p.trunk = rec.meta.trunk;
+    r = checkSensors(rec.samples, p);
   } catch (const std::exception& e) {
     r.status = SensorCheckStatus::MissingUpperArm;
     r.explanation = e.what();

@@ -10,8 +10,10 @@
 
 namespace armtrack::gui {
 
-/// Reads csv and judges it. A recording that cannot be read comes back as MissingUpperArm with
-/// the reading's error as the explanation (nothing to judge on).
+/// Reads csv and judges it; with a sternum sensor in the recording (its sidecar's trunk block)
+/// and none in params, that sensor is judged against the sidecar's mounting. A recording that
+/// cannot be read comes back as MissingUpperArm with the reading's error as the explanation
+/// (nothing to judge on).
 SensorCheckResult judgeSensorCheck(const std::filesystem::path& csv,
                                    const SensorCheckParams& params);
 

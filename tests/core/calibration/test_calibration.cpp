@@ -213,6 +213,55 @@ TEST_F(CalibrationFile, RoundTrip) {
   EXPECT_EQ(r.heldFixed, c.heldFixed);
 }
 
+TEST_F(CalibrationFile, SternumMountRoundTripsAndAnImpossibleOneIsRefused) {
+  Calibration c;
+  TrunkMount m;
+  m.imuPosition = Eigen::Vector3d(0.1, 0.07, -0.18);
+  m.imuRotation = randomMisalignment(20 * kDeg, 9);
+  c.trunk = m;
+  const fs::path p = m_dir / "trunk.json";
+  writeCalibration(p, c);
+  const Calibration r = readCalibration(p);
+  ASSERT_TRUE(r.trunk);
+  EXPECT_TRUE(r.trunk->imuRotation.isApprox(m.imuRotation, 1e-14));
+  EXPECT_EQ(r.trunk->imuPosition, m.imuPosition);
+  // Without one, none comes back (and older files have none).
+  writeCalibration(p, Calibration{});
+  EXPECT_FALSE(readCalibration(p).trunk);
+  // Not a rotation: refused on writing and on reading.
+  c.trunk->imuRotation(0, 0) = 3.0;
+  EXPECT_THROW(writeCalibration(m_dir / "bad.json", c), CalibrationError);
+  const std::string file =
+      "{\"format\": \"armtrack-calibration\", \"version\": 1, \"geometry\": {\"l3\": 0.22, "
+      "\"l6\": 0.2, \"lu3\": 0.11, \"thu4\": 1.57, \"lu5\": 0.02, \"lf6\": 0.2, \"thf7\": "
+      "1.57, \"lf8\": 0.01}, \"trunk\": {\"imu_position\": [0, 0, 0], \"imu_rotation\": ";
+  for (const std::string& rot : {std::string("[2, 0, 0, 0, 1, 0, 0, 0, 1]"),
+                                 std::string("[1, 0, 0]"), std::string("\"x\"")}) {
+    const fs::path bad = write("bad_trunk.json", file + rot + "}}");
+    try {
+      readCalibration(bad);
+      ADD_FAILURE() << "no exception for " << rot;
+    } catch (const CalibrationError& e) {
+      EXPECT_NE(std::string(e.what()).find("trunk"), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(CalibrationApply, SternumMountOnlyForARecordingWithASternumSensor) {
+  Calibration c;
+  TrunkMount m;
+  m.imuRotation = randomMisalignment(10 * kDeg, 3);
+  c.trunk = m;
+  RecordingMeta without;
+  applyCalibration(c, without);
+  EXPECT_FALSE(without.trunk);  // no sternum sensor: the estimator stays without a trunk
+  RecordingMeta with;
+  with.trunk = defaultTrunkMount(Side::Right);
+  applyCalibration(c, with);
+  ASSERT_TRUE(with.trunk);
+  EXPECT_TRUE(with.trunk->imuRotation.isApprox(m.imuRotation));
+}
+
 TEST_F(CalibrationFile, ErrorsNameTheFileAndTheProblem) {
   auto expectError = [&](const fs::path& p, const std::string& what) {
     try {

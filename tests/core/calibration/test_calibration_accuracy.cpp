@@ -85,6 +85,33 @@ JointVector estimateRmseDeg(const Recording& rec) {
   return acc.rmse() / kDeg;
 }
 
+// The protocol recorded with a sternum sensor tilted 9 deg from the mounting the sidecar assumes:
+// the calibration levels it from the still start pose (within 1 deg), heading kept.
+TEST(CalibrationAccuracy, SternumSensorTiltFromTheStartPose) {
+  const CalibrationProtocolTrajectory traj;
+  SimulationParams sim = defaultSimulation();
+  sim.duration = traj.duration();
+  sim.seed = 31;
+  sim.trunkImu.enabled = true;
+  sim.trunkImu.rateHz = 200;
+  const TrunkMount assumed = defaultSimulatedTrunkMount(Side::Right);
+  const Eigen::Matrix3d tilt =
+      Eigen::AngleAxisd(9.0 * kDeg, Eigen::Vector3d(0, 0.6, 0.8)).toRotationMatrix();
+  TrunkMount worn = assumed;
+  worn.imuRotation = tilt * assumed.imuRotation;
+  sim.trunkMount = worn;
+  Recording rec = simulateRecording(traj, sim);
+  rec.meta.trunk = assumed;  // what the session assumed
+  const CalibrationResult r = calibrate(rec);
+  printResult(r);
+  ASSERT_TRUE(r.calibration.trunk);
+  EXPECT_LT(angleBetweenDeg(r.calibration.trunk->imuRotation, worn.imuRotation), 1.0);
+  EXPECT_TRUE(r.calibration.trunk->imuPosition.isApprox(assumed.imuPosition));
+  // Applied to a recording with a sternum sensor, its mounting is the calibrated one.
+  applyCalibration(r.calibration, rec.meta);
+  EXPECT_TRUE(rec.meta.trunk->imuRotation.isApprox(r.calibration.trunk->imuRotation));
+}
+
 TEST(CalibrationAccuracy, CalibratedMisalignmentEstimatesLikePerfectMounting) {
   // 10 deg mounting error about a random axis per IMU and 0.5 deg/s gyro bias on every axis.
   Truth truth;

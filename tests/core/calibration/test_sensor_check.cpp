@@ -195,3 +195,70 @@ TEST(SensorCheck, GarbageIsSkippedNotTrusted) {
   EXPECT_EQ(r.findings, findings({SensorFinding::Swapped})) << r.explanation;
   EXPECT_TRUE(std::isfinite(r.upperMotionRadS));
 }
+
+namespace {
+
+// The check with a sternum sensor worn as `worn` (frame 0 axes) while the check expects the
+// simulator's default mounting.
+SensorCheckResult checkWithSternum(Side side, const Eigen::Matrix3d& turn, bool send = true) {
+  SimulationParams sim = defaultSimulation();
+  sim.duration = SensorCheckTrajectory::duration();
+  sim.side = side;
+  sim.seed = 11;
+  sim.kinect.enabled = false;
+  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
+  sim.trunkImu.enabled = send;
+  sim.trunkImu.gyroBias = Eigen::Vector3d(0.006, -0.008, 0.005);
+  const TrunkMount expected = defaultSimulatedTrunkMount(side);
+  TrunkMount worn = expected;
+  worn.imuRotation = turn * expected.imuRotation;
+  sim.trunkMount = worn;
+  SensorCheckParams p;
+  p.side = side;
+  p.trunk = expected;
+  return checkSensors(simulateRecording(SensorCheckTrajectory(), sim).samples, p);
+}
+
+Eigen::Matrix3d aboutForward(double deg) {
+  return Eigen::AngleAxisd(deg * kPi / 180.0, Eigen::Vector3d::UnitY()).toRotationMatrix();
+}
+
+}  // namespace
+
+TEST(SensorCheck, SternumSensorWornRightPassesOnBothArms) {
+  for (Side side : {Side::Right, Side::Left}) {
+    const SensorCheckResult r = checkWithSternum(side, Eigen::Matrix3d::Identity());
+    SCOPED_TRACE(sideName(side) + ": " + r.explanation);
+    EXPECT_TRUE(r.ok());
+    EXPECT_LT(r.trunkAngleDeg, 3.0);
+    // A little crooked (15 deg) is within the tolerance.
+    const SensorCheckResult crooked = checkWithSternum(side, aboutForward(15));
+    EXPECT_TRUE(crooked.ok()) << crooked.explanation;
+    EXPECT_NEAR(crooked.trunkAngleDeg, 15.0, 2.0);
+  }
+}
+
+TEST(SensorCheck, SternumSensorUpsideDownOrTurnedIsFound) {
+  for (Side side : {Side::Right, Side::Left}) {
+    SensorCheckResult r = checkWithSternum(side, aboutForward(180));
+    EXPECT_EQ(r.findings, findings({SensorFinding::TrunkUpsideDown})) << r.explanation;
+    EXPECT_GT(r.trunkAngleDeg, 170.0);
+    r = checkWithSternum(side, aboutForward(40));
+    EXPECT_EQ(r.findings, findings({SensorFinding::TrunkTurned})) << r.explanation;
+    EXPECT_NEAR(r.trunkAngleDeg, 40.0, 2.0);
+    // Turned 90 deg about the vertical: gravity still reads along the same axis.
+    r = checkWithSternum(side, Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitX()).matrix());
+    EXPECT_TRUE(r.ok()) << r.explanation;
+  }
+}
+
+TEST(SensorCheck, SternumSensorExpectedButSilentOrNotExpected) {
+  SensorCheckResult r = checkWithSternum(Side::Right, Eigen::Matrix3d::Identity(), false);
+  EXPECT_EQ(r.status, SensorCheckStatus::MissingTrunk);
+  EXPECT_FALSE(r.ok());
+  // Without an expected mounting the sternum readings are not judged (an arm-only check).
+  Wearing w;
+  r = check(w);
+  EXPECT_TRUE(r.ok());
+  EXPECT_TRUE(std::isnan(r.trunkAngleDeg));
+}

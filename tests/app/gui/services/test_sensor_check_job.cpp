@@ -1,10 +1,12 @@
 // The home window's sensor check judged off the GUI thread (app/gui/services/SensorCheckJob), on
 // simulated check recordings written to a file as the home window writes them: worn right,
 // swapped, and files that are not recordings at all.
+#include <Eigen/Geometry>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QTest>
 #include <QThread>
+#include <cmath>
 #include <fstream>
 
 #include "app/gui/services/SensorCheckJob.h"
@@ -28,6 +30,27 @@ std::filesystem::path simulatedCheck(const QTemporaryDir& dir, const char* name,
   Recording rec = simulateRecording(SensorCheckTrajectory(), sim);
   if (swapped)
     for (ArmSample& s : rec.samples) std::swap(s.upperArm, s.forearm);
+  const std::filesystem::path csv = dir.filePath(QString::fromLatin1(name)).toStdString();
+  writeRecording(csv, rec);
+  return csv;
+}
+
+// A check with a sternum sensor worn turned by `turn` from the mounting the session assumed
+// (the sidecar's trunk block, as a live session writes it).
+std::filesystem::path simulatedCheckWithSternum(const QTemporaryDir& dir, const char* name,
+                                                const Eigen::Matrix3d& turn) {
+  SimulationParams sim = defaultSimulation();
+  sim.duration = SensorCheckTrajectory::duration();
+  sim.seed = 5;
+  sim.kinect.enabled = false;
+  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
+  sim.trunkImu.enabled = true;
+  const TrunkMount assumed = defaultSimulatedTrunkMount(sim.side);
+  TrunkMount worn = assumed;
+  worn.imuRotation = turn * assumed.imuRotation;
+  sim.trunkMount = worn;
+  Recording rec = simulateRecording(SensorCheckTrajectory(), sim);
+  rec.meta.trunk = assumed;
   const std::filesystem::path csv = dir.filePath(QString::fromLatin1(name)).toStdString();
   writeRecording(csv, rec);
   return csv;
@@ -61,6 +84,19 @@ class TestSensorCheckJob : public QObject {
     const SensorCheckResult r = judgeOnJob(job, simulatedCheck(dir, "swapped.csv", true));
     QCOMPARE(r.status, SensorCheckStatus::Judged);
     QVERIFY(r.has(SensorFinding::Swapped));
+  }
+
+  void sternumSensorIsJudgedFromTheRecording() {
+    QTemporaryDir dir;
+    SensorCheckJob job;
+    SensorCheckResult r =
+        judgeOnJob(job, simulatedCheckWithSternum(dir, "trunk.csv", Eigen::Matrix3d::Identity()));
+    QVERIFY2(r.ok(), r.explanation.c_str());
+    QVERIFY(r.trunkAngleDeg < 3.0);  // judged, not NaN
+    // Turned end over end on the chest: found, from the sidecar's mounting alone.
+    const Eigen::Matrix3d over = Eigen::AngleAxisd(M_PI, Eigen::Vector3d::UnitY()).matrix();
+    r = judgeOnJob(job, simulatedCheckWithSternum(dir, "over.csv", over));
+    QCOMPARE(r.findings, std::vector<SensorFinding>{SensorFinding::TrunkUpsideDown});
   }
 
   void notARecording() {

@@ -1,0 +1,70 @@
+// The new session's device check with a third sensor: the virtual arm's sternum IMU is listed as
+// the trunk (sternum) sensor with its rate and health like the arm sensors; screenshots at
+// 1024 x 600 in English and German.
+#include <QLineEdit>
+#include <QListWidget>
+#include <QSignalSpy>
+#include <QTest>
+
+#include "app/gui/newsession/DevicesPage.h"
+#include "app/i18n/Language.h"
+#include "app/plugins/PluginRegistry.h"
+#include "tests/support/GuiTestMain.h"
+#include "ui/DeviceHealthPanel.h"
+#include "ui/DeviceOptionsForm.h"
+
+using namespace armtrack;
+
+class TestTrunkDeviceCheck : public QObject {
+  Q_OBJECT
+
+  app::PluginRegistry m_registry;
+
+ private slots:
+  void initTestCase() {
+    m_registry.load({QStringLiteral(ARMTRACK_PLUGIN_DIR)});
+    QVERIFY2(m_registry.plugin(QStringLiteral("virtual-arm")), "virtual-arm plugin not built");
+  }
+
+  void sternumSensorIsListedWithItsRateAndHealth() {
+    app::gui::DevicesPage page(m_registry, app::gui::LiveSessionConfig{});
+    page.resize(1024, 600);
+    page.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&page));
+    const auto items =
+        page.pluginList()->findItems(QStringLiteral("virtual-arm"), Qt::MatchExactly);
+    QCOMPARE(items.size(), 1);
+    page.pluginList()->setCurrentItem(items.front());
+    items.front()->setCheckState(Qt::Checked);
+    QLineEdit* sensors = page.optionsForm()->edit(QStringLiteral("sensors"));
+    QVERIFY(sensors);
+    sensors->setText(QStringLiteral("upper+forearm+kinect+trunk"));
+    QSignalSpy finished(&page, &app::gui::DevicesPage::checkFinished);
+    page.checkButton()->click();
+    QVERIFY(finished.wait(20000));
+    QVERIFY2(finished.at(0).at(0).toBool(), qPrintable(finished.at(0).at(1).toString()));
+    const ui::DeviceHealthModel* health = page.health()->model();
+    int trunkRow = -1;
+    for (int row = 0; row < health->rowCount(); ++row)
+      if (health->data(health->index(row, ui::DeviceHealthModel::Stream)).toString() ==
+          QStringLiteral("Trunk (sternum) sensor"))
+        trunkRow = row;
+    QVERIFY2(trunkRow >= 0, "no trunk (sternum) sensor row");
+    QCOMPARE(health->rowCount(), 5);  // upper, forearm, trunk, Kinect, truth
+    QTRY_VERIFY_WITH_TIMEOUT(page.health()->tracker().allOk(), 5000);
+    // Its rate is the arm IMUs' (1 kHz), in the summary too.
+    QVERIFY2(page.statusText().contains(QStringLiteral("Trunk (sternum) sensor")),
+             qPrintable(page.statusText()));
+    test::saveScreenshot(test::grabFromScreen(&page), QStringLiteral("new_session_devices_trunk"));
+    i18n::setLanguage(QStringLiteral("de"));
+    QCoreApplication::processEvents();
+    QTest::qWait(1200);  // the health table's next refresh, in German
+    test::saveScreenshot(test::grabFromScreen(&page),
+                         QStringLiteral("new_session_devices_trunk_de"));
+    i18n::setLanguage(QStringLiteral("en"));
+    page.stopCheck();
+  }
+};
+
+ARMTRACK_GUI_TEST_MAIN(TestTrunkDeviceCheck)
+#include "test_trunk_device_check.moc"
