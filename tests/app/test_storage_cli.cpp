@@ -359,8 +359,9 @@ TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
 // works.
 TEST_P(StorageCli, OlderSchemaNeedsDbMigrate) {
   addPatients();
-  // Version 7's column, version 6's triggers, indexes, tables and columns, then those of
-  // versions 2 to 4.
+  // Version 8's column (the programmes table goes with versions 2 to 4 below), version 7's,
+  // version 6's triggers, indexes, tables and columns, then those of versions 2 to 4.
+  sql({"ALTER TABLE protocols DROP COLUMN trunk_limit_deg"});
   sql({"ALTER TABLE users DROP COLUMN disabled"});
   if (m_engine == Engine::Postgres)
     sql({"DROP TRIGGER audit_log_no_change ON audit_log",
