@@ -40,15 +40,6 @@ class Options {
   QStringList m_problems;
 };
 
-/// Declares that an Optical stream's samples carry the shoulder (OpticalPositions::shoulder, in
-/// the world frame), so that the session records the shoulder_* columns (StreamInfo::shoulder).
-/// Written to compile before StreamInfo has that flag (it comes with the live session's trunk
-/// work); once it has, this is a plain `info.shoulder = true`.
-template <class Info>
-void declareShoulder(Info& info) {
-  if constexpr (requires { info.shoulder = true; }) info.shoulder = true;
-}
-
 /// Where an IMU of this role is worn, as the start of a stream's name: "upper-arm", "forearm" or
 /// "trunk" (e.g. "trunk Shimmer3").
 const char* imuPlaceName(StreamRole role);

@@ -51,7 +51,7 @@ StreamInfo opticalStream(const KinectSettings& s) {
   StreamInfo info{"Kinect elbow and wrist", StreamRole::Optical, 30.0, 0.0, std::nullopt};
   if (s.shoulderHsv || s.shoulderId) {
     info.name = "Kinect elbow, wrist and shoulder";
-    declareShoulder(info);
+    info.shoulder = true;  // the session records shoulder_* (StreamInfo::shoulder)
   }
   return info;
 }

@@ -24,7 +24,7 @@ StreamInfo opticalStream(Origin origin) {
     info.name = "tracker elbow and wrist";
   } else {
     info.name = "tracker elbow, wrist and shoulder";
-    declareShoulder(info);
+    info.shoulder = true;  // the session records shoulder_* (StreamInfo::shoulder)
   }
   return info;  // the tracker's rate is unknown here; its time does not wrap
 }

@@ -5,7 +5,6 @@
 #include "devices/api/Options.h"
 
 using armtrack::StreamRole;
-using armtrack::devices::declareShoulder;
 using armtrack::devices::Options;
 
 TEST(Options, ParseSplitsPairsAndBareKeysAreOn) {
@@ -83,23 +82,4 @@ TEST(Options, ImuRoleTrunkIsTheSternumSensor) {
     EXPECT_TRUE(o.error().contains(QStringLiteral("must be upper, forearm or trunk")))
         << text << ": " << o.error().toStdString();
   }
-}
-
-namespace {
-struct WithShoulder {
-  bool shoulder = false;
-};
-struct WithoutShoulder {
-  int other = 0;
-};
-}  // namespace
-
-// An optical stream declares its shoulder where StreamInfo can say so, and compiles where not.
-TEST(Options, DeclareShoulderSetsTheFlagWhereThereIsOne) {
-  WithShoulder a;
-  declareShoulder(a);
-  EXPECT_TRUE(a.shoulder);
-  WithoutShoulder b;
-  declareShoulder(b);
-  EXPECT_EQ(b.other, 0);
 }
