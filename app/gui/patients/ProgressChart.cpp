@@ -304,6 +304,14 @@ void ProgressChart::redraw() {
   const double spanDeg = (highest - lowest) / scale * kRadToDeg;
   const double step = (spanDeg > 200 ? 45 : 30) / kRadToDeg * scale;  // 30 or 45 deg
   y->setRange(std::floor(lowest * 1.05 / step) * step, std::ceil(highest * 1.05 / step) * step);
+  showChart(chart, x, y, step);
+}
+
+// The largest trunk flexion per session: how far the patient leaned to reach, which therapy means
+// to reduce (no normal range: ideally none at all).
+// Puts the axes on the chart (y ticked every step from 0, in the unit shown), attaches every
+// series to them and shows the chart in place of the old one.
+void ProgressChart::showChart(QChart* chart, QAbstractAxis* x, QValueAxis* y, double step) {
   y->setTickType(QValueAxis::TicksDynamic);
   y->setTickAnchor(0);
   y->setTickInterval(step);
@@ -319,8 +327,6 @@ void ProgressChart::redraw() {
   delete old;
 }
 
-// The largest trunk flexion per session: how far the patient leaned to reach, which therapy means
-// to reduce (no normal range: ideally none at all).
 void ProgressChart::redrawTrunk() {
   const double scale = m_radians ? 1.0 / kRadToDeg : 1.0;  // from degrees
   const QString unit = m_radians ? tr("rad") : tr("\u00b0");
@@ -368,19 +374,7 @@ void ProgressChart::redrawTrunk() {
   y->setTitleText(tr("Largest trunk flexion (%1)").arg(unit));
   const double step = 5 * scale;  // 5 deg
   y->setRange(0, std::ceil(highest * 1.1 / step) * step);
-  y->setTickType(QValueAxis::TicksDynamic);
-  y->setTickAnchor(0);
-  y->setTickInterval(step);
-  y->setLabelFormat(m_radians ? QStringLiteral("%.2f") : QStringLiteral("%.0f"));
-  chart->addAxis(x, Qt::AlignBottom);
-  chart->addAxis(y, Qt::AlignLeft);
-  for (QAbstractSeries* s : chart->series()) {
-    s->attachAxis(x);
-    s->attachAxis(y);
-  }
-  QChart* old = m_view->chart();
-  m_view->setChart(chart);
-  delete old;
+  showChart(chart, x, y, step);
 }
 
 }  // namespace armtrack::gui

@@ -19,6 +19,8 @@
 class QChart;
 class QBoxLayout;
 class QChartView;
+class QAbstractAxis;
+class QValueAxis;
 class QComboBox;
 class QLabel;
 class QStandardItemModel;
@@ -69,6 +71,7 @@ class ProgressChart : public QWidget {
   void retranslateUi();
   void redraw();
   void redrawTrunk();
+  void showChart(QChart* chart, QAbstractAxis* x, QValueAxis* y, double step);
   void fillChooser();
   Motion current() const;
 
