@@ -96,6 +96,7 @@ JointEstimate ArmFilter<N>::estimate() const {
   const double shortfall = headingShortfall(u);
   JointVector var = m_P.diagonal().template segment<5>(10) + shortfall * hu.cwiseAbs2();
   addHeadingCurvature(e.th, headingVariance(u) + shortfall, hu, var);
+  addTrunkVariance(e.th, var);
   e.thStd = var.cwiseMax(0.0).cwiseSqrt();
   return e;
 }

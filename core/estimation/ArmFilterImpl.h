@@ -118,6 +118,9 @@ class ArmFilter final : public JointEstimator {
   // ArmFilterTrunk.cpp: a moving trunk
   void applyTrunk(ArmSample& s);
   double trunkPositionVariance(const Eigen::Vector3d& p) const;
+  // The variance the arm's angles relative to the thorax take from the trunk's uncertain
+  // orientation, added to var (rad^2).
+  void addTrunkVariance(const JointVector& th, JointVector& var) const;
 
   // ArmFilterOptical.cpp: the optical rows' gate and heading matching
   bool gateOptical(BlockList& b);

@@ -40,7 +40,10 @@ constexpr double kShoulderTau = 0.1;
 }  // namespace
 
 TrunkTracker::TrunkTracker(const TrunkTrackerParams& p) : m_p(p) {
-  m_P = Eigen::Matrix3d::Identity() * kStartTiltStd * kStartTiltStd;
+  // The world is the trunk's start pose, so the start leaves no doubt about the heading: only
+  // the inclination (how gUp sits in frame 0) is uncertain.
+  const Eigen::Vector3d u = p.gUp.normalized();
+  m_P = (Eigen::Matrix3d::Identity() - u * u.transpose()) * kStartTiltStd * kStartTiltStd;
   const double info = 1.0 / (p.hipPriorStd * p.hipPriorStd);
   const double offsetInfo = 1.0 / (p.shoulderOffsetStd * p.shoulderOffsetStd);
   m_fitInfo.setZero();
@@ -177,6 +180,8 @@ void TrunkTracker::updateShoulder() {
     const Eigen::Matrix3d turn = skew(rot * m_hip);
     const Eigen::Matrix3d cov = a * m_hipCov * a.transpose() + turn * m_P * turn.transpose();
     m_state.shoulderVariance = kShoulderModelFactor * cov.trace() / 3.0;
+    m_state.hip = m_hip;
+    m_state.hipCov = m_hipCov;
   } else if (m_haveShoulder) {
     m_state.shoulder = m_shoulderSmooth - m_reference;
     // The low-pass's noise: about tau / dt frames averaged (Kinect at 30 Hz).

@@ -30,10 +30,10 @@
 namespace armtrack::detail {
 
 struct TrunkTrackerParams {
-  TrunkMount mount;                                   ///< the sternum IMU, frame 0 at start
-  Eigen::Vector3d gUp{-9.81, 0.0, 0.0};               ///< world, frame-0 axes (m/s^2)
-  Eigen::Vector3d hipPrior{0.45, 0.0, -0.15};         ///< m: below and medial (right arm)
-  double hipPriorStd = 0.10;                          ///< m, per axis
+  TrunkMount mount;                            ///< the sternum IMU, frame 0 at start
+  Eigen::Vector3d gUp{-9.81, 0.0, 0.0};        ///< world, frame-0 axes (m/s^2)
+  Eigen::Vector3d hipPrior{0.45, 0.0, -0.15};  ///< m: below and medial (right arm)
+  double hipPriorStd = 0.10;                   ///< m, per axis
   /// The optical shoulder's constant offset from the model's shoulder centre (a skeleton's
   /// shoulder joint need not sit at the centre, only move with it): prior std, m per axis.
   double shoulderOffsetStd = 0.05;
@@ -54,6 +54,8 @@ struct TrunkState {
   Eigen::Matrix3d rotationCov = Eigen::Matrix3d::Zero();   ///< rad^2, small rotation, world
   Eigen::Vector3d shoulder = Eigen::Vector3d::Zero();      ///< shoulder centre, world (m)
   double shoulderVariance = 0.0;                           ///< m^2 per axis
+  Eigen::Vector3d hip = Eigen::Vector3d::Zero();           ///< the pivot, world (m)
+  Eigen::Matrix3d hipCov = Eigen::Matrix3d::Zero();        ///< its covariance (m^2)
   FrameState<double> base;                                 ///< frame 0's motion, frame-0 axes
   double baseGyroVariance = 0.0;   ///< added to the arm gyroscopes' variance, (rad/s)^2
   double baseAccelVariance = 0.0;  ///< added to the arm accelerometers' at 1 m lever, (m/s^2)^2

@@ -147,13 +147,13 @@ TEST(TrunkAcceptance, WithSternumImuAndOpticsEveryAngleUnderOneDegree) {
         for (int j = 0; j < kNumJoints; ++j)
           EXPECT_LT(t.armRmseDeg()(j), 1.0) << "joint " << j;
         for (int i = 0; i < 3; ++i) EXPECT_LT(t.trunkRmseDeg()(i), 1.0) << "trunk angle " << i;
-        // Two-sigma coverage: the trunk's within 90-100 %; the arm's is 80-100 % on these seeds
-        // (docs/estimator.md, "Trunk": the 90 % the issue asks for is not yet met everywhere,
-        // and a still trunk with a Kinect gives 86-96 % on the same seeds). These bounds guard
-        // against a regression, they do not claim the target.
+        // Two-sigma coverage at least the 90 % the issue asks, trunk and arm. Measured 93-100 %
+        // (the arm's sd carries the trunk's pose uncertainty, ArmFilter::addTrunkVariance);
+        // the issue's upper 99 % is passed on slow reaches and with a webcam, where the arm
+        // filter's own sd is on the large side with a still trunk too (docs/estimator.md).
         for (int i = 0; i < 3; ++i) EXPECT_GE(t.trunkCoverage()(i), 0.90) << "trunk angle " << i;
         for (int j = 0; j < kNumJoints; ++j)
-          EXPECT_GE(t.armCoverage()(j), 0.75) << "joint " << j;
+          EXPECT_GE(t.armCoverage()(j), 0.90) << "joint " << j;
       }
     }
   }
