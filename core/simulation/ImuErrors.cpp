@@ -156,8 +156,10 @@ Eigen::Vector3d ImuErrorModel::accelBias() const {
 void ImuErrorModel::skipTo(double t) {
   if (!(t > 0.0) || m_started) return;
   m_time = t;
+  // The last internal sample at or before t is the first one taken: a row right after t holds a
+  // real reading, not an empty one.
   for (Channel* c : {&m_gyro, &m_accel})
-    c->next = static_cast<std::uint64_t>(std::max(0.0, std::ceil(t * c->rate - 1e-9)));
+    c->next = static_cast<std::uint64_t>(std::max(0.0, std::floor(t * c->rate + 1e-9)));
 }
 
 namespace {

@@ -491,6 +491,27 @@ TEST(RealisticSensors, SimulationIsDeterministicHoldsSamplesAndKeepsTheTruth) {
   EXPECT_EQ(same.upperArm.rateHz, 90.0);
 }
 
+// A live source joining a shared time base late (SensorStream::skipTo): its first rows already
+// hold readings (an accelerometer that has not sampled yet used to read exactly zero).
+TEST(RealisticSensors, AStreamThatSkipsAheadHoldsRealReadingsFromItsFirstRow) {
+  SimulationParams sim = defaultSimulation();
+  sim.duration = 20.0;
+  sim.kinect.enabled = false;
+  applySensorModel(SensorModel::Realistic, sim);
+  const auto traj = makeTrajectory("multi-joint", TrajectoryOptions{});
+  SensorStream stream(*traj, sim);
+  stream.skipTo(10.013);
+  for (int i = 0; i < 10; ++i) {
+    const std::optional<ArmSample> row = stream.next();
+    ASSERT_TRUE(row && row->upperArm && row->forearm);
+    EXPECT_GE(row->t, 10.013);
+    // At rest or moving gently, the specific force is near g; a missing sample would read 0.
+    EXPECT_NEAR(row->upperArm->acc.norm(), 9.81, 2.0) << row->t;
+    EXPECT_NEAR(row->forearm->acc.norm(), 9.81, 2.0) << row->t;
+    EXPECT_GT(row->upperArm->gyr.norm(), 0.0) << row->t;
+  }
+}
+
 TEST(RealisticSensors, ParsesTheModelAndRefusesOthers) {
   EXPECT_EQ(parseSensorModel("ideal"), SensorModel::Ideal);
   EXPECT_EQ(parseSensorModel("realistic"), SensorModel::Realistic);
