@@ -114,7 +114,8 @@ SimulationParams defaultSimulation();
 /// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading, and trueTrunk on those
 /// rows when the trunk moves or the sternum IMU is on. Throws
 /// std::invalid_argument on bad parameters (rate <= 0, negative std or duration, up not a unit
-/// vector, misalignment not a rotation, bad trunk motion or mounting).
+/// vector, misalignment not a rotation, bad trunk motion or mounting, an IMU's bad error
+/// parameters: checkImuErrors names them).
 Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params);
 
 /// The same simulation, one row at a time, for live sources (the virtual-arm device). With an
