@@ -101,6 +101,11 @@ Options:
   --accel-noise M_S2   accelerometer noise std, m/s^2 (default Table 5: 0.1)
   --gyro-bias RAD_S    constant gyroscope bias on every axis of every IMU (default 0)
   --misalignment DEG   IMU mounting error: rotation by DEG about a random axis per IMU (default 0)
+  --sensors MODEL      ideal (default: noise and bias only) or realistic: each IMU gets a real
+                       MEMS part's errors drawn from the seed (scale, cross-axis, walking and
+                       warming bias, g-sensitivity, 50 Hz gyroscope and 25 Hz accelerometer held
+                       on a 90 Hz clock unless --imu-rate is given, jitter, clock offset, range,
+                       LSB, strap wobble and slip; docs/simulation.md)
   --amplitude DEG      sinusoid: amplitude of every joint (default 28.6, i.e. 0.5 rad)
   --frequency HZ       sinusoid: frequency of every joint (default 0.5)
   --wheel-period S     shoulder-wheel: seconds per turn (default 4)
@@ -143,7 +148,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
                                    {"--gyro-bias", true},       {"--misalignment", true},
                                    {"--amplitude", true},       {"--frequency", true},
                                    {"--wheel-period", true},    {"--peak-rate", true},
-                                   {"--peak-accel", true},      {"--overwrite", false}};
+                                   {"--peak-accel", true},      {"--overwrite", false},
+                                   {"--sensors", true}};
   for (const OptionSpec& o : trunkOptionSpecs()) specs.push_back(o);
   const Args a("simulate", args, specs);
   if (a.help()) {
@@ -179,6 +185,13 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   sim.kinect.enabled = !a.flag("--no-kinect");
   applyTrunkOptions(a, sim, misalignDeg, err);
+  // After the trunk options, so that the sternum IMU draws its own errors.
+  try {
+    applySensorModel(parseSensorModel(a.value("--sensors").value_or("ideal")), sim,
+                     a.flag("--imu-rate") ? std::optional<double>(imuRate) : std::nullopt);
+  } catch (const std::invalid_argument& e) {
+    a.fail(std::string("--sensors: ") + e.what());
+  }
   if (const auto side = a.value("--side")) {
     try {
       sim.side = parseSide(*side);

@@ -23,7 +23,11 @@ enum class NoiseStream : std::uint32_t {
   kKinect = 3,
   kCamera = 4,
   kTrunk = 5,
-  kShoulder = 6
+  kShoulder = 6,
+  // The error models of the IMUs (only with ImuSimParams::errors on).
+  kUpperArmErrors = 7,
+  kForearmErrors = 8,
+  kTrunkErrors = 9
 };
 
 class Noise {
@@ -87,6 +91,7 @@ void checkImu(const ImuSimParams& p, const char* name) {
   if (!m.allFinite() || !(m.transpose() * m).isIdentity(1e-9) || m.determinant() < 0.0)
     throw std::invalid_argument(std::string("simulateRecording: ") + name +
                                 " misalignment must be a rotation matrix");
+  checkImuErrors(p.errors, p.rateHz, std::string("simulateRecording: ") + name);
 }
 
 ImuReading simulateImu(const ImuPrediction& ideal, const ImuSimParams& p, Noise& noise) {
@@ -210,6 +215,43 @@ struct SensorStream::Impl {
     mountPosition = twin.imuPosition;
     mountRotation = twin.imuRotation;
     if (p.trunkImu.enabled) meta.trunk = mount;
+    const auto model = [&](const ImuSimParams& imu, NoiseStream stream, const char* who) {
+      std::optional<ImuErrorModel> m;
+      if (imu.enabled && imu.errors.enabled)
+        m.emplace(imu, p.seed, static_cast<std::uint32_t>(stream), who);
+      return m;
+    };
+    upperErrors = model(p.upperArm, NoiseStream::kUpperArmErrors, "upper-arm IMU");
+    forearmErrors = model(p.forearm, NoiseStream::kForearmErrors, "forearm IMU");
+    trunkErrors = model(p.trunkImu, NoiseStream::kTrunkErrors, "sternum IMU");
+  }
+
+  // What an IMU's frame truly feels at time t (the error models' input): 0 upper arm, 1 forearm,
+  // 2 sternum, in the (mirror image's) model frames.
+  ImuTruth imuTruth(double t, int which) const {
+    const JointMotion m = trajectory->at(t);
+    FrameState<double> base;
+    base.up = gUp;
+    TrunkPose pose;
+    if (trunkMotion) {
+      pose = trunkPose(trunkMotion->at(t, *trajectory), params.side);
+      base = trunkBase(pose, hip, gUp);
+    }
+    if (which == 2) {
+      const ImuPrediction s = sternumPrediction(pose);
+      const Eigen::Matrix3d axes = pose.rotation * mountRotation;
+      return {s.gyr, s.acc, s.acc - axes.transpose() * gUp};
+    }
+    const ArmKinematics<double> k =
+        armKinematics<double>(params.geometry, m.th, m.thd, m.thdd, base);
+    const FrameState<double>& f = which == 0 ? k.upperImu : k.forearmImu;
+    return {f.omega, f.up + f.accel, f.accel};
+  }
+
+  ImuReading imuReading(std::optional<ImuErrorModel>& model, int which, double t,
+                        const ImuPrediction& ideal, const ImuSimParams& p, Noise& noise) {
+    if (!model) return simulateImu(ideal, p, noise);
+    return model->reading(t, [this, which](double tt) { return imuTruth(tt, which); });
   }
 
   double nextTime() const {
@@ -257,16 +299,16 @@ struct SensorStream::Impl {
     }
     ArmSample s;
     if (trunkDue) {
-      s.trunk = simulateImu(sternumPrediction(pose), params.trunkImu, trunkNoise);
+      s.trunk = imuReading(trunkErrors, 2, t, sternumPrediction(pose), params.trunkImu, trunkNoise);
       ++trunkClock.next;
     }
     s.t = t;
     if (upperDue) {
-      s.upperArm = simulateImu(ideal.upper, params.upperArm, upperNoise);
+      s.upperArm = imuReading(upperErrors, 0, t, ideal.upper, params.upperArm, upperNoise);
       ++upperClock.next;
     }
     if (forearmDue) {
-      s.forearm = simulateImu(ideal.forearm, params.forearm, forearmNoise);
+      s.forearm = imuReading(forearmErrors, 1, t, ideal.forearm, params.forearm, forearmNoise);
       if (!shared) ++forearmClock.next;
     }
     if (kinectDue) {
@@ -331,6 +373,7 @@ struct SensorStream::Impl {
   bool kinectShoulder = false, trueTrunk = false;
   Clock upperClock, forearmClock, kinectClock, cameraClock, trunkClock;
   Noise upperNoise, forearmNoise, kinectNoise, cameraNoise, trunkNoise, shoulderNoise;
+  std::optional<ImuErrorModel> upperErrors, forearmErrors, trunkErrors;
   Eigen::Vector3d gUp;
   // The hip pivot and the sternum IMU's mounting in the (mirror image's) frame 0.
   Eigen::Vector3d hip = Eigen::Vector3d::Zero(), mountPosition = Eigen::Vector3d::Zero();
@@ -356,6 +399,8 @@ void SensorStream::skipTo(double t) {
     const auto first = k >= static_cast<double>(c->count) ? c->count : static_cast<std::size_t>(k);
     c->next = std::max(c->next, first);
   }
+  for (std::optional<ImuErrorModel>* e : {&m->upperErrors, &m->forearmErrors, &m->trunkErrors})
+    if (*e) (*e)->skipTo(t);
 }
 const RecordingMeta& SensorStream::meta() const {
   return m->meta;

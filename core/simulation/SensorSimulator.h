@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "core/io/Recording.h"
+#include "core/simulation/ImuErrors.h"
 #include "core/simulation/Trajectory.h"
 #include "core/simulation/TrunkMotion.h"
 
@@ -30,6 +31,11 @@ struct ImuSimParams {
   /// Rotation of the physical sensor's axes relative to the model's IMU frame: the sensor reads
   /// misalignment^T * (model reading). Identity = perfectly mounted.
   Eigen::Matrix3d misalignment = Eigen::Matrix3d::Identity();
+  /// A real sensor's errors (scale, cross-axis, walking and drifting bias, g-sensitivity,
+  /// sample-and-hold, jitter, clock offset, range, LSB, wobble, slip; core/simulation/ImuErrors.h).
+  /// Off by default: the reading is then exactly the ideal one plus noise and bias. On, the white
+  /// noise is drawn per internal sample and rateHz is the output clock.
+  ImuErrorParams errors;
 };
 
 struct OpticalSimParams {
@@ -108,7 +114,8 @@ SimulationParams defaultSimulation();
 /// trueAngles (wrapped to (-pi, pi]) are set on rows with an IMU reading, and trueTrunk on those
 /// rows when the trunk moves or the sternum IMU is on. Throws
 /// std::invalid_argument on bad parameters (rate <= 0, negative std or duration, up not a unit
-/// vector, misalignment not a rotation, bad trunk motion or mounting).
+/// vector, misalignment not a rotation, bad trunk motion or mounting, an IMU's bad error
+/// parameters: checkImuErrors names them).
 Recording simulateRecording(const Trajectory& trajectory, const SimulationParams& params);
 
 /// The same simulation, one row at a time, for live sources (the virtual-arm device). With an

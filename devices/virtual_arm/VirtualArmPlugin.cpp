@@ -4,9 +4,11 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 
 #include "core/kinematics/ClinicalAngles.h"
+#include "core/simulation/ImuErrors.h"
 #include "core/simulation/TrunkOptions.h"
 #include "devices/api/Options.h"
 #include "devices/virtual_arm/VirtualArmDevice.h"
@@ -46,6 +48,10 @@ QString VirtualArmPlugin::optionsHelp() const {
       "noise=on                      the paper's Table 5 noise (off: noise-free)\n"
       "resolution=full               IMU converter: full (doubles), shimmer3 (65.5 counts per\n"
       "                              deg/s, 83 per m/s^2) or GYRO:ACC counts per deg/s, m/s^2\n"
+      "sensor-errors=ideal           ideal (noise only) or realistic: a real MEMS part's errors\n"
+      "                              drawn from the seed (scale, cross-axis, walking bias,\n"
+      "                              50/25 Hz held on a 90 Hz clock unless imu-rate is given,\n"
+      "                              wobble, slip; docs/simulation.md)\n"
       "truth=on                      a stream of the true joint angles beside the IMUs\n"
       "duration=0                    s of simulation, 0 = endless\n"
       "tick=0.002                    s between deliveries (the link's batching)\n"
@@ -96,6 +102,7 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
   p.swapImus = o.flag(QStringLiteral("swap-imus"), false);
   const QString upsideDown = o.text(QStringLiteral("upside-down"));
   const QString resolution = o.text(QStringLiteral("resolution"), QStringLiteral("full"));
+  const QString sensorErrors = o.text(QStringLiteral("sensor-errors"), QStringLiteral("ideal"));
   const QString battery = o.text(QStringLiteral("battery"), QStringLiteral("80"));
   p.batteryDrainPerMinute = o.number(QStringLiteral("battery-drain"), 1.0, 0.0, 100.0);
   const QString exercise = o.text(QStringLiteral("exercise"), QStringLiteral("elbow_flexion"));
@@ -181,6 +188,16 @@ std::unique_ptr<Device> VirtualArmPlugin::create(const QVariantMap& options, QSt
     applyTrunkSimOptions(trunk, p.sim);
   } catch (const std::invalid_argument& e) {
     problems << QString::fromStdString(e.what());
+  }
+  // The realistic preset as `armtrack-cli simulate --sensors realistic` applies it, after the
+  // sternum IMU is set so that it draws its own errors.
+  try {
+    applySensorModel(
+        parseSensorModel(sensorErrors.toStdString()), p.sim,
+        o.has(QStringLiteral("imu-rate")) ? std::optional<double>(imuRate) : std::nullopt);
+  } catch (const std::invalid_argument& e) {
+    problems << QStringLiteral("sensor-errors=%1: %2")
+                    .arg(sensorErrors, QString::fromStdString(e.what()));
   }
   p.sim.duration = duration > 0.0 ? duration : std::numeric_limits<double>::infinity();
   p.trajectory = trajectory.toStdString();
