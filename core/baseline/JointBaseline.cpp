@@ -108,20 +108,28 @@ void JointBaseline::restart() {
   m_up.reset();
   m_elbow.reset();
   m_restarted = true;
+  m_shoulderWait = m_elbowWait = 0.0;
 }
 
-void JointBaseline::take(Imu& imu, const ImuReading& r, double t, double tau) {
-  if (imu.seen && t > imu.t) {
-    const double dt = t - imu.t;
-    const Eigen::Vector3d raw = (r.gyr - imu.gyr) / dt;
-    imu.gyrDot += dt / (tau + dt) * (raw - imu.gyrDot);
-  } else {
-    imu.gyrDot.setZero();
+void JointBaseline::take(Imu& imu, const ImuReading& r, double t) {
+  const bool repeatGyr = m_p.repeatsAreStale && imu.seen && r.gyr == imu.gyr;
+  const bool repeatAcc = m_p.repeatsAreStale && imu.seen && r.acc == imu.acc;
+  m_counters.repeatedGyro += repeatGyr;
+  m_counters.repeatedAccel += repeatAcc;
+  if (!repeatGyr) {
+    if (imu.seen && t > imu.tGyr) {
+      const double dt = t - imu.tGyr;
+      const Eigen::Vector3d raw = (r.gyr - imu.gyr) / dt;
+      imu.gyrDot += dt / (m_p.omegaDotTau + dt) * (raw - imu.gyrDot);
+    } else {
+      imu.gyrDot.setZero();
+    }
+    imu.tGyr = t;
+    imu.gyr = r.gyr;
   }
-  imu.seen = true;
-  imu.t = t;
-  imu.gyr = r.gyr;
+  imu.newAcc = !repeatAcc;
   imu.acc = r.acc;
+  imu.seen = true;
 }
 
 bool JointBaseline::push(const ArmSample& sample, BaselineRow& row) {
@@ -147,8 +155,9 @@ bool JointBaseline::push(const ArmSample& sample, BaselineRow& row) {
     }
   }
   m_lastT = sample.t;
-  if (upperOk) take(m_upper, *sample.upperArm, sample.t, m_p.omegaDotTau);
-  if (foreOk) take(m_fore, *sample.forearm, sample.t, m_p.omegaDotTau);
+  m_upper.newAcc = m_fore.newAcc = false;
+  if (upperOk) take(m_upper, *sample.upperArm, sample.t);
+  if (foreOk) take(m_fore, *sample.forearm, sample.t);
 
   if (m_upper.seen) {
     if (!m_up) {
@@ -193,9 +202,13 @@ void JointBaseline::stepShoulder(double dt) {
   const Eigen::Vector3d fs =
       leverArmShift(m_upper.acc, w, m_upper.gyrDot, m_model.shoulderFromUpper);
   const double g = m_p.gUp.norm();
-  if (std::abs(fs.norm() - g) <= m_p.accelTolerance * g) {
-    const double k = dt / (m_p.timeConstant + dt);
-    up += k * (fs.normalized() - up);
+  m_shoulderWait += dt;
+  if (m_upper.newAcc) {
+    if (std::abs(fs.norm() - g) <= m_p.accelTolerance * g) {
+      const double k = m_shoulderWait / (m_p.timeConstant + m_shoulderWait);
+      up += k * (fs.normalized() - up);
+    }
+    m_shoulderWait = 0.0;
   }
   if (up.norm() > 0.0) m_up = up.normalized();
 }
@@ -216,11 +229,17 @@ void JointBaseline::stepElbow(double dt) {
       leverArmShift(m_fore.acc, m_fore.gyr, m_fore.gyrDot, m_model.elbowFromFore);
   const double g = m_p.gUp.norm();
   const double nu = fu.norm(), nf = ff.norm();
-  if (nu > 0.2 * g && nf > 0.2 * g && std::abs(nu - nf) <= m_p.accelTolerance * std::max(nu, nf)) {
-    const double k = dt / (m_p.timeConstant + dt);
+  m_elbowWait += dt;
+  if (!m_upper.newAcc && !m_fore.newAcc) {
+    // Both accelerometers repeat their last readings: nothing new to correct with.
+  } else if (nu > 0.2 * g && nf > 0.2 * g &&
+             std::abs(nu - nf) <= m_p.accelTolerance * std::max(nu, nf)) {
+    const double k = m_elbowWait / (m_p.timeConstant + m_elbowWait);
     th += k * elbowAccelStep(m_model, th(0), th(1), fu, ff, m_p.damping).step;
+    m_elbowWait = 0.0;
   } else {
-    ++m_counters.accelSkipped;
+    ++m_counters.accelSkipped;  // a new reading, refused: the wait starts again
+    m_elbowWait = 0.0;
   }
   m_elbow = Eigen::Vector2d(wrapAngle(th(0)), wrapAngle(th(1)));
 }

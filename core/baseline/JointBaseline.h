@@ -76,6 +76,12 @@ struct BaselineParams {
   /// The elbow centre relative to the forearm IMU (forearm axes, m) when it is known better than
   /// the sidecar's mounting says (e.g. from a joint-position calibration); empty: the sidecar's.
   std::optional<Eigen::Vector3d> elbowFromForearm;
+  /// Take a reading bit-identical to the sensor's previous one as the logger repeating it (a
+  /// gyroscope or accelerometer slower than the rows, held): it is not differenced for the
+  /// angular acceleration, and a repeated accelerometer does not correct the angles again (the
+  /// next new one corrects for the whole time since the last). Real sensors' noise makes an exact
+  /// repeat of a three-axis reading practically impossible otherwise.
+  bool repeatsAreStale = true;
 };
 
 /// One output row. Angles the recording cannot give are NaN.
@@ -97,6 +103,8 @@ struct BaselineCounters {
   std::size_t withoutForearm = 0;  ///< rows with an upper-arm reading and no forearm yet
   std::size_t withoutUpper = 0;    ///< rows with a forearm reading and no upper-arm yet
   std::size_t accelSkipped = 0;    ///< elbow corrections left out (accelerometers disagree)
+  std::size_t repeatedGyro = 0;    ///< gyroscope readings equal to the previous (held)
+  std::size_t repeatedAccel = 0;   ///< accelerometer readings equal to the previous (held)
 };
 
 /// The baseline, fed one sample at a time in time order. Not thread-safe.
@@ -111,12 +119,13 @@ class JointBaseline {
  private:
   struct Imu {
     bool seen = false;
-    double t = 0.0;
+    double tGyr = 0.0;    // when the gyroscope last read something new
+    bool newAcc = false;  // this row brought a new accelerometer reading
     Eigen::Vector3d gyr = Eigen::Vector3d::Zero(), acc = Eigen::Vector3d::Zero();
     Eigen::Vector3d gyrDot = Eigen::Vector3d::Zero();
   };
   void restart();
-  static void take(Imu& imu, const ImuReading& r, double t, double tau);
+  void take(Imu& imu, const ImuReading& r, double t);
   void stepShoulder(double dt);
   void stepElbow(double dt);
   void initElbow();
@@ -129,6 +138,8 @@ class JointBaseline {
   std::optional<Eigen::Vector3d> m_up;     // unit up vector in upper-IMU axes
   std::optional<Eigen::Vector2d> m_elbow;  // th4, th5
   bool m_restarted = true;
+  double m_shoulderWait = 0.0;  // s since the shoulder's last accelerometer correction
+  double m_elbowWait = 0.0;     // s since the elbow's
 };
 
 }  // namespace armtrack

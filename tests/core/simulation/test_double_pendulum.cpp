@@ -178,6 +178,25 @@ TEST(BaselineOnThePendulum, TracksTheHingeAndSwingWithIdealSensors) {
   EXPECT_LT(run.errors.pronation.peakDeg(), 0.01);
 }
 
+TEST(BaselineOnThePendulum, HeldReadingsAreTakenAsStale) {
+  PendulumSimParams p;
+  p.duration = 20.0;
+  p.outputRateHz = 90.0;
+  p.gyroRateHz = 50.0;
+  p.accelRateHz = 25.0;
+  const Recording rec = simulatePendulum(p);
+  const BaselineRun stale = runBaseline(rec, baselineParamsFor(rec.meta));
+  // 19 s of swing at 90 rows a second: 90 - 25 repeated accelerometer rows a second per IMU
+  // (and every row of the still second but the first).
+  EXPECT_NEAR(static_cast<double>(stale.counters.repeatedAccel), 2 * (19 * 65 + 89), 10);
+  EXPECT_NEAR(static_cast<double>(stale.counters.repeatedGyro), 2 * (19 * 40 + 89), 10);
+  BaselineParams asGiven = baselineParamsFor(rec.meta);
+  asGiven.repeatsAreStale = false;
+  const BaselineRun given = runBaseline(rec, asGiven);
+  EXPECT_LT(stale.errors.hinge.rmseDeg(), 3.0);
+  EXPECT_LT(stale.errors.hinge.rmseDeg(), 0.8 * given.errors.hinge.rmseDeg());
+}
+
 TEST(BaselineOnThePendulum, TheRightLeverArmMakesTheZeroIrrelevant) {
   PendulumSimParams p;
   p.duration = 10.0;
