@@ -110,32 +110,45 @@ std::vector<BaselineStudyRow> runBaselineStudy(const BaselineStudySetup& setup,
     std::string name;
     double outputHz, gyroHz, accelHz;
   };
-  const std::vector<Case> pendulumCases = {{"pendulum, ideal, 1 kHz", 1000.0, 0.0, 0.0},
-                                           {"pendulum, 50/25 Hz held on 90 Hz", 90.0, 50.0, 25.0}};
-  const int total = static_cast<int>(pendulumCases.size() * setup.zerosDeg.size()) +
+  const std::vector<Case> sensorCases = {{"ideal, 1 kHz", 1000.0, 0.0, 0.0},
+                                         {"50/25 Hz held on 90 Hz", 90.0, 50.0, 25.0}};
+  struct Release {
+    std::string name;
+    double swingDeg, hingeDeg;
+  };
+  // A lively release (the hinge beyond +-80 deg, the swing beyond 90) and a gentle one.
+  const std::vector<Release> releases = {{"pendulum 80/70", 80.0, 70.0},
+                                         {"pendulum 20/-20", 20.0, -20.0}};
+  const int total = static_cast<int>(releases.size() * sensorCases.size() * setup.zerosDeg.size()) +
                     std::max(0, setup.reachingRuns);
   int done = 0;
   std::vector<BaselineStudyRow> rows;
-  for (const Case& c : pendulumCases) {
-    for (double zero : setup.zerosDeg) {
-      PendulumSimParams sim;
-      sim.duration = setup.pendulumSeconds;
-      sim.outputRateHz = c.outputHz;
-      sim.gyroRateHz = c.gyroHz;
-      sim.accelRateHz = c.accelHz;
-      sim.zeroOffset = zero * kDeg;
-      const Recording rec = simulatePendulum(sim);
-      rows.push_back({c.name, zero, "DH filter", runDhFilter(rec)});
-      rows.push_back(
-          {c.name, zero, "baseline", runBaseline(rec, baselineParamsFor(rec.meta)).errors});
-      if (zero != 0.0) {
-        // The same baseline told where the sensor really is on the rod (what a joint-position
-        // calibration would find): what is left of the zero's effect once the lever arm is right.
-        BaselineParams told = baselineParamsFor(rec.meta);
-        told.elbowFromForearm = pendulumElbowFromForearm(rec.meta.geometry, sim.zeroOffset);
-        rows.push_back({c.name, zero, "baseline, rod lever arm", runBaseline(rec, told).errors});
+  for (const Release& release : releases) {
+    for (const Case& c : sensorCases) {
+      const std::string name = release.name + ", " + c.name;
+      for (double zero : setup.zerosDeg) {
+        PendulumSimParams sim;
+        sim.duration = setup.pendulumSeconds;
+        sim.outputRateHz = c.outputHz;
+        sim.gyroRateHz = c.gyroHz;
+        sim.accelRateHz = c.accelHz;
+        sim.zeroOffset = zero * kDeg;
+        sim.pendulum.swing0 = release.swingDeg * kDeg;
+        sim.pendulum.hinge0 = release.hingeDeg * kDeg;
+        const Recording rec = simulatePendulum(sim);
+        rows.push_back({name, zero, "DH filter", runDhFilter(rec)});
+        rows.push_back(
+            {name, zero, "baseline", runBaseline(rec, baselineParamsFor(rec.meta)).errors});
+        if (zero != 0.0) {
+          // The same baseline told where the sensor really is on the rod (what a joint-position
+          // calibration would find): what is left of the zero's effect once the lever arm is
+          // right.
+          BaselineParams told = baselineParamsFor(rec.meta);
+          told.elbowFromForearm = pendulumElbowFromForearm(rec.meta.geometry, sim.zeroOffset);
+          rows.push_back({name, zero, "baseline, rod lever arm", runBaseline(rec, told).errors});
+        }
+        if (progress) progress(++done, total);
       }
-      if (progress) progress(++done, total);
     }
   }
   if (setup.reachingRuns > 0) {
@@ -179,7 +192,9 @@ std::string formatBaselineStudy(const std::vector<BaselineStudyRow>& rows,
       " x " + fixed(setup.reachingSeconds, 0) +
       " s; the first second after a (re)start left out. Hinge = th4, swing = the humerus' "
       "elevation from the downward vertical; zero = the model's elbow flexion at the pendulum's "
-      "straight hinge. Errors in deg.\n\n"
+      "straight hinge; pendulum A/B = released from the swing A and the hinge B (deg), 1 s held "
+      "still "
+      "first. Errors in deg.\n\n"
       "| recording | zero (deg) | method | hinge RMSE | hinge peak | pronation RMSE | "
       "pronation peak | swing RMSE | swing peak |\n|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
   for (const BaselineStudyRow& r : rows) {

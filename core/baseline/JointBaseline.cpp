@@ -118,7 +118,9 @@ void JointBaseline::take(Imu& imu, const ImuReading& r, double t) {
   m_counters.repeatedAccel += repeatAcc;
   if (!repeatGyr) {
     if (imu.seen && t > imu.tGyr) {
-      const double dt = t - imu.tGyr;
+      // Over the time since the last new reading, but no more than two rows: after a still spell
+      // of repeated readings the change happened in the last row, not over the whole spell.
+      const double dt = std::min(t - imu.tGyr, 2.0 * (t - m_lastT));
       const Eigen::Vector3d raw = (r.gyr - imu.gyr) / dt;
       imu.gyrDot += dt / (m_p.omegaDotTau + dt) * (raw - imu.gyrDot);
     } else {
@@ -154,10 +156,10 @@ bool JointBaseline::push(const ArmSample& sample, BaselineRow& row) {
       dt = 0.0;
     }
   }
-  m_lastT = sample.t;
   m_upper.newAcc = m_fore.newAcc = false;
   if (upperOk) take(m_upper, *sample.upperArm, sample.t);
   if (foreOk) take(m_fore, *sample.forearm, sample.t);
+  m_lastT = sample.t;
 
   if (m_upper.seen) {
     if (!m_up) {
@@ -202,7 +204,9 @@ void JointBaseline::stepShoulder(double dt) {
   const Eigen::Vector3d fs =
       leverArmShift(m_upper.acc, w, m_upper.gyrDot, m_model.shoulderFromUpper);
   const double g = m_p.gUp.norm();
-  m_shoulderWait += dt;
+  // Repeated readings wait for the next new one, which then corrects for the whole wait (no
+  // longer than the longest gap: after a still spell the new reading speaks for the present).
+  m_shoulderWait = std::min(m_shoulderWait + dt, m_p.maxGap);
   if (m_upper.newAcc) {
     if (std::abs(fs.norm() - g) <= m_p.accelTolerance * g) {
       const double k = m_shoulderWait / (m_p.timeConstant + m_shoulderWait);
@@ -229,7 +233,7 @@ void JointBaseline::stepElbow(double dt) {
       leverArmShift(m_fore.acc, m_fore.gyr, m_fore.gyrDot, m_model.elbowFromFore);
   const double g = m_p.gUp.norm();
   const double nu = fu.norm(), nf = ff.norm();
-  m_elbowWait += dt;
+  m_elbowWait = std::min(m_elbowWait + dt, m_p.maxGap);
   if (!m_upper.newAcc && !m_fore.newAcc) {
     // Both accelerometers repeat their last readings: nothing new to correct with.
   } else if (nu > 0.2 * g && nf > 0.2 * g &&

@@ -178,6 +178,20 @@ TEST(BaselineOnThePendulum, TracksTheHingeAndSwingWithIdealSensors) {
   EXPECT_LT(run.errors.pronation.peakDeg(), 0.01);
 }
 
+TEST(BaselineOnThePendulum, NoJumpAtTheReleaseAfterAStillStart) {
+  // A second held still gives a second of repeated readings; the first new ones at the release
+  // must neither be differenced over the whole second nor correct for all of it.
+  PendulumSimParams p;
+  p.duration = 5.0;
+  p.outputRateHz = 1000.0;
+  p.pendulum.swing0 = 20 * kDegree;
+  p.pendulum.hinge0 = -20 * kDegree;
+  const Recording rec = simulatePendulum(p);
+  const BaselineRun run = runBaseline(rec, baselineParamsFor(rec.meta));
+  EXPECT_LT(run.errors.hinge.peakDeg(), 1.5);
+  EXPECT_LT(run.errors.swing.peakDeg(), 1.5);
+}
+
 TEST(BaselineOnThePendulum, HeldReadingsAreTakenAsStale) {
   PendulumSimParams p;
   p.duration = 20.0;
