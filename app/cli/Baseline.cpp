@@ -94,10 +94,11 @@ int baselineCommand(const std::vector<std::string>& args, std::ostream& out, std
     outPath = *o;
     checkOutputPath(*outPath, a.flag("--overwrite"));
   }
+  const double timeConstant = a.positive("--time-constant", BaselineParams{}.timeConstant);
   const Recording rec = readRecording(in);
   for (const std::string& w : rec.warnings) err << "warning: " << w << "\n";
   BaselineParams params = baselineParamsFor(rec.meta);
-  params.timeConstant = a.positive("--time-constant", params.timeConstant);
+  params.timeConstant = timeConstant;
 
   bool anyUpper = false, anyFore = false;
   for (const ArmSample& s : rec.samples) {

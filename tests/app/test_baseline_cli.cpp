@@ -68,6 +68,12 @@ TEST_F(BaselineCliTest, HostileInputGetsClearErrors) {
   EXPECT_EQ(r.code, 1);
   r = cli({"baseline"});
   EXPECT_EQ(r.code, 2);
+  r = cli({"baseline", rec.string(), "--time-constant", "0"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--time-constant"), std::string::npos) << r.err;
+  r = cli({"study", "baseline", "--duration", "1"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--duration"), std::string::npos) << r.err;
 
   // A recording without an upper-arm IMU: nothing the baseline can estimate, said so.
   {
