@@ -78,11 +78,15 @@ BaselineRun runBaseline(const Recording& recording, const BaselineParams& params
   return run;
 }
 
-JointErrors runDhFilter(const Recording& recording) {
+JointErrors runDhFilter(const Recording& recording, bool freeElbow) {
   EstimateOptions options;
   options.useOptical = false;
   options.useCamera = false;
-  const EstimatorParams params = estimatorParamsFor(recording.meta, options);
+  EstimatorParams params = estimatorParamsFor(recording.meta, options);
+  if (freeElbow) {
+    params.jointLower(3) = -kInf;
+    params.jointUpper(3) = kInf;
+  }
   // The rows come in the order of the samples with IMU data; the truth is looked up by time.
   std::size_t next = 0;
   double settledFrom = 0.0;
@@ -136,7 +140,9 @@ std::vector<BaselineStudyRow> runBaselineStudy(const BaselineStudySetup& setup,
         sim.pendulum.swing0 = release.swingDeg * kDeg;
         sim.pendulum.hinge0 = release.hingeDeg * kDeg;
         const Recording rec = simulatePendulum(sim);
+        const std::size_t first = rows.size();
         rows.push_back({name, zero, "DH filter", runDhFilter(rec)});
+        rows.push_back({name, zero, "DH filter, elbow limits off", runDhFilter(rec, true)});
         rows.push_back(
             {name, zero, "baseline", runBaseline(rec, baselineParamsFor(rec.meta)).errors});
         if (zero != 0.0) {
@@ -146,6 +152,15 @@ std::vector<BaselineStudyRow> runBaselineStudy(const BaselineStudySetup& setup,
           BaselineParams told = baselineParamsFor(rec.meta);
           told.elbowFromForearm = pendulumElbowFromForearm(rec.meta.geometry, sim.zeroOffset);
           rows.push_back({name, zero, "baseline, rod lever arm", runBaseline(rec, told).errors});
+        }
+        double lo = kInf, hi = -kInf;
+        for (const ArmSample& smp : rec.samples) {
+          lo = std::min(lo, smp.trueAngles->coeff(3));
+          hi = std::max(hi, smp.trueAngles->coeff(3));
+        }
+        for (std::size_t i = first; i < rows.size(); ++i) {
+          rows[i].trueHingeMinDeg = lo / kDeg;
+          rows[i].trueHingeMaxDeg = hi / kDeg;
         }
         if (progress) progress(++done, total);
       }
@@ -192,14 +207,17 @@ std::string formatBaselineStudy(const std::vector<BaselineStudyRow>& rows,
       " x " + fixed(setup.reachingSeconds, 0) +
       " s; the first second after a (re)start left out. Hinge = th4, swing = the humerus' "
       "elevation from the downward vertical; zero = the model's elbow flexion at the pendulum's "
-      "straight hinge; pendulum A/B = released from the swing A and the hinge B (deg), 1 s held "
-      "still "
-      "first. Errors in deg.\n\n"
-      "| recording | zero (deg) | method | hinge RMSE | hinge peak | pronation RMSE | "
-      "pronation peak | swing RMSE | swing peak |\n|---|---:|---|---:|---:|---:|---:|---:|---:|\n";
+      "straight hinge; pendulum A/B = released from the swing A and the hinge B (deg), held "
+      "still 1 s first. The DH filter's elbow limits are th4 -170 to 20 deg. Errors in deg.\n\n"
+      "| recording | zero (deg) | true th4 (deg) | method | hinge RMSE | hinge peak | pronation "
+      "RMSE "
+      "| pronation peak | swing RMSE | swing peak |\n"
+      "|---|---:|---|---|---:|---:|---:|---:|---:|---:|\n";
   for (const BaselineStudyRow& r : rows) {
-    s += "| " + r.recording + " | " + (std::isnan(r.zeroDeg) ? "-" : fixed(r.zeroDeg, 0)) + " | " +
-         r.method;
+    const bool pendulum = !std::isnan(r.zeroDeg);
+    s += "| " + r.recording + " | " + (pendulum ? fixed(r.zeroDeg, 0) : "-") + " | " +
+         (pendulum ? fixed(r.trueHingeMinDeg, 0) + ".." + fixed(r.trueHingeMaxDeg, 0) : "-") +
+         " | " + r.method;
     for (const AngleError* e : {&r.errors.hinge, &r.errors.pronation, &r.errors.swing})
       s += " | " + (e->count ? fixed(e->rmseDeg(), 2) + " | " + fixed(e->peakDeg(), 2)
                              : std::string("- | -"));

@@ -48,7 +48,9 @@ BaselineRun runBaseline(const Recording& recording, const BaselineParams& params
                         const BaselineSink& sink = {});
 
 /// The DH filter (EKF, default settings, IMUs only) over the same recording, scored the same way.
-JointErrors runDhFilter(const Recording& recording);
+/// freeElbow lifts the filter's anatomical limits on th4 (-170 to 20 deg by default), which a
+/// pendulum's hinge may pass; everything else stays at its default.
+JointErrors runDhFilter(const Recording& recording, bool freeElbow = false);
 
 /// Where the elbow really is seen from the forearm IMU of simulatePendulum (forearm axes, m) when
 /// the model's zero is put zeroOffset (rad) from the pendulum's straight hinge.
@@ -66,6 +68,7 @@ struct BaselineStudyRow {
   double zeroDeg = 0.0;   ///< NaN for the reaching simulation
   std::string method;     ///< "DH filter" or "baseline"
   JointErrors errors;
+  double trueHingeMinDeg = 0.0, trueHingeMaxDeg = 0.0;  ///< the range of the true th4
 };
 
 using BaselineStudyProgress = std::function<void(int done, int total)>;
