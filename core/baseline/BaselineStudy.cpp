@@ -57,6 +57,7 @@ BaselineParams baselineParamsFor(const RecordingMeta& meta) {
   BaselineParams p;
   p.geometry = meta.geometry;
   p.gUp = meta.gUp();
+  p.side = meta.side;
   return p;
 }
 

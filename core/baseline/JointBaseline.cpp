@@ -95,6 +95,7 @@ JointBaseline::JointBaseline(const BaselineParams& params) : m_p(params), m_mode
     throw std::invalid_argument("baseline: gravity (g times up) must be a finite, non-zero vector");
   if (!(m_p.omegaDotTau >= 0.0) || !(m_p.damping > 0.0) || !(m_p.accelTolerance > 0.0))
     throw std::invalid_argument("baseline: filter constants must be positive");
+  if (m_p.side == Side::Left) m_p.gUp = mirrorPoint(m_p.gUp);
   if (m_p.elbowFromForearm) {
     if (!m_p.elbowFromForearm->allFinite())
       throw std::invalid_argument("baseline: the forearm lever arm must be finite");
@@ -134,8 +135,10 @@ void JointBaseline::take(Imu& imu, const ImuReading& r, double t) {
   imu.seen = true;
 }
 
-bool JointBaseline::push(const ArmSample& sample, BaselineRow& row) {
+bool JointBaseline::push(const ArmSample& given, BaselineRow& row) {
   ++m_counters.rows;
+  const ArmSample mirrored = m_p.side == Side::Left ? mirrorSample(given) : ArmSample{};
+  const ArmSample& sample = m_p.side == Side::Left ? mirrored : given;
   if (!sample.hasImu()) return false;  // optical rows: nothing for the baseline
   if (!std::isfinite(sample.t) || !(sample.t > m_lastT)) {
     ++m_counters.rejectedTime;

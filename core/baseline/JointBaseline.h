@@ -64,8 +64,11 @@ double humerusElevation(const JointVector& th, const Eigen::Vector3d& up);
 struct BaselineParams {
   ArmGeometry geometry;                  ///< the sidecar's
   Eigen::Vector3d gUp{-9.81, 0.0, 0.0};  ///< g times up, shoulder frame (m/s^2)
-  double timeConstant = 1.0;             ///< s: the accelerometers' correction
-  double maxGap = 0.1;                   ///< s: a longer step restarts
+  /// Which arm. A left arm's readings are in its own frames, the mirror image of a right arm's
+  /// (core/kinematics/Side.h): they and gUp are mirrored back, as the DH filter does.
+  Side side = Side::Right;
+  double timeConstant = 1.0;  ///< s: the accelerometers' correction
+  double maxGap = 0.1;        ///< s: a longer step restarts
   /// s: low-pass of the differenced gyroscope (the angular acceleration of the lever-arm terms);
   /// 0 takes the plain difference of consecutive readings.
   double omegaDotTau = 0.0;

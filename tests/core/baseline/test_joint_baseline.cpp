@@ -14,6 +14,8 @@
 #include "core/baseline/BaselineStudy.h"
 #include "core/baseline/JointBaseline.h"
 #include "core/kinematics/ArmModel.h"
+#include "core/simulation/SensorSimulator.h"
+#include "core/simulation/Trajectory.h"
 
 namespace armtrack {
 namespace {
@@ -239,6 +241,31 @@ TEST(JointBaseline, BadParametersAreRefused) {
   p = params();
   p.elbowFromForearm = Eigen::Vector3d(std::nan(""), 0, 0);
   EXPECT_THROW(JointBaseline{p}, std::invalid_argument);
+}
+
+TEST(JointBaseline, ALeftArmGivesTheSameAnglesAsItsRightTwin) {
+  SimulationParams sim = defaultSimulation();
+  sim.duration = 3.0;
+  sim.kinect.enabled = false;
+  SinusoidTrajectory traj;
+  traj.offset = pose(0.4, 0.3, 0.1, -1.0, 0.2);
+  traj.amplitude = JointVector::Constant(0.3);
+  traj.frequency = JointVector::Constant(0.4);
+  const Recording right = simulateRecording(traj, sim);
+  sim.side = Side::Left;
+  const Recording left = simulateRecording(traj, sim);
+  ASSERT_EQ(left.meta.side, Side::Left);
+  std::vector<BaselineRow> r, l;
+  runBaseline(right, baselineParamsFor(right.meta), [&](const BaselineRow& x) { r.push_back(x); });
+  runBaseline(left, baselineParamsFor(left.meta), [&](const BaselineRow& x) { l.push_back(x); });
+  ASSERT_EQ(r.size(), l.size());
+  ASSERT_GT(r.size(), 2000u);
+  for (std::size_t i = 0; i < r.size(); ++i) {
+    EXPECT_NEAR(r[i].flexion, l[i].flexion, 1e-9);
+    EXPECT_NEAR(r[i].pronation, l[i].pronation, 1e-9);
+    EXPECT_NEAR(r[i].elevation, l[i].elevation, 1e-9);
+  }
+  EXPECT_LT(runBaseline(left, baselineParamsFor(left.meta)).errors.hinge.rmseDeg(), 1.0);
 }
 
 TEST(JointBaseline, IsDeterministic) {
