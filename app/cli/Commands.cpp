@@ -12,6 +12,7 @@
 #include <system_error>
 
 #include "app/cli/Args.h"
+#include "app/cli/Baseline.h"
 #include "app/cli/Calibrate.h"
 #include "app/cli/Camera.h"
 #include "app/cli/Cli.h"
@@ -50,8 +51,10 @@ Usage:
 Commands:
   simulate   write a simulated recording with the true joint angles
   estimate   estimate joint angles from a recording (EKF or UKF)
+  baseline   elbow angles and humerus elevation by a plain complementary filter (docs/baseline.md)
   calibrate  sensor-to-segment calibration from a protocol recording (docs/calibration.md)
-  study      simulation studies: the paper's Table 6 and Figs. 5, 7, 8; the sensor study
+  study      simulation studies: the paper's Table 6 and Figs. 5, 7, 8; the sensor study; the
+             baseline beside the DH filter
   orientation  orientation of one IMU (gyroscope + accelerometer) as quaternions
   devices    list the device plugins and their options
   record     record a live session from devices (with the live estimates)
@@ -111,6 +114,7 @@ Options:
   --wheel-period S     shoulder-wheel: seconds per turn (default 4)
   --peak-rate DEG_S    reaching: fastest joint rate of a move (default 420)
   --peak-accel DEG_S2  reaching: fastest joint acceleration of a move (default 4000)
+  --pendulum           a double pendulum instead of an arm (simulate --pendulum --help)
 )";
 
 constexpr std::string_view kStudyHelp =
@@ -122,6 +126,8 @@ Runs a simulation study and prints its table (markdown).
   fig7     IMU perturbations against the accuracy of the position measurements, 1 mm to 1 m
   fig8     perturbation error against motion frequency, with and without Kinect positions
   sensors  five joints from IMUs only, + Kinect, + webcam, + both, and the Tao-Hu tracker
+  baseline the DH filter and the complementary baseline on the same recordings
+           (study baseline --help)
 
 Options:
   --runs N          Monte Carlo runs per setting (default 10; sensors: 3)
@@ -137,6 +143,8 @@ void noPositionals(const Args& a) {
 // ---------------------------------------------------------------------------------------------
 
 int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (std::find(args.begin(), args.end(), "--pendulum") != args.end())
+    return simulatePendulumCommand(args, out, err);
   std::vector<OptionSpec> specs = {{"--trajectory", true},      {"--out", true},
                                    {"--duration", true},        {"--seed", true},
                                    {"--imu-rate", true},        {"--kinect-rate", true},
@@ -250,6 +258,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
 // ---------------------------------------------------------------------------------------------
 
 int study(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (!args.empty() && args[0] == "baseline")
+    return baselineStudyCommand({args.begin() + 1, args.end()}, out, err);
   const Args a("study", args, {{"--runs", true}, {"--filter", true}, {"--duration", true}});
   if (a.help()) {
     out << kStudyHelp;
@@ -335,6 +345,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     }
     if (cmd == "simulate") return simulate(rest, out, err);
     if (cmd == "estimate") return estimateCommand(rest, out, err);
+    if (cmd == "baseline") return baselineCommand(rest, out, err);
     if (cmd == "study") return study(rest, out, err);
     if (cmd == "calibrate") return calibrateWithOutputCheck(rest, out, err);
     if (cmd == "orientation") return orientationCommand(rest, out, err);
