@@ -25,10 +25,9 @@
 #include "app/gui/services/DemoData.h"
 #include "app/gui/signin/SignInScreen.h"
 #include "core/io/Recording.h"
-#include "core/simulation/SensorSimulator.h"
-#include "core/simulation/Trajectory.h"
 #include "core/storage/SessionAnalysis.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
+#include "tests/support/LeaningPatient.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
 
@@ -259,24 +258,8 @@ class TestReview : public QObject {
   // the repetition table each repetition's, with the compensated ones marked; an arm-only
   // session says "not measured" and hides the trunk's columns (issue 26).
   void showsTheTrunk() {
-    armtrack::TrajectoryOptions options;
-    options.exercise.angle = 0;  // shoulder flexion
-    options.exercise.fromDeg = 10;
-    options.exercise.toDeg = 110;
-    options.exercise.startSeconds = 4;
-    const auto trajectory = armtrack::makeTrajectory("exercise", options);
-    armtrack::SimulationParams sim = armtrack::defaultSimulation();
-    sim.duration = 20;
-    sim.seed = 831;
-    sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
-    sim.trunk.enabled = true;
-    sim.trunk.leanDeg = 18;
-    sim.trunkImu.enabled = true;
-    sim.kinect.shoulder = true;
-    const armtrack::Recording rec = armtrack::simulateRecording(*trajectory, sim);
-    double trueLean = 0;
-    for (const armtrack::ArmSample& a : rec.samples)
-      if (a.trueTrunk) trueLean = std::max(trueLean, std::abs((*a.trueTrunk)(0)) * 180 / M_PI);
+    const armtrack::Recording rec = armtrack::test::leaningReaches(20, 831);
+    const double trueLean = armtrack::test::trueLeanDeg(rec);
     const std::string csv = m_dir.filePath(QStringLiteral("lean.csv")).toStdString();
     armtrack::writeRecording(csv, rec);
     qint64 id = 0;
