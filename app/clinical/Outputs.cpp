@@ -200,7 +200,9 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
   if (format != ExportFormat::Bids) store.requireIntactRecording(id);
   const storage::SessionAngles s = storage::sessionAngles(store, id, storage::SeriesRows::All);
   if (format == ExportFormat::Csv) {
-    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
+    // The trunk's columns when the estimates hold them (a trunk IMU or an optical shoulder).
+    const TrunkColumns trunk{s.trunkRad, s.trunkSdRad};
+    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad, &trunk);
     out.what = std::to_string(r.rows) + " rows to " + r.anglesCsv.string() +
                " and its metrics to " + r.metricsCsv.string();
     out.files = {r.anglesCsv, r.metricsCsv};

@@ -230,8 +230,12 @@ class TrunkRowCollector {
 // memory whole (docs/storage.md, "Memory of an analysis").
 class AnalysisRun {
  public:
-  AnalysisRun(ClinicalStore& store, qint64 sessionId)
-      : m_store(store), m_draft(store.beginEstimates(sessionId, EstimateCodec::kChunkedName)) {}
+  // withTrunk: the estimates keep the trunk's columns (a recording with trunk output, as
+  // `estimate --out` writes them).
+  AnalysisRun(ClinicalStore& store, qint64 sessionId, bool withTrunk)
+      : m_store(store),
+        m_draft(store.beginEstimates(sessionId, EstimateCodec::kChunkedName)),
+        m_withTrunk(withTrunk) {}
   ~AnalysisRun() {
     if (m_finished) return;
     try {
@@ -245,7 +249,7 @@ class AnalysisRun {
   AnalysisRun& operator=(const AnalysisRun&) = delete;
 
   void add(const EstimateRow& row) {
-    m_block.append(row);
+    m_block.append(row, m_withTrunk);
     m_metricRows.add(row.t, row.th, row.sd, row.status);
     ++m_rows;
     if (m_block.size() >= kEstimateChunkRows) flush();
@@ -255,10 +259,7 @@ class AnalysisRun {
     const std::string blob = EstimateCodec::encode(m_block);
     m_store.appendEstimateChunk(m_draft, m_seq++, static_cast<qint64>(m_block.size()),
                                 QByteArray(blob.data(), static_cast<qsizetype>(blob.size())));
-    m_block.t.clear();
-    m_block.th.clear();
-    m_block.sd.clear();
-    m_block.status.clear();
+    m_block.clear();
   }
   std::size_t rows() const { return m_rows; }
   MetricRowCollector& metricRows() { return m_metricRows; }
@@ -275,6 +276,7 @@ class AnalysisRun {
  private:
   ClinicalStore& m_store;
   ClinicalStore::EstimatesDraft m_draft;
+  bool m_withTrunk = false;
   EstimateColumns m_block;
   MetricRowCollector m_metricRows{/*withSd=*/false, /*allRows=*/false};
   std::size_t m_rows = 0;
@@ -354,7 +356,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   const ClinicalMetricsParams mp =
       storedProblem([&] { return metricsParams(store, info, params.geometry, protocol); });
 
-  AnalysisRun run(store, sessionId);
+  AnalysisRun run(store, sessionId, hasTrunkOutput(columnsOf(info.columnsMask)));
   TrunkRowCollector trunkRows;
   {
     const auto n = options.expectedRows > 0

@@ -36,8 +36,11 @@ namespace {
 std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a, double origin) {
   std::vector<ui::AngleSample> out;
   out.reserve(a.t.size());
-  for (std::size_t i = 0; i < a.t.size(); ++i)
+  const bool trunk = a.trunk.size() == a.t.size() && a.trunkSd.size() == a.t.size();
+  for (std::size_t i = 0; i < a.t.size(); ++i) {
     out.push_back(ui::angleSample(recordingTime(a.t[i], origin), a.joints[i], a.sd[i]));
+    if (trunk) ui::setTrunk(out.back(), a.trunk[i], a.trunkSd[i]);  // the trunk's plot
+  }
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QLineSeries>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QRegularExpression>
@@ -304,10 +305,22 @@ class TestReview : public QObject {
       QCOMPARE(m->index(row, RepetitionTableModel::Compensation).data().toString(),
                QStringLiteral("yes"));
     }
+    // The trunk's curves, from the estimates stored with the session: every row of the analysis,
+    // the largest flexion the true lean's to a degree and a half.
+    const armtrack::ui::AnglePlotPanel* plots = r->plots();
+    QVERIFY(!plots->trunkChart()->isHidden());
+    const std::deque<armtrack::ui::AngleSample>& curve = plots->trunkTrace().samples();
+    QCOMPARE(curve.size(), plots->trace().samples().size());
+    double largest = 0;
+    for (const armtrack::ui::AngleSample& a : curve) largest = std::max(largest, a.deg[0]);
+    QVERIFY2(std::abs(largest - trueLean) < 1.5, qPrintable(QString::number(largest)));
+    QVERIFY(plots->trunkChart()->series(0)->count() > 10);
     test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk"));
 
     r = open(m_sessions.back());
     QVERIFY(r);
+    QVERIFY(r->plots()->trunkChart()->isHidden());
+    QVERIFY(r->plots()->trunkTrace().empty());
     for (int i = 0; i < 4; ++i)
       QCOMPARE(r->trunkPanel()->valueText(i), QStringLiteral("not measured"));
     QCOMPARE(r->trunkPanel()->compensationText(), QString());
