@@ -1,7 +1,8 @@
 // A simulated patient who leans and turns the trunk with each reach (issue 26): shoulder flexion
-// reaches from 10 to 110 deg after 4 s at rest, the trunk leaning 18 deg forward (sideways and
-// axially half of that) at the fullest reach, with a sternum IMU beside the two arm IMUs (200 Hz)
-// and a Kinect that sees the shoulder. Shared by the CLI and GUI tests of the trunk's records.
+// reaches from 10 to 110 deg after 4 s at rest, the trunk leaning forward (by default 18 deg;
+// sideways and axially half of that) at the fullest reach, with a sternum IMU beside the two arm
+// IMUs (by default 200 Hz) and a Kinect that sees the shoulder. Shared by the CLI and GUI tests of
+// the trunk's records.
 #pragma once
 
 #include <algorithm>
@@ -15,8 +16,10 @@
 
 namespace armtrack::test {
 
-/// The recording of seconds of leaning reaches, simulated with seed.
-inline Recording leaningReaches(double seconds, std::uint64_t seed) {
+/// The recording of seconds of leaning reaches, simulated with seed; the lean at the fullest reach
+/// (deg) and the IMUs' rate (Hz) as given.
+inline Recording leaningReaches(double seconds, std::uint64_t seed, double leanDeg = 18,
+                                double rateHz = 200) {
   TrajectoryOptions options;
   options.exercise.angle = 0;  // shoulder flexion
   options.exercise.fromDeg = 10;
@@ -26,9 +29,9 @@ inline Recording leaningReaches(double seconds, std::uint64_t seed) {
   SimulationParams sim = defaultSimulation();
   sim.duration = seconds;
   sim.seed = seed;
-  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
+  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = rateHz;
   sim.trunk.enabled = true;
-  sim.trunk.leanDeg = 18;
+  sim.trunk.leanDeg = leanDeg;
   sim.trunkImu.enabled = true;
   sim.kinect.shoulder = true;
   return simulateRecording(*trajectory, sim);
