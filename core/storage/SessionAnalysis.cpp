@@ -297,11 +297,25 @@ class AnalysisRun {
 
 }  // namespace
 
-// The trunk flexion limit the repetitions are judged by: the caller's, else the session's
-// protocol's (Protocol::trunkLimitDeg), else none.
-static std::optional<double> trunkLimit(const AnalysisOptions& options,
+// The trunk flexion limit the repetitions are judged by: the caller's; for a home session the
+// limit its exercise held the patient to (the home summary's "trunk_limit_deg", null: none),
+// else, with no summary stored yet, the patient's programme exercise of the session's protocol
+// (effectiveTrunkLimit: its own, else the protocol's); else the session's protocol's
+// (Protocol::trunkLimitDeg); else none.
+static std::optional<double> trunkLimit(ClinicalStore& store, const SessionInfo& info,
+                                        const AnalysisOptions& options,
                                         const std::optional<Protocol>& protocol) {
   if (options.trunkFlexionLimitDeg) return options.trunkFlexionLimitDeg;
+  if (info.setting == kSettingHome && protocol) {
+    const std::optional<QJsonObject> summary = detail::parseObject(info.homeSummaryJson);
+    if (summary && summary->contains("trunk_limit_deg")) {
+      const QJsonValue v = summary->value("trunk_limit_deg");
+      if (v.isDouble() && std::isfinite(v.toDouble()) && v.toDouble() > 0) return v.toDouble();
+      if (v.isNull()) return std::nullopt;
+    }
+    for (const ProgrammeItem& item : store.programme(info.patientCode))
+      if (item.protocolName == protocol->name) return effectiveTrunkLimit(item, *protocol);
+  }
   return protocol ? protocol->trunkLimitDeg : std::nullopt;
 }
 
@@ -355,6 +369,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp =
       storedProblem([&] { return metricsParams(store, info, params.geometry, protocol); });
+  const std::optional<double> flexionLimit = trunkLimit(store, info, options, protocol);
 
   AnalysisRun run(store, sessionId, hasTrunkOutput(columnsOf(info.columnsMask)));
   TrunkRowCollector trunkRows;
@@ -437,7 +452,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                          sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
     }
     TrunkCompensationParams tp;
-    tp.flexionLimitDeg = trunkLimit(options, protocol);
+    tp.flexionLimitDeg = flexionLimit;
     result.trunk =
         computeTrunkCompensation(trunkRows.rows(), repetitionSpans(result.metrics.repetitions), tp);
     series = encodeMetricRows(settled.metricSeries.t, std::move(settled.metricJoints));
@@ -473,8 +488,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
       QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
       [&](int estimateVersion) {
-        summary = summaryJson(result.metrics, result.trunk, trunkLimit(options, protocol),
-                              estimateVersion, protocol, dropped, settling);
+        summary = summaryJson(result.metrics, result.trunk, flexionLimit, estimateVersion, protocol,
+                              dropped, settling);
         return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
       },
       series);

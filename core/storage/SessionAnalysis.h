@@ -55,9 +55,11 @@ struct AnalysisOptions {
   std::size_t expectedRows = 0;
   /// A repetition whose largest trunk flexion exceeds this (deg) was made with compensation
   /// (core/metrics/TrunkCompensation.h): each repetition's "compensated" and the count
-  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default): the session's
-  /// protocol's limit (Protocol::trunkLimitDeg), and without one no limit, both null. Not
-  /// positive and finite: StorageError(Usage).
+  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default): for a home
+  /// session the limit its exercise held the patient to (the home summary's "trunk_limit_deg",
+  /// else the patient's programme exercise of the session's protocol: effectiveTrunkLimit),
+  /// otherwise the session's protocol's limit (Protocol::trunkLimitDeg); without one no limit,
+  /// both null. Not positive and finite: StorageError(Usage).
   std::optional<double> trunkFlexionLimitDeg;
 };
 
