@@ -371,6 +371,10 @@ void ReviewScreen::setCursor(double t) {
   if (m_data.analysis && !m_data.analysis->t.empty()) {
     const std::size_t i = rowAt(m_data.analysis->t, m_cursor + m_origin);
     m_arm->setPose(m_data.analysis->joints[i]);
+    // The stored trunk angles lean and turn the figure; upright where none were measured.
+    const std::vector<Eigen::Vector3d>& trunk = m_data.analysis->trunk;
+    m_arm->setTrunk(i < trunk.size() && trunk[i].allFinite() ? std::optional(trunk[i])
+                                                             : std::nullopt);
   }
   if (m_overlay && !m_overlay->t.empty()) {
     // The other session at the same time since its own start.

@@ -10,6 +10,7 @@
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSqlDatabase>
@@ -315,6 +316,20 @@ class TestReview : public QObject {
     for (const armtrack::ui::AngleSample& a : curve) largest = std::max(largest, a.deg[0]);
     QVERIFY2(std::abs(largest - trueLean) < 1.5, qPrintable(QString::number(largest)));
     QVERIFY(plots->trunkChart()->series(0)->count() > 10);
+    // At the deepest lean the 3D figure leans with the stored estimate; the trunk plot in view.
+    const auto deepest =
+        std::max_element(curve.begin(), curve.end(),
+                         [](const auto& a, const auto& b) { return a.deg[0] < b.deg[0]; });
+    r->setCursor(deepest->t);
+    QVERIFY(r->armView()->trunk().has_value());
+    QVERIFY2(std::abs((*r->armView()->trunk())(0) * 180 / M_PI - deepest->deg[0]) < 1e-6,
+             qPrintable(QString::number((*r->armView()->trunk())(0) * 180 / M_PI)));
+    for (QWidget* w = plots->trunkChart(); w; w = w->parentWidget())
+      if (auto* scroll = qobject_cast<QScrollArea*>(w)) {
+        scroll->ensureWidgetVisible(plots->trunkChart());
+        break;
+      }
+    test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk-plot"));
     test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk"));
 
     r = open(m_sessions.back());
