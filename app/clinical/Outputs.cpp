@@ -223,7 +223,8 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
     o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
                                                      : ss(s.info.protocolName));
     o.taskName = s.info.protocolName.isEmpty() ? "ArmTrack session" : ss(s.info.protocolName);
-    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o);
+    const TrunkColumns trunk{s.trunkRad, {}};
+    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o, &trunk);
     out.what = std::to_string(r.systems.size()) + " tracking systems to " + r.motionDir.string();
     out.files = {r.motionDir};
     out.notes = r.notes;

@@ -162,10 +162,13 @@ struct BidsExportResult {
 /// written when absent. recording may be nullptr (angles only); angles may be nullptr (raw data
 /// only). Refused with ExportError before anything is written: a file that exists (without
 /// options.overwrite), a subject whose participants.tsv row names another patient code, or a
-/// subject folder that no row claims. Throws std::invalid_argument for a bad label or
-/// mismatched angle lengths, ExportError when there is nothing to export or a file cannot be
-/// written, and whatever options.checkTarget throws.
+/// subject folder that no row claims. trunk (nullptr or empty: none): the trunk's angles of the
+/// rows of angles, three more channels of the angles' tracking system (trunk_flex, trunk_lat,
+/// trunk_rot, deg; n/a where not measured). Throws std::invalid_argument for a bad label or
+/// mismatched angle or trunk lengths, ExportError when there is nothing to export or a file cannot
+/// be written, and whatever options.checkTarget throws.
 BidsExportResult writeBidsMotion(const std::filesystem::path& root, const Recording* recording,
-                                 const AngleSeries* angles, Side side, const BidsOptions& options);
+                                 const AngleSeries* angles, Side side, const BidsOptions& options,
+                                 const TrunkColumns* trunk = nullptr);
 
 }  // namespace armtrack

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <QFile>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -127,6 +128,47 @@ TEST_F(TrunkExportCli, TrunkAnglesAreStoredAndExportedAsEstimated) {
   double largest = 0;
   for (const auto& row : out.rows) largest = std::max(largest, numberOf(row[11]));
   EXPECT_NEAR(largest, trueLeanDeg(rec), 1.5);
+
+  // The BIDS export's estimated angles carry the same three trunk channels, row for row.
+  const Result bids = run({"export", id, "--format", "bids", "--out", path("bids")});
+  ASSERT_EQ(bids.code, 0) << bids.err;
+  fs::path channelsTsv, motionTsv;
+  for (const auto& e : fs::recursive_directory_iterator(path("bids"))) {
+    const std::string name = e.path().filename().string();
+    if (name.ends_with("tracksys-angles_channels.tsv")) channelsTsv = e.path();
+    if (name.ends_with("tracksys-angles_motion.tsv")) motionTsv = e.path();
+  }
+  ASSERT_FALSE(channelsTsv.empty());
+  ASSERT_FALSE(motionTsv.empty());
+  std::vector<std::string> channels;
+  {
+    std::ifstream in(channelsTsv);
+    std::string line;
+    std::getline(in, line);  // the header
+    while (std::getline(in, line)) channels.push_back(line.substr(0, line.find('\t')));
+  }
+  // After the arm's five angles (the motion file's columns are the channels in order).
+  std::size_t column[3] = {};
+  for (int k = 0; k < 3; ++k) {
+    const auto at = std::find(channels.begin(), channels.end(), keys[k]);
+    ASSERT_NE(at, channels.end()) << keys[k];
+    column[k] = static_cast<std::size_t>(at - channels.begin());
+    EXPECT_EQ(channels[column[k] - 1 - k], "forearm_pronation");
+  }
+  std::ifstream motion(motionTsv);
+  std::string line;
+  std::size_t row = 0;
+  while (std::getline(motion, line)) {
+    ASSERT_LT(row, out.rows.size());
+    std::vector<std::string> cells;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, '\t');) cells.push_back(cell);
+    ASSERT_EQ(cells.size(), channels.size()) << line;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(numberOf(cells[column[k]]), numberOf(out.rows[row][11 + k]), 1e-6) << line;
+    ++row;
+  }
+  EXPECT_EQ(row, out.rows.size());
 }
 
 // A schema version 8 database (written by main's build before the trunk's angles were stored):
