@@ -19,6 +19,7 @@
 #include "core/io/Recording.h"
 #include "core/storage/Schema.h"
 #include "tests/app/StorageCliFixture.h"
+#include "tests/support/FileInspection.h"
 #include "tests/support/LeaningPatient.h"
 
 namespace armtrack::test {
@@ -27,11 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 
 const fs::path kOldData = fs::path(ARMTRACK_SOURCE_DIR) / "tests/data/storage";
-
-std::string bytesOf(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
 
 /// A CSV file as its header's names and its rows' cells (text).
 struct Csv {
