@@ -239,6 +239,11 @@ const std::vector<MigrationStep>& migrationSteps() {
         "ALTER TABLE programmes ADD COLUMN trunk_limit_deg DOUBLE PRECISION "
         "CHECK (trunk_limit_deg >= 1 AND trunk_limit_deg <= 90)"},
        {}},
+      // No table changes. Estimates written from here on may hold the trunk's angles (an estimate
+      // blob of 18 columns, EstimateCodec.h), which a build before this version would call
+      // damaged; with the version raised, such a build refuses the whole database as newer than
+      // it knows instead. Estimates without the trunk are stored as before.
+      {9, "estimates may hold the trunk's angles and their standard deviations", {}, {}},
   };
   return steps;
 }
