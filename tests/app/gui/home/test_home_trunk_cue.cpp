@@ -33,6 +33,7 @@ namespace {
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kPeriodS = 4.0;
 constexpr int kReps = 4;
+constexpr int kBatch = 30;
 
 /// Elbow flexion 0 -> 90 -> 0 deg (raised cosine) in each 4 s period after a second of rest,
 /// 0.5 s rest at the ends of each period.
@@ -63,8 +64,12 @@ HomeExercise elbowExercise(std::optional<double> trunkLimitDeg) {
   return e;
 }
 
-/// The patient's estimates, handed out in batches of ten as time goes on, from the moment the set
-/// starts; the lean (deg) in the repetitions listed, none in the others.
+/// The patient's estimates at 100 Hz, handed out kBatch at a time (one batch per tick of the
+/// screen's 33 ms timer) from the moment the set starts; the lean (deg) in the repetitions listed,
+/// none in the others. The screen's cue, counts and set go by the estimates' times, not the wall
+/// clock, so 0.3 s of movement a tick (about 9 times real time; it was 0.1 s) runs the same
+/// exercise in a third of the time, and the cue (on for about 1.5 s of movement in a leaning
+/// repetition) is still seen at five ticks or more.
 struct Patient {
   double leanDeg = 0;
   std::vector<int> leaning;
@@ -79,7 +84,7 @@ struct Patient {
     if (screen->phase() != ExerciseScreen::Phase::Set) return true;
     if (screen->trunkCueShown() && (repsCued.empty() || repsCued.back() != repOf(t)))
       repsCued.push_back(repOf(t));
-    for (int i = 0; i < 10 && t < 1.0 + kReps * kPeriodS + 3.0; ++i, t += 0.01) {
+    for (int i = 0; i < kBatch && t < 1.0 + kReps * kPeriodS + 3.0; ++i, t += 0.01) {
       session::EstimateRow r;
       r.t = t;
       ClinicalAngles c;

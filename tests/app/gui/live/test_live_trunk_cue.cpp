@@ -292,7 +292,10 @@ class TestLiveTrunkCue : public QObject {
                      .arg(reps)),
              qPrintable(notes));
     target.reset();
-    const auto [cuedLess, anglesLess, compensatedLess, repsLess, tLess] = session(6.0, 25.0);
+    // Three reaches (tops at 3, 8 and 13 s of the virtual arm's 1 s start, 4 s reach and 1 s
+    // pause), all leaning 6 deg as alike as the session's noise lets them: 16 s show them where
+    // 25 s showed the same reaches five times over.
+    const auto [cuedLess, anglesLess, compensatedLess, repsLess, tLess] = session(6.0, 16.0);
     QVERIFY(anglesLess);
     QVERIFY2(repsLess >= 2, qPrintable(QString::number(repsLess)));
     QVERIFY2(!cuedLess, qPrintable(QStringLiteral("cued in %1 s").arg(tLess)));
