@@ -187,7 +187,6 @@ HttpResponse SyncApi::route(const HttpRequest& r, qint64& device) {
     meta.sha256 = o.value("sha256").toString();
     meta.sizeBytes = static_cast<qint64>(o.value("size_bytes").toDouble(-1));
     meta.chunkCount = o.value("chunks").toInt(-1);
-    meta.protocol = o.value("protocol").toString();
     if (o.contains("sidecar") && !o.value("sidecar").isObject())
       return error(400, "sidecar must be a JSON object");
     meta.metaJson = QString::fromUtf8(QJsonDocument(o).toJson(QJsonDocument::Compact));

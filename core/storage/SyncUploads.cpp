@@ -8,6 +8,7 @@
 #include <QUuid>
 
 #include "core/storage/AuditLog.h"
+#include "core/storage/TextRules.h"
 
 namespace armtrack::storage {
 
@@ -22,6 +23,39 @@ std::string notFound() {
 void checkUuid(const QString& uuid) {
   if (QUuid::fromString(uuid).isNull() || uuid.size() != 36)
     throw StorageError(Kind::Usage, "an upload is named by a UUID (8-4-4-4-12 hex digits)");
+}
+
+constexpr int kMaxCommentChars = 2000;  // as ClinicalStore::saveHomeOutcome
+
+/// Reads metaJson's protocol, sidecar and outcome into meta, checking what can be checked before
+/// the recording arrives (Usage otherwise).
+void readDeclaration(UploadMeta& meta) {
+  const QJsonObject o = QJsonDocument::fromJson(meta.metaJson.toUtf8()).object();
+  meta.protocol = o.value("protocol").toString();
+  if (o.value("sidecar").isObject())
+    meta.sidecarJson = QString::fromUtf8(
+        QJsonDocument(o.value("sidecar").toObject()).toJson(QJsonDocument::Compact));
+  const QJsonValue outcome = o.value("outcome");
+  meta.hasOutcome = outcome.isObject();
+  if (outcome.isUndefined() || outcome.isNull()) return;
+  if (!outcome.isObject()) throw StorageError(Kind::Usage, "outcome must be a JSON object");
+  const QJsonObject out = outcome.toObject();
+  const QJsonValue pain = out.value("pain_score");
+  if (!pain.isUndefined() && !pain.isNull()) {
+    if (!pain.isDouble() || pain.toDouble() != pain.toInt(-1) || pain.toInt() < 0 ||
+        pain.toInt() > 10)
+      throw StorageError(Kind::Usage, "outcome.pain_score must be a whole number 0-10 or null");
+    meta.painScore = pain.toInt();
+  }
+  meta.comment = out.value("comment").toString();
+  if (meta.comment.size() > kMaxCommentChars)
+    throw StorageError(Kind::Usage, "outcome.comment is longer than " +
+                                        std::to_string(kMaxCommentChars) + " characters");
+  if (out.contains("summary") && !out.value("summary").isObject())
+    throw StorageError(Kind::Usage, "outcome.summary must be a JSON object");
+  if (out.value("summary").isObject())
+    meta.summaryJson = QString::fromUtf8(
+        QJsonDocument(out.value("summary").toObject()).toJson(QJsonDocument::Compact));
 }
 
 }  // namespace
@@ -57,11 +91,7 @@ SyncUploads::Row SyncUploads::visible(const QString& uuid) {
   r.meta.chunkCount = q.value(3).toInt();
   r.meta.metaJson = q.value(4).toString();
   r.sessionId = q.value(5).isNull() ? 0 : q.value(5).toLongLong();
-  const QJsonObject meta = QJsonDocument::fromJson(r.meta.metaJson.toUtf8()).object();
-  r.meta.protocol = meta.value("protocol").toString();
-  if (meta.value("sidecar").isObject())
-    r.meta.sidecarJson = QString::fromUtf8(
-        QJsonDocument(meta.value("sidecar").toObject()).toJson(QJsonDocument::Compact));
+  readDeclaration(r.meta);
   return r;
 }
 
@@ -78,8 +108,13 @@ std::vector<int> SyncUploads::missingChunks(const QString& uuid, int count) {
   return missing;
 }
 
-UploadState SyncUploads::declare(const QString& uuid, const UploadMeta& meta) {
+UploadState SyncUploads::declare(const QString& uuid, const UploadMeta& declared) {
   checkUuid(uuid);
+  UploadMeta meta = declared;
+  readDeclaration(meta);
+  if (!meta.protocol.isEmpty() &&
+      !m_db.exec("SELECT 1 FROM protocols WHERE name_key = ?", {nameKey(meta.protocol)}).next())
+    throw StorageError(Kind::Usage, "no protocol of that name at the clinic");
   if (!isSha256Hex(meta.sha256))
     throw StorageError(Kind::Usage, "sha256 must be 64 hex digits (the whole recording's)");
   if (meta.sizeBytes <= 0 || meta.sizeBytes > kMaxUploadBytes)
@@ -219,6 +254,12 @@ qint64 SyncUploads::complete(const QString& uuid, const std::function<void(qint6
     }
   });
   if (!won) return state(uuid).sessionId;
+  if (r.meta.hasOutcome) {
+    try {  // checked when declared; a failure here leaves the session stored without it
+      m_store.saveHomeOutcome(id, r.meta.painScore, r.meta.comment, r.meta.summaryJson);
+    } catch (const StorageError&) {
+    }
+  }
   if (analyse) analyse(id);
   return id;
 }

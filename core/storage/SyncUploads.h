@@ -7,6 +7,7 @@
 #include <QByteArray>
 #include <QString>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "core/storage/ClinicalStore.h"
@@ -21,6 +22,12 @@ struct UploadMeta {
   QString protocol;      ///< the protocol's name, or empty
   QString sidecarJson;   ///< the recording's sidecar (a JSON object), or empty
   QString metaJson;      ///< the declaration as sent, kept as it was
+  /// The patient's own outcome, from metaJson's "outcome" object: {"pain_score": 0-10 or null,
+  /// "comment": text, "summary": {what the home window counted}} (ClinicalStore::saveHomeOutcome).
+  bool hasOutcome = false;
+  std::optional<int> painScore;
+  QString comment;
+  QString summaryJson = "{}";
 };
 
 /// Where an upload stands.
@@ -50,7 +57,8 @@ class SyncUploads {
   /// the same checksum: nothing to do.
   void putChunk(const QString& uuid, int seq, const QByteArray& data, const QString& sha256);
   /// Joins the chunks, checks the whole recording's checksum and imports it as a home session of
-  /// the device's patient (ClinicalStore::importRecording, as the home account); then
+  /// the device's patient (ClinicalStore::importRecording, as the home account) with the
+  /// declared outcome (saveHomeOutcome); then
   /// analysed(sessionId) is called (the caller analyses it; may throw, the session stays
   /// stored, pending). Again after that: the same session id, nothing imported twice.
   qint64 complete(const QString& uuid, const std::function<void(qint64)>& analyse);

@@ -96,7 +96,8 @@ struct TestRecording {
     return "{\"sha256\":\"" + (sha256.isEmpty() ? sha : sha256) +
            "\",\"size_bytes\":" + QByteArray::number(csv.size()) +
            ",\"chunks\":" + QByteArray::number(chunkCount) +
-           ",\"protocol\":\"reach\",\"sidecar\":" + sidecar + "}";
+           ",\"protocol\":\"reach\",\"sidecar\":" + sidecar +
+           ",\"outcome\":{\"pain_score\":2,\"comment\":\"ok\",\"summary\":{\"sets\":3}}}";
   }
 };
 TestRecording makeRecording(const Fixture& f) {
@@ -236,6 +237,8 @@ TEST(SyncServer, AChunkedUploadIsStoredAnalysedAndWholeOnceEvenWhenSentTwice) {
   EXPECT_EQ(s.setting, kSettingHome);
   EXPECT_EQ(s.protocolName, "reach");
   EXPECT_EQ(s.analysis, kAnalysisDone);
+  EXPECT_EQ(s.painScore, 2);
+  EXPECT_EQ(s.patientComment, "ok");
   EXPECT_TRUE(f.store->latestMetrics(id).has_value());
   expectSameRows(*f.store, id, t.rec);
   EXPECT_EQ(rawQuery(f.path, "SELECT sha256 FROM sync_uploads")[0][0].toString().toLatin1(), t.sha);

@@ -156,7 +156,11 @@ TEST_P(SyncStorage, UploadsAreIdempotentAndInvisibleToAnotherPatient) {
   const QString uuid = QUuid::createUuid().toString(QUuid::WithoutBraces);
   const qsizetype half = bytes.size() / 2;
   const QList<QByteArray> chunks{bytes.left(half), bytes.mid(half)};
-  UploadMeta meta{sha256Hex(bytes), bytes.size(), 2, {}, {}, "{}"};
+  UploadMeta meta;
+  meta.sha256 = sha256Hex(bytes);
+  meta.sizeBytes = bytes.size();
+  meta.chunkCount = 2;
+  meta.metaJson = R"({"outcome":{"pain_score":3,"comment":"tired","summary":{"sets":2}}})";
   EXPECT_TRUE(up1.declare(uuid, meta).created);
   const UploadState again = up1.declare(uuid, meta);
   EXPECT_FALSE(again.created);
@@ -186,7 +190,24 @@ TEST_P(SyncStorage, UploadsAreIdempotentAndInvisibleToAnotherPatient) {
   EXPECT_EQ(up1.complete(uuid, {}), id);
   EXPECT_EQ(f.store->listSessions("P1").size(), 1u);
   EXPECT_TRUE(f.store->listSessions("P2").empty());
-  EXPECT_EQ(f.store->session(id).setting, kSettingHome);
+  const SessionInfo stored = f.store->session(id);
+  EXPECT_EQ(stored.setting, kSettingHome);
+  EXPECT_EQ(stored.painScore, 3);
+  EXPECT_EQ(stored.patientComment, "tired");
+  EXPECT_EQ(stored.homeSummaryJson, R"({"sets":2})");
+  // Outcomes and protocols are checked when declared, before any chunk is sent.
+  for (const char* bad : {R"({"outcome":{"pain_score":11}})", R"({"outcome":{"pain_score":2.5}})",
+                          R"({"outcome":"bad"})", R"({"outcome":{"summary":[1]}})",
+                          R"({"protocol":"no such protocol"})"}) {
+    UploadMeta m = meta;
+    m.metaJson = bad;
+    expectError([&] { up1.declare(QUuid::createUuid().toString(QUuid::WithoutBraces), m); },
+                Kind::Usage);
+  }
+  UploadMeta longComment = meta;
+  longComment.metaJson = QString(R"({"outcome":{"comment":"%1"}})").arg(QString(2001, 'x'));
+  expectError([&] { up1.declare(QUuid::createUuid().toString(QUuid::WithoutBraces), longComment); },
+              Kind::Usage);
   EXPECT_EQ(rawQuery(f.path, "SELECT count(*) FROM sync_upload_chunks")[0][0].toInt(), 0);
 }
 
