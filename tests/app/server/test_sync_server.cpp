@@ -8,6 +8,7 @@
 #include <QCryptographicHash>
 #include <QFile>
 #include <QProcess>
+#include <QTcpServer>
 #include <QTcpSocket>
 #include <QUuid>
 
@@ -372,4 +373,74 @@ TEST(SyncServerProgram, RefusesToStartWithoutACertificateAndExplainsItself) {
   ASSERT_TRUE(p.waitForFinished(10000));
   EXPECT_EQ(p.exitCode(), 1);
   EXPECT_TRUE(p.readAllStandardError().contains("no PEM certificate"));
+}
+
+namespace {
+
+/// armtrack-server as a process on the fixture's records, on port (0: a free one, found first).
+struct ServerProcess {
+  QProcess process;
+  quint16 port = 0;
+  bool start(const ServerFixture& f, quint16 wanted) {
+    port = wanted;
+    if (port == 0) {
+      QTcpServer probe;
+      if (!probe.listen(QHostAddress::LocalHost, 0)) return false;
+      port = probe.serverPort();
+    }
+    process.start(ARMTRACK_SERVER, {"--db", f.path, "--port", QString::number(port), "--listen",
+                                    "127.0.0.1", "--cert", f.certPath, "--key", f.keyPath});
+    QByteArray out;
+    for (int i = 0; i < 100 && !out.contains("listening"); ++i) {
+      process.waitForReadyRead(100);
+      out += process.readAllStandardOutput();
+      if (process.state() == QProcess::NotRunning) return false;
+    }
+    return out.contains("listening on https://127.0.0.1:" + QByteArray::number(port));
+  }
+};
+
+}  // namespace
+
+// The server process killed (SIGKILL) mid-chunk and started again: the device asks what is
+// missing, sends it, and the session is stored once and whole.
+TEST(SyncServerProgram, KilledMidUploadAndRestartedTheUploadResumes) {
+  ServerFixture f;
+  ServerProcess first;
+  ASSERT_TRUE(first.start(f, 0)) << first.process.readAllStandardError().toStdString();
+  SyncTestClient c(first.port, QSslCertificate::fromPath(f.certPath).value(0));
+  const QByteArray code = f.store->createEnrolmentCode("home1", 600).code.toUtf8();
+  const Reply enrolled = c.send("POST", "/api/v1/enrol", "{\"code\":\"" + code + "\"}");
+  ASSERT_EQ(enrolled.status, 201) << enrolled.body.toStdString();
+  c.token = enrolled.json().value("token").toString().toLatin1();
+  const TestRecording t = makeRecording(f);
+  const QList<QByteArray> chunks = t.chunks(6);
+  const QByteArray uuid = newUuid();
+  ASSERT_EQ(c.send("PUT", "/api/v1/sessions/" + uuid, t.meta(chunks.size())).status, 201);
+  sendChunks(c, uuid, chunks, {0, 1, 2});
+  c.send("PUT", "/api/v1/sessions/" + uuid + "/chunks/3", chunks[3],
+         {{"X-Chunk-Sha256", sha256Hex(chunks[3]).toLatin1()}}, chunks[3].size() / 3);
+  first.process.kill();
+  ASSERT_TRUE(first.process.waitForFinished(10000));
+  EXPECT_EQ(c.send("GET", "/api/v1/sessions/" + uuid).status, 0);  // nobody answers
+
+  ServerProcess second;
+  ASSERT_TRUE(second.start(f, first.port)) << second.process.readAllStandardError().toStdString();
+  const Reply state = c.send("GET", "/api/v1/sessions/" + uuid);
+  ASSERT_EQ(state.status, 200) << state.body.toStdString();
+  std::vector<int> missing;
+  for (const QJsonValue& v : state.json().value("missing").toArray()) missing.push_back(v.toInt());
+  EXPECT_EQ(missing, (std::vector<int>{3, 4, 5}));
+  sendChunks(c, uuid, chunks, missing);
+  const Reply done = c.send("POST", "/api/v1/sessions/" + uuid + "/complete");
+  ASSERT_EQ(done.status, 200) << done.body.toStdString();
+  EXPECT_EQ(done.json().value("analysis").toString(), "done");
+  ASSERT_EQ(f.store->listSessions("P1").size(), 1u);
+  expectSameRows(*f.store, done.json().value("session").toInteger(), t.rec);
+  second.process.terminate();
+  second.process.waitForFinished(10000);
+  // The log of a real run names no patient.
+  const QByteArray log = second.process.readAllStandardError();
+  EXPECT_TRUE(log.contains("POST /api/v1/sessions/" + uuid + "/complete 200")) << log.toStdString();
+  EXPECT_FALSE(log.contains("P1") || log.contains("Name of")) << log.toStdString();
 }
