@@ -103,10 +103,17 @@ bool RateLimiter::allow(const QByteArray& key) {
   return true;
 }
 
+bool RateLimiter::hasLeft(const QByteArray& key) {
+  const auto it = m_buckets.constFind(key);
+  if (it == m_buckets.constEnd()) return true;
+  return std::min(m_burst, it->tokens + (m_clock.elapsed() - it->at) * m_rate / 1000.0) >= 1;
+}
+
 SyncApi::SyncApi(storage::Database& db, Options options)
     : m_db(db),
       m_perToken(options.ratePerSecond, options.burst),
-      m_perAddress(options.enrolPerMinute / 60.0, options.enrolPerMinute) {}
+      m_perAddress(options.enrolPerMinute / 60.0, options.enrolPerMinute),
+      m_refusedTokens(options.refusedTokensPerMinute / 60.0, options.refusedTokensPerMinute) {}
 
 HttpResponse SyncApi::handle(const HttpRequest& request) {
   qint64 device = 0;
@@ -158,8 +165,16 @@ HttpResponse SyncApi::route(const HttpRequest& r, qint64& device) {
     slow.headers.append(qMakePair(QByteArray("Retry-After"), QByteArray("1")));
     return slow;
   }
+  const QByteArray address = r.peer.toString().toLatin1();
+  if (!m_refusedTokens.hasLeft(address))
+    return error(429, "too many refused tokens from this address: wait a minute");
   storage::ClinicalStore store(m_db);
-  store.signInWithDeviceToken(QString::fromLatin1(token));
+  try {
+    store.signInWithDeviceToken(QString::fromLatin1(token));
+  } catch (const StorageError& e) {
+    if (e.kind() == Kind::Authentication) m_refusedTokens.allow(address);
+    throw;
+  }
   device = store.deviceId();
   const QString patientCode = [&] {
     QSqlQuery q = m_db.exec("SELECT code FROM patients WHERE id = ?", {*store.user().patientId});

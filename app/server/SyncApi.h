@@ -18,6 +18,8 @@ class RateLimiter {
   RateLimiter(double rate, double burst) : m_rate(rate), m_burst(burst) { m_clock.start(); }
   /// Takes one request for key; false when its bucket is empty. Keeps at most 10000 keys.
   bool allow(const QByteArray& key);
+  /// Whether key's bucket has a request left, without taking it.
+  bool hasLeft(const QByteArray& key);
 
  private:
   struct Bucket {
@@ -35,6 +37,9 @@ class SyncApi {
     double ratePerSecond = 20;  ///< per device token
     double burst = 200;
     double enrolPerMinute = 10;  ///< enrolment attempts per address
+    /// Requests with an unknown or revoked token per address (each is audited: without a limit
+    /// made-up tokens would flood the audit log).
+    double refusedTokensPerMinute = 10;
   };
   /// db: the clinic's records, opened on this thread.
   SyncApi(storage::Database& db, Options options);
@@ -49,6 +54,7 @@ class SyncApi {
   storage::Database& m_db;
   RateLimiter m_perToken;
   RateLimiter m_perAddress;
+  RateLimiter m_refusedTokens;
 };
 
 }  // namespace armtrack::server

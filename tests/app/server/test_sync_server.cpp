@@ -15,6 +15,7 @@
 #include "app/server/HttpsServer.h"
 #include "app/server/SyncApi.h"
 #include "app/server/Tls.h"
+#include "core/storage/SyncSecrets.h"
 #include "core/storage/SyncUploads.h"
 #include "tests/app/server/SyncTestClient.h"
 #include "tests/core/storage/StorageTestSupport.h"
@@ -349,6 +350,15 @@ TEST(SyncServer, OversizedBodiesGet413AndFastDevices429) {
   EXPECT_GE(limited, 4);
   SyncTestClient other = f.device("home2");  // another device has its own budget
   EXPECT_EQ(other.send("GET", "/api/v1/programme").status, 200);
+  // Made-up tokens: each refusal is audited, so an address gets 10 a minute, then 429.
+  SyncTestClient stranger = f.client();
+  std::vector<int> statuses;
+  for (int i = 0; i < 12; ++i) {
+    stranger.token = newDeviceToken().toLatin1();
+    statuses.push_back(stranger.send("GET", "/api/v1/programme").status);
+  }
+  EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 401), 10);
+  EXPECT_EQ(std::count(statuses.begin(), statuses.end(), 429), 2);
 }
 
 TEST(SyncServerProgram, RefusesToStartWithoutACertificateAndExplainsItself) {
