@@ -697,6 +697,14 @@
         <source>Chest (sternum) sensor: its tilt is taken from the upright start pose; its heading about the vertical is kept as assumed.</source>
         <translation>Brustbeinsensor: seine Neigung wird aus der aufrechten Ausgangshaltung bestimmt; seine Ausrichtung um die Senkrechte bleibt wie angenommen.</translation>
     </message>
+    <message>
+        <source>The fit did not settle. Check that all three sensors are strapped tight, then redo the protocol.</source>
+        <translation>Die Anpassung kam nicht zur Ruhe. Prüfen Sie, ob alle drei Sensoren fest sitzen, und wiederholen Sie das Protokoll.</translation>
+    </message>
+    <message>
+        <source>The patient sits upright with all three sensors (upper arm, forearm and chest) strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
+        <translation>Der Patient sitzt aufrecht, alle drei Sensoren (Oberarm, Unterarm und Brust) sind angelegt. Auf „Starten“ drücken und dann etwa eine Minute lang den Anweisungen auf dem Bildschirm folgen.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>

@@ -697,6 +697,14 @@
         <source>Chest (sternum) sensor: its tilt is taken from the upright start pose; its heading about the vertical is kept as assumed.</source>
         <translation>Sensor del pecho (esternón): su inclinación se toma de la postura inicial erguida; su orientación alrededor de la vertical se mantiene como se supuso.</translation>
     </message>
+    <message>
+        <source>The fit did not settle. Check that all three sensors are strapped tight, then redo the protocol.</source>
+        <translation>El ajuste no convergió. Compruebe que los tres sensores están bien sujetos y repita el protocolo.</translation>
+    </message>
+    <message>
+        <source>The patient sits upright with all three sensors (upper arm, forearm and chest) strapped on. Press Start, then follow the instructions on the screen for about a minute.</source>
+        <translation>El paciente está sentado erguido con los tres sensores (brazo, antebrazo y pecho) colocados. Pulse «Iniciar» y siga las instrucciones de la pantalla durante un minuto aproximadamente.</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::app::gui::SessionController</name>

@@ -11,7 +11,7 @@
 
 #include "ui/AngleTableModel.h"
 #include "ui/AngleTraceItem.h"
-#include "ui/Fonts.h"
+#include "ui/TimeChart.h"
 
 namespace armtrack::ui {
 
@@ -34,14 +34,6 @@ double niceStep(double span, int maxTicks, std::initializer_list<double> steps) 
 QList<QPointF> toList(const std::vector<QPointF>& v) {
   return QList<QPointF>(v.begin(), v.end());
 }
-
-void setPen(QLineSeries* s, const QColor& c, qreal width, Qt::PenStyle style = Qt::SolidLine) {
-  QPen pen(c);
-  pen.setWidthF(width);
-  pen.setStyle(style);
-  pen.setCosmetic(true);
-  s->setPen(pen);
-}
 }  // namespace
 
 QColor angleColour(int angle, bool dark) {
@@ -57,35 +49,12 @@ QColor angleColour(int angle, bool dark) {
 
 AngleChart::AngleChart(int angle, QWidget* parent)
     : QChartView(parent), m_angle(angle), m_chart(new QChart) {
-  m_chart->setAnimationOptions(QChart::NoAnimation);
   m_chart->legend()->hide();
-  m_chart->setMargins(QMargins(4, 2, 4, 2));
-  m_chart->setBackgroundRoundness(0);
-  m_chart->setTitleFont(scaledFont(m_chart->titleFont(), 0.9));
-  setChart(m_chart);
-  setRenderHint(QPainter::Antialiasing, false);  // thousands of points at 30 Hz
-  setMinimumSize(1, 1);
-  setFocusPolicy(Qt::NoFocus);
-
-  m_x = new QValueAxis;
-  m_y = new QValueAxis;
-  m_x->setLabelFormat(QStringLiteral("%.0f s"));
-  m_y->setLabelFormat(QStringLiteral("%.0f"));
-  // Qt Charts elides labels ("...") it sized while the chart was tiny and keeps them so.
-  m_x->setTruncateLabels(false);
-  m_y->setTruncateLabels(false);
-  m_x->setTickType(QValueAxis::TicksDynamic);
-  m_x->setTickAnchor(0.0);
-  m_x->setTickInterval(5.0);
+  const TimeAxes axes = setUpTimeChart(*this, *m_chart);
+  m_x = axes.x;
+  m_y = axes.y;
   m_y->setTickCount(6);
-  m_chart->addAxis(m_x, Qt::AlignBottom);
-  m_chart->addAxis(m_y, Qt::AlignLeft);
-
-  auto attach = [&](QAbstractSeries* s) {
-    m_chart->addSeries(s);
-    s->attachAxis(m_x);
-    s->attachAxis(m_y);
-  };
+  auto attach = [&](QAbstractSeries* s) { attachToAxes(*m_chart, s, axes); };
   m_targetUpper = new QLineSeries(this);
   m_targetLower = new QLineSeries(this);
   m_target = new QAreaSeries(m_targetUpper, m_targetLower);
@@ -130,19 +99,9 @@ void AngleChart::changeEvent(QEvent* event) {
 
 void AngleChart::setDark(bool dark) {
   m_dark = dark;
-  const QColor bg = dark ? QColor(0x23, 0x25, 0x29) : QColor(Qt::white);
-  const QColor fg = dark ? QColor(0xe6, 0xe6, 0xe6) : QColor(0x20, 0x20, 0x20);
-  const QColor grid = dark ? QColor(0x3c, 0x40, 0x46) : QColor(0xdd, 0xdd, 0xdd);
-  m_chart->setBackgroundBrush(bg);
-  m_chart->setPlotAreaBackgroundVisible(false);
-  m_chart->setTitleBrush(fg);
-  for (QValueAxis* a : {m_x, m_y}) {
-    a->setLabelsBrush(fg);
-    a->setGridLineColor(grid);
-    a->setLinePenColor(grid);
-  }
+  const QColor fg = applyTimeChartColours(*m_chart, {m_x, m_y}, dark);
   const QColor c = angleColour(m_angle, dark);
-  setPen(m_line, c, 2.0);
+  setSeriesPen(m_line, c, 2.0);
   m_trace->setLinePen(m_line->pen());
   QColor band = c;
   band.setAlpha(dark ? 70 : 55);
@@ -156,19 +115,18 @@ void AngleChart::setDark(bool dark) {
   tp.setStyle(Qt::DashLine);
   tp.setCosmetic(true);
   m_target->setPen(tp);
-  setPen(m_overlay, dark ? QColor(0xbb, 0xbb, 0xbb) : QColor(0x55, 0x55, 0x55), 1.5, Qt::DashLine);
-  setPen(m_cursor, fg, 1.0);
+  setSeriesPen(m_overlay, dark ? QColor(0xbb, 0xbb, 0xbb) : QColor(0x55, 0x55, 0x55), 1.5,
+               Qt::DashLine);
+  setSeriesPen(m_cursor, fg, 1.0);
   for (QLineSeries* m : m_markers)
-    setPen(m, dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
+    setSeriesPen(m, dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
 }
 
 QLineSeries* AngleChart::verticalLine(std::size_t index) {
   while (m_markers.size() <= index) {
     auto* s = new QLineSeries;
-    m_chart->addSeries(s);
-    s->attachAxis(m_x);
-    s->attachAxis(m_y);
-    setPen(s, m_dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
+    attachToAxes(*m_chart, s, {m_x, m_y});
+    setSeriesPen(s, m_dark ? QColor(0xff, 0xd0, 0x40) : QColor(0xb0, 0x70, 0x00), 1.0, Qt::DotLine);
     m_markers.push_back(s);
   }
   return m_markers[index];

@@ -46,13 +46,17 @@ AngleSample angleSample(const session::EstimateRow& row) {
   s.headingFromStartPose = row.headingFromStartPoseOnly;
   s.predicted = row.status == UpdateResult::Predicted;
   if (row.trunk)
-    for (int i = 0; i < kTrunkAngleCount; ++i) {
-      const double v = (*row.trunk)(i)*kRadToDegree;
-      s.trunkDeg[i] = std::isfinite(v) ? v : kNoAngle;
-      const double sd = row.trunkStd ? std::abs((*row.trunkStd)(i)) * kRadToDegree : 0.0;
-      s.trunkSigmaDeg[i] = std::isfinite(sd) ? sd : 0.0;
-    }
+    setTrunk(s, *row.trunk, row.trunkStd ? *row.trunkStd : Eigen::Vector3d::Zero().eval());
   return s;
+}
+
+void setTrunk(AngleSample& s, const Eigen::Vector3d& trunkRad, const Eigen::Vector3d& sdRad) {
+  for (int i = 0; i < kTrunkAngleCount; ++i) {
+    const double v = trunkRad(i) * kRadToDegree;
+    s.trunkDeg[i] = std::isfinite(v) ? v : kNoAngle;
+    const double sd = std::abs(sdRad(i)) * kRadToDegree;
+    s.trunkSigmaDeg[i] = std::isfinite(sd) ? sd : 0.0;
+  }
 }
 
 bool AngleSample::hasTrunk() const {

@@ -43,6 +43,9 @@ struct AngleSample {
 /// An estimate as clinical angles (degrees) with its uncertainty.
 AngleSample angleSample(double t, const JointVector& thRad, const JointVector& thStdRad);
 AngleSample angleSample(const session::EstimateRow& row);
+/// Sets the sample's trunk angles from radians (NaN: not measured) and their 1-sigma (NaN: not
+/// known).
+void setTrunk(AngleSample& s, const Eigen::Vector3d& trunkRad, const Eigen::Vector3d& sdRad);
 
 /// The samples of one series, in time order. Live: old samples beyond keepSeconds are dropped;
 /// review: keepSeconds = infinity keeps everything. Samples out of time order or with a

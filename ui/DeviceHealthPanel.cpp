@@ -72,8 +72,8 @@ void HealthTracker::update(const session::SessionStats& stats, double now) {
     StreamHealthRow& r = m_rows[i];
     r.device = QString::fromStdString(s.device);
     // The sternum sensor by what it is, as the arm sensors are known by their place.
-    r.stream =
-        s.role == StreamRole::TrunkImu ? trunkSensorName() : QString::fromStdString(s.stream);
+    r.trunkSensor = s.role == StreamRole::TrunkImu;
+    r.stream = r.trunkSensor ? trunkSensorName() : QString::fromStdString(s.stream);
     r.rateHz = s.rateHz;
     r.lost = s.deviceDropped;
     r.rejected = s.rejected + s.late;

@@ -23,7 +23,10 @@ namespace armtrack::ui {
 enum class HealthLevel { Idle, Ok, Warning, Down };
 
 struct StreamHealthRow {
-  QString device, stream;
+  QString device, stream;  ///< stream: trunkSensorName() for the sternum sensor
+  /// The sternum sensor (StreamRole::TrunkImu): its name is in words of the current language,
+  /// so a text made later names it with trunkSensorName() again, not with stream.
+  bool trunkSensor = false;
   HealthLevel level = HealthLevel::Idle;
   QString status;  ///< in words: "streaming", "no data for 1.4 s", "reconnecting: ..."
   double rateHz = 0.0;

@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "ui/Fonts.h"
+#include "ui/TimeChart.h"
 
 namespace armtrack::ui {
 
@@ -42,37 +43,17 @@ QColor TrunkChart::colour(int angle, bool dark) {
 }
 
 TrunkChart::TrunkChart(QWidget* parent) : QChartView(parent), m_chart(new QChart) {
-  m_chart->setAnimationOptions(QChart::NoAnimation);
-  m_chart->setMargins(QMargins(4, 2, 4, 2));
-  m_chart->setBackgroundRoundness(0);
-  m_chart->setTitleFont(scaledFont(m_chart->titleFont(), 0.9));
   m_chart->legend()->setAlignment(Qt::AlignRight);
   m_chart->legend()->setFont(scaledFont(m_chart->legend()->font(), 0.85));
-  setChart(m_chart);
-  setRenderHint(QPainter::Antialiasing, false);
-  setMinimumSize(1, 1);
-  setFocusPolicy(Qt::NoFocus);
-  m_x = new QValueAxis;
-  m_y = new QValueAxis;
-  m_x->setLabelFormat(QStringLiteral("%.0f s"));
-  m_y->setLabelFormat(QStringLiteral("%.0f"));
-  m_x->setTruncateLabels(false);
-  m_y->setTruncateLabels(false);
-  m_x->setTickType(QValueAxis::TicksDynamic);
-  m_x->setTickAnchor(0.0);
-  m_x->setTickInterval(5.0);
-  m_chart->addAxis(m_x, Qt::AlignBottom);
-  m_chart->addAxis(m_y, Qt::AlignLeft);
+  const TimeAxes axes = setUpTimeChart(*this, *m_chart);
+  m_x = axes.x;
+  m_y = axes.y;
   for (auto& line : m_lines) {
     line = new QLineSeries(this);
-    m_chart->addSeries(line);
-    line->attachAxis(m_x);
-    line->attachAxis(m_y);
+    attachToAxes(*m_chart, line, axes);
   }
   m_cursor = new QLineSeries(this);
-  m_chart->addSeries(m_cursor);
-  m_cursor->attachAxis(m_x);
-  m_cursor->attachAxis(m_y);
+  attachToAxes(*m_chart, m_cursor, axes);
   // The legend names the three angles only.
   for (QLegendMarker* marker : m_chart->legend()->markers(m_cursor)) marker->setVisible(false);
   m_x->setRange(0, 10);
@@ -101,30 +82,13 @@ void TrunkChart::changeEvent(QEvent* event) {
 }
 
 void TrunkChart::setDark(bool dark) {
-  const QColor bg = dark ? QColor(0x23, 0x25, 0x29) : QColor(Qt::white);
-  const QColor fg = dark ? QColor(0xe6, 0xe6, 0xe6) : QColor(0x20, 0x20, 0x20);
-  const QColor grid = dark ? QColor(0x3c, 0x40, 0x46) : QColor(0xdd, 0xdd, 0xdd);
-  m_chart->setBackgroundBrush(bg);
-  m_chart->setPlotAreaBackgroundVisible(false);
-  m_chart->setTitleBrush(fg);
+  const QColor fg = applyTimeChartColours(*m_chart, {m_x, m_y}, dark);
   m_chart->legend()->setLabelColor(fg);
-  for (QValueAxis* a : {m_x, m_y}) {
-    a->setLabelsBrush(fg);
-    a->setGridLineColor(grid);
-    a->setLinePenColor(grid);
-  }
   // Solid, dashed and dotted as well as coloured: told apart without colour too.
   const Qt::PenStyle styles[kTrunkAngleCount] = {Qt::SolidLine, Qt::DashLine, Qt::DotLine};
-  for (int a = 0; a < kTrunkAngleCount; ++a) {
-    QPen pen(colour(a, dark));
-    pen.setWidthF(2.0);
-    pen.setStyle(styles[a]);
-    pen.setCosmetic(true);
-    m_lines[static_cast<std::size_t>(a)]->setPen(pen);
-  }
-  QPen cursor(fg);
-  cursor.setCosmetic(true);
-  m_cursor->setPen(cursor);
+  for (int a = 0; a < kTrunkAngleCount; ++a)
+    setSeriesPen(m_lines[static_cast<std::size_t>(a)], colour(a, dark), 2.0, styles[a]);
+  setSeriesPen(m_cursor, fg, 1.0);
 }
 
 void TrunkChart::draw(const AngleTrace& trunk, double t0, double t1, std::optional<double> cursor) {

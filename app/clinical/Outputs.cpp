@@ -200,7 +200,9 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
   if (format != ExportFormat::Bids) store.requireIntactRecording(id);
   const storage::SessionAngles s = storage::sessionAngles(store, id, storage::SeriesRows::All);
   if (format == ExportFormat::Csv) {
-    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad);
+    // The trunk's columns when the estimates hold them (a trunk IMU or an optical shoulder).
+    const TrunkColumns trunk{s.trunkRad, s.trunkSdRad};
+    const CsvExportResult r = writeClinicalCsv(target, s.series, s.metrics, &s.sdRad, &trunk);
     out.what = std::to_string(r.rows) + " rows to " + r.anglesCsv.string() +
                " and its metrics to " + r.metricsCsv.string();
     out.files = {r.anglesCsv, r.metricsCsv};
@@ -221,7 +223,8 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
     o.task = bidsLabel(s.info.protocolName.isEmpty() ? std::string("armtrack")
                                                      : ss(s.info.protocolName));
     o.taskName = s.info.protocolName.isEmpty() ? "ArmTrack session" : ss(s.info.protocolName);
-    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o);
+    const TrunkColumns trunk{s.trunkRad, {}};
+    const BidsExportResult r = writeBidsMotion(target, &recording, &s.series, s.side, o, &trunk);
     out.what = std::to_string(r.systems.size()) + " tracking systems to " + r.motionDir.string();
     out.files = {r.motionDir};
     out.notes = r.notes;

@@ -121,6 +121,8 @@ class ArmFilter final : public JointEstimator {
   // The variance the arm's angles relative to the thorax take from the trunk's uncertain
   // orientation, added to var (rad^2).
   void addTrunkVariance(const JointVector& th, JointVector& var) const;
+  // Without an optical shoulder: the hip pivot from the arm's optical points (world frame).
+  void fitHipFromArm(const ArmSample& s);
 
   // ArmFilterOptical.cpp: the optical rows' gate and heading matching
   bool gateOptical(BlockList& b);

@@ -72,6 +72,7 @@ void ArmFilter<N>::applyTrunk(ArmSample& s) {
       m_geometry.reset();
     }
   }
+  if (ts.haveImu && !m_trunk->seenShoulder() && m_initialised) fitHipFromArm(s);
   // World to frame 0: p0 = R^T (p - s).
   const Eigen::Matrix3d rt = ts.rotation.transpose();
   if (s.elbow) s.elbow = rt * (*s.elbow - ts.shoulder);
@@ -109,6 +110,98 @@ double ArmFilter<N>::trunkPositionVariance(const Eigen::Vector3d& p) const {
 // their positions at the current angles); it comes on top of P, which treats the same error as
 // white noise on each optical frame. Without it, a sternum IMU on a still trunk left the
 // shoulder's squared errors 1.1-1.8 times their variance (seeds 501-505, Kinect).
+namespace {
+
+// Elbow and wrist (frame 0) at th, and their joint Jacobian by central differences.
+void pointsAndJacobian(const ArmGeometry& geometry, const JointVector& th,
+                       Eigen::Matrix<double, 6, 1>& p, Eigen::Matrix<double, 6, 5>& jac) {
+  const ArmGeometryT<double> geo = geometryAs<double>(geometry);
+  auto positions = [&](const JointVector& a) {
+    Eigen::Matrix<double, 6, 1> out;
+    Eigen::Vector3d e, w;
+    armPositions<double>(a, geo, e, w);
+    out << e, w;
+    return out;
+  };
+  constexpr double kStep = 1e-6;
+  for (int j = 0; j < 5; ++j) {
+    JointVector d = JointVector::Zero();
+    d(j) = kStep;
+    jac.col(j) = (positions(th + d) - positions(th - d)) / (2.0 * kStep);
+  }
+  p = positions(th);
+}
+
+// The hip fit from the arm's points: what the arm's predicted positions leave out besides their
+// own uncertainty and the sensor's noise (their errors are correlated from frame to frame, as
+// the filter bends the joints to follow the points).
+constexpr double kHipFromArmFactor = 4.0;
+// A residual this large is an arm the filter has lost, or an outlier, not the hip.
+constexpr double kHipGateMetres = 0.10;
+constexpr double kHipGatePixels = 40.0;
+// Below this |I - R| (about 3 deg of lean) the points say nothing about the hip.
+constexpr double kHipMinTurn = 0.05;
+
+}  // namespace
+
+// Without an optical shoulder the hip pivot was left at its prior, and a real hip 4 cm away
+// put the shoulder 1-2 cm off on a 20 deg lean: with a webcam the arm was lost (12-17 deg). The
+// arm's own points see it: with the trunk turned, a hip error moves the shoulder by (I - R) dh,
+// and the elbow and wrist with it, where the arm's angles (from its IMUs, and the points over
+// many poses) predict them. Each optical frame's residual, taken before the filter's update, is
+// a linear observation of the hip.
+template <int N>
+void ArmFilter<N>::fitHipFromArm(const ArmSample& s) {
+  const TrunkState& ts = m_trunk->state();
+  const Eigen::Matrix3d lever = Eigen::Matrix3d::Identity() - ts.rotation;  // d shoulder / d hip
+  if (lever.norm() < kHipMinTurn) return;
+  const bool hasPoints = s.elbow || s.wrist;
+  const bool hasPixels = m_p.camera && m_p.useCamera && (s.camElbow || s.camWrist);
+  if (!hasPoints && !hasPixels) return;
+  const JointVector th = m_x.template segment<5>(10);
+  Eigen::Matrix<double, 6, 1> p;
+  Eigen::Matrix<double, 6, 5> jac;
+  pointsAndJacobian(m_p.geometry, th, p, jac);
+  const Eigen::Matrix<double, 6, 6> pointCov =
+      jac * m_P.template block<5, 5>(10, 10) * jac.transpose();
+  const std::optional<Eigen::Vector3d> points[2] = {s.elbow, s.wrist};
+  for (int k = 0; k < 2; ++k) {
+    if (!points[k] || !points[k]->allFinite()) continue;
+    const Eigen::Vector3d predicted = ts.shoulder + ts.rotation * p.segment<3>(3 * k);
+    const Eigen::Vector3d r = *points[k] - predicted;
+    if (r.norm() > kHipGateMetres) continue;
+    const double var = kHipFromArmFactor *
+                       (m_p.positionVariance + pointCov.block<3, 3>(3 * k, 3 * k).trace() / 3.0);
+    m_trunk->addHipObservation(lever, r, var);
+  }
+  if (!hasPixels) return;
+  // The camera in frame 0 for the current pose, as applyTrunk builds it; a left arm's camera
+  // sees the mirror image.
+  const bool left = m_p.side == Side::Left;
+  const Eigen::Matrix3d mirror = left ? Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal().toDenseMatrix()
+                                      : Eigen::Matrix3d::Identity();
+  CameraParams c = *m_p.camera;
+  c.R = m_p.camera->R * mirror * ts.rotation * mirror;
+  c.t = m_p.camera->R * (mirror * ts.shoulder) + m_p.camera->t;
+  const PinholeCamera camera(c);
+  const std::optional<Eigen::Vector2d> pixels[2] = {s.camElbow, s.camWrist};
+  for (int k = 0; k < 2; ++k) {
+    if (!pixels[k] || !pixels[k]->allFinite()) continue;
+    Eigen::Vector2d predicted;
+    Eigen::Matrix<double, 2, 3> dPixel;  // per m of the (mirrored) frame-0 point
+    if (!camera.project(mirror * p.segment<3>(3 * k), predicted, dPixel)) continue;
+    const Eigen::Vector2d r = *pixels[k] - predicted;
+    if (r.norm() > kHipGatePixels) continue;
+    // d pixel / d p_cam, then p_cam = Rc M (R p + (I - R) h): d p_cam / d h = Rc M (I - R).
+    const Eigen::Matrix<double, 2, 3> perCam = dPixel * c.R.transpose();
+    const Eigen::Matrix<double, 2, 3> a = perCam * m_p.camera->R * mirror * lever;
+    const Eigen::Matrix<double, 2, 3> perPoint = dPixel * mirror;
+    const double pointVar =
+        (perPoint * pointCov.block<3, 3>(3 * k, 3 * k) * perPoint.transpose()).trace() / 2.0;
+    m_trunk->addHipObservation(a, r, kHipFromArmFactor * (m_p.pixelVariance + pointVar));
+  }
+}
+
 template <int N>
 void ArmFilter<N>::addTrunkVariance(const JointVector& th, JointVector& var) const {
   if (!m_trunk || !m_trunk->state().haveImu) return;
@@ -117,23 +210,9 @@ void ArmFilter<N>::addTrunkVariance(const JointVector& th, JointVector& var) con
   const Eigen::Matrix3d rotCov = rt * ts.rotationCov * ts.rotation;  // frame 0
   const Eigen::Matrix3d shift = rt * (Eigen::Matrix3d::Identity() - ts.rotation);
   const Eigen::Matrix3d hipCov = shift * ts.hipCov * shift.transpose();
-  // Positions and their joint Jacobian by central differences.
-  const ArmGeometryT<double> geo = geometryAs<double>(m_p.geometry);
-  auto positions = [&](const JointVector& a) {
-    Eigen::Matrix<double, 6, 1> out;
-    Eigen::Vector3d e, w;
-    armPositions<double>(a, geo, e, w);
-    out << e, w;
-    return out;
-  };
+  Eigen::Matrix<double, 6, 1> p;
   Eigen::Matrix<double, 6, 5> jac;
-  constexpr double kStep = 1e-6;
-  for (int j = 0; j < 5; ++j) {
-    JointVector d = JointVector::Zero();
-    d(j) = kStep;
-    jac.col(j) = (positions(th + d) - positions(th - d)) / (2.0 * kStep);
-  }
-  const Eigen::Matrix<double, 6, 1> p = positions(th);
+  pointsAndJacobian(m_p.geometry, th, p, jac);
   Eigen::Matrix<double, 6, 3> turn, offset;
   for (int k = 0; k < 2; ++k) {
     turn.block<3, 3>(3 * k, 0) = skew3(p.segment<3>(3 * k) - ts.hip);
@@ -163,10 +242,12 @@ std::optional<TrunkEstimate> ArmFilter<N>::trunk() const {
 
 template void ArmFilter<kBase>::applyTrunk(ArmSample& s);
 template double ArmFilter<kBase>::trunkPositionVariance(const Eigen::Vector3d& p) const;
+template void ArmFilter<kBase>::fitHipFromArm(const ArmSample& s);
 template void ArmFilter<kBase>::addTrunkVariance(const JointVector& th, JointVector& var) const;
 template std::optional<TrunkEstimate> ArmFilter<kBase>::trunk() const;
 template void ArmFilter<kBase + 6>::applyTrunk(ArmSample& s);
 template double ArmFilter<kBase + 6>::trunkPositionVariance(const Eigen::Vector3d& p) const;
+template void ArmFilter<kBase + 6>::fitHipFromArm(const ArmSample& s);
 template void ArmFilter<kBase + 6>::addTrunkVariance(const JointVector& th, JointVector& var) const;
 template std::optional<TrunkEstimate> ArmFilter<kBase + 6>::trunk() const;
 

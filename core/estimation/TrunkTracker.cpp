@@ -171,6 +171,20 @@ void TrunkTracker::addShoulder(double t, const Eigen::Vector3d& s) {
   updateShoulder();
 }
 
+void TrunkTracker::addHipObservation(const Eigen::Matrix<double, Eigen::Dynamic, 3>& a,
+                                     const Eigen::VectorXd& residual, double variance) {
+  if (!m_haveImu || !(variance > 0.0) || !a.allFinite() || !residual.allFinite()) return;
+  Eigen::Matrix<double, Eigen::Dynamic, 6> a6 =
+      Eigen::Matrix<double, Eigen::Dynamic, 6>::Zero(a.rows(), 6);
+  a6.leftCols<3>() = a;
+  m_fitInfo += a6.transpose() * a6 / variance;
+  m_fitVec += a6.transpose() * (residual + a * m_hip) / variance;
+  const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(m_fitInfo);
+  m_hip = ldlt.solve(m_fitVec).head<3>();
+  m_hipCov = ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity()).topLeftCorner<3, 3>();
+  updateShoulder();
+}
+
 void TrunkTracker::updateShoulder() {
   if (m_haveImu) {
     const Eigen::Matrix3d& rot = m_state.rotation;

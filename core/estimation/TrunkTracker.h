@@ -68,6 +68,11 @@ class TrunkTracker {
   void addImu(double t, const ImuReading& r);
   /// An optical shoulder position (world) at time t.
   void addShoulder(double t, const Eigen::Vector3d& s);
+  /// A linear observation of the hip pivot from the arm's own optical points: what was seen minus
+  /// what the arm and the trunk's pose predict, `residual ~ a (h_true - h)` with variance
+  /// `variance` per row (rows: 3 for a point in the world, 2 for a pixel).
+  void addHipObservation(const Eigen::Matrix<double, Eigen::Dynamic, 3>& a,
+                         const Eigen::VectorXd& residual, double variance);
   const TrunkState& state() const { return m_state; }
   /// Flexion, lateral bending, axial rotation (rad, patient terms) and their standard deviations.
   Eigen::Vector3d angles() const;

@@ -143,7 +143,8 @@ System opticalSystem(const Recording& rec, Side side) {
   return s;
 }
 
-System angleSystem(const AngleSeries& series, Side side, std::size_t& skipped) {
+System angleSystem(const AngleSeries& series, const TrunkColumns* trunk, Side side,
+                   std::size_t& skipped) {
   System s;
   s.label = "angles";
   s.trackingSystemName = "ArmTrack estimated joint angles";
@@ -155,6 +156,14 @@ System angleSystem(const AngleSeries& series, Side side, std::size_t& skipped) {
     s.channels.push_back(
         {std::string(info[a].key), "n/a", "JNTANG", sw + points[a], "deg", "n/a",
          std::string(info[a].name) + ", positive = " + std::string(info[a].positive)});
+  // The trunk's angles from the upright start (core/kinematics/Trunk.h), the same for both sides.
+  static constexpr const char* kTrunk[3][2] = {
+      {"trunk_flex", "Trunk flexion, positive = leaning forward"},
+      {"trunk_lat", "Trunk lateral bending, positive = leaning to the patient's right"},
+      {"trunk_rot", "Trunk axial rotation, positive = the right shoulder forward"}};
+  if (trunk)
+    for (const auto& [key, what] : kTrunk)
+      s.channels.push_back({key, "n/a", "JNTANG", "Thorax", "deg", "n/a", what});
   for (std::size_t i = 0; i < series.t.size(); ++i) {
     if (std::isfinite(series.t[i]))
       s.rows.push_back(i);
@@ -162,8 +171,10 @@ System angleSystem(const AngleSeries& series, Side side, std::size_t& skipped) {
       ++skipped;
   }
   s.time = [&series](std::size_t i) { return series.t[i]; };
-  s.fill = [&series](std::size_t i, std::vector<double>& v) {
+  s.fill = [&series, trunk](std::size_t i, std::vector<double>& v) {
     for (int a = 0; a < kNumClinicalAngles; ++a) v[a] = series.angle[i][a] * kRadToDeg;
+    if (trunk)
+      for (int k = 0; k < 3; ++k) v[kNumClinicalAngles + k] = trunk->angleRad[i](k) * kRadToDeg;
   };
   return s;
 }
@@ -330,7 +341,8 @@ std::string bidsLabel(const std::string& text) {
 }
 
 BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recording,
-                                 const AngleSeries* angles, Side side, const BidsOptions& options) {
+                                 const AngleSeries* angles, Side side, const BidsOptions& options,
+                                 const TrunkColumns* trunk) {
   for (const auto& [what, label] :
        {std::pair<const char*, const std::string*>{"subject", &options.subject},
         {"task", &options.task}}) {
@@ -344,6 +356,11 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
   if (angles && angles->angle.size() != angles->t.size())
     throw std::invalid_argument("BIDS export: " + std::to_string(angles->t.size()) + " times but " +
                                 std::to_string(angles->angle.size()) + " angle rows");
+  if (trunk && trunk->angleRad.empty()) trunk = nullptr;
+  if (trunk && (!angles || trunk->angleRad.size() != angles->t.size()))
+    throw std::invalid_argument("BIDS export: " + std::to_string(trunk->angleRad.size()) +
+                                " trunk rows for " + std::to_string(angles ? angles->t.size() : 0) +
+                                " angle rows");
 
   BidsExportResult result;
   std::vector<System> systems;
@@ -351,7 +368,7 @@ BidsExportResult writeBidsMotion(const fs::path& root, const Recording* recordin
     systems.push_back(imuSystem(*recording, side));
     systems.push_back(opticalSystem(*recording, side));
   }
-  if (angles) systems.push_back(angleSystem(*angles, side, result.skippedAngleRows));
+  if (angles) systems.push_back(angleSystem(*angles, trunk, side, result.skippedAngleRows));
   std::vector<System> kept;
   for (System& s : systems) {
     if (s.rows.size() >= 2) {

@@ -61,13 +61,20 @@ fs::path metricsCsvPath(const fs::path& anglesCsv) {
 
 CsvExportResult writeClinicalCsv(const fs::path& anglesCsv, const AngleSeries& series,
                                  const SessionMetrics& metrics,
-                                 const std::vector<ClinicalRow>* sdRad) {
+                                 const std::vector<ClinicalRow>* sdRad, const TrunkColumns* trunk) {
   if (series.angle.size() != series.t.size())
     throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) + " times but " +
                                 std::to_string(series.angle.size()) + " angle rows");
   if (sdRad && sdRad->size() != series.t.size())
     throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) + " times but " +
                                 std::to_string(sdRad->size()) + " sd rows");
+  if (trunk && trunk->angleRad.empty()) trunk = nullptr;
+  const bool trunkSd = trunk && !trunk->sdRad.empty();
+  if (trunk && (trunk->angleRad.size() != series.t.size() ||
+                (trunkSd && trunk->sdRad.size() != series.t.size())))
+    throw std::invalid_argument("clinical CSV: " + std::to_string(series.t.size()) + " times but " +
+                                std::to_string(trunk->angleRad.size()) + " trunk rows and " +
+                                std::to_string(trunk->sdRad.size()) + " trunk sd rows");
   CsvExportResult result;
   result.anglesCsv = anglesCsv;
   result.metricsCsv = metricsCsvPath(anglesCsv);
@@ -91,6 +98,11 @@ CsvExportResult writeClinicalCsv(const fs::path& anglesCsv, const AngleSeries& s
   for (const auto& a : info) out += "," + std::string(a.key) + "_deg";
   if (sdRad)
     for (const auto& a : info) out += "," + std::string(a.key) + "_sd_deg";
+  static constexpr const char* kTrunkKeys[] = {"trunk_flex", "trunk_lat", "trunk_rot"};
+  if (trunk)
+    for (const char* k : kTrunkKeys) out += "," + std::string(k) + "_deg";
+  if (trunkSd)
+    for (const char* k : kTrunkKeys) out += "," + std::string(k) + "_sd_deg";
   out += '\n';
   for (std::size_t i = 0; i < series.t.size(); ++i) {
     if (!std::isfinite(series.t[i])) {
@@ -106,6 +118,16 @@ CsvExportResult writeClinicalCsv(const fs::path& anglesCsv, const AngleSeries& s
       for (double v : (*sdRad)[i]) {
         out += ',';
         appendDeg(out, v, result.emptyCells);
+      }
+    if (trunk)
+      for (int k = 0; k < 3; ++k) {
+        out += ',';
+        appendDeg(out, trunk->angleRad[i](k), result.emptyCells);
+      }
+    if (trunkSd)
+      for (int k = 0; k < 3; ++k) {
+        out += ',';
+        appendDeg(out, trunk->sdRad[i](k), result.emptyCells);
       }
     out += '\n';
     ++result.rows;

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/io/Recording.h"
 #include "core/kinematics/Side.h"
 #include "core/metrics/ClinicalMetrics.h"
@@ -45,15 +47,27 @@ struct CsvExportResult {
 /// The metrics file written beside an angles CSV: "<stem>_metrics.csv" in the same folder.
 std::filesystem::path metricsCsvPath(const std::filesystem::path& anglesCsv);
 
+/// The trunk's angles of an export, one row per row of its series (rad; flexion, lateral
+/// bending, axial rotation, core/kinematics/Trunk.h; NaN where not measured).
+struct TrunkColumns {
+  std::vector<Eigen::Vector3d> angleRad;
+  std::vector<Eigen::Vector3d> sdRad;  ///< their standard deviations; empty = no sd columns
+};
+
 /// Writes the angles CSV at anglesCsv and the metrics CSV at metricsCsvPath(anglesCsv).
 /// series: times (s) and angles (rad) in clinicalAngleInfo() order; sdRad: optional per-row
-/// standard deviations (rad), same shape as series.angle (nullptr = no sd columns). A row whose
+/// standard deviations (rad), same shape as series.angle (nullptr = no sd columns); trunk:
+/// optional trunk angles (nullptr or empty = no trunk columns), written after the arm's as
+/// trunk_flex_deg, trunk_lat_deg, trunk_rot_deg and, with sdRad, trunk_flex_sd_deg ... (the
+/// names of `estimate --out`'s columns, in degrees as every angle of this file). A row whose
 /// time is not finite is skipped; a non-finite angle or sd is written as an empty cell.
-/// Throws std::invalid_argument when sdRad or the angle column does not match series.t in length,
-/// ExportError when no row has a finite time or a file cannot be written.
+/// Throws std::invalid_argument when sdRad, the trunk's columns or the angle column does not
+/// match series.t in length, ExportError when no row has a finite time or a file cannot be
+/// written.
 CsvExportResult writeClinicalCsv(const std::filesystem::path& anglesCsv, const AngleSeries& series,
                                  const SessionMetrics& metrics,
-                                 const std::vector<ClinicalRow>* sdRad = nullptr);
+                                 const std::vector<ClinicalRow>* sdRad = nullptr,
+                                 const TrunkColumns* trunk = nullptr);
 
 // ---------------------------------------------------------------- OpenSim .mot
 
@@ -148,10 +162,13 @@ struct BidsExportResult {
 /// written when absent. recording may be nullptr (angles only); angles may be nullptr (raw data
 /// only). Refused with ExportError before anything is written: a file that exists (without
 /// options.overwrite), a subject whose participants.tsv row names another patient code, or a
-/// subject folder that no row claims. Throws std::invalid_argument for a bad label or
-/// mismatched angle lengths, ExportError when there is nothing to export or a file cannot be
-/// written, and whatever options.checkTarget throws.
+/// subject folder that no row claims. trunk (nullptr or empty: none): the trunk's angles of the
+/// rows of angles, three more channels of the angles' tracking system (trunk_flex, trunk_lat,
+/// trunk_rot, deg; n/a where not measured). Throws std::invalid_argument for a bad label or
+/// mismatched angle or trunk lengths, ExportError when there is nothing to export or a file cannot
+/// be written, and whatever options.checkTarget throws.
 BidsExportResult writeBidsMotion(const std::filesystem::path& root, const Recording* recording,
-                                 const AngleSeries* angles, Side side, const BidsOptions& options);
+                                 const AngleSeries* angles, Side side, const BidsOptions& options,
+                                 const TrunkColumns* trunk = nullptr);
 
 }  // namespace armtrack

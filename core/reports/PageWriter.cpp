@@ -32,7 +32,78 @@ QFont font(double points, bool bold = false) {
   return f;
 }
 
+bool isVowel(QChar c) {
+  static const QString vowels =
+      QStringLiteral("aeiouy\u00e4\u00f6\u00fc\u00e1\u00e9\u00ed\u00f3\u00fa");
+  return vowels.contains(c.toLower());
+}
+bool isConsonant(QChar c) {
+  return c.isLetter() && !isVowel(c);
+}
+
+// Whether a break before word[i] looks like one between syllables: between two consonants before
+// a vowel ("Geschwin-digkeit", "Patientenken-nung", "Bewegungs-zeit") or before a single consonant
+// between vowels ("Bewe-gungszeit"), with two letters at least on either side.
+bool syllableBreak(const QString& word, int i) {
+  if (i < 2 || i + 2 > word.size()) return false;
+  const QChar before = word[i - 1], at = word[i], after = word[i + 1];
+  // Not inside "ch" or "ck" ("versc-hiebung").
+  if (before.toLower() == QLatin1Char('c') &&
+      (at.toLower() == QLatin1Char('h') || at.toLower() == QLatin1Char('k')))
+    return false;
+  if (isConsonant(before) && isConsonant(at)) return isVowel(after);
+  return isVowel(before) && isConsonant(at) && isVowel(after);
+}
+
+// The length of the head of word to break after so that it fits width: the longest ending in a
+// '/' or '-' of its own when one fits (ownMark is set then), else the longest that ends between
+// syllables (syllableBreak), else the longest, a hyphen added to either; at least one character.
+int headThatFits(const QString& word, const QFontMetricsF& fm, double width, bool& ownMark) {
+  int markCut = 0, syllableCut = 0, cut = 0;
+  for (int i = 1; i < word.size(); ++i) {
+    const QString head = word.left(i);
+    const bool mark = head.back() == QLatin1Char('/') || head.back() == QLatin1Char('-');
+    if (fm.horizontalAdvance(mark ? head : head + QLatin1Char('-')) > width) break;
+    cut = i;
+    if (mark) markCut = i;
+    if (syllableBreak(word, i)) syllableCut = i;
+  }
+  ownMark = markCut > 0;
+  if (ownMark) return markCut;
+  return syllableCut > 0 ? syllableCut : std::max(cut, 1);
+}
+
 }  // namespace
+
+QString fitToWidth(const QString& text, const QFontMetricsF& fm, double width) {
+  if (!(width > 0)) return text;
+  // A little room to spare: the painter's layout may measure a line a hair wider than fm does,
+  // and would then break it again at a '/' of its own ("(deg/" and "s)").
+  const double room = width * 0.995;
+  const auto fits = [&](const QString& s) { return fm.horizontalAdvance(s) <= room; };
+  QStringList out;
+  for (const QString& paragraph : text.split(QLatin1Char('\n'))) {
+    QString line;
+    for (const QString& word : paragraph.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+      if (!line.isEmpty() && fits(line + QLatin1Char(' ') + word)) {
+        line += QLatin1Char(' ') + word;
+        continue;
+      }
+      if (!line.isEmpty()) out << line;
+      // A word wider than the cell: broken into lines of its own, its last piece going on.
+      QString rest = word;
+      while (rest.size() > 1 && !fits(rest)) {
+        bool ownMark = false;
+        const int cut = headThatFits(rest, fm, room, ownMark);
+        out << (ownMark || cut == 1 ? rest.left(cut) : rest.left(cut) + QLatin1Char('-'));
+        rest = rest.mid(cut);
+      }
+      line = rest;
+    }
+    out << line;
+  }
+  return out.join(QLatin1Char('\n'));
+}
 
 PageWriter::PageWriter(QPdfWriter& writer, QPainter& painter, QString runningHead, QString footer,
                        int totalPages)
@@ -177,14 +248,25 @@ const QFont& PageWriter::cellFont(const Table& t, bool bold) const {
   return bold ? m_fonts.bold : m_fonts.body;
 }
 
+double PageWriter::cellWidth(const Table& t, int column) const {
+  return t.widths[static_cast<std::size_t>(column)] * textWidth() - 2 * mm(kCellPadMm);
+}
+
+QString PageWriter::cellText(const Table& t, int column, const QString& text, bool header) const {
+  if (column < 0 || column >= static_cast<int>(t.widths.size())) return text;
+  const bool bold =
+      header || (column < static_cast<int>(t.boldColumns.size()) && t.boldColumns[column]);
+  return fitToWidth(text, QFontMetricsF(cellFont(t, bold), &m_writer), cellWidth(t, column));
+}
+
 double PageWriter::rowHeight(const Table& t, const QStringList& cells, bool header) const {
   double h = 0;
   for (int c = 0; c < cells.size() && c < static_cast<int>(t.widths.size()); ++c) {
     const bool bold = header || (c < static_cast<int>(t.boldColumns.size()) && t.boldColumns[c]);
     const QFontMetricsF fm(cellFont(t, bold), &m_writer);
-    const double w = t.widths[c] * textWidth() - 2 * mm(kCellPadMm);
     const QRectF r =
-        fm.boundingRect(QRectF(0, 0, w, 1e7), Qt::TextWordWrap | Qt::AlignLeft, cells[c]);
+        fm.boundingRect(QRectF(0, 0, cellWidth(t, c), 1e7), Qt::TextWordWrap | Qt::AlignLeft,
+                        cellText(t, c, cells[c], header));
     h = std::max(h, r.height());
   }
   return h + 2 * mm(kCellPadMm) * 0.6;
@@ -201,8 +283,9 @@ void PageWriter::drawRow(const Table& t, const QStringList& cells, bool header, 
     m_painter.setPen(Qt::black);
     const QRectF cell(x + mm(kCellPadMm), m_y + mm(kCellPadMm) * 0.6, w - 2 * mm(kCellPadMm),
                       height - mm(kCellPadMm) * 0.6);
-    m_painter.drawText(
-        cell, Qt::TextWordWrap | Qt::AlignTop | (right ? Qt::AlignRight : Qt::AlignLeft), cells[c]);
+    m_painter.drawText(cell,
+                       Qt::TextWordWrap | Qt::AlignTop | (right ? Qt::AlignRight : Qt::AlignLeft),
+                       cellText(t, c, cells[c], header));
     x += w;
   }
   m_y += height;
@@ -212,7 +295,13 @@ void PageWriter::drawRow(const Table& t, const QStringList& cells, bool header, 
   }
 }
 
+std::function<void(const PageWriter&, const Table&)>& PageWriter::tableObserver() {
+  static std::function<void(const PageWriter&, const Table&)> observer;
+  return observer;
+}
+
 void PageWriter::table(const Table& t) {
+  if (tableObserver()) tableObserver()(*this, t);
   const bool hasHeader = !t.header.isEmpty();
   const double headerH = hasHeader ? rowHeight(t, t.header, true) : 0;
   bool first = true;

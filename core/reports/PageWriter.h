@@ -5,11 +5,13 @@
 #pragma once
 
 #include <QFont>
+#include <QFontMetricsF>
 #include <QPainter>
 #include <QPdfWriter>
 #include <QRectF>
 #include <QString>
 #include <QStringList>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -31,6 +33,14 @@ struct Table {
   bool small = false;              ///< the small font, for tables with many columns
 };
 
+/// text as a cell `width` wide draws it, its lines broken with '\n': words go onto a line while
+/// they fit (at spaces only, so "(deg/s)" stays whole), and a word wider than the cell (a German
+/// compound in a narrow column, "Spitzengeschwindigkeit") is broken into lines that fit, after a
+/// '/' or '-' of its own where one fits, else between syllables where one seems to be, else where
+/// it must, with a hyphen added. Every line of the result fits `width` as fm measures it, down to
+/// a single character; runs of spaces become one.
+QString fitToWidth(const QString& text, const QFontMetricsF& fm, double width);
+
 class PageWriter {
  public:
   /// painter must be active on writer; the first page starts here. runningHead is printed at the
@@ -45,7 +55,7 @@ class PageWriter {
   double y() const { return m_y; }
   int pageNumber() const { return m_page; }
   QPainter& painter() { return m_painter; }
-  QPaintDevice* device() { return &m_writer; }
+  QPaintDevice* device() const { return &m_writer; }
   const Fonts& fonts() const { return m_fonts; }
 
   void newPage();
@@ -61,6 +71,13 @@ class PageWriter {
   /// label/value pairs, two pairs per row (or one, for long values).
   void keyValues(const std::vector<std::pair<QString, QString>>& items, bool twoPerRow = true);
   void table(const Table& t);
+  /// The text drawn in a cell of column `column` of t (fitToWidth in its font and width).
+  QString cellText(const Table& t, int column, const QString& text, bool header) const;
+  /// The width a cell of column `column` of t has for its text (inside the cell's padding).
+  double cellWidth(const Table& t, int column) const;
+  /// Called with every table as it is drawn, when set: lets a test check a whole report's cells
+  /// (tests only; set it before drawing, on the drawing thread).
+  static std::function<void(const PageWriter&, const Table&)>& tableObserver();
   /// A block of the full text width and `height`, on this page if it fits, else on the next;
   /// the cursor moves below it.
   QRectF reserve(double height);

@@ -28,6 +28,9 @@ struct MetricRows {
   AngleSeries metricSeries;               // what the metrics are computed from
   std::vector<JointVector> metricJoints;  // the same rows as joint angles (rad)
   std::vector<ClinicalRow> sdRad;         // standard deviations of the series' rows, when asked for
+  // The trunk's angles and standard deviations (rad) of the series' rows, when the estimates
+  // hold them (empty otherwise).
+  std::vector<Eigen::Vector3d> trunkRad, trunkSdRad;
   std::size_t dropped = 0, settling = 0;
 };
 
@@ -43,7 +46,10 @@ class MetricRowCollector {
  public:
   MetricRowCollector(bool withSd, bool allRows) : m_withSd(withSd), m_allRows(allRows) {}
 
-  void add(double t, const JointVector& th, const JointVector& sd, int status) {
+  /// trunk and trunkSd: the row's trunk angles and their standard deviations, when the
+  /// estimates hold them (both or neither, for every row alike).
+  void add(double t, const JointVector& th, const JointVector& sd, int status,
+           const Eigen::Vector3d* trunk = nullptr, const Eigen::Vector3d* trunkSd = nullptr) {
     ++m_rows;
     if (status == kStatusRestarted || status == kStatusRecovered)
       m_settledFrom = t + kStartupSeconds;
@@ -69,6 +75,10 @@ class MetricRowCollector {
     if (m_allRows) {
       m_allT.push_back(t);
       m_allTh.push_back(th);
+    }
+    if (trunk && trunkSd) {
+      m_trunk.push_back(*trunk);
+      m_trunkSd.push_back(*trunkSd);
     }
     if (!m_withSd) return;
     ClinicalRow r;  // the clinical angles are the joint angles up to sign
@@ -102,6 +112,8 @@ class MetricRowCollector {
       }
     }
     out.sdRad = std::move(m_sd);
+    out.trunkRad = std::move(m_trunk);
+    out.trunkSdRad = std::move(m_trunkSd);
     return out;
   }
 
@@ -115,6 +127,7 @@ class MetricRowCollector {
   std::vector<double> m_metricT, m_allT;
   std::vector<JointVector> m_metricTh, m_allTh;
   std::vector<ClinicalRow> m_sd;
+  std::vector<Eigen::Vector3d> m_trunk, m_trunkSd;
 };
 
 /// Metrics parameters for a session: the wrist path from its geometry, repetitions on its

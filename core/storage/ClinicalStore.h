@@ -19,6 +19,9 @@
 
 namespace armtrack::storage {
 
+/// The column groups of a session's stored columns mask (SessionInfo::columnsMask).
+RecordingColumns columnsOf(int columnsMask);
+
 /// Throws StorageError (Usage) unless the trunk limit is empty or 1-90 deg, saying so.
 void checkTrunkLimit(const std::optional<double>& limitDeg);
 /// The trunk limit as the audit log names it: "trunk limit 15 deg", "trunk limit off".

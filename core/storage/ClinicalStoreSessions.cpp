@@ -30,22 +30,6 @@ int maskOf(const RecordingColumns& c) {
          (c.trueTrunk ? 1024 : 0);
 }
 
-RecordingColumns columnsOf(int m) {
-  RecordingColumns c;
-  c.upperArm = m & 1;
-  c.forearm = m & 2;
-  c.elbow = m & 4;
-  c.wrist = m & 8;
-  c.camWrist = m & 16;
-  c.camElbow = m & 32;
-  c.truth = m & 64;
-  c.estimate = m & 128;
-  c.trunk = m & 256;
-  c.shoulder = m & 512;
-  c.trueTrunk = m & 1024;
-  return c;
-}
-
 // The sidecar of meta as JSON text, written by core/io itself so the two never disagree.
 QString sidecarText(const RecordingMeta& meta) {
   QTemporaryDir dir;
@@ -75,6 +59,22 @@ RecordingMeta metaFromText(const QString& json, qint64 sessionId) {
 }
 
 }  // namespace
+
+RecordingColumns columnsOf(int m) {
+  RecordingColumns c;
+  c.upperArm = m & 1;
+  c.forearm = m & 2;
+  c.elbow = m & 4;
+  c.wrist = m & 8;
+  c.camWrist = m & 16;
+  c.camElbow = m & 32;
+  c.truth = m & 64;
+  c.estimate = m & 128;
+  c.trunk = m & 256;
+  c.shoulder = m & 512;
+  c.trueTrunk = m & 1024;
+  return c;
+}
 
 int ClinicalStore::markDeadRecordingsInterrupted() {
   struct Dead {

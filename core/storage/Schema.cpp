@@ -239,11 +239,16 @@ const std::vector<MigrationStep>& migrationSteps() {
         "ALTER TABLE programmes ADD COLUMN trunk_limit_deg DOUBLE PRECISION "
         "CHECK (trunk_limit_deg >= 1 AND trunk_limit_deg <= 90)"},
        {}},
+      // No table changes. Estimates written from here on may hold the trunk's angles (an estimate
+      // blob of 18 columns, EstimateCodec.h), which a build before this version would call
+      // damaged; with the version raised, such a build refuses the whole database as newer than
+      // it knows instead. Estimates without the trunk are stored as before.
+      {9, "estimates may hold the trunk's angles and their standard deviations", {}, {}},
       // Home devices that sync with the clinic's armtrack-server (docs/sync.md). Codes and
       // tokens are stored as hashes only (SyncSecrets.h); an upload is kept in the database,
       // chunk by chunk, until it is complete, so that any server behind a load balancer can go
       // on with it and a dropped connection resumes where it stopped.
-      {9,
+      {10,
        "home devices: enrolment codes, device tokens, uploads in progress",
        {"CREATE TABLE enrolment_codes ("
         " id {id},"

@@ -230,8 +230,12 @@ class TrunkRowCollector {
 // memory whole (docs/storage.md, "Memory of an analysis").
 class AnalysisRun {
  public:
-  AnalysisRun(ClinicalStore& store, qint64 sessionId)
-      : m_store(store), m_draft(store.beginEstimates(sessionId, EstimateCodec::kChunkedName)) {}
+  // withTrunk: the estimates keep the trunk's columns (a recording with trunk output, as
+  // `estimate --out` writes them).
+  AnalysisRun(ClinicalStore& store, qint64 sessionId, bool withTrunk)
+      : m_store(store),
+        m_draft(store.beginEstimates(sessionId, EstimateCodec::kChunkedName)),
+        m_withTrunk(withTrunk) {}
   ~AnalysisRun() {
     if (m_finished) return;
     try {
@@ -245,7 +249,7 @@ class AnalysisRun {
   AnalysisRun& operator=(const AnalysisRun&) = delete;
 
   void add(const EstimateRow& row) {
-    m_block.append(row);
+    m_block.append(row, m_withTrunk);
     m_metricRows.add(row.t, row.th, row.sd, row.status);
     ++m_rows;
     if (m_block.size() >= kEstimateChunkRows) flush();
@@ -255,10 +259,7 @@ class AnalysisRun {
     const std::string blob = EstimateCodec::encode(m_block);
     m_store.appendEstimateChunk(m_draft, m_seq++, static_cast<qint64>(m_block.size()),
                                 QByteArray(blob.data(), static_cast<qsizetype>(blob.size())));
-    m_block.t.clear();
-    m_block.th.clear();
-    m_block.sd.clear();
-    m_block.status.clear();
+    m_block.clear();
   }
   std::size_t rows() const { return m_rows; }
   MetricRowCollector& metricRows() { return m_metricRows; }
@@ -275,6 +276,7 @@ class AnalysisRun {
  private:
   ClinicalStore& m_store;
   ClinicalStore::EstimatesDraft m_draft;
+  bool m_withTrunk = false;
   EstimateColumns m_block;
   MetricRowCollector m_metricRows{/*withSd=*/false, /*allRows=*/false};
   std::size_t m_rows = 0;
@@ -295,11 +297,25 @@ class AnalysisRun {
 
 }  // namespace
 
-// The trunk flexion limit the repetitions are judged by: the caller's, else the session's
-// protocol's (Protocol::trunkLimitDeg), else none.
-static std::optional<double> trunkLimit(const AnalysisOptions& options,
+// The trunk flexion limit the repetitions are judged by: the caller's; for a home session the
+// limit its exercise held the patient to (the home summary's "trunk_limit_deg", null: none),
+// else, with no summary stored yet, the patient's programme exercise of the session's protocol
+// (effectiveTrunkLimit: its own, else the protocol's); else the session's protocol's
+// (Protocol::trunkLimitDeg); else none.
+static std::optional<double> trunkLimit(ClinicalStore& store, const SessionInfo& info,
+                                        const AnalysisOptions& options,
                                         const std::optional<Protocol>& protocol) {
   if (options.trunkFlexionLimitDeg) return options.trunkFlexionLimitDeg;
+  if (info.setting == kSettingHome && protocol) {
+    const std::optional<QJsonObject> summary = detail::parseObject(info.homeSummaryJson);
+    if (summary && summary->contains("trunk_limit_deg")) {
+      const QJsonValue v = summary->value("trunk_limit_deg");
+      if (v.isDouble() && std::isfinite(v.toDouble()) && v.toDouble() > 0) return v.toDouble();
+      if (v.isNull()) return std::nullopt;
+    }
+    for (const ProgrammeItem& item : store.programme(info.patientCode))
+      if (item.protocolName == protocol->name) return effectiveTrunkLimit(item, *protocol);
+  }
   return protocol ? protocol->trunkLimitDeg : std::nullopt;
 }
 
@@ -353,8 +369,9 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   std::optional<Protocol> protocol;
   const ClinicalMetricsParams mp =
       storedProblem([&] { return metricsParams(store, info, params.geometry, protocol); });
+  const std::optional<double> flexionLimit = trunkLimit(store, info, options, protocol);
 
-  AnalysisRun run(store, sessionId);
+  AnalysisRun run(store, sessionId, hasTrunkOutput(columnsOf(info.columnsMask)));
   TrunkRowCollector trunkRows;
   {
     const auto n = options.expectedRows > 0
@@ -435,7 +452,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
                          sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
     }
     TrunkCompensationParams tp;
-    tp.flexionLimitDeg = trunkLimit(options, protocol);
+    tp.flexionLimitDeg = flexionLimit;
     result.trunk =
         computeTrunkCompensation(trunkRows.rows(), repetitionSpans(result.metrics.repetitions), tp);
     series = encodeMetricRows(settled.metricSeries.t, std::move(settled.metricJoints));
@@ -471,8 +488,8 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
       QString::fromUtf8(QJsonDocument(paramsJson).toJson(QJsonDocument::Compact)),
       QString::fromUtf8(QJsonDocument(angles).toJson(QJsonDocument::Compact)),
       [&](int estimateVersion) {
-        summary = summaryJson(result.metrics, result.trunk, trunkLimit(options, protocol),
-                              estimateVersion, protocol, dropped, settling);
+        summary = summaryJson(result.metrics, result.trunk, flexionLimit, estimateVersion, protocol,
+                              dropped, settling);
         return QString::fromUtf8(QJsonDocument(summary).toJson(QJsonDocument::Compact));
       },
       series);

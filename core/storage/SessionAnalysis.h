@@ -55,9 +55,11 @@ struct AnalysisOptions {
   std::size_t expectedRows = 0;
   /// A repetition whose largest trunk flexion exceeds this (deg) was made with compensation
   /// (core/metrics/TrunkCompensation.h): each repetition's "compensated" and the count
-  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default): the session's
-  /// protocol's limit (Protocol::trunkLimitDeg), and without one no limit, both null. Not
-  /// positive and finite: StorageError(Usage).
+  /// "repetitions_with_compensation" in the metrics JSON. Empty (the default): for a home
+  /// session the limit its exercise held the patient to (the home summary's "trunk_limit_deg",
+  /// else the patient's programme exercise of the session's protocol: effectiveTrunkLimit),
+  /// otherwise the session's protocol's limit (Protocol::trunkLimitDeg); without one no limit,
+  /// both null. Not positive and finite: StorageError(Usage).
   std::optional<double> trunkFlexionLimitDeg;
 };
 
@@ -102,7 +104,12 @@ struct StoredAnalysis {
   std::vector<JointVector> joints;  ///< DH joint angles (rad)
   std::vector<JointVector> sd;      ///< their standard deviations (rad)
   std::vector<int> status;          ///< kStatus* (core/estimation/RecordingEstimator.h)
-  AngleSeries clinical;             ///< the five clinical angles (rad) at t
+  /// The trunk's flexion, lateral bending and axial rotation and their standard deviations (rad,
+  /// core/kinematics/Trunk.h), one per row, NaN where not measured; both empty when the
+  /// estimates hold no trunk columns (a recording without a trunk IMU or optical shoulder, or
+  /// estimated before schema version 9).
+  std::vector<Eigen::Vector3d> trunk, trunkSd;
+  AngleSeries clinical;  ///< the five clinical angles (rad) at t
   /// The metrics JSON computed from these estimates (docs/storage.md, "Metrics"); empty when the
   /// newest stored metrics belong to another version.
   std::optional<QJsonObject> metrics;
@@ -131,6 +138,9 @@ struct SessionAngles {
   int version = 0;                 ///< the estimates' version
   AngleSeries series;              ///< clinical angles (rad)
   std::vector<ClinicalRow> sdRad;  ///< their standard deviations (rad), one per row of series
+  /// The trunk's angles and their standard deviations (rad), one per row of series, when the
+  /// estimates hold them (StoredAnalysis::trunk); empty otherwise. sessionAngles only.
+  std::vector<Eigen::Vector3d> trunkRad, trunkSdRad;
   SessionMetrics metrics;
 };
 /// The newest analysis as stored, for a report: the rows its metrics were computed from (clinical

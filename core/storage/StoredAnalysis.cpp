@@ -49,6 +49,7 @@ void forEachEstimateBlock(ClinicalStore& store, const EstimateRecord& rec, const
   }
   std::uint64_t seen = 0;
   int expectedSeq = 0;
+  std::optional<bool> trunk;  // whether the chunks hold the trunk's columns: all or none
   double lastT = -std::numeric_limits<double>::infinity();
   store.readEstimateChunks(rec, [&](int seq, std::uint64_t n, const QByteArray& data) {
     if (seq != expectedSeq) throw damaged("chunk " + std::to_string(expectedSeq) + " is missing");
@@ -58,6 +59,13 @@ void forEachEstimateBlock(ClinicalStore& store, const EstimateRecord& rec, const
       block = EstimateCodec::decode(std::string(data.constData(), data.size()), n);
     } catch (const std::runtime_error& e) {
       throw damaged("chunk " + std::to_string(seq) + ": " + e.what());
+    }
+    if (block.size() > 0) {
+      if (trunk && *trunk != block.hasTrunk())
+        throw damaged("chunk " + std::to_string(seq) +
+                      (block.hasTrunk() ? " holds the trunk's angles, the chunks before do not"
+                                        : " lacks the trunk's angles the chunks before hold"));
+      trunk = block.hasTrunk();
     }
     if (block.size() > 0 && block.t.front() < lastT)
       throw damaged("chunk " + std::to_string(seq) + " starts before the previous one ends");
@@ -84,20 +92,24 @@ std::optional<StoredAnalysis> storedAnalysis(ClinicalStore& store, qint64 sessio
   a.version = rec->version;
   a.createdAt = rec->createdAt;
   a.paramsJson = rec->paramsJson;
-  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
-                       [&](EstimateColumns&& block) {
-                         if (a.t.empty()) {
-                           a.t = std::move(block.t);
-                           a.joints = std::move(block.th);
-                           a.sd = std::move(block.sd);
-                           a.status = std::move(block.status);
-                           return;
-                         }
-                         a.t.insert(a.t.end(), block.t.begin(), block.t.end());
-                         a.joints.insert(a.joints.end(), block.th.begin(), block.th.end());
-                         a.sd.insert(a.sd.end(), block.sd.begin(), block.sd.end());
-                         a.status.insert(a.status.end(), block.status.begin(), block.status.end());
-                       });
+  forEachEstimateBlock(
+      store, *rec, versionText(sessionId, rec->version), [&](EstimateColumns&& block) {
+        if (a.t.empty()) {
+          a.t = std::move(block.t);
+          a.joints = std::move(block.th);
+          a.sd = std::move(block.sd);
+          a.status = std::move(block.status);
+          a.trunk = std::move(block.trunk);
+          a.trunkSd = std::move(block.trunkSd);
+          return;
+        }
+        a.t.insert(a.t.end(), block.t.begin(), block.t.end());
+        a.joints.insert(a.joints.end(), block.th.begin(), block.th.end());
+        a.sd.insert(a.sd.end(), block.sd.begin(), block.sd.end());
+        a.status.insert(a.status.end(), block.status.begin(), block.status.end());
+        a.trunk.insert(a.trunk.end(), block.trunk.begin(), block.trunk.end());
+        a.trunkSd.insert(a.trunkSd.end(), block.trunkSd.begin(), block.trunkSd.end());
+      });
   a.clinical = angleSeriesFromJoints(a.t, a.joints);
   if (const auto m = store.latestMetrics(sessionId)) {
     const std::optional<QJsonObject> angles = parseObject(m->first);
@@ -139,11 +151,13 @@ SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId, SeriesRows r
   const ClinicalMetricsParams mp = metricsParams(store, out.info, meta.geometry, protocol);
   // The rows are gathered as analyseSession gathered them, so the metrics come out the same.
   MetricRowCollector collector(/*withSd=*/true, rows == SeriesRows::All);
-  forEachEstimateBlock(store, *rec, versionText(sessionId, rec->version),
-                       [&](EstimateColumns&& block) {
-                         for (std::size_t i = 0; i < block.size(); ++i)
-                           collector.add(block.t[i], block.th[i], block.sd[i], block.status[i]);
-                       });
+  forEachEstimateBlock(
+      store, *rec, versionText(sessionId, rec->version), [&](EstimateColumns&& block) {
+        const bool trunk = block.hasTrunk();
+        for (std::size_t i = 0; i < block.size(); ++i)
+          collector.add(block.t[i], block.th[i], block.sd[i], block.status[i],
+                        trunk ? &block.trunk[i] : nullptr, trunk ? &block.trunkSd[i] : nullptr);
+      });
   MetricRows settled = collector.finish(sessionId, &out.series);
   try {
     out.metrics = computeSessionMetrics(settled.metricSeries, mp);
@@ -152,6 +166,8 @@ SessionAngles sessionAngles(ClinicalStore& store, qint64 sessionId, SeriesRows r
                        sessionText(sessionId) + ": metrics cannot be computed: " + e.what());
   }
   out.sdRad = std::move(settled.sdRad);
+  out.trunkRad = std::move(settled.trunkRad);
+  out.trunkSdRad = std::move(settled.trunkSdRad);
   return out;
 }
 

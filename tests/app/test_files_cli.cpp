@@ -92,11 +92,6 @@ Proc runCli(const std::vector<std::string>& args, const std::string& cwd = {},
   return p;
 }
 
-std::string bytesOf(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 using armtrack::test::modeOf;
 using armtrack::test::namesIn;
 

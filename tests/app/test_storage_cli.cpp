@@ -25,6 +25,7 @@
 #include "core/storage/Schema.h"
 #include "tests/app/StorageCliFixture.h"
 #include "tests/support/DatabaseEngines.h"
+#include "tests/support/LeaningPatient.h"
 
 namespace fs = std::filesystem;
 using armtrack::cli::runCli;
@@ -554,21 +555,7 @@ TEST_P(StorageCli, ReportsAndExportsOfAnAnalysedSession) {
 // values and no line.
 TEST_F(StorageCliSqlite, SessionShowPrintsTheTrunk) {
   addPatients();
-  armtrack::TrajectoryOptions options;
-  options.exercise.angle = 0;  // shoulder flexion
-  options.exercise.fromDeg = 10;
-  options.exercise.toDeg = 110;
-  options.exercise.startSeconds = 4;
-  const auto trajectory = armtrack::makeTrajectory("exercise", options);
-  armtrack::SimulationParams sim = armtrack::defaultSimulation();
-  sim.duration = 24;
-  sim.seed = 821;
-  sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
-  sim.trunk.enabled = true;
-  sim.trunk.leanDeg = 18;
-  sim.trunkImu.enabled = true;
-  sim.kinect.shoulder = true;
-  const armtrack::Recording rec = armtrack::simulateRecording(*trajectory, sim);
+  const armtrack::Recording rec = armtrack::test::leaningReaches(24, 821);
   armtrack::writeRecording(path("lean.csv"), rec);
   const std::string id = importFor("P01", path("lean.csv"));
 
@@ -576,9 +563,7 @@ TEST_F(StorageCliSqlite, SessionShowPrintsTheTrunk) {
   ASSERT_EQ(show.code, 0) << show.err;
   const QJsonObject s = QJsonDocument::fromJson(QByteArray::fromStdString(show.out)).object();
   const QJsonObject trunk = s["trunk"].toObject();
-  double trueLean = 0;
-  for (const armtrack::ArmSample& a : rec.samples)
-    if (a.trueTrunk) trueLean = std::max(trueLean, std::abs((*a.trueTrunk)(0)) * 180 / M_PI);
+  const double trueLean = armtrack::test::trueLeanDeg(rec);
   EXPECT_NEAR(trueLean, 18.0, 0.5);
   EXPECT_NEAR(trunk["max_flexion_deg"].toDouble(), trueLean, 1.5) << show.out;
   for (const char* key : {"max_lateral_deg", "max_rotation_deg", "max_shoulder_displacement_cm"})

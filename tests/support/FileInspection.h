@@ -1,9 +1,11 @@
-// What tests look at on disk: a file's permission bits and the names in a folder.
+// What tests look at on disk: a file's permission bits, the names in a folder and a file's bytes.
 #pragma once
 
 #include <sys/stat.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
@@ -22,6 +24,12 @@ inline std::set<std::string> namesIn(const std::filesystem::path& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir))
     names.insert(e.path().filename().string());
   return names;
+}
+
+/// The bytes of file p ("" when it cannot be read).
+inline std::string bytesOf(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 }  // namespace armtrack::test

@@ -59,9 +59,13 @@ CalibrationVerdict judgeCalibration(const CalibrationResult& r, QString* why) {
   CalibrationVerdict v = CalibrationVerdict::Good;
   if (!r.converged) {
     v = CalibrationVerdict::Poor;
-    text = SensorCalibrationPage::tr(
-        "The fit did not settle. Check that both sensors are strapped tight, then redo the "
-        "protocol.");
+    text = r.calibration.trunk
+               ? SensorCalibrationPage::tr(
+                     "The fit did not settle. Check that all three sensors "
+                     "are strapped tight, then redo the protocol.")
+               : SensorCalibrationPage::tr(
+                     "The fit did not settle. Check that both sensors are strapped tight, then "
+                     "redo the protocol.");
   } else if (worst > kUsableRms) {
     v = CalibrationVerdict::Poor;
     text = SensorCalibrationPage::tr(
@@ -173,11 +177,16 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
   connect(m_controller, &SessionController::busyChanged, this,
           &SensorCalibrationPage::updateStartButton);
   connect(&m_timer, &QTimer::timeout, this, &SensorCalibrationPage::drain);
+  // With a sternum sensor its mounting is calibrated too (from the upright start pose).
+  const bool sternum = hasSternumSensor(m_config.devices);
   showStep([] { return tr("Sensor calibration"); },
-           [] {
-             return tr(
-                 "The patient sits upright with both sensors strapped on. Press Start, then "
-                 "follow the instructions on the screen for about a minute.");
+           [sternum] {
+             return sternum ? tr("The patient sits upright with all three sensors (upper arm, "
+                                 "forearm and chest) strapped on. Press Start, then follow the "
+                                 "instructions on the screen for about a minute.")
+                            : tr("The patient sits upright with both sensors strapped on. Press "
+                                 "Start, then follow the instructions on the screen for about a "
+                                 "minute.");
            });
   setState(State::Ready);
   retranslateUi();
@@ -226,6 +235,10 @@ void SensorCalibrationPage::setIntroduction(std::function<QString()> text) {
 
 QString SensorCalibrationPage::instructionTitle() const {
   return m_title->text();
+}
+
+QString SensorCalibrationPage::instructionText() const {
+  return m_instruction->text();
 }
 
 bool SensorCalibrationPage::isComplete() const {

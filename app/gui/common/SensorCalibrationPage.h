@@ -55,6 +55,8 @@ class SensorCalibrationPage : public QWidget {
   /// Done with a verdict that is not Poor.
   bool isComplete() const;
   QString instructionTitle() const;
+  /// The instruction under the title (before the protocol: the introduction).
+  QString instructionText() const;
   ui::ArmView* armView() const { return m_arm; }
   QPushButton* startButton() const { return m_start; }
   /// Replaces the words shown before the protocol starts (the home window speaks to the

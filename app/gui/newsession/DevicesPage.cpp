@@ -220,17 +220,21 @@ void DevicesPage::drain() {
       // Passed; the devices go on streaming so that the therapist can see the angles follow
       // the arm, until the check is stopped or the next step is taken.
       m_checkPassed = true;
-      std::vector<std::tuple<QString, QString, double>> rates;
+      // The sternum sensor's name is made again in each language the text is shown in; the
+      // other streams' are the devices' own.
+      std::vector<std::tuple<QString, QString, double, bool>> rates;
       std::vector<std::pair<QString, double>> batteries;  // per device, where reported
       for (const ui::StreamHealthRow& r : h.rows()) {
-        rates.emplace_back(r.device, r.stream, r.rateHz);
+        rates.emplace_back(r.device, r.stream, r.rateHz, r.trunkSensor);
         if (r.batteryPercent && (batteries.empty() || batteries.back().first != r.device))
           batteries.emplace_back(r.device, *r.batteryPercent);
       }
       m_passedText = [rates, batteries] {
         QStringList shown, charged;
-        for (const auto& [device, stream, hz] : rates)
-          shown << tr("%1 %2 %L3 Hz").arg(device, stream).arg(hz, 0, 'f', 0);
+        for (const auto& [device, stream, hz, trunk] : rates)
+          shown << tr("%1 %2 %L3 Hz")
+                       .arg(device, trunk ? ui::trunkSensorName() : stream)
+                       .arg(hz, 0, 'f', 0);
         for (const auto& [device, percent] : batteries)
           charged << (percent <= ui::DeviceHealthModel::kLowBatteryPercent
                           ? tr("%1 %L2 % (low: charge it after the session)")

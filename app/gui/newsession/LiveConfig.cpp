@@ -1,6 +1,5 @@
 #include "app/gui/newsession/LiveConfig.h"
 
-#include <QRegularExpression>
 #include <algorithm>
 #include <cmath>
 
@@ -47,14 +46,6 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
     c.trunkLimitDeg = plan.protocol->trunkLimitDeg;
   }
   return c;
-}
-
-bool hasSternumSensor(const QStringList& devices) {
-  // "virtual-arm:sensors=upper+forearm+trunk,...", "shimmer:port=...,role=trunk".
-  static const QRegularExpression sternum(
-      QStringLiteral("[:,](?:sensors=(?:[^,]*\\+)?trunk|role=(?:trunk|sternum))(?:[+,]|$)"));
-  return std::any_of(devices.begin(), devices.end(),
-                     [](const QString& d) { return sternum.match(d).hasMatch(); });
 }
 
 QStringList demoDevicesFor(const SessionPlan& plan) {

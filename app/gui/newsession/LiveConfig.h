@@ -19,10 +19,8 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
                                               const AppSettings& settings,
                                               const std::optional<Calibration>& calibration = {});
 
-/// Whether the device specs include a sternum (trunk) IMU: the virtual arm's `trunk` sensor, or
-/// an IMU plugin given role=trunk (or role=sternum). A sensor calibration's sternum mounting is
-/// passed to the session only then: without the sensor the estimator must not expect a trunk.
-bool hasSternumSensor(const QStringList& devices);
+/// app/gui/services/LiveSessionConfig.h (the calibration page asks it too).
+using app::gui::hasSternumSensor;
 
 /// The demo's devices for a plan: the virtual arm with both IMUs, a Kinect and a webcam, and,
 /// when the plan has a protocol, making its exercise: repetitions of the protocol's angle from

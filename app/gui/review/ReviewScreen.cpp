@@ -1,8 +1,6 @@
 #include "app/gui/review/ReviewScreen.h"
 
 #include <QComboBox>
-#include <QDir>
-#include <QFileDialog>
 #include <QHeaderView>
 #include <QJsonDocument>
 #include <QLabel>
@@ -23,7 +21,6 @@
 #include "app/gui/review/TrunkPanel.h"
 #include "app/gui/services/AppSettings.h"
 #include "app/gui/services/RecordsService.h"
-#include "core/storage/DatabaseFiles.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
 #include "ui/Retranslate.h"
@@ -36,8 +33,11 @@ namespace {
 std::vector<ui::AngleSample> samplesOf(const storage::StoredAnalysis& a, double origin) {
   std::vector<ui::AngleSample> out;
   out.reserve(a.t.size());
-  for (std::size_t i = 0; i < a.t.size(); ++i)
+  const bool trunk = a.trunk.size() == a.t.size() && a.trunkSd.size() == a.t.size();
+  for (std::size_t i = 0; i < a.t.size(); ++i) {
     out.push_back(ui::angleSample(recordingTime(a.t[i], origin), a.joints[i], a.sd[i]));
+    if (trunk) ui::setTrunk(out.back(), a.trunk[i], a.trunkSd[i]);  // the trunk's plot
+  }
   return out;
 }
 
@@ -368,6 +368,10 @@ void ReviewScreen::setCursor(double t) {
   if (m_data.analysis && !m_data.analysis->t.empty()) {
     const std::size_t i = rowAt(m_data.analysis->t, m_cursor + m_origin);
     m_arm->setPose(m_data.analysis->joints[i]);
+    // The stored trunk angles lean and turn the figure; upright where none were measured.
+    const std::vector<Eigen::Vector3d>& trunk = m_data.analysis->trunk;
+    m_arm->setTrunk(i < trunk.size() && trunk[i].allFinite() ? std::optional(trunk[i])
+                                                             : std::nullopt);
   }
   if (m_overlay && !m_overlay->t.empty()) {
     // The other session at the same time since its own start.
@@ -524,86 +528,6 @@ void ReviewScreen::reestimate(const ReestimateChoice& choice) {
         emit reestimated(0, text());
       });
   showJobProgress(this, job, tr("Estimating the joint angles again..."));
-}
-
-void ReviewScreen::askReport() {
-  const QString folder = m_settings.exportFolder();
-  storage::makePrivateFolders(folder);  // 0700: it holds patients' data
-  const QString pdf = QFileDialog::getSaveFileName(
-      this, tr("Save the session report"),
-      QDir(folder).filePath(
-          QStringLiteral("%1_session_%2.pdf").arg(m_data.info.patientCode).arg(m_id)),
-      tr("PDF files (*.pdf)"));
-  if (!pdf.isEmpty()) writeReport(pdf);
-}
-
-void ReviewScreen::askExport(clinical::ExportFormat format) {
-  const QString folder = m_settings.exportFolder();
-  storage::makePrivateFolders(folder);  // 0700: it holds patients' data
-  const QString stem =
-      QDir(folder).filePath(QStringLiteral("%1_session_%2").arg(m_data.info.patientCode).arg(m_id));
-  QString path;
-  switch (format) {
-    case clinical::ExportFormat::Bids:
-      path = QFileDialog::getExistingDirectory(this, tr("Folder of the BIDS data set"), folder);
-      break;
-    case clinical::ExportFormat::Mot:
-      path = QFileDialog::getSaveFileName(this, tr("Export as OpenSim motion"), stem + ".mot",
-                                          tr("OpenSim motion (*.mot)"));
-      break;
-    case clinical::ExportFormat::Csv:
-      path = QFileDialog::getSaveFileName(this, tr("Export the angles as CSV"), stem + ".csv",
-                                          tr("CSV files (*.csv)"));
-      break;
-    case clinical::ExportFormat::Recording:
-      path = QFileDialog::getSaveFileName(this, tr("Export the recording"), stem + "_recording.csv",
-                                          tr("Recordings (*.csv)"));
-      break;
-  }
-  if (!path.isEmpty()) exportTo(format, path);
-}
-
-void ReviewScreen::writeReport(const QString& pdf) {
-  runOutput(tr("the session report"), pdf, [id = m_id, pdf](storage::ClinicalStore& s) {
-    const int pages = clinical::writeSessionReport(s, id, pdf);
-    return tr("Session report written: %1 (%n page(s)).", nullptr, pages)
-        .arg(QDir::toNativeSeparators(pdf));
-  });
-}
-
-void ReviewScreen::exportTo(clinical::ExportFormat format, const QString& path) {
-  runOutput(tr("the export"), path, [id = m_id, format, path](storage::ClinicalStore& s) {
-    const clinical::ExportSummary r = clinical::exportSession(s, id, format, path.toStdString());
-    QString text = tr("Exported: %1.").arg(QString::fromStdString(r.what));
-    for (const std::string& note : r.notes) text += u'\n' + QString::fromStdString(note);
-    return text;
-  });
-}
-
-void ReviewScreen::runOutput(const QString& what, const QString& path,
-                             std::function<QString(storage::ClinicalStore&)> work) {
-  m_outputs->setBusy(true);
-  m_outputs->setResult(tr("Writing %1...").arg(what));
-  RecordsJob* job = m_records.startJob(
-      this,
-      [work = std::move(work)](JobContext& c) {
-        c.progress(5);
-        return work(c.store());
-      },
-      [this, path](const QString& text) {
-        m_outputs->setBusy(false);
-        m_outputs->setResult(text);
-        emit outputWritten(path, {});
-      },
-      [this, what, path](const RecordsFailure& f) {
-        m_outputs->setBusy(false);
-        const QString text = tr("%1 could not be written: %2. Choose another place and try again.")
-                                 .arg(what, f.message);
-        m_outputs->setResult(text);
-        m_message->showMessage(text);
-        emit outputWritten(path, text);
-      });
-  showJobProgress(this, job, tr("Writing %1...").arg(what));
 }
 
 }  // namespace armtrack::gui

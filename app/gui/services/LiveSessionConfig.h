@@ -2,8 +2,10 @@
 // them, the arm, the estimator, and the protocol's targets for the counter and the plots.
 #pragma once
 
+#include <QRegularExpression>
 #include <QString>
 #include <QStringList>
+#include <algorithm>
 #include <optional>
 #include <utility>
 
@@ -39,6 +41,17 @@ struct LiveSessionConfig {
   /// "usable" or "poor" ("" = none made) and its reason in words.
   QString calibrationVerdict, calibrationReason;
 };
+
+/// Whether the device specs include a sternum (trunk) IMU: the virtual arm's `trunk` sensor, or
+/// an IMU plugin given role=trunk (or role=sternum). A sensor calibration's sternum mounting is
+/// passed to the session only then: without the sensor the estimator must not expect a trunk.
+inline bool hasSternumSensor(const QStringList& devices) {
+  // "virtual-arm:sensors=upper+forearm+trunk,...", "shimmer:port=...,role=trunk".
+  static const QRegularExpression sternum(
+      QStringLiteral("[:,](?:sensors=(?:[^,]*\\+)?trunk|role=(?:trunk|sternum))(?:[+,]|$)"));
+  return std::any_of(devices.begin(), devices.end(),
+                     [](const QString& d) { return sternum.match(d).hasMatch(); });
+}
 
 /// The demo's devices: the virtual arm with both IMUs, a Kinect and a webcam.
 inline QStringList demoDevices() {

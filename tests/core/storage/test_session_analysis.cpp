@@ -318,6 +318,48 @@ TEST(EstimateCodec, RoundTripIsBitExactAndDamageIsRefused) {
   EXPECT_THROW(EstimateCodec::encode(bad), std::invalid_argument);
 }
 
+// The trunk's six columns (issue 26) come back bit for bit after the arm's; a blob without them
+// decodes without trunk columns; a blob's trunk columns must match its rows.
+TEST(EstimateCodec, TrunkColumnsRoundTripAndLeaveOtherBlobsAsTheyWere) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EstimateColumns withTrunk, armOnly;
+  for (int i = 0; i < 30; ++i) {
+    EstimateRow r;
+    r.t = 0.005 * i;
+    r.th.setConstant(0.1 * i);
+    r.sd.setConstant(0.01);
+    r.status = i % 5;
+    r.trunk = Eigen::Vector3d(0.3 * std::sin(i), -0.1 * i, i % 7 == 0 ? nan : -0.0);
+    r.trunkSd = Eigen::Vector3d(1e-300, 0.02, i % 7 == 0 ? nan : 0.004);
+    withTrunk.append(r, true);
+    armOnly.append(r);
+  }
+  const std::string blob = EstimateCodec::encode(withTrunk);
+  const EstimateColumns d = EstimateCodec::decode(blob, 30);
+  ASSERT_TRUE(d.hasTrunk());
+  ASSERT_EQ(d.trunk.size(), 30u);
+  for (std::size_t i = 0; i < 30; ++i) {
+    EXPECT_EQ(d.status[i], withTrunk.status[i]);
+    EXPECT_TRUE(sameBits(d.th[i](4), withTrunk.th[i](4)));
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(sameBits(d.trunk[i](k), withTrunk.trunk[i](k))) << i << " " << k;
+      EXPECT_TRUE(sameBits(d.trunkSd[i](k), withTrunk.trunkSd[i](k))) << i << " " << k;
+    }
+  }
+  const EstimateColumns arm = EstimateCodec::decode(EstimateCodec::encode(armOnly), 30);
+  EXPECT_FALSE(arm.hasTrunk());
+  EXPECT_TRUE(arm.trunkSd.empty());
+  // Other row counts are refused, with or without the trunk.
+  EXPECT_THROW(EstimateCodec::decode(blob, 29), std::runtime_error);
+  EXPECT_THROW(EstimateCodec::decode(blob, 31), std::runtime_error);
+  EstimateColumns bad = withTrunk;
+  bad.trunk.pop_back();
+  EXPECT_THROW(EstimateCodec::encode(bad), std::invalid_argument);
+  bad = withTrunk;
+  bad.trunkSd.clear();
+  EXPECT_THROW(EstimateCodec::encode(bad), std::invalid_argument);
+}
+
 TEST(SessionAnalysis, DamagedEstimatesGiveAClearError) {
   Fixture f;
   f.store->addPatient(makePatient("P1"));

@@ -315,6 +315,38 @@ TEST(TrunkAnalysis, ShoulderOnlyAndNoTrunkData) {
                   .isNull());
 }
 
+// A home session is judged by the limit its exercise held the patient to, not the protocol's: the
+// programme exercise's own limit (12 deg, the protocol has none), or, once the home window stored
+// its summary, the summary's (40 deg; null: none). The same session at the clinic: the protocol's.
+TEST(TrunkAnalysis, AHomeSessionIsJudgedByItsExercisesLimit) {
+  Fixture f;
+  withPatient(f);
+  ProgrammeItem item;
+  item.protocolName = "reach";
+  item.trunkLimitDeg = kLimitDeg;
+  f.store->setProgrammeExercise("P1", item);
+  SimSetup setup;
+  setup.seed = 813;
+  simulateReaches(f.file("lean.csv"), Reaches(kPeaks), setup);
+  const qint64 id = f.store->importRecording(f.file("lean.csv"), "P1", "reach");
+  f.db->exec("UPDATE sessions SET setting = 'home' WHERE id = ?", {id});
+  const auto judged = [&](const QJsonValue& wantLimit, int wantCompensated) {
+    const QJsonObject m = analyseSession(*f.store, id).metricsJson;
+    EXPECT_EQ(m.value("trunk").toObject().value("flexion_limit_deg"), wantLimit);
+    EXPECT_EQ(m.value("repetitions").toObject().value("repetitions_with_compensation"),
+              wantCompensated < 0 ? QJsonValue() : QJsonValue(wantCompensated));
+  };
+  judged(kLimitDeg, 3);  // the low reach leans about 8 deg, the others 18
+  f.db->exec("UPDATE sessions SET home_summary_json = ? WHERE id = ?",
+             {R"({"format": "armtrack-home-v1", "trunk_limit_deg": 40})", id});
+  judged(40.0, 0);
+  f.db->exec("UPDATE sessions SET home_summary_json = ? WHERE id = ?",
+             {R"({"format": "armtrack-home-v1", "trunk_limit_deg": null})", id});
+  judged(QJsonValue(), -1);
+  f.db->exec("UPDATE sessions SET setting = 'clinic', home_summary_json = '{}' WHERE id = ?", {id});
+  judged(QJsonValue(), -1);
+}
+
 // A limit that is not a positive number of degrees is refused before anything is estimated;
 // metrics stored before the trunk was measured read as "no trunk".
 TEST(TrunkAnalysis, BadLimitIsRefusedAndOldMetricsHaveNoTrunk) {

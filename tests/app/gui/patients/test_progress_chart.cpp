@@ -27,6 +27,7 @@
 #include "core/storage/SessionAnalysis.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 #include "tests/support/GuiTestMain.h"
+#include "tests/support/LeaningPatient.h"
 
 using namespace armtrack;
 
@@ -291,27 +292,10 @@ class TestProgressChart : public QObject {
     p.code = QStringLiteral("P2");
     p.name = QStringLiteral("Leaning Less");
     store.addPatient(p);
-    TrajectoryOptions options;
-    options.exercise.angle = 0;  // shoulder flexion
-    options.exercise.fromDeg = 10;
-    options.exercise.toDeg = 110;
-    options.exercise.startSeconds = 4;
-    const auto trajectory = makeTrajectory("exercise", options);
     std::vector<double> trueLean;
     for (const double lean : {16.0, 8.0}) {
-      SimulationParams sim = defaultSimulation();
-      sim.duration = 16;
-      sim.seed = lean > 10 ? 841 : 842;
-      sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 100;
-      sim.trunk.enabled = true;
-      sim.trunk.leanDeg = lean;
-      sim.trunkImu.enabled = true;
-      sim.kinect.shoulder = true;
-      const Recording rec = simulateRecording(*trajectory, sim);
-      double truth = 0;
-      for (const ArmSample& a : rec.samples)
-        if (a.trueTrunk) truth = std::max(truth, std::abs((*a.trueTrunk)(0)) * kRadToDeg);
-      trueLean.push_back(truth);
+      const Recording rec = test::leaningReaches(16, lean > 10 ? 841 : 842, lean, 100);
+      trueLean.push_back(test::trueLeanDeg(rec));
       const std::string csv = m_dir.filePath(QStringLiteral("lean%1.csv").arg(lean)).toStdString();
       writeRecording(csv, rec);
       const qint64 id = store.importRecording(csv, QStringLiteral("P2"), {});

@@ -6,9 +6,11 @@
 #include <QDir>
 #include <QFileInfo>
 #include <QJsonDocument>
+#include <QLineSeries>
 #include <QPlainTextEdit>
 #include <QProcess>
 #include <QRegularExpression>
+#include <QScrollArea>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QSqlDatabase>
@@ -25,10 +27,9 @@
 #include "app/gui/services/DemoData.h"
 #include "app/gui/signin/SignInScreen.h"
 #include "core/io/Recording.h"
-#include "core/simulation/SensorSimulator.h"
-#include "core/simulation/Trajectory.h"
 #include "core/storage/SessionAnalysis.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
+#include "tests/support/LeaningPatient.h"
 #include "ui/AnglePlotPanel.h"
 #include "ui/ArmView.h"
 
@@ -259,24 +260,8 @@ class TestReview : public QObject {
   // the repetition table each repetition's, with the compensated ones marked; an arm-only
   // session says "not measured" and hides the trunk's columns (issue 26).
   void showsTheTrunk() {
-    armtrack::TrajectoryOptions options;
-    options.exercise.angle = 0;  // shoulder flexion
-    options.exercise.fromDeg = 10;
-    options.exercise.toDeg = 110;
-    options.exercise.startSeconds = 4;
-    const auto trajectory = armtrack::makeTrajectory("exercise", options);
-    armtrack::SimulationParams sim = armtrack::defaultSimulation();
-    sim.duration = 20;
-    sim.seed = 831;
-    sim.upperArm.rateHz = sim.forearm.rateHz = sim.trunkImu.rateHz = 200;
-    sim.trunk.enabled = true;
-    sim.trunk.leanDeg = 18;
-    sim.trunkImu.enabled = true;
-    sim.kinect.shoulder = true;
-    const armtrack::Recording rec = armtrack::simulateRecording(*trajectory, sim);
-    double trueLean = 0;
-    for (const armtrack::ArmSample& a : rec.samples)
-      if (a.trueTrunk) trueLean = std::max(trueLean, std::abs((*a.trueTrunk)(0)) * 180 / M_PI);
+    const armtrack::Recording rec = armtrack::test::leaningReaches(20, 831);
+    const double trueLean = armtrack::test::trueLeanDeg(rec);
     const std::string csv = m_dir.filePath(QStringLiteral("lean.csv")).toStdString();
     armtrack::writeRecording(csv, rec);
     qint64 id = 0;
@@ -321,10 +306,36 @@ class TestReview : public QObject {
       QCOMPARE(m->index(row, RepetitionTableModel::Compensation).data().toString(),
                QStringLiteral("yes"));
     }
+    // The trunk's curves, from the estimates stored with the session: every row of the analysis,
+    // the largest flexion the true lean's to a degree and a half.
+    const armtrack::ui::AnglePlotPanel* plots = r->plots();
+    QVERIFY(!plots->trunkChart()->isHidden());
+    const std::deque<armtrack::ui::AngleSample>& curve = plots->trunkTrace().samples();
+    QCOMPARE(curve.size(), plots->trace().samples().size());
+    double largest = 0;
+    for (const armtrack::ui::AngleSample& a : curve) largest = std::max(largest, a.deg[0]);
+    QVERIFY2(std::abs(largest - trueLean) < 1.5, qPrintable(QString::number(largest)));
+    QVERIFY(plots->trunkChart()->series(0)->count() > 10);
+    // At the deepest lean the 3D figure leans with the stored estimate; the trunk plot in view.
+    const auto deepest =
+        std::max_element(curve.begin(), curve.end(),
+                         [](const auto& a, const auto& b) { return a.deg[0] < b.deg[0]; });
+    r->setCursor(deepest->t);
+    QVERIFY(r->armView()->trunk().has_value());
+    QVERIFY2(std::abs((*r->armView()->trunk())(0) * 180 / M_PI - deepest->deg[0]) < 1e-6,
+             qPrintable(QString::number((*r->armView()->trunk())(0) * 180 / M_PI)));
+    for (QWidget* w = plots->trunkChart(); w; w = w->parentWidget())
+      if (auto* scroll = qobject_cast<QScrollArea*>(w)) {
+        scroll->ensureWidgetVisible(plots->trunkChart());
+        break;
+      }
+    test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk-plot"));
     test::saveScreenshot(m_app->window(), QStringLiteral("review-trunk"));
 
     r = open(m_sessions.back());
     QVERIFY(r);
+    QVERIFY(r->plots()->trunkChart()->isHidden());
+    QVERIFY(r->plots()->trunkTrace().empty());
     for (int i = 0; i < 4; ++i)
       QCOMPARE(r->trunkPanel()->valueText(i), QStringLiteral("not measured"));
     QCOMPARE(r->trunkPanel()->compensationText(), QString());
