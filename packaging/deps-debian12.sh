@@ -9,6 +9,9 @@ packages=(
   qt6-base-dev qt6-serialport-dev libqt6sql6-sqlite libfreenect-dev libfreenect-bin
   qt6-tools-dev qt6-l10n-tools qt6-translations-l10n libxcb1-dev
   libzstd-dev libsodium-dev libpq-dev
+  # armtrack-server: Qt Network's TLS (its OpenSSL backend comes with libqt6network6, libssl3);
+  # openssl makes the sync tests' self-signed certificates
+  openssl
   fonts-dejavu-core fonts-wqy-microhei poppler-utils
   libqt6sql6-psql postgresql
   libgtest-dev googletest libbenchmark-dev

@@ -18,6 +18,8 @@ int patientCommand(const std::vector<std::string>& args, std::ostream& out, std:
 int protocolCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 /// programme: ProgrammeCommands.cpp.
 int programmeCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// device: DeviceCommands.cpp (home devices that sync, docs/sync.md).
+int deviceCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int sessionCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int exportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 /// report and export: ClinicalOutputs.cpp.

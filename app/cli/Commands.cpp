@@ -66,6 +66,7 @@ Commands:
   patient    add or list patients
   protocol   add or list exercise protocols
   programme  a patient's home programme: exercises, sets, repetitions, targets, rest
+  device     enrolment codes for home devices that sync with armtrack-server; list, revoke
   session    import a recording into the records (estimated and measured), list, show or
              re-estimate sessions
   export     write a stored session as a recording, clinical CSV, OpenSim .mot or BIDS motion
@@ -359,6 +360,7 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     if (cmd == "patient") return patientCommand(rest, out, err);
     if (cmd == "protocol") return protocolCommand(rest, out, err);
     if (cmd == "programme") return programmeCommand(rest, out, err);
+    if (cmd == "device") return deviceCommand(rest, out, err);
     if (cmd == "session") return sessionCommand(rest, out, err);
     if (cmd == "export") return exportCommand(rest, out, err);
     if (cmd == "audit") return auditCommand(rest, out, err);

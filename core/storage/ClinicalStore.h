@@ -88,6 +88,29 @@ class ClinicalStore {
   /// StorageError(AccessDenied) with message, or "account 'NAME' (ROLE) may not WHAT".
   [[noreturn]] void deny(const QString& what, const std::string& message = {}) const;
 
+  // Home devices that sync with armtrack-server (ClinicalStoreDevices.cpp, docs/sync.md).
+  /// A one-time enrolment code for a home account (administrators and therapists), valid for
+  /// validForS seconds (1 minute to 30 days). Only its hash is stored (SyncSecrets.h). Audited.
+  EnrolmentCode createEnrolmentCode(const QString& homeAccount, qint64 validForS);
+  /// Enrols a device with a code, signed in or not: the code is used up, a new device token is
+  /// made (only its hash stored) and this store is then signed in as the code's home account,
+  /// as that device. A wrong, used or expired code, or a disabled account, throws
+  /// StorageError(Authentication) with one message for all (the audit log says which).
+  DeviceEnrolment enrolDevice(const QString& code, const QString& deviceLabel);
+  /// Signs in as the home account of the device with this token (not revoked, account not
+  /// disabled); throws StorageError(Authentication) otherwise, audited.
+  const User& signInWithDeviceToken(const QString& token);
+  /// The device signed in with (enrolDevice, signInWithDeviceToken); 0 otherwise.
+  qint64 deviceId() const { return m_deviceId; }
+  /// The devices of a home account, revoked ones too (administrators and therapists).
+  std::vector<DeviceInfo> listDevices(const QString& homeAccount);
+  /// Revokes a device's token for good (administrators and therapists). Audited.
+  void revokeDevice(qint64 deviceId);
+  /// Acts as a clinic service (armtrack-server) with a therapist's rights and no account: for a
+  /// process that already holds the database's own credentials, to analyse what a device sent.
+  /// The audit log names it by serviceName.
+  void signInAsService(const QString& serviceName);
+
   // Patients (create/update: administrators and therapists; delete: administrators). Codes are
   // unique and found without regard to case; codes, names and free text follow TextRules.h.
   qint64 addPatient(const Patient& patient);
@@ -287,6 +310,7 @@ class ClinicalStore {
   int m_interruptedOnOpen = 0;
   int m_removedImportsOnOpen = 0;
   int m_staleRecordingsKept = 0;
+  qint64 m_deviceId = 0;
 };
 
 }  // namespace armtrack::storage

@@ -145,7 +145,7 @@ qint64 ClinicalStore::beginSession(const QString& patientCode, const QString& pr
         "INSERT INTO sessions (patient_id, therapist_id, protocol_id, started_at, devices_json, "
         "calibration_json, filter_json, status, columns_mask, recorder_host, recorder_pid, "
         "setting, origin) VALUES (?, ?, ?, ?, ?, ?, ?, 'recording', ?, ?, ?, ?, ?)",
-        {patientId, isStaff() ? QVariant(user().id) : QVariant(),
+        {patientId, isStaff() && user().id > 0 ? QVariant(user().id) : QVariant(),
          protocol ? QVariant(*protocol) : QVariant(), utcNow(), settings.devicesJson,
          calibrationJson, settings.filterJson, columnsMask, detail::thisHost(),
          detail::thisProcess(), isStaff() ? kSettingClinic : kSettingHome,

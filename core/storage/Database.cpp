@@ -362,7 +362,8 @@ QString Database::integrityCheck() {
   // check of a server is pg_amcheck's job (docs/storage.md).
   for (const char* table :
        {"schema_version", "users", "patients", "protocols", "programmes", "sessions",
-        "recording_chunks", "estimates", "estimate_chunks", "metrics", "audit_log"}) {
+        "recording_chunks", "estimates", "estimate_chunks", "metrics", "audit_log",
+        "enrolment_codes", "devices", "sync_uploads", "sync_upload_chunks"}) {
     QSqlQuery q(m_db);
     if (!q.exec(QString("SELECT count(*) FROM ") + table))
       return QString(table) + ": " + q.lastError().text();

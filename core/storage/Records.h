@@ -22,6 +22,26 @@ struct User {
   bool disabled = false;            ///< may not sign in (ClinicalStore::setUserDisabled)
 };
 
+/// A one-time code that enrols a home device (ClinicalStore::createEnrolmentCode).
+struct EnrolmentCode {
+  QString code;       ///< "7KQ2-M9XD-4TRA": shown once, never stored
+  QString expiresAt;  ///< ISO 8601 UTC
+};
+
+/// What a device gets when it enrols (ClinicalStore::enrolDevice).
+struct DeviceEnrolment {
+  qint64 deviceId = 0;
+  QString token;  ///< shown once, never stored
+  QString patientCode;
+};
+
+/// A home device as the clinic sees it (ClinicalStore::listDevices).
+struct DeviceInfo {
+  qint64 id = 0;
+  QString label;
+  QString createdAt, lastSeenAt, revokedAt;  ///< empty: never / not revoked
+};
+
 struct Patient {
   qint64 id = 0;
   QString code;  ///< unique, what the clinic calls the patient in files and logs

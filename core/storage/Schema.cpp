@@ -244,6 +244,45 @@ const std::vector<MigrationStep>& migrationSteps() {
       // damaged; with the version raised, such a build refuses the whole database as newer than
       // it knows instead. Estimates without the trunk are stored as before.
       {9, "estimates may hold the trunk's angles and their standard deviations", {}, {}},
+      // Home devices that sync with the clinic's armtrack-server (docs/sync.md). Codes and
+      // tokens are stored as hashes only (SyncSecrets.h); an upload is kept in the database,
+      // chunk by chunk, until it is complete, so that any server behind a load balancer can go
+      // on with it and a dropped connection resumes where it stopped.
+      {10,
+       "home devices: enrolment codes, device tokens, uploads in progress",
+       {"CREATE TABLE enrolment_codes ("
+        " id {id},"
+        " user_id BIGINT NOT NULL REFERENCES users (id) ON DELETE CASCADE,"
+        " code_hash TEXT NOT NULL UNIQUE,"
+        " created_at TEXT NOT NULL,"
+        " expires_at TEXT NOT NULL,"
+        " used_at TEXT)",
+        "CREATE TABLE devices ("
+        " id {id},"
+        " user_id BIGINT NOT NULL REFERENCES users (id) ON DELETE CASCADE,"
+        " token_hash TEXT NOT NULL UNIQUE,"
+        " label TEXT NOT NULL DEFAULT '',"
+        " created_at TEXT NOT NULL,"
+        " last_seen_at TEXT,"
+        " revoked_at TEXT)",
+        "CREATE TABLE sync_uploads ("
+        " uuid TEXT PRIMARY KEY,"
+        " patient_id BIGINT NOT NULL REFERENCES patients (id) ON DELETE CASCADE,"
+        " device_id BIGINT REFERENCES devices (id) ON DELETE SET NULL,"
+        " sha256 TEXT NOT NULL,"
+        " size_bytes BIGINT NOT NULL CHECK (size_bytes >= 0),"
+        " chunk_count INTEGER NOT NULL CHECK (chunk_count >= 1),"
+        " meta_json TEXT NOT NULL,"
+        " session_id BIGINT REFERENCES sessions (id) ON DELETE SET NULL,"
+        " created_at TEXT NOT NULL,"
+        " completed_at TEXT)",
+        "CREATE TABLE sync_upload_chunks ("
+        " uuid TEXT NOT NULL REFERENCES sync_uploads (uuid) ON DELETE CASCADE,"
+        " seq INTEGER NOT NULL,"
+        " sha256 TEXT NOT NULL,"
+        " data {blob} NOT NULL,"
+        " PRIMARY KEY (uuid, seq))"},
+       {}},
   };
   return steps;
 }

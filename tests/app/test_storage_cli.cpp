@@ -360,8 +360,11 @@ TEST_P(StorageCli, HomeAccountNeitherAnalysesNorSeesAnotherPatientsMetrics) {
 // works.
 TEST_P(StorageCli, OlderSchemaNeedsDbMigrate) {
   addPatients();
-  // Version 8's column (the programmes table goes with versions 2 to 4 below), version 7's,
-  // version 6's triggers, indexes, tables and columns, then those of versions 2 to 4.
+  // Version 9's tables, version 8's column (the programmes table goes with versions 2 to 4
+  // below), version 7's, version 6's triggers, indexes, tables and columns, then those of
+  // versions 2 to 4.
+  sql({"DROP TABLE sync_upload_chunks", "DROP TABLE sync_uploads", "DROP TABLE devices",
+       "DROP TABLE enrolment_codes"});
   sql({"ALTER TABLE protocols DROP COLUMN trunk_limit_deg"});
   sql({"ALTER TABLE users DROP COLUMN disabled"});
   if (m_engine == Engine::Postgres)

@@ -136,6 +136,9 @@ TEST_P(MigrationToTrunkLimit, FromVersion7KeepsEverythingWithTheLimitOff) {
   item.sets = 2;
   f.store->setProgrammeExercise("OLD", item);
   f.close();
+  // Version 9's tables (home devices, docs/sync.md) first, then version 8's columns.
+  rawSql(f.path, {"DROP TABLE sync_upload_chunks", "DROP TABLE sync_uploads", "DROP TABLE devices",
+                  "DROP TABLE enrolment_codes"});
   rawSql(f.path, {"ALTER TABLE protocols DROP COLUMN trunk_limit_deg",
                   "ALTER TABLE programmes DROP COLUMN trunk_limit_deg",
                   "UPDATE schema_version SET version = 7"});
