@@ -127,16 +127,16 @@ struct PriorCost {
   double m_w;
 };
 
-/// Per instant, the (th4, th5) on a 15 deg grid that best explains the elbow's specific force and
+/// Per instant, the (th4, th5) on a 10 deg grid that best explains the elbow's specific force and
 /// the two gyroscopes (the joint rates solved by least squares) at the given mountings.
 Eigen::Vector2d gridStart(const AxesInput& in, std::size_t k, const Mat3& m1, const Mat3& m2) {
   double best = 1e300;
   Eigen::Vector2d arg(-kHalfPi, 0.0);
   const Vec3 b5 = m2.transpose() * Vec3::UnitY();
-  for (int i4 = -11; i4 <= 1; ++i4) {
-    for (int i5 = -12; i5 < 12; ++i5) {
-      const double th4 = i4 * 15.0 * std::numbers::pi / 180.0;
-      const double th5 = i5 * 15.0 * std::numbers::pi / 180.0;
+  for (int i4 = -17; i4 <= 2; ++i4) {
+    for (int i5 = -18; i5 < 18; ++i5) {
+      const double th4 = i4 * 10.0 * std::numbers::pi / 180.0;
+      const double th5 = i5 * 10.0 * std::numbers::pi / 180.0;
       const Mat3 a = m1.transpose() * relativeRotation(in.model, th4, th5) * m2;
       const Vec3 ea = in.ae1[k] - a * in.ae2[k];
       const Vec3 rel = in.w2[k] - a.transpose() * in.w1[k];

@@ -656,6 +656,8 @@ MovementCalibration calibrateMovementRight(const Recording& rec,
                      sdP(foreCov, Vec3::UnitZ()), "cm", pp, fr));
   ps.push_back(param("forearm sensor distance from the forearm's axis", geo.lf8 * 100.0,
                      prior.lf8 * 100.0, sdP(foreCov, radialF), "cm", pp, fr));
+  out.upperLeverExcited = shoulderUnexcited == 0 && !upperImplausible;
+  out.forearmLeverExcited = elbowUnexcited == 0 && !forearmImplausible;
   if (shoulderUnexcited > 0)
     out.warnings.push_back(
         "the movement did not turn the upper arm enough to place the shoulder in " +

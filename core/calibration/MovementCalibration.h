@@ -67,6 +67,9 @@ struct MovementCalibration {
   /// from the elbow centre), in the segment's frame (frame 3, frame 6 of docs/arm-model.md; m).
   Eigen::Vector3d upperLever = Eigen::Vector3d::Zero();
   Eigen::Vector3d forearmLever = Eigen::Vector3d::Zero();
+  /// Whether the movement placed each IMU in every direction (the shoulder, the elbow centre);
+  /// false: some direction is the sidecar's.
+  bool upperLeverExcited = true, forearmLeverExcited = true;
   double axisResidualRms = 0.0;   ///< rad/s, the relative-motion fit's gyroscope residual
   double leverResidualRms = 0.0;  ///< m/s^2, the joint-position fit's residual
   std::vector<std::string> warnings;
