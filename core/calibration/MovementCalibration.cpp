@@ -403,7 +403,14 @@ MovementCalibration calibrateMovementRight(const Recording& rec,
            " s somewhere in the recording (both sensors still, reading gravity), and record again");
   out.restStart = g.t[rest->from];
   out.restEnd = g.t[rest->to - 1];
-  const Vec3 bias1 = meanOf(g.w1, *rest), bias2 = meanOf(g.w2, *rest);
+  // The biases from the rest's inside: its edges see the movement through the smoother.
+  Rest inner = *rest;
+  const std::size_t edge = static_cast<std::size_t>(std::ceil(2.0 * kHalfWidth / kGridDt));
+  if (inner.to - inner.from > 4 * edge) {
+    inner.from += edge;
+    inner.to -= edge;
+  }
+  const Vec3 bias1 = meanOf(g.w1, inner), bias2 = meanOf(g.w2, inner);
   for (std::size_t i = 0; i < g.t.size(); ++i) {
     g.w1[i] -= bias1;
     g.w2[i] -= bias2;

@@ -389,7 +389,7 @@ TEST_F(CalibrateCliTest, FromMovementWritesTheCalibrationAndReports) {
                                 "--seed", "4", "--misalignment", "20", "--gyro-bias", "0.0087",
                                 "--no-kinect", "--out", rec.string()});
   ASSERT_EQ(sim.code, 0) << sim.err;
-  const fs::path calib = path("moving.json");
+  const fs::path calib = path("calib_moving.json");
   const CliResult r = calibrateCli(
       {"--from-movement", rec.string(), "--rest-pose", "start", "--out", calib.string()});
   ASSERT_EQ(r.code, 0) << r.err;
