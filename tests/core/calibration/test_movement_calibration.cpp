@@ -9,6 +9,7 @@
 #include <limits>
 #include <random>
 
+#include "core/calibration/Calibrator.h"
 #include "core/calibration/MovementCalibration.h"
 #include "core/calibration/MovementFit.h"
 #include "core/simulation/DoublePendulum.h"
@@ -57,7 +58,8 @@ Eigen::Matrix3d randomTurn(std::mt19937_64& rng, double maxDeg) {
       .toRotationMatrix();
 }
 
-Case makeCase(const Trajectory& motion, std::uint64_t seed, bool realistic, double seconds = 60.0) {
+Case makeCase(const Trajectory& motion, std::uint64_t seed, bool realistic, double seconds = 60.0,
+              Side side = Side::Right) {
   std::mt19937_64 rng(seed * 7919 + 3);
   std::uniform_real_distribution<double> off(-0.05, 0.05), radius(0.005, 0.04);
   Case c;
@@ -65,6 +67,7 @@ Case makeCase(const Trajectory& motion, std::uint64_t seed, bool realistic, doub
   sim.kinect.enabled = false;
   sim.duration = seconds;
   sim.seed = seed;
+  sim.side = side;
   sim.upperArm.rateHz = sim.forearm.rateHz = 100.0;
   ArmGeometry truth;
   truth.lu3 += off(rng);
@@ -222,6 +225,28 @@ TEST(MovementCalibration, DoublePendulumSaysWhatItCouldNotSee) {
     if (q.name.rfind("forearm sensor tilt", 0) == 0 && !q.excited) forearmTiltUnexcited = true;
   EXPECT_TRUE(forearmTiltUnexcited);
   EXPECT_TRUE(calibrationProblem(m.calibration).empty());
+}
+
+// A left arm is fitted on its right-arm twin and given back in the real sensors' axes: the
+// rotation mirror-conjugated, the bias -D b (as the protocol calibration does).
+TEST(MovementCalibration, LeftArm) {
+  const ReachingTrajectory reach(2, 2.0, 8.0, 70.0);
+  const Case c = makeCase(reach, 2, false, 40.0, Side::Left);
+  const MovementCalibration m = calibrateFromMovement(c.rec, withRestPose());
+  EXPECT_EQ(m.calibration.side, Side::Left);
+  const Errors e = errorsOf(c, m);
+  std::cout << "left arm: strap ua " << e.rotUa << " fa " << e.rotFa << " deg; lever ua " << e.levUa
+            << " fa " << e.levFa << " cm\n";
+  EXPECT_LT(e.rotUa, 3.0);
+  EXPECT_LT(e.rotFa, 3.0);
+  const Eigen::Matrix3d d = Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal();
+  EXPECT_LT((m.calibration.upperArm.gyroBias + d * Eigen::Vector3d(0.5, -0.3, 0.2) * kDeg).norm(),
+            0.05 * kDeg);
+  // The real sensor's rotation, mirrored back to the twin, gives the twin's whole mounting.
+  const Eigen::Matrix3d twin = d * m.calibration.upperArm.rotation * d;
+  EXPECT_LT(
+      angleDeg(mountingRotation(m.calibration.geometry.thu4, ArmGeometry{}.thu4, twin), c.rotUa),
+      3.0);
 }
 
 Recording shortStill(double seconds) {
