@@ -16,6 +16,7 @@
 
 #include "core/calibration/Calibrator.h"
 #include "core/calibration/MovementFit.h"
+#include "core/calibration/MovementReadings.h"
 
 namespace armtrack {
 
@@ -23,185 +24,10 @@ using namespace movecal;
 
 namespace {
 
-constexpr double kGridDt = 0.02;     // s, the uniform grid
-constexpr double kHalfWidth = 0.06;  // s, the triangular smoother's half width
-constexpr int kAxesStride = 2;       // grid steps between the instants of the axes fit
+constexpr int kAxesStride = 2;  // grid steps between the instants of the axes fit
 
 [[noreturn]] void refuse(const std::string& message) {
   throw std::invalid_argument(message);
-}
-
-struct Channel {
-  std::vector<double> t;
-  std::vector<Vec3> v;
-};
-
-/// One IMU's fresh readings (repeats of the previous value, non-finite and saturated ones left
-/// out), per channel.
-struct ImuChannels {
-  Channel gyr, acc;
-  std::size_t nonFinite = 0, saturated = 0, rows = 0;
-};
-
-/// The readings at a channel's range: the largest |component| reached in at least 3 separate runs
-/// or held for 8 rows in a row. Marks them.
-std::vector<char> saturatedRows(const std::vector<Vec3>& v) {
-  std::vector<char> out(v.size(), 0);
-  for (int axis = 0; axis < 3; ++axis) {
-    double top = 0.0;
-    for (const Vec3& x : v) top = std::max(top, std::abs(x(axis)));
-    if (!(top > 0.0)) continue;
-    int runs = 0, longest = 0, run = 0;
-    for (std::size_t i = 0; i < v.size(); ++i) {
-      const bool at = std::abs(v[i](axis)) >= top * (1.0 - 1e-12);
-      if (at) {
-        if (run == 0) ++runs;
-        ++run;
-        longest = std::max(longest, run);
-      } else {
-        run = 0;
-      }
-    }
-    if (runs < 3 && longest < 8) continue;
-    for (std::size_t i = 0; i < v.size(); ++i)
-      if (std::abs(v[i](axis)) >= top * (1.0 - 1e-12)) out[i] = 1;
-  }
-  return out;
-}
-
-ImuChannels channels(const std::vector<ArmSample>& samples, bool forearm) {
-  ImuChannels c;
-  std::vector<double> t;
-  std::vector<Vec3> g, a;
-  for (const ArmSample& s : samples) {
-    const std::optional<ImuReading>& r = forearm ? s.forearm : s.upperArm;
-    if (!r) continue;
-    ++c.rows;
-    if (!r->gyr.allFinite() || !r->acc.allFinite() || !std::isfinite(s.t)) {
-      ++c.nonFinite;
-      continue;
-    }
-    t.push_back(s.t);
-    g.push_back(r->gyr);
-    a.push_back(r->acc);
-  }
-  const std::vector<char> satG = saturatedRows(g), satA = saturatedRows(a);
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    if (satG[i] || satA[i]) {
-      ++c.saturated;
-      continue;
-    }
-    if (c.gyr.v.empty() || g[i] != c.gyr.v.back()) {
-      c.gyr.t.push_back(t[i]);
-      c.gyr.v.push_back(g[i]);
-    }
-    if (c.acc.v.empty() || a[i] != c.acc.v.back()) {
-      c.acc.t.push_back(t[i]);
-      c.acc.v.push_back(a[i]);
-    }
-  }
-  return c;
-}
-
-/// The channel at time t: a triangular-weighted mean of the readings within kHalfWidth, or the
-/// linear interpolation of the nearest two when none is that close.
-Vec3 smoothAt(const Channel& c, double t) {
-  const auto lo = std::lower_bound(c.t.begin(), c.t.end(), t - kHalfWidth);
-  Vec3 sum = Vec3::Zero();
-  double wsum = 0.0;
-  for (auto it = lo; it != c.t.end() && *it <= t + kHalfWidth; ++it) {
-    const double w = 1.0 - std::abs(*it - t) / kHalfWidth;
-    if (w <= 0.0) continue;
-    sum += w * c.v[static_cast<std::size_t>(it - c.t.begin())];
-    wsum += w;
-  }
-  if (wsum > 0.0) return sum / wsum;
-  const auto hi = std::lower_bound(c.t.begin(), c.t.end(), t);
-  if (hi == c.t.begin()) return c.v.front();
-  if (hi == c.t.end()) return c.v.back();
-  const std::size_t j = static_cast<std::size_t>(hi - c.t.begin());
-  const double u = (t - c.t[j - 1]) / (c.t[j] - c.t[j - 1]);
-  return (1.0 - u) * c.v[j - 1] + u * c.v[j];
-}
-
-struct Grid {
-  std::vector<double> t;
-  std::vector<Vec3> w1, a1, w2, a2, wd1, wd2;
-};
-
-Grid makeGrid(const ImuChannels& u, const ImuChannels& f) {
-  Grid g;
-  const double t0 = std::max({u.gyr.t.front(), u.acc.t.front(), f.gyr.t.front(), f.acc.t.front()});
-  const double t1 = std::min({u.gyr.t.back(), u.acc.t.back(), f.gyr.t.back(), f.acc.t.back()});
-  for (double t = t0; t <= t1; t += kGridDt) {
-    g.t.push_back(t);
-    g.w1.push_back(smoothAt(u.gyr, t));
-    g.a1.push_back(smoothAt(u.acc, t));
-    g.w2.push_back(smoothAt(f.gyr, t));
-    g.a2.push_back(smoothAt(f.acc, t));
-  }
-  return g;
-}
-
-void differentiate(Grid& g) {
-  const std::size_t n = g.t.size();
-  g.wd1.assign(n, Vec3::Zero());
-  g.wd2.assign(n, Vec3::Zero());
-  for (std::size_t i = 1; i + 1 < n; ++i) {
-    g.wd1[i] = (g.w1[i + 1] - g.w1[i - 1]) / (2.0 * kGridDt);
-    g.wd2[i] = (g.w2[i + 1] - g.w2[i - 1]) / (2.0 * kGridDt);
-  }
-}
-
-struct Rest {
-  std::size_t from = 0, to = 0;  // grid indices, [from, to)
-};
-
-/// The longest stretch in which every 0.5 s window is still for both IMUs.
-std::optional<Rest> findRest(const Grid& g, const MovementCalibrationParams& p, double gravity) {
-  const std::size_t n = g.t.size();
-  const std::size_t w = static_cast<std::size_t>(std::ceil(p.minRestSeconds / kGridDt));
-  if (n < w + 1) return std::nullopt;
-  const auto still = [&](std::size_t i) {
-    for (const auto* pair : {&g.w1, &g.w2}) {
-      const std::vector<Vec3>& v = *pair;
-      Vec3 mean = Vec3::Zero();
-      for (std::size_t k = i; k < i + w; ++k) mean += v[k];
-      mean /= static_cast<double>(w);
-      if (mean.norm() > p.restGyroMean) return false;
-      for (std::size_t k = i; k < i + w; ++k)
-        if ((v[k] - mean).norm() > p.restGyroSpread) return false;
-    }
-    for (const auto* pair : {&g.a1, &g.a2}) {
-      const std::vector<Vec3>& v = *pair;
-      Vec3 mean = Vec3::Zero();
-      for (std::size_t k = i; k < i + w; ++k) mean += v[k];
-      mean /= static_cast<double>(w);
-      if (std::abs(mean.norm() / gravity - 1.0) > p.restAccelTolerance) return false;
-      for (std::size_t k = i; k < i + w; ++k)
-        if ((v[k] - mean).norm() > p.restAccelSpread) return false;
-    }
-    return true;
-  };
-  std::optional<Rest> best;
-  std::size_t runStart = 0;
-  bool inRun = false;
-  for (std::size_t i = 0; i + w <= n; ++i) {
-    const bool s = still(i);
-    if (s && !inRun) runStart = i;
-    inRun = s;
-    if (s) {
-      const Rest r{runStart, i + w};
-      if (!best || r.to - r.from > best->to - best->from) best = r;
-    }
-  }
-  return best;
-}
-
-Vec3 meanOf(const std::vector<Vec3>& v, const Rest& r) {
-  Vec3 m = Vec3::Zero();
-  for (std::size_t k = r.from; k < r.to; ++k) m += v[k];
-  return m / static_cast<double>(r.to - r.from);
 }
 
 /// K r = w' x r + w x (w x r): the acceleration of a point at r on a body turning with w.
@@ -341,12 +167,6 @@ class QuietGlog {
  private:
   int m_saved;
 };
-
-std::string fixed1(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f", v);
-  return buf;
-}
 
 MovementParameter param(const std::string& name, double value, double prior, double sd,
                         const std::string& unit, double priorSd, double fraction) {
@@ -712,60 +532,6 @@ std::optional<MovementCalibration> tryCalibrateFromMovement(const Recording& rec
     if (why) *why = e.what();
     return std::nullopt;
   }
-}
-
-}  // namespace armtrack
-
-namespace armtrack {
-
-std::string formatMovementReport(const MovementCalibration& m) {
-  std::string s = "Calibration from movement (" + sideName(m.calibration.side) + " arm; rest " +
-                  fixed1(m.restStart) + "-" + fixed1(m.restEnd) + " s, " + fixed1(m.movingSeconds) +
-                  " s of movement)\n\n";
-  const auto find = [&](const std::string& name) -> const MovementParameter* {
-    for (const MovementParameter& p : m.parameters)
-      if (p.name == name) return &p;
-    return nullptr;
-  };
-  const auto say = [&](const std::string& name, const std::string& text) {
-    const MovementParameter* p = find(name);
-    if (!p) return;
-    if (!p->observable) {
-      s += "- " + text + ": no movement can tell it from pronation; the sidecar's is kept.\n";
-    } else if (!p->excited) {
-      s += "- " + text + ": the movement did not show it; the sidecar's " + fixed1(p->prior) + " " +
-           p->unit + " is kept.\n";
-    } else {
-      s += "- " + text + ": " + fixed1(p->value) + " " + p->unit + " (sd " + fixed1(p->sd) + " " +
-           p->unit + ").\n";
-    }
-  };
-  s += "Upper arm:\n";
-  say("upper-arm strap turn about the arm", "the strap turned about the arm by");
-  say("upper-arm sensor tilt about its x axis", "the sensor tilted about its x axis by");
-  say("upper-arm sensor tilt about its z axis", "the sensor tilted about its z axis by");
-  say("upper-arm sensor distance from the shoulder", "the sensor sits from the shoulder at");
-  say("upper-arm sensor distance from the arm's axis", "and off the arm's axis by");
-  say("upper-arm length", "the upper arm (shoulder to elbow) is");
-  s += "Forearm:\n";
-  say("forearm sensor tilt about its x axis", "the sensor tilted about its x axis by");
-  say("forearm sensor tilt about its z axis", "the sensor tilted about its z axis by");
-  say("forearm sensor roll about the forearm", "its roll about the forearm");
-  say("forearm sensor distance from the elbow", "the sensor sits from the elbow at");
-  if (const MovementParameter* p = find("forearm sensor distance from the elbow"); p && p->excited)
-    s += "  that is " + fixed1(m.calibration.geometry.l6 * 100.0 - p->value) +
-         " cm from the wrist (forearm length " + fixed1(m.calibration.geometry.l6 * 100.0) +
-         " cm, the sidecar's).\n";
-  say("forearm sensor distance from the forearm's axis", "and off the forearm's axis by");
-  const Calibration& c = m.calibration;
-  s += "Gyroscope bias at rest (deg/s): upper arm [" + fixed1(c.upperArm.gyroBias.x() / kDeg) +
-       " " + fixed1(c.upperArm.gyroBias.y() / kDeg) + " " + fixed1(c.upperArm.gyroBias.z() / kDeg) +
-       "], forearm [" + fixed1(c.forearm.gyroBias.x() / kDeg) + " " +
-       fixed1(c.forearm.gyroBias.y() / kDeg) + " " + fixed1(c.forearm.gyroBias.z() / kDeg) + "].\n";
-  s += "Fit residuals: elbow relative motion " + fixed1(m.axisResidualRms / kDeg) +
-       " deg/s, joint positions " + fixed1(m.leverResidualRms) + " m/s^2 (RMS).\n";
-  for (const std::string& w : m.warnings) s += "Note: " + w + ".\n";
-  return s;
 }
 
 }  // namespace armtrack
