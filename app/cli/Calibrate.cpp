@@ -26,6 +26,7 @@ namespace {
 
 constexpr std::string_view kCalibrateHelp =
     R"(Usage: armtrack-cli calibrate REC.csv --out CALIB.json [options]
+       armtrack-cli calibrate --from-movement REC.csv [--out CALIB.json] (see --from-movement --help)
 
 Estimates the sensor-to-segment calibration from a recording of the calibration protocol
 (docs/calibration.md): the IMU strap distances and angles (lu3, lu5, thu4, lf6, lf8, thf7), a
@@ -78,6 +79,7 @@ void checkWritable(const fs::path& target) {
 }  // namespace
 
 int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  if (wantsMovementCalibration(args)) return calibrateFromMovementCommand(args, out, err);
   const Args a("calibrate", args,
                {{"--out", true},
                 {"--no-kinect", false},

@@ -20,6 +20,15 @@ namespace armtrack::cli {
 /// errors (exit 1), like the other commands; runCli maps them.
 int calibrateCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
+/// Whether calibrate's arguments ask for the calibration from movement (--from-movement).
+bool wantsMovementCalibration(const std::vector<std::string>& args);
+/// armtrack-cli calibrate --from-movement REC.csv [--out CALIB.json] [--rest-pose start]
+/// (app/cli/CalibrateMovement.cpp): prints the report, writes the calibration when --out is
+/// given. Throws, as calibrateCommand, on a recording it cannot use (no rest, too little
+/// movement, ...).
+int calibrateFromMovementCommand(const std::vector<std::string>& args, std::ostream& out,
+                                 std::ostream& err);
+
 /// For "estimate --calibration CALIB.json": reads the file, checks that it is for the recording's
 /// arm, corrects every IMU sample of rec and puts the calibrated geometry into rec.meta (so
 /// filter parameters made from rec.meta afterwards use it). Writes one line to err saying what

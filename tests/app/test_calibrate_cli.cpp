@@ -381,5 +381,47 @@ TEST_F(CalibrateCliTest, AnUnwritableOutputIsRefusedBeforeTheSolve) {
   fs::permissions(path("locked"), fs::perms::owner_all);
 }
 
+// calibrate --from-movement: the protocol's recording is ordinary movement with a rest at its
+// start; the report is printed, the file written, the gyroscope bias found at rest.
+TEST_F(CalibrateCliTest, FromMovementWritesTheCalibrationAndReports) {
+  const fs::path rec = path("moving.csv");
+  const CliResult sim = runCli({"simulate", "--trajectory", "calibration", "--duration", "57",
+                                "--seed", "4", "--misalignment", "20", "--gyro-bias", "0.0087",
+                                "--no-kinect", "--out", rec.string()});
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  const fs::path calib = path("calib_moving.json");
+  const CliResult r = calibrateCli(
+      {"--from-movement", rec.string(), "--rest-pose", "start", "--out", calib.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("Calibration from movement"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("the strap turned about the arm by"), std::string::npos) << r.out;
+  const Calibration c = readCalibration(calib);
+  EXPECT_LT((c.upperArm.gyroBias - Eigen::Vector3d::Constant(0.0087)).norm(), 1e-3);
+  EXPECT_LT((c.forearm.gyroBias - Eigen::Vector3d::Constant(0.0087)).norm(), 1e-3);
+  // --misalignment 20 turns each sensor by 20 deg about a random axis.
+  EXPECT_NEAR(
+      Eigen::AngleAxisd(mountingRotation(c.geometry.thu4, ArmGeometry{}.thu4, c.upperArm.rotation))
+              .angle() /
+          kDeg,
+      20.0, 3.0);
+}
+
+TEST_F(CalibrateCliTest, FromMovementRefusesWithoutRestOrWithBadOptions) {
+  const fs::path rec = path("norest.csv");
+  const CliResult sim = runCli({"simulate", "--trajectory", "multi-joint", "--duration", "20",
+                                "--no-kinect", "--out", rec.string()});
+  ASSERT_EQ(sim.code, 0) << sim.err;
+  CliResult r = calibrateCli({"--from-movement", rec.string(), "--out", path("x.json").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no moment of rest"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(path("x.json")));
+  r = calibrateCli({"--from-movement", rec.string(), "--rest-pose", "sitting"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--rest-pose"), std::string::npos) << r.err;
+  r = calibrateCli({"--from-movement", path("missing.csv").string()});
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no such file"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace armtrack
