@@ -101,15 +101,6 @@ double ArmFilter<N>::trunkPositionVariance(const Eigen::Vector3d& p) const {
   return ts.shoulderVariance + p.squaredNorm() * ts.rotationCov.trace() / 3.0;
 }
 
-// The arm's angles relative to the thorax rest on the trunk's estimated pose: the optical points
-// are brought into frame 0 by it (p0 = R^T (p - s), s = (I - R) h). An error rotation e of the
-// trunk (world axes, e0 = R^T e in frame 0) and an error dh of the hip move every optical point
-// by dp0 = [p0 - h]x e0 - R^T (I - R) dh: a turn about the hip, not the shoulder, so the points
-// also shift, and the filter bends the joints to follow them. The variance this gives the angles
-// is that of the joint change that best explains the shifted elbow and wrist (least squares on
-// their positions at the current angles); it comes on top of P, which treats the same error as
-// white noise on each optical frame. Without it, a sternum IMU on a still trunk left the
-// shoulder's squared errors 1.1-1.8 times their variance (seeds 501-505, Kinect).
 namespace {
 
 // Elbow and wrist (frame 0) at th, and their joint Jacobian by central differences.
@@ -202,6 +193,15 @@ void ArmFilter<N>::fitHipFromArm(const ArmSample& s) {
   }
 }
 
+// The arm's angles relative to the thorax rest on the trunk's estimated pose: the optical points
+// are brought into frame 0 by it (p0 = R^T (p - s), s = (I - R) h). An error rotation e of the
+// trunk (world axes, e0 = R^T e in frame 0) and an error dh of the hip move every optical point
+// by dp0 = [p0 - h]x e0 - R^T (I - R) dh: a turn about the hip, not the shoulder, so the points
+// also shift, and the filter bends the joints to follow them. The variance this gives the angles
+// is that of the joint change that best explains the shifted elbow and wrist (least squares on
+// their positions at the current angles); it comes on top of P, which treats the same error as
+// white noise on each optical frame. Without it, a sternum IMU on a still trunk left the
+// shoulder's squared errors 1.1-1.8 times their variance (seeds 501-505, Kinect).
 template <int N>
 void ArmFilter<N>::addTrunkVariance(const JointVector& th, JointVector& var) const {
   if (!m_trunk || !m_trunk->state().haveImu) return;

@@ -14,7 +14,8 @@
 //
 // The shoulder in the world: the trunk turns about a hip pivot h (world coordinates), so the
 // shoulder centre is at s = h - R h. h starts at a typical place below and medial to the shoulder
-// and is refined from the optical shoulder when one is seen (a linear least-squares fit). Without
+// and is refined from the optical shoulder when one is seen (a linear least-squares fit), or else
+// from the arm's own optical points (addHipObservation, fed by the arm filter). Without
 // a trunk IMU, an optical shoulder still gives s directly (smoothed); the rotation is then unknown
 // and taken as the start pose.
 #pragma once
