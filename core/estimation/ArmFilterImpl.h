@@ -118,8 +118,8 @@ class ArmFilter final : public JointEstimator {
   // ArmFilterTrunk.cpp: a moving trunk
   void applyTrunk(ArmSample& s);
   double trunkPositionVariance(const Eigen::Vector3d& p) const;
-  // The variance the arm's angles relative to the thorax take from the trunk's uncertain
-  // orientation, added to var (rad^2).
+  // The variance the arm's angles relative to the thorax take from the trunk's uncertain pose
+  // (its rotation and the hip it turns about), added to var (rad^2).
   void addTrunkVariance(const JointVector& th, JointVector& var) const;
   // Without an optical shoulder: the hip pivot from the arm's optical points (world frame).
   void fitHipFromArm(const ArmSample& s);
