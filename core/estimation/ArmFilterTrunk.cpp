@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/estimation/ArmFilterImpl.h"
+#include "core/estimation/MeasurementJacobian.h"
 
 namespace armtrack::detail {
 
@@ -103,24 +104,18 @@ double ArmFilter<N>::trunkPositionVariance(const Eigen::Vector3d& p) const {
 
 namespace {
 
-// Elbow and wrist (frame 0) at th, and their joint Jacobian by central differences.
+// Elbow and wrist (frame 0) at th, and their joint Jacobian: the measurement model's own rows
+// (predictReadings), at rest, where gravity does not enter the positions.
 void pointsAndJacobian(const ArmGeometry& geometry, const JointVector& th,
                        Eigen::Matrix<double, 6, 1>& p, Eigen::Matrix<double, 6, 5>& jac) {
-  const ArmGeometryT<double> geo = geometryAs<double>(geometry);
-  auto positions = [&](const JointVector& a) {
-    Eigen::Matrix<double, 6, 1> out;
-    Eigen::Vector3d e, w;
-    armPositions<double>(a, geo, e, w);
-    out << e, w;
-    return out;
-  };
-  constexpr double kStep = 1e-6;
-  for (int j = 0; j < 5; ++j) {
-    JointVector d = JointVector::Zero();
-    d(j) = kStep;
-    jac.col(j) = (positions(th + d) - positions(th - d)) / (2.0 * kStep);
-  }
-  p = positions(th);
+  Eigen::Matrix<double, kMeasurementStates, 1> x =
+      Eigen::Matrix<double, kMeasurementStates, 1>::Zero();
+  x.segment<5>(10) = th;
+  ModelReadings h;
+  ModelJacobian full;
+  predictReadings(geometry, Eigen::Vector3d::Zero(), false, x, h, &full);
+  p = h.segment<6>(12);
+  jac = full.block<6, 5>(12, 10);
 }
 
 // The hip fit from the arm's points: what the arm's predicted positions leave out besides their
