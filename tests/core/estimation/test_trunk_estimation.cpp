@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "core/estimation/RecordingEstimator.h"
@@ -21,13 +22,16 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 
 enum class Optics { Kinect, Webcam, None };
 
-Recording leaningSession(std::uint64_t seed, Side side, Optics optics, double leanDeg,
-                         double peakRateDeg = 90.0) {
+std::unique_ptr<Trajectory> reaching(std::uint64_t seed, double peakRateDeg = 90.0) {
   TrajectoryOptions to;
   to.seed = seed;
   to.peakRate = peakRateDeg * kDegree;
   to.peakAccel = 300.0 * kDegree;
-  const auto traj = makeTrajectory("reaching", to);
+  return makeTrajectory("reaching", to);
+}
+
+// A leaning patient with a sternum IMU, the IMUs at 200 Hz.
+SimulationParams leaningParams(std::uint64_t seed, Side side, Optics optics, double leanDeg) {
   SimulationParams p = defaultSimulation();
   p.duration = 20.0;
   p.seed = seed;
@@ -39,7 +43,13 @@ Recording leaningSession(std::uint64_t seed, Side side, Optics optics, double le
   p.trunkImu.rateHz = 200.0;
   p.kinect.enabled = optics == Optics::Kinect;
   if (optics == Optics::Webcam) p.webcam.enabled = true;
-  return simulateRecording(*traj, p);
+  return p;
+}
+
+Recording leaningSession(std::uint64_t seed, Side side, Optics optics, double leanDeg,
+                         double peakRateDeg = 90.0) {
+  return simulateRecording(*reaching(seed, peakRateDeg),
+                           leaningParams(seed, side, optics, leanDeg));
 }
 
 EstimateStats estimateIt(const Recording& rec) {
@@ -88,28 +98,14 @@ TEST(TrunkEstimation, AHipAwayFromThePriorIsFittedFromTheArmsPoints) {
   for (const Side side : {Side::Right, Side::Left}) {
     for (const Optics optics : {Optics::Webcam, Optics::Kinect}) {
       for (const std::uint64_t seed : {521u, 522u}) {
-        TrajectoryOptions to;
-        to.seed = seed;
-        to.peakRate = 90.0 * kDegree;
-        to.peakAccel = 300.0 * kDegree;
-        const auto traj = makeTrajectory("reaching", to);
-        SimulationParams p = defaultSimulation();
-        p.duration = 20.0;
-        p.seed = seed;
-        p.side = side;
-        p.upperArm.rateHz = p.forearm.rateHz = p.trunkImu.rateHz = 200.0;
-        p.trunk.enabled = true;
-        p.trunk.leanDeg = 20.0;
+        SimulationParams p = leaningParams(seed, side, optics, 20.0);
         p.trunk.swaySeed = seed;
         // 4 cm from the prior, in a different direction for each seed.
         const Eigen::Vector3d away =
             Eigen::Vector3d(1.0, seed == 521u ? 1.0 : -1.0, seed == 521u ? -1.0 : 1.0).normalized();
         p.trunk.hip = defaultHip(side) + 0.04 * away;
-        p.trunkImu.enabled = true;
-        p.kinect.enabled = optics == Optics::Kinect;
         p.kinect.shoulder = false;
-        p.webcam.enabled = optics == Optics::Webcam;
-        const EstimateStats st = estimateIt(simulateRecording(*traj, p));
+        const EstimateStats st = estimateIt(simulateRecording(*reaching(seed), p));
         ASSERT_GT(st.truthCount, 3000u);
         for (int j = 0; j < kNumJoints; ++j)
           EXPECT_LT(st.rmseDeg(j), 1.0)
@@ -183,11 +179,7 @@ TEST(TrunkEstimation, RowsCarryTrunkAnglesOnlyWithATrunkImu) {
 TEST(TrunkEstimation, AMovingTrunkWithoutASternumImuIsReported) {
   for (const std::uint64_t seed : {71u, 72u, 73u}) {
     for (const double lean : {0.0, 8.0, 20.0}) {
-      TrajectoryOptions to;
-      to.seed = seed;
-      to.peakRate = 90.0 * kDegree;
-      to.peakAccel = 300.0 * kDegree;
-      const auto traj = makeTrajectory("reaching", to);
+      const auto traj = reaching(seed);
       SimulationParams p = defaultSimulation();
       p.duration = 20.0;
       p.seed = seed;
