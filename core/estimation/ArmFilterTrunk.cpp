@@ -11,12 +11,6 @@ namespace armtrack::detail {
 
 namespace {
 
-Eigen::Matrix3d skew3(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
 // What a sternum IMU can read: beyond a MEMS sensor's usual full scale (2000 deg/s, 16 g) a
 // reading is a fault.
 constexpr double kMaxTrunkGyro = 2000.0 * kDeg;
@@ -210,7 +204,7 @@ void ArmFilter<N>::addTrunkVariance(const JointVector& th, JointVector& var) con
   pointsAndJacobian(m_p.geometry, th, p, jac);
   Eigen::Matrix<double, 6, 3> turn, offset;
   for (int k = 0; k < 2; ++k) {
-    turn.block<3, 3>(3 * k, 0) = skew3(p.segment<3>(3 * k) - ts.hip);
+    turn.block<3, 3>(3 * k, 0) = skew(p.segment<3>(3 * k) - ts.hip);
     offset.block<3, 3>(3 * k, 0) = Eigen::Matrix3d::Identity();
   }
   const Eigen::Matrix<double, 6, 6> posCov =

@@ -11,12 +11,6 @@ namespace armtrack::detail {
 
 namespace {
 
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
 Eigen::Matrix3d expRotation(const Eigen::Vector3d& v) {
   const double a = v.norm();
   if (a < 1e-12) return Eigen::Matrix3d::Identity() + skew(v);

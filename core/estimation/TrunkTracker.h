@@ -30,6 +30,13 @@
 
 namespace armtrack::detail {
 
+/// The cross-product matrix: skew(v) w = v x w.
+inline Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
 struct TrunkTrackerParams {
   TrunkMount mount;                            ///< the sternum IMU, frame 0 at start
   Eigen::Vector3d gUp{-9.81, 0.0, 0.0};        ///< world, frame-0 axes (m/s^2)
