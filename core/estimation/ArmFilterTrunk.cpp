@@ -23,6 +23,21 @@ bool plausible(const ImuReading& r) {
          r.acc.cwiseAbs().maxCoeff() < kMaxTrunkAccel;
 }
 
+// The camera stays in the world; seen from frame 0 it moves: p_cam = Rc (s + R p0) + tc. It
+// sees the real arm, which for a left arm is the mirror image of the one the filter works on.
+CameraParams cameraInFrame0(const CameraParams& world, const TrunkState& ts, Side side) {
+  Eigen::Matrix3d rot = ts.rotation;
+  Eigen::Vector3d shoulder = ts.shoulder;
+  if (side == Side::Left) {
+    rot = mirrorRotation(rot);
+    shoulder = mirrorPoint(shoulder);
+  }
+  CameraParams c = world;
+  c.R = world.R * rot;
+  c.t = world.R * shoulder + world.t;
+  return c;
+}
+
 }  // namespace
 
 template <int N>
@@ -73,18 +88,7 @@ void ArmFilter<N>::applyTrunk(ArmSample& s) {
   if (s.elbow) s.elbow = rt * (*s.elbow - ts.shoulder);
   if (s.wrist) s.wrist = rt * (*s.wrist - ts.shoulder);
   if (m_camera && m_p.camera && (s.camWrist || s.camElbow)) {
-    // The camera stays in the world; seen from frame 0 it moves: p_cam = Rc (s + R p0) + tc.
-    // It sees the real arm, which for a left arm is the mirror image of this one.
-    Eigen::Matrix3d rot = ts.rotation;
-    Eigen::Vector3d shoulder = ts.shoulder;
-    if (m_p.side == Side::Left) {
-      rot = mirrorRotation(rot);
-      shoulder = mirrorPoint(shoulder);
-    }
-    CameraParams c = *m_p.camera;
-    c.R = m_p.camera->R * rot;
-    c.t = m_p.camera->R * shoulder + m_p.camera->t;
-    m_camera.emplace(c);
+    m_camera.emplace(cameraInFrame0(*m_p.camera, ts, m_p.side));
   }
 }
 
@@ -155,14 +159,11 @@ void ArmFilter<N>::fitHipFromArm(const ArmSample& s) {
     m_trunk->addHipObservation(lever, r, var);
   }
   if (!hasPixels) return;
-  // The camera in frame 0 for the current pose, as applyTrunk builds it; a left arm's camera
-  // sees the mirror image.
-  const bool left = m_p.side == Side::Left;
-  const Eigen::Matrix3d mirror = left ? Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal().toDenseMatrix()
-                                      : Eigen::Matrix3d::Identity();
-  CameraParams c = *m_p.camera;
-  c.R = m_p.camera->R * mirror * ts.rotation * mirror;
-  c.t = m_p.camera->R * (mirror * ts.shoulder) + m_p.camera->t;
+  // The camera in frame 0 for the current pose; M mirrors a left arm's points.
+  const Eigen::Matrix3d mirror = m_p.side == Side::Left
+                                     ? Eigen::Vector3d(1.0, 1.0, -1.0).asDiagonal().toDenseMatrix()
+                                     : Eigen::Matrix3d::Identity();
+  const CameraParams c = cameraInFrame0(*m_p.camera, ts, m_p.side);
   const PinholeCamera camera(c);
   const std::optional<Eigen::Vector2d> pixels[2] = {s.camElbow, s.camWrist};
   for (int k = 0; k < 2; ++k) {
