@@ -422,6 +422,10 @@ void AppController::showHome() {
   setup.devices = m_demoUrl
                       ? QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm+webcam")}
                       : defaultDevices();
+  // The sync with the clinic keeps its state in the data folder (not in the demo).
+  if (!m_demoUrl)
+    setup.syncFolder =
+        QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/home-sync";
   setup.configure = [this](const SessionPlan& plan, const QStringList& devices,
                            const std::optional<Calibration>& calibration) {
     return liveSessionConfig(plan, devices, m_settings, calibration);

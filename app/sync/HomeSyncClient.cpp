@@ -159,6 +159,7 @@ void HomeSyncClient::finish(SyncProblem problem, const QString& detail) {
   countWaiting();
   emit statusChanged(m_status);
   emit synced(m_status);
+  m_status.programmeChanged = false;  // told once
 }
 
 void HomeSyncClient::stopOn(const Answer& a, const QString& what) {
@@ -196,7 +197,8 @@ void HomeSyncClient::sync() {
     if (a.status != 200) return stopOn(a, "programme");
     m_status.lastContact = QDateTime::currentDateTimeUtc();
     try {
-      cacheProgramme(store(), m_device.patient, QJsonDocument::fromJson(a.body).object());
+      m_status.programmeChanged =
+          cacheProgramme(store(), m_device.patient, QJsonDocument::fromJson(a.body).object());
       const std::vector<qint64> waiting = waitingSessions();
       m_queue.assign(waiting.begin(), waiting.end());
     } catch (const std::exception& e) {

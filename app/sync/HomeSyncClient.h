@@ -46,8 +46,9 @@ struct SyncStatus {
   QDateTime lastSent;     ///< UTC, the last acknowledgement; null when none
   QDateTime lastContact;  ///< UTC, the last time the server answered; null when never
   SyncProblem problem = SyncProblem::None;
-  QString detail;  ///< for the log: what failed, in English
-  QString server;  ///< the server's address
+  QString detail;                 ///< for the log: what failed, in English
+  QString server;                 ///< the server's address
+  bool programmeChanged = false;  ///< the last sync brought another programme
 };
 
 class HomeSyncClient : public QObject {

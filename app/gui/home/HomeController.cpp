@@ -9,6 +9,7 @@
 #include "app/gui/home/ExerciseScreen.h"
 #include "app/gui/home/FeedbackSound.h"
 #include "app/gui/home/HomeCalibrationScreen.h"
+#include "app/gui/home/HomeConnectScreen.h"
 #include "app/gui/home/HomeMessageScreen.h"
 #include "app/gui/home/HomeStartScreen.h"
 #include "app/gui/home/HomeSummaryScreen.h"
@@ -16,6 +17,7 @@
 #include "app/gui/home/SensorCheckScreen.h"
 #include "app/gui/home/SwitchAccess.h"
 #include "app/gui/services/RecordsService.h"
+#include "app/sync/HomeSyncService.h"
 
 namespace armtrack::gui::home {
 
@@ -35,9 +37,25 @@ HomeController::HomeController(RecordsService& records, const app::PluginRegistr
   m_window->access()->setMode(
       parseAccessMode(QSettings().value(QLatin1String(kAccessKey)).toString()));
   connect(m_window.get(), &HomeWindow::closeRequested, this, &HomeController::onCloseRequested);
+  if (!m_setup.syncFolder.isEmpty()) {
+    // The sync runs on a thread of its own; its state is a line under every screen, so an
+    // exercise is never held up by it.
+    m_sync = std::make_unique<sync::HomeSyncService>(m_records.url(), m_setup.syncFolder);
+    connect(m_sync.get(), &sync::HomeSyncService::statusChanged, this,
+            [this](const sync::SyncStatus& s) {
+              m_window->setSyncText(HomeConnectScreen::stateText(s, QDateTime::currentDateTime()));
+              // A programme changed at the clinic is shown at once when nothing is under way.
+              if (s.programmeChanged && !s.busy &&
+                  qobject_cast<HomeStartScreen*>(m_window->currentScreen()))
+                loadPlan();
+            });
+    m_window->setSyncText(
+        HomeConnectScreen::stateText(m_sync->status(), QDateTime::currentDateTime()));
+  }
 }
 
 HomeController::~HomeController() {
+  m_sync.reset();    // its thread ends; an upload under way resumes next time
   m_window.reset();  // the screens first: their pending answers are dropped
   // The recordings in the temporary folder are removed on a pool thread (the application waits
   // for the pool when it ends).
@@ -109,14 +127,31 @@ void HomeController::loadPlan() {
 
 void HomeController::showStart() {
   setStep([] { return tr("Today"); });
-  auto* screen =
-      show(new HomeStartScreen(m_plan, m_setup.opticalConfigured(), m_window->access()->mode()));
+  auto* screen = show(new HomeStartScreen(m_plan, m_setup.opticalConfigured(),
+                                          m_window->access()->mode(), nullptr, m_sync != nullptr));
+  connect(screen, &HomeStartScreen::clinicRequested, this, &HomeController::showConnect);
   connect(screen, &HomeStartScreen::startRequested, this, &HomeController::showCheck);
   connect(screen, &HomeStartScreen::signOutRequested, this, &HomeController::signOutRequested);
   connect(screen, &HomeStartScreen::accessModeChosen, this, [this](AccessMode mode) {
     m_window->access()->setMode(mode);
     QSettings().setValue(QLatin1String(kAccessKey), accessModeName(mode));
   });
+}
+
+void HomeController::showConnect() {
+  if (!m_sync) return;
+  setStep([] { return tr("Clinic"); });
+  auto* screen = show(new HomeConnectScreen(m_sync->status().server));
+  screen->serverField()->setFocus(Qt::OtherFocusReason);
+  connect(screen, &HomeConnectScreen::backRequested, this, &HomeController::showStart);
+  connect(screen, &HomeConnectScreen::connectRequested, m_sync.get(),
+          [this](const QString& server, const QString& code) {
+            m_sync->enrol(server, code, tr("home computer"));
+          });
+  connect(m_sync.get(), &sync::HomeSyncService::enrolFinished, screen,
+          [screen](bool ok, sync::SyncProblem problem, const QString& detail) {
+            screen->showResult(ok, HomeConnectScreen::enrolText(ok, problem, detail));
+          });
 }
 
 app::gui::LiveSessionConfig HomeController::config(
@@ -191,6 +226,7 @@ void HomeController::saveAll(std::optional<int> pain, const QString& comment,
       },
       [this, done](bool) {
         m_saved = true;
+        if (m_sync) m_sync->sessionStored();  // counted as waiting, and sent when it can be
         done(true, {});
         emit outcomeSaved(true, {});
       },

@@ -27,6 +27,10 @@ namespace armtrack::gui {
 class RecordsService;
 }
 
+namespace armtrack::sync {
+class HomeSyncService;
+}
+
 namespace armtrack::gui::home {
 
 class FeedbackSound;
@@ -48,6 +52,8 @@ class HomeController : public QObject {
   const std::vector<HomeExerciseResult>& results() const { return m_results; }
   const HomeSetup& setup() const { return m_setup; }
   FeedbackSound* sound() const { return m_sound; }
+  /// The sync with the clinic (null when the set-up names no sync folder).
+  sync::HomeSyncService* syncService() const { return m_sync.get(); }
   /// The calibration made in this session, if any.
   const std::optional<Calibration>& calibration() const { return m_calibration; }
   /// The question shown when the window is closed during an exercise (null when none is open).
@@ -67,6 +73,7 @@ class HomeController : public QObject {
 
  private:
   void showStart();
+  void showConnect();
   void showCheck();
   void showCalibration();
   void showExercise(std::size_t index);
@@ -94,6 +101,7 @@ class HomeController : public QObject {
   std::shared_ptr<QTemporaryDir> m_work;
   std::unique_ptr<HomeWindow> m_window;
   FeedbackSound* m_sound;
+  std::unique_ptr<sync::HomeSyncService> m_sync;
   HomePlan m_plan;
   std::vector<HomeExerciseResult> m_results;
   std::optional<Calibration> m_calibration;

@@ -25,6 +25,9 @@ struct HomeSetup {
       configure;
   /// Where the check's and the calibration's recordings go (a temporary folder).
   QString workFolder;
+  /// Where the home sync keeps its state and outgoing copies (docs/sync.md, "The home
+  /// install"); empty: this install does not sync (the demo, the tests).
+  QString syncFolder;
 
   /// Every device is a virtual arm: each step's devices play its movement.
   bool virtualArm() const;

@@ -27,7 +27,7 @@ QString firstName(const QString& name) {
 }
 
 HomeStartScreen::HomeStartScreen(const HomePlan& plan, bool optical, AccessMode mode,
-                                 QWidget* parent)
+                                 QWidget* parent, bool withClinic)
     : HomeScreen(parent), m_plan(plan), m_optical(optical), m_mode(mode) {
   auto* root = new QVBoxLayout(this);
   m_hello = heading({}, this);
@@ -48,13 +48,17 @@ HomeStartScreen::HomeStartScreen(const HomePlan& plan, bool optical, AccessMode 
   m_start->setEnabled(!plan.exercises.empty());
   m_access = bigButton({}, this);
   m_signOut = bigButton({}, this);
+  m_clinic = bigButton({}, this);
+  m_clinic->setVisible(withClinic);
   buttons->addWidget(m_start, 2);
   buttons->addWidget(m_access, 2);
+  buttons->addWidget(m_clinic, 1);
   buttons->addWidget(m_signOut, 1);
   root->addLayout(buttons);
   retranslate();
   connect(m_start, &QPushButton::clicked, this, &HomeStartScreen::startRequested);
   connect(m_signOut, &QPushButton::clicked, this, &HomeStartScreen::signOutRequested);
+  connect(m_clinic, &QPushButton::clicked, this, &HomeStartScreen::clinicRequested);
   connect(m_access, &QPushButton::clicked, this, [this] {
     m_mode = m_mode == AccessMode::Keyboard   ? AccessMode::Scanning
              : m_mode == AccessMode::Scanning ? AccessMode::Step
@@ -96,7 +100,10 @@ void HomeStartScreen::retranslate() {
     m_note->hide();
   ui::setButtonText(m_start, tr("&Start"));
   ui::setButtonText(m_signOut, tr("Sign &out"));
-  for (QPushButton* b : {m_start, m_signOut}) b->setAccessibleName(QString(b->text()).remove(u'&'));
+  ui::setButtonText(m_clinic, tr("C&linic"));
+  m_clinic->setToolTip(tr("Connect to the clinic with its address and your therapist's code"));
+  for (QPushButton* b : {m_start, m_signOut, m_clinic})
+    b->setAccessibleName(QString(b->text()).remove(u'&'));
   showMode();
 }
 
@@ -119,7 +126,7 @@ void HomeStartScreen::showMode() {
 }
 
 QList<QAbstractButton*> HomeStartScreen::choices() const {
-  return {m_start, m_access, m_signOut};
+  return {m_start, m_access, m_clinic, m_signOut};
 }
 
 QAbstractButton* HomeStartScreen::defaultChoice() const {

@@ -14,8 +14,10 @@ namespace armtrack::gui::home {
 class HomeStartScreen : public HomeScreen {
   Q_OBJECT
  public:
+  /// withClinic: offer "Connect to the clinic" (the install syncs with a clinic).
   HomeStartScreen(const HomePlan& plan, bool opticalConfigured, AccessMode mode,
-                  QWidget* parent = nullptr);
+                  QWidget* parent = nullptr, bool withClinic = false);
+  QPushButton* clinicButton() const { return m_clinic; }
 
   QList<QAbstractButton*> choices() const override;
   QAbstractButton* defaultChoice() const override;
@@ -26,6 +28,8 @@ class HomeStartScreen : public HomeScreen {
  signals:
   void startRequested();
   void signOutRequested();
+  /// The patient wants to enter the clinic's address and code (only when the install syncs).
+  void clinicRequested();
   void accessModeChosen(armtrack::gui::home::AccessMode mode);
 
  protected:
@@ -45,6 +49,7 @@ class HomeStartScreen : public HomeScreen {
   QPushButton* m_start;
   QPushButton* m_access;
   QPushButton* m_signOut;
+  QPushButton* m_clinic;
 };
 
 /// "Elbow flexion: 2 sets of 5 repetitions, 20 s rest" (translated).

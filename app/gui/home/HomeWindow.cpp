@@ -17,6 +17,7 @@ HomeWindow::HomeWindow(QWidget* parent)
     : QWidget(parent, Qt::Window),
       m_who(new QLabel(this)),
       m_step(new QLabel(this)),
+      m_sync(new QLabel(this)),
       m_stack(new ui::ScreenStack(this)),
       m_access(new SwitchAccess(this, this)) {
   applyHomeStyle(this);
@@ -30,6 +31,10 @@ HomeWindow::HomeWindow(QWidget* parent)
   top->addWidget(m_step);
   root->addLayout(top);
   root->addWidget(m_stack, 1);
+  setHomeFont(m_sync, 0.8);
+  m_sync->setWordWrap(true);
+  m_sync->hide();
+  root->addWidget(m_sync);
   setMinimumSize(800, 560);
   resize(1200, 760);
   retranslate();
@@ -40,6 +45,7 @@ void HomeWindow::retranslate() {
   setAccessibleName(tr("My exercises"));
   m_who->setAccessibleName(tr("Whose exercises"));
   m_step->setAccessibleName(tr("Step"));
+  m_sync->setAccessibleName(tr("Sending to the clinic"));
   if (m_stepText) m_step->setText(m_stepText());
 }
 
@@ -62,6 +68,15 @@ void HomeWindow::setHeading(const QString& who, std::function<QString()> step) {
   m_who->setText(who);
   m_stepText = std::move(step);
   m_step->setText(m_stepText ? m_stepText() : QString());
+}
+
+void HomeWindow::setSyncText(const QString& text) {
+  m_sync->setText(text);
+  m_sync->setVisible(!text.isEmpty());
+}
+
+QString HomeWindow::syncText() const {
+  return m_sync->text();
 }
 
 QString HomeWindow::stepText() const {

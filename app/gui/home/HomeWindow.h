@@ -29,6 +29,10 @@ class HomeWindow : public QWidget {
   /// when the language changes).
   void setHeading(const QString& who, std::function<QString()> step);
   QString stepText() const;
+  /// The line under every screen saying where the sessions stand ("3 sessions waiting to be
+  /// sent"); hidden when empty (no sync on this install).
+  void setSyncText(const QString& text);
+  QString syncText() const;
   SwitchAccess* access() const { return m_access; }
   /// Closing is first asked of the owner (closeRequested); it closes once allowed.
   void allowClose() { m_closeAllowed = true; }
@@ -46,6 +50,7 @@ class HomeWindow : public QWidget {
 
   QLabel* m_who;
   QLabel* m_step;
+  QLabel* m_sync;
   std::function<QString()> m_stepText;
   ui::ScreenStack* m_stack;
   SwitchAccess* m_access;

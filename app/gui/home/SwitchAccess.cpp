@@ -3,6 +3,7 @@
 #include <QAbstractButton>
 #include <QApplication>
 #include <QKeyEvent>
+#include <QLineEdit>
 #include <QPlainTextEdit>
 #include <algorithm>
 
@@ -127,6 +128,8 @@ bool SwitchAccess::eventFilter(QObject* watched, QEvent* event) {
   // Typing in the comment box: Enter and Space are text, whatever the mode (Ctrl+Enter goes
   // on). A switch never puts the focus there: scanning steps through the buttons only.
   if (qobject_cast<QPlainTextEdit*>(w) && !(key->modifiers() & Qt::ControlModifier)) return false;
+  // A line (the clinic's address, the code): Space is text, Enter goes on.
+  if (qobject_cast<QLineEdit*>(w) && key->key() == Qt::Key_Space) return false;
   if (key->isAutoRepeat()) return true;  // a switch held down is one press
   switch (m_mode) {
     case AccessMode::Scanning:
