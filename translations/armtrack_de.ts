@@ -3723,6 +3723,108 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     </message>
 </context>
 <context>
+    <name>armtrack::gui::home::HomeConnectScreen</name>
+    <message>
+        <source>Connect to the clinic</source>
+        <translation>Mit der Klinik verbinden</translation>
+    </message>
+    <message>
+        <source>Your therapist gives you the clinic&apos;s address and a code. Once connected, your sessions are sent to your therapist and your exercises come from the clinic. You can always exercise without a connection: sessions are kept and sent later.</source>
+        <translation>Ihre Therapeutin oder Ihr Therapeut gibt Ihnen die Adresse der Klinik und einen Code. Sobald die Verbindung besteht, werden Ihre Sitzungen an die Therapie gesendet, und Ihre Übungen kommen von der Klinik. Sie können immer auch ohne Verbindung üben: Die Sitzungen werden aufbewahrt und später gesendet.</translation>
+    </message>
+    <message>
+        <source>Clinic&apos;s &amp;address (for example sync.clinic.example:8443)</source>
+        <translation>&amp;Adresse der Klinik (zum Beispiel sync.clinic.example:8443)</translation>
+    </message>
+    <message>
+        <source>&amp;Code from your therapist</source>
+        <translation>&amp;Code aus der Therapie</translation>
+    </message>
+    <message>
+        <source>Clinic&apos;s address</source>
+        <translation>Adresse der Klinik</translation>
+    </message>
+    <message>
+        <source>Code from your therapist</source>
+        <translation>Code aus der Therapie</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Verbinden</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Zurück</translation>
+    </message>
+    <message>
+        <source>Type the clinic&apos;s address and the code, then press Connect.</source>
+        <translation>Geben Sie die Adresse der Klinik und den Code ein und drücken Sie dann „Verbinden“.</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Verbindung wird hergestellt…</translation>
+    </message>
+    <message>
+        <source>Not connected to a clinic: sessions are kept on this computer</source>
+        <translation>Nicht mit einer Klinik verbunden: Die Sitzungen bleiben auf diesem Computer</translation>
+    </message>
+    <message>
+        <source>Sending to the clinic…</source>
+        <translation>Wird an die Klinik gesendet…</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server is not the one connected before: nothing was sent. Sessions are kept; call your therapist.</source>
+        <translation>Der Server der Klinik ist nicht derselbe wie zuvor: Es wurde nichts gesendet. Die Sitzungen bleiben erhalten; rufen Sie Ihre Therapie an.</translation>
+    </message>
+    <message>
+        <source>The clinic no longer accepts this computer: sessions are kept. Call your therapist.</source>
+        <translation>Die Klinik nimmt diesen Computer nicht mehr an: Die Sitzungen bleiben erhalten. Rufen Sie Ihre Therapie an.</translation>
+    </message>
+    <message>
+        <source>Not connected: sessions are kept and sent later</source>
+        <translation>Nicht verbunden: Die Sitzungen werden aufbewahrt und später gesendet</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session(s) waiting to be sent</source>
+        <translation>
+            <numerusform>%n Sitzung wartet auf das Senden</numerusform>
+            <numerusform>%n Sitzungen warten auf das Senden</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Everything is sent</source>
+        <translation>Alles ist gesendet</translation>
+    </message>
+    <message>
+        <source>Sent today %1</source>
+        <translation>Heute gesendet um %1</translation>
+    </message>
+    <message>
+        <source>Last sent %1</source>
+        <translation>Zuletzt gesendet: %1</translation>
+    </message>
+    <message>
+        <source>Connected to the clinic. Your sessions will be sent there.</source>
+        <translation>Mit der Klinik verbunden. Ihre Sitzungen werden dorthin gesendet.</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server cannot be reached: check the address and the internet connection, then try again.</source>
+        <translation>Der Server der Klinik ist nicht erreichbar: Prüfen Sie die Adresse und die Internetverbindung und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The code is wrong, used or expired: ask your therapist for a new one.</source>
+        <translation>Der Code ist falsch, schon benutzt oder abgelaufen: Bitten Sie Ihre Therapie um einen neuen.</translation>
+    </message>
+    <message>
+        <source>This computer cannot keep the connection (%1): call your therapist.</source>
+        <translation>Dieser Computer kann die Verbindung nicht speichern (%1): Rufen Sie Ihre Therapie an.</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server did not accept it (%1): try again, or call your therapist.</source>
+        <translation>Der Server der Klinik hat es nicht angenommen (%1): Versuchen Sie es erneut oder rufen Sie Ihre Therapie an.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::home::HomeController</name>
     <message>
         <source>One moment</source>
@@ -3794,6 +3896,14 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>&amp;Keep exercising</source>
         <translation>&amp;Weiter üben</translation>
     </message>
+    <message>
+        <source>Clinic</source>
+        <translation>Klinik</translation>
+    </message>
+    <message>
+        <source>home computer</source>
+        <translation>Computer zu Hause</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::HomeStartScreen</name>
@@ -3863,6 +3973,14 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Press to change how you use ArmTrack</source>
         <translation>Drücken, um zu ändern, wie Sie ArmTrack bedienen</translation>
+    </message>
+    <message>
+        <source>C&amp;linic</source>
+        <translation>&amp;Klinik</translation>
+    </message>
+    <message>
+        <source>Connect to the clinic with its address and your therapist&apos;s code</source>
+        <translation>Mit der Adresse der Klinik und dem Code aus der Therapie verbinden</translation>
     </message>
 </context>
 <context>
@@ -4022,6 +4140,10 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
     <message>
         <source>Step</source>
         <translation>Schritt</translation>
+    </message>
+    <message>
+        <source>Sending to the clinic</source>
+        <translation>Senden an die Klinik</translation>
     </message>
 </context>
 <context>

@@ -141,6 +141,16 @@
     </message>
 </context>
 <context>
+    <name>armtrack::gui::home::HomeConnectScreen</name>
+    <message numerus="yes">
+        <source>%n session(s) waiting to be sent</source>
+        <translation>
+            <numerusform>%n session waiting to be sent</numerusform>
+            <numerusform>%n sessions waiting to be sent</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::home::HomeStartScreen</name>
     <message numerus="yes">
         <source>%1: %n set(s) of %2 repetitions, %3 s rest</source>

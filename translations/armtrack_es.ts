@@ -3723,6 +3723,108 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     </message>
 </context>
 <context>
+    <name>armtrack::gui::home::HomeConnectScreen</name>
+    <message>
+        <source>Connect to the clinic</source>
+        <translation>Conectar con la clínica</translation>
+    </message>
+    <message>
+        <source>Your therapist gives you the clinic&apos;s address and a code. Once connected, your sessions are sent to your therapist and your exercises come from the clinic. You can always exercise without a connection: sessions are kept and sent later.</source>
+        <translation>Su terapeuta le da la dirección de la clínica y un código. Una vez conectado, sus sesiones se envían a su terapeuta y sus ejercicios llegan de la clínica. Siempre puede hacer ejercicio sin conexión: las sesiones se guardan y se envían más tarde.</translation>
+    </message>
+    <message>
+        <source>Clinic&apos;s &amp;address (for example sync.clinic.example:8443)</source>
+        <translation>&amp;Dirección de la clínica (por ejemplo sync.clinic.example:8443)</translation>
+    </message>
+    <message>
+        <source>&amp;Code from your therapist</source>
+        <translation>Código de su &amp;terapeuta</translation>
+    </message>
+    <message>
+        <source>Clinic&apos;s address</source>
+        <translation>Dirección de la clínica</translation>
+    </message>
+    <message>
+        <source>Code from your therapist</source>
+        <translation>Código de su terapeuta</translation>
+    </message>
+    <message>
+        <source>&amp;Connect</source>
+        <translation>&amp;Conectar</translation>
+    </message>
+    <message>
+        <source>&amp;Back</source>
+        <translation>&amp;Volver</translation>
+    </message>
+    <message>
+        <source>Type the clinic&apos;s address and the code, then press Connect.</source>
+        <translation>Escriba la dirección de la clínica y el código y pulse «Conectar».</translation>
+    </message>
+    <message>
+        <source>Connecting…</source>
+        <translation>Conectando…</translation>
+    </message>
+    <message>
+        <source>Not connected to a clinic: sessions are kept on this computer</source>
+        <translation>Sin conexión con una clínica: las sesiones se guardan en este ordenador</translation>
+    </message>
+    <message>
+        <source>Sending to the clinic…</source>
+        <translation>Enviando a la clínica…</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server is not the one connected before: nothing was sent. Sessions are kept; call your therapist.</source>
+        <translation>El servidor de la clínica no es el de antes: no se envió nada. Las sesiones se guardan; llame a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>The clinic no longer accepts this computer: sessions are kept. Call your therapist.</source>
+        <translation>La clínica ya no acepta este ordenador: las sesiones se guardan. Llame a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>Not connected: sessions are kept and sent later</source>
+        <translation>Sin conexión: las sesiones se guardan y se envían más tarde</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n session(s) waiting to be sent</source>
+        <translation>
+            <numerusform>%n sesión pendiente de envío</numerusform>
+            <numerusform>%n sesiones pendientes de envío</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Everything is sent</source>
+        <translation>Todo está enviado</translation>
+    </message>
+    <message>
+        <source>Sent today %1</source>
+        <translation>Enviado hoy a las %1</translation>
+    </message>
+    <message>
+        <source>Last sent %1</source>
+        <translation>Último envío: %1</translation>
+    </message>
+    <message>
+        <source>Connected to the clinic. Your sessions will be sent there.</source>
+        <translation>Conectado con la clínica. Sus sesiones se enviarán allí.</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server cannot be reached: check the address and the internet connection, then try again.</source>
+        <translation>No se puede contactar con el servidor de la clínica: compruebe la dirección y la conexión a internet y vuelva a intentarlo.</translation>
+    </message>
+    <message>
+        <source>The code is wrong, used or expired: ask your therapist for a new one.</source>
+        <translation>El código es incorrecto, ya se usó o ha caducado: pida uno nuevo a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>This computer cannot keep the connection (%1): call your therapist.</source>
+        <translation>Este ordenador no puede guardar la conexión (%1): llame a su terapeuta.</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s server did not accept it (%1): try again, or call your therapist.</source>
+        <translation>El servidor de la clínica no lo aceptó (%1): vuelva a intentarlo o llame a su terapeuta.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::home::HomeController</name>
     <message>
         <source>One moment</source>
@@ -3794,6 +3896,14 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>&amp;Keep exercising</source>
         <translation>Seguir &amp;ejercitando</translation>
     </message>
+    <message>
+        <source>Clinic</source>
+        <translation>Clínica</translation>
+    </message>
+    <message>
+        <source>home computer</source>
+        <translation>ordenador de casa</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::gui::home::HomeStartScreen</name>
@@ -3863,6 +3973,14 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Press to change how you use ArmTrack</source>
         <translation>Pulse para cambiar cómo usa ArmTrack</translation>
+    </message>
+    <message>
+        <source>C&amp;linic</source>
+        <translation>Clí&amp;nica</translation>
+    </message>
+    <message>
+        <source>Connect to the clinic with its address and your therapist&apos;s code</source>
+        <translation>Conectar con la clínica con su dirección y el código de su terapeuta</translation>
     </message>
 </context>
 <context>
@@ -4022,6 +4140,10 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
     <message>
         <source>Step</source>
         <translation>Paso</translation>
+    </message>
+    <message>
+        <source>Sending to the clinic</source>
+        <translation>Envío a la clínica</translation>
     </message>
 </context>
 <context>

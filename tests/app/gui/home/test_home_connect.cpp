@@ -11,6 +11,7 @@
 #include "app/gui/home/HomeConnectScreen.h"
 #include "app/gui/home/HomeWindow.h"
 #include "app/gui/home/SwitchAccess.h"
+#include "app/i18n/Language.h"
 
 using namespace armtrack::gui::home;
 using armtrack::sync::SyncProblem;
@@ -32,6 +33,9 @@ class TestHomeConnect : public QObject {
   }
 
  private slots:
+  void initTestCase() {
+    armtrack::i18n::setLanguage("en");  // the English plurals ("3 sessions")
+  }
   void init() {
     m_window = new HomeWindow;
     m_screen = new HomeConnectScreen(QString());
