@@ -143,7 +143,8 @@ void HomeController::showConnect() {
   setStep([] { return tr("Clinic"); });
   auto* screen = show(new HomeConnectScreen(m_sync->status().server));
   screen->serverField()->setFocus(Qt::OtherFocusReason);
-  connect(screen, &HomeConnectScreen::backRequested, this, &HomeController::showStart);
+  // Back through the plan: a programme fetched at enrolment shows at once.
+  connect(screen, &HomeConnectScreen::backRequested, this, &HomeController::loadPlan);
   connect(screen, &HomeConnectScreen::connectRequested, m_sync.get(),
           [this](const QString& server, const QString& code) {
             m_sync->enrol(server, code, tr("home computer"));
