@@ -422,8 +422,9 @@ void AppController::showHome() {
   setup.devices = m_demoUrl
                       ? QStringList{QStringLiteral("virtual-arm:sensors=upper+forearm+webcam")}
                       : defaultDevices();
-  // The sync with the clinic keeps its state in the data folder (not in the demo).
-  if (!m_demoUrl)
+  // The sync with the clinic keeps its state in the data folder: on a home install's own SQLite
+  // records, never in the demo or on a clinic's PostgreSQL server.
+  if (!m_demoUrl && m_records->url().engine == storage::DatabaseUrl::Engine::Sqlite)
     setup.syncFolder =
         QStandardPaths::writableLocation(QStandardPaths::AppDataLocation) + "/home-sync";
   setup.configure = [this](const SessionPlan& plan, const QStringList& devices,

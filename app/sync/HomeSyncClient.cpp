@@ -47,12 +47,13 @@ storage::ClinicalStore& HomeSyncClient::store() {
 
 void HomeSyncClient::request(const QByteArray& verb, const QString& path, const QByteArray& body,
                              const QList<QPair<QByteArray, QByteArray>>& headers, bool pinning,
-                             Done done) {
-  QNetworkRequest req(QUrl(m_device.serverUrl + path));
+                             Done done, const QString& base) {
+  QNetworkRequest req(QUrl((pinning ? m_device.serverUrl : base) + path));
   req.setAttribute(QNetworkRequest::Http2AllowedAttribute, false);
   req.setTransferTimeout(m_options.timeoutMs);
   req.setHeader(QNetworkRequest::ContentTypeHeader, "application/json");
-  if (!m_device.token.isEmpty()) req.setRawHeader("Authorization", "Bearer " + m_device.token);
+  if (pinning && !m_device.token.isEmpty())
+    req.setRawHeader("Authorization", "Bearer " + m_device.token);
   for (const auto& [k, v] : headers) req.setRawHeader(k, v);
   QSslConfiguration tls = QSslConfiguration::defaultConfiguration();
   tls.setProtocol(QSsl::TlsV1_2OrLater);
@@ -72,7 +73,8 @@ void HomeSyncClient::request(const QByteArray& verb, const QString& path, const 
     }
   });
   connect(
-      reply, &QNetworkReply::finished, this, [reply, pinning, pinFailed, done = std::move(done)] {
+      reply, &QNetworkReply::finished, this,
+      [this, reply, pinning, pinFailed, done = std::move(done)] {
         Answer a;
         a.status = reply->attribute(QNetworkRequest::HttpStatusCodeAttribute).toInt();
         a.body = reply->readAll();
@@ -92,7 +94,11 @@ void HomeSyncClient::request(const QByteArray& verb, const QString& path, const 
         if (a.status >= 400)
           a.error = QJsonDocument::fromJson(a.body).object().value("error").toString(
               QString::number(a.status));
-        done(a);
+        try {
+          done(a);
+        } catch (const std::exception& e) {  // the state file or the local records failed
+          finish(SyncProblem::LocalError, QString::fromLocal8Bit(e.what()));
+        }
       });
 }
 
@@ -107,48 +113,52 @@ void HomeSyncClient::enrol(const QString& server, const QString& code, const QSt
   } catch (const std::exception& e) {
     return refuse(SyncProblem::LocalError, QString::fromLocal8Bit(e.what()));
   }
-  QUrl url = QUrl::fromUserInput(server.trimmed());
-  if (url.scheme() == "http") url.setScheme("https");  // TLS only
+  // "sync.clinic.example:8443" is read as https://sync.clinic.example:8443; http:// becomes
+  // https:// (TLS only).
+  QString typed = server.trimmed();
+  if (typed.startsWith("http://", Qt::CaseInsensitive)) typed = "https://" + typed.mid(7);
+  if (!typed.contains("://")) typed.prepend("https://");
+  QUrl url(typed, QUrl::StrictMode);
   if (!url.isValid() || url.host().isEmpty() || url.scheme() != "https") {
     return refuse(SyncProblem::Offline, "not a server address: " + server);
   }
   url.setPath({});
-  const DeviceState previous = m_device;
-  m_device = {};
-  m_device.serverUrl = url.toString(QUrl::RemoveUserInfo | QUrl::StripTrailingSlash);
-  const QString serverUrl = m_device.serverUrl;
+  const QString serverUrl = url.toString(QUrl::RemoveUserInfo | QUrl::StripTrailingSlash);
   const QByteArray body = QJsonDocument(QJsonObject{{"code", code.trimmed()}, {"label", label}})
                               .toJson(QJsonDocument::Compact);
-  request("POST", "/api/v1/enrol", body, {}, false, [this, previous, serverUrl](const Answer& a) {
-    const QJsonObject o = QJsonDocument::fromJson(a.body).object();
-    if (a.status != 201 || a.peer.isNull() || o.value("token").toString().isEmpty()) {
-      m_device = previous;  // a failed enrolment keeps what was there
-      emit enrolFinished(
-          false, a.problem == SyncProblem::None ? SyncProblem::ServerError : a.problem, a.error);
-      return;
-    }
-    DeviceState d;
-    d.serverUrl = serverUrl;
-    d.certificate = a.peer.toPem();
-    d.token = o.value("token").toString().toLatin1();
-    d.device = o.value("device").toInteger();
-    d.patient = o.value("patient").toString();
-    try {
-      state().saveDevice(d);
-    } catch (const std::exception& e) {
-      m_device = previous;
-      emit enrolFinished(false, SyncProblem::LocalError, QString::fromLocal8Bit(e.what()));
-      return;
-    }
-    m_device = d;
-    m_pinned = a.peer;
-    m_status.enrolled = true;
-    m_status.server = d.serverUrl;
-    m_status.problem = SyncProblem::None;
-    m_status.lastContact = QDateTime::currentDateTimeUtc();
-    emit enrolFinished(true, SyncProblem::None, QString());
-    emit statusChanged(m_status);
-  });
+  request(
+      "POST", "/api/v1/enrol", body, {}, false,
+      [this, serverUrl](const Answer& a) {
+        const QJsonObject o = QJsonDocument::fromJson(a.body).object();
+        if (a.status != 201 || a.peer.isNull() || o.value("token").toString().isEmpty()) {
+          // A failed enrolment keeps what was there.
+          emit enrolFinished(false,
+                             a.problem == SyncProblem::None ? SyncProblem::ServerError : a.problem,
+                             a.error);
+          return;
+        }
+        DeviceState d;
+        d.serverUrl = serverUrl;
+        d.certificate = a.peer.toPem();
+        d.token = o.value("token").toString().toLatin1();
+        d.device = o.value("device").toInteger();
+        d.patient = o.value("patient").toString();
+        try {
+          state().saveDevice(d);
+        } catch (const std::exception& e) {
+          emit enrolFinished(false, SyncProblem::LocalError, QString::fromLocal8Bit(e.what()));
+          return;
+        }
+        m_device = d;
+        m_pinned = a.peer;
+        m_status.enrolled = true;
+        m_status.server = d.serverUrl;
+        m_status.problem = SyncProblem::None;
+        m_status.lastContact = QDateTime::currentDateTimeUtc();
+        emit enrolFinished(true, SyncProblem::None, QString());
+        emit statusChanged(m_status);
+      },
+      serverUrl);
 }
 
 void HomeSyncClient::finish(SyncProblem problem, const QString& detail) {

@@ -93,8 +93,11 @@ class HomeSyncClient : public QObject {
     QSslCertificate peer;  ///< the certificate the server showed
   };
   using Done = std::function<void(const Answer&)>;
+  /// A request to the enrolled server with the token, the certificate pinned (pinning), or to
+  /// base without either (enrolment).
   void request(const QByteArray& verb, const QString& path, const QByteArray& body,
-               const QList<QPair<QByteArray, QByteArray>>& headers, bool pinning, Done done);
+               const QList<QPair<QByteArray, QByteArray>>& headers, bool pinning, Done done,
+               const QString& base = {});
   storage::ClinicalStore& store();
   SyncState& state();
   void finish(SyncProblem problem, const QString& detail);
@@ -111,7 +114,7 @@ class HomeSyncClient : public QObject {
   storage::DatabaseUrl m_url;
   QString m_folder;
   Options m_options;
-  QNetworkAccessManager m_net;
+  QNetworkAccessManager m_net{this};  // a child: it moves to the client's thread with it
   std::unique_ptr<SyncState> m_state;
   std::unique_ptr<storage::Database> m_db;
   std::unique_ptr<storage::ClinicalStore> m_store;

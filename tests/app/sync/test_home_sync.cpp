@@ -319,4 +319,11 @@ TEST(HomeSync, EnrolmentWithAWrongCodeOrNoServerKeepsTheInstallUnenrolled) {
   EXPECT_FALSE(done.at(2).at(0).toBool());
   EXPECT_FALSE(c->status().enrolled);
   EXPECT_EQ(f.sync(*c).problem, SyncProblem::NotEnrolled);
+  // The address as a patient types it, without https://: enrolled.
+  c->enrol("localhost:" + QString::number(f.port),
+           f.clinic.store->createEnrolmentCode("home1", 600).code, {});
+  ASSERT_TRUE(done.wait(30000));
+  EXPECT_TRUE(done.at(3).at(0).toBool()) << done.at(3).at(2).toString().toStdString();
+  EXPECT_TRUE(c->status().enrolled);
+  EXPECT_EQ(c->status().server, f.url());
 }
