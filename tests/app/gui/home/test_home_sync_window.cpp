@@ -5,8 +5,8 @@
 // clinic; a programme changed by the therapist shows at the next sync; with the server gone, a
 // new session waits ("Not connected: sessions are kept and sent later", "1 session waiting").
 #include <QLineEdit>
-#include <QPushButton>
 #include <QProcess>
+#include <QPushButton>
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
