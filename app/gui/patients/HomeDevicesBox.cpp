@@ -72,7 +72,8 @@ HomeDevicesBox::HomeDevicesBox(RecordsService& records, const AppSettings& setti
   auto* codeLayout = new QVBoxLayout(m_codeArea);
   codeLayout->setContentsMargins(0, 0, 0, 0);
   QFont big = QFontDatabase::systemFont(QFontDatabase::FixedFont);
-  big.setPointSizeF(std::max(12.0, font().pointSizeF()) * 1.8);
+  // Half as large again as the text: still within the side pane's 300 pixels at 1024x600.
+  big.setPointSizeF(font().pointSizeF() * 1.5);
   big.setBold(true);
   m_codeText->setFont(big);
   m_codeText->setAlignment(Qt::AlignCenter);
@@ -289,7 +290,7 @@ void HomeDevicesBox::showCode() {
 
 void HomeDevicesBox::updateButtons() {
   const bool any = !account().isEmpty();
-  m_account->setEnabled(m_accounts.size() > 1);
+  m_account->setEnabled(any);
   m_validity->setEnabled(any);
   m_make->setEnabled(any && !m_busy);
   m_refresh->setEnabled(true);
