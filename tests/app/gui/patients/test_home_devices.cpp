@@ -210,6 +210,31 @@ class TestHomeDevices : public QObject {
     QCOMPARE(box->title(), QStringLiteral("Home devices"));
   }
 
+  void everyControlIsReachedByTab() {
+    auto* page = openPatient(m_patient);
+    QVERIFY(page && page->homeDevices());
+    HomeDevicesBox* box = page->homeDevices();
+    QTRY_COMPARE(box->devices()->rowCount(), 1);
+    box->makeCode();
+    QTRY_VERIFY(!box->shownCode().isEmpty());
+    QVERIFY(gui::test::activate(m_app->window()));
+    auto* account = findControl<QComboBox>(page, QStringLiteral("Home account"));
+    QVERIFY(account && account->isEnabled());
+    account->setFocus();
+    QTRY_COMPARE(QApplication::focusWidget(), account);
+    QList<QWidget*> reached;
+    for (int i = 0; i < 12 && QApplication::focusWidget(); ++i) {
+      reached << QApplication::focusWidget();
+      QTest::keyClick(QApplication::focusWidget(), Qt::Key_Tab);
+    }
+    for (const QString& name :
+         {QStringLiteral("Code valid for"), QStringLiteral("Enrolled devices")})
+      QVERIFY2(reached.contains(findControl<QWidget>(page, name)), qPrintable(name));
+    for (const QString& name : {QStringLiteral("Make enrolment code"), QStringLiteral("Copy code"),
+                                QStringLiteral("Refresh")})
+      QVERIFY2(reached.contains(findControl<QPushButton>(page, name)), qPrintable(name));
+  }
+
   void aPatientWithoutAHomeAccountIsToldHowToGetOne() {
     auto* page = openPatient(QStringLiteral("P002"));
     QVERIFY(page);
