@@ -2866,8 +2866,8 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <translation>Der Plugin-Ordner %1 existiert nicht.</translation>
     </message>
     <message>
-        <source>optional, e.g. https://sync.clinic.example:8443</source>
-        <translation>optional, z. B. https://sync.clinic.example:8443</translation>
+        <source>https://NAME:PORT (optional)</source>
+        <translation>https://NAME:PORT (optional)</translation>
     </message>
     <message>
         <source>The clinic&apos;s sync server as patients type it on their home computer; shown with each enrolment code</source>

@@ -2866,8 +2866,8 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <translation>La carpeta de complementos %1 no existe.</translation>
     </message>
     <message>
-        <source>optional, e.g. https://sync.clinic.example:8443</source>
-        <translation>opcional, p. ej. https://sync.clinic.example:8443</translation>
+        <source>https://NAME:PORT (optional)</source>
+        <translation>https://NOMBRE:PUERTO (opcional)</translation>
     </message>
     <message>
         <source>The clinic&apos;s sync server as patients type it on their home computer; shown with each enrolment code</source>

@@ -87,7 +87,7 @@ SettingsDialog::SettingsDialog(const AppSettings& s, Theme theme, QWidget* paren
   m_database->setToolTip(tr("A file path, sqlite:PATH, or postgresql://user@host:port/dbname"));
   m_database->setAccessibleName(tr("Database"));
   dataForm->addRow(tr("&Database:"), m_database);
-  m_syncServer->setPlaceholderText(tr("optional, e.g. https://sync.clinic.example:8443"));
+  m_syncServer->setPlaceholderText(tr("https://NAME:PORT (optional)"));
   m_syncServer->setToolTip(
       tr("The clinic's sync server as patients type it on their home computer; shown with each "
          "enrolment code"));
