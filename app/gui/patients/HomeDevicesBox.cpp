@@ -82,6 +82,7 @@ HomeDevicesBox::HomeDevicesBox(RecordsService& records, const AppSettings& setti
   m_codeText->setFrameShape(QFrame::StyledPanel);
   codeLayout->addWidget(m_codeText);
   m_codeInfo->setWordWrap(true);
+  m_codeInfo->setTextFormat(Qt::PlainText);  // names an account
   m_codeInfo->setTextInteractionFlags(Qt::TextSelectableByMouse | Qt::TextSelectableByKeyboard);
   codeLayout->addWidget(m_codeInfo);
   codeLayout->addWidget(m_copy);
@@ -105,6 +106,8 @@ HomeDevicesBox::HomeDevicesBox(RecordsService& records, const AppSettings& setti
   buttons->addWidget(m_revoke);
   layout->addLayout(buttons);
   layout->addWidget(m_message);
+  // A device names itself when it enrols: its label is shown as typed, never as markup.
+  for (auto* l : m_message->findChildren<QLabel*>()) l->setTextFormat(Qt::PlainText);
 
   connect(m_account, &QComboBox::currentIndexChanged, this, [this] {
     m_code.clear();  // a code shown belongs to the account it was made for
@@ -313,6 +316,7 @@ void HomeDevicesBox::revokeSelected() {
          "to use it again the patient enrols it with a new code. Sessions it sent stay.")
           .arg(label, account()),
       QMessageBox::Cancel, this);
+  box->setTextFormat(Qt::PlainText);
   box->addButton(tr("Re&voke"), QMessageBox::DestructiveRole);
   box->setDefaultButton(QMessageBox::Cancel);  // Enter alone revokes nothing
   box->setAttribute(Qt::WA_DeleteOnClose);
