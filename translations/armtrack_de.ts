@@ -922,6 +922,45 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     </message>
 </context>
 <context>
+    <name>armtrack::gui::DeviceTableModel</name>
+    <message>
+        <source>Device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>Gerät %1</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>nie</translation>
+    </message>
+    <message>
+        <source>enrolled</source>
+        <translation>angemeldet</translation>
+    </message>
+    <message>
+        <source>revoked %1</source>
+        <translation>gesperrt %1</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Gerät</translation>
+    </message>
+    <message>
+        <source>Enrolled</source>
+        <translation>Angemeldet</translation>
+    </message>
+    <message>
+        <source>Last sync</source>
+        <translation>Letzte Synchronisierung</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Status</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::FirstRunScreen</name>
     <message>
         <source>&amp;Browse...</source>
@@ -1083,6 +1122,125 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>The guide is not yet translated into your language; it is shown in English.</source>
         <translation>Das Handbuch ist noch nicht in Ihre Sprache übersetzt; es wird auf Englisch gezeigt.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::HomeDevicesBox</name>
+    <message>
+        <source>The code is copied.</source>
+        <translation>Der Code ist kopiert.</translation>
+    </message>
+    <message>
+        <source>Home devices</source>
+        <translation>Heimgeräte</translation>
+    </message>
+    <message>
+        <source>Home &amp;account:</source>
+        <translation>Heim&amp;konto:</translation>
+    </message>
+    <message>
+        <source>Home account</source>
+        <translation>Heimkonto</translation>
+    </message>
+    <message>
+        <source>Code va&amp;lid for:</source>
+        <translation>Code gü&amp;ltig für:</translation>
+    </message>
+    <message>
+        <source>Code valid for</source>
+        <translation>Code gültig für</translation>
+    </message>
+    <message>
+        <source>1 hour</source>
+        <translation>1 Stunde</translation>
+    </message>
+    <message>
+        <source>1 day</source>
+        <translation>1 Tag</translation>
+    </message>
+    <message>
+        <source>7 days</source>
+        <translation>7 Tage</translation>
+    </message>
+    <message>
+        <source>30 days</source>
+        <translation>30 Tage</translation>
+    </message>
+    <message>
+        <source>This patient has no home account yet. An administrator adds one (Administration, Accounts); then make an enrolment code here.</source>
+        <translation>Dieser Patient hat noch kein Heimkonto. Ein Administrator legt eines an (Verwaltung, Konten); dann erstellen Sie hier einen Anmeldecode.</translation>
+    </message>
+    <message>
+        <source>Make enrolment &amp;code</source>
+        <translation>Anmelde&amp;code erstellen</translation>
+    </message>
+    <message>
+        <source>A one-time code the patient types on their home computer to connect it to the clinic</source>
+        <translation>Ein einmaliger Code, den der Patient auf seinem Computer zu Hause eingibt, um ihn mit der Praxis zu verbinden</translation>
+    </message>
+    <message>
+        <source>Enrolment code</source>
+        <translation>Anmeldecode</translation>
+    </message>
+    <message>
+        <source>Cop&amp;y code</source>
+        <translation>Code kop&amp;ieren</translation>
+    </message>
+    <message>
+        <source>Enrolled &amp;devices:</source>
+        <translation>Angemeldete &amp;Geräte:</translation>
+    </message>
+    <message>
+        <source>Enrolled devices</source>
+        <translation>Angemeldete Geräte</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>A&amp;ktualisieren</translation>
+    </message>
+    <message>
+        <source>Read the devices again (a patient may have enrolled meanwhile)</source>
+        <translation>Die Geräte neu lesen (ein Patient kann sich inzwischen angemeldet haben)</translation>
+    </message>
+    <message>
+        <source>Re&amp;voke device...</source>
+        <translation>Gerät &amp;sperren ...</translation>
+    </message>
+    <message>
+        <source>Only therapists and administrators may make enrolment codes and see or revoke home devices. Ask one of them.</source>
+        <translation>Nur Therapeuten und Administratoren dürfen Anmeldecodes erstellen und Heimgeräte sehen oder sperren. Fragen Sie eine dieser Personen.</translation>
+    </message>
+    <message>
+        <source>%1 (disabled)</source>
+        <translation>%1 (deaktiviert)</translation>
+    </message>
+    <message>
+        <source>Making the code...</source>
+        <translation>Code wird erstellt ...</translation>
+    </message>
+    <message>
+        <source>For %1, once, until %2. The patient types it when their home computer asks to connect to the clinic.</source>
+        <translation>Für %1, einmalig, bis %2. Der Patient gibt ihn ein, wenn sein Computer zu Hause nach der Verbindung mit der Praxis fragt.</translation>
+    </message>
+    <message>
+        <source>For %1, once, until %2. The patient types it, with the server address %3, when their home computer asks to connect to the clinic.</source>
+        <translation>Für %1, einmalig, bis %2. Der Patient gibt ihn mit der Serveradresse %3 ein, wenn sein Computer zu Hause nach der Verbindung mit der Praxis fragt.</translation>
+    </message>
+    <message>
+        <source>Revoke device</source>
+        <translation>Gerät sperren</translation>
+    </message>
+    <message>
+        <source>Revoke the device &quot;%1&quot; of %2? It can no longer send sessions or fetch the programme; to use it again the patient enrols it with a new code. Sessions it sent stay.</source>
+        <translation>Das Gerät „%1“ von %2 sperren? Es kann dann keine Sitzungen mehr senden und das Programm nicht mehr abrufen; um es wieder zu nutzen, meldet der Patient es mit einem neuen Code an. Bereits gesendete Sitzungen bleiben.</translation>
+    </message>
+    <message>
+        <source>Re&amp;voke</source>
+        <translation>&amp;Sperren</translation>
+    </message>
+    <message>
+        <source>The device &quot;%1&quot; is revoked.</source>
+        <translation>Das Gerät „%1“ ist gesperrt.</translation>
     </message>
 </context>
 <context>
@@ -2706,6 +2864,26 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
     <message>
         <source>The plugin folder %1 does not exist.</source>
         <translation>Der Plugin-Ordner %1 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>https://NAME:PORT (optional)</source>
+        <translation>https://NAME:PORT (optional)</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s sync server as patients type it on their home computer; shown with each enrolment code</source>
+        <translation>Der Synchronisierungsserver der Praxis, wie Patienten ihn auf ihrem Computer zu Hause eingeben; wird mit jedem Anmeldecode angezeigt</translation>
+    </message>
+    <message>
+        <source>Sync server address</source>
+        <translation>Adresse des Synchronisierungsservers</translation>
+    </message>
+    <message>
+        <source>S&amp;ync server address:</source>
+        <translation>S&amp;ynchronisierungsserver:</translation>
+    </message>
+    <message>
+        <source>Give the sync server address as https://NAME:PORT, e.g. https://sync.clinic.example:8443, or leave it empty.</source>
+        <translation>Geben Sie die Adresse des Synchronisierungsservers als https://NAME:PORT an, z. B. https://sync.clinic.example:8443, oder lassen Sie das Feld leer.</translation>
     </message>
 </context>
 <context>

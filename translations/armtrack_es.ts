@@ -922,6 +922,45 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     </message>
 </context>
 <context>
+    <name>armtrack::gui::DeviceTableModel</name>
+    <message>
+        <source>Device %1</source>
+        <translation>Dispositivo %1</translation>
+    </message>
+    <message>
+        <source>device %1</source>
+        <translation>dispositivo %1</translation>
+    </message>
+    <message>
+        <source>never</source>
+        <translation>nunca</translation>
+    </message>
+    <message>
+        <source>enrolled</source>
+        <translation>registrado</translation>
+    </message>
+    <message>
+        <source>revoked %1</source>
+        <translation>revocado %1</translation>
+    </message>
+    <message>
+        <source>Device</source>
+        <translation>Dispositivo</translation>
+    </message>
+    <message>
+        <source>Enrolled</source>
+        <translation>Registrado</translation>
+    </message>
+    <message>
+        <source>Last sync</source>
+        <translation>Última sincronización</translation>
+    </message>
+    <message>
+        <source>Status</source>
+        <translation>Estado</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::gui::FirstRunScreen</name>
     <message>
         <source>&amp;Browse...</source>
@@ -1083,6 +1122,125 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>The guide is not yet translated into your language; it is shown in English.</source>
         <translation>La guía aún no está traducida a su idioma; se muestra en inglés.</translation>
+    </message>
+</context>
+<context>
+    <name>armtrack::gui::HomeDevicesBox</name>
+    <message>
+        <source>The code is copied.</source>
+        <translation>El código está copiado.</translation>
+    </message>
+    <message>
+        <source>Home devices</source>
+        <translation>Dispositivos domésticos</translation>
+    </message>
+    <message>
+        <source>Home &amp;account:</source>
+        <translation>&amp;Cuenta doméstica:</translation>
+    </message>
+    <message>
+        <source>Home account</source>
+        <translation>Cuenta doméstica</translation>
+    </message>
+    <message>
+        <source>Code va&amp;lid for:</source>
+        <translation>Código vá&amp;lido durante:</translation>
+    </message>
+    <message>
+        <source>Code valid for</source>
+        <translation>Código válido durante</translation>
+    </message>
+    <message>
+        <source>1 hour</source>
+        <translation>1 hora</translation>
+    </message>
+    <message>
+        <source>1 day</source>
+        <translation>1 día</translation>
+    </message>
+    <message>
+        <source>7 days</source>
+        <translation>7 días</translation>
+    </message>
+    <message>
+        <source>30 days</source>
+        <translation>30 días</translation>
+    </message>
+    <message>
+        <source>This patient has no home account yet. An administrator adds one (Administration, Accounts); then make an enrolment code here.</source>
+        <translation>Este paciente aún no tiene cuenta doméstica. Un administrador la crea (Administración, Cuentas); después genere aquí un código de registro.</translation>
+    </message>
+    <message>
+        <source>Make enrolment &amp;code</source>
+        <translation>Generar &amp;código de registro</translation>
+    </message>
+    <message>
+        <source>A one-time code the patient types on their home computer to connect it to the clinic</source>
+        <translation>Un código de un solo uso que el paciente escribe en su ordenador de casa para conectarlo con la clínica</translation>
+    </message>
+    <message>
+        <source>Enrolment code</source>
+        <translation>Código de registro</translation>
+    </message>
+    <message>
+        <source>Cop&amp;y code</source>
+        <translation>Cop&amp;iar código</translation>
+    </message>
+    <message>
+        <source>Enrolled &amp;devices:</source>
+        <translation>&amp;Dispositivos registrados:</translation>
+    </message>
+    <message>
+        <source>Enrolled devices</source>
+        <translation>Dispositivos registrados</translation>
+    </message>
+    <message>
+        <source>Re&amp;fresh</source>
+        <translation>Act&amp;ualizar</translation>
+    </message>
+    <message>
+        <source>Read the devices again (a patient may have enrolled meanwhile)</source>
+        <translation>Volver a leer los dispositivos (un paciente puede haberse registrado entretanto)</translation>
+    </message>
+    <message>
+        <source>Re&amp;voke device...</source>
+        <translation>Re&amp;vocar dispositivo...</translation>
+    </message>
+    <message>
+        <source>Only therapists and administrators may make enrolment codes and see or revoke home devices. Ask one of them.</source>
+        <translation>Solo terapeutas y administradores pueden generar códigos de registro y ver o revocar dispositivos domésticos. Pida ayuda a uno de ellos.</translation>
+    </message>
+    <message>
+        <source>%1 (disabled)</source>
+        <translation>%1 (desactivada)</translation>
+    </message>
+    <message>
+        <source>Making the code...</source>
+        <translation>Generando el código...</translation>
+    </message>
+    <message>
+        <source>For %1, once, until %2. The patient types it when their home computer asks to connect to the clinic.</source>
+        <translation>Para %1, una sola vez, hasta %2. El paciente lo escribe cuando su ordenador de casa pide conectarse con la clínica.</translation>
+    </message>
+    <message>
+        <source>For %1, once, until %2. The patient types it, with the server address %3, when their home computer asks to connect to the clinic.</source>
+        <translation>Para %1, una sola vez, hasta %2. El paciente lo escribe, con la dirección del servidor %3, cuando su ordenador de casa pide conectarse con la clínica.</translation>
+    </message>
+    <message>
+        <source>Revoke device</source>
+        <translation>Revocar dispositivo</translation>
+    </message>
+    <message>
+        <source>Revoke the device &quot;%1&quot; of %2? It can no longer send sessions or fetch the programme; to use it again the patient enrols it with a new code. Sessions it sent stay.</source>
+        <translation>¿Revocar el dispositivo «%1» de %2? Ya no podrá enviar sesiones ni recibir el programa; para volver a usarlo, el paciente lo registra con un código nuevo. Las sesiones ya enviadas se conservan.</translation>
+    </message>
+    <message>
+        <source>Re&amp;voke</source>
+        <translation>Re&amp;vocar</translation>
+    </message>
+    <message>
+        <source>The device &quot;%1&quot; is revoked.</source>
+        <translation>El dispositivo «%1» está revocado.</translation>
     </message>
 </context>
 <context>
@@ -2706,6 +2864,26 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
     <message>
         <source>The plugin folder %1 does not exist.</source>
         <translation>La carpeta de complementos %1 no existe.</translation>
+    </message>
+    <message>
+        <source>https://NAME:PORT (optional)</source>
+        <translation>https://NOMBRE:PUERTO (opcional)</translation>
+    </message>
+    <message>
+        <source>The clinic&apos;s sync server as patients type it on their home computer; shown with each enrolment code</source>
+        <translation>El servidor de sincronización de la clínica tal como los pacientes lo escriben en su ordenador de casa; se muestra con cada código de registro</translation>
+    </message>
+    <message>
+        <source>Sync server address</source>
+        <translation>Dirección del servidor de sincronización</translation>
+    </message>
+    <message>
+        <source>S&amp;ync server address:</source>
+        <translation>Servidor de sincroni&amp;zación:</translation>
+    </message>
+    <message>
+        <source>Give the sync server address as https://NAME:PORT, e.g. https://sync.clinic.example:8443, or leave it empty.</source>
+        <translation>Indique la dirección del servidor de sincronización como https://NOMBRE:PUERTO, p. ej. https://sync.clinic.example:8443, o déjela vacía.</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QPushButton>
+#include <QUrl>
 #include <QVBoxLayout>
 
 #include "app/gui/common/Forms.h"
@@ -34,6 +35,7 @@ SettingsDialog::SettingsDialog(const AppSettings& s, Theme theme, QWidget* paren
       m_units(new QComboBox(this)),
       m_dataFolder(new QLineEdit(s.dataFolder, this)),
       m_database(new QLineEdit(s.databaseUrl, this)),
+      m_syncServer(new QLineEdit(s.syncServerAddress, this)),
       m_plugins(new QListWidget(this)),
       m_addPlugin(new QPushButton(tr("&Add folder..."), this)),
       m_removePlugin(new QPushButton(tr("&Remove"), this)),
@@ -85,6 +87,12 @@ SettingsDialog::SettingsDialog(const AppSettings& s, Theme theme, QWidget* paren
   m_database->setToolTip(tr("A file path, sqlite:PATH, or postgresql://user@host:port/dbname"));
   m_database->setAccessibleName(tr("Database"));
   dataForm->addRow(tr("&Database:"), m_database);
+  m_syncServer->setPlaceholderText(tr("https://NAME:PORT (optional)"));
+  m_syncServer->setToolTip(
+      tr("The clinic's sync server as patients type it on their home computer; shown with each "
+         "enrolment code"));
+  m_syncServer->setAccessibleName(tr("Sync server address"));
+  dataForm->addRow(tr("S&ync server address:"), m_syncServer);
   layout->addWidget(data);
 
   auto* devices =
@@ -142,6 +150,7 @@ AppSettings SettingsDialog::settings() const {
                 : AppSettings::AngleUnit::Degrees;
   s.dataFolder = m_dataFolder->text().trimmed();
   s.databaseUrl = m_database->text().trimmed();
+  s.syncServerAddress = m_syncServer->text().trimmed();
   s.pluginFolders.clear();
   for (int i = 0; i < m_plugins->count(); ++i) s.pluginFolders << m_plugins->item(i)->text();
   s.filter = m_filter->currentData().toString();
@@ -169,6 +178,16 @@ void SettingsDialog::submit() {
                                .arg(QString::fromStdString(e.what())));
     m_database->setFocus();
     return;
+  }
+  if (!s.syncServerAddress.isEmpty()) {
+    const QUrl url(s.syncServerAddress, QUrl::StrictMode);
+    if (!url.isValid() || url.scheme() != QLatin1String("https") || url.host().isEmpty()) {
+      m_message->showMessage(
+          tr("Give the sync server address as https://NAME:PORT, e.g. "
+             "https://sync.clinic.example:8443, or leave it empty."));
+      m_syncServer->setFocus();
+      return;
+    }
   }
   for (const QString& f : s.pluginFolders)
     if (!QDir(f).exists()) {

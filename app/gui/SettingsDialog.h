@@ -32,6 +32,7 @@ class SettingsDialog : public QDialog {
   QComboBox* m_units;
   QLineEdit* m_dataFolder;
   QLineEdit* m_database;
+  QLineEdit* m_syncServer;
   QListWidget* m_plugins;
   QPushButton* m_addPlugin;
   QPushButton* m_removePlugin;

@@ -102,6 +102,9 @@ class ClinicalStore {
   const User& signInWithDeviceToken(const QString& token);
   /// The device signed in with (enrolDevice, signInWithDeviceToken); 0 otherwise.
   qint64 deviceId() const { return m_deviceId; }
+  /// The home accounts of the patient with this code, by name, disabled ones too
+  /// (administrators and therapists: whom to make an enrolment code for).
+  std::vector<User> listHomeAccounts(const QString& patientCode);
   /// The devices of a home account, revoked ones too (administrators and therapists).
   std::vector<DeviceInfo> listDevices(const QString& homeAccount);
   /// Revokes a device's token for good (administrators and therapists). Audited.

@@ -127,6 +127,25 @@ const User& ClinicalStore::signInWithDeviceToken(const QString& token) {
   return *m_user;
 }
 
+std::vector<User> ClinicalStore::listHomeAccounts(const QString& patientCode) {
+  require(isStaff(), "list home accounts");
+  QSqlQuery q = m_db.exec(
+      "SELECT u.id, u.name, u.patient_id, u.disabled FROM users u JOIN patients p ON p.id = "
+      "u.patient_id WHERE p.code_key = ? AND u.role = 'home' ORDER BY u.name_key",
+      {nameKey(patientCode)});
+  std::vector<User> out;
+  while (q.next()) {
+    User u;
+    u.id = q.value(0).toLongLong();
+    u.name = q.value(1).toString();
+    u.role = Role::Home;
+    u.patientId = q.value(2).toLongLong();
+    u.disabled = q.value(3).toInt() != 0;
+    out.push_back(u);
+  }
+  return out;
+}
+
 std::vector<DeviceInfo> ClinicalStore::listDevices(const QString& homeAccount) {
   require(isStaff(), "list devices");
   QSqlQuery q = m_db.exec(

@@ -22,6 +22,7 @@
 #include "app/gui/common/Forms.h"
 #include "app/gui/common/JobProgress.h"
 #include "app/gui/common/SessionTableModel.h"
+#include "app/gui/patients/HomeDevicesBox.h"
 #include "app/gui/patients/PatientDialog.h"
 #include "app/gui/patients/PatientTableModel.h"
 #include "app/gui/patients/ProgressChart.h"
@@ -142,6 +143,10 @@ PatientScreen::PatientScreen(RecordsService& records, const AppSettings& setting
   programmeLayout->addWidget(m_programmeTable);
   sideLayout->addWidget(m_programmeBox);
   sideLayout->addWidget(m_edit);
+  if (m_canWrite) {  // the store lets administrators and therapists enrol devices
+    m_homeDevices = new HomeDevicesBox(records, settings, code, side);
+    sideLayout->addWidget(m_homeDevices);
+  }
   sideLayout->addStretch();
   auto* scroll = new QScrollArea;
   scroll->setWidget(side);
@@ -264,6 +269,7 @@ void PatientScreen::changeEvent(QEvent* event) {
 }
 
 void PatientScreen::reload() {
+  if (m_homeDevices) m_homeDevices->reload();
   m_message->showMessage([] { return tr("Loading..."); }, MessageLine::Kind::Notice);
   m_records.call(
       this, [code = m_code](storage::ClinicalStore& s) { return loadPatientOverview(s, code); },

@@ -16,6 +16,7 @@ class QTableView;
 
 namespace armtrack::gui {
 
+class HomeDevicesBox;
 class MessageLine;
 class ProgressChart;
 class RecordsService;
@@ -33,6 +34,8 @@ class PatientScreen : public QWidget {
   /// The loaded record (valid after loaded()).
   const PatientOverview& overview() const { return m_overview; }
   ProgressChart* progressChart() const { return m_chart; }
+  /// The patient's home devices (administrators and therapists), or nullptr.
+  HomeDevicesBox* homeDevices() const { return m_homeDevices; }
   /// The selected session's id, or 0.
   qint64 selectedSession() const;
   /// Writes the progress report of every session to pdf (a job with progress).
@@ -81,6 +84,7 @@ class PatientScreen : public QWidget {
   QGroupBox* m_progressBox;
   QGroupBox* m_sessionsBox;
   QTableView* m_programmeTable;
+  HomeDevicesBox* m_homeDevices = nullptr;
   QStandardItemModel* m_programme;
   ProgressChart* m_chart;
   SessionTableModel* m_sessions;

@@ -14,6 +14,7 @@ constexpr auto kUnits = "display/units";
 constexpr auto kFilter = "analysis/filter";
 constexpr auto kMethod = "analysis/method";
 constexpr auto kLanguage = "display/language";
+constexpr auto kSyncServer = "sync/serverAddress";
 }  // namespace
 
 void setApplicationIdentity() {
@@ -34,6 +35,7 @@ AppSettings AppSettings::load(QSettings& s) {
   if (method == QLatin1String("A") || method == QLatin1String("B") || method == QLatin1String("C"))
     a.method = method;
   a.language = s.value(kLanguage).toString();
+  a.syncServerAddress = s.value(kSyncServer).toString().trimmed();
   return a;
 }
 
@@ -45,6 +47,7 @@ void AppSettings::save(QSettings& s) const {
   s.setValue(kFilter, filter);
   s.setValue(kMethod, method);
   s.setValue(kLanguage, language);
+  s.setValue(kSyncServer, syncServerAddress);
   s.sync();
 }
 

@@ -27,6 +27,9 @@ struct AppSettings {
   QString filter = QStringLiteral("ekf");  ///< "ekf" or "ukf"
   QString method = QStringLiteral("A");    ///< "A", "B" or "C" (docs/estimator.md)
   QString language;                        ///< e.g. "de"; empty: the system's
+  /// The clinic's armtrack-server as a patient types it on a home install (shown beside an
+  /// enrolment code); empty: not told.
+  QString syncServerAddress;
 
   static AppSettings load(QSettings& settings);
   void save(QSettings& settings) const;

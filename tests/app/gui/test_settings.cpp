@@ -13,6 +13,7 @@
 #include "app/gui/MainWindow.h"
 #include "app/gui/SettingsDialog.h"
 #include "app/gui/common/Forms.h"
+#include "app/gui/patients/HomeDevicesBox.h"
 #include "app/gui/patients/PatientScreen.h"
 #include "app/gui/patients/ProgressChart.h"
 #include "app/gui/services/DemoData.h"
@@ -61,6 +62,18 @@ class TestSettings : public QObject {
     QVERIFY2(d->findChild<MessageLine*>()->text().contains(QStringLiteral("not one ArmTrack")),
              qPrintable(d->findChild<MessageLine*>()->text()));
     typeInto(findControl<QLineEdit>(d, QStringLiteral("Database")), QString());
+    // The sync server address: optional, but when given an https address with a host.
+    auto* server = findControl<QLineEdit>(d, QStringLiteral("Sync server address"));
+    QVERIFY(server);
+    for (const QString& bad : {QStringLiteral("http://sync.clinic.example:8443"),
+                               QStringLiteral("sync clinic"), QStringLiteral("https://")}) {
+      typeInto(server, bad);
+      QTest::mouseClick(ok, Qt::LeftButton);
+      QVERIFY2(d->isVisible(), qPrintable(bad));
+      QVERIFY2(d->findChild<MessageLine*>()->text().contains(QStringLiteral("https://NAME:PORT")),
+               qPrintable(d->findChild<MessageLine*>()->text()));
+    }
+    typeInto(server, QStringLiteral(" https://sync.clinic.example:8443 "));
     test::saveScreenshot(d, QStringLiteral("settings"));
     QSignalSpy applied(&app, &AppController::settingsApplied);
     QTest::mouseClick(ok, Qt::LeftButton);
@@ -72,6 +85,8 @@ class TestSettings : public QObject {
     QCOMPARE(s.value("analysis/method").toString(), QStringLiteral("C"));
     QCOMPARE(s.value("display/theme").toString(), QStringLiteral("dark"));
     QCOMPARE(s.value("data/folder").toString(), m_dir.path());
+    QCOMPARE(s.value("sync/serverAddress").toString(),
+             QStringLiteral("https://sync.clinic.example:8443"));
     QCOMPARE(app.settings().filter, QStringLiteral("ukf"));
     QVERIFY(QApplication::palette().color(QPalette::Window).lightness() < 100);
 
@@ -85,6 +100,16 @@ class TestSettings : public QObject {
     const double rad = t->item(5, 1)->text().toDouble();  // week 5: 125 deg simulated
     QVERIFY2(std::abs(rad - 125.0 * M_PI / 180) < 0.01, qPrintable(t->item(5, 1)->text()));
     test::saveScreenshot(app.window(), QStringLiteral("patient-dark"));
+    // An enrolment code made there names the server the patient types.
+    QVERIFY(page->homeDevices());
+    QTRY_VERIFY(!page->homeDevices()->account().isEmpty());
+    page->homeDevices()->makeCode();
+    QTRY_VERIFY(!page->homeDevices()->shownCode().isEmpty());
+    bool named = false;
+    for (auto* l : page->homeDevices()->findChildren<QLabel*>())
+      named |=
+          l->isVisible() && l->text().contains(QStringLiteral("https://sync.clinic.example:8443"));
+    QVERIFY(named);
     applyTheme(Theme::Light);
   }
 };

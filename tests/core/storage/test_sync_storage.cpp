@@ -126,6 +126,28 @@ TEST_P(SyncStorage, CodesAreMadeByStaffForHomeAccountsOnly) {
   expectError([&] { device.enrolDevice(code.code, {}); }, Kind::Authentication);
 }
 
+TEST_P(SyncStorage, APatientsHomeAccountsAreListedForStaffOnly) {
+  HomeFixture f(GetParam());
+  f.store->addUser("Home1b", Role::Home, kHomePassword, "P1");
+  f.store->addUser("carer", Role::Therapist, kHomePassword);
+  f.store->setUserDisabled("home1", true);
+  ClinicalStore therapist(*f.db);
+  therapist.signIn("carer", kHomePassword);
+  const std::vector<User> p1 = therapist.listHomeAccounts("p1");  // codes found in any case
+  ASSERT_EQ(p1.size(), 2u);
+  EXPECT_EQ(p1[0].name, "home1");
+  EXPECT_TRUE(p1[0].disabled);
+  EXPECT_EQ(p1[1].name, "Home1b");
+  EXPECT_FALSE(p1[1].disabled);
+  EXPECT_EQ(p1[1].role, Role::Home);
+  ASSERT_EQ(f.store->listHomeAccounts("P2").size(), 1u);
+  EXPECT_EQ(f.store->listHomeAccounts("P2")[0].name, "home2");
+  EXPECT_TRUE(f.store->listHomeAccounts("P9").empty());
+  ClinicalStore home(*f.db);
+  home.signIn("home2", kHomePassword);
+  expectError([&] { home.listHomeAccounts("P2"); }, Kind::AccessDenied);
+}
+
 TEST_P(SyncStorage, ARevokedTokenNoLongerSignsIn) {
   HomeFixture f(GetParam());
   ClinicalStore device(*f.db);
