@@ -139,10 +139,12 @@ SyncApi::SyncApi(storage::Database& db, Options options)
       m_refusedTokens(options.refusedTokensPerMinute / 60.0, options.refusedTokensPerMinute) {
   m_workers.setMaxThreadCount(options.workers > 0 ? options.workers
                                                   : std::max(2, QThread::idealThreadCount()));
+  m_writers.setMaxThreadCount(std::max(1, options.writers));
 }
 
 SyncApi::~SyncApi() {
   m_workers.waitForDone();
+  m_writers.waitForDone();
 }
 
 HttpResponse SyncApi::guarded(const std::function<HttpResponse()>& f) {
@@ -190,7 +192,10 @@ void SyncApi::handle(const HttpRequest& request, const HttpsServer::Responder& d
   head.body.clear();
   const storage::DatabaseUrl url = m_db.url();
   QObject* home = m_home.get();
-  m_workers.start([this, later, head, device, url, home, answer] {
+  // Completions (long: an analysis) and chunk writes (short) have pools of their own, so chunks
+  // are not queued behind analyses.
+  QThreadPool& pool = request.path.endsWith("/complete") ? m_workers : m_writers;
+  pool.start([this, later, head, device, url, home, answer] {
     HttpResponse response = guarded([&] { return later(workerDatabase(url, false)); });
     if (response.status == 503) {  // the connection may have died since: once more, afresh
       response = guarded([&] { return later(workerDatabase(url, true)); });
@@ -277,8 +282,16 @@ HttpResponse SyncApi::route(const HttpRequest& r, qint64& device, Job* later) {
   }
   if (s->tail == "chunks") {
     if (r.method != "PUT") return error(405, "use PUT");
-    uploads.putChunk(s->uuid, s->chunk, r.body, QString::fromLatin1(r.header("x-chunk-sha256")));
-    return json(200, {{"uuid", s->uuid.toLower()}, {"chunk", s->chunk}});
+    // Written on a writer thread with its own connection: a durable write of up to 8 MiB would
+    // hold the event loop, and with it every other device's TLS handshake and request.
+    *later = [uuid = s->uuid, chunk = s->chunk, body = r.body, token,
+              sha = QString::fromLatin1(r.header("x-chunk-sha256"))](storage::Database& db) {
+      storage::ClinicalStore store(db);
+      store.signInWithDeviceToken(QString::fromLatin1(token));
+      storage::SyncUploads(store).putChunk(uuid, chunk, body, sha);
+      return json(200, {{"uuid", uuid.toLower()}, {"chunk", chunk}});
+    };
+    return {};
   }
   if (r.method != "POST") return error(405, "use POST");
   // The join, the import and the analysis: on a worker with its own connection, signed in

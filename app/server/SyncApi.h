@@ -45,6 +45,8 @@ class SyncApi {
     double refusedTokensPerMinute = 10;
     /// Completions (join, import, analysis) run at once on workers; 0: one per processor.
     int workers = 0;
+    /// Chunks written at once, each writer with its own connection.
+    int writers = 4;
   };
   /// db: the clinic's records, opened on this thread. The workers open their own connections
   /// to db.url() (a Qt Sql connection belongs to the thread that opened it).
@@ -53,8 +55,8 @@ class SyncApi {
   /// Answers at once, completions too (on this thread, holding it meanwhile).
   HttpResponse handle(const HttpRequest& request);
   /// Answers through done, on this thread: a completion (`POST .../complete`: the join, the
-  /// import and the analysis) later, from a worker, so other requests are answered meanwhile;
-  /// everything else at once. armtrack-server's way.
+  /// import and the analysis) and a chunk (its durable write) later, from a worker, so other
+  /// requests are answered meanwhile; everything else at once. armtrack-server's way.
   void handle(const HttpRequest& request, const HttpsServer::Responder& done);
   /// Called with one line per request (method, route, status, device id): never a patient's
   /// name or code, never a token. Called on this thread only.
@@ -73,7 +75,8 @@ class SyncApi {
 
   storage::Database& m_db;
   std::unique_ptr<QObject> m_home;  ///< on this thread: the workers' answers come back through it
-  QThreadPool m_workers;            ///< destroyed first: waits for them
+  QThreadPool m_workers;            ///< completions; destroyed before m_home: waits for them
+  QThreadPool m_writers;            ///< chunk writes
   RateLimiter m_perToken;
   RateLimiter m_perAddress;
   RateLimiter m_refusedTokens;
