@@ -140,6 +140,7 @@ step "armtrack-cli report --lang: ${languages[*]}"
 # package's /etc/armtrack/server.conf; the records (a SQLite file) and the port are given on the
 # command line, which wins over the file. It runs as an ordinary user, as the unit's own user
 # would; curl on the host (the root shares its network) checks the health answer over HTTPS.
+t0=$SECONDS
 unit="$root/lib/systemd/system/armtrack-server.service"
 exec_start="$(sed -n 's/^ExecStart=//p' "$unit")"
 [ -n "$exec_start" ] || fail "armtrack-server.service has no ExecStart"
@@ -169,7 +170,8 @@ wait "$server_pid" 2>/dev/null || true
 rm -rf "${root:?}$cred" "$root"/tmp/server-records.db*
 [ "${health##* }" = 200 ] && grep -q '"status":"ok"' <<<"$health" ||
   fail "GET /api/v1/health of the installed armtrack-server: '$health'; its log: $(cat "$work/server.out" "$work/server.log")"
-step "armtrack-server (the unit's command, port $port): $(head -n 1 "$work/server.out"); health: $health"
+step "armtrack-server (the unit's command, port $port): $(head -n 1 "$work/server.out"); health:" \
+  "$health ($((SECONDS - t0)) s)"
 
 # 4. The application, as an ordinary user, on a virtual display of the host's: the X server's
 # abstract socket is reachable from the chroot, which shares the host's network namespace.
