@@ -20,6 +20,8 @@ packages=(
   clang libclang-rt-14-dev
   # the package (docs/packaging.md): icons, manual pages, validators, the clean-root install test
   librsvg2-bin groff-base desktop-file-utils appstream python3-debian lintian mmdebstrap eatmydata
+  # armtrack-server's unit checked (systemd-analyze) and its health asked over HTTPS (curl)
+  systemd curl
 )
 
 missing=()

@@ -4,6 +4,7 @@
 #include <QSslSocket>
 #include <QTimer>
 #include <QUrl>
+#include <memory>
 
 namespace armtrack::server {
 
@@ -11,6 +12,7 @@ namespace armtrack::server {
 struct HttpsServer::Connection : QObject {
   QByteArray buffer;
   bool inBody = false;
+  bool waiting = false;  ///< a request is being answered (by an AsyncHandler, later)
   qint64 bodyLength = 0;
   HttpRequest request;
   QTimer idle;
@@ -18,6 +20,15 @@ struct HttpsServer::Connection : QObject {
 };
 
 HttpsServer::HttpsServer(const QSslConfiguration& tls, Limits limits, Handler handler,
+                         QObject* parent)
+    : HttpsServer(
+          tls, limits,
+          [handler = std::move(handler)](const HttpRequest& r, Responder done) {
+            done(handler(r));
+          },
+          parent) {}
+
+HttpsServer::HttpsServer(const QSslConfiguration& tls, Limits limits, AsyncHandler handler,
                          QObject* parent)
     : QObject(parent),
       m_server(new QSslServer(this)),
@@ -106,6 +117,7 @@ void HttpsServer::readFrom(QSslSocket* socket) {
   if (!c || socket->state() != QAbstractSocket::ConnectedState) return;
   c->idle.start(m_limits.idleTimeoutMs);
   c->buffer += socket->readAll();
+  if (c->waiting) return;  // read on once the request before is answered
   const auto fail = [&](int status, const QByteArray& why) {
     respond(socket, {status, "{\"error\":\"" + why + "\"}", "application/json", {}}, true);
   };
@@ -148,8 +160,33 @@ void HttpsServer::readFrom(QSslSocket* socket) {
     c->buffer.remove(0, c->bodyLength);
     c->inBody = false;
     const bool close = c->request.header("connection").toLower() == "close";
-    respond(socket, m_handler(c->request), close);
+    c->waiting = true;
+    c->idle.stop();  // a long answer (an analysis) is no idle client
+    // 0: the handler is running, 1: it answered before returning, 2: it will answer later.
+    const auto when = std::make_shared<int>(0);
+    const QPointer<QSslSocket> alive(socket);
+    m_handler(c->request, [this, alive, c, close, when](const HttpResponse& response) {
+      if (!alive || alive->state() != QAbstractSocket::ConnectedState) return;
+      c->waiting = false;
+      c->idle.start(m_limits.idleTimeoutMs);
+      respond(alive, response, close);
+      if (*when == 0) {
+        *when = 1;  // answered at once: the loop reads on
+        return;
+      }
+      // Answered later: requests that came meanwhile wait in the buffer.
+      QMetaObject::invokeMethod(
+          this,
+          [this, alive] {
+            if (alive) readFrom(alive);
+          },
+          Qt::QueuedConnection);
+    });
     c->request.body.clear();
+    if (*when == 0) {
+      *when = 2;
+      return;
+    }
   }
 }
 

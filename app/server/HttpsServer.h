@@ -8,6 +8,7 @@
 #include <QHash>
 #include <QHostAddress>
 #include <QObject>
+#include <QPointer>
 #include <QSslConfiguration>
 #include <QString>
 #include <functional>
@@ -37,6 +38,12 @@ class HttpsServer : public QObject {
   Q_OBJECT
  public:
   using Handler = std::function<HttpResponse(const HttpRequest&)>;
+  /// Sends a request's answer; callable once, from the server's thread, at any later time (a
+  /// connection closed meanwhile makes it do nothing).
+  using Responder = std::function<void(const HttpResponse&)>;
+  /// A handler that may answer later (SyncApi's completions run on a worker): the connection
+  /// reads no further request until it has answered, so answers keep the requests' order.
+  using AsyncHandler = std::function<void(const HttpRequest&, Responder)>;
   struct Limits {
     qint64 maxBodyBytes = 9 << 20;  ///< a larger Content-Length gets 413
     int maxHeaderBytes = 16 << 10;  ///< larger headers get 431
@@ -44,6 +51,8 @@ class HttpsServer : public QObject {
     int maxConnections = 256;       ///< more are closed at once
   };
   HttpsServer(const QSslConfiguration& tls, Limits limits, Handler handler,
+              QObject* parent = nullptr);
+  HttpsServer(const QSslConfiguration& tls, Limits limits, AsyncHandler handler,
               QObject* parent = nullptr);
   ~HttpsServer() override;
   bool listen(const QHostAddress& address, quint16 port);
@@ -60,7 +69,7 @@ class HttpsServer : public QObject {
 
   QSslServer* m_server;
   Limits m_limits;
-  Handler m_handler;
+  AsyncHandler m_handler;
   int m_connections = 0;
 };
 

@@ -4,6 +4,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QRegularExpression>
+#include <QThread>
 
 #include "core/storage/ClinicalStore.h"
 #include "core/storage/SessionAnalysis.h"
@@ -109,32 +110,103 @@ bool RateLimiter::hasLeft(const QByteArray& key) {
   return std::min(m_burst, it->tokens + (m_clock.elapsed() - it->at) * m_rate / 1000.0) >= 1;
 }
 
+namespace {
+
+/// Lines for the server's log that come with an answer (from a worker, which does not log
+/// itself): logLine writes them and takes them off before the answer is sent.
+const QByteArray kLogHeader = "X-Armtrack-Log";
+
+/// This worker thread's connection to url, opened on first use and kept while the thread lives
+/// (a pool's thread ends after 30 s idle, closing it). A connection that failed is opened again.
+storage::Database& workerDatabase(const storage::DatabaseUrl& url, bool reopen) {
+  thread_local std::unique_ptr<storage::Database> db;
+  thread_local QString opened;
+  if (reopen || !db || opened != url.display()) {
+    db.reset();
+    db = std::make_unique<storage::Database>(url, storage::Database::Options{});
+    opened = url.display();
+  }
+  return *db;
+}
+
+}  // namespace
+
 SyncApi::SyncApi(storage::Database& db, Options options)
     : m_db(db),
+      m_home(std::make_unique<QObject>()),
       m_perToken(options.ratePerSecond, options.burst),
       m_perAddress(options.enrolPerMinute / 60.0, options.enrolPerMinute),
-      m_refusedTokens(options.refusedTokensPerMinute / 60.0, options.refusedTokensPerMinute) {}
+      m_refusedTokens(options.refusedTokensPerMinute / 60.0, options.refusedTokensPerMinute) {
+  m_workers.setMaxThreadCount(options.workers > 0 ? options.workers
+                                                  : std::max(2, QThread::idealThreadCount()));
+  m_writers.setMaxThreadCount(std::max(1, options.writers));
+}
+
+SyncApi::~SyncApi() {
+  m_workers.waitForDone();
+  m_writers.waitForDone();
+}
+
+HttpResponse SyncApi::guarded(const std::function<HttpResponse()>& f) {
+  try {
+    return f();
+  } catch (const StorageError& e) {
+    return error(statusOf(e), QString::fromStdString(e.what()));
+  } catch (const std::exception& e) {
+    HttpResponse r = error(500, "internal error; the server's log says more");
+    r.headers.append(qMakePair(kLogHeader, "internal error: " + QByteArray(e.what())));
+    return r;
+  }
+}
+
+void SyncApi::logLine(const HttpRequest& request, const HttpResponse& response, qint64 device) {
+  if (!log) return;
+  for (const auto& [name, value] : response.headers)
+    if (name == kLogHeader) log(QString::fromLocal8Bit(value));
+  // The route with the UUID (random, names no one) and the device's number only.
+  log(QString::fromLatin1(request.method) + ' ' + request.path.left(120) + ' ' +
+      QString::number(response.status) + (device ? " device " + QString::number(device) : ""));
+}
 
 HttpResponse SyncApi::handle(const HttpRequest& request) {
   qint64 device = 0;
-  HttpResponse response;
-  try {
-    response = route(request, device);
-  } catch (const StorageError& e) {
-    response = error(statusOf(e), QString::fromStdString(e.what()));
-  } catch (const std::exception& e) {
-    response = error(500, "internal error; the server's log says more");
-    if (log) log("internal error: " + QString::fromLocal8Bit(e.what()));
-  }
-  if (log) {
-    // The route with the UUID (random, names no one) and the device's number only.
-    log(QString::fromLatin1(request.method) + ' ' + request.path.left(120) + ' ' +
-        QString::number(response.status) + (device ? " device " + QString::number(device) : ""));
-  }
+  Job later;
+  HttpResponse response = guarded([&] { return route(request, device, &later); });
+  if (later) response = guarded([&] { return later(m_db); });
+  logLine(request, response, device);
+  response.headers.removeIf([](const auto& h) { return h.first == kLogHeader; });
   return response;
 }
 
-HttpResponse SyncApi::route(const HttpRequest& r, qint64& device) {
+void SyncApi::handle(const HttpRequest& request, const HttpsServer::Responder& done) {
+  qint64 device = 0;
+  Job later;
+  HttpResponse response = guarded([&] { return route(request, device, &later); });
+  const auto answer = [this, done](const HttpRequest& r, HttpResponse response, qint64 device) {
+    logLine(r, response, device);
+    response.headers.removeIf([](const auto& h) { return h.first == kLogHeader; });
+    done(response);
+  };
+  if (!later) return answer(request, response, device);
+  HttpRequest head = request;  // what the log needs; the body stays behind
+  head.body.clear();
+  const storage::DatabaseUrl url = m_db.url();
+  QObject* home = m_home.get();
+  // Completions (long: an analysis) and chunk writes (short) have pools of their own, so chunks
+  // are not queued behind analyses.
+  QThreadPool& pool = request.path.endsWith("/complete") ? m_workers : m_writers;
+  pool.start([this, later, head, device, url, home, answer] {
+    HttpResponse response = guarded([&] { return later(workerDatabase(url, false)); });
+    if (response.status == 503) {  // the connection may have died since: once more, afresh
+      response = guarded([&] { return later(workerDatabase(url, true)); });
+    }
+    QMetaObject::invokeMethod(
+        home, [answer, head, response, device] { answer(head, response, device); },
+        Qt::QueuedConnection);
+  });
+}
+
+HttpResponse SyncApi::route(const HttpRequest& r, qint64& device, Job* later) {
   const QString& path = r.path;
   if (path == "/api/v1/health") {
     if (r.method != "GET") return error(405, "use GET");
@@ -210,28 +282,50 @@ HttpResponse SyncApi::route(const HttpRequest& r, qint64& device) {
   }
   if (s->tail == "chunks") {
     if (r.method != "PUT") return error(405, "use PUT");
-    uploads.putChunk(s->uuid, s->chunk, r.body, QString::fromLatin1(r.header("x-chunk-sha256")));
-    return json(200, {{"uuid", s->uuid.toLower()}, {"chunk", s->chunk}});
+    // Written on a writer thread with its own connection: a durable write of up to 8 MiB would
+    // hold the event loop, and with it every other device's TLS handshake and request.
+    *later = [uuid = s->uuid, chunk = s->chunk, body = r.body, token,
+              sha = QString::fromLatin1(r.header("x-chunk-sha256"))](storage::Database& db) {
+      storage::ClinicalStore store(db);
+      store.signInWithDeviceToken(QString::fromLatin1(token));
+      storage::SyncUploads(store).putChunk(uuid, chunk, body, sha);
+      return json(200, {{"uuid", uuid.toLower()}, {"chunk", chunk}});
+    };
+    return {};
   }
   if (r.method != "POST") return error(405, "use POST");
-  QString analysis = "pending";
-  const qint64 id = uploads.complete(s->uuid, [&](qint64 sessionId) {
-    // Analysed on arrival by the server itself; a failure leaves it pending for the clinic.
-    try {
-      storage::ClinicalStore service(m_db);
-      service.signInAsService("armtrack-server");
-      storage::analyseSession(service, sessionId);
-      analysis = "done";
-    } catch (const StorageError& e) {
-      analysis = e.kind() == Kind::Usage || e.kind() == Kind::Corrupt ? "failed" : "pending";
-      if (log) log("session " + QString::number(sessionId) + " stored, analysis " + analysis);
+  // The join, the import and the analysis: on a worker with its own connection, signed in
+  // again there with the token checked above.
+  const QString uuid = s->uuid;
+  *later = [this, uuid, token](storage::Database& db) {
+    if (beforeCompletion) beforeCompletion();
+    storage::ClinicalStore store(db);
+    store.signInWithDeviceToken(QString::fromLatin1(token));
+    storage::SyncUploads uploads(store);
+    QString analysis = "pending";
+    QString failure;
+    const qint64 id = uploads.complete(uuid, [&](qint64 sessionId) {
+      // Analysed on arrival by the server itself; a failure leaves it pending for the clinic.
+      try {
+        storage::ClinicalStore service(db);
+        service.signInAsService("armtrack-server");
+        storage::analyseSession(service, sessionId);
+        analysis = "done";
+      } catch (const StorageError& e) {
+        analysis = e.kind() == Kind::Usage || e.kind() == Kind::Corrupt ? "failed" : "pending";
+        failure = "session " + QString::number(sessionId) + " stored, analysis " + analysis;
+      }
+    });
+    if (analysis == "pending") {
+      QSqlQuery q = db.exec("SELECT analysis FROM sessions WHERE id = ?", {id});
+      if (q.next()) analysis = q.value(0).toString();
     }
-  });
-  if (analysis == "pending") {
-    QSqlQuery q = m_db.exec("SELECT analysis FROM sessions WHERE id = ?", {id});
-    if (q.next()) analysis = q.value(0).toString();
-  }
-  return json(200, {{"uuid", s->uuid.toLower()}, {"session", id}, {"analysis", analysis}});
+    HttpResponse done =
+        json(200, {{"uuid", uuid.toLower()}, {"session", id}, {"analysis", analysis}});
+    if (!failure.isEmpty()) done.headers.append(qMakePair(kLogHeader, failure.toLatin1()));
+    return done;
+  };
+  return {};
 }
 
 }  // namespace armtrack::server

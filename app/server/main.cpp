@@ -1,6 +1,7 @@
 // armtrack-server: the clinic's sync service for home devices, HTTPS only (docs/sync.md).
 #include <QCoreApplication>
 #include <QDateTime>
+#include <QFile>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -26,8 +27,38 @@ records (the same --db as armtrack-cli). It keeps no state of its own.
   --key FILE      its private key, PEM (RSA or EC, unencrypted; keep it mode 0600)
   --listen ADDR   the address to listen on (default: every address)
   --rate N        requests a second per device (default 20, bursts of 200)
+  --config FILE   read these options from FILE first, one 'name = value' a line (db, port,
+                  cert, key, listen, rate; '#' starts a comment); the command line's win.
+                  The package's default: /etc/armtrack/server.conf
+  --version       the version
   --help          this text
 )";
+
+/// The options of a configuration file as command-line arguments ("--db", "URL", ...). Throws
+/// std::runtime_error naming the file and line of anything it does not understand.
+QStringList configArguments(const QString& path) {
+  QFile file(path);
+  if (!file.open(QIODevice::ReadOnly | QIODevice::Text))
+    throw std::runtime_error("cannot read the configuration " + path.toStdString() + ": " +
+                             file.errorString().toStdString());
+  const QStringList known{"db", "port", "cert", "key", "listen", "rate"};
+  QStringList out;
+  int number = 0;
+  while (!file.atEnd()) {
+    ++number;
+    const QString line = QString::fromUtf8(file.readLine()).section('#', 0, 0).trimmed();
+    if (line.isEmpty()) continue;
+    const qsizetype eq = line.indexOf('=');
+    const QString name = line.left(eq).trimmed(), value = line.mid(eq + 1).trimmed();
+    if (eq <= 0 || !known.contains(name) || value.isEmpty())
+      throw std::runtime_error(path.toStdString() + ":" + std::to_string(number) +
+                               ": expected 'name = value' with a name of db, port, cert, key, "
+                               "listen, rate; found '" +
+                               line.toStdString() + "'");
+    out << "--" + name << value;
+  }
+  return out;
+}
 
 int usage(const std::string& message) {
   std::cerr << "armtrack-server: " << message << "\n(armtrack-server --help says more)\n";
@@ -41,10 +72,24 @@ int main(int argc, char** argv) {
   QString db, cert, key, listenAddress;
   int port = 0;
   double rate = 20;
-  const QStringList args = app.arguments();
-  for (qsizetype i = 1; i < args.size(); ++i) {
+  QStringList args = app.arguments().mid(1);
+  // A configuration file's options come first, so that the command line's override them.
+  for (qsizetype i = 0; i + 1 < args.size(); ++i) {
+    if (args[i] != "--config") continue;
+    try {
+      const QStringList fromFile = configArguments(args[i + 1]);
+      args.remove(i, 2);
+      args = fromFile + args;
+      break;
+    } catch (const std::exception& e) {
+      return usage(e.what());
+    }
+  }
+  for (qsizetype i = 0; i < args.size(); ++i) {
     const QString& a = args[i];
     if (a == "--help" || a == "-h") return std::cout << kHelp, 0;
+    if (a == "--version") return std::cout << "armtrack-server " << ARMTRACK_VERSION << "\n", 0;
+    if (a == "--config") return usage("--config may be given once");
     const QStringList withValue{"--db", "--port", "--cert", "--key", "--listen", "--rate"};
     if (!withValue.contains(a)) return usage("unknown option '" + a.toStdString() + "'");
     if (i + 1 >= args.size()) return usage(a.toStdString() + " needs a value");
@@ -73,8 +118,11 @@ int main(int argc, char** argv) {
       std::cerr << QDateTime::currentDateTimeUtc().toString(Qt::ISODate).toStdString() << ' '
                 << line.toStdString() << std::endl;
     };
+    // Completions (join, import, analysis) run on workers, answered when done.
     armtrack::server::HttpsServer server(
-        tls, {}, [&api](const armtrack::server::HttpRequest& r) { return api.handle(r); });
+        tls, {},
+        [&api](const armtrack::server::HttpRequest& r,
+               armtrack::server::HttpsServer::Responder done) { api.handle(r, done); });
     const QHostAddress address =
         listenAddress.isEmpty() ? QHostAddress(QHostAddress::Any) : QHostAddress(listenAddress);
     if (address.isNull())

@@ -16,7 +16,7 @@ fail() {
 }
 [ -f "$deb" ] || { echo "package_contents: FAIL: no package at $deb" >&2; exit 1; }
 # The checkers: a missing one is a failure, never a skip (packaging/deps-debian12.sh installs them).
-for tool in dpkg-deb dpkg-architecture dpkg-parsechangelog lintian desktop-file-validate appstreamcli groff col readelf ldd \
+for tool in dpkg-deb dpkg-architecture dpkg-parsechangelog lintian desktop-file-validate appstreamcli groff col readelf ldd systemd-analyze \
   /usr/bin/python3; do
   command -v "$tool" >/dev/null ||
     { echo "package_contents: FAIL: $tool not found (packaging/deps-debian12.sh installs it)" >&2; exit 1; }
@@ -36,11 +36,13 @@ echo "package_contents: $(basename "$deb"): version $version, $(dpkg-deb -c "$de
 
 # Where everything goes.
 expected=(
-  /usr/bin/armtrack /usr/bin/armtrack-cli
+  /usr/bin/armtrack /usr/bin/armtrack-cli /usr/bin/armtrack-server
   "/usr/lib/$ma/armtrack/libarmtrack_device_api.so"
   /usr/share/applications/$app.desktop /usr/share/metainfo/$app.metainfo.xml
   /usr/share/icons/hicolor/scalable/apps/$app.svg
   /usr/share/man/man1/armtrack-cli.1.gz /usr/share/man/man1/armtrack.1.gz
+  /usr/share/man/man1/armtrack-server.1.gz
+  /lib/systemd/system/armtrack-server.service /etc/armtrack/server.conf
   /usr/share/doc/armtrack/copyright /usr/share/doc/armtrack/NOTICE
   /usr/share/doc/armtrack/changelog.gz
 )
@@ -53,8 +55,32 @@ done
 for f in "${expected[@]}"; do
   [ -f "$root$f" ] || fail "$f is not in the package"
 done
-outside="$(cd "$root" && find . -mindepth 1 -maxdepth 1 ! -name usr)"
-[ -z "$outside" ] || fail "files outside /usr: $outside"
+outside="$(cd "$root" && find . -mindepth 1 -maxdepth 1 ! -name usr ! -name etc ! -name lib)"
+[ -z "$outside" ] || fail "files outside /usr, /etc and /lib: $outside"
+# Outside /usr: armtrack-server's systemd unit and its configuration, a conffile (dpkg keeps a
+# clinic's edits), and nothing else.
+for top in etc lib; do
+  extra="$(cd "$root" && find "$top" -type f ! -path etc/armtrack/server.conf \
+    ! -path lib/systemd/system/armtrack-server.service)"
+  [ -z "$extra" ] || fail "unexpected files in /$top: $extra"
+done
+[ "$(cat "$work/DEBIAN/conffiles" 2>/dev/null)" = /etc/armtrack/server.conf ] ||
+  fail "conffiles is not /etc/armtrack/server.conf: $(cat "$work/DEBIAN/conffiles" 2>&1)"
+
+# The unit: valid for systemd, started as the package's armtrack-server with the configuration
+# file, a user of its own, and only once a certificate is in place (the package brings none).
+unit="$root/lib/systemd/system/armtrack-server.service"
+if [ -f "$unit" ]; then
+  # The program is in the unpacked tree, not in /usr/bin: that one complaint is expected.
+  verify="$(systemd-analyze verify --man=no "$unit" 2>&1 |
+    grep -v '^armtrack-server.service: Command /usr/bin/armtrack-server is not executable' || true)"
+  [ -z "$verify" ] || fail "systemd-analyze verify: $verify"
+  for line in '^ExecStart=/usr/bin/armtrack-server --config /etc/armtrack/server.conf ' \
+    '^DynamicUser=yes$' '^ConditionPathExists=/etc/armtrack/server.crt$' \
+    '^ConditionPathExists=/etc/armtrack/server.key$' '^ProtectSystem=strict$' '^PrivateTmp=yes$'; do
+    grep -q "$line" "$unit" || fail "armtrack-server.service has no line matching '$line'"
+  done
+fi
 
 # Icons: PNGs of the size their folder says (the PNG header's width and height).
 for png in "$root"/usr/share/icons/hicolor/*x*/apps/$app.png; do
@@ -77,7 +103,7 @@ grep -q "<launchable type=\"desktop-id\">$app.desktop</launchable>" "$metainfo" 
 grep -q "<release version=\"$version\"" "$metainfo" || fail "the metainfo has no release $version"
 
 # Manual pages: groff's warnings are errors; the version is filled in.
-for page in armtrack-cli armtrack; do
+for page in armtrack-cli armtrack armtrack-server; do
   gz="$root/usr/share/man/man1/$page.1.gz"
   [ -f "$gz" ] || continue
   warnings="$(zcat "$gz" | groff -man -ww -z 2>&1)"
@@ -136,7 +162,7 @@ while IFS= read -r -d '' f; do
     fail "$rel does not take libarmtrack_device_api from the package: $(grep device_api <<<"$deps")"
   fi
 done < <(find "$root" -type f -print0)
-[ "$elf_count" -eq 11 ] || fail "expected 11 ELF files (2 programs, 1 library, 8 plugins), found $elf_count"
+[ "$elf_count" -eq 12 ] || fail "expected 12 ELF files (3 programs, 1 library, 8 plugins), found $elf_count"
 
 # Dependencies: dpkg-shlibdeps' libraries and what is loaded without being linked.
 depends="$(dpkg-deb -f "$deb" Depends)"

@@ -9,9 +9,12 @@
 #    with the virtual arm, and the clinical records (a database, a patient, a recorded session, its
 #    PDF report in English and in every shipped translation: Qt's SQLite driver and the reports'
 #    font come from the package's dependencies, the translations are built into the programs);
-# 3. armtrack --demo --lang de as an ordinary user under Xvfb, until its live screen shows
+# 3. armtrack-server started as its systemd unit's ExecStart says, with the package's
+#    configuration file and a certificate made here, as an ordinary user: GET /api/v1/health
+#    answers 200 over HTTPS (curl on the host), then it is stopped;
+# 4. armtrack --demo --lang de as an ordinary user under Xvfb, until its live screen shows
 #    estimates;
-# 4. apt purges the package: none of its files is left, and the root is as it was before the
+# 5. apt purges the package: none of its files is left, and the root is as it was before the
 #    package was installed (its dependencies stay), outside the home folders, /tmp, logs, caches
 #    and dpkg's and apt's own state.
 set -euo pipefail
@@ -56,7 +59,7 @@ grep -q '^0 upgraded, 1 newly installed, 0 to remove' "$work/apt-install.log" ||
 in_root dpkg-query -L armtrack | LC_ALL=C sort >"$work/armtrack.list"
 step "apt-get install ./armtrack_${version}.deb: $(wc -l <"$work/armtrack.list") paths"
 
-# Every ELF file of the package (2 programs, the device API, 8 plugins) finds its libraries in the
+# Every ELF file of the package (3 programs, the device API, 8 plugins) finds its libraries in the
 # clean root.
 elf_count=0
 while read -r f; do
@@ -65,7 +68,7 @@ while read -r f; do
   missing="$(in_root ldd "$f" | grep 'not found' || true)"
   [ -z "$missing" ] || fail "$f: $missing"
 done <"$work/armtrack.list"
-[ "$elf_count" -eq 11 ] || fail "expected 11 ELF files installed, found $elf_count"
+[ "$elf_count" -eq 12 ] || fail "expected 12 ELF files installed, found $elf_count"
 step "ldd: the $elf_count ELF files find all their libraries in the root"
 
 # 2. The command-line tool.
@@ -73,6 +76,8 @@ out="$(in_root armtrack-cli --version)"
 [ "$out" = "armtrack-cli $version" ] || fail "armtrack-cli --version said '$out'"
 out="$(in_root armtrack --version)"
 [ "$out" = "armtrack $version" ] || fail "armtrack --version said '$out'"
+out="$(in_root armtrack-server --version)"
+[ "$out" = "armtrack-server $version" ] || fail "armtrack-server --version said '$out'"
 
 devices="$(in_root armtrack-cli devices 2>&1)"
 grep -q '^refused' <<<"$devices" && fail "plugins refused: $(grep '^refused' <<<"$devices")"
@@ -130,7 +135,45 @@ done
 [ ${#languages[@]} -gt 0 ] || fail "no translations/armtrack_<lang>.ts in $src"
 step "armtrack-cli report --lang: ${languages[*]}"
 
-# 3. The application, as an ordinary user, on a virtual display of the host's: the X server's
+# 3. The sync service as its systemd unit starts it (systemd does not run in the root): the unit's
+# ExecStart, with its credentials folder (%d) holding a certificate and key made here, reads the
+# package's /etc/armtrack/server.conf; the records (a SQLite file) and the port are given on the
+# command line, which wins over the file. It runs as an ordinary user, as the unit's own user
+# would; curl on the host (the root shares its network) checks the health answer over HTTPS.
+t0=$SECONDS
+unit="$root/lib/systemd/system/armtrack-server.service"
+exec_start="$(sed -n 's/^ExecStart=//p' "$unit")"
+[ -n "$exec_start" ] || fail "armtrack-server.service has no ExecStart"
+cred=/tmp/armtrack-server-credentials
+mkdir -p "$root$cred"
+openssl req -x509 -newkey ec -pkeyopt ec_paramgen_curve:P-256 -nodes -days 1 -subj /CN=localhost \
+  -addext subjectAltName=DNS:localhost -keyout "$root$cred/server.key" \
+  -out "$root$cred/server.crt" >"$work/openssl.log" 2>&1 || fail "openssl: $(cat "$work/openssl.log")"
+records db init --db /tmp/server-records.db --admin boss >/dev/null 2>&1 || fail "db init for the server failed"
+in_root chown -R therapist:therapist "$cred" /tmp/server-records.db
+port="$(/usr/bin/python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')"
+# shellcheck disable=SC2086 # the unit's command line, split into words as systemd does
+chroot --userspec=therapist:therapist "$root" /usr/bin/env -i PATH=/usr/bin:/bin \
+  HOME=/home/therapist LANG=C.UTF-8 ${exec_start//%d/$cred} --db /tmp/server-records.db \
+  --port "$port" --listen 127.0.0.1 >"$work/server.out" 2>"$work/server.log" &
+server_pid=$!
+for _ in $(seq 300); do
+  grep -q 'listening on' "$work/server.out" && break
+  kill -0 "$server_pid" 2>/dev/null || break
+  sleep 0.1
+done
+health="$(curl -sS --max-time 30 --cacert "$root$cred/server.crt" \
+  --resolve "localhost:$port:127.0.0.1" -w ' %{http_code}' "https://localhost:$port/api/v1/health" 2>&1 ||
+  true)"
+kill -TERM "$server_pid" 2>/dev/null || true
+wait "$server_pid" 2>/dev/null || true
+rm -rf "${root:?}$cred" "$root"/tmp/server-records.db*
+[ "${health##* }" = 200 ] && grep -q '"status":"ok"' <<<"$health" ||
+  fail "GET /api/v1/health of the installed armtrack-server: '$health'; its log: $(cat "$work/server.out" "$work/server.log")"
+step "armtrack-server (the unit's command, port $port): $(head -n 1 "$work/server.out"); health:" \
+  "$health ($((SECONDS - t0)) s)"
+
+# 4. The application, as an ordinary user, on a virtual display of the host's: the X server's
 # abstract socket is reachable from the chroot, which shares the host's network namespace.
 in_root install -d -m 0700 -o therapist -g therapist /tmp/runtime-therapist
 exec 3< <(Xvfb -displayfd 4 -screen 0 1280x800x24 -nolisten tcp 4>&1 >/dev/null 2>"$work/xvfb.log")
@@ -157,7 +200,7 @@ cp "$root/home/therapist/installed-demo.png" "$work/installed-demo.png" ||
 step "armtrack: ${running#armtrack: } ($((SECONDS - t0)) s after start; its window:" \
   "$work/installed-demo.png)"
 
-# 4. Purge: nothing of the package left, nothing else changed.
+# 5. Purge: nothing of the package left, nothing else changed.
 in_root DEBIAN_FRONTEND=noninteractive apt-get purge -y -q armtrack >"$work/apt-purge.log" 2>&1 ||
   { tail -n 30 "$work/apt-purge.log" >&2; fail "apt could not purge the package"; }
 in_root dpkg-query -W armtrack >/dev/null 2>&1 && fail "dpkg still knows armtrack after the purge"

@@ -8,7 +8,7 @@
 # installs the package with its dependencies (Depends only, no Recommends), and
 # in-root-checks.sh runs the programs and purges the package. Nothing is kept outside WORKDIR;
 # the root is deleted after a pass and kept after a failure, to look at.
-# Needs root (chroot, mounts), mmdebstrap, Xvfb and pdftotext; exits 77 (skipped) when not root,
+# Needs root (chroot, mounts), mmdebstrap, Xvfb, pdftotext, openssl and curl; exits 77 (skipped) when not root,
 # unless CI is set.
 set -euo pipefail
 deb="$(realpath "$1")" work="$2" src="$(realpath "$3")"
@@ -26,7 +26,7 @@ if [ "$(id -u)" -ne 0 ]; then
   say "SKIPPED: needs root (chroot and mounts); run the test command as root"
   exit 77
 fi
-for tool in mmdebstrap Xvfb chroot findmnt pdftotext /usr/bin/python3; do
+for tool in mmdebstrap Xvfb chroot findmnt pdftotext openssl curl /usr/bin/python3; do
   command -v "$tool" >/dev/null ||
     { say "FAIL: $tool not found (packaging/deps-debian12.sh installs it)" >&2; exit 1; }
 done

@@ -23,7 +23,8 @@ struct Reply {
 class SyncTestClient {
  public:
   SyncTestClient(quint16 port, QSslCertificate ca) : m_port(port), m_ca(std::move(ca)) {}
-  QByteArray token;  ///< sent as a bearer token when set
+  QByteArray token;             ///< sent as a bearer token when set
+  int answerTimeoutMs = 60000;  ///< how long to wait for an answer once the request is sent
 
   /// Sends the request; with cutAfter >= 0 the connection is aborted after the headers and that
   /// many bytes of the body, and no answer is awaited.
@@ -75,7 +76,7 @@ class SyncTestClient {
         loop.quit();
       }
     });
-    timeout.start(60000);
+    timeout.start(answerTimeoutMs);
     loop.exec();
     return reply;
   }
