@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <utility>
 #include <vector>
 
 #include "app/cli/Text.h"
@@ -87,20 +88,45 @@ ReadingFit measureFit(const Recording& rec, const EstimateOptions& options) {
   return fit;
 }
 
-/// "upper-arm strap turn about the arm 23 deg, forearm sensor distance from the elbow 4 cm
-/// (sidecar 6 cm)": the excited parameters that moved clearly from the sidecar's values.
+/// A parameter's name said with its value: "upper-arm strap turned 23 deg about the arm",
+/// "forearm sensor 4 cm from the elbow (sidecar 6 cm)".
+std::string phrase(const MovementParameter& p) {
+  const std::string v = fixed(p.value, 0) + " " + p.unit;
+  std::string s = p.name;
+  bool placed = false;
+  for (const auto& [word, said] :
+       {std::pair{" turn about ", " turned "}, std::pair{" tilt about ", " tilted "},
+        std::pair{" roll about ", " rolled "}, std::pair{" distance from ", " "}}) {
+    if (const auto at = s.find(word); at != std::string::npos) {
+      // "upper-arm strap turn about the arm" -> "upper-arm strap turned V about the arm"
+      const std::string w(word);
+      const auto keep = w.find(' ', 1);  // " about ...", " from ..."
+      s = s.substr(0, at) + said + v + s.substr(at + keep);
+      placed = true;
+      break;
+    }
+  }
+  if (!placed) s += " " + v;
+  if (p.unit != "deg" || p.prior != 0.0) s += " (sidecar " + fixed(p.prior, 0) + " " + p.unit + ")";
+  return s;
+}
+
+/// The whole turn of each sensor from the sidecar's mounting, then the excited parameters that
+/// moved clearly from the sidecar's values.
 std::string changes(const MovementCalibration& m) {
-  std::string s;
+  const auto angle = [](const Eigen::Matrix3d& r) {
+    return std::acos(std::clamp((r.trace() - 1.0) / 2.0, -1.0, 1.0)) / kDeg;
+  };
+  std::string s = "upper-arm sensor turned " + fixed(angle(m.upperMounting), 0) +
+                  " deg in all, forearm sensor " + fixed(angle(m.forearmMounting), 0) + " deg";
+  std::string details;
   for (const MovementParameter& p : m.parameters) {
     if (!p.excited || !p.observable || !std::isfinite(p.value)) continue;
-    const bool deg = p.unit == "deg";
-    const double floor = deg ? 3.0 : 1.0;
+    const double floor = p.unit == "deg" ? 3.0 : 1.0;
     if (std::abs(p.value - p.prior) < std::max(floor, 2.0 * p.sd)) continue;
-    if (!s.empty()) s += ", ";
-    s += p.name + " " + fixed(p.value, 0) + " " + p.unit;
-    if (!deg || p.prior != 0.0) s += " (sidecar " + fixed(p.prior, 0) + " " + p.unit + ")";
+    details += (details.empty() ? "" : ", ") + phrase(p);
   }
-  return s.empty() ? "no parameter far from the sidecar's" : s;
+  return s + (details.empty() ? "" : " (" + details + ")");
 }
 
 std::string describe(const ReadingFit& f) {

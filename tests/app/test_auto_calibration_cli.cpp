@@ -75,7 +75,14 @@ TEST_F(AutoCalibrationCli, MisalignedStrapsEstimateFarBetterThanTheOldPath) {
     ASSERT_EQ(old.code, 0) << old.err;
     const std::string line = movementLine(now.err);
     EXPECT_NE(line.find("; applied"), std::string::npos) << now.err;
-    EXPECT_NE(line.find("strap turn"), std::string::npos) << line;
+    // The simulator turned each sensor by 25 deg: the line says about that much.
+    const auto at = line.find("upper-arm sensor turned ");
+    ASSERT_NE(at, std::string::npos) << line;
+    const double upperDeg = std::stod(line.substr(at + 24));
+    EXPECT_NEAR(upperDeg, 25.0, 4.0) << line;
+    const auto fa = line.find(", forearm sensor ");
+    ASSERT_NE(fa, std::string::npos) << line;
+    EXPECT_NEAR(std::stod(line.substr(fa + 17)), 25.0, 4.0) << line;
     EXPECT_TRUE(movementLine(old.err).empty()) << old.err;
     const std::vector<double> a = reportedRmse(now.out), b = reportedRmse(old.out);
     ASSERT_EQ(a.size(), 5u) << now.out;
