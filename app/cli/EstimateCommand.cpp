@@ -11,6 +11,7 @@
 #include <string_view>
 #include <system_error>
 
+#include "app/cli/AutoCalibration.h"
 #include "app/cli/Batch.h"
 #include "app/cli/Calibrate.h"
 #include "app/cli/Estimate.h"
@@ -51,6 +52,10 @@ Options:
   --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
   --calibration FILE       apply a calibration made by "armtrack-cli calibrate" (IMU mounting,
                            gyroscope biases, segment lengths; docs/calibration.md)
+  --no-auto-calibration    without --calibration, do not try the calibration from movement on
+                           the first 60 s (by default it is fitted, and applied only when it
+                           explains the readings clearly better than the sidecar's mounting;
+                           one line on standard error says what happened)
   --out FILE               write the angles here (default: statistics only; one recording)
   --out-dir DIR            several recordings: write each one's angles and report here (made
                            if missing; default: statistics only)
@@ -63,6 +68,7 @@ struct Setup {
   EstimateOptions options;
   bool taoHu = false;
   std::optional<fs::path> calibration;
+  bool autoCalibration = true;  ///< without --calibration, try the calibration from movement
   bool overwrite = false;
 };
 
@@ -82,6 +88,7 @@ Setup parseSetup(const Args& a) {
   if (a.flag("--joint-accel-std"))
     s.options.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
   if (a.flag("--calibration")) s.calibration = a.required("--calibration");
+  s.autoCalibration = !a.flag("--no-auto-calibration");
   s.overwrite = a.flag("--overwrite");
   return s;
 }
@@ -136,6 +143,16 @@ FileRun runFile(const fs::path& input, const Setup& setup, const Calibration* ca
   const std::size_t warned = reader.warnings().size();
   RecordingMeta meta = reader.meta();
   if (calibration) useCalibration(*calibration, *setup.calibration, meta, log);
+  std::optional<Calibration> automatic;
+  if (!calibration && setup.autoCalibration) {
+    AutoCalibrationResult found = autoCalibrate(input, setup.options);
+    log << found.line << "\n";
+    if (found.calibration) {
+      automatic = std::move(found.calibration);
+      applyCalibration(*automatic, meta);
+      calibration = &*automatic;
+    }
+  }
   FileRun run;
   run.params = makeParams(meta, setup.options);
   const auto start = std::chrono::steady_clock::now();
@@ -159,7 +176,8 @@ int estimateTaoHu(const Args& a, const fs::path& input, const std::optional<fs::
   if (std::none_of(rec.samples.begin(), rec.samples.end(),
                    [](const ArmSample& s) { return s.hasImu(); }))
     throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
-  for (std::string_view o : {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std"}) {
+  for (std::string_view o :
+       {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std", "--no-auto-calibration"}) {
     if (a.flag(o)) err << "warning: " << o << " does not apply to --method tao-hu; ignored\n";
   }
   std::optional<CsvOutput> writer;
@@ -356,6 +374,7 @@ int estimateCommand(const std::vector<std::string>& args, std::ostream& out, std
                 {"--no-webcam", false},
                 {"--joint-accel-std", true},
                 {"--calibration", true},
+                {"--no-auto-calibration", false},
                 {"--out", true},
                 {"--out-dir", true},
                 {"--jobs", true},
