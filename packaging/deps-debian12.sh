@@ -18,6 +18,8 @@ packages=(
   qt6-charts-dev qt6-multimedia-dev libqt6opengl6-dev libvtk9-dev
   xvfb xauth libgl1-mesa-dri libglx-mesa0
   clang libclang-rt-14-dev
+  # lld links the test programs (tests/CMakeLists.txt), several times faster than GNU ld
+  lld
   # the package (docs/packaging.md): icons, manual pages, validators, the clean-root install test
   librsvg2-bin groff-base desktop-file-utils appstream python3-debian lintian mmdebstrap eatmydata
   # armtrack-server's unit checked (systemd-analyze) and its health asked over HTTPS (curl)
