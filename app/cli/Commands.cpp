@@ -85,7 +85,9 @@ the sidecar REC.json) that includes the true joint angles (and, with a moving tr
 IMU, the true trunk angles).
 
 Options:
-  --trajectory NAME    sinusoid, multi-joint, shoulder-wheel, calibration or reaching (required)
+  --trajectory NAME    sinusoid, multi-joint, shoulder-wheel, calibration, reaching or session
+                       (reaches from a resting hand and back, resting 1-3 s between them, after
+                       3 s still at the start) (required)
   --out FILE           the recording to write (required)
   --overwrite          replace FILE and its sidecar if they exist (otherwise an error)
   --duration S         length in s (default 10; calibration: the whole protocol, 54 s)
@@ -113,8 +115,8 @@ Options:
   --amplitude DEG      sinusoid: amplitude of every joint (default 28.6, i.e. 0.5 rad)
   --frequency HZ       sinusoid: frequency of every joint (default 0.5)
   --wheel-period S     shoulder-wheel: seconds per turn (default 4)
-  --peak-rate DEG_S    reaching: fastest joint rate of a move (default 420)
-  --peak-accel DEG_S2  reaching: fastest joint acceleration of a move (default 4000)
+  --peak-rate DEG_S    reaching, session: fastest joint rate of a move (default 420)
+  --peak-accel DEG_S2  reaching, session: fastest joint acceleration of a move (default 4000)
   --pendulum           a double pendulum instead of an arm (simulate --pendulum --help)
 )";
 
@@ -240,8 +242,10 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   ignoredFor("--amplitude", "sinusoid");
   ignoredFor("--frequency", "sinusoid");
   ignoredFor("--wheel-period", "shoulder-wheel");
-  ignoredFor("--peak-rate", "reaching");
-  ignoredFor("--peak-accel", "reaching");
+  for (std::string_view o : {"--peak-rate", "--peak-accel"}) {
+    if (a.flag(o) && name != "reaching" && name != "session")
+      err << "warning: " << o << " only applies to the reaching and session trajectories; ignored\n";
+  }
 
   std::unique_ptr<Trajectory> trajectory;
   try {

@@ -313,9 +313,54 @@ JointMotion ReachingTrajectory::at(double t) const {
   return m_path.at(t);
 }
 
+JointVector SessionTrajectory::restPose() {
+  JointVector th;
+  th << 15 * kDeg, 10 * kDeg, 0.0, -80 * kDeg, 0.0;
+  return th;
+}
+
+SessionTrajectory::SessionTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
+                                     double durationSeconds, double startSeconds) {
+  if (!(peakRate > 0.0) || !std::isfinite(peakRate) || !(peakAccel > 0.0) ||
+      !std::isfinite(peakAccel))
+    throw std::invalid_argument("SessionTrajectory: peak rate and acceleration must be > 0");
+  if (!(durationSeconds >= 0.0) || !std::isfinite(durationSeconds) || !(startSeconds >= 0.0) ||
+      !std::isfinite(startSeconds))
+    throw std::invalid_argument("SessionTrajectory: durations must be >= 0 s");
+  std::mt19937_64 rng(seed);
+  std::array<std::uniform_real_distribution<double>, kNumJoints> joint;
+  for (int j = 0; j < kNumJoints; ++j)
+    joint[j] = std::uniform_real_distribution<double>(kReachLow[j], kReachHigh[j]);
+  std::uniform_real_distribution<double> hold(0.3, 0.8), rest(1.0, 3.0), jitter(-5 * kDeg, 5 * kDeg);
+  auto moveTo = [&](const JointVector& next) {
+    const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
+    const double seconds =
+        std::max({1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel), 0.2});
+    m_path.add(m_path.endTime() + seconds, next);
+  };
+  m_path.add(0.0, restPose());
+  m_path.hold(startSeconds);
+  while (m_path.endTime() < durationSeconds) {
+    JointVector target;
+    do {
+      for (int j = 0; j < kNumJoints; ++j) target(j) = joint[j](rng);
+    } while ((target - m_path.lastPosture()).cwiseAbs().maxCoeff() < kMinReach);
+    moveTo(target);
+    m_path.hold(hold(rng));
+    JointVector back = restPose();
+    for (int j = 0; j < kNumJoints; ++j) back(j) += jitter(rng);
+    moveTo(back);
+    m_path.hold(rest(rng));
+  }
+}
+
+JointMotion SessionTrajectory::at(double t) const {
+  return m_path.at(t);
+}
+
 std::vector<std::string> trajectoryNames() {
   return {"sinusoid", "multi-joint",  "shoulder-wheel", "calibration",
-          "reaching", "sensor-check", "exercise"};
+          "reaching", "session",      "sensor-check",   "exercise"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {
@@ -337,6 +382,9 @@ std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const Trajec
   if (name == "reaching")
     return std::make_unique<ReachingTrajectory>(opts.seed, opts.peakRate, opts.peakAccel,
                                                 opts.duration);
+  if (name == "session")
+    return std::make_unique<SessionTrajectory>(opts.seed, opts.peakRate, opts.peakAccel,
+                                               opts.duration);
   std::string valid;
   for (const std::string& n : trajectoryNames()) valid += (valid.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown trajectory '" + name + "'; valid names: " + valid);

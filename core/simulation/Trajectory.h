@@ -137,6 +137,25 @@ class ReachingTrajectory final : public Trajectory {
   MinimumJerkPath m_path;
 };
 
+/// A patient's session of reaches: the arm rests (hand on the lap: shoulder flexed 15 deg,
+/// abducted 10, elbow flexed 80) still for startSeconds, then reaches to a posture drawn as
+/// ReachingTrajectory draws them, holds it 0.3-0.8 s and comes back to rest, and rests 1-3 s
+/// before the next reach. Each rest posture is the rest pose moved by up to 5 deg per joint.
+/// Moves are limited by peakRate and peakAccel as in ReachingTrajectory; the rests are what
+/// real sessions have and what a gyroscope's bias at rest is taken from.
+class SessionTrajectory final : public Trajectory {
+ public:
+  /// Throws std::invalid_argument unless peakRate and peakAccel are finite and positive and
+  /// the durations are finite and >= 0.
+  SessionTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
+                    double durationSeconds = 600.0, double startSeconds = 3.0);
+  JointMotion at(double t) const override;
+  static JointVector restPose();
+
+ private:
+  MinimumJerkPath m_path;
+};
+
 /// The sensor check before a home session (core/calibration/SensorCheck.h): the arm hangs still,
 /// elbow straight, for restSeconds(), then the elbow bends to 100 deg and straightens
 /// bends() times, each bend bendSeconds() long (minimum jerk), then the arm hangs still again
@@ -203,7 +222,8 @@ struct TrajectoryOptions {
 };
 
 /// Names: "sinusoid", "multi-joint", "shoulder-wheel", "calibration" (the calibration protocol),
-/// "reaching", "sensor-check" (SensorCheckTrajectory), "exercise" (ExerciseTrajectory).
+/// "reaching", "session" (SessionTrajectory: reaches from a rest and back, with rests),
+/// "sensor-check" (SensorCheckTrajectory), "exercise" (ExerciseTrajectory).
 /// Throws std::invalid_argument otherwise.
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts);
 std::vector<std::string> trajectoryNames();

@@ -237,7 +237,7 @@ TEST(Trajectory, Factory) {
   const std::vector<std::string> names = trajectoryNames();
   ASSERT_EQ(names,
             (std::vector<std::string>{"sinusoid", "multi-joint", "shoulder-wheel", "calibration",
-                                      "reaching", "sensor-check", "exercise"}));
+                                      "reaching", "session", "sensor-check", "exercise"}));
   TrajectoryOptions opts;
   for (const std::string& n : names) EXPECT_NE(makeTrajectory(n, opts), nullptr);
 
