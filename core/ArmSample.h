@@ -13,6 +13,11 @@ namespace armtrack {
 struct ImuReading {
   Eigen::Vector3d gyr = Eigen::Vector3d::Zero();  ///< angular velocity (rad/s)
   Eigen::Vector3d acc = Eigen::Vector3d::Zero();  ///< specific force (m/s^2), ~ +9.81 up at rest
+  /// Set by the estimator's plausibility gate (SampleGate): the value repeats the sensor's
+  /// previous one bit for bit, as a logger does when the sensor had nothing new. Such a value
+  /// is an old measurement, not a new one, and the filter treats it as absent.
+  bool gyrHeld = false;
+  bool accHeld = false;
 };
 
 /// Everything measured at one instant. Sensors run at different rates: absent ones are empty.

@@ -93,12 +93,35 @@ std::string GateCounters::summary() const {
   return s + when;
 }
 
+std::uint64_t GateCounters::totalHeld() const {
+  std::uint64_t n = 0;
+  for (std::uint64_t c : held) n += c;
+  return n;
+}
+
+std::string GateCounters::heldSummary() const {
+  const std::uint64_t n = totalHeld();
+  if (n == 0) return {};
+  static const char* kNames[4] = {"upper-arm gyroscope", "upper-arm accelerometer",
+                                  "forearm gyroscope", "forearm accelerometer"};
+  std::string s = "took " + std::to_string(n) + " repeated (held) reading" + (n == 1 ? "" : "s") +
+                  " as absent:";
+  bool first = true;
+  for (int i = 0; i < 4; ++i) {
+    if (held[i] == 0) continue;
+    s += std::string(first ? " " : ", ") + kNames[i] + " " + std::to_string(held[i]);
+    first = false;
+  }
+  return s;
+}
+
 SampleGate::SampleGate(const PlausibilityLimits& limits) : m_limits(limits) {}
 
 void SampleGate::reset() {
   m_counters = {};
   m_havePrevious = {false, false};
   m_repeats = {0, 0};
+  m_last = {};
   m_lastRefused = false;
 }
 
@@ -139,6 +162,24 @@ std::optional<Implausible> SampleGate::checkImu(int slot, const ImuReading& r) {
   return std::nullopt;
 }
 
+// A value equal to the sensor's previous one within heldSeconds of its last change is a repeat
+// of an old sample. Judged on every block that passed the other checks.
+void SampleGate::markHeld(int slot, double t, ImuReading& r) {
+  if (m_limits.heldSeconds <= 0.0) return;
+  auto mark = [&](Last& last, const Eigen::Vector3d& v, bool& held, std::uint64_t& count) {
+    if (last.have && v == last.value && t - last.changedT <= m_limits.heldSeconds) {
+      held = true;
+      ++count;
+      return;
+    }
+    if (!last.have || v != last.value) last.changedT = t;
+    last.value = v;
+    last.have = true;
+  };
+  mark(m_last[slot][0], r.gyr, r.gyrHeld, m_counters.held[2 * slot]);
+  mark(m_last[slot][1], r.acc, r.accHeld, m_counters.held[2 * slot + 1]);
+}
+
 ArmSample SampleGate::check(const ArmSample& s) {
   m_lastRefused = false;
   ArmSample out = s;
@@ -147,7 +188,9 @@ ArmSample SampleGate::check(const ArmSample& s) {
     if (const auto why = checkImu(slot, *r)) {
       count(b, *why, s.t);
       r.reset();
+      return;
     }
+    markHeld(slot, s.t, *r);
   };
   imu(out.upperArm, 0, SensorBlock::UpperArm);
   imu(out.forearm, 1, SensorBlock::Forearm);

@@ -29,6 +29,13 @@ struct PlausibilityLimits {
   /// An IMU block whose six values repeat bit for bit this many times in a row is stuck (a real
   /// sensor's noise changes at least one least significant bit). 0 turns the check off.
   int stuckSamples = 50;
+  /// A gyroscope or accelerometer value that repeats the sensor's previous one bit for bit,
+  /// within this many seconds of its last change, is held: a logger that repeats its last
+  /// sample when the sensor had nothing new (a 25 Hz accelerometer on a 90 Hz clock repeats
+  /// for up to 40 ms). It is kept in the sample but marked (ImuReading::gyrHeld, accHeld) so
+  /// the filter takes it as absent. A repeat that lasts longer is a constant signal (an ideal
+  /// simulation at rest) and stays a measurement until stuckSamples. 0 turns the check off.
+  double heldSeconds = 0.05;
   /// Optical points (Kinect elbow and wrist) farther than this from the shoulder (m) are not on
   /// the arm. The default is set from the arm's lengths by forGeometry().
   double maxReach = 2.0;
@@ -65,6 +72,9 @@ struct GateCounters {
   double lastT = 0.0;                    ///< s, time of the latest refusal
   SensorBlock firstBlock = SensorBlock::UpperArm;
   Implausible firstWhy = Implausible::NonFinite;
+  /// Held (repeated) values marked absent, not refused: upper-arm gyroscope, upper-arm
+  /// accelerometer, forearm gyroscope, forearm accelerometer. Not in total().
+  std::array<std::uint64_t, 4> held{};
 
   std::uint64_t total() const;
   std::uint64_t byReason(Implausible why) const;
@@ -72,6 +82,10 @@ struct GateCounters {
   /// One line for people, e.g. "refused 200 readings (saturated 200: upper-arm IMU 100,
   /// forearm IMU 100) between 5.000 s and 5.199 s"; empty when nothing was refused.
   std::string summary() const;
+  std::uint64_t totalHeld() const;
+  /// e.g. "took 4021 repeated (held) readings as absent: upper-arm gyroscope 1200, upper-arm
+  /// accelerometer 2100, ..."; empty when there were none.
+  std::string heldSummary() const;
 };
 
 /// Checks samples one at a time (it keeps a little state for the stuck check). Not thread-safe.
@@ -88,6 +102,7 @@ class SampleGate {
 
  private:
   std::optional<Implausible> checkImu(int slot, const ImuReading& r);
+  void markHeld(int slot, double t, ImuReading& r);
   void count(SensorBlock b, Implausible why, double t);
 
   PlausibilityLimits m_limits;
@@ -95,6 +110,13 @@ class SampleGate {
   std::array<ImuReading, 2> m_previous{};
   std::array<int, 2> m_repeats{0, 0};
   std::array<bool, 2> m_havePrevious{false, false};
+  // Held check: each sensor's last value and when it last changed (gyroscope, accelerometer).
+  struct Last {
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();
+    double changedT = 0.0;
+    bool have = false;
+  };
+  std::array<std::array<Last, 2>, 2> m_last{};
   bool m_lastRefused = false;
 };
 

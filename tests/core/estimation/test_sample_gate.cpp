@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+#include <string>
 
 #include "core/estimation/SampleGate.h"
 
@@ -164,6 +166,87 @@ TEST(SampleGate, SummarySaysWhatWhereAndWhen) {
       << text;
   EXPECT_NE(text.find("all zero 100: forearm IMU 100"), std::string::npos) << text;
   EXPECT_NE(text.find("between 5.000 s and 5.099 s"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace armtrack
+
+namespace armtrack {
+namespace {
+
+// A logger's 90 Hz clock with a 50 Hz gyroscope and a 25 Hz accelerometer: a row repeats a
+// sensor's previous value when no new sample came. Every repeat, and only the repeats, is marked
+// held and counted; nothing is refused.
+TEST(SampleGateHeld, MarksExactlyTheRepeatsOfALoggerClock) {
+  SampleGate gate;
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> n(0.0, 0.01);
+  ImuReading latest = reading(0.2, 9.8);
+  int lastGyr = -1, lastAcc = -1;
+  std::uint64_t repeatsGyr = 0, repeatsAcc = 0;
+  for (int row = 0; row < 900; ++row) {
+    const double t = row / 90.0;
+    const int g = static_cast<int>(std::floor(t * 50.0)), a = static_cast<int>(std::floor(t * 25.0));
+    const bool freshGyr = g != lastGyr, freshAcc = a != lastAcc;
+    if (freshGyr) latest.gyr += Eigen::Vector3d(n(rng), n(rng), n(rng));
+    if (freshAcc) latest.acc += Eigen::Vector3d(n(rng), n(rng), n(rng));
+    lastGyr = g;
+    lastAcc = a;
+    repeatsGyr += !freshGyr;
+    repeatsAcc += !freshAcc;
+    ArmSample s;
+    s.t = t;
+    s.upperArm = latest;
+    const ArmSample out = gate.check(s);
+    ASSERT_TRUE(out.upperArm) << row;
+    EXPECT_EQ(out.upperArm->gyrHeld, !freshGyr) << row;
+    EXPECT_EQ(out.upperArm->accHeld, !freshAcc) << row;
+    EXPECT_EQ(out.upperArm->gyr, latest.gyr);
+  }
+  ASSERT_GT(repeatsGyr, 300u);  // 4 of every 9 rows
+  ASSERT_GT(repeatsAcc, 600u);  // 13 of every 18
+  EXPECT_EQ(gate.counters().held[0], repeatsGyr);
+  EXPECT_EQ(gate.counters().held[1], repeatsAcc);
+  EXPECT_EQ(gate.counters().held[2] + gate.counters().held[3], 0u);
+  EXPECT_EQ(gate.counters().total(), 0u);  // held is not refused
+  EXPECT_EQ(gate.counters().heldSummary(),
+            "took " + std::to_string(repeatsGyr + repeatsAcc) +
+                " repeated (held) readings as absent: upper-arm gyroscope " +
+                std::to_string(repeatsGyr) + ", upper-arm accelerometer " +
+                std::to_string(repeatsAcc));
+}
+
+// A value that stays the same for longer than any internal sample period is a constant signal
+// (an ideal simulation at rest), not a held one: only its first heldSeconds are marked.
+TEST(SampleGateHeld, AConstantSignalIsHeldOnlyForHeldSeconds) {
+  PlausibilityLimits limits;
+  limits.stuckSamples = 0;
+  SampleGate gate(limits);
+  const ImuReading constant = reading(0.3, 9.8);
+  int held = 0;
+  for (int i = 0; i < 200; ++i) {  // 1 s at 200 Hz
+    ArmSample s;
+    s.t = i / 200.0;
+    s.forearm = constant;
+    const ArmSample out = gate.check(s);
+    ASSERT_TRUE(out.forearm);
+    held += out.forearm->gyrHeld;
+    if (i > 12) {
+      EXPECT_FALSE(out.forearm->gyrHeld) << i;
+    }
+  }
+  EXPECT_EQ(held, 10);  // 5 ms to 50 ms after the value last changed
+  // Off: nothing is marked.
+  limits.heldSeconds = 0.0;
+  SampleGate off(limits);
+  for (int i = 0; i < 20; ++i) {
+    ArmSample s;
+    s.t = i / 200.0;
+    s.forearm = constant;
+    const ArmSample out = off.check(s);
+    EXPECT_FALSE(out.forearm->gyrHeld || out.forearm->accHeld);
+  }
+  EXPECT_EQ(off.counters().totalHeld(), 0u);
 }
 
 }  // namespace
