@@ -272,6 +272,23 @@ void writeDiagnostics(std::ostream& err, const EstimateStats& st, const Estimato
     err << ". Shoulder angles there include the lean (status 4 in --out); a sternum IMU "
            "measures it.\n";
   }
+  if (c.implausible.totalHeld() > 0)
+    err << "filter: " << c.implausible.heldSummary()
+        << " (the logger repeated a sensor's last value: not a new measurement)\n";
+  if (c.restWindows[0] + c.restWindows[1] > 0) {
+    // The gyroscope bias taken from the still moments: said, so a large one can be questioned.
+    err << "filter: gyroscope bias at rest removed:";
+    const char* names[2] = {" upper arm ", " forearm "};
+    bool first = true;
+    for (int i = 0; i < 2; ++i) {
+      if (c.restWindows[i] == 0) continue;
+      err << (first ? "" : ",") << names[i] << fixed(c.restBias[i].norm() / kDeg, 2)
+          << " deg/s (from " << shortest(double(c.restWindows[i]) * params.restBias.windowSeconds)
+          << " s of rest)";
+      first = false;
+    }
+    err << "\n";
+  }
   const std::uint64_t gatedPixels = c.rejectedOutliers - c.gatedPositions;
   if (c.gatedPositions > 0)
     err << "kinect: " << c.opticalUpdates << " positions fused, " << c.gatedPositions

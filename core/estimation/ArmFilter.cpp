@@ -64,6 +64,7 @@ void ArmFilter<N>::reset() {
   m_pendingOptical.reset();
   m_gatedInARow = {0, 0, 0, 0};
   m_gate.reset();
+  for (RestBias& b : m_restBias) b.reset();
   m_matchedQ.setZero();
   m_jerkSquared = 0.0;
   m_jerkFrom.reset();
@@ -153,6 +154,13 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   m_t = s.t;
   m_prior.reset();
   BlockList blocks = gather(clean);
+  if (blocks.count == 0 && !hasOptical) {
+    // Every IMU value repeated the sensor's last one: nothing new was measured, and the
+    // prediction to this time is the estimate.
+    m_lastDataT = s.t;
+    finishUpdate();
+    return UpdateResult::Accepted;
+  }
   const Vec xBefore = m_x;
   const Mat pBefore = m_P;
   const bool optical = blocks.anyOptical();
@@ -242,9 +250,23 @@ ArmSample ArmFilter<N>::sanitise(const ArmSample& s) {
   if (!m_p.useOptical) c.elbow.reset(), c.wrist.reset();
   if (!m_camera) c.camWrist.reset(), c.camElbow.reset();
   c = m_gate.check(c);
-  if (m_gate.lastRefused()) {
+  if (m_gate.lastRefused() || m_gate.counters().totalHeld() != m_counters.implausible.totalHeld()) {
     m_counters.implausible = m_gate.counters();
     m_counters.rejectedNonFinite = m_counters.implausible.byReason(Implausible::NonFinite);
+  }
+  if (m_p.gyroBiasAtRest) {
+    std::optional<ImuReading>* imus[2] = {&c.upperArm, &c.forearm};
+    for (int i = 0; i < 2; ++i) {
+      if (!*imus[i]) continue;
+      RestBias& rb = m_restBias[i];
+      const std::uint64_t before = rb.windows();
+      rb.add(c.t, **imus[i]);
+      (*imus[i])->gyr -= rb.bias();
+      if (rb.windows() != before) {
+        m_counters.restBias[i] = rb.bias();
+        m_counters.restWindows[i] = rb.windows();
+      }
+    }
   }
   return c;
 }
@@ -266,13 +288,14 @@ BlockList ArmFilter<N>::gather(const ArmSample& s) const {
   const TrunkState* trunk = m_trunk && m_trunk->state().haveImu ? &m_trunk->state() : nullptr;
   const double gyroVar = m_p.gyroVariance + (trunk ? trunk->baseGyroVariance : 0.0);
   const double armAccelVar = accelVar + (trunk ? trunk->baseAccelVariance : 0.0);
+  // A held value (the logger repeating the sensor's last sample) is not a new measurement.
   if (s.upperArm) {
-    if (gyro) b.add(kUaGyr, s.upperArm->gyr, gyroVar);
-    b.add(kUaAcc, s.upperArm->acc, armAccelVar);
+    if (gyro && !s.upperArm->gyrHeld) b.add(kUaGyr, s.upperArm->gyr, gyroVar);
+    if (!s.upperArm->accHeld) b.add(kUaAcc, s.upperArm->acc, armAccelVar);
   }
   if (s.forearm) {
-    if (gyro) b.add(kFaGyr, s.forearm->gyr, gyroVar);
-    b.add(kFaAcc, s.forearm->acc, armAccelVar);
+    if (gyro && !s.forearm->gyrHeld) b.add(kFaGyr, s.forearm->gyr, gyroVar);
+    if (!s.forearm->accHeld) b.add(kFaAcc, s.forearm->acc, armAccelVar);
   }
   if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance + trunkPositionVariance(*s.elbow));
   if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance + trunkPositionVariance(*s.wrist));

@@ -16,6 +16,7 @@
 
 #include "core/ArmSample.h"
 #include "core/estimation/Heading.h"
+#include "core/estimation/RestBias.h"
 #include "core/estimation/SampleGate.h"
 #include "core/io/Recording.h"
 #include "core/kinematics/ArmModel.h"
@@ -149,6 +150,12 @@ struct EstimatorParams {
   /// What the sensors and an arm can produce; implausible blocks are refused before the filter
   /// sees them (core/estimation/SampleGate.h). maxReach is capped at 1.5 x (l3 + l6) + 0.2 m.
   PlausibilityLimits plausibility;
+
+  /// Each arm IMU's gyroscope bias is taken from the moments it is still (RestBias: the mean
+  /// rate over a still second, refined at each later rest) and subtracted from its readings.
+  /// Off: the readings as given (a calibration file's biases still apply before the filter).
+  bool gyroBiasAtRest = true;
+  RestBiasParams restBias;
 
   /// Webcam: the camera that sees the wrist and elbow markers (the recording's `camera` block).
   /// Without it, marker pixels are ignored.
@@ -289,6 +296,10 @@ struct EstimatorCounters {
   std::uint64_t cameraNotVisible = 0;   ///< marker pixels dropped: predicted point not in view
   /// Trunk IMU readings refused: non-finite, beyond a sensor's range, or no mounting known.
   std::uint64_t rejectedTrunk = 0;
+  /// Gyroscope bias found at rest (rad/s, the sensor's axes; a left arm's mirrored) and the
+  /// still windows it rests on: upper arm, forearm (EstimatorParams::gyroBiasAtRest).
+  std::array<Eigen::Vector3d, 2> restBias{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  std::array<std::uint64_t, 2> restWindows{0, 0};
 };
 
 enum class UpdateResult {

@@ -49,7 +49,11 @@ class ArmFilter final : public JointEstimator {
   static constexpr bool kAugmented = N > kBase;
 
   explicit ArmFilter(const EstimatorParams& p)
-      : m_p(mirrored(p)), m_model(p.model), m_up(m_p.gUp.normalized()), m_gate(gateLimits(m_p)) {
+      : m_p(mirrored(p)),
+        m_model(p.model),
+        m_up(m_p.gUp.normalized()),
+        m_gate(gateLimits(m_p)),
+        m_restBias{RestBias(m_p.restBias), RestBias(m_p.restBias)} {
     if (m_p.camera && m_p.useCamera) m_camera.emplace(*m_p.camera);  // throws on a bad camera
     m_base.up = m_p.gUp;
     reset();
@@ -274,6 +278,7 @@ class ArmFilter final : public JointEstimator {
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
   SampleGate m_gate;
+  std::array<RestBias, 2> m_restBias;
   EstimatorCounters m_counters;
   // Frame 0's motion for the predicted readings: still ({0, 0, 0, gUp}) until a trunk IMU speaks.
   FrameState<double> m_base;
