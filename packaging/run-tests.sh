@@ -4,11 +4,21 @@
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_BUILD_DIR:-$root/build}"
+# The seconds since the start at the end of each phase, printed as it ends and listed again on
+# exit (a failure included), so the next change to the CI's length knows where the time goes.
+phases=""
+phase() {
+  phases="$phases$(printf '%-12s %5d s' "$1" "$SECONDS")\n"
+  echo "run-tests: $1 done at ${SECONDS} s" >&2
+}
+trap 'printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
 
 bash "$root/packaging/deps-debian12.sh"
+phase deps
 # The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests.
 bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON
 cmake --build "$build" --parallel "$(nproc)"
+phase build
 
 # Benchmarks are figures, not pass/fail: print them before the test summary. bench_filter warms
 # its filter up again, untimed, each time its 2 s of data run out, so most of its run is not timed:
@@ -29,6 +39,7 @@ if [ -x "$build/tests/benchmarks/bench_import" ]; then
   "$build/tests/benchmarks/bench_import" --cli "$build/app/armtrack-cli" ||
     echo "import benchmark failed to run" >&2
 fi
+phase benchmarks
 
 cd "$build"
 # Two CTest "cpu" slots per core: a test that computes holds two, one measured to wait most of
@@ -39,7 +50,9 @@ printf '{"version": {"major": 1, "minor": 0}, "local": [{"cpu": [{"id": "0", "sl
   "$slots" >"$build/ctest-resources.json"
 ctest --output-on-failure --parallel "$slots" --resource-spec-file "$build/ctest-resources.json" \
   --timeout 600
+phase ctest
 
 # A short libFuzzer run of every protocol parser (about a minute in all); the long run is the same
 # script with more seconds per target.
 bash "$root/packaging/run-fuzzers.sh" "${ARMTRACK_FUZZ_SECONDS:-10}"
+phase fuzzers
