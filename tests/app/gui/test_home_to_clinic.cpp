@@ -30,6 +30,7 @@
 #include <QTableView>
 #include <QTableWidget>
 #include <QTcpServer>
+#include <tuple>
 
 #include "app/gui/admin/AdminDialogs.h"
 #include "app/gui/admin/AdminScreen.h"
@@ -54,6 +55,7 @@
 #include "app/sync/SyncState.h"
 #include "core/storage/Database.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
+#include "tests/app/server/TestCertificate.h"
 
 using namespace armtrack;
 using namespace armtrack::gui;
@@ -70,13 +72,7 @@ const QString kHomeAdmin = QStringLiteral("home-admin");
 const QString kExercise = QStringLiteral("Elbow flexion");
 const QString kComment = QStringLiteral("A little stiff");
 
-QString fileSha256(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return {};
-  QCryptographicHash h(QCryptographicHash::Sha256);
-  h.addData(&f);
-  return QString::fromLatin1(h.result().toHex());
-}
+using armtrack::test::fileSha256;
 }  // namespace
 
 class TestHomeToClinic : public QObject {
@@ -177,14 +173,8 @@ class TestHomeToClinic : public QObject {
   void initTestCase() {
     i18n::setLanguage(QStringLiteral("en"));
     // The certificate the clinic's server shows (the home install pins it at enrolment).
-    m_cert = m_dir.filePath(QStringLiteral("server.crt"));
-    m_key = m_dir.filePath(QStringLiteral("server.key"));
-    QProcess p;
-    p.start(
-        QStringLiteral("openssl"),
-        {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", m_key, "-out", m_cert, "-days",
-         "1", "-subj", "/CN=localhost", "-addext", "subjectAltName=DNS:localhost,IP:127.0.0.1"});
-    QVERIFY(p.waitForFinished(60000) && p.exitCode() == 0);
+    std::tie(m_cert, m_key) = armtrack::test::makeCertificate(m_dir);
+    QVERIFY(!m_cert.isEmpty());
     QTcpServer probe;
     QVERIFY(probe.listen(QHostAddress::LocalHost, 0));
     m_port = probe.serverPort();

@@ -16,6 +16,7 @@
 #include "app/server/Tls.h"
 #include "core/storage/SyncUploads.h"
 #include "tests/app/server/SyncTestClient.h"
+#include "tests/app/server/TestCertificate.h"
 #include "tests/core/storage/StorageTestSupport.h"
 
 namespace armtrack::server::test {
@@ -25,16 +26,7 @@ using namespace armtrack::storage::test;
 
 inline constexpr const char* kHomePassword = "home password 123";
 
-/// A self-signed certificate for localhost made with openssl; empty paths when it failed.
-inline std::pair<QString, QString> makeCertificate(const QTemporaryDir& dir) {
-  const QString cert = dir.filePath("cert.pem"), key = dir.filePath("key.pem");
-  QProcess p;
-  p.start("openssl",
-          {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key, "-out", cert, "-days",
-           "1", "-subj", "/CN=localhost", "-addext", "subjectAltName=DNS:localhost,IP:127.0.0.1"});
-  if (!p.waitForFinished(60000) || p.exitCode() != 0) return {};
-  return {cert, key};
-}
+using armtrack::test::makeCertificate;
 
 /// The records (SQLite) with patients P1 and P2 and their home accounts, a programme for P1,
 /// and armtrack-server's API on them behind TLS on a free loopback port.

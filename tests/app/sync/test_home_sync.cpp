@@ -17,6 +17,7 @@
 #include "app/server/Tls.h"
 #include "app/sync/HomeSyncClient.h"
 #include "app/sync/SyncState.h"
+#include "tests/app/server/TestCertificate.h"
 #include "tests/core/storage/StorageTestSupport.h"
 
 using namespace armtrack;
@@ -29,24 +30,8 @@ namespace {
 
 constexpr const char* kHomePassword = "home password 123";
 
-/// A self-signed certificate for localhost made with openssl, as test_sync_server makes it.
-std::pair<QString, QString> makeCertificate(const QTemporaryDir& dir, const QString& name) {
-  const QString cert = dir.filePath(name + ".crt"), key = dir.filePath(name + ".key");
-  QProcess p;
-  p.start("openssl",
-          {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", key, "-out", cert, "-days",
-           "1", "-subj", "/CN=localhost", "-addext", "subjectAltName=DNS:localhost,IP:127.0.0.1"});
-  if (!p.waitForFinished(60000) || p.exitCode() != 0) return {};
-  return {cert, key};
-}
-
-QString fileSha256(const QString& path) {
-  QFile f(path);
-  if (!f.open(QIODevice::ReadOnly)) return {};
-  QCryptographicHash h(QCryptographicHash::Sha256);
-  h.addData(&f);
-  return QString::fromLatin1(h.result().toHex());
-}
+using armtrack::test::fileSha256;
+using armtrack::test::makeCertificate;
 
 /// The clinic's records behind armtrack-server's code (started and stopped at will on one
 /// port), and a home install's own records with the same patient and home account.

@@ -10,6 +10,7 @@
 #include <QSignalSpy>
 #include <QTcpServer>
 #include <QTest>
+#include <tuple>
 
 #include "app/gui/home/HomeConnectScreen.h"
 #include "app/gui/home/HomeController.h"
@@ -22,6 +23,7 @@
 #include "app/server/SyncApi.h"
 #include "app/server/Tls.h"
 #include "app/sync/HomeSyncService.h"
+#include "tests/app/server/TestCertificate.h"
 #include "tests/core/storage/StorageTestSupport.h"
 #include "tests/support/GuiTestMain.h"
 
@@ -74,13 +76,8 @@ class TestHomeSyncWindow : public QObject {
  private slots:
   void initTestCase() {
     i18n::setLanguage("en");
-    m_cert = m_dir.filePath("server.crt");
-    m_key = m_dir.filePath("server.key");
-    QProcess p;
-    p.start("openssl", {"req", "-x509", "-newkey", "rsa:2048", "-nodes", "-keyout", m_key, "-out",
-                        m_cert, "-days", "1", "-subj", "/CN=localhost", "-addext",
-                        "subjectAltName=DNS:localhost,IP:127.0.0.1"});
-    QVERIFY(p.waitForFinished(60000) && p.exitCode() == 0);
+    std::tie(m_cert, m_key) = armtrack::test::makeCertificate(m_dir);
+    QVERIFY(!m_cert.isEmpty());
     m_clinic = std::make_unique<Fixture>();
     m_home = std::make_unique<Fixture>();
     for (Fixture* f : {m_clinic.get(), m_home.get()}) {
