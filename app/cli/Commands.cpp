@@ -244,7 +244,8 @@ int simulate(const std::vector<std::string>& args, std::ostream& out, std::ostre
   ignoredFor("--wheel-period", "shoulder-wheel");
   for (std::string_view o : {"--peak-rate", "--peak-accel"}) {
     if (a.flag(o) && name != "reaching" && name != "session")
-      err << "warning: " << o << " only applies to the reaching and session trajectories; ignored\n";
+      err << "warning: " << o
+          << " only applies to the reaching and session trajectories; ignored\n";
   }
 
   std::unique_ptr<Trajectory> trajectory;

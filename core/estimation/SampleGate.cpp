@@ -67,7 +67,8 @@ std::uint64_t GateCounters::byBlock(SensorBlock b) const {
 std::string GateCounters::summary() const {
   const std::uint64_t n = total();
   if (n == 0) return {};
-  std::string s = "refused " + std::to_string(n) + " implausible reading" + (n == 1 ? "" : "s") + " (";
+  std::string s =
+      "refused " + std::to_string(n) + " implausible reading" + (n == 1 ? "" : "s") + " (";
   bool firstReason = true;
   for (int w = 0; w < kNumImplausible; ++w) {
     const auto why = static_cast<Implausible>(w);

@@ -331,7 +331,8 @@ SessionTrajectory::SessionTrajectory(std::uint64_t seed, double peakRate, double
   std::array<std::uniform_real_distribution<double>, kNumJoints> joint;
   for (int j = 0; j < kNumJoints; ++j)
     joint[j] = std::uniform_real_distribution<double>(kReachLow[j], kReachHigh[j]);
-  std::uniform_real_distribution<double> hold(0.3, 0.8), rest(1.0, 3.0), jitter(-5 * kDeg, 5 * kDeg);
+  std::uniform_real_distribution<double> hold(0.3, 0.8), rest(1.0, 3.0),
+      jitter(-5 * kDeg, 5 * kDeg);
   auto moveTo = [&](const JointVector& next) {
     const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
     const double seconds =
@@ -359,8 +360,8 @@ JointMotion SessionTrajectory::at(double t) const {
 }
 
 std::vector<std::string> trajectoryNames() {
-  return {"sinusoid", "multi-joint",  "shoulder-wheel", "calibration",
-          "reaching", "session",      "sensor-check",   "exercise"};
+  return {"sinusoid", "multi-joint", "shoulder-wheel", "calibration",
+          "reaching", "session",     "sensor-check",   "exercise"};
 }
 
 std::unique_ptr<Trajectory> makeTrajectory(const std::string& name, const TrajectoryOptions& opts) {

@@ -55,7 +55,8 @@ TEST(RealSensors, AGyroscopeBiasIsFoundAtRestAndRemoved) {
     const SessionTrajectory traj(seed, 150 * kDeg, 1500 * kDeg, 40.0);
     SimulationParams sp = session(seed, 40.0, 200.0);
     const Recording clean = simulateRecording(traj, sp);
-    const Eigen::Vector3d biasUa(3 * kDeg, -3 * kDeg, 3 * kDeg), biasFa(-3 * kDeg, 3 * kDeg, 3 * kDeg);
+    const Eigen::Vector3d biasUa(3 * kDeg, -3 * kDeg, 3 * kDeg),
+        biasFa(-3 * kDeg, 3 * kDeg, 3 * kDeg);
     sp.upperArm.gyroBias = biasUa;
     sp.forearm.gyroBias = biasFa;
     const Recording biased = simulateRecording(traj, sp);
@@ -64,11 +65,12 @@ TEST(RealSensors, AGyroscopeBiasIsFoundAtRestAndRemoved) {
     EstimatorParams off = p;
     off.gyroBiasAtRest = false;
     const Result truth = run(clean, p), on = run(biased, p), left = run(biased, off);
-    std::printf("seed %llu RMSE (deg): unbiased %.2f %.2f %.2f %.2f %.2f | removed %.2f %.2f %.2f "
-                "%.2f %.2f | left in %.2f %.2f %.2f %.2f %.2f\n",
-                static_cast<unsigned long long>(seed), truth.rmse(0), truth.rmse(1), truth.rmse(2),
-                truth.rmse(3), truth.rmse(4), on.rmse(0), on.rmse(1), on.rmse(2), on.rmse(3),
-                on.rmse(4), left.rmse(0), left.rmse(1), left.rmse(2), left.rmse(3), left.rmse(4));
+    std::printf(
+        "seed %llu RMSE (deg): unbiased %.2f %.2f %.2f %.2f %.2f | removed %.2f %.2f %.2f "
+        "%.2f %.2f | left in %.2f %.2f %.2f %.2f %.2f\n",
+        static_cast<unsigned long long>(seed), truth.rmse(0), truth.rmse(1), truth.rmse(2),
+        truth.rmse(3), truth.rmse(4), on.rmse(0), on.rmse(1), on.rmse(2), on.rmse(3), on.rmse(4),
+        left.rmse(0), left.rmse(1), left.rmse(2), left.rmse(3), left.rmse(4));
     // The bias found: within 0.1 deg/s of the simulated one on every axis.
     ASSERT_GT(on.counters.restWindows[0], 5u);
     ASSERT_GT(on.counters.restWindows[1], 5u);
@@ -99,11 +101,12 @@ TEST(RealSensors, ALoggersRepeatedSamplesAreNotTakenForNewOnes) {
     EstimatorParams asNew = p;
     asNew.plausibility.heldSeconds = 0.0;
     const Result held = run(rec, p), fused = run(rec, asNew);
-    std::printf("seed %llu RMSE (deg): held left out %.2f %.2f %.2f %.2f %.2f | fused as new "
-                "%.2f %.2f %.2f %.2f %.2f\n",
-                static_cast<unsigned long long>(seed), held.rmse(0), held.rmse(1), held.rmse(2),
-                held.rmse(3), held.rmse(4), fused.rmse(0), fused.rmse(1), fused.rmse(2),
-                fused.rmse(3), fused.rmse(4));
+    std::printf(
+        "seed %llu RMSE (deg): held left out %.2f %.2f %.2f %.2f %.2f | fused as new "
+        "%.2f %.2f %.2f %.2f %.2f\n",
+        static_cast<unsigned long long>(seed), held.rmse(0), held.rmse(1), held.rmse(2),
+        held.rmse(3), held.rmse(4), fused.rmse(0), fused.rmse(1), fused.rmse(2), fused.rmse(3),
+        fused.rmse(4));
     // 4 of every 9 gyroscope rows and 13 of every 18 accelerometer rows repeat.
     const GateCounters& g = held.counters.implausible;
     const double rows = static_cast<double>(rec.samples.size());

@@ -186,7 +186,8 @@ TEST(SampleGateHeld, MarksExactlyTheRepeatsOfALoggerClock) {
   std::uint64_t repeatsGyr = 0, repeatsAcc = 0;
   for (int row = 0; row < 900; ++row) {
     const double t = row / 90.0;
-    const int g = static_cast<int>(std::floor(t * 50.0)), a = static_cast<int>(std::floor(t * 25.0));
+    const int g = static_cast<int>(std::floor(t * 50.0)),
+              a = static_cast<int>(std::floor(t * 25.0));
     const bool freshGyr = g != lastGyr, freshAcc = a != lastAcc;
     if (freshGyr) latest.gyr += Eigen::Vector3d(n(rng), n(rng), n(rng));
     if (freshAcc) latest.acc += Eigen::Vector3d(n(rng), n(rng), n(rng));
