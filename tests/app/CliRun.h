@@ -24,6 +24,19 @@ inline CliResult cli(const std::vector<std::string>& args) {
   return {code, out.str(), err.str()};
 }
 
+/// Per-joint RMSE (deg), th0..th5, from the table `estimate` prints when a recording has truth.
+inline std::vector<double> reportedRmse(const std::string& report) {
+  std::vector<double> rmse;
+  std::istringstream in(report);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("| th", 0) != 0) continue;
+    const auto a = line.find('|', 1), b = line.find('|', a + 1);
+    rmse.push_back(std::stod(line.substr(a + 1, b - a - 1)));
+  }
+  return rmse;
+}
+
 /// Runs the armtrack-cli executable at program with args, as a process of its own (reports need
 /// a QGuiApplication of their own, which the in-process tests' QCoreApplication rules out),
 /// without a desktop session's XDG_RUNTIME_DIR, as a cron job or root on a server runs it.

@@ -22,6 +22,7 @@ namespace {
 
 using armtrack::test::cli;
 using armtrack::test::CliResult;
+using armtrack::test::reportedRmse;
 
 class AutoCalibrationCli : public armtrack::test::TempDirTest {
  protected:
@@ -35,19 +36,6 @@ class AutoCalibrationCli : public armtrack::test::TempDirTest {
     return path(name);
   }
 };
-
-// Per-joint RMSE (deg) from estimate's report table.
-std::vector<double> reportedRmse(const std::string& report) {
-  std::vector<double> rmse;
-  std::istringstream in(report);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("| th", 0) != 0) continue;
-    const auto a = line.find('|', 1), b = line.find('|', a + 1);
-    rmse.push_back(std::stod(line.substr(a + 1, b - a - 1)));
-  }
-  return rmse;
-}
 
 std::string fileText(const fs::path& p) {
   std::ifstream in(p, std::ios::binary);

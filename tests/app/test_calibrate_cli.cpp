@@ -30,6 +30,7 @@ namespace armtrack {
 namespace {
 
 using armtrack::test::CliResult;
+using armtrack::test::reportedRmse;
 
 CliResult calibrateCli(const std::vector<std::string>& args) {
   std::ostringstream out, err;
@@ -166,19 +167,6 @@ TEST_F(CalibrateCliTest, UsageAndInputErrors) {
 // The whole workflow through the dispatcher: calibrate on the protocol, then "estimate
 // --calibration" on a session with the same mounting errors comes within 0.5 deg of a perfectly
 // mounted session, where "estimate" without it is off by degrees.
-
-// Per-joint RMSE (deg) from estimate's report table.
-std::vector<double> reportedRmse(const std::string& report) {
-  std::vector<double> rmse;
-  std::istringstream in(report);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("| th", 0) != 0) continue;
-    const auto a = line.find('|', 1), b = line.find('|', a + 1);
-    rmse.push_back(std::stod(line.substr(a + 1, b - a - 1)));
-  }
-  return rmse;
-}
 
 TEST_F(CalibrateCliTest, EstimateWithTheCalibrationMatchesPerfectMounting) {
   const std::vector<std::string> errors = {"--misalignment", "10", "--gyro-bias", "0.0087"};
