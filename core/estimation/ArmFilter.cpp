@@ -72,6 +72,8 @@ void ArmFilter<N>::reset() {
   m_lastMatchT = -std::numeric_limits<double>::infinity();
   m_recent.clear();
   m_recentStates.clear();
+  m_recentFrames.clear();
+  m_frameCamera.reset();
   m_badSince.reset();
   m_opticalDisagrees = false;
   m_fitAt.reset();

@@ -153,7 +153,9 @@ class ArmFilter final : public JointEstimator {
   void initialise(const ArmSample& s);
   void startCovariance(bool optical);
   void remember(const ArmSample& clean);
-  std::vector<ArmSample> recentSince(double t, std::vector<Vec15>* states = nullptr) const;
+  std::vector<ArmSample> recentSince(double t, std::vector<Vec15>* states = nullptr,
+                                     std::vector<WindowFrame>* frames = nullptr) const;
+  EstimatorParams paramsInFrame() const;
   static bool anyOptical(const std::vector<ArmSample>& w);
   std::vector<Vec15> fitSeeds(const ArmSample& last, const std::vector<ArmSample>& w) const;
   bool refitFromWindow(double since);
@@ -255,6 +257,9 @@ class ArmFilter final : public JointEstimator {
   // The last accelerometer update: its time and joint accelerations (trackJerk).
   std::optional<std::pair<double, JointVector>> m_jerkFrom;
   std::deque<ArmSample> m_recent;    // fused samples of the last fitWindowSeconds
+  // Frame 0 at each of m_recent while a trunk IMU moves it (empty for a still trunk): window fits
+  // predict each sample from the trunk's motion and the camera as they were then.
+  std::deque<WindowFrame> m_recentFrames;
   std::optional<double> m_fitAt;     // when the start-up window fit is due (s)
   std::optional<double> m_badSince;  // start of a run of inconsistent IMU updates (s)
   double m_updateNis = 0.0;          // normalised innovation squared of the last update (IMU rows)
@@ -275,6 +280,7 @@ class ArmFilter final : public JointEstimator {
   mutable std::optional<std::pair<JointVector, HeadingGeometry>> m_geometry;  // th, its geometry
   std::optional<ArmSample> m_pendingOptical;
   std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
+  std::optional<CameraParams> m_frameCamera;  // the camera as frame 0 sees it, with a trunk IMU
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
   SampleGate m_gate;

@@ -26,7 +26,7 @@ void ArmFilter<N>::initialise(const ArmSample& s) {
   m_pendingOptical.reset();
   m_p.model = m_model;  // every (re)start begins on the start-up model, until handOver()
   m_p.model = startupModel(m_p);
-  const InitialPose pose = initialPose(m_p, first);
+  const InitialPose pose = initialPose(paramsInFrame(), first);
   m_x.setZero();
   m_x.template segment<5>(5) = pose.thd;
   m_x.template segment<5>(10) = pose.th;
@@ -37,6 +37,7 @@ void ArmFilter<N>::initialise(const ArmSample& s) {
   m_t = m_t0 = m_lastDataT = s.t;
   m_recent.clear();
   m_recentStates.clear();
+  m_recentFrames.clear();
   m_badSince.reset();
   m_opticalDisagrees = false;
   m_matchedQ.setZero();
@@ -83,19 +84,39 @@ void ArmFilter<N>::remember(const ArmSample& clean) {
   kept.estimate.reset();
   m_recent.push_back(std::move(kept));
   m_recentStates.push_back(m_x.template head<kBase>());
+  const bool moving = m_trunk && m_trunk->state().haveImu;
+  if (moving && m_recentFrames.size() + 1 == m_recent.size())
+    m_recentFrames.push_back({m_base, m_frameCamera});
+  else
+    m_recentFrames.clear();  // a trunk seen from here on: the window before it was still
   while (!m_recent.empty() && m_recent.front().t < m_t - m_p.fitWindowSeconds) {
     m_recent.pop_front();
     m_recentStates.pop_front();
+    if (!m_recentFrames.empty()) m_recentFrames.pop_front();
   }
 }
 
+// The parameters as frame 0 is now: gravity along the trunk's present up, and the camera as
+// the trunk sees it. For a still trunk, the parameters themselves.
 template <int N>
-std::vector<ArmSample> ArmFilter<N>::recentSince(double t, std::vector<Vec15>* states) const {
+EstimatorParams ArmFilter<N>::paramsInFrame() const {
+  EstimatorParams p = m_p;
+  if (!m_trunk || !m_trunk->state().haveImu) return p;
+  p.gUp = m_base.up;
+  if (m_frameCamera) p.camera = m_frameCamera;
+  return p;
+}
+
+template <int N>
+std::vector<ArmSample> ArmFilter<N>::recentSince(double t, std::vector<Vec15>* states,
+                                                 std::vector<WindowFrame>* frames) const {
   std::vector<ArmSample> w;
+  const bool haveFrames = m_recentFrames.size() == m_recent.size();
   for (std::size_t i = 0; i < m_recent.size(); ++i) {
     if (m_recent[i].t < t) continue;
     w.push_back(m_recent[i]);
     if (states) states->push_back(m_recentStates[i]);
+    if (frames && haveFrames) frames->push_back(m_recentFrames[i]);
   }
   return w;
 }
@@ -116,7 +137,8 @@ std::vector<Vec15> ArmFilter<N>::fitSeeds(const ArmSample& last,
                                           const std::vector<ArmSample>& w) const {
   std::vector<Vec15> seeds{m_x.template head<kBase>()};
   if (!anyOptical(w) && std::isfinite(m_lastOpticalT)) return seeds;
-  const InitialPose pose = initialPose(m_p, last);
+  const EstimatorParams now = paramsInFrame();
+  const InitialPose pose = initialPose(now, last);
   Vec15 x = Vec15::Zero();
   x.template segment<5>(5) = pose.thd;
   x.template segment<5>(10) = pose.th;
@@ -134,7 +156,7 @@ std::vector<Vec15> ArmFilter<N>::fitSeeds(const ArmSample& last,
       break;
     }
     if (!merged.hasImu()) break;
-    const InitialPose at = initialPose(m_p, merged);
+    const InitialPose at = initialPose(now, merged);
     Vec15 y = Vec15::Zero();
     y.template segment<5>(5) = at.thd;
     y.template segment<5>(10) = at.th + at.thd * (last.t - it->t);
@@ -149,16 +171,19 @@ std::vector<Vec15> ArmFilter<N>::fitSeeds(const ArmSample& last,
 template <int N>
 bool ArmFilter<N>::refitFromWindow(double since) {
   std::vector<Vec15> states;
-  const std::vector<ArmSample> w = recentSince(since, &states);
+  std::vector<WindowFrame> frames;
+  const std::vector<ArmSample> w = recentSince(since, &states, &frames);
   if (w.size() < 2) return false;
+  const std::vector<WindowFrame>* moving = frames.empty() ? nullptr : &frames;
+  const EstimatorParams now = paramsInFrame();
   // A window without optical data: the fit cannot see the heading, so it holds the running
   // state's (an optical fix's, or the start pose's), and the heading keeps the variance it had.
   // Left free, it would take whichever heading its seed had.
   std::optional<JointVector> anchor;
   if (!anyOptical(w)) anchor = m_x.template segment<5>(10);
-  const WindowFitResult fit = fitWindow(m_p, w, fitSeeds(w.back(), w), anchor);
+  const WindowFitResult fit = fitWindow(now, w, fitSeeds(w.back(), w), anchor, 60, moving);
   if (!fit.explains(kGoodFitRms) || !inAnatomicalRange(fit.x)) return false;
-  if (!(fit.rms < kRefitGain * trajectoryRms(m_p, w, states))) return false;
+  if (!(fit.rms < kRefitGain * trajectoryRms(now, w, states, moving))) return false;
   const Vec u = headingAngles(m_x);
   const double headingVar = u.dot(m_P * u) + headingShortfall(u);
   takeFit(fit, w);
@@ -217,11 +242,14 @@ template <int N>
 UpdateResult ArmFilter<N>::recover(const ArmSample& last) {
   ++m_counters.recoveries;
   m_badSince.reset();
-  const std::vector<ArmSample> w = recentSince(m_t - m_p.fitWindowSeconds);
+  std::vector<WindowFrame> frames;
+  const std::vector<ArmSample> w = recentSince(m_t - m_p.fitWindowSeconds, nullptr, &frames);
   const std::vector<Vec15> seeds = fitSeeds(last, w);
+  const EstimatorParams now = paramsInFrame();
   initialise(last);  // fresh covariance, start-up noise and iterations, a new start-up fit
   if (w.size() >= 2) {
-    const WindowFitResult fit = fitWindow(m_p, w, seeds);
+    const WindowFitResult fit =
+        fitWindow(now, w, seeds, std::nullopt, 60, frames.empty() ? nullptr : &frames);
     if (fit.explains(kGoodFitRms) && inAnatomicalRange(fit.x)) takeFit(fit, w);
   }
   remember(last);
@@ -321,8 +349,9 @@ void ArmFilter<N>::handOver() {
 template void ArmFilter<kBase>::initialise(const ArmSample& s);
 template void ArmFilter<kBase>::startCovariance(bool optical);
 template void ArmFilter<kBase>::remember(const ArmSample& clean);
-template std::vector<ArmSample> ArmFilter<kBase>::recentSince(double t,
-                                                              std::vector<Vec15>* states) const;
+template std::vector<ArmSample> ArmFilter<kBase>::recentSince(
+    double t, std::vector<Vec15>* states, std::vector<WindowFrame>* frames) const;
+template EstimatorParams ArmFilter<kBase>::paramsInFrame() const;
 template bool ArmFilter<kBase>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase>::fitSeeds(const ArmSample& last,
                                                        const std::vector<ArmSample>& w) const;
@@ -340,8 +369,9 @@ template void ArmFilter<kBase>::handOver();
 template void ArmFilter<kBase + 6>::initialise(const ArmSample& s);
 template void ArmFilter<kBase + 6>::startCovariance(bool optical);
 template void ArmFilter<kBase + 6>::remember(const ArmSample& clean);
-template std::vector<ArmSample> ArmFilter<kBase + 6>::recentSince(double t,
-                                                                  std::vector<Vec15>* states) const;
+template std::vector<ArmSample> ArmFilter<kBase + 6>::recentSince(
+    double t, std::vector<Vec15>* states, std::vector<WindowFrame>* frames) const;
+template EstimatorParams ArmFilter<kBase + 6>::paramsInFrame() const;
 template bool ArmFilter<kBase + 6>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase + 6>::fitSeeds(const ArmSample& last,
                                                            const std::vector<ArmSample>& w) const;

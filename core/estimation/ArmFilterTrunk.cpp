@@ -88,7 +88,8 @@ void ArmFilter<N>::applyTrunk(ArmSample& s) {
   if (s.elbow) s.elbow = rt * (*s.elbow - ts.shoulder);
   if (s.wrist) s.wrist = rt * (*s.wrist - ts.shoulder);
   if (m_camera && m_p.camera && (s.camWrist || s.camElbow)) {
-    m_camera.emplace(cameraInFrame0(*m_p.camera, ts, m_p.side));
+    m_frameCamera = cameraInFrame0(*m_p.camera, ts, m_p.side);
+    m_camera.emplace(*m_frameCamera);
   }
 }
 

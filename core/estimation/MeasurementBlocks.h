@@ -111,11 +111,12 @@ void predictBase(const EstimatorParams& p, const Eigen::Matrix<T, kBase, 1>& x,
 
 inline void predictBaseWithJacobian(const EstimatorParams& p, const Vec15& x,
                                     Eigen::Matrix<double, kModelRows, 1>& h,
-                                    Eigen::Matrix<double, kModelRows, kBase>& jac) {
+                                    Eigen::Matrix<double, kModelRows, kBase>& jac,
+                                    const FrameState<double>* base = nullptr) {
   Eigen::Matrix<AD, kBase, 1> xa;
   for (int i = 0; i < kBase; ++i) xa(i) = AD(x(i), kBase, i);
   Eigen::Matrix<AD, kModelRows, 1> out;
-  predictBase<AD>(p, xa, out);
+  predictBase<AD>(p, xa, out, base);
   for (int i = 0; i < kModelRows; ++i) {
     h(i) = out(i).value();
     jac.row(i) = out(i).derivatives().transpose();

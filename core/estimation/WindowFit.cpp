@@ -8,6 +8,9 @@
 #include <memory>
 #include <numbers>
 
+#include "core/camera/PinholeCamera.h"
+#include "core/estimation/MeasurementBlocks.h"
+
 namespace armtrack {
 namespace {
 
@@ -47,8 +50,13 @@ Vec15 stateAt(const double* const* coeffs, double tau, double span) {
 // The readings of one sample (or its optical part) against the motion at its time.
 class SampleCost final : public ceres::CostFunction {
  public:
-  SampleCost(const EstimatorParams& p, const ArmSample& s, double tau, double span, bool imuPart)
+  SampleCost(const EstimatorParams& p, const ArmSample& s, double tau, double span, bool imuPart,
+             const WindowFrame* frame = nullptr)
       : m_p(p), m_tau(tau), m_span(span) {
+    if (frame) {
+      m_base = frame->base;
+      if (frame->camera) m_camera.emplace(*frame->camera);
+    }
     const bool gyro = p.model != MeasurementModel::Inclinometer;
     const double sg = std::sqrt(p.gyroVariance), sa = std::sqrt(p.accelVariance);
     const double sp = std::sqrt(p.positionVariance), spx = std::sqrt(p.pixelVariance);
@@ -84,9 +92,17 @@ class SampleCost final : public ceres::CostFunction {
     dx.setZero();
     int row = 0;
     if (!m_blocks.empty()) {
-      const Eigen::Matrix<double, 18, 1> h = predictAll(m_p, x);
+      const FrameState<double>* base = m_base ? &*m_base : nullptr;
+      Eigen::Matrix<double, 18, 1> h;
       Eigen::Matrix<double, 18, 15> jac;
-      if (jacobians) jac = predictAllJacobian(m_p, x);
+      if (!base) {
+        h = predictAll(m_p, x);
+        if (jacobians) jac = predictAllJacobian(m_p, x);
+      } else if (jacobians) {
+        detail::predictBaseWithJacobian(m_p, x, h, jac, base);
+      } else {
+        detail::predictBase<double>(m_p, x, h, base);
+      }
       for (const Block& b : m_blocks) {
         r.segment<3>(row) = (h.segment<3>(b.offset) - b.z) / b.sigma;
         if (jacobians) dx.middleRows<3>(row) = jac.middleRows<3>(b.offset) / b.sigma;
@@ -96,7 +112,7 @@ class SampleCost final : public ceres::CostFunction {
     for (const Pixel& px : m_pixels) {
       Eigen::Vector2d predicted;
       Eigen::Matrix<double, 2, 15> jac;
-      if (predictMarkerPixel(m_p, x, px.wrist, predicted, jacobians ? &jac : nullptr)) {
+      if (pixel(x, px.wrist, predicted, jacobians ? &jac : nullptr)) {
         r.segment<2>(row) = (predicted - px.z) / px.sigma;
         if (jacobians) dx.middleRows<2>(row) = jac / px.sigma;
       } else {
@@ -118,6 +134,17 @@ class SampleCost final : public ceres::CostFunction {
   }
 
  private:
+  // The marker's pixel from the camera as frame 0 saw it, or params.camera for a still trunk.
+  bool pixel(const Vec15& x, bool wrist, Eigen::Vector2d& out, Eigen::Matrix<double, 2, 15>* jac) const {
+    if (!m_camera) return predictMarkerPixel(m_p, x, wrist, out, jac);
+    Eigen::Matrix<double, 18, 1> h;
+    Eigen::Matrix<double, 18, 15> all;
+    detail::predictBaseWithJacobian(m_p, x, h, all, m_base ? &*m_base : nullptr);
+    const int row = wrist ? 15 : 12;
+    const Eigen::Matrix<double, 3, 15> dp = all.middleRows<3>(row);
+    return detail::markerPixel(*m_camera, m_p.side == Side::Left, h.segment<3>(row), &dp, out, jac);
+  }
+
   struct Block {
     int offset;
     Eigen::Vector3d z;
@@ -134,6 +161,8 @@ class SampleCost final : public ceres::CostFunction {
 
   const EstimatorParams& m_p;
   double m_tau, m_span;
+  std::optional<FrameState<double>> m_base;  // frame 0's motion; none: a still trunk
+  std::optional<PinholeCamera> m_camera;     // the camera seen from frame 0; none: params'
   std::vector<Block> m_blocks;
   std::vector<Pixel> m_pixels;
 };
@@ -175,7 +204,7 @@ double spanOf(const std::vector<ArmSample>& window) {
 int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
                  const std::vector<ArmSample>& window, int maxImuSamples,
                  std::array<std::array<double, kCoeffs>, kNumJoints>& coeffs,
-                 std::vector<const SampleCost*>& costs) {
+                 std::vector<const SampleCost*>& costs, const std::vector<WindowFrame>* frames) {
   const double tEnd = window.back().t;
   const double span = spanOf(window);
   std::vector<double*> blocks;
@@ -186,14 +215,16 @@ int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
   double next = 0.0;
   std::size_t imuIndex = 0;
   int rows = 0;
-  for (const ArmSample& s : window) {
+  for (std::size_t i = 0; i < window.size(); ++i) {
+    const ArmSample& s = window[i];
+    const WindowFrame* frame = frames && i < frames->size() ? &(*frames)[i] : nullptr;
     const double tau = s.t - tEnd;
     if (s.hasImu()) {
       // Thin evenly, always keeping the last IMU sample (where the state is wanted).
       const bool last = imuIndex + 1 == imuCount;
       if (double(imuIndex) >= next || last) {
         next += every;
-        auto* cost = new SampleCost(p, s, tau, span, true);
+        auto* cost = new SampleCost(p, s, tau, span, true, frame);
         if (cost->rows() > 0) {
           rows += cost->rows();
           costs.push_back(cost);
@@ -207,7 +238,7 @@ int buildProblem(ceres::Problem& problem, const EstimatorParams& p,
       }
       ++imuIndex;
     }
-    auto* optical = new SampleCost(p, s, tau, span, false);
+    auto* optical = new SampleCost(p, s, tau, span, false, frame);
     if (optical->rows() > 0) {
       rows += optical->rows();
       costs.push_back(optical);
@@ -243,7 +274,8 @@ std::array<std::array<double, kCoeffs>, kNumJoints> coeffsOf(const EstimatorPara
 
 WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
                           const std::vector<Vec15>& seeds,
-                          const std::optional<JointVector>& headingAnchor, int maxImuSamples) {
+                          const std::optional<JointVector>& headingAnchor, int maxImuSamples,
+                          const std::vector<WindowFrame>* frames) {
   WindowFitResult best;
   if (window.empty() || seeds.empty()) return best;
   best.tEnd = window.back().t;
@@ -252,7 +284,7 @@ WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSa
     auto coeffs = coeffsOf(params, seed, spanOf(window));
     ceres::Problem problem;
     std::vector<const SampleCost*> costs;  // owned by the problem
-    const int rows = buildProblem(problem, params, window, maxImuSamples, coeffs, costs);
+    const int rows = buildProblem(problem, params, window, maxImuSamples, coeffs, costs, frames);
     if (rows == 0) return best;
     if (headingAnchor) {
       std::vector<double*> blocks;
@@ -303,7 +335,7 @@ WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSa
 }
 
 double trajectoryRms(const EstimatorParams& params, const std::vector<ArmSample>& window,
-                     const std::vector<Vec15>& states) {
+                     const std::vector<Vec15>& states, const std::vector<WindowFrame>* frames) {
   double sum = 0.0;
   int rows = 0;
   std::array<std::array<double, kCoeffs>, kNumJoints> coeffs{};
@@ -313,7 +345,8 @@ double trajectoryRms(const EstimatorParams& params, const std::vector<ArmSample>
     // The state itself as a constant motion evaluated at tau = 0.
     coeffs = coeffsOf(params, states[i], 1.0);
     for (bool imu : {true, false}) {
-      const SampleCost cost(params, window[i], 0.0, 1.0, imu);
+      const SampleCost cost(params, window[i], 0.0, 1.0, imu,
+                            frames && i < frames->size() ? &(*frames)[i] : nullptr);
       if (cost.rows() == 0) continue;
       Eigen::VectorXd r(cost.rows());
       if (!cost.Evaluate(ptrs.data(), r.data(), nullptr))

@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "core/ArmSample.h"
+#include "core/camera/CameraParams.h"
 #include "core/estimation/ArmFilter.h"
+#include "core/kinematics/ArmModel.h"
 
 namespace armtrack {
 
@@ -33,6 +35,14 @@ struct WindowFitResult {
   }
 };
 
+/// Frame 0 at one sample of a window, when the trunk moves (docs/estimator.md, "Trunk"): its
+/// motion, which enters every IMU reading (gravity's direction among it), and the camera as seen
+/// from it. A window without frames is one of a still trunk: gravity params.gUp, params.camera.
+struct WindowFrame {
+  FrameState<double> base;
+  std::optional<CameraParams> camera;
+};
+
 /// Fits th(t) as a cubic per active joint over `window` (time-ordered samples already in the
 /// filter's right-arm frame, implausible blocks removed) to every IMU and optical reading in it,
 /// through the filter's own measurement model (params.model, params.camera), with a robust loss
@@ -43,14 +53,18 @@ struct WindowFitResult {
 /// With headingAnchor (angles, rad), the heading of the fitted angles at the window's end is held
 /// at the anchor's (a residual of 0.5 deg along the heading direction at the anchor): for windows
 /// without optical data, where nothing else fixes it.
+/// With frames (frames[i] belongs to window[i]), each sample is predicted from frame 0 as it was
+/// then: a moving trunk's rates, the shoulder's acceleration and the tilted gravity.
 WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
                           const std::vector<Eigen::Matrix<double, 15, 1>>& seeds,
                           const std::optional<JointVector>& headingAnchor = std::nullopt,
-                          int maxImuSamples = 60);
+                          int maxImuSamples = 60,
+                          const std::vector<WindowFrame>* frames = nullptr);
 
 /// Whitened residual RMS of a filter's own states over the window (states[i] belongs to
 /// window[i]), without a robust loss: how well the running filter explains the same data.
 double trajectoryRms(const EstimatorParams& params, const std::vector<ArmSample>& window,
-                     const std::vector<Eigen::Matrix<double, 15, 1>>& states);
+                     const std::vector<Eigen::Matrix<double, 15, 1>>& states,
+                     const std::vector<WindowFrame>* frames = nullptr);
 
 }  // namespace armtrack
