@@ -196,6 +196,9 @@ void ArmFilter<N>::fitHipFromArm(const ArmSample& s) {
 template <int N>
 void ArmFilter<N>::addTrunkVariance(const JointVector& th, JointVector& var) const {
   if (!m_trunk || !m_trunk->state().haveImu) return;
+  // Without optical data the trunk's pose reaches the arm's angles through gravity alone (the
+  // inclination, tracked to a few hundredths of a degree), not through any point: nothing to add.
+  if (!std::isfinite(m_lastOpticalT)) return;
   const TrunkState& ts = m_trunk->state();
   const Eigen::Matrix3d rt = ts.rotation.transpose();
   const Eigen::Matrix3d rotCov = rt * ts.rotationCov * ts.rotation;  // frame 0

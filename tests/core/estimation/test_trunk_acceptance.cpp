@@ -168,9 +168,12 @@ TEST(TrunkAcceptance, WithSternumImuAndOpticsEveryAngleUnderOneDegree) {
 // median seed, and the seeds where leaning is over 1 deg worse are counted and printed.
 //
 // The issue asks for "no worse". Measured: the median seed's elbow 0.05-0.15 deg and humerus
-// 0.1-0.5 deg worse than with a still trunk (which is at 0.04-0.10 deg), and 1-3 seeds of 10 over
-// 1 deg worse. That is not yet met (docs/estimator.md, "Trunk"); the bounds below hold today's
-// figures so that they do not slip, they do not claim the target.
+// 0.1-0.45 deg worse than with a still trunk (which is at 0.04-0.10 deg), and 0-2 seeds of 10
+// over 1 deg worse (1-3 before recoveries were fitted in the leaning frame). That is not yet met
+// (docs/estimator.md, "Trunk"); the bounds below hold today's figures so that they do not slip,
+// they do not claim the target. The same holds for the elbow's two-sigma coverage, 81-95 % (the
+// seeds whose arm is lost count against it); it was 100 % when the trunk's unseen heading was
+// wrongly added to the elbow's sd (8-10 deg for an error of 0.1 deg).
 TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
   const auto median = [](std::vector<double> v) {
     std::sort(v.begin(), v.end());
@@ -181,6 +184,8 @@ TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
       std::vector<double> elevationMoving, elevationStill, elbowMoving, elbowStill;
       Eigen::Vector3d trunkSq = Eigen::Vector3d::Zero();
       double trunkCount = 0;
+      JointVector elbowInside = JointVector::Zero();
+      double armCount = 0;
       int worse = 0;
       for (std::uint64_t seed = 501; seed <= 510; ++seed) {
         Tally moving, still;
@@ -188,6 +193,8 @@ TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
         run(leaning(seed, side, Optics::None, rate, 0.0, false), still);
         trunkSq += moving.trunkSq;
         trunkCount += moving.trunkCount;
+        elbowInside += moving.armInside;
+        armCount += moving.armCount;
         const double em = moving.armRmseDeg().tail<2>().maxCoeff();
         const double es = still.armRmseDeg().tail<2>().maxCoeff();
         elevationMoving.push_back(moving.elevationRmseDeg());
@@ -203,6 +210,10 @@ TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
         }
       }
       const Eigen::Vector3d trunkRmse = (trunkSq / trunkCount).cwiseSqrt() / kDegree;
+      const JointVector inside = elbowInside / std::max(armCount, 1.0) * 100.0;
+      std::printf("[ measured ] IMUs only, %s arm, %.0f deg/s: elbow inside 2 sd %.0f %%, "
+                  "pronation %.0f %%\n",
+                  sideName(side).c_str(), rate, inside(3), inside(4));
       std::printf("[ measured ] IMUs only, %s arm, %.0f deg/s, median seed: elbow %.2f deg leaning "
                   "vs %.2f still, elevation %.2f vs %.2f; trunk RMSE %.2f %.2f %.2f deg; %d of 10 "
                   "seeds over 1 deg worse\n",
@@ -213,7 +224,11 @@ TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
       EXPECT_LT(trunkRmse(1), 1.0);
       EXPECT_LE(median(elbowMoving), median(elbowStill) + 0.25);
       EXPECT_LE(median(elevationMoving), median(elevationStill) + 0.75);
-      EXPECT_LE(worse, 4);
+      EXPECT_LE(worse, 2);
+      for (int j = 3; j < kNumJoints; ++j) {
+        EXPECT_GE(inside(j), 75.0) << "joint " << j;
+        EXPECT_LE(inside(j), 99.0) << "joint " << j;
+      }
     }
   }
 }
