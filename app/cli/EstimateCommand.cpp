@@ -50,6 +50,10 @@ Options:
   --no-webcam              ignore the webcam's marker pixels (used when the sidecar has a
                            camera block)
   --joint-accel-std DEG_S2 joint-acceleration process noise std (default 1, the paper's Table 5)
+  --gyro-noise-std DEG_S   the gyroscopes' white noise per axis (default 0.32, Table 5's
+                           0.0055 rad/s), for sensors known to be noisier
+  --accel-noise-std M_S2   the accelerometers' white noise per axis (default 0.1, Table 5's
+                           variance 0.01 m^2/s^4)
   --calibration FILE       apply a calibration made by "armtrack-cli calibrate" (IMU mounting,
                            gyroscope biases, segment lengths; docs/calibration.md)
   --no-auto-calibration    without --calibration, do not try the calibration from movement on
@@ -87,6 +91,9 @@ Setup parseSetup(const Args& a) {
   s.options.useCamera = !a.flag("--no-webcam");
   if (a.flag("--joint-accel-std"))
     s.options.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
+  if (a.flag("--gyro-noise-std"))
+    s.options.gyroNoiseStdDeg = a.positive("--gyro-noise-std", 1.0);
+  if (a.flag("--accel-noise-std")) s.options.accelNoiseStd = a.positive("--accel-noise-std", 1.0);
   if (a.flag("--calibration")) s.calibration = a.required("--calibration");
   s.autoCalibration = !a.flag("--no-auto-calibration");
   s.overwrite = a.flag("--overwrite");
@@ -177,7 +184,8 @@ int estimateTaoHu(const Args& a, const fs::path& input, const std::optional<fs::
                    [](const ArmSample& s) { return s.hasImu(); }))
     throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
   for (std::string_view o :
-       {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std", "--no-auto-calibration"}) {
+       {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std", "--gyro-noise-std",
+        "--accel-noise-std", "--no-auto-calibration"}) {
     if (a.flag(o)) err << "warning: " << o << " does not apply to --method tao-hu; ignored\n";
   }
   std::optional<CsvOutput> writer;
@@ -373,6 +381,8 @@ int estimateCommand(const std::vector<std::string>& args, std::ostream& out, std
                 {"--no-kinect", false},
                 {"--no-webcam", false},
                 {"--joint-accel-std", true},
+                {"--gyro-noise-std", true},
+                {"--accel-noise-std", true},
                 {"--calibration", true},
                 {"--no-auto-calibration", false},
                 {"--out", true},

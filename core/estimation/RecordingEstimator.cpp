@@ -32,6 +32,11 @@ EstimatorParams estimatorParamsFor(const RecordingMeta& meta, const EstimateOpti
     const double s = *options.jointAccelStdDeg * kDeg;
     p.jointAccelVariance = s * s;
   }
+  if (options.gyroNoiseStdDeg) {
+    const double s = *options.gyroNoiseStdDeg * kDeg;
+    p.gyroVariance = s * s;
+  }
+  if (options.accelNoiseStd) p.accelVariance = *options.accelNoiseStd * *options.accelNoiseStd;
   return p;
 }
 

@@ -26,6 +26,10 @@ struct EstimateOptions {
   bool useOptical = true;  ///< fuse Kinect positions
   bool useCamera = true;   ///< fuse webcam marker pixels (when the sidecar has a camera)
   std::optional<double> jointAccelStdDeg;  ///< deg/s^2; empty keeps the library default
+  /// The IMUs' measurement noise (white, per axis), for sensors noisier than Table 5's:
+  /// gyroscopes in deg/s, accelerometers in m/s^2. Empty keeps the library default.
+  std::optional<double> gyroNoiseStdDeg;
+  std::optional<double> accelNoiseStd;
 };
 
 /// Filter parameters: geometry, gravity, side and camera from the sidecar, the rest from options.

@@ -205,6 +205,39 @@ TEST_F(CliTest, MethodBAndUkfAccepted) {
   EXPECT_TRUE(fs::exists(path("u.csv")));
 }
 
+// The IMUs' noise can be set for sensors noisier than Table 5's: a larger noise must widen every
+// joint's standard deviation (the filter trusts the readings less), and a noise that is not a
+// positive number is a usage error naming the option.
+TEST_F(CliTest, ImuNoiseOptionsWidenTheStandardDeviations) {
+  const fs::path rec = simulated(3.0);
+  const auto meanSd = [&](const std::vector<std::string>& extra, const std::string& name) {
+    std::vector<std::string> args = {"estimate", rec.string(), "--out", path(name).string()};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliResult r = cli(args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::vector<double> sum(5, 0.0);
+    const auto lines = readLines(path(name));
+    for (std::size_t i = 1; i < lines.size(); ++i) {
+      std::vector<double> v;
+      std::istringstream row(lines[i]);
+      for (std::string cell; std::getline(row, cell, ',');) v.push_back(std::stod(cell));
+      for (int j = 0; j < 5; ++j) sum[j] += v.at(6 + j) / double(lines.size() - 1);
+    }
+    return sum;
+  };
+  const std::vector<double> table5 = meanSd({}, "a.csv");
+  const std::vector<double> noisy =
+      meanSd({"--gyro-noise-std", "3", "--accel-noise-std", "1"}, "b.csv");
+  // With a Kinect the shoulder rests on the optics too, so it widens less than the elbow.
+  for (int j = 0; j < 5; ++j) EXPECT_GT(noisy[j], 1.15 * table5[j]) << "joint " << j;
+  EXPECT_GT(noisy[3], 1.5 * table5[3]);
+  for (const std::string bad : {"0", "-1", "abc", "nan"}) {
+    const CliResult r = cli({"estimate", rec.string(), "--gyro-noise-std", bad});
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--gyro-noise-std"), std::string::npos) << r.err;
+  }
+}
+
 TEST_F(CliTest, UsageErrorsExitWithTwo) {
   struct Case {
     std::vector<std::string> args;
