@@ -256,7 +256,7 @@ class ArmFilter final : public JointEstimator {
   double m_jerkSquared = 0.0;  // the joints' squared jerk, (rad/s^3)^2 (trackJerk)
   // The last accelerometer update: its time and joint accelerations (trackJerk).
   std::optional<std::pair<double, JointVector>> m_jerkFrom;
-  std::deque<ArmSample> m_recent;    // fused samples of the last fitWindowSeconds
+  std::deque<ArmSample> m_recent;  // fused samples of the last fitWindowSeconds
   // Frame 0 at each of m_recent while a trunk IMU moves it (empty for a still trunk): window fits
   // predict each sample from the trunk's motion and the camera as they were then.
   std::deque<WindowFrame> m_recentFrames;
@@ -279,7 +279,7 @@ class ArmFilter final : public JointEstimator {
   std::optional<std::pair<Vec15, Vec15>> m_heading;  // a state and its headingSymmetry
   mutable std::optional<std::pair<JointVector, HeadingGeometry>> m_geometry;  // th, its geometry
   std::optional<ArmSample> m_pendingOptical;
-  std::optional<PinholeCamera> m_camera;  // when params carry a camera and useCamera is set
+  std::optional<PinholeCamera> m_camera;      // when params carry a camera and useCamera is set
   std::optional<CameraParams> m_frameCamera;  // the camera as frame 0 sees it, with a trunk IMU
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};

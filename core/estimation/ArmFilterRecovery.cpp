@@ -84,16 +84,18 @@ void ArmFilter<N>::remember(const ArmSample& clean) {
   kept.estimate.reset();
   m_recent.push_back(std::move(kept));
   m_recentStates.push_back(m_x.template head<kBase>());
-  const bool moving = m_trunk && m_trunk->state().haveImu;
-  if (moving && m_recentFrames.size() + 1 == m_recent.size())
+  if (m_trunk && m_trunk->state().haveImu) {
+    // Samples remembered before the trunk IMU spoke were fused for a still trunk.
+    WindowFrame still;
+    still.base.up = m_p.gUp;
+    while (m_recentFrames.size() + 1 < m_recent.size()) m_recentFrames.push_front(still);
     m_recentFrames.push_back({m_base, m_frameCamera});
-  else
-    m_recentFrames.clear();  // a trunk seen from here on: the window before it was still
+  }
   while (!m_recent.empty() && m_recent.front().t < m_t - m_p.fitWindowSeconds) {
     m_recent.pop_front();
     m_recentStates.pop_front();
-    if (!m_recentFrames.empty()) m_recentFrames.pop_front();
   }
+  while (m_recentFrames.size() > m_recent.size()) m_recentFrames.pop_front();
 }
 
 // The parameters as frame 0 is now: gravity along the trunk's present up, and the camera as

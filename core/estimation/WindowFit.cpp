@@ -135,7 +135,8 @@ class SampleCost final : public ceres::CostFunction {
 
  private:
   // The marker's pixel from the camera as frame 0 saw it, or params.camera for a still trunk.
-  bool pixel(const Vec15& x, bool wrist, Eigen::Vector2d& out, Eigen::Matrix<double, 2, 15>* jac) const {
+  bool pixel(const Vec15& x, bool wrist, Eigen::Vector2d& out,
+             Eigen::Matrix<double, 2, 15>* jac) const {
     if (!m_camera) return predictMarkerPixel(m_p, x, wrist, out, jac);
     Eigen::Matrix<double, 18, 1> h;
     Eigen::Matrix<double, 18, 15> all;

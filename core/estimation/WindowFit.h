@@ -58,8 +58,7 @@ struct WindowFrame {
 WindowFitResult fitWindow(const EstimatorParams& params, const std::vector<ArmSample>& window,
                           const std::vector<Eigen::Matrix<double, 15, 1>>& seeds,
                           const std::optional<JointVector>& headingAnchor = std::nullopt,
-                          int maxImuSamples = 60,
-                          const std::vector<WindowFrame>* frames = nullptr);
+                          int maxImuSamples = 60, const std::vector<WindowFrame>* frames = nullptr);
 
 /// Whitened residual RMS of a filter's own states over the window (states[i] belongs to
 /// window[i]), without a robust loss: how well the running filter explains the same data.

@@ -11,9 +11,9 @@
 
 #include "core/estimation/ArmFilter.h"
 #include "core/estimation/RecordingEstimator.h"
-#include "core/metrics/Accuracy.h"
 #include "core/estimation/TrunkTracker.h"
 #include "core/kinematics/Trunk.h"
+#include "core/metrics/Accuracy.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 
@@ -97,35 +97,41 @@ TEST(TrunkEstimation, SternumImuKeepsTheArmRelativeToTheThorax) {
 // gravity tilted with the lean, the trunk's own rates and the shoulder's acceleration. Fitted in
 // the upright frame, the arm came out tilted by the lean: on seed 505 of the acceptance set (IMUs
 // only, 420 deg/s, recoveries with the trunk 19 deg forward) the elbow went from 0.2 deg to 10 and
-// 17 deg RMSE. These seeds (not that set) recover with the trunk 16-19 deg forward.
+// 17 deg RMSE. These seeds (not that set) recover with the trunk 16-19 deg forward, once with
+// the sternum IMU from the first row and once with it silent for the first 0.3 s (the window
+// then holds samples fused for a still trunk before the trunk's).
 TEST(TrunkEstimation, ARecoveryWhileLeaningFitsTheArmInTheLeaningFrame) {
   int leaningRecoveries = 0;
-  for (const std::uint64_t seed : {86u, 88u}) {
-    const ReachingTrajectory traj(seed, 420.0 * kDegree, 4000.0 * kDegree, 20.0);
-    const Recording rec = simulateRecording(traj, leaningParams(seed, Side::Right, Optics::None, 20.0));
-    auto filter = makeEstimator(recordingParams(rec.meta));
-    double sq = 0.0;
-    int count = 0;
-    for (const ArmSample& s : rec.samples) {
-      const UpdateResult r = filter->update(s);
-      if (r == UpdateResult::Recovered && s.trueTrunk && (*s.trueTrunk)(0) > 10.0 * kDegree &&
-          s.t > 1.0)
-        ++leaningRecoveries;
-      if (!s.trueAngles || s.t < 1.0 || !filter->initialised()) continue;
-      const JointVector e = filter->estimate().th;
-      for (int j = 3; j < kNumJoints; ++j) {
-        const double d = wrapAngle(e(j) - (*s.trueAngles)(j));
-        sq += d * d;
+  for (const double silentSeconds : {0.0, 0.3})
+    for (const std::uint64_t seed : {86u, 88u}) {
+      const ReachingTrajectory traj(seed, 420.0 * kDegree, 4000.0 * kDegree, 20.0);
+      Recording rec = simulateRecording(traj, leaningParams(seed, Side::Right, Optics::None, 20.0));
+      for (ArmSample& s : rec.samples)
+        if (s.t < silentSeconds) s.trunk.reset();
+      auto filter = makeEstimator(recordingParams(rec.meta));
+      double sq = 0.0;
+      int count = 0;
+      for (const ArmSample& s : rec.samples) {
+        const UpdateResult r = filter->update(s);
+        if (r == UpdateResult::Recovered && s.trueTrunk && (*s.trueTrunk)(0) > 10.0 * kDegree &&
+            s.t > 1.0)
+          ++leaningRecoveries;
+        if (!s.trueAngles || s.t < 1.0 || !filter->initialised()) continue;
+        const JointVector e = filter->estimate().th;
+        for (int j = 3; j < kNumJoints; ++j) {
+          const double d = wrapAngle(e(j) - (*s.trueAngles)(j));
+          sq += d * d;
+        }
+        count += 2;
       }
-      count += 2;
+      ASSERT_GT(count, 6000);
+      const double rmse = std::sqrt(sq / count) / kDegree;
+      std::printf(
+          "[ measured ] seed %lu, sternum silent %.1f s: elbow and pronation RMSE %.2f deg\n",
+          static_cast<unsigned long>(seed), silentSeconds, rmse);
+      EXPECT_LT(rmse, 0.5) << "seed " << seed;
     }
-    ASSERT_GT(count, 6000);
-    const double rmse = std::sqrt(sq / count) / kDegree;
-    std::printf("[ measured ] seed %lu: elbow and pronation RMSE %.2f deg\n",
-                static_cast<unsigned long>(seed), rmse);
-    EXPECT_LT(rmse, 0.5) << "seed " << seed;
-  }
-  EXPECT_GE(leaningRecoveries, 2);  // the case this test is about did happen
+  EXPECT_GE(leaningRecoveries, 4);  // the case this test is about did happen
 }
 
 // Patients' hips are not where the estimator's prior puts them. With the trunk turning about a
