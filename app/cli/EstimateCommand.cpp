@@ -91,8 +91,7 @@ Setup parseSetup(const Args& a) {
   s.options.useCamera = !a.flag("--no-webcam");
   if (a.flag("--joint-accel-std"))
     s.options.jointAccelStdDeg = a.positive("--joint-accel-std", 1.0);
-  if (a.flag("--gyro-noise-std"))
-    s.options.gyroNoiseStdDeg = a.positive("--gyro-noise-std", 1.0);
+  if (a.flag("--gyro-noise-std")) s.options.gyroNoiseStdDeg = a.positive("--gyro-noise-std", 1.0);
   if (a.flag("--accel-noise-std")) s.options.accelNoiseStd = a.positive("--accel-noise-std", 1.0);
   if (a.flag("--calibration")) s.calibration = a.required("--calibration");
   s.autoCalibration = !a.flag("--no-auto-calibration");
@@ -183,9 +182,8 @@ int estimateTaoHu(const Args& a, const fs::path& input, const std::optional<fs::
   if (std::none_of(rec.samples.begin(), rec.samples.end(),
                    [](const ArmSample& s) { return s.hasImu(); }))
     throw std::runtime_error(input.string() + ": no IMU samples to estimate from");
-  for (std::string_view o :
-       {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std", "--gyro-noise-std",
-        "--accel-noise-std", "--no-auto-calibration"}) {
+  for (std::string_view o : {"--filter", "--no-kinect", "--no-webcam", "--joint-accel-std",
+                             "--gyro-noise-std", "--accel-noise-std", "--no-auto-calibration"}) {
     if (a.flag(o)) err << "warning: " << o << " does not apply to --method tao-hu; ignored\n";
   }
   std::optional<CsvOutput> writer;

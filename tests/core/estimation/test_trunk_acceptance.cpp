@@ -48,11 +48,13 @@ struct Tally {
     return (trunkSq / std::max(trunkCount, 1.0)).cwiseSqrt() / kDegree;
   }
   Eigen::Vector3d trunkCoverage() const { return trunkInside / std::max(trunkCount, 1.0); }
-  double elevationRmseDeg() const { return std::sqrt(elevationSq / std::max(armCount, 1.0)) / kDegree; }
+  double elevationRmseDeg() const {
+    return std::sqrt(elevationSq / std::max(armCount, 1.0)) / kDegree;
+  }
 };
 
-Recording leaning(std::uint64_t seed, Side side, Optics optics, double peakRateDeg,
-                  double leanDeg, bool sternumImu) {
+Recording leaning(std::uint64_t seed, Side side, Optics optics, double peakRateDeg, double leanDeg,
+                  bool sternumImu) {
   const double scale = peakRateDeg / 420.0;
   const ReachingTrajectory traj(seed, peakRateDeg * kDegree,
                                 std::max(300.0, 4000.0 * scale * scale) * kDegree, 20.0);
@@ -100,8 +102,8 @@ void run(const Recording& rec, Tally& t) {
         t.armInside(j) += 1;
     t.armCount += 1;
     const Eigen::Vector3d trueTrunk = s.trueTrunk.value_or(Eigen::Vector3d::Zero());
-    const double de = elevation(params, e.th, trueTrunk) -
-                      elevation(params, *s.trueAngles, trueTrunk);
+    const double de =
+        elevation(params, e.th, trueTrunk) - elevation(params, *s.trueAngles, trueTrunk);
     t.elevationSq += de * de;
     if (!s.trueTrunk) continue;
     const auto trunk = f->trunk();
@@ -128,8 +130,8 @@ void print(const char* what, Side side, Optics optics, double rate, const Tally&
       "[ measured ] %s, %s arm, %s, %.0f deg/s: arm RMSE %.2f %.2f %.2f %.2f %.2f deg, inside 2 "
       "sd %.0f %.0f %.0f %.0f %.0f %%; elevation %.2f deg; trunk RMSE %.2f %.2f %.2f deg, inside "
       "2 sd %.0f %.0f %.0f %%\n",
-      what, sideName(side).c_str(), opticsName(optics), rate, r(0), r(1), r(2), r(3), r(4), c(0), c(1),
-      c(2), c(3), c(4), t.elevationRmseDeg(), tr(0), tr(1), tr(2), tc(0), tc(1), tc(2));
+      what, sideName(side).c_str(), opticsName(optics), rate, r(0), r(1), r(2), r(3), r(4), c(0),
+      c(1), c(2), c(3), c(4), t.elevationRmseDeg(), tr(0), tr(1), tr(2), tc(0), tc(1), tc(2));
 }
 
 }  // namespace
@@ -144,16 +146,14 @@ TEST(TrunkAcceptance, WithSternumImuAndOpticsEveryAngleUnderOneDegree) {
         const Tally t = pooled(side, optics, rate, 20.0, true);
         print("leaning 20 deg", side, optics, rate, t);
         ASSERT_GT(t.trunkCount, 30000.0);
-        for (int j = 0; j < kNumJoints; ++j)
-          EXPECT_LT(t.armRmseDeg()(j), 1.0) << "joint " << j;
+        for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(t.armRmseDeg()(j), 1.0) << "joint " << j;
         for (int i = 0; i < 3; ++i) EXPECT_LT(t.trunkRmseDeg()(i), 1.0) << "trunk angle " << i;
         // Two-sigma coverage at least the 90 % the issue asks, trunk and arm. Measured 93-100 %
         // (the arm's sd carries the trunk's pose uncertainty, ArmFilter::addTrunkVariance);
         // the issue's upper 99 % is passed on slow reaches and with a webcam, where the arm
         // filter's own sd is on the large side with a still trunk too (docs/estimator.md).
         for (int i = 0; i < 3; ++i) EXPECT_GE(t.trunkCoverage()(i), 0.90) << "trunk angle " << i;
-        for (int j = 0; j < kNumJoints; ++j)
-          EXPECT_GE(t.armCoverage()(j), 0.90) << "joint " << j;
+        for (int j = 0; j < kNumJoints; ++j) EXPECT_GE(t.armCoverage()(j), 0.90) << "joint " << j;
       }
     }
   }
@@ -203,23 +203,26 @@ TEST(TrunkAcceptance, ImusOnlyArmStaysCloseToAStillTrunk) {
         elbowStill.push_back(es);
         if (em > es + 1.0 || moving.elevationRmseDeg() > still.elevationRmseDeg() + 1.0) {
           ++worse;
-          std::printf("[ measured ] %s arm, %.0f deg/s, seed %lu: leaning elbow %.2f, elevation "
-                      "%.2f deg; still %.2f, %.2f deg\n",
-                      sideName(side).c_str(), rate, static_cast<unsigned long>(seed), em,
-                      moving.elevationRmseDeg(), es, still.elevationRmseDeg());
+          std::printf(
+              "[ measured ] %s arm, %.0f deg/s, seed %lu: leaning elbow %.2f, elevation "
+              "%.2f deg; still %.2f, %.2f deg\n",
+              sideName(side).c_str(), rate, static_cast<unsigned long>(seed), em,
+              moving.elevationRmseDeg(), es, still.elevationRmseDeg());
         }
       }
       const Eigen::Vector3d trunkRmse = (trunkSq / trunkCount).cwiseSqrt() / kDegree;
       const JointVector inside = elbowInside / std::max(armCount, 1.0) * 100.0;
-      std::printf("[ measured ] IMUs only, %s arm, %.0f deg/s: elbow inside 2 sd %.0f %%, "
-                  "pronation %.0f %%\n",
-                  sideName(side).c_str(), rate, inside(3), inside(4));
-      std::printf("[ measured ] IMUs only, %s arm, %.0f deg/s, median seed: elbow %.2f deg leaning "
-                  "vs %.2f still, elevation %.2f vs %.2f; trunk RMSE %.2f %.2f %.2f deg; %d of 10 "
-                  "seeds over 1 deg worse\n",
-                  sideName(side).c_str(), rate, median(elbowMoving), median(elbowStill),
-                  median(elevationMoving), median(elevationStill), trunkRmse(0), trunkRmse(1),
-                  trunkRmse(2), worse);
+      std::printf(
+          "[ measured ] IMUs only, %s arm, %.0f deg/s: elbow inside 2 sd %.0f %%, "
+          "pronation %.0f %%\n",
+          sideName(side).c_str(), rate, inside(3), inside(4));
+      std::printf(
+          "[ measured ] IMUs only, %s arm, %.0f deg/s, median seed: elbow %.2f deg leaning "
+          "vs %.2f still, elevation %.2f vs %.2f; trunk RMSE %.2f %.2f %.2f deg; %d of 10 "
+          "seeds over 1 deg worse\n",
+          sideName(side).c_str(), rate, median(elbowMoving), median(elbowStill),
+          median(elevationMoving), median(elevationStill), trunkRmse(0), trunkRmse(1), trunkRmse(2),
+          worse);
       EXPECT_LT(trunkRmse(0), 1.0);
       EXPECT_LT(trunkRmse(1), 1.0);
       EXPECT_LE(median(elbowMoving), median(elbowStill) + 0.25);
