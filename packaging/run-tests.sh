@@ -21,9 +21,9 @@ cmake --build "$build" --parallel "$(nproc)"
 phase build
 
 # Benchmarks are figures, not pass/fail: print them before the test summary. bench_filter warms
-# its filter up again, untimed, each time its 2 s of data run out, so most of its run is not timed:
-# 0.05 s of timed steps per figure took 62 s of CPU where 0.2 s took 145 s, for the same figures
-# (give more for steadier ones).
+# each filter up once and cycles through 20 s of data (14 s of CPU in all at 0.05 s of timed steps
+# per figure, where warming up again on every call and every 2 s took 68 s); give more for
+# steadier figures.
 if [ -x "$build/tests/benchmarks/bench_filter" ]; then
   "$build/tests/benchmarks/bench_filter" --benchmark_min_time=0.05 || echo "benchmarks failed to run" >&2
 fi
