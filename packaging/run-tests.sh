@@ -15,8 +15,10 @@ trap 'printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
 
 bash "$root/packaging/deps-debian12.sh"
 phase deps
-# The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests.
-bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON
+# The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests; of the
+# benchmarks only those run below (tests/benchmarks/CMakeLists.txt).
+bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON \
+  -DARMTRACK_ALL_BENCHMARKS=OFF
 cmake --build "$build" --parallel "$(nproc)"
 phase build
 
