@@ -3,9 +3,16 @@
 # build dir and runs each for a while. CI runs it briefly from run-tests.sh; for a long run give
 # more seconds per target, e.g.  bash packaging/run-fuzzers.sh 3600
 # New corpus entries go to <build>/corpus/<target>/ and crashes to <build>/artifacts/.
+# `run-fuzzers.sh --build-only` configures and builds them and stops there (run-tests.sh builds
+# them so beside the tests; the run after it finds them built).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${ARMTRACK_FUZZ_BUILD_DIR:-$root/build-fuzz}"
+build_only=false
+if [ "${1:-}" = --build-only ]; then
+  build_only=true
+  shift
+fi
 seconds="${1:-10}"
 targets=(fuzz_shimmer3 fuzz_lineimu fuzz_ngimu fuzz_skeleton fuzz_webcam_frame fuzz_recording fuzz_chunk)
 
@@ -24,6 +31,9 @@ cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_COMPILER="$cc" -DCMAKE_CXX_COMPILER="$cxx" \
   -DARMTRACK_BUILD_FUZZERS=ON >/dev/null
 cmake --build "$build" --parallel "$(nproc)" --target "${targets[@]}"
+if $build_only; then
+  exit 0
+fi
 
 mkdir -p "$build/artifacts"
 # One fuzzer per core at a time (each is one process on one core, so each still gets its seconds

@@ -15,15 +15,17 @@ trap 'printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
 
 bash "$root/packaging/deps-debian12.sh"
 phase deps
-# The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests.
-bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON
+# The same configuration as run-app.sh (Release -O2, warnings as errors), plus the tests; of the
+# benchmarks only those run below (tests/benchmarks/CMakeLists.txt).
+bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON \
+  -DARMTRACK_ALL_BENCHMARKS=OFF
 cmake --build "$build" --parallel "$(nproc)"
 phase build
 
 # Benchmarks are figures, not pass/fail: print them before the test summary. bench_filter warms
-# its filter up again, untimed, each time its 2 s of data run out, so most of its run is not timed:
-# 0.05 s of timed steps per figure took 62 s of CPU where 0.2 s took 145 s, for the same figures
-# (give more for steadier ones).
+# each filter up once and cycles through 20 s of data (14 s of CPU in all at 0.05 s of timed steps
+# per figure, where warming up again on every call and every 2 s took 68 s); give more for
+# steadier figures.
 if [ -x "$build/tests/benchmarks/bench_filter" ]; then
   "$build/tests/benchmarks/bench_filter" --benchmark_min_time=0.05 || echo "benchmarks failed to run" >&2
 fi
@@ -41,6 +43,27 @@ if [ -x "$build/tests/benchmarks/bench_import" ]; then
 fi
 phase benchmarks
 
+# The fuzzers' Clang build (run-fuzzers.sh below; 88 s of CPU, 44 s of the fuzzer phase at
+# 3e4b6a9) runs beside the tests under the idle scheduling policy (SCHED_IDLE): it gets only the
+# CPU time no test wants, and the tests leave plenty (a GUI test holding half a core uses about a
+# third of one, test_session_trunk 3.6 s of CPU in a minute), so the tests keep the cores they
+# asked CTest for. The fuzzer phase then finds the fuzzers built. In its own process group (setsid),
+# so that it can be stopped whole.
+# Whether a process of session $1 is left (from /proc: procps may not be installed).
+session_alive() {
+  local f line sid
+  for f in /proc/[0-9]*/stat; do
+    line="$(<"$f")" 2>/dev/null || continue
+    read -r _ _ _ sid _ <<<"${line##*) }" # after the command name: state ppid pgrp session
+    [ "$sid" = "$1" ] && return 0
+  done
+  return 1
+}
+setsid chrt --idle 0 bash "$root/packaging/run-fuzzers.sh" --build-only \
+  >"$build/fuzz-build.log" 2>&1 &
+fuzz_build=$!
+trap 'kill -- "-$fuzz_build" 2>/dev/null || true; printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
+
 cd "$build"
 # Two CTest "cpu" slots per core: a test that computes holds two, one measured to wait most of
 # its run (a GUI test paced by timers and the virtual arm) holds one (tests/CMakeLists.txt), so up
@@ -51,6 +74,13 @@ printf '{"version": {"major": 1, "minor": 0}, "local": [{"cpu": [{"id": "0", "sl
 ctest --output-on-failure --parallel "$slots" --resource-spec-file "$build/ctest-resources.json" \
   --timeout 600
 phase ctest
+# What the tests left of that build is done at the normal priority by run-fuzzers.sh below, which
+# also reports a failure: stop the idle one (ninja stops its compilers and deletes the outputs
+# they were writing) and wait until nothing of its session is left, so that two ninjas never
+# share the fuzzers' build dir.
+kill -- "-$fuzz_build" 2>/dev/null || true
+while session_alive "$fuzz_build"; do sleep 0.2; done
+wait "$fuzz_build" 2>/dev/null || true
 
 # A short libFuzzer run of every protocol parser (about a minute in all); the long run is the same
 # script with more seconds per target.
