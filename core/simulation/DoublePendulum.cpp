@@ -1,5 +1,6 @@
 #include "core/simulation/DoublePendulum.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <random>
@@ -162,6 +163,19 @@ ArmGeometry pendulumGeometry(const PendulumParams& pendulum) {
   return geo;
 }
 
+ArmGeometry pendulumMountingOnRod(const ArmGeometry& geometry, double zeroOffset) {
+  // The forearm IMU in frame 6 (origin at the elbow): lf8 out along (cos thf7, sin thf7, 0),
+  // lf6 along z6. A turn of the elbow by the zero is, in frame 6 at pronation 0, a turn about y6.
+  const Eigen::Vector3d p0(geometry.lf8 * std::cos(geometry.thf7),
+                           geometry.lf8 * std::sin(geometry.thf7), geometry.lf6);
+  const Eigen::Vector3d p = Eigen::AngleAxisd(zeroOffset, Eigen::Vector3d::UnitY()) * p0;
+  ArmGeometry g = geometry;
+  g.lf6 = p.z();
+  g.lf8 = std::hypot(p.x(), p.y());
+  g.thf7 = std::atan2(p.y(), p.x());
+  return g;
+}
+
 namespace {
 
 /// The tick of a sensor of rate hz that a row at time t holds: its last reading at or before t.
@@ -217,6 +231,9 @@ Recording simulatePendulum(const PendulumSimParams& p) {
 
   Recording rec;
   rec.meta.geometry = pendulumGeometry(p.pendulum);
+  // On the rod the model is exact: no lever arm left for readingsAt to add.
+  if (p.mountingOnRod) rec.meta.geometry = pendulumMountingOnRod(rec.meta.geometry, p.zeroOffset);
+  const double leverZero = p.mountingOnRod ? 0.0 : p.zeroOffset;
   rec.meta.g = p.pendulum.g;
   const Eigen::Vector3d gUp = rec.meta.gUp();
   std::mt19937_64 rng(p.seed);
@@ -234,13 +251,13 @@ Recording simulatePendulum(const PendulumSimParams& p) {
     const auto [ak, at] = heldTick(t, p.accelRateHz, i);
     if (gk != gyroTick) {  // a new gyroscope reading, with its own noise
       gyroTick = gk;
-      gyro = readingsAt(traj, rec.meta.geometry, gUp, p.zeroOffset, gt);
+      gyro = readingsAt(traj, rec.meta.geometry, gUp, leverZero, gt);
       gyro.upper.gyr += noise(p.gyroNoiseStd);
       gyro.fore.gyr += noise(p.gyroNoiseStd);
     }
     if (ak != accelTick) {
       accelTick = ak;
-      accel = readingsAt(traj, rec.meta.geometry, gUp, p.zeroOffset, at);
+      accel = readingsAt(traj, rec.meta.geometry, gUp, leverZero, at);
       accel.upper.acc += noise(p.accelNoiseStd);
       accel.fore.acc += noise(p.accelNoiseStd);
     }

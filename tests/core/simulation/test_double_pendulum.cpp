@@ -225,5 +225,35 @@ TEST(BaselineOnThePendulum, TheRightLeverArmMakesTheZeroIrrelevant) {
   EXPECT_NEAR(runBaseline(turned, told).errors.hinge.rmseDeg(), reference, 1e-6);
 }
 
+// The sidecar's mounting put on the rod (mountingOnRod): the sensor is where the sidecar says,
+// so the baseline's errors do not depend on the zero.
+TEST(BaselineOnThePendulum, AMountingOnTheRodMakesTheZeroIrrelevant) {
+  PendulumSimParams p;
+  p.duration = 10.0;
+  p.outputRateHz = 500.0;
+  const Recording straight = simulatePendulum(p);
+  const double reference =
+      runBaseline(straight, baselineParamsFor(straight.meta)).errors.hinge.rmseDeg();
+  for (double zero : {35.0, 90.0, -60.0}) {
+    p.zeroOffset = zero * kDegree;
+    p.mountingOnRod = true;
+    const Recording onRod = simulatePendulum(p);
+    // The sidecar's forearm IMU sits where the model's default one does on the rod.
+    const ArmGeometry g = onRod.meta.geometry;
+    JointVector th = JointVector::Zero();
+    th(3) = -0.3;
+    JointVector rod = th;
+    rod(3) += p.zeroOffset;
+    EXPECT_LT((forwardKinematics(g, th).forearmImu.topRightCorner<3, 1>() -
+               forwardKinematics(straight.meta.geometry, rod).forearmImu.topRightCorner<3, 1>())
+                  .norm(),
+              1e-12)
+        << "zero " << zero;
+    EXPECT_NEAR(runBaseline(onRod, baselineParamsFor(onRod.meta)).errors.hinge.rmseDeg(), reference,
+                0.02)
+        << "zero " << zero;
+  }
+}
+
 }  // namespace
 }  // namespace armtrack
