@@ -3,9 +3,13 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
+
+#include "core/simulation/ImuErrors.h"
+#include "core/simulation/SensorSimulator.h"
 
 namespace armtrack {
 
@@ -190,13 +194,19 @@ struct Readings {
   ImuReading upper, fore;
 };
 
-Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
-                    const Eigen::Vector3d& gUp, double zero, double t) {
+// What each IMU feels at time t (the wobble's input): rate, specific force, and the acceleration
+// without gravity.
+struct Truths {
+  ImuTruth upper, fore;
+};
+
+Truths truthsAt(const PendulumTrajectory& traj, const ArmGeometry& geo, const Eigen::Vector3d& gUp,
+                double zero, double t) {
   const JointMotion m = traj.at(t);
   const ArmKinematics<double> k = armKinematics<double>(geo, m.th, m.thd, m.thdd, gUp);
-  Readings r;
-  r.upper = {k.upperImu.omega, k.upperImu.up + k.upperImu.accel};
-  r.fore = {k.forearmImu.omega, k.forearmImu.up + k.forearmImu.accel};
+  Truths r;
+  r.upper = {k.upperImu.omega, k.upperImu.up + k.upperImu.accel, k.upperImu.accel};
+  r.fore = {k.forearmImu.omega, k.forearmImu.up + k.forearmImu.accel, k.forearmImu.accel};
   if (zero != 0.0) {
     // The sensor sits on the rod, which is turned by the zero from the model's forearm about the
     // elbow's axis: its lever arm from the elbow differs from the model's by dr (forearm axes).
@@ -208,9 +218,17 @@ Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
     const Eigen::Vector3d dr = rf.transpose() * (onRod.forearmImu.topRightCorner<3, 1>() -
                                                  model.forearmImu.topRightCorner<3, 1>());
     const Eigen::Vector3d& w = k.forearmImu.omega;
-    r.fore.acc += k.forearmImu.omegaDot.cross(dr) + w.cross(w.cross(dr));
+    const Eigen::Vector3d lever = k.forearmImu.omegaDot.cross(dr) + w.cross(w.cross(dr));
+    r.fore.acc += lever;
+    r.fore.linAcc += lever;
   }
   return r;
+}
+
+Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
+                    const Eigen::Vector3d& gUp, double zero, double t) {
+  const Truths k = truthsAt(traj, geo, gUp, zero, t);
+  return {{k.upper.gyr, k.upper.acc}, {k.fore.gyr, k.fore.acc}};
 }
 
 }  // namespace
@@ -224,6 +242,9 @@ Recording simulatePendulum(const PendulumSimParams& p) {
               std::isfinite(p.accelNoiseStd),
           "noise must be >= 0");
   require(std::isfinite(p.zeroOffset), "the elbow's zero must be finite");
+  require(p.wobbleTiltPerAccel >= 0 && p.wobbleTranslationGain >= 0 &&
+              std::isfinite(p.wobbleTiltPerAccel) && std::isfinite(p.wobbleTranslationGain),
+          "the wobble must be >= 0");
   require(p.duration > 0 && p.duration <= RecordingLimits::kMaxRecordingSeconds,
           "the duration must be positive and at most 12 h");
   const DoublePendulum pendulum(p.pendulum, p.duration);
@@ -241,12 +262,47 @@ Recording simulatePendulum(const PendulumSimParams& p) {
   const auto noise = [&](double std) {
     return Eigen::Vector3d(std * normal(rng), std * normal(rng), std * normal(rng));
   };
+  // With wobble each IMU goes through the simulator's error model, which then also holds its
+  // readings and adds their noise (its own random streams).
+  const bool wobble = p.wobbleTiltPerAccel != 0.0 || p.wobbleTranslationGain != 0.0;
+  std::optional<ImuErrorModel> wobbling[2];
+  if (wobble) {
+    ImuSimParams imu;
+    imu.rateHz = p.outputRateHz;
+    imu.gyroNoiseStd = p.gyroNoiseStd;
+    imu.accelNoiseStd = p.accelNoiseStd;
+    imu.errors.enabled = true;
+    if (p.gyroRateHz > 0.0) imu.errors.gyroRateHz = p.gyroRateHz;
+    if (p.accelRateHz > 0.0) imu.errors.accelRateHz = p.accelRateHz;
+    imu.errors.wobbleTiltPerAccel = p.wobbleTiltPerAccel;
+    imu.errors.wobbleTranslationGain = p.wobbleTranslationGain;
+    imu.errors.wobbleFrequencyHz = p.wobbleFrequencyHz;
+    imu.errors.wobbleDamping = p.wobbleDamping;
+    wobbling[0].emplace(imu, p.seed, 0u, "pendulum upper IMU");
+    wobbling[1].emplace(imu, p.seed, 1u, "pendulum forearm IMU");
+  }
   std::int64_t gyroTick = -1, accelTick = -1;
   Readings gyro{}, accel{};
   const auto rows = static_cast<std::int64_t>(std::floor(p.duration * p.outputRateHz + 1e-9));
   rec.samples.reserve(static_cast<std::size_t>(rows + 1));
   for (std::int64_t i = 0; i <= rows; ++i) {
     const double t = static_cast<double>(i) / p.outputRateHz;
+    if (wobble) {
+      ArmSample s;
+      s.t = t;
+      for (int k = 0; k < 2; ++k) {
+        const ImuReading r = wobbling[k]->reading(t, [&](double tau) {
+          const Truths tr = truthsAt(traj, rec.meta.geometry, gUp, leverZero, tau);
+          return k == 0 ? tr.upper : tr.fore;
+        });
+        (k == 0 ? s.upperArm : s.forearm) = r;
+      }
+      JointVector th = traj.at(t).th;
+      for (int j = 0; j < kNumJoints; ++j) th(j) = wrapAngle(th(j));
+      s.trueAngles = th;
+      rec.samples.push_back(s);
+      continue;
+    }
     const auto [gk, gt] = heldTick(t, p.gyroRateHz, i);
     const auto [ak, at] = heldTick(t, p.accelRateHz, i);
     if (gk != gyroTick) {  // a new gyroscope reading, with its own noise

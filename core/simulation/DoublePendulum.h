@@ -95,6 +95,15 @@ struct PendulumSimParams {
   /// and the zero only relabels the hinge. False: the model's mounting, whose lever arm the zero
   /// turns off the rod.
   bool mountingOnRod = false;
+  /// Strap wobble on both IMUs (core/simulation/ImuErrors.h: a spring-damper between the sensor
+  /// and the rod, driven by the rod's acceleration at the sensor): the static tilt per m/s^2 of
+  /// acceleration (rad; 0: none, and the readings are as without it), the translational gain, the
+  /// natural frequency and damping ratio. The realistic preset draws the tilt from 0.03-0.08 deg
+  /// per m/s^2, the gain from 0.1-0.4, 8-20 Hz, 0.2-0.5.
+  double wobbleTiltPerAccel = 0.0;
+  double wobbleTranslationGain = 0.0;
+  double wobbleFrequencyHz = 12.0;
+  double wobbleDamping = 0.3;
 };
 
 /// The recording: both IMUs on every row (the arm model's mounting with lu3 = l3 / 2 and
