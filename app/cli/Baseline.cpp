@@ -69,9 +69,11 @@ constexpr std::string_view kStudyHelp =
 
 The DH filter (EKF, default settings, IMUs only) and the complementary baseline on the same
 recordings: the double pendulum with ideal sensors at 1 kHz and with a 50 Hz gyroscope and a
-25 Hz accelerometer held on a 90 Hz clock, each with the model's straight elbow put at 0, 35 and
-90 deg of the pendulum's straight hinge; and the reaching simulation with Table 5 noise, IMUs
-only. Prints hinge, pronation and swing RMSE and peak (markdown).
+25 Hz accelerometer held on a 90 Hz clock (Table 5 noise), each with the model's straight elbow
+put at 0, 35 and 90 deg of the pendulum's straight hinge, both methods told where the forearm IMU
+sits on the rod (and, for 35 and 90 deg, both given the model's mounting instead); and the
+reaching simulation with Table 5 noise, IMUs only. Prints hinge, pronation and swing RMSE and
+peak (markdown).
 
 Options:
   --duration S   seconds of pendulum (default 60)

@@ -1,6 +1,7 @@
 // The baseline beside the DH filter (docs/baseline.md, "The study"): both run on the same
 // recordings (the double pendulum with ideal sensors and with 50/25 Hz readings held on a 90 Hz
-// clock, for several placements of the elbow's zero; the reaching simulation with Table 5 noise,
+// clock with Table 5 noise, for several placements of the elbow's zero, both methods told where
+// the forearm IMU sits on the rod and both not; the reaching simulation with Table 5 noise,
 // IMUs only), and their hinge, pronation and swing errors against the truth. The DH filter runs
 // through its public path (core/estimation/RecordingEstimator.h), as `estimate` does.
 #pragma once
@@ -49,7 +50,8 @@ BaselineRun runBaseline(const Recording& recording, const BaselineParams& params
 
 /// The DH filter (EKF, default settings, IMUs only) over the same recording, scored the same way.
 /// freeElbow lifts the filter's anatomical limits on th4 (-170 to 20 deg by default), which a
-/// pendulum's hinge may pass; everything else stays at its default.
+/// pendulum's hinge may pass; Method A no longer projects onto them, so for it this only lets its
+/// window fits end beyond them. Everything else stays at its default.
 JointErrors runDhFilter(const Recording& recording, bool freeElbow = false);
 
 /// Where the elbow really is seen from the forearm IMU of simulatePendulum (forearm axes, m) when

@@ -64,6 +64,8 @@ void ArmFilter<N>::reset() {
   m_pendingOptical.reset();
   m_gatedInARow = {0, 0, 0, 0};
   m_gate.reset();
+  m_timing = {};
+  m_rowStep = 0.0;
   for (RestBias& b : m_restBias) b.reset();
   m_matchedQ.setZero();
   m_jerkSquared = 0.0;
@@ -111,11 +113,13 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
     ++m_counters.rejectedTime;
     return UpdateResult::Rejected;
   }
+  const double rowStep = s.t - m_lastSeenT;
   m_lastSeenT = s.t;
 
   ArmSample in = m_p.side == Side::Left ? mirrorSample(s) : s;
   applyTrunk(in);  // a moving trunk: its motion, and the optical data into frame 0
   ArmSample clean = sanitise(in);
+  trackSampleTiming(clean, rowStep);
   const bool hasImu = clean.upperArm || clean.forearm;
   const bool hasOptical = clean.elbow || clean.wrist || clean.camWrist || clean.camElbow;
   if (!hasImu && !hasOptical) {
@@ -152,8 +156,11 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   Mat pPrior;
   if (hasOptical) pPrior = m_P;
   const double tPrior = m_t, floorPrior = m_headingFloor;
-  predict(s.t - m_t);
-  m_t = s.t;
+  // New readings of slow sensors were taken, on average, half a row before the row: the update
+  // is made there, and the state predicted on to the row's time after it (ArmFilterTiming.cpp).
+  const double tMeasured = std::max(m_t, s.t - sampleDelay(clean));
+  predict(tMeasured - m_t);
+  m_t = tMeasured;
   m_prior.reset();
   BlockList blocks = gather(clean);
   if (blocks.count == 0 && !hasOptical) {
@@ -230,6 +237,10 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   afterUpdate(fuseOptical);
   matchProcessNoise(xBefore, s.t - tPrior);
   if (blocks.has(kUaAcc) || blocks.has(kFaAcc)) trackJerk();
+  if (m_t < s.t) {
+    predict(s.t - m_t);
+    m_t = s.t;
+  }
   finishUpdate();
   remember(clean);
   if (m_fitAt && m_t >= *m_fitAt) {
@@ -290,14 +301,17 @@ BlockList ArmFilter<N>::gather(const ArmSample& s) const {
   const TrunkState* trunk = m_trunk && m_trunk->state().haveImu ? &m_trunk->state() : nullptr;
   const double gyroVar = m_p.gyroVariance + (trunk ? trunk->baseGyroVariance : 0.0);
   const double armAccelVar = accelVar + (trunk ? trunk->baseAccelVariance : 0.0);
-  // A held value (the logger repeating the sensor's last sample) is not a new measurement.
+  // A held value (the logger repeating the sensor's last sample) is not a new measurement; a
+  // new one from a slow sensor was taken up to a row earlier (timingVariance).
   if (s.upperArm) {
-    if (gyro && !s.upperArm->gyrHeld) b.add(kUaGyr, s.upperArm->gyr, gyroVar);
-    if (!s.upperArm->accHeld) b.add(kUaAcc, s.upperArm->acc, armAccelVar);
+    if (gyro && !s.upperArm->gyrHeld)
+      b.add(kUaGyr, s.upperArm->gyr, gyroVar + timingVariance(kUaGyr));
+    if (!s.upperArm->accHeld) b.add(kUaAcc, s.upperArm->acc, armAccelVar + timingVariance(kUaAcc));
   }
   if (s.forearm) {
-    if (gyro && !s.forearm->gyrHeld) b.add(kFaGyr, s.forearm->gyr, gyroVar);
-    if (!s.forearm->accHeld) b.add(kFaAcc, s.forearm->acc, armAccelVar);
+    if (gyro && !s.forearm->gyrHeld)
+      b.add(kFaGyr, s.forearm->gyr, gyroVar + timingVariance(kFaGyr));
+    if (!s.forearm->accHeld) b.add(kFaAcc, s.forearm->acc, armAccelVar + timingVariance(kFaAcc));
   }
   if (s.elbow) b.add(kElbow, *s.elbow, m_p.positionVariance + trunkPositionVariance(*s.elbow));
   if (s.wrist) b.add(kWrist, *s.wrist, m_p.positionVariance + trunkPositionVariance(*s.wrist));

@@ -119,6 +119,11 @@ class ArmFilter final : public JointEstimator {
   static void symmetrise(Mat& p);
   static void mirrorLower(Mat& p);
 
+  // ArmFilterTiming.cpp: readings of sensors slower than the rows (held between new samples)
+  void trackSampleTiming(const ArmSample& clean, double rowStep);
+  double timingVariance(int block) const;
+  double sampleDelay(const ArmSample& clean) const;
+
   // ArmFilterTrunk.cpp: a moving trunk
   void applyTrunk(ArmSample& s);
   double trunkPositionVariance(const Eigen::Vector3d& p) const;
@@ -284,6 +289,16 @@ class ArmFilter final : public JointEstimator {
   // Consecutive gated frames: wrist marker, elbow marker, wrist position, elbow position.
   std::array<int, 4> m_gatedInARow{0, 0, 0, 0};
   SampleGate m_gate;
+  // Per IMU channel (the blocks kUaGyr..kFaAcc): when it was last held, its last new value and
+  // the squared rate at which its new values change (trackSampleTiming).
+  struct ChannelTiming {
+    double heldT = -std::numeric_limits<double>::infinity();
+    double lastT = -std::numeric_limits<double>::infinity();
+    Eigen::Vector3d last = Eigen::Vector3d::Zero();
+    double changeSquared = 0.0;  // |d value / dt|^2
+  };
+  std::array<ChannelTiming, 4> m_timing;
+  double m_rowStep = 0.0;  // s from the previous row to the present one
   std::array<RestBias, 2> m_restBias;
   EstimatorCounters m_counters;
   // Frame 0's motion for the predicted readings: still ({0, 0, 0, gUp}) until a trunk IMU speaks.

@@ -1,10 +1,15 @@
 #include "core/simulation/DoublePendulum.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <random>
 #include <stdexcept>
 #include <string>
+
+#include "core/simulation/ImuErrors.h"
+#include "core/simulation/SensorSimulator.h"
 
 namespace armtrack {
 
@@ -162,6 +167,19 @@ ArmGeometry pendulumGeometry(const PendulumParams& pendulum) {
   return geo;
 }
 
+ArmGeometry pendulumMountingOnRod(const ArmGeometry& geometry, double zeroOffset) {
+  // The forearm IMU in frame 6 (origin at the elbow): lf8 out along (cos thf7, sin thf7, 0),
+  // lf6 along z6. A turn of the elbow by the zero is, in frame 6 at pronation 0, a turn about y6.
+  const Eigen::Vector3d p0(geometry.lf8 * std::cos(geometry.thf7),
+                           geometry.lf8 * std::sin(geometry.thf7), geometry.lf6);
+  const Eigen::Vector3d p = Eigen::AngleAxisd(zeroOffset, Eigen::Vector3d::UnitY()) * p0;
+  ArmGeometry g = geometry;
+  g.lf6 = p.z();
+  g.lf8 = std::hypot(p.x(), p.y());
+  g.thf7 = std::atan2(p.y(), p.x());
+  return g;
+}
+
 namespace {
 
 /// The tick of a sensor of rate hz that a row at time t holds: its last reading at or before t.
@@ -176,13 +194,19 @@ struct Readings {
   ImuReading upper, fore;
 };
 
-Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
-                    const Eigen::Vector3d& gUp, double zero, double t) {
+// What each IMU feels at time t (the wobble's input): rate, specific force, and the acceleration
+// without gravity.
+struct Truths {
+  ImuTruth upper, fore;
+};
+
+Truths truthsAt(const PendulumTrajectory& traj, const ArmGeometry& geo, const Eigen::Vector3d& gUp,
+                double zero, double t) {
   const JointMotion m = traj.at(t);
   const ArmKinematics<double> k = armKinematics<double>(geo, m.th, m.thd, m.thdd, gUp);
-  Readings r;
-  r.upper = {k.upperImu.omega, k.upperImu.up + k.upperImu.accel};
-  r.fore = {k.forearmImu.omega, k.forearmImu.up + k.forearmImu.accel};
+  Truths r;
+  r.upper = {k.upperImu.omega, k.upperImu.up + k.upperImu.accel, k.upperImu.accel};
+  r.fore = {k.forearmImu.omega, k.forearmImu.up + k.forearmImu.accel, k.forearmImu.accel};
   if (zero != 0.0) {
     // The sensor sits on the rod, which is turned by the zero from the model's forearm about the
     // elbow's axis: its lever arm from the elbow differs from the model's by dr (forearm axes).
@@ -194,9 +218,17 @@ Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
     const Eigen::Vector3d dr = rf.transpose() * (onRod.forearmImu.topRightCorner<3, 1>() -
                                                  model.forearmImu.topRightCorner<3, 1>());
     const Eigen::Vector3d& w = k.forearmImu.omega;
-    r.fore.acc += k.forearmImu.omegaDot.cross(dr) + w.cross(w.cross(dr));
+    const Eigen::Vector3d lever = k.forearmImu.omegaDot.cross(dr) + w.cross(w.cross(dr));
+    r.fore.acc += lever;
+    r.fore.linAcc += lever;
   }
   return r;
+}
+
+Readings readingsAt(const PendulumTrajectory& traj, const ArmGeometry& geo,
+                    const Eigen::Vector3d& gUp, double zero, double t) {
+  const Truths k = truthsAt(traj, geo, gUp, zero, t);
+  return {{k.upper.gyr, k.upper.acc}, {k.fore.gyr, k.fore.acc}};
 }
 
 }  // namespace
@@ -210,6 +242,9 @@ Recording simulatePendulum(const PendulumSimParams& p) {
               std::isfinite(p.accelNoiseStd),
           "noise must be >= 0");
   require(std::isfinite(p.zeroOffset), "the elbow's zero must be finite");
+  require(p.wobbleTiltPerAccel >= 0 && p.wobbleTranslationGain >= 0 &&
+              std::isfinite(p.wobbleTiltPerAccel) && std::isfinite(p.wobbleTranslationGain),
+          "the wobble must be >= 0");
   require(p.duration > 0 && p.duration <= RecordingLimits::kMaxRecordingSeconds,
           "the duration must be positive and at most 12 h");
   const DoublePendulum pendulum(p.pendulum, p.duration);
@@ -217,6 +252,9 @@ Recording simulatePendulum(const PendulumSimParams& p) {
 
   Recording rec;
   rec.meta.geometry = pendulumGeometry(p.pendulum);
+  // On the rod the model is exact: no lever arm left for readingsAt to add.
+  if (p.mountingOnRod) rec.meta.geometry = pendulumMountingOnRod(rec.meta.geometry, p.zeroOffset);
+  const double leverZero = p.mountingOnRod ? 0.0 : p.zeroOffset;
   rec.meta.g = p.pendulum.g;
   const Eigen::Vector3d gUp = rec.meta.gUp();
   std::mt19937_64 rng(p.seed);
@@ -224,23 +262,58 @@ Recording simulatePendulum(const PendulumSimParams& p) {
   const auto noise = [&](double std) {
     return Eigen::Vector3d(std * normal(rng), std * normal(rng), std * normal(rng));
   };
+  // With wobble each IMU goes through the simulator's error model, which then also holds its
+  // readings and adds their noise (its own random streams).
+  const bool wobble = p.wobbleTiltPerAccel != 0.0 || p.wobbleTranslationGain != 0.0;
+  std::optional<ImuErrorModel> wobbling[2];
+  if (wobble) {
+    ImuSimParams imu;
+    imu.rateHz = p.outputRateHz;
+    imu.gyroNoiseStd = p.gyroNoiseStd;
+    imu.accelNoiseStd = p.accelNoiseStd;
+    imu.errors.enabled = true;
+    if (p.gyroRateHz > 0.0) imu.errors.gyroRateHz = p.gyroRateHz;
+    if (p.accelRateHz > 0.0) imu.errors.accelRateHz = p.accelRateHz;
+    imu.errors.wobbleTiltPerAccel = p.wobbleTiltPerAccel;
+    imu.errors.wobbleTranslationGain = p.wobbleTranslationGain;
+    imu.errors.wobbleFrequencyHz = p.wobbleFrequencyHz;
+    imu.errors.wobbleDamping = p.wobbleDamping;
+    wobbling[0].emplace(imu, p.seed, 0u, "pendulum upper IMU");
+    wobbling[1].emplace(imu, p.seed, 1u, "pendulum forearm IMU");
+  }
   std::int64_t gyroTick = -1, accelTick = -1;
   Readings gyro{}, accel{};
   const auto rows = static_cast<std::int64_t>(std::floor(p.duration * p.outputRateHz + 1e-9));
   rec.samples.reserve(static_cast<std::size_t>(rows + 1));
   for (std::int64_t i = 0; i <= rows; ++i) {
     const double t = static_cast<double>(i) / p.outputRateHz;
+    if (wobble) {
+      ArmSample s;
+      s.t = t;
+      for (int k = 0; k < 2; ++k) {
+        const ImuReading r = wobbling[k]->reading(t, [&](double tau) {
+          const Truths tr = truthsAt(traj, rec.meta.geometry, gUp, leverZero, tau);
+          return k == 0 ? tr.upper : tr.fore;
+        });
+        (k == 0 ? s.upperArm : s.forearm) = r;
+      }
+      JointVector th = traj.at(t).th;
+      for (int j = 0; j < kNumJoints; ++j) th(j) = wrapAngle(th(j));
+      s.trueAngles = th;
+      rec.samples.push_back(s);
+      continue;
+    }
     const auto [gk, gt] = heldTick(t, p.gyroRateHz, i);
     const auto [ak, at] = heldTick(t, p.accelRateHz, i);
     if (gk != gyroTick) {  // a new gyroscope reading, with its own noise
       gyroTick = gk;
-      gyro = readingsAt(traj, rec.meta.geometry, gUp, p.zeroOffset, gt);
+      gyro = readingsAt(traj, rec.meta.geometry, gUp, leverZero, gt);
       gyro.upper.gyr += noise(p.gyroNoiseStd);
       gyro.fore.gyr += noise(p.gyroNoiseStd);
     }
     if (ak != accelTick) {
       accelTick = ak;
-      accel = readingsAt(traj, rec.meta.geometry, gUp, p.zeroOffset, at);
+      accel = readingsAt(traj, rec.meta.geometry, gUp, leverZero, at);
       accel.upper.acc += noise(p.accelNoiseStd);
       accel.fore.acc += noise(p.accelNoiseStd);
     }

@@ -89,6 +89,21 @@ struct PendulumSimParams {
   /// the model's forearm IMU frame, as a mounting tool would; the sensor itself stays on the rod,
   /// so with a zero other than 0 its real lever arm is off the model's forearm axis.
   double zeroOffset = 0.0;
+  /// The sidecar's forearm mounting (lf6, lf8, thf7) put where the sensor really sits on the rod,
+  /// and its readings turned into that frame: what a mounting tool that measured the sensor's
+  /// lever arm writes (pendulumMountingOnRod). Both estimators are then told the real lever arm
+  /// and the zero only relabels the hinge. False: the model's mounting, whose lever arm the zero
+  /// turns off the rod.
+  bool mountingOnRod = false;
+  /// Strap wobble on both IMUs (core/simulation/ImuErrors.h: a spring-damper between the sensor
+  /// and the rod, driven by the rod's acceleration at the sensor): the static tilt per m/s^2 of
+  /// acceleration (rad; 0: none, and the readings are as without it), the translational gain, the
+  /// natural frequency and damping ratio. The realistic preset draws the tilt from 0.03-0.08 deg
+  /// per m/s^2, the gain from 0.1-0.4, 8-20 Hz, 0.2-0.5.
+  double wobbleTiltPerAccel = 0.0;
+  double wobbleTranslationGain = 0.0;
+  double wobbleFrequencyHz = 12.0;
+  double wobbleDamping = 0.3;
 };
 
 /// The recording: both IMUs on every row (the arm model's mounting with lu3 = l3 / 2 and
@@ -98,5 +113,10 @@ Recording simulatePendulum(const PendulumSimParams& params);
 
 /// The sidecar geometry simulatePendulum uses for a pendulum.
 ArmGeometry pendulumGeometry(const PendulumParams& pendulum);
+
+/// geometry with its forearm IMU moved to where it sits on the rod when the model's straight
+/// elbow is put zeroOffset (rad) from the rod's straight hinge: the same point relative to the
+/// elbow, in the cylinder coordinates of the forearm's axis (lf6 along it, lf8 out at thf7).
+ArmGeometry pendulumMountingOnRod(const ArmGeometry& geometry, double zeroOffset);
 
 }  // namespace armtrack

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <set>
@@ -223,6 +224,69 @@ TEST(BaselineOnThePendulum, TheRightLeverArmMakesTheZeroIrrelevant) {
   BaselineParams told = baselineParamsFor(turned.meta);
   told.elbowFromForearm = pendulumElbowFromForearm(turned.meta.geometry, p.zeroOffset);
   EXPECT_NEAR(runBaseline(turned, told).errors.hinge.rmseDeg(), reference, 1e-6);
+}
+
+// The sidecar's mounting put on the rod (mountingOnRod): the sensor is where the sidecar says,
+// so the baseline's errors do not depend on the zero.
+TEST(BaselineOnThePendulum, AMountingOnTheRodMakesTheZeroIrrelevant) {
+  PendulumSimParams p;
+  p.duration = 10.0;
+  p.outputRateHz = 500.0;
+  const Recording straight = simulatePendulum(p);
+  const double reference =
+      runBaseline(straight, baselineParamsFor(straight.meta)).errors.hinge.rmseDeg();
+  for (double zero : {35.0, 90.0, -60.0}) {
+    p.zeroOffset = zero * kDegree;
+    p.mountingOnRod = true;
+    const Recording onRod = simulatePendulum(p);
+    // The sidecar's forearm IMU sits where the model's default one does on the rod.
+    const ArmGeometry g = onRod.meta.geometry;
+    JointVector th = JointVector::Zero();
+    th(3) = -0.3;
+    JointVector rod = th;
+    rod(3) += p.zeroOffset;
+    EXPECT_LT((forwardKinematics(g, th).forearmImu.topRightCorner<3, 1>() -
+               forwardKinematics(straight.meta.geometry, rod).forearmImu.topRightCorner<3, 1>())
+                  .norm(),
+              1e-12)
+        << "zero " << zero;
+    EXPECT_NEAR(runBaseline(onRod, baselineParamsFor(onRod.meta)).errors.hinge.rmseDeg(), reference,
+                0.02)
+        << "zero " << zero;
+  }
+}
+
+// Strap wobble: the sensors rock on their straps about axes across the rods' (a rate off the
+// hinge's axis), and without it the readings are exactly the ideal ones.
+TEST(DoublePendulum, WobbleTurnsTheSensorsOffTheRodsAxes) {
+  PendulumSimParams p;
+  p.duration = 10.0;
+  p.outputRateHz = 200.0;
+  const Recording ideal = simulatePendulum(p);
+  p.wobbleTiltPerAccel = 0.08 * kDegree;
+  p.wobbleTranslationGain = 0.25;
+  const Recording wobbly = simulatePendulum(p);
+  ASSERT_EQ(ideal.samples.size(), wobbly.samples.size());
+  // The ideal forearm gyroscope turns about one fixed axis: the hinge's.
+  Eigen::Vector3d axis = Eigen::Vector3d::Zero();
+  for (const ArmSample& s : ideal.samples)
+    if (s.forearm->gyr.norm() > axis.norm()) axis = s.forearm->gyr;
+  axis.normalize();
+  double offAxis = 0.0, alongError = 0.0;  // sums of squares, (rad/s)^2
+  for (std::size_t i = 0; i < ideal.samples.size(); ++i) {
+    const Eigen::Vector3d& w = wobbly.samples[i].forearm->gyr;
+    const Eigen::Vector3d& w0 = ideal.samples[i].forearm->gyr;
+    EXPECT_LT((w0 - axis * axis.dot(w0)).norm(), 1e-9);
+    offAxis += (w - axis * axis.dot(w)).squaredNorm();
+    alongError += std::pow(axis.dot(w - w0), 2);
+  }
+  const double n = static_cast<double>(ideal.samples.size());
+  std::printf("[ measured ] wobble: off-axis rate RMS %.3f rad/s, along-axis error RMS %.3f\n",
+              std::sqrt(offAxis / n), std::sqrt(alongError / n));
+  EXPECT_GT(std::sqrt(offAxis / n), 0.01);
+  EXPECT_LT(std::sqrt(alongError / n), std::sqrt(offAxis / n));
+  p.wobbleTiltPerAccel = -1.0;
+  EXPECT_THROW(simulatePendulum(p), std::invalid_argument);
 }
 
 }  // namespace
