@@ -50,8 +50,9 @@ QString strapsPatientLine(const session::LiveCalibrationStatus& status) {
   if (!status.summary || !status.calibration) return {};
   const MountingSummary& m = *status.summary;
   if (std::max(m.upperTurnDeg, m.forearmTurnDeg) <= kStrapsTurnWorthTellingDeg) return {};
-  return tr("A sensor strap has turned on your arm. Your exercise is still measured; next time, "
-            "put the straps on as shown before you start.");
+  return tr(
+      "A sensor strap has turned on your arm. Your exercise is still measured; next time, "
+      "put the straps on as shown before you start.");
 }
 
 }  // namespace armtrack::app::gui

@@ -36,8 +36,8 @@ RecordingMeta writePatient(const std::filesystem::path& csv, double turnDeg) {
   sim.upperArm.rateHz = sim.forearm.rateHz = 100.0;
   sim.upperArm.misalignment = randomMisalignment(turnDeg * kDeg, 63);
   sim.forearm.misalignment = randomMisalignment(turnDeg * kDeg, 64);
-  const Recording rec = simulateRecording(SessionTrajectory(31, 150 * kDeg, 1500 * kDeg, kSeconds),
-                                          sim);
+  const Recording rec =
+      simulateRecording(SessionTrajectory(31, 150 * kDeg, 1500 * kDeg, kSeconds), sim);
   writeRecording(csv, rec);
   return rec.meta;
 }
@@ -84,7 +84,8 @@ class TestLiveStraps : public QObject {
                  40000),
              qPrintable(straps->text()));
     const QString text = straps->text();
-    QVERIFY2(text.startsWith(QLatin1String("Straps checked from the movement: ")), qPrintable(text));
+    QVERIFY2(text.startsWith(QLatin1String("Straps checked from the movement: ")),
+             qPrintable(text));
     const QRegularExpressionMatch m =
         QRegularExpression(QStringLiteral("upper-arm sensor turned (\\d+) deg, forearm sensor "
                                           "turned (\\d+) deg and (-?\\d+) cm from the wrist"))
@@ -110,10 +111,10 @@ class TestLiveStraps : public QObject {
     QVERIFY(QTest::qWaitForWindowExposed(&screen));
     screen.start();
     QLabel* straps = screen.strapsLabel();
-    QVERIFY2(QTest::qWaitFor(
-                 [&] { return straps->text().startsWith(QLatin1String("Straps as fitted")); },
-                 40000),
-             qPrintable(straps->text()));
+    QVERIFY2(
+        QTest::qWaitFor(
+            [&] { return straps->text().startsWith(QLatin1String("Straps as fitted")); }, 40000),
+        qPrintable(straps->text()));
     QVERIFY(straps->isVisible());
     screen.stop();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), LiveSessionScreen::State::Stopped, 15000);

@@ -47,16 +47,16 @@ class TestLiveConfig : public QObject {
     const gui::SessionPlan plan;
     const gui::AppSettings settings;
     const QStringList devices = {QStringLiteral("virtual-arm:sensors=upper+forearm")};
-    QVERIFY(gui::liveSessionConfig(plan, devices, settings, std::nullopt)
-                .movementCalibration.enabled);
+    QVERIFY(
+        gui::liveSessionConfig(plan, devices, settings, std::nullopt).movementCalibration.enabled);
     Calibration cal;
     QVERIFY(!gui::liveSessionConfig(plan, devices, settings, cal).movementCalibration.enabled);
     // A calibration of the other arm is none for this one.
     gui::SessionPlan left;
     left.side = Side::Left;
-    QVERIFY(gui::liveSessionConfig(left, {QStringLiteral("shimmer:port=/dev/rfcomm2")}, settings,
-                                   cal)
-                .movementCalibration.enabled);
+    QVERIFY(
+        gui::liveSessionConfig(left, {QStringLiteral("shimmer:port=/dev/rfcomm2")}, settings, cal)
+            .movementCalibration.enabled);
   }
 };
 
