@@ -42,8 +42,10 @@ void LiveCalibration::startFit() {
   rec.samples.assign(m_window.begin(), m_window.end());
   m_done = false;
   {
+    // A refit keeps the finding in use (or "as fitted") on show until it is done.
     std::lock_guard lock(m_statusMutex);
-    m_status.state = LiveCalibrationStatus::State::Fitting;
+    m_status.fitting = true;
+    if (!m_madeOne) m_status.state = LiveCalibrationStatus::State::Fitting;
   }
   AutoCalibrationParams ap;
   ap.windowSeconds = m_params.windowSeconds;
@@ -69,6 +71,7 @@ std::optional<AutoCalibrationResult> LiveCalibration::poll(double t) {
     if (out->calibration) m_current = out->calibration;
     std::lock_guard lock(m_statusMutex);
     ++m_status.fits;
+    m_status.fitting = false;
     m_status.line = out->line;
     if (out->calibration) {
       ++m_status.applied;

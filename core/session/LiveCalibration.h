@@ -39,13 +39,14 @@ struct LiveCalibrationStatus {
   enum class State {
     Off,         ///< not asked for (a calibration file is in use), or no estimator
     Collecting,  ///< waiting for the first window
-    Fitting,     ///< a fit runs
+    Fitting,     ///< the first fit that could be made runs
     AsFitted,    ///< fits were made and none was better: the straps sit as the sidecar says
     Applied,     ///< a fitted calibration is in use
   };
   State state = State::Off;
-  int fits = 0;     ///< fits finished (any outcome)
-  int applied = 0;  ///< of which applied (the first, and each better refit)
+  bool fitting = false;  ///< a fit (or refit) runs now
+  int fits = 0;          ///< fits finished (any outcome)
+  int applied = 0;       ///< of which applied (the first, and each better refit)
   /// The calibration in use, its summary and when it was applied (session time, s).
   std::optional<Calibration> calibration;
   std::optional<MountingSummary> summary;
