@@ -8,10 +8,6 @@ namespace armtrack::app::gui {
 
 namespace {
 
-QString tr(const char* text) {
-  return QCoreApplication::translate("StrapsText", text);
-}
-
 QString whole(double v) {
   return QString::number(std::lround(v));
 }
@@ -23,8 +19,10 @@ QString strapsLine(const session::LiveCalibrationStatus& status) {
   // A fit in use keeps its line while a refit runs.
   if (status.summary && status.calibration) {
     const MountingSummary& m = *status.summary;
-    return tr("Straps checked from the movement: upper-arm sensor turned %1 deg, forearm sensor "
-              "turned %2 deg and %3 cm from the wrist")
+    return QCoreApplication::translate(
+               "StrapsText",
+               "Straps checked from the movement: upper-arm sensor turned %1 deg, forearm sensor "
+               "turned %2 deg and %3 cm from the wrist")
         .arg(whole(m.upperTurnDeg), whole(m.forearmTurnDeg), whole(m.forearmFromWristCm));
   }
   switch (status.state) {
@@ -32,14 +30,20 @@ QString strapsLine(const session::LiveCalibrationStatus& status) {
       return {};
     case State::Collecting:
       return status.fits == 0
-                 ? tr("Straps: checking them from the movement (a moment of rest and some "
-                      "movement are needed)")
-                 : tr("Straps: not checked yet (the arm needs a moment of rest and more "
-                      "movement)");
+                 ? QCoreApplication::translate(
+                       "StrapsText",
+                       "Straps: checking them from the movement (a moment of rest and some "
+                       "movement are needed)")
+                 : QCoreApplication::translate(
+                       "StrapsText",
+                       "Straps: not checked yet (the arm needs a moment of rest and more "
+                       "movement)");
     case State::Fitting:
-      return tr("Straps: checking them from the movement\u2026");
+      return QCoreApplication::translate("StrapsText",
+                                         "Straps: checking them from the movement\u2026");
     case State::AsFitted:
-      return tr("Straps as fitted (checked from the movement)");
+      return QCoreApplication::translate("StrapsText",
+                                         "Straps as fitted (checked from the movement)");
     case State::Applied:
       break;
   }
@@ -50,7 +54,8 @@ QString strapsPatientLine(const session::LiveCalibrationStatus& status) {
   if (!status.summary || !status.calibration) return {};
   const MountingSummary& m = *status.summary;
   if (std::max(m.upperTurnDeg, m.forearmTurnDeg) <= kStrapsTurnWorthTellingDeg) return {};
-  return tr(
+  return QCoreApplication::translate(
+      "StrapsText",
       "A sensor strap has turned on your arm. Your exercise is still measured; next time, "
       "put the straps on as shown before you start.");
 }
