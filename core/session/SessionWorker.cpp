@@ -269,7 +269,7 @@ class Session::Worker {
     // Every fit that was made is told; "not tried" only the first time (it repeats until the
     // patient rests once and moves enough).
     if (r->outcome != AutoCalibrationResult::Outcome::NotTried || firstTry)
-      m_notes.push_back(r->line + " (at " + std::to_string(static_cast<long>(row.t)) + " s)");
+      m_news.push_back(r->line + " (at " + std::to_string(static_cast<long>(row.t)) + " s)");
     if (!r->calibration) return;
     RecordingMeta meta = m_s.m_params.meta;
     applyCalibration(*r->calibration, meta);
@@ -280,7 +280,7 @@ class Session::Worker {
     m_messages.finish(m_notes);
     m_messages = EstimatorMessages(blockStreams(m_s), m_s.m_params.refusalQuietSeconds,
                                    m_s.m_params.refusalSummarySeconds);
-    m_notes.push_back(
+    m_news.push_back(
         "the estimator restarted with the straps fitted from the movement: the "
         "angles may jump once here");
   }
@@ -309,6 +309,10 @@ class Session::Worker {
       emit m_s.problem(QString::fromStdString(n));
     }
     m_notes.clear();
+    // What the calibration from movement did is news, not a problem: the messages only (the
+    // screens say it in their own words from Session::movementCalibration()).
+    for (const std::string& n : m_news) m_s.logEvent(n);
+    m_news.clear();
   }
 
   /// New estimates to the results the GUI drains; the statistics every 0.1 s, and at the end.
@@ -378,6 +382,7 @@ class Session::Worker {
   // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
   EstimatorMessages m_messages;
   std::vector<std::string> m_notes;  // messages made under no lock, told by publish()
+  std::vector<std::string> m_news;   // the same, for the messages only (not problem())
   // Without a trunk IMU: whether the trunk left its start pose (an optical shoulder's cue).
   std::optional<TrunkMotionDetector> m_trunkDetector;
   TrunkMessages m_trunkMessages;

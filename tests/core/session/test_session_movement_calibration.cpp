@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <thread>
@@ -51,6 +52,7 @@ Recording patient(double turnDeg) {
 struct LiveRun {
   std::vector<EstimateRow> results;
   std::vector<std::string> events;
+  std::vector<std::string> problems;  // what the problem() signal said
   LiveCalibrationStatus status;
   fs::path csv, kept;
 };
@@ -74,6 +76,14 @@ LiveRun replay(const QTemporaryDir& dir, const Recording& rec, bool calibrate,
   params.movementCalibration.enabled = calibrate;
   params.movementCalibration.firstSeconds = first;
   Session session(params);
+  std::mutex problemsMutex;
+  QObject::connect(
+      &session, &Session::problem, &session,
+      [&](const QString& m) {
+        std::lock_guard lock(problemsMutex);
+        r.problems.push_back(m.toStdString());
+      },
+      Qt::DirectConnection);
   QString why;
   auto device =
       plugin->create(devices::Options::parse(QStringLiteral("file=%1,speed=%2")
@@ -145,15 +155,20 @@ TEST_F(SessionMovementCalibration, TurnedStrapsAreFittedUsedAndKept) {
   EXPECT_GE(mentioning(r.events, "calibration from movement: upper-arm sensor turned"), 1u);
   EXPECT_EQ(mentioning(r.events, "restarted with the straps fitted"),
             static_cast<std::size_t>(r.status.applied));
+  // News, not a problem: the problem() signal (shown as one at home) never says it.
+  EXPECT_EQ(mentioning(r.problems, "calibration from movement"), 0u);
+  EXPECT_EQ(mentioning(r.problems, "straps"), 0u);
   // The strap angle against the simulator's truth.
   std::printf(
       "[ figures  ] upper-arm sensor turned %.1f deg, forearm %.1f deg (truth %.0f); "
       "applied at %.1f s\n",
       r.status.summary->upperTurnDeg, r.status.summary->forearmTurnDeg, kTurn, r.status.appliedAt);
   EXPECT_NEAR(r.status.summary->upperTurnDeg, kTurn, 3.0);
-  // Applied once the first window was in (and not later than the second chance).
+  // Applied once the first window was in. The fit runs beside the worker while the replay goes
+  // on at 10x, so it lands 1-3 s of real time later (10-30 s of session time; more on a loaded
+  // machine); at least 10 s are left to judge the estimates after it.
   EXPECT_GE(r.status.appliedAt, 40.0);
-  EXPECT_LT(r.status.appliedAt, 70.0);
+  EXPECT_LT(r.status.appliedAt, kSeconds - 15.0);
   const double before = rmsError(r.results, 5.0, r.status.appliedAt);
   const double after = rmsError(r.results, r.status.appliedAt + 5.0, kSeconds);
   std::printf("[ figures  ] joint RMS error %.2f deg before the fit, %.2f deg after\n", before,
