@@ -31,6 +31,14 @@ void LiveCalibration::add(const ArmSample& row) {
     m_firstT = row.t;
     m_nextFitT = row.t + m_params.firstSeconds;
   }
+  // Rows without IMU readings (optical) are all kept; a row with readings when one is due.
+  const bool upper = row.upperArm && row.t >= m_nextUpperT;
+  const bool forearm = row.forearm && row.t >= m_nextForearmT;
+  if (row.hasImu() && !upper && !forearm) return;
+  // (a microsecond short, so that a clock exactly at a multiple of the step keeps its rate)
+  const double step = m_params.maxRateHz > 0.0 ? 1.0 / m_params.maxRateHz - 1e-6 : 0.0;
+  if (upper) m_nextUpperT = row.t + step;
+  if (forearm) m_nextForearmT = row.t + step;
   m_window.push_back(row);
   while (!m_window.empty() && row.t - m_window.front().t > m_params.windowSeconds)
     m_window.pop_front();

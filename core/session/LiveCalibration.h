@@ -29,6 +29,9 @@ struct LiveCalibrationParams {
   double retrySeconds = 15.0;   ///< s between fits until one could be made
   double refineSeconds = 60.0;  ///< s between refits once one was made
   double windowSeconds = 90.0;  ///< s of the newest rows kept and fitted on
+  /// Each IMU's readings are kept at most this often (Hz): arm movement lies below 10 Hz, and a
+  /// 1 kHz sensor would otherwise fill the window with 90 000 rows (45 MB) for nothing.
+  double maxRateHz = 200.0;
   /// The fit is used only when its ReadingFit score is below this fraction of the mounting's in
   /// use (AutoCalibrationParams::betterFraction).
   double betterFraction = 0.7;
@@ -89,6 +92,8 @@ class LiveCalibration {
   FilterParamsFor m_paramsFor;
   std::deque<ArmSample> m_window;
   double m_firstT = std::numeric_limits<double>::quiet_NaN();
+  double m_nextUpperT = -std::numeric_limits<double>::infinity();  // next upper-arm reading kept
+  double m_nextForearmT = -std::numeric_limits<double>::infinity();
   double m_nextFitT = 0.0;  // session time of the next fit
   bool m_madeOne = false;   // a fit was made (not merely "not tried")
   std::optional<Calibration> m_current;
