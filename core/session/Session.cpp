@@ -246,7 +246,9 @@ QString Session::start() {
   if (QString why = openRecording(columns); !why.isEmpty()) return why;
   m_liveCalibration.reset();
   m_movementCalibrationFile.clear();
-  if (m_params.estimate && m_params.movementCalibration.enabled)
+  // The fit needs both arm IMUs (the elbow between them); without one it stays off.
+  if (m_params.estimate && m_params.movementCalibration.enabled && columns.upperArm &&
+      columns.forearm)
     m_liveCalibration =
         std::make_unique<LiveCalibration>(m_params.movementCalibration, m_params.meta,
                                           [base = m_params.estimator](const RecordingMeta& meta) {

@@ -62,7 +62,7 @@ struct SessionParams {
   double trunkMessageSeconds = 10.0;
   /// The straps fitted from the patient's movement while the session runs, for a patient with
   /// no calibration for these sensors (off by default; docs/session.md, "Calibration from
-  /// movement"). Needs the estimator.
+  /// movement"). Needs the estimator and both arm IMUs (off without them).
   LiveCalibrationParams movementCalibration;
 };
 
