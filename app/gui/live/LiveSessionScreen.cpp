@@ -359,6 +359,10 @@ void LiveSessionScreen::stop() {
   if (m_recordingSince >= 0) m_recordedSeconds += m_sessionTime - m_recordingSince;
   m_recordingSince = -1;
   m_drainTimer.stop();
+  if (const std::shared_ptr<session::Session>& s = m_controller->session()) {
+    m_strapsStatus = s->movementCalibration();  // the last word on the straps
+    updateStraps();
+  }
   setState(State::Stopping);
   m_controller->stop();
 }

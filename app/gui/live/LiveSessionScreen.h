@@ -90,6 +90,11 @@ class LiveSessionScreen : public QWidget {
   /// The line on the straps as the calibration from movement found them (hidden when it is
   /// off: a sensor calibration is in use).
   QLabel* strapsLabel() const { return m_straps; }
+  /// The calibration from movement the session used last (kept after it stops), for the
+  /// session's analysis to estimate with it again; empty when none was applied.
+  const std::optional<Calibration>& movementCalibration() const {
+    return m_strapsStatus.calibration;
+  }
   QPushButton* recordButton() const { return m_record; }
   QPushButton* pauseButton() const { return m_pause; }
   QPushButton* stopButton() const { return m_stop; }

@@ -102,6 +102,9 @@ class TestLiveStraps : public QObject {
     QTRY_COMPARE(QApplication::focusWidget(), static_cast<QWidget*>(straps));
     screen.stop();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), LiveSessionScreen::State::Stopped, 15000);
+    // Kept after the stop, for the session's analysis, and still said.
+    QVERIFY(screen.movementCalibration().has_value());
+    QVERIFY(straps->text().contains(QLatin1String("upper-arm sensor turned")));
   }
 
   void strapsThatSitAsFittedAreSaidSo() {
@@ -118,6 +121,7 @@ class TestLiveStraps : public QObject {
     QVERIFY(straps->isVisible());
     screen.stop();
     QTRY_COMPARE_WITH_TIMEOUT(screen.state(), LiveSessionScreen::State::Stopped, 15000);
+    QVERIFY(!screen.movementCalibration());
   }
 
   void aSensorCalibrationLeavesTheStrapsAlone() {
