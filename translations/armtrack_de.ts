@@ -2,6 +2,33 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="de" sourcelanguage="en">
 <context>
+    <name>StrapsText</name>
+    <message>
+        <source>Straps checked from the movement: upper-arm sensor turned %1 deg, forearm sensor turned %2 deg and %3 cm from the wrist</source>
+        <translation>Bänder anhand der Bewegung geprüft: Oberarmsensor um %1° gedreht, Unterarmsensor um %2° gedreht und %3 cm vom Handgelenk</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement (a moment of rest and some movement are needed)</source>
+        <translation>Bänder: werden anhand der Bewegung geprüft (dazu braucht es einen Moment Ruhe und etwas Bewegung)</translation>
+    </message>
+    <message>
+        <source>Straps: not checked yet (the arm needs a moment of rest and more movement)</source>
+        <translation>Bänder: noch nicht geprüft (der Arm braucht einen Moment Ruhe und mehr Bewegung)</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement…</source>
+        <translation>Bänder: werden anhand der Bewegung geprüft…</translation>
+    </message>
+    <message>
+        <source>Straps as fitted (checked from the movement)</source>
+        <translation>Bänder sitzen wie angelegt (anhand der Bewegung geprüft)</translation>
+    </message>
+    <message>
+        <source>A sensor strap has turned on your arm. Your exercise is still measured; next time, put the straps on as shown before you start.</source>
+        <translation>Ein Sensorband hat sich an Ihrem Arm verdreht. Ihre Übung wird trotzdem gemessen; legen Sie die Bänder nächstes Mal vor dem Start wie gezeigt an.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::app::gui::CalibrationGuide</name>
     <message>
         <source>Arm forward</source>
@@ -450,6 +477,10 @@
     <message>
         <source>Start or resume recording to %1 (%2)</source>
         <translation>Aufnahme in %1 starten oder fortsetzen (%2)</translation>
+    </message>
+    <message>
+        <source>Straps</source>
+        <translation>Bänder</translation>
     </message>
 </context>
 <context>

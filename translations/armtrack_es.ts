@@ -2,6 +2,33 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="es" sourcelanguage="en">
 <context>
+    <name>StrapsText</name>
+    <message>
+        <source>Straps checked from the movement: upper-arm sensor turned %1 deg, forearm sensor turned %2 deg and %3 cm from the wrist</source>
+        <translation>Cintas comprobadas a partir del movimiento: sensor del brazo girado %1°, sensor del antebrazo girado %2° y a %3 cm de la muñeca</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement (a moment of rest and some movement are needed)</source>
+        <translation>Cintas: se comprueban a partir del movimiento (hace falta un momento de reposo y algo de movimiento)</translation>
+    </message>
+    <message>
+        <source>Straps: not checked yet (the arm needs a moment of rest and more movement)</source>
+        <translation>Cintas: aún no comprobadas (el brazo necesita un momento de reposo y más movimiento)</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement…</source>
+        <translation>Cintas: se comprueban a partir del movimiento…</translation>
+    </message>
+    <message>
+        <source>Straps as fitted (checked from the movement)</source>
+        <translation>Cintas tal como se colocaron (comprobadas a partir del movimiento)</translation>
+    </message>
+    <message>
+        <source>A sensor strap has turned on your arm. Your exercise is still measured; next time, put the straps on as shown before you start.</source>
+        <translation>Una cinta de sensor se ha girado en su brazo. Su ejercicio se sigue midiendo; la próxima vez, colóquese las cintas como se muestra antes de empezar.</translation>
+    </message>
+</context>
+<context>
     <name>armtrack::app::gui::CalibrationGuide</name>
     <message>
         <source>Arm forward</source>
@@ -450,6 +477,10 @@
     <message>
         <source>Start or resume recording to %1 (%2)</source>
         <translation>Iniciar o reanudar la grabación en %1 (%2)</translation>
+    </message>
+    <message>
+        <source>Straps</source>
+        <translation>Cintas</translation>
     </message>
 </context>
 <context>

@@ -44,7 +44,7 @@ $ARMTRACK_PLUGIN_PATH, <exe>/../plugins (a build) and the installed plugin folde
 constexpr const char* kRecordHelp =
     R"(usage: armtrack-cli record --device NAME[:OPTIONS] [--device ...] --duration S --out FILE.csv
                           [--plugins DIR] [--filter ekf|ukf] [--no-estimate] [--side right|left]
-                          [--latency-window S] [--quiet] [--overwrite]
+                          [--latency-window S] [--no-auto-calibration] [--quiet] [--overwrite]
        armtrack-cli record --device ... --duration S --db URL --user NAME --patient CODE
                           [--protocol NAME] [other options as above]
 
@@ -55,6 +55,10 @@ e.g. --device virtual-arm:sensors=upper+forearm+kinect,disappear=10+3
 Device states and problems are printed as they happen; Ctrl-C (SIGINT), SIGTERM or SIGHUP ends
 the session early and keeps everything recorded so far. An existing FILE.csv (or its sidecar) is
 only replaced with --overwrite, and a file another recording is being written to never is.
+The straps are fitted from the movement as the session goes (the first fit after 30 s, refits
+every 60 s on the newest 90 s) and used only when they explain the readings clearly better, as
+`estimate` does; each fit is told, and the one used is kept beside FILE.csv as
+FILE.movement-calibration.json. --no-auto-calibration switches it off.
 The row count printed is what the file holds; if rows could not be written (a full disk), the
 number lost is printed and the exit status is 1.
 
@@ -68,12 +72,14 @@ printed is "session ID", the new session's id.
 constexpr const char* kLiveHelp =
     R"(usage: armtrack-cli live --device NAME[:OPTIONS] [--device ...] [--duration S] [--stats]
                         [--stats-interval S] [--out FILE.csv] [--plugins DIR] [--filter ekf|ukf]
-                        [--side right|left] [--latency-window S] [--quiet] [--overwrite]
+                        [--side right|left] [--latency-window S] [--no-auto-calibration]
+                        [--quiet] [--overwrite]
 
 Runs a live session (until --duration, or Ctrl-C) and prints the joint angles once a second, or
 with --stats the pipeline's figures: per stream the sample rate, samples received, rejected and
 late, link losses; samples lost; sample-to-estimate latency percentiles; CPU use; resident
 memory. --out records the session as `record` does (--overwrite to replace an existing file).
+The straps are fitted from the movement as `record` fits them (--no-auto-calibration: not).
 )";
 
 std::atomic<bool> g_interrupted{false};
@@ -137,11 +143,23 @@ struct LiveOptions {
   bool quiet = false;
 };
 
-const std::vector<OptionSpec> kSessionOptions = {
-    {"--device", true}, {"--duration", true},       {"--out", true},     {"--plugins", true},
-    {"--filter", true}, {"--no-estimate", false},   {"--side", true},    {"--latency-window", true},
-    {"--stats", false}, {"--stats-interval", true}, {"--quiet", false},  {"--overwrite", false},
-    {"--db", true},     {"--user", true},           {"--patient", true}, {"--protocol", true}};
+const std::vector<OptionSpec> kSessionOptions = {{"--device", true},
+                                                 {"--duration", true},
+                                                 {"--out", true},
+                                                 {"--plugins", true},
+                                                 {"--filter", true},
+                                                 {"--no-estimate", false},
+                                                 {"--side", true},
+                                                 {"--latency-window", true},
+                                                 {"--stats", false},
+                                                 {"--stats-interval", true},
+                                                 {"--quiet", false},
+                                                 {"--overwrite", false},
+                                                 {"--db", true},
+                                                 {"--user", true},
+                                                 {"--patient", true},
+                                                 {"--protocol", true},
+                                                 {"--no-auto-calibration", false}};
 
 /// recorded: the rows to report as recorded (the session's count unless given).
 void printStats(std::ostream& out, const session::SessionStats& s, double cpuPercent, double rssMb,
@@ -244,6 +262,8 @@ SessionSetup parseSession(const Args& a, bool record) {
   else if (side != "right")
     a.fail("--side: expected right or left, got '" + side + "'");
   params.estimate = !a.flag("--no-estimate");
+  // No calibration file is given to a live session: the straps are fitted from the movement.
+  params.movementCalibration.enabled = !a.flag("--no-auto-calibration");
   params.latencyWindow = a.positive("--latency-window", params.latencyWindow);
   params.recordingPath = o.out;
   // The session claims the name itself (O_EXCL) unless --overwrite, so a recording that appears

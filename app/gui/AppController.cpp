@@ -331,13 +331,15 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
   auto* screen = new app::gui::LiveSessionScreen(m_plugins, config, target);
   const QString code = plan.patient.code;
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
-          [this, target, code, calibration = choices.calibration](const QString& summary) {
+          [this, screen, target, code, calibration = choices.calibration](const QString& summary) {
             m_window->showStatus(summary, 0);
             // Closed during the recording ("Stop and save"): its analysis waits for the next
             // start (analysePending).
             if (m_closeGuard->closing()) return void(m_window->close());
+            // Without a sensor calibration, the straps the session fitted from the movement.
             if (const qint64 id = target->sessionId())
-              analyseThenReview(id, code, calibration);
+              analyseThenReview(id, code,
+                                calibration ? calibration : screen->movementCalibration());
             else
               showPatient(code);
           });

@@ -242,17 +242,18 @@ QString Session::start() {
     return QStringLiteral(
         "no IMU among the devices: the estimator needs the upper-arm or "
         "forearm IMU (or record without estimating)");
-  {
-    EstimatorParams e = recordingParams(m_params.meta);
-    EstimatorParams p = m_params.estimator;
-    p.geometry = e.geometry;
-    p.gUp = e.gUp;
-    p.camera = e.camera;
-    p.side = e.side;
-    p.trunk = e.trunk;  // the sternum IMU's mounting: frame 0 then moves with the thorax
-    m_params.estimator = p;
-  }
+  m_params.estimator = sessionFilterParams(m_params.estimator, m_params.meta);
   if (QString why = openRecording(columns); !why.isEmpty()) return why;
+  m_liveCalibration.reset();
+  m_movementCalibrationFile.clear();
+  // The fit needs both arm IMUs (the elbow between them); without one it stays off.
+  if (m_params.estimate && m_params.movementCalibration.enabled && columns.upperArm &&
+      columns.forearm)
+    m_liveCalibration =
+        std::make_unique<LiveCalibration>(m_params.movementCalibration, m_params.meta,
+                                          [base = m_params.estimator](const RecordingMeta& meta) {
+                                            return sessionFilterParams(base, meta);
+                                          });
 
   m_stats = SessionStats{};
   for (const Stream& s : m_streams) {
@@ -393,7 +394,40 @@ void Session::stop() {
   if (m_worker.joinable()) m_worker.join();
   if (m_recorder.joinable()) m_recorder.join();
   m_writer.reset();
+  keepMovementCalibration();
   m_running = false;
+}
+
+void Session::keepMovementCalibration() {
+  if (!m_liveCalibration || m_params.recordingPath.empty()) return;
+  const LiveCalibrationStatus st = m_liveCalibration->status();
+  if (!st.calibration) return;
+  const std::filesystem::path file = movementCalibrationPath(m_params.recordingPath);
+  try {
+    writeCalibration(file, *st.calibration);
+    m_movementCalibrationFile = file;
+    logEvent("calibration from movement: the straps used are kept in " + file.string() +
+             " (armtrack-cli estimate --calibration uses them again)");
+  } catch (const CalibrationError& e) {
+    logEvent(std::string("calibration from movement: not kept: ") + e.what());
+    emit problem(QStringLiteral("calibration from movement: not kept: ") +
+                 QString::fromStdString(e.what()));
+  }
+}
+
+LiveCalibrationStatus Session::movementCalibration() const {
+  return m_liveCalibration ? m_liveCalibration->status() : LiveCalibrationStatus{};
+}
+
+EstimatorParams sessionFilterParams(const EstimatorParams& base, const RecordingMeta& meta) {
+  const EstimatorParams e = recordingParams(meta);
+  EstimatorParams p = base;
+  p.geometry = e.geometry;
+  p.gUp = e.gUp;
+  p.camera = e.camera;
+  p.side = e.side;
+  p.trunk = e.trunk;  // the sternum IMU's mounting: frame 0 then moves with the thorax
+  return p;
 }
 
 SessionStats Session::stats() const {

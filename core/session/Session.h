@@ -23,6 +23,7 @@
 #include "core/devices/SampleSource.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
+#include "core/session/LiveCalibration.h"
 
 namespace armtrack::session {
 
@@ -59,6 +60,10 @@ struct SessionParams {
   /// s between messages that the trunk left its start pose with no trunk IMU to measure it (a
   /// patient leaning on every reach); departures in between are counted in the next message.
   double trunkMessageSeconds = 10.0;
+  /// The straps fitted from the patient's movement while the session runs, for a patient with
+  /// no calibration for these sensors (off by default; docs/session.md, "Calibration from
+  /// movement"). Needs the estimator and both arm IMUs (off without them).
+  LiveCalibrationParams movementCalibration;
 };
 
 /// One estimate, for the GUI and `live`. Every row with IMU data gets one once the estimator has
@@ -179,6 +184,12 @@ class Session : public QObject {
   const RecordingMeta& meta() const { return m_params.meta; }
 
   SessionStats stats() const;
+  /// What the calibration from movement did so far (State::Off when not asked for). Any thread.
+  LiveCalibrationStatus movementCalibration() const;
+  /// Where the calibration from movement the session used was written at stop() (a recording
+  /// file beside the CSV, movementCalibrationPath()); empty when none was used or written.
+  std::filesystem::path movementCalibrationFile() const { return m_movementCalibrationFile; }
+
   /// Moves the estimates made since the last call into out (appended); returns how many.
   std::size_t takeResults(std::vector<EstimateRow>& out);
   /// Moves the session messages (device states, problems, recorder failures, readings the
@@ -217,6 +228,8 @@ class Session : public QObject {
   void workerLoop();
   void recorderLoop();
   void stopDevices();
+  /// After stop(): writes the calibration from movement in use beside the recording file.
+  void keepMovementCalibration();
 
   SessionParams m_params;
   std::vector<DeviceEntry> m_devices;
@@ -247,7 +260,15 @@ class Session : public QObject {
   SessionStats m_stats;
   std::vector<std::string> m_events;
 
+  // The calibration from movement (when asked for): fed and polled by the worker.
+  std::unique_ptr<LiveCalibration> m_liveCalibration;
+  std::filesystem::path m_movementCalibrationFile;
+
   std::thread m_worker, m_recorder;
 };
+
+/// The session's filter parameters for a sidecar: base with the geometry, gravity, camera, side
+/// and sternum mounting of meta (what start() does with SessionParams::estimator).
+EstimatorParams sessionFilterParams(const EstimatorParams& base, const RecordingMeta& meta);
 
 }  // namespace armtrack::session

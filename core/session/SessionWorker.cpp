@@ -70,6 +70,7 @@ class Session::Worker {
                    s.m_params.refusalSummarySeconds),
         m_trunkMessages(s.m_params.trunkMessageSeconds) {
     if (s.m_params.estimate) m_filter = makeEstimator(s.m_params.estimator);
+    m_calibration = s.m_liveCalibration.get();
     // Without a trunk IMU, an optical shoulder tells whether the trunk moved (as `estimate` does,
     // core/estimation/RecordingEstimator.cpp).
     const bool trunkImu = std::any_of(s.m_streams.begin(), s.m_streams.end(), [](const Stream& st) {
@@ -97,6 +98,7 @@ class Session::Worker {
     // Shutdown: everything received is processed.
     m_sync.flush(Sink{this});
     if (auto done = m_assembler.flush()) processRow(std::move(*done), m_rowOldestArrival);
+    if (m_calibration) m_calibration->finish();
     m_messages.finish(m_notes);
     m_trunkMessages.finish(m_notes);
     publish(true);
@@ -198,8 +200,16 @@ class Session::Worker {
       trunkMoved = st.moving;
       m_trunkMessages.update(st, row.t, m_notes);
     }
+    if (m_filter && m_calibration) calibrateFromMovement(row);
     if (m_filter) {
-      const UpdateResult r = m_filter->update(row);
+      // The readings in the fitted sensor frames once a calibration from movement is in use;
+      // the recording keeps them as the devices gave them.
+      ArmSample corrected;
+      if (m_fitted) {
+        corrected = row;
+        applyCalibration(*m_fitted, corrected);
+      }
+      const UpdateResult r = m_filter->update(m_fitted ? corrected : row);
       m_messages.update(m_filter->counters(), row.t, m_notes);
       // Rows predicted through refused readings and recovered rows are estimates too: the GUI
       // shows them with their status and (grown) uncertainty.
@@ -247,6 +257,34 @@ class Session::Worker {
     }
   }
 
+  /// Feeds the calibration from movement the row as the devices gave it; when a fit has
+  /// finished, tells its line, and when its calibration is to be used, restarts the estimator
+  /// with it (the new mounting changes the model; a fresh start is the one consistent state).
+  void calibrateFromMovement(const ArmSample& row) {
+    m_calibration->add(row);
+    std::optional<AutoCalibrationResult> r = m_calibration->poll(row.t);
+    if (!r) return;
+    const bool firstTry = !m_toldCalibration;
+    m_toldCalibration = true;
+    // Every fit that was made is told; "not tried" only the first time (it repeats until the
+    // patient rests once and moves enough).
+    if (r->outcome != AutoCalibrationResult::Outcome::NotTried || firstTry)
+      m_news.push_back(r->line + " (at " + std::to_string(static_cast<long>(row.t)) + " s)");
+    if (!r->calibration) return;
+    RecordingMeta meta = m_s.m_params.meta;
+    applyCalibration(*r->calibration, meta);
+    m_filter = makeEstimator(sessionFilterParams(m_s.m_params.estimator, meta));
+    m_fitted = std::move(r->calibration);
+    // The new estimator's counters start from zero: the old one's untold refusals are summed
+    // up now and the messages start afresh with it.
+    m_messages.finish(m_notes);
+    m_messages = EstimatorMessages(blockStreams(m_s), m_s.m_params.refusalQuietSeconds,
+                                   m_s.m_params.refusalSummarySeconds);
+    m_news.push_back(
+        "the estimator restarted with the straps fitted from the movement: the "
+        "angles may jump once here");
+  }
+
   /// Leaves out of a row what the recording has no columns for (a device that sent a shoulder or
   /// true trunk angles it did not declare in its StreamInfo): the rest of the row is recorded,
   /// and the user told once.
@@ -271,6 +309,10 @@ class Session::Worker {
       emit m_s.problem(QString::fromStdString(n));
     }
     m_notes.clear();
+    // What the calibration from movement did is news, not a problem: the messages only (the
+    // screens say it in their own words from Session::movementCalibration()).
+    for (const std::string& n : m_news) m_s.logEvent(n);
+    m_news.clear();
   }
 
   /// New estimates to the results the GUI drains; the statistics every 0.1 s, and at the end.
@@ -340,10 +382,15 @@ class Session::Worker {
   // What the estimator refused, its recoveries and restarts, told as they happen (rate-limited).
   EstimatorMessages m_messages;
   std::vector<std::string> m_notes;  // messages made under no lock, told by publish()
+  std::vector<std::string> m_news;   // the same, for the messages only (not problem())
   // Without a trunk IMU: whether the trunk left its start pose (an optical shoulder's cue).
   std::optional<TrunkMotionDetector> m_trunkDetector;
   TrunkMessages m_trunkMessages;
   bool m_toldUndeclared = false;
+  // The calibration from movement (the session's, when asked for) and the one in use.
+  LiveCalibration* m_calibration = nullptr;
+  std::optional<Calibration> m_fitted;
+  bool m_toldCalibration = false;
   // Optical measurements waiting for the next estimate (they often come in rows of their own).
   EstimateRow m_pendingOptical;
 };

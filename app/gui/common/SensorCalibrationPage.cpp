@@ -286,7 +286,10 @@ void SensorCalibrationPage::start() {
   m_gate->setRecording(true);  // from the first row: the start pose is held from the start
   setState(State::Recording);
   showStep([] { return tr("Starting the sensors\u2026"); }, {});
-  m_controller->start(m_config, m_gate);
+  // The protocol calibrates the straps itself: no fit from the movement meanwhile.
+  LiveSessionConfig config = m_config;
+  config.movementCalibration.enabled = false;
+  m_controller->start(config, m_gate);
 }
 
 void SensorCalibrationPage::drain() {

@@ -117,4 +117,9 @@ void ExerciseRecording::finishInRecords() {
       });
 }
 
+session::LiveCalibrationStatus ExerciseRecording::movementCalibration() const {
+  const std::shared_ptr<session::Session>& s = m_controller->session();
+  return s ? s->movementCalibration() : session::LiveCalibrationStatus{};
+}
+
 }  // namespace armtrack::gui::home

@@ -55,6 +55,8 @@ class ExerciseRecording : public QObject {
   bool recording() const { return m_want; }
   /// The running session's new estimates (GUI thread); false when none runs.
   bool drain(std::vector<session::EstimateRow>& rows, std::vector<std::string>& events);
+  /// What the running session's calibration from movement found (State::Off when none runs).
+  session::LiveCalibrationStatus movementCalibration() const;
   /// Ends the session; finished() follows once the records have it. cutShort: the exercise was
   /// stopped before its end (the session is then interrupted).
   void stop(bool cutShort);

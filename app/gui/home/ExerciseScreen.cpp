@@ -11,6 +11,7 @@
 #include "app/gui/home/ExerciseRecording.h"
 #include "app/gui/home/FeedbackSound.h"
 #include "app/gui/home/HomeStyle.h"
+#include "app/gui/services/StrapsText.h"
 #include "core/kinematics/ClinicalAngles.h"
 #include "ui/AngleTableModel.h"
 #include "ui/ArmView.h"
@@ -410,6 +411,16 @@ void ExerciseScreen::tick() {
               .arg(asArray(toClinical(last.th))[static_cast<std::size_t>(j)], 0, 'f', 0));
     else
       m_angle->setText(tr("%1: not measured").arg(ui::angleDisplayName(j)));
+  }
+  // About once a second: a strap that turned far is told once, in the patient's words.
+  if (!m_toldStraps && ++m_strapsTicks >= 30) {
+    m_strapsTicks = 0;
+    const QString words = app::gui::strapsPatientLine(
+        m_strapsSource ? m_strapsSource() : m_recording->movementCalibration());
+    if (!words.isEmpty()) {
+      m_toldStraps = true;
+      showFeedback(words, static_cast<int>(Tone::Hint));
+    }
   }
   if (m_feedback) {
     handleEvents(m_feedback->takeEvents());

@@ -81,6 +81,11 @@ class ExerciseScreen : public HomeScreen {
   using EstimateSource =
       std::function<bool(std::vector<session::EstimateRow>&, std::vector<std::string>&)>;
   void setEstimateSource(EstimateSource source) { m_source = std::move(source); }
+  /// Where the screen learns what the calibration from movement found: the exercise's session
+  /// (default), or, given here, a function (a test's made finding). The patient is told once,
+  /// in plain words, only when a strap has turned far (strapsPatientLine).
+  using StrapsSource = std::function<session::LiveCalibrationStatus()>;
+  void setStrapsSource(StrapsSource source) { m_strapsSource = std::move(source); }
 
   QList<QAbstractButton*> choices() const override;
   QAbstractButton* defaultChoice() const override;
@@ -143,6 +148,9 @@ class ExerciseScreen : public HomeScreen {
   std::vector<session::EstimateRow> m_rows;
   QStringList m_shown;
   EstimateSource m_source;
+  StrapsSource m_strapsSource;
+  int m_strapsTicks = 0;      // ticks since the straps were last looked at
+  bool m_toldStraps = false;  // the patient was told about a turned strap
   std::optional<TrunkLimitCue> m_trunkCue;
   std::size_t m_trunkCues = 0;  // cues sounded so far
 

@@ -189,7 +189,10 @@ void SensorCheckScreen::start() {
   setState(State::Recording);
   m_title->setText(tr("Starting the sensors\u2026"));
   m_text->setText(tr("Let your arm hang loosely straight down."));
-  m_controller->start(m_config, m_gate);
+  // A check of a few seconds: no fit of the straps from the movement.
+  app::gui::LiveSessionConfig config = m_config;
+  config.movementCalibration.enabled = false;
+  m_controller->start(config, m_gate);
 }
 
 void SensorCheckScreen::drain() {

@@ -12,6 +12,7 @@
 #include <QVBoxLayout>
 #include <cmath>
 
+#include "app/gui/services/StrapsText.h"
 #include "core/metrics/RangeOfMotion.h"
 #include "core/metrics/SessionTime.h"
 #include "ui/AnglePlotPanel.h"
@@ -139,6 +140,13 @@ void LiveSessionScreen::buildLayout() {
   bannerRow->addWidget(m_banner, 1);
   bannerRow->addWidget(m_retry);
   root->addLayout(bannerRow);
+  // The straps as the movement shows them (docs/gui.md, "Live session").
+  m_straps = new QLabel(this);
+  m_straps->setWordWrap(true);
+  m_straps->setTextInteractionFlags(Qt::TextSelectableByKeyboard | Qt::TextSelectableByMouse);
+  m_straps->setFocusPolicy(Qt::TabFocus);
+  m_straps->hide();
+  root->addWidget(m_straps);
   // The trunk limit's cue, across the screen while the patient leans past it.
   m_trunk = std::make_unique<LiveTrunkFeedback>(m_config.trunkLimitDeg, this);
   root->addWidget(m_trunk->cueLabel());
@@ -200,6 +208,7 @@ void LiveSessionScreen::buildLayout() {
   setTabOrder(m_arm, m_plots->tableView());
   setTabOrder(m_plots->tableView(), m_health->view());
   setTabOrder(m_health->view(), m_messages);
+  setTabOrder(m_messages, m_straps);
 }
 
 void LiveSessionScreen::retranslateUi() {
@@ -235,6 +244,8 @@ void LiveSessionScreen::retranslateUi() {
   if (m_bannerText) m_banner->setText(m_bannerText());
   m_retry->setText(tr("Try &again"));
   m_messages->setAccessibleName(tr("Session messages"));
+  m_straps->setAccessibleName(tr("Straps"));
+  updateStraps();
   m_reps->setAngleName(ui::angleDisplayName(repetitionAngle(m_config.primaryAngle)));
   m_trunk->retranslate();
   updateButtons();
@@ -348,6 +359,10 @@ void LiveSessionScreen::stop() {
   if (m_recordingSince >= 0) m_recordedSeconds += m_sessionTime - m_recordingSince;
   m_recordingSince = -1;
   m_drainTimer.stop();
+  if (const std::shared_ptr<session::Session>& s = m_controller->session()) {
+    m_strapsStatus = s->movementCalibration();  // the last word on the straps
+    updateStraps();
+  }
   setState(State::Stopping);
   m_controller->stop();
 }
@@ -424,6 +439,8 @@ void LiveSessionScreen::drain() {
       setState(State::Paused);
     }
     updateStatus();
+    m_strapsStatus = s->movementCalibration();
+    updateStraps();
     lap(m_times.statsMs);
   }
   m_times.wholeMs = std::max(m_times.wholeMs, static_cast<double>(clock.nsecsElapsed()) * 1e-6);
@@ -501,6 +518,12 @@ void LiveSessionScreen::updateButtons() {
   m_pause->setEnabled(m_gate && m_state == State::Recording);
   m_stop->setEnabled(running || m_state == State::Starting);
   m_mark->setEnabled(running);
+}
+
+void LiveSessionScreen::updateStraps() {
+  const QString line = strapsLine(m_strapsStatus);
+  if (line != m_straps->text()) m_straps->setText(line);
+  m_straps->setVisible(!line.isEmpty());
 }
 
 void LiveSessionScreen::updateStatus() {

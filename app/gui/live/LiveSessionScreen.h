@@ -87,6 +87,14 @@ class LiveSessionScreen : public QWidget {
   ui::DeviceHealthPanel* health() const { return m_health; }
   ui::RepetitionCounterWidget* repetitions() const { return m_reps; }
   QListWidget* messages() const { return m_messages; }
+  /// The line on the straps as the calibration from movement found them (hidden when it is
+  /// off: a sensor calibration is in use).
+  QLabel* strapsLabel() const { return m_straps; }
+  /// The calibration from movement the session used last (kept after it stops), for the
+  /// session's analysis to estimate with it again; empty when none was applied.
+  const std::optional<Calibration>& movementCalibration() const {
+    return m_strapsStatus.calibration;
+  }
   QPushButton* recordButton() const { return m_record; }
   QPushButton* pauseButton() const { return m_pause; }
   QPushButton* stopButton() const { return m_stop; }
@@ -129,6 +137,8 @@ class LiveSessionScreen : public QWidget {
   void openGate();
   void updateButtons();
   void updateStatus();
+  /// The straps' line from the session's calibration from movement (kept after it stops).
+  void updateStraps();
 
   const PluginRegistry& m_registry;
   LiveSessionConfig m_config;
@@ -165,6 +175,8 @@ class LiveSessionScreen : public QWidget {
   QLabel* m_title = nullptr;
   QLabel* m_status = nullptr;
   QLabel* m_banner = nullptr;
+  QLabel* m_straps = nullptr;
+  session::LiveCalibrationStatus m_strapsStatus;
   std::function<QString()> m_bannerText;
   QPushButton* m_retry = nullptr;
   QPushButton* m_record = nullptr;

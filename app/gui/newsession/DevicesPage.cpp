@@ -188,6 +188,7 @@ void DevicesPage::startCheck() {
   if (m_checking) return;
   LiveSessionConfig c = m_base;
   c.devices = devices();
+  c.movementCalibration.enabled = false;  // a device check, not a session
   if (c.devices.isEmpty()) {
     showStatus([] { return tr("Tick at least one device first."); });
     return;

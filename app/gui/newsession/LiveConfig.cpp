@@ -30,6 +30,8 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
   // A sensor calibration made for this session brings the arm's fitted lengths and mounting.
   if (calibration && calibration->side == c.meta.side) {
     c.meta.geometry = calibration->geometry;
+    // The straps are known: no fit from the movement.
+    c.movementCalibration.enabled = false;
     // And the sternum sensor's mounting levelled from the start pose, for the same sensor.
     if (calibration->trunk && hasSternumSensor(devices)) c.meta.trunk = calibration->trunk;
   }

@@ -11,6 +11,7 @@
 
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
+#include "core/session/LiveCalibration.h"
 
 namespace armtrack::app::gui {
 
@@ -40,6 +41,14 @@ struct LiveSessionConfig {
   /// The sensor calibration made for this session, stored with it for the report: "good",
   /// "usable" or "poor" ("" = none made) and its reason in words.
   QString calibrationVerdict, calibrationReason;
+  /// The straps fitted from the movement while the session runs (docs/session.md, "Calibration
+  /// from movement"): on unless a sensor calibration is used (liveSessionConfig switches it off
+  /// then).
+  session::LiveCalibrationParams movementCalibration = [] {
+    session::LiveCalibrationParams p;
+    p.enabled = true;
+    return p;
+  }();
 };
 
 /// Whether the device specs include a sternum (trunk) IMU: the virtual arm's `trunk` sensor, or

@@ -91,6 +91,7 @@ void SessionController::startInThread(LiveSessionConfig config,
   session::SessionParams params;
   params.meta = config.meta;
   params.estimator = config.estimator;
+  params.movementCalibration = config.movementCalibration;
   params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
   if (gate && gate->target()) {
     params.openSink = [this, gate](

@@ -1,5 +1,6 @@
 // The live session's set-up from the new-session flow: a sensor calibration's sternum mounting
-// reaches the session only when the devices include a sternum sensor.
+// reaches the session only when the devices include a sternum sensor, and a sensor calibration
+// of the arm switches the fit of the straps from the movement off.
 #include <QTest>
 
 #include <Eigen/Geometry>
@@ -38,6 +39,24 @@ class TestLiveConfig : public QObject {
     left.side = Side::Left;
     QVERIFY(!gui::liveSessionConfig(left, {QStringLiteral("shimmer:role=trunk")}, settings, cal)
                  .meta.trunk);
+  }
+
+  // The straps are fitted from the movement only when no sensor calibration of this arm is used
+  // (docs/session.md, "Calibration from movement").
+  void aSensorCalibrationMeansNoFitFromTheMovement() {
+    const gui::SessionPlan plan;
+    const gui::AppSettings settings;
+    const QStringList devices = {QStringLiteral("virtual-arm:sensors=upper+forearm")};
+    QVERIFY(
+        gui::liveSessionConfig(plan, devices, settings, std::nullopt).movementCalibration.enabled);
+    Calibration cal;
+    QVERIFY(!gui::liveSessionConfig(plan, devices, settings, cal).movementCalibration.enabled);
+    // A calibration of the other arm is none for this one.
+    gui::SessionPlan left;
+    left.side = Side::Left;
+    QVERIFY(
+        gui::liveSessionConfig(left, {QStringLiteral("shimmer:port=/dev/rfcomm2")}, settings, cal)
+            .movementCalibration.enabled);
   }
 };
 

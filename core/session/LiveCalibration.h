@@ -1,0 +1,109 @@
+// The calibration from ordinary movement in a live session (docs/session.md, "Calibration from
+// movement"; docs/calibration.md, "Used automatically"): when the patient has no calibration
+// for these sensors, the worker keeps the newest rows in a window, fits the straps on a thread
+// of its own (core/calibration/AutoCalibration.h, the rule `estimate` uses) and hands back a
+// calibration to use only when it explains the readings clearly better than the one in use.
+// Refits at intervals on a longer window refine it by the same rule. Plain C++ (no Qt).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "core/calibration/AutoCalibration.h"
+
+namespace armtrack::session {
+
+/// When and on what the session fits.
+struct LiveCalibrationParams {
+  /// Fit the straps from the movement. The GUI and `live` switch it off when a calibration file
+  /// for these sensors is used.
+  bool enabled = false;
+  double firstSeconds = 30.0;   ///< s of rows before the first fit
+  double retrySeconds = 15.0;   ///< s between fits until one could be made
+  double refineSeconds = 60.0;  ///< s between refits once one was made
+  double windowSeconds = 90.0;  ///< s of the newest rows kept and fitted on
+  /// Each IMU's readings are kept at most this often (Hz): arm movement lies below 10 Hz, and a
+  /// 1 kHz sensor would otherwise fill the window with 90 000 rows (45 MB) for nothing.
+  double maxRateHz = 200.0;
+  /// The fit is used only when its ReadingFit score is below this fraction of the mounting's in
+  /// use (AutoCalibrationParams::betterFraction).
+  double betterFraction = 0.7;
+};
+
+/// What the session's calibration from movement did so far; Session::movementCalibration().
+struct LiveCalibrationStatus {
+  enum class State {
+    Off,         ///< not asked for (a calibration file is in use), or no estimator
+    Collecting,  ///< waiting for the first window
+    Fitting,     ///< the first fit that could be made runs
+    AsFitted,    ///< fits were made and none was better: the straps sit as the sidecar says
+    Applied,     ///< a fitted calibration is in use
+  };
+  State state = State::Off;
+  bool fitting = false;  ///< a fit (or refit) runs now
+  int fits = 0;          ///< fits finished (any outcome)
+  int applied = 0;       ///< of which applied (the first, and each better refit)
+  /// The calibration in use, its summary and when it was applied (session time, s).
+  std::optional<Calibration> calibration;
+  std::optional<MountingSummary> summary;
+  double appliedAt = std::numeric_limits<double>::quiet_NaN();
+  /// The newest fit's line ("calibration from movement: ..."), as told in the session messages.
+  std::string line;
+};
+
+/// Where a session recorded at csv keeps the calibration it fitted and used:
+/// "rec.csv" -> "rec.movement-calibration.json" (a calibration file, docs/calibration.md), so
+/// `armtrack-cli estimate rec.csv --calibration rec.movement-calibration.json` uses it again.
+std::filesystem::path movementCalibrationPath(const std::filesystem::path& csv);
+
+/// Owned by the session's worker thread: add() every row, poll() for a finished fit. status()
+/// may be called from any thread.
+class LiveCalibration {
+ public:
+  /// meta: the session's sidecar (the fit's prior); paramsFor: the session's filter for a meta.
+  LiveCalibration(const LiveCalibrationParams& params, RecordingMeta meta,
+                  FilterParamsFor paramsFor);
+  ~LiveCalibration();  ///< cancels a running fit and waits for it
+  LiveCalibration(const LiveCalibration&) = delete;
+  LiveCalibration& operator=(const LiveCalibration&) = delete;
+
+  /// A row as the devices gave it (session time).
+  void add(const ArmSample& row);
+  /// When a fit has finished: its result (a calibration set only when it is to be used from now
+  /// on; the status is updated already). Starts the next fit when it is due.
+  std::optional<AutoCalibrationResult> poll(double t);
+  /// Cancels a running fit and waits for it (the session stops).
+  void finish();
+
+  LiveCalibrationStatus status() const;
+
+ private:
+  void startFit();
+
+  LiveCalibrationParams m_params;
+  RecordingMeta m_meta;
+  FilterParamsFor m_paramsFor;
+  std::deque<ArmSample> m_window;
+  double m_firstT = std::numeric_limits<double>::quiet_NaN();
+  double m_nextUpperT = -std::numeric_limits<double>::infinity();  // next upper-arm reading kept
+  double m_nextForearmT = -std::numeric_limits<double>::infinity();
+  double m_nextFitT = 0.0;  // session time of the next fit
+  bool m_madeOne = false;   // a fit was made (not merely "not tried")
+  std::optional<Calibration> m_current;
+
+  std::thread m_thread;
+  std::atomic<bool> m_cancel{false}, m_done{false};
+  AutoCalibrationResult m_result;  // written by the fit thread before m_done
+
+  mutable std::mutex m_statusMutex;
+  LiveCalibrationStatus m_status;
+};
+
+}  // namespace armtrack::session
