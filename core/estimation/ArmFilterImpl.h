@@ -172,6 +172,16 @@ class ArmFilter final : public JointEstimator {
   void keepInAnatomicalRange();
   void repairCovariance();
   void freezeInactive();
+  void reopenAngles();
+  // Methods B and C on real sensors (docs/estimator.md, "Methods B and C on realistic
+  // sensors"): the optics' disagreement opens the angles up instead of a re-initialisation.
+  // It belongs with the kinematic start-up: off with it, as the paper studies run the paper's
+  // filters.
+  bool inclinometerRealSensors() const {
+    return (m_p.model == MeasurementModel::InclinometerGyro ||
+            m_p.model == MeasurementModel::AugmentedBodyAccel) &&
+           m_p.kinematicStartup;
+  }
   void handOver();
 
   // The heading is a symmetry of the IMU readings only when the whole arm can turn about the

@@ -224,9 +224,14 @@ bool ArmFilter<N>::lost() {
     return true;
   if (m_t - m_t0 < m_p.startupSeconds) return false;
   // The optics kept contradicting the state (a gated point, frame after frame): the IMUs alone
-  // cannot fix a wrong heading or branch, so start again from the window.
+  // cannot fix a wrong heading or branch, so start again from the window. Methods B and C open
+  // their angles up instead (reopenAngles).
   if (m_opticalDisagrees) {
     m_opticalDisagrees = false;
+    if (inclinometerRealSensors()) {
+      reopenAngles();
+      return false;
+    }
     return true;
   }
   if (m_updateDof == 0) return false;
@@ -321,6 +326,17 @@ void ArmFilter<N>::repairCovariance() {
   m_P = es.eigenvectors() * ev.asDiagonal() * es.eigenvectors().transpose();
 }
 
+// Methods B and C, when the optics kept contradicting the state: each angle's variance grows by
+// the start-up's (initialAngleStdOptical, 5 deg) so the next frames pull the state over, where a
+// re-initialisation from the window would make it jump (their inclinometer model reads body
+// acceleration as tilt, so the window fit lands tens of degrees off, or on the other branch).
+template <int N>
+void ArmFilter<N>::reopenAngles() {
+  const double reopen = m_p.initialAngleStdOptical * m_p.initialAngleStdOptical;
+  for (int j = 0; j < kNumJoints; ++j)
+    if (m_p.activeJoints[j]) m_P(10 + j, 10 + j) += reopen;
+}
+
 // Inactive joints are held at their fixed value with a tiny variance (keeps P positive definite).
 template <int N>
 void ArmFilter<N>::freezeInactive() {
@@ -377,6 +393,7 @@ template bool ArmFilter<kBase>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase>::keepInAnatomicalRange();
 template void ArmFilter<kBase>::repairCovariance();
 template void ArmFilter<kBase>::freezeInactive();
+template void ArmFilter<kBase>::reopenAngles();
 template void ArmFilter<kBase>::handOver();
 template void ArmFilter<kBase + 6>::initialise(const ArmSample& s);
 template void ArmFilter<kBase + 6>::startCovariance(bool optical);
@@ -397,6 +414,7 @@ template bool ArmFilter<kBase + 6>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase + 6>::keepInAnatomicalRange();
 template void ArmFilter<kBase + 6>::repairCovariance();
 template void ArmFilter<kBase + 6>::freezeInactive();
+template void ArmFilter<kBase + 6>::reopenAngles();
 template void ArmFilter<kBase + 6>::handOver();
 
 }  // namespace armtrack::detail
