@@ -50,8 +50,8 @@ BaselineRun runBaseline(const Recording& recording, const BaselineParams& params
 
 /// The DH filter (EKF, default settings, IMUs only) over the same recording, scored the same way.
 /// freeElbow lifts the filter's anatomical limits on th4 (-170 to 20 deg by default), which a
-/// pendulum's hinge may pass; Method A no longer projects onto them, so for it this only lets its
-/// window fits end beyond them. Everything else stays at its default.
+/// pendulum's hinge passes: the study's pendulum rows give the filter the hinge's range that way.
+/// Everything else stays at its default.
 JointErrors runDhFilter(const Recording& recording, bool freeElbow = false);
 
 /// Where the elbow really is seen from the forearm IMU of simulatePendulum (forearm axes, m) when

@@ -192,8 +192,7 @@ struct EstimatorParams {
   /// clinical terms: abduction from -100 deg (the arm swung across the body), internal rotation
   /// -120 to 110 deg, elbow flexion -20 to 170 deg, pronation -130 to 130 deg; flexion free.
   /// The other Euler branch of a shoulder pose, (th0 + 180, 180 - th1, th2 + 180) deg, then lies
-  /// outside unless the internal rotation is beyond about +-60 deg. Method A does not push the
-  /// elbow's flexion back to its limits (docs/estimator.md, "Anatomical limits").
+  /// outside unless the internal rotation is beyond about +-60 deg.
   JointVector jointLower = defaultJointLower();
   JointVector jointUpper = defaultJointUpper();
   static JointVector defaultJointLower() {

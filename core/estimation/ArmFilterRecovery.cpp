@@ -292,22 +292,12 @@ bool ArmFilter<N>::inAnatomicalRange(const Vec15& x) const {
 // Estimate projection (Simon & Chia 2002) onto each violated limit in turn: the joint goes to
 // the nearest limit (wrapped), and every state correlated with it moves by the gain P e / P_ii.
 // The covariance is kept: the limit is knowledge about the arm, not a measurement.
-// Method A's elbow flexion is not projected: its body-acceleration model leaves no other branch
-// for the elbow to settle on (the limits were set against the inclinometer models of B and C,
-// which keep them), and a hinge that bends beyond the limits (a pendulum or a rig, or a straight
-// elbow put elsewhere than the model's zero) must be followed: projected, the estimate slid into
-// humeral rotation and abduction and was lost (docs/baseline.md, the double pendulum). The
-// price: with the forearm IMU 9-21 cm from where the sidecar puts it, the limits had kept such
-// a mismatched model's elbow nearer the truth. The window fits still refuse an elbow outside the
-// limits (inAnatomicalRange).
 template <int N>
 void ArmFilter<N>::keepInAnatomicalRange() {
-  const bool elbowFree = m_model == MeasurementModel::AccelGyro;
   for (int j = 0; j < kNumJoints; ++j) {
     const int i = 10 + j;
     const double th = m_x(i), lo = m_p.jointLower(j), hi = m_p.jointUpper(j);
     if (!m_p.activeJoints[j] || (th >= lo && th <= hi) || !(m_P(i, i) > 0.0)) continue;
-    if (j == 3 && elbowFree) continue;
     const double toLo = std::isfinite(lo) ? wrapAngle(lo - th) : kInf;
     const double toHi = std::isfinite(hi) ? wrapAngle(hi - th) : kInf;
     const double step = std::abs(toLo) < std::abs(toHi) ? toLo : toHi;
