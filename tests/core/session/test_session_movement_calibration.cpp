@@ -21,10 +21,9 @@
 #include "core/calibration/Calibration.h"
 #include "core/io/Recording.h"
 #include "core/session/Session.h"
-#include "core/simulation/SensorSimulator.h"
-#include "core/simulation/Trajectory.h"
 #include "devices/api/Options.h"
 #include "tests/support/LoadPlugin.h"
+#include "tests/support/TurnedStrapsPatient.h"
 
 namespace armtrack::session {
 namespace {
@@ -35,18 +34,9 @@ constexpr double kTurn = 25.0;      // deg, both straps
 constexpr double kSeconds = 110.0;  // of simulated session
 constexpr double kSpeed = 10.0;     // replayed this much faster than real time
 
-// A patient's session of reaches from a resting hand (SessionTrajectory), IMUs at 100 Hz with
-// Table 5 noise, no optics; both straps turned `turnDeg` about random axes.
+// A patient whose straps sit wrong (tests/support/TurnedStrapsPatient.h).
 Recording patient(double turnDeg) {
-  SimulationParams sim = defaultSimulation();
-  sim.duration = kSeconds;
-  sim.seed = 31;
-  sim.kinect.enabled = false;
-  sim.upperArm.rateHz = sim.forearm.rateHz = 100.0;
-  sim.upperArm.misalignment = randomMisalignment(turnDeg * kDeg, 63);
-  sim.forearm.misalignment = randomMisalignment(turnDeg * kDeg, 64);
-  const SessionTrajectory traj(31, 150 * kDeg, 1500 * kDeg, kSeconds);
-  return simulateRecording(traj, sim);
+  return armtrack::test::turnedStrapsSession(turnDeg, kSeconds);
 }
 
 struct LiveRun {

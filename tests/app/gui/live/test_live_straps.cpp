@@ -14,9 +14,8 @@
 #include "app/gui/live/LiveSessionScreen.h"
 #include "app/plugins/PluginRegistry.h"
 #include "core/io/Recording.h"
-#include "core/simulation/SensorSimulator.h"
-#include "core/simulation/Trajectory.h"
 #include "tests/support/GuiTestMain.h"
+#include "tests/support/TurnedStrapsPatient.h"
 
 using namespace armtrack;
 using namespace armtrack::app;
@@ -26,18 +25,10 @@ namespace {
 
 constexpr double kSeconds = 90.0;
 
-// A session of reaches (IMUs at 100 Hz, Table 5 noise), both straps turned turnDeg, written to
-// csv; the sidecar's arm is returned.
+// The patient with straps turned turnDeg (tests/support/TurnedStrapsPatient.h), written to csv;
+// the sidecar's arm is returned.
 RecordingMeta writePatient(const std::filesystem::path& csv, double turnDeg) {
-  SimulationParams sim = defaultSimulation();
-  sim.duration = kSeconds;
-  sim.seed = 31;
-  sim.kinect.enabled = false;
-  sim.upperArm.rateHz = sim.forearm.rateHz = 100.0;
-  sim.upperArm.misalignment = randomMisalignment(turnDeg * kDeg, 63);
-  sim.forearm.misalignment = randomMisalignment(turnDeg * kDeg, 64);
-  const Recording rec =
-      simulateRecording(SessionTrajectory(31, 150 * kDeg, 1500 * kDeg, kSeconds), sim);
+  const Recording rec = armtrack::test::turnedStrapsSession(turnDeg, kSeconds);
   writeRecording(csv, rec);
   return rec.meta;
 }
