@@ -11,7 +11,6 @@
 #include "app/gui/home/FeedbackSound.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/StrapsText.h"
-#include "app/gui/signin/SignInScreen.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
 
 using namespace armtrack;
@@ -94,11 +93,7 @@ class TestHomeStraps : public QObject {
     m_app = armtrack::gui::test::demoApp(m_dir, o);
     QVERIFY(m_app);
     m_app->signOut();
-    SignInScreen* s = nullptr;
-    QTRY_VERIFY((s = qobject_cast<SignInScreen*>(m_app->window()->currentScreen())) != nullptr);
-    emit s->signInRequested(QString::fromLatin1(DemoAccounts::kHome),
-                            QString::fromLatin1(DemoAccounts::kPassword));
-    QTRY_VERIFY_WITH_TIMEOUT(m_app->records().signedIn(), 20000);
+    QVERIFY(armtrack::gui::test::signInAs(*m_app, DemoAccounts::kHome));
   }
 
   void aTurnedStrapIsToldOnceInPlainWords() {

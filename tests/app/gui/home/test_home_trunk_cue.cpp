@@ -19,7 +19,6 @@
 #include "app/gui/home/HomeSummaryScreen.h"
 #include "app/gui/services/DemoData.h"
 #include "app/gui/services/HomeRecords.h"
-#include "app/gui/signin/SignInScreen.h"
 #include "app/i18n/Language.h"
 #include "core/kinematics/ClinicalAngles.h"
 #include "tests/app/gui/support/GuiTestSupport.h"
@@ -159,11 +158,7 @@ class TestHomeTrunkCue : public QObject {
     m_app = armtrack::gui::test::demoApp(m_dir, o);
     QVERIFY(m_app);
     m_app->signOut();
-    SignInScreen* s = nullptr;
-    QTRY_VERIFY((s = qobject_cast<SignInScreen*>(m_app->window()->currentScreen())) != nullptr);
-    emit s->signInRequested(QString::fromLatin1(DemoAccounts::kHome),
-                            QString::fromLatin1(DemoAccounts::kPassword));
-    QTRY_VERIFY_WITH_TIMEOUT(m_app->records().signedIn(), 20000);
+    QVERIFY(armtrack::gui::test::signInAs(*m_app, DemoAccounts::kHome));
   }
 
   void leaningPastTheLimitCuesAndCounts() {

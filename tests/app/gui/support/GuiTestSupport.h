@@ -76,6 +76,17 @@ inline QString pdfText(const QString& pdf) {
   return QString::fromUtf8(p.readAllStandardOutput());
 }
 
+/// Signs app in as the demo account user (DemoAccounts) from the sign-in screen, waiting for
+/// the screen and then for the records to be signed in (20 s each); false when either does not
+/// come. Sign out first when someone is signed in.
+inline bool signInAs(AppController& app, const char* user) {
+  const auto screen = [&] { return qobject_cast<SignInScreen*>(app.window()->currentScreen()); };
+  if (!QTest::qWaitFor([&] { return screen() != nullptr; }, 20000)) return false;
+  emit screen()->signInRequested(QString::fromLatin1(user),
+                                 QString::fromLatin1(DemoAccounts::kPassword));
+  return QTest::qWaitFor([&] { return app.records().signedIn(); }, 20000);
+}
+
 /// The application on fresh demo records in folder dir, started and signed in as the demo
 /// therapist (the patient list showing); nullptr when that fails.
 inline std::unique_ptr<AppController> demoApp(const QTemporaryDir& dir, AppOptions options = {}) {
@@ -86,11 +97,7 @@ inline std::unique_ptr<AppController> demoApp(const QTemporaryDir& dir, AppOptio
   auto app = std::make_unique<AppController>(options);
   app->start();
   activate(app->window());
-  const auto signIn = [&] { return qobject_cast<SignInScreen*>(app->window()->currentScreen()); };
-  if (!QTest::qWaitFor([&] { return signIn() != nullptr; }, 20000)) return nullptr;
-  emit signIn()->signInRequested(QString::fromLatin1(DemoAccounts::kTherapist),
-                                 QString::fromLatin1(DemoAccounts::kPassword));
-  if (!QTest::qWaitFor([&] { return app->records().signedIn(); }, 20000)) return nullptr;
+  if (!signInAs(*app, DemoAccounts::kTherapist)) return nullptr;
   return app;
 }
 
