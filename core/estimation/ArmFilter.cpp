@@ -81,6 +81,7 @@ void ArmFilter<N>::reset() {
   m_fitAt.reset();
   m_counters = {};
   m_trunk.reset();
+  m_trunkSens.setZero();
   m_base = FrameState<double>{};
   m_base.up = m_p.gUp;
   m_up = m_p.gUp.normalized();
@@ -155,6 +156,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   const Vec xPrior = m_x;
   Mat pPrior;
   if (hasOptical) pPrior = m_P;
+  const TrunkSensitivity sensPrior = m_trunkSens;
   const double tPrior = m_t, floorPrior = m_headingFloor;
   // New readings of slow sensors were taken, on average, half a row before the row: the update
   // is made there, and the state predicted on to the row's time after it (ArmFilterTiming.cpp).
@@ -172,6 +174,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   }
   const Vec xBefore = m_x;
   const Mat pBefore = m_P;
+  const TrunkSensitivity sensBefore = m_trunkSens;
   const bool optical = blocks.anyOptical();
   if (optical) beforeOpticalUpdate();
   const int offered = blocks.count;
@@ -182,6 +185,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
     if (!gated) ++m_counters.skippedUpdates;
     m_x = xPrior;
     m_P = pPrior;
+    m_trunkSens = sensPrior;
     m_t = tPrior;
     m_headingFloor = floorPrior;
     return UpdateResult::Rejected;
@@ -211,6 +215,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
     if (!ok && sigmaOutOfView) {
       m_x = xBefore;
       m_P = pBefore;
+      m_trunkSens = sensBefore;
       if (fuseOptical) beforeOpticalUpdate();
       ok = ekfUpdate(blocks);
     }
@@ -218,6 +223,7 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
   if (!ok || !allFiniteFast(m_x) || !allFiniteFast(m_P)) {
     m_x = xBefore;
     m_P = pBefore;
+    m_trunkSens = sensBefore;
     ++m_counters.skippedUpdates;
     // Updates that keep failing are a lost filter too, not something to skip for ever.
     if (!m_badSince) m_badSince = s.t;
@@ -339,6 +345,7 @@ void ArmFilter<N>::predict(double dt) {
   transitionRows(m_x, dt, phi, phiB);
   for (int j = 0; j < kNumJoints; ++j) m_x(10 + j) = wrapAngle(m_x(10 + j));
   transitionCovariance(m_P, dt, phi, phiB);
+  if (tracksTrunkSensitivity()) transitionRows(m_trunkSens, dt, phi, phiB);
 
   const double var = m_t - m_t0 < m_p.startupSeconds
                          ? std::max(m_p.jointAccelVariance, m_p.startupJointAccelVariance)
@@ -473,9 +480,12 @@ bool ArmFilter<N>::updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, c
   const BlindDirection<N> heading{m_headingBlind.v, m_headingBlind.u};
   const bool blind = m_headingBlind.active && !isOptical(b.block[i]);
   double nis = 0.0;
+  TrunkSensitivity* sens = m_sensInUpdate ? &m_trunkSens : nullptr;
+  Eigen::Matrix<double, M, 6, Eigen::RowMajor> d;
+  if (sens && isOptical(b.block[i])) d = m_trunkRows[i].template topRows<M>();
   if (!fuseBlock<M, K, N>(hj, col, innov.template segment<M>(row),
                           b.variance.template segment<M>(row), blind ? &heading : nullptr, p, dx,
-                          nis))
+                          nis, sens, sens && isOptical(b.block[i]) ? &d : nullptr))
     return false;
   if (watched(b.block[i])) m_updateNis += nis, m_updateDof += M;
   return true;
@@ -493,6 +503,9 @@ bool ArmFilter<N>::ekfUpdate(const BlockList& b) {
   // failure the caller restores m_P).
   Mat p;
   Mat& updated = iterations > 1 ? p : m_P;
+  // A single iteration carries the trunk's sensitivity (the iterations would each redo it).
+  m_sensInUpdate = iterations == 1 && tracksTrunkSensitivity();
+  if (m_sensInUpdate && b.anyOptical()) trunkMeasurementRows(xi, b);
   for (int it = 0; it < iterations; ++it) {
     if (!measure(xi, b, h, &jac)) return false;
     projectHeading(xi, b, jac);

@@ -132,6 +132,15 @@ class ArmFilter final : public JointEstimator {
   void addTrunkVariance(const JointVector& th, JointVector& var) const;
   // Without an optical shoulder: the hip pivot from the arm's optical points (world frame).
   void fitHipFromArm(const ArmSample& s);
+  // Whether the EKF carries the state's sensitivity to the trunk's pose (m_trunkSens) through its
+  // updates: with a sternum IMU, after start-up (whose iterated updates it does not follow).
+  bool tracksTrunkSensitivity() const {
+    return m_trunk && m_trunk->state().haveImu && m_p.filter == FilterKind::Ekf &&
+           m_t - m_t0 >= m_p.startupSeconds;
+  }
+  // D of each optical block of the present update: how an error of the trunk's pose moves what
+  // the block measures (m_trunkRows, rows of a camera block: its first two).
+  void trunkMeasurementRows(const Vec& x, const BlockList& b);
 
   // ArmFilterOptical.cpp: the optical rows' gate and heading matching
   bool gateOptical(BlockList& b);
@@ -314,6 +323,13 @@ class ArmFilter final : public JointEstimator {
   // Frame 0's motion for the predicted readings: still ({0, 0, 0, gUp}) until a trunk IMU speaks.
   FrameState<double> m_base;
   std::optional<TrunkTracker> m_trunk;  // from the first trunk IMU reading or optical shoulder
+  // The state's error per unit error of the trunk's pose, [e0, dh]: the trunk's rotation error
+  // in frame 0 (rad) and the hip pivot's (world, m). A consider (Schmidt) sensitivity: carried
+  // through F and every EKF block's gain, never fed back (addTrunkVariance reads it).
+  using TrunkSensitivity = Eigen::Matrix<double, N, 6, Eigen::RowMajor>;
+  TrunkSensitivity m_trunkSens = TrunkSensitivity::Zero();
+  std::array<Eigen::Matrix<double, 3, 6, Eigen::RowMajor>, kNumBlocks> m_trunkRows{};
+  bool m_sensInUpdate = false;  // the present EKF update carries m_trunkSens
 };
 
 }  // namespace armtrack::detail

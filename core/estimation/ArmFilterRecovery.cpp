@@ -58,6 +58,7 @@ void ArmFilter<N>::initialise(const ArmSample& s) {
 template <int N>
 void ArmFilter<N>::startCovariance(bool optical) {
   m_P.setZero();
+  m_trunkSens.setZero();  // a new start owes nothing to the trunk's pose so far
   const double angleStd = optical ? m_p.initialAngleStdOptical : m_p.initialAngleStd;
   for (int j = 0; j < kNumJoints; ++j) {
     m_P(j, j) = m_p.initialAccelStd * m_p.initialAccelStd;

@@ -217,11 +217,18 @@ void symmetricDowndateAny(const Eigen::Matrix<double, L, M>& vt,
 /// W^T = P H^T (P is symmetric), V^T = W^T L^-T, and the downdate P -= V^T V; the M x M Cholesky
 /// factor and its solves are written out. (Eigen's general kernels, and its coefficient-based
 /// products, cost several times the arithmetic at these sizes.)
-template <int M, int K, int N>
+///
+/// sens, when given, is a consider (Schmidt) sensitivity: how the state's error depends on
+/// parameters the filter takes as known (dx_err = sens * p_err). The block's gain carries it on,
+/// sens += Kb (D - H sens), where D (M x C, none: zero) is how the parameters' error enters the
+/// measurement; the state and P are not touched by it.
+template <int M, int K, int N, int C = 6>
 bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
                const Eigen::Matrix<double, M, 1>& innovation,
                const Eigen::Matrix<double, M, 1>& variance, const BlindDirection<N>* blind,
-               PaddedCovariance<N>& padded, Eigen::Matrix<double, N, 1>& dx, double& nis) {
+               PaddedCovariance<N>& padded, Eigen::Matrix<double, N, 1>& dx, double& nis,
+               Eigen::Matrix<double, N, C, Eigen::RowMajor>* sens = nullptr,
+               const Eigen::Matrix<double, M, C, Eigen::RowMajor>* d = nullptr) {
   constexpr int L = PaddedCovariance<N>::kRows;
   using Cols = Eigen::Matrix<double, L, M>;
   using Column = Eigen::Matrix<double, L, 1>;
@@ -269,6 +276,31 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
     for (int k = 0; k < j; ++k) vt.col(j) -= l(j, k) * vt.col(k);
     vt.col(j) *= inv(j);
   }
+  if (sens) {
+    // y = D - H sens, then S^-1 y by the same two substitutions, and Kb y = W^T S^-1 y; row by
+    // row (sens is row-major, so each row is whole packets).
+    using Rows = Eigen::Matrix<double, M, C, Eigen::RowMajor>;
+    Rows y = d ? *d : Rows::Zero();
+    for (int i = 0; i < M; ++i)
+      for (int k = 0; k < K; ++k) y.row(i) -= h(i, k) * sens->row(col + k);
+    for (int i = 0; i < M; ++i) {
+      for (int k = 0; k < i; ++k) y.row(i) -= l(i, k) * y.row(k);
+      y.row(i) *= inv(i);
+    }
+    for (int i = M - 1; i >= 0; --i) {
+      for (int k = i + 1; k < M; ++k) y.row(i) -= l(k, i) * y.row(k);
+      y.row(i) *= inv(i);
+    }
+    Eigen::Matrix<double, 1, C> along = Eigen::Matrix<double, 1, C>::Zero();  // u^T K y
+    for (int n = 0; n < N; ++n) {
+      Eigen::Matrix<double, 1, C> ky = wt(n, 0) * y.row(0);
+      for (int m = 1; m < M; ++m) ky += wt(n, m) * y.row(m);
+      sens->row(n) += ky;
+      if (blind) along += blind->u(n) * ky;
+    }
+    if (blind)
+      for (int n = 0; n < N; ++n) sens->row(n) -= blind->v(n) * along;
+  }
   alignas(32) Column g = wt.col(0) * sr(0);  // K r = W^T S^-1 r
   for (int i = 1; i < M; ++i) g += wt.col(i) * sr(i);
   if (!blind) {
@@ -291,13 +323,16 @@ bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
 
 /// fuseBlock on an unpadded P: pads it, fuses and writes it back (for a single block; a run of
 /// blocks pads once).
-template <int M, int K, int N>
+template <int M, int K, int N, int C = 6>
 bool fuseBlock(const Eigen::Matrix<double, M, K>& h, int col,
                const Eigen::Matrix<double, M, 1>& innovation,
                const Eigen::Matrix<double, M, 1>& variance, const BlindDirection<N>* blind,
-               Eigen::Matrix<double, N, N>& p, Eigen::Matrix<double, N, 1>& dx, double& nis) {
+               Eigen::Matrix<double, N, N>& p, Eigen::Matrix<double, N, 1>& dx, double& nis,
+               Eigen::Matrix<double, N, C, Eigen::RowMajor>* sens = nullptr,
+               const Eigen::Matrix<double, M, C, Eigen::RowMajor>* d = nullptr) {
   PaddedCovariance<N> padded(p);
-  if (!fuseBlock<M, K, N>(h, col, innovation, variance, blind, padded, dx, nis)) return false;
+  if (!fuseBlock<M, K, N, C>(h, col, innovation, variance, blind, padded, dx, nis, sens, d))
+    return false;
   padded.store(p);
   return true;
 }

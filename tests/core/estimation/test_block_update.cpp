@@ -146,6 +146,53 @@ TEST_P(BlockUpdate, NonzeroColumnsGiveTheFullJacobiansUpdate) {
   EXPECT_NEAR(na, nb, 1e-14);
 }
 
+// The consider sensitivity (how the state's error depends on parameters taken as known) against
+// its definition: a parameter error delta moves the prior state by S0 delta and each block's
+// measurement by D delta, so each block sees its innovation change by (D - H S0) delta; the
+// update is linear in the innovations, and the state's error after the blocks, less the one
+// without delta, is S delta, column by column. Two blocks: the angles' columns only, then a
+// heading-blind full block.
+TEST_P(BlockUpdate, ConsiderSensitivityIsTheStatesResponseToTheParameters) {
+  std::mt19937_64 rng(19);
+  using Sens = Eigen::Matrix<double, N, 6, Eigen::RowMajor>;
+  using Rows2 = Eigen::Matrix<double, 2, 6, Eigen::RowMajor>;
+  using Rows3 = Eigen::Matrix<double, 3, 6, Eigen::RowMajor>;
+  for (int trial = 0; trial < 10; ++trial) {
+    const Mat p0 = randomCovariance(rng);
+    const Eigen::Matrix<double, 2, 5> h1 = randomMatrix<2, 5>(rng);
+    const Mat3N h2 = randomMatrix<3, N>(rng);
+    const Rows2 d1 = randomMatrix<2, 6>(rng);
+    const Rows3 d2 = Rows3::Zero();  // an IMU block
+    const Sens s0 = 0.3 * randomMatrix<N, 6>(rng);
+    const Eigen::Vector2d z1 = randomMatrix<2, 1>(rng), var1(0.02, 0.03);
+    const Vec3 z2 = randomMatrix<3, 1>(rng), var2(0.05, 0.1, 0.2);
+    Vec u = Vec::Zero();
+    u.tail<5>() = randomMatrix<5, 1>(rng).normalized();
+    Vec v = randomMatrix<N, 1>(rng);
+    v += (1.0 - u.dot(v)) * u;
+    const BlindDirection<N> blind{v, u};
+    // The state's error after both blocks for a parameter error delta.
+    auto errorAfter = [&](const Eigen::Matrix<double, 6, 1>& delta, Sens* sens) {
+      Mat p = p0;
+      Vec dx = Vec::Zero();
+      double nis = 0.0;
+      const Vec prior = s0 * delta;
+      const Eigen::Vector2d i1 = z1 + d1 * delta - h1 * prior.segment<5>(10);
+      const Vec3 i2 = z2 + d2 * delta - h2 * prior;
+      EXPECT_TRUE((fuseBlock<2, 5, N>(h1, 10, i1, var1, nullptr, p, dx, nis, sens, &d1)));
+      EXPECT_TRUE((fuseBlock<3, N, N>(h2, 0, i2, var2, &blind, p, dx, nis, sens, &d2)));
+      return Vec(prior + dx);
+    };
+    Sens s = s0;
+    const Vec base = errorAfter(Eigen::Matrix<double, 6, 1>::Zero(), &s);
+    for (int c = 0; c < 6; ++c) {
+      const Vec moved = errorAfter(Eigen::Matrix<double, 6, 1>::Unit(c), nullptr);
+      EXPECT_LT((moved - base - s.col(c)).cwiseAbs().maxCoeff(), 1e-10) << "column " << c;
+    }
+    EXPECT_GT((s - s0).norm(), 1e-3);  // the blocks did carry it on
+  }
+}
+
 TEST_P(BlockUpdate, IndefiniteInnovationCovarianceIsRefusedAndChangesNothing) {
   std::mt19937_64 rng(17);
   const Mat p0 = -randomCovariance(rng);  // S = H P H^T + R negative definite for small R
