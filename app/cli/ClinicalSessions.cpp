@@ -245,12 +245,12 @@ int sessionReestimate(const std::vector<std::string>& rest, std::ostream& out, s
   const qint64 id = ids.front();
   const storage::AnalysisResult r = analyse(c.store(), id, options, "session reestimate", err);
   // What was chosen here becomes the session's filter settings: later analyses and session show
-  // use them.
+  // use them (the calibration the session was recorded with is kept).
   if (options.filter || options.model || options.noOptical)
     c.store().updateSessionFilterSettings(
-        id,
-        QString::fromUtf8(
-            QJsonDocument(storage::filterSettingsJson(r.settings)).toJson(QJsonDocument::Compact)));
+        id, QString::fromUtf8(QJsonDocument(storage::filterSettingsJson(
+                                                r.settings, c.store().session(id).filterJson))
+                                  .toJson(QJsonDocument::Compact)));
   out << r.estimateVersion << "\n";
   return 0;
 }

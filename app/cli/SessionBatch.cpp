@@ -42,9 +42,9 @@ int reestimateSessions(ClinicalContext& c, const std::vector<qint64>& ids, unsig
       results[i] = storage::analyseSession(store, ids[i], o);
       if (overrides)
         store.updateSessionFilterSettings(
-            ids[i],
-            QString::fromUtf8(QJsonDocument(storage::filterSettingsJson(results[i].settings))
-                                  .toJson(QJsonDocument::Compact)));
+            ids[i], QString::fromUtf8(QJsonDocument(storage::filterSettingsJson(results[i].settings,
+                                                                                info.filterJson))
+                                          .toJson(QJsonDocument::Compact)));
     };
   };
   const std::vector<BatchOutcome> outcomes =

@@ -178,7 +178,7 @@ constexpr const char* kRedo =
 
 }  // namespace
 
-void writeCalibration(const fs::path& path, const Calibration& c) {
+std::string calibrationText(const Calibration& c, const fs::path& path) {
   if (const std::string problem = calibrationProblem(c); !problem.empty())
     fail(path, "refusing to write an impossible calibration: " + problem + kRedo);
   const ArmGeometry& g = c.geometry;
@@ -211,8 +211,11 @@ void writeCalibration(const fs::path& path, const Calibration& c) {
   j["estimated"] = c.estimated;
   j["fromStartPose"] = c.fromStartPose;
   j["heldFixed"] = c.heldFixed;
-  const std::string text = j.dump(2) + "\n";
+  return j.dump(2) + "\n";
+}
 
+void writeCalibration(const fs::path& path, const Calibration& c) {
+  const std::string text = calibrationText(c, path);
   try {
     AtomicFile out(path);
     out.write(text);
@@ -231,7 +234,10 @@ Calibration readCalibration(const fs::path& path) {
   if (!in) fail(path, "cannot open: " + osReason(errno));
   std::ostringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
+  return parseCalibration(ss.str(), path);
+}
+
+Calibration parseCalibration(const std::string& text, const fs::path& path) {
   Json j;
   try {
     j = Json::parse(text);

@@ -89,6 +89,13 @@ ImuCalibration mirrorImuCalibration(const ImuCalibration& c);
 /// 0.1 m, ...). Empty when every value is possible. Any thread.
 std::string calibrationProblem(const Calibration& c);
 
+/// The calibration as a calibration file holds it (JSON text), e.g. to be stored with a session
+/// in the records. Throws CalibrationError naming `name` as writeCalibration() refuses.
+std::string calibrationText(const Calibration& c, const std::filesystem::path& name);
+/// A calibration from the text of a calibration file; name says where it came from in errors.
+/// Throws CalibrationError as readCalibration() does.
+Calibration parseCalibration(const std::string& text, const std::filesystem::path& name);
+
 /// Writes the calibration as pretty-printed JSON (docs/calibration.md), via a temporary file
 /// renamed into place. Throws CalibrationError, also when calibrationProblem() finds a value no
 /// real arm has (nothing is written then).

@@ -44,7 +44,8 @@ void LiveCalibration::add(const ArmSample& row) {
     m_window.pop_front();
 }
 
-void LiveCalibration::startFit() {
+void LiveCalibration::startFit(double t) {
+  m_fitStartT = t;
   Recording rec;
   rec.meta = m_meta;
   rec.samples.assign(m_window.begin(), m_window.end());
@@ -68,7 +69,7 @@ void LiveCalibration::startFit() {
 std::optional<AutoCalibrationResult> LiveCalibration::poll(double t) {
   std::optional<AutoCalibrationResult> out;
   if (m_thread.joinable()) {
-    if (!m_done) return out;
+    if (!m_done && !m_params.waitForFit) return out;
     m_thread.join();
     out = std::move(m_result);
     m_result = {};
@@ -86,13 +87,18 @@ std::optional<AutoCalibrationResult> LiveCalibration::poll(double t) {
       m_status.calibration = out->calibration;
       m_status.summary = out->summary;
       m_status.appliedAt = t;
+      if (std::isnan(m_status.firstAppliedAt)) m_status.firstAppliedAt = t;
+      m_status.fittedAt = m_fitStartT;
     }
     m_status.state = m_current   ? LiveCalibrationStatus::State::Applied
                      : m_madeOne ? LiveCalibrationStatus::State::AsFitted
                                  : LiveCalibrationStatus::State::Collecting;
     return out;
   }
-  if (!m_cancel && !std::isnan(m_firstT) && t >= m_nextFitT && !m_window.empty()) startFit();
+  if (!m_cancel && !std::isnan(m_firstT) && t >= m_nextFitT && !m_window.empty()) {
+    startFit(t);
+    if (m_params.waitForFit) return poll(t);  // the fit's result at this very row
+  }
   return out;
 }
 

@@ -35,6 +35,12 @@ struct LiveCalibrationParams {
   /// The fit is used only when its ReadingFit score is below this fraction of the mounting's in
   /// use (AutoCalibrationParams::betterFraction).
   double betterFraction = 0.7;
+  /// The worker waits for each fit at the row it started it on instead of going on beside it, so
+  /// the fit is used from that row (as `estimate` does): the session's estimates then no longer
+  /// depend on how long the fit took in real time. For replays faster than real time (at 10x a
+  /// fit of 1-3 s lands 10-30 s of session time later, later still on a loaded machine) and
+  /// tests; never for live devices, whose samples would queue meanwhile.
+  bool waitForFit = false;
 };
 
 /// What the session's calibration from movement did so far; Session::movementCalibration().
@@ -50,10 +56,15 @@ struct LiveCalibrationStatus {
   bool fitting = false;  ///< a fit (or refit) runs now
   int fits = 0;          ///< fits finished (any outcome)
   int applied = 0;       ///< of which applied (the first, and each better refit)
-  /// The calibration in use, its summary and when it was applied (session time, s).
+  /// The calibration in use, its summary and when it was applied: the session time (s) of the
+  /// row from which the estimator used it; the first application's too (a refit may apply
+  /// another later).
   std::optional<Calibration> calibration;
   std::optional<MountingSummary> summary;
   double appliedAt = std::numeric_limits<double>::quiet_NaN();
+  double firstAppliedAt = std::numeric_limits<double>::quiet_NaN();
+  /// The session time (s) of the row at which the fit now in use started (its window ended).
+  double fittedAt = std::numeric_limits<double>::quiet_NaN();
   /// The newest fit's line ("calibration from movement: ..."), as told in the session messages.
   std::string line;
 };
@@ -85,7 +96,7 @@ class LiveCalibration {
   LiveCalibrationStatus status() const;
 
  private:
-  void startFit();
+  void startFit(double t);
 
   LiveCalibrationParams m_params;
   RecordingMeta m_meta;
@@ -94,8 +105,9 @@ class LiveCalibration {
   double m_firstT = std::numeric_limits<double>::quiet_NaN();
   double m_nextUpperT = -std::numeric_limits<double>::infinity();  // next upper-arm reading kept
   double m_nextForearmT = -std::numeric_limits<double>::infinity();
-  double m_nextFitT = 0.0;  // session time of the next fit
-  bool m_madeOne = false;   // a fit was made (not merely "not tried")
+  double m_nextFitT = 0.0;   // session time of the next fit
+  double m_fitStartT = 0.0;  // session time of the row the running fit started at
+  bool m_madeOne = false;    // a fit was made (not merely "not tried")
   std::optional<Calibration> m_current;
 
   std::thread m_thread;

@@ -81,6 +81,22 @@ EstimateOptions parseFilterSettings(const QString& json, qint64 sessionId, bool&
   return o;
 }
 
+// The calibration stored with the session's filter settings ("calibration": a calibration
+// file's JSON object, docs/storage.md), if any.
+std::optional<Calibration> storedCalibration(const QString& json, qint64 sessionId) {
+  const std::optional<QJsonObject> f = detail::parseObject(json);
+  if (!f || !f->contains("calibration")) return std::nullopt;
+  const QJsonValue v = f->value("calibration");
+  const std::string name = sessionText(sessionId) + ": stored filter setting \"calibration\"";
+  if (!v.isObject())
+    throw StorageError(Kind::Usage, name + " must be a calibration file's JSON object");
+  try {
+    return parseCalibration(QJsonDocument(v.toObject()).toJson().toStdString(), name);
+  } catch (const CalibrationError& e) {
+    throw StorageError(Kind::Usage, e.what());
+  }
+}
+
 QJsonValue number(double v) {
   return std::isfinite(v) ? QJsonValue(v) : QJsonValue(QJsonValue::Null);
 }
@@ -343,6 +359,11 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   result.settings =
       storedProblem([&] { return parseFilterSettings(info.filterJson, sessionId, fromSession); });
   result.settingsSource = fromSession ? "session" : "defaults";
+  // The caller's calibration, else the one the session was recorded with.
+  result.calibration = options.calibration ? options.calibration : storedProblem([&] {
+    return storedCalibration(info.filterJson, sessionId);
+  });
+  const std::optional<Calibration>& calibration = result.calibration;
   if (options.filter) result.settings.filter = *options.filter;
   if (options.model) result.settings.model = *options.model;
   if (options.noOptical) result.settings.useOptical = result.settings.useCamera = false;
@@ -352,9 +373,9 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   progress(0);
 
   RecordingMeta meta = storedProblem([&] { return store.recordingMeta(sessionId); });
-  if (options.calibration) {
+  if (calibration) {
     try {
-      applyCalibration(*options.calibration, meta);  // the calibrated geometry
+      applyCalibration(*calibration, meta);  // the calibrated geometry
     } catch (const std::invalid_argument& e) {
       throw StorageError(Kind::Usage,
                          sessionText(sessionId) + ": the calibration does not fit: " + e.what());
@@ -405,9 +426,9 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
               cancelled = true;
               return false;
             }
-            if (options.calibration) {
+            if (calibration) {
               corrected = s;
-              applyCalibration(*options.calibration, corrected);
+              applyCalibration(*calibration, corrected);
               one(corrected);
             } else {
               one(s);
@@ -470,7 +491,7 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   if (!paramsJson.contains("joint_accel_std_deg"))
     paramsJson.insert("joint_accel_std_deg", QJsonValue(QJsonValue::Null));
   for (const auto& [key, value] : std::initializer_list<std::pair<const char*, QJsonValue>>{
-           {"calibration", options.calibration.has_value()},
+           {"calibration", calibration.has_value()},
            {"settings", result.settingsSource},
            {"optical_used", st.opticalUsed},
            {"library_version", ARMTRACK_VERSION},
@@ -498,6 +519,30 @@ AnalysisResult analyseSession(ClinicalStore& store, qint64 sessionId,
   result.metricsJson = merged(summary, angles);
   progress(100);
   return result;
+}
+
+QJsonObject filterSettingsJson(const EstimateOptions& settings, const QString& storedJson) {
+  QJsonObject o = detail::parseObject(storedJson).value_or(QJsonObject{});
+  const QJsonObject f = filterSettingsJson(settings);
+  for (auto it = f.begin(); it != f.end(); ++it) o.insert(it.key(), it.value());
+  if (!settings.jointAccelStdDeg) o.remove("joint_accel_std_deg");
+  return o;
+}
+
+void keepSessionCalibration(ClinicalStore& store, qint64 sessionId,
+                            const Calibration& calibration) {
+  QJsonObject f = detail::parseObject(store.session(sessionId).filterJson).value_or(QJsonObject{});
+  const std::string name = sessionText(sessionId) + "'s calibration";
+  QJsonObject c;
+  try {
+    c = QJsonDocument::fromJson(QByteArray::fromStdString(calibrationText(calibration, name)))
+            .object();
+  } catch (const CalibrationError& e) {
+    throw StorageError(Kind::Usage, e.what());
+  }
+  f.insert("calibration", c);
+  store.updateSessionFilterSettings(
+      sessionId, QString::fromUtf8(QJsonDocument(f).toJson(QJsonDocument::Compact)));
 }
 
 QJsonObject filterSettingsJson(const EstimateOptions& settings) {

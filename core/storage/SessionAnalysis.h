@@ -38,7 +38,8 @@ struct AnalysisOptions {
   bool noOptical = false;
   /// A sensor-to-segment calibration (core/calibration, `armtrack-cli calibrate`) applied to the
   /// recording and the filter before estimating; its side must be the recording's (Usage error
-  /// otherwise). The parameters JSON records "calibration": true.
+  /// otherwise). Empty: the one stored with the session's filter settings ("calibration", kept
+  /// by keepSessionCalibration()), if any. The parameters JSON records "calibration": true.
   std::optional<Calibration> calibration;
   /// Called on the calling thread with 0-100 (percent done, rising; 100 once stored).
   std::function<void(int percent)> progress;
@@ -69,8 +70,10 @@ struct AnalysisResult {
   int metricsVersion = 0;
   EstimateOptions settings;  ///< the filter settings used
   QString settingsSource;    ///< "session" (its stored filter settings) or "defaults"
-  EstimateStats stats;       ///< the estimator's run
-  SessionMetrics metrics;    ///< SI units
+  /// The calibration applied: the caller's, else the session's stored one; empty: none.
+  std::optional<Calibration> calibration;
+  EstimateStats stats;     ///< the estimator's run
+  SessionMetrics metrics;  ///< SI units
   /// The trunk's compensation over the session and per repetition (one per repetition of
   /// metrics); its values are empty without a trunk IMU or an optical shoulder.
   TrunkCompensation trunk;
@@ -80,6 +83,17 @@ struct AnalysisResult {
 /// Filter settings as a session's filter_json holds them (docs/storage.md, "Filter settings"):
 /// filter, method, optical, camera and, when set, joint_accel_std_deg.
 QJsonObject filterSettingsJson(const EstimateOptions& settings);
+/// The same put into a session's stored filter settings, keeping what else they hold (the
+/// calibration the session was recorded with, the sensor calibration's verdict).
+QJsonObject filterSettingsJson(const EstimateOptions& settings, const QString& storedJson);
+
+/// Stores the calibration the session was recorded with (a calibration file the therapist chose,
+/// or the straps the live session fitted from the movement) in its filter settings, as
+/// "calibration" (docs/storage.md, "Filter settings"), so that every later analysis of it
+/// (review, `session reestimate`, exports) estimates with it as the live session did. Audited as
+/// a change of the session's filter settings; staff only (ClinicalStore::
+/// updateSessionFilterSettings). Throws StorageError: Usage for a calibration no real arm has.
+void keepSessionCalibration(ClinicalStore& store, qint64 sessionId, const Calibration& calibration);
 
 /// Reads the session's recording, estimates it (the session's filter settings when it has any,
 /// else the defaults; the geometry from its sidecar), stores the estimates (codec

@@ -27,8 +27,16 @@ RecordingAnalysis analyseRecording(storage::ClinicalStore& store, qint64 session
     return r;
   };
   if (r.recordedS < kShortestAnalysableS) return tooShort();
+  // The calibration the live session used (a file, or the straps fitted from the movement) is
+  // kept with the session first, and this analysis reads it back as every later one does (the
+  // file's form rounds the rotations by an ulp): the same estimates, bit for bit.
+  storage::AnalysisOptions o = options;
+  if (o.calibration) {
+    storage::keepSessionCalibration(store, sessionId, *o.calibration);
+    o.calibration.reset();
+  }
   try {
-    r.outcome = storage::analyseSession(store, sessionId, options).cancelled
+    r.outcome = storage::analyseSession(store, sessionId, o).cancelled
                     ? RecordingAnalysis::Outcome::Cancelled
                     : RecordingAnalysis::Outcome::Analysed;
   } catch (const StorageError& e) {

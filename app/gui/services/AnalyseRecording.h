@@ -23,7 +23,9 @@ struct RecordingAnalysis {
 /// The note stored with a session too short to analyse (English, as the records' notes are).
 QString tooShortNote(double recordedS);
 
-/// Analyses sessionId. One too short to analyse (under kShortestAnalysableS, or refused by the
+/// Analyses sessionId. A calibration in options (the one the live session used) is first stored
+/// with the session (storage::keepSessionCalibration), so that later analyses use it too. One
+/// too short to analyse (under kShortestAnalysableS, or refused by the
 /// analysis for want of rows and under a few seconds) has its analysis marked failed with
 /// tooShortNote() and answers TooShort. Other errors are thrown (StorageError).
 RecordingAnalysis analyseRecording(storage::ClinicalStore& store, qint64 sessionId,
