@@ -314,8 +314,10 @@ JointMotion ReachingTrajectory::at(double t) const {
 }
 
 JointVector SessionTrajectory::restPose() {
+  // The start pose the patient is told to rest in (protocolStartPose(), docs/calibration.md,
+  // "The rest pose"): upper arm hanging, elbow at a right angle, forearm forward, thumb up.
   JointVector th;
-  th << 15 * kDeg, 10 * kDeg, 0.0, -80 * kDeg, 0.0;
+  th << 0.0, 0.0, 0.0, -90 * kDeg, 0.0;
   return th;
 }
 
@@ -332,14 +334,18 @@ SessionTrajectory::SessionTrajectory(std::uint64_t seed, double peakRate, double
   for (int j = 0; j < kNumJoints; ++j)
     joint[j] = std::uniform_real_distribution<double>(kReachLow[j], kReachHigh[j]);
   std::uniform_real_distribution<double> hold(0.3, 0.8), rest(1.0, 3.0),
-      jitter(-5 * kDeg, 5 * kDeg);
+      jitter(-restScatter(), restScatter());
+  // The first rest's scatter from a generator of its own: the reaches stay those of the seed.
+  std::mt19937_64 startRng(seed ^ 0x5eed5ca77e7ULL);
   auto moveTo = [&](const JointVector& next) {
     const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
     const double seconds =
         std::max({1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel), 0.2});
     m_path.add(m_path.endTime() + seconds, next);
   };
-  m_path.add(0.0, restPose());
+  JointVector start = restPose();
+  for (int j = 0; j < kNumJoints; ++j) start(j) += jitter(startRng);
+  m_path.add(0.0, start);
   m_path.hold(startSeconds);
   while (m_path.endTime() < durationSeconds) {
     JointVector target;

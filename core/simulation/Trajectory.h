@@ -137,10 +137,11 @@ class ReachingTrajectory final : public Trajectory {
   MinimumJerkPath m_path;
 };
 
-/// A patient's session of reaches: the arm rests (hand on the lap: shoulder flexed 15 deg,
-/// abducted 10, elbow flexed 80) still for startSeconds, then reaches to a posture drawn as
-/// ReachingTrajectory draws them, holds it 0.3-0.8 s and comes back to rest, and rests 1-3 s
-/// before the next reach. Each rest posture is the rest pose moved by up to 5 deg per joint.
+/// A patient's session of reaches: the arm rests in the start pose the patient is told to take
+/// (restPose(): upper arm hanging, elbow at a right angle, forearm forward, thumb up) still for
+/// startSeconds, then reaches to a posture drawn as ReachingTrajectory draws them, holds it
+/// 0.3-0.8 s and comes back to rest, and rests 1-3 s before the next reach. Each rest posture,
+/// the first too, is the rest pose moved by up to restScatter() per joint (a patient's scatter).
 /// Moves are limited by peakRate and peakAccel as in ReachingTrajectory; the rests are what
 /// real sessions have and what a gyroscope's bias at rest is taken from.
 class SessionTrajectory final : public Trajectory {
@@ -151,6 +152,7 @@ class SessionTrajectory final : public Trajectory {
                     double durationSeconds = 600.0, double startSeconds = 3.0);
   JointMotion at(double t) const override;
   static JointVector restPose();
+  static constexpr double restScatter() { return 3.0 * std::numbers::pi / 180.0; }  ///< rad
 
  private:
   MinimumJerkPath m_path;
