@@ -160,8 +160,10 @@ TEST(AutoCalibrationRestPose, RecoversTheForearmRollFromTheStartPose) {
 
 // Estimating with the automatic calibration (fitted on the IMUs, as the live session does): the
 // joints after 30 s, with a Kinect and IMUs only, against the same automatic path without the
-// rest pose. Pronation: within 4 deg on every seed (1.8-3.2 measured; 3-31 without), a third of
-// the error without it at most over the seeds; the other joints as without it.
+// rest pose. Pronation: within 3 deg on every seed (1.2-2.5 measured; 3.5-31 without), a third of
+// the error without it at most over the seeds; the other joints as without it (the roll moves
+// pronation only). Issue 27's 2 deg is not met on every seed: what is left is the forearm
+// sensor's tilt and the realistic sensors' errors, not the roll.
 TEST(AutoCalibrationRestPose, PronationFollowsWithTheForearmRoll) {
   const FilterParamsFor paramsFor = [](const RecordingMeta& m) { return recordingParams(m); };
   for (const bool kinect : {true, false}) {
@@ -189,7 +191,7 @@ TEST(AutoCalibrationRestPose, PronationFollowsWithTheForearmRoll) {
       EXPECT_FALSE(ro.forearmRollSeen);
       EXPECT_NE(rw.line.find("rest(s) in the start pose"), std::string::npos) << rw.line;
       EXPECT_EQ(ro.line.find("rest(s) in the start pose"), std::string::npos) << ro.line;
-      EXPECT_LT(ew(4), 4.0);
+      EXPECT_LT(ew(4), 3.0);
       for (int j = 0; j < 4; ++j) EXPECT_LT(ew(j), eo(j) + 0.3) << "joint " << j;
       sumWith += ew(4);
       sumWithout += eo(4);
