@@ -48,10 +48,11 @@ struct Case {
 
 /// A recording of `traj` with realistic sensors, straps turned up to 30 deg, the sidecar's lever
 /// arms off by up to 5 cm along the segments and 2 cm across.
-Case makeCase(const Trajectory& traj, std::uint64_t seed) {
+Case makeCase(const Trajectory& traj, std::uint64_t seed, Side side = Side::Right) {
   SimulationParams sp = defaultSimulation();
   sp.duration = kDuration;
   sp.seed = seed;
+  sp.side = side;
   sp.kinect.enabled = true;
   applySensorModel(SensorModel::Realistic, sp);
   std::mt19937_64 rng(seed * 7919 + 29);
@@ -261,6 +262,24 @@ TEST(AutoCalibrationRestPose, ARestInAnotherPoseIsNotTakenForIt) {
     EXPECT_TRUE(said) << formatMovementReport(m);
     EXPECT_NE(formatMovementReport(m).find("no rest was in the start pose"), std::string::npos);
   }
+}
+
+// A left arm: fitted on its right-arm twin (the readings mirrored), the rests in the start pose
+// give its forearm's roll the same way.
+TEST(AutoCalibrationRestPose, TheLeftArmsRollToo) {
+  const SessionTrajectory traj(2706, 150 * kDeg, 1500 * kDeg, kDuration);
+  const Case c = makeCase(traj, 2706, Side::Left);
+  Recording window = c.imusOnly;
+  std::erase_if(window.samples, [](const ArmSample& s) { return s.t > 60.0; });
+  MovementCalibrationParams p;
+  p.expectedRestPose = protocolStartPose();
+  const MovementCalibration m = calibrateFromMovement(window, p);
+  const double left = rollLeftDeg(m.forearmMounting, c.forearmTurn);
+  std::printf("[ measured ] left arm: %d of %d rests taken, roll left %.1f deg (whole %.1f)\n",
+              m.poseRests, m.rests, left, angleDeg(m.forearmMounting, c.forearmTurn));
+  EXPECT_EQ(m.calibration.side, Side::Left);
+  EXPECT_TRUE(m.rollFromPose);
+  EXPECT_LT(std::abs(left), 3.0);
 }
 
 }  // namespace
