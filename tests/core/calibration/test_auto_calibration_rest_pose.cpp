@@ -264,6 +264,34 @@ TEST(AutoCalibrationRestPose, ARestInAnotherPoseIsNotTakenForIt) {
   }
 }
 
+// A live refit that did not see the forearm's roll is not applied over a calibration in use that
+// has it from the start pose (it would put the sidecar's roll back); the same fit is applied over
+// one that does not.
+TEST(AutoCalibrationRestPose, ARefitWithoutTheRollDoesNotReplaceOneWithIt) {
+  const ReachingTrajectory reaches(2712, 150 * kDeg, 1500 * kDeg, kDuration);
+  JointVector raised = protocolStartPose();
+  raised(0) = 60 * kDeg;
+  const RestThenMove traj(reaches, raised, 4.0);
+  const Case c = makeCase(traj, 2712);
+  Recording window = c.imusOnly;
+  std::erase_if(window.samples, [](const ArmSample& s) { return s.t > 60.0; });
+  Calibration inUse;  // the sidecar's mounting, as if fitted with the roll
+  inUse.geometry = window.meta.geometry;
+  const FilterParamsFor paramsFor = [](const RecordingMeta& m) { return recordingParams(m); };
+  AutoCalibrationParams seen, notSeen;
+  seen.currentRollSeen = true;
+  const AutoCalibrationResult kept = autoCalibrate(window, paramsFor, seen, &inUse);
+  const AutoCalibrationResult replaced = autoCalibrate(window, paramsFor, notSeen, &inUse);
+  std::printf("[ measured ] %s\n", kept.line.c_str());
+  EXPECT_FALSE(kept.forearmRollSeen);
+  EXPECT_EQ(kept.outcome, AutoCalibrationResult::Outcome::NotApplied) << kept.line;
+  EXPECT_FALSE(kept.calibration.has_value());
+  EXPECT_NE(kept.line.find("forearm roll not observable"), std::string::npos) << kept.line;
+  EXPECT_NE(kept.line.find("has the forearm's roll from the start pose"), std::string::npos)
+      << kept.line;
+  EXPECT_EQ(replaced.outcome, AutoCalibrationResult::Outcome::Applied) << replaced.line;
+}
+
 // A left arm: fitted on its right-arm twin (the readings mirrored), the rests in the start pose
 // give its forearm's roll the same way.
 TEST(AutoCalibrationRestPose, TheLeftArmsRollToo) {
