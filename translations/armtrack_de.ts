@@ -8,10 +8,6 @@
         <translation>Bänder anhand der Bewegung geprüft: Oberarmsensor um %1° gedreht, Unterarmsensor um %2° gedreht und %3 cm vom Handgelenk</translation>
     </message>
     <message>
-        <source>Straps: checking them from the movement (a moment of rest and some movement are needed)</source>
-        <translation>Bänder: werden anhand der Bewegung geprüft (dazu braucht es einen Moment Ruhe und etwas Bewegung)</translation>
-    </message>
-    <message>
         <source>Straps: not checked yet (the arm needs a moment of rest and more movement)</source>
         <translation>Bänder: noch nicht geprüft (der Arm braucht einen Moment Ruhe und mehr Bewegung)</translation>
     </message>
@@ -26,6 +22,10 @@
     <message>
         <source>A sensor strap has turned on your arm. Your exercise is still measured; next time, put the straps on as shown before you start.</source>
         <translation>Ein Sensorband hat sich an Ihrem Arm verdreht. Ihre Übung wird trotzdem gemessen; legen Sie die Bänder nächstes Mal vor dem Start wie gezeigt an.</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement (rest still a moment with the upper arm hanging, the elbow bent to a right angle and the thumb up, then move)</source>
+        <translation>Bänder: werden anhand der Bewegung geprüft (einen Moment still ruhen, Oberarm hängend, Ellbogen rechtwinklig gebeugt, Daumen nach oben, dann bewegen)</translation>
     </message>
 </context>
 <context>
@@ -3793,10 +3793,6 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
         <translation>Serie &amp;fertig</translation>
     </message>
     <message>
-        <source>Rest. The next set starts by itself when the time is up.</source>
-        <translation>Pause. Die nächste Serie beginnt von selbst, wenn die Zeit um ist.</translation>
-    </message>
-    <message>
         <source>&amp;Start the next set now</source>
         <translation>Nächste Serie jetzt &amp;starten</translation>
     </message>
@@ -3886,6 +3882,10 @@ Um die Bewegung zu messen, beginnen Sie eine neue Sitzung, drücken Sie Aufnehme
             <numerusform>%n Wiederholung zu weit geneigt</numerusform>
             <numerusform>%n Wiederholungen zu weit geneigt</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Rest with your upper arm hanging, your elbow bent at a right angle and your thumb up. The next set starts by itself when the time is up.</source>
+        <translation>Ruhen Sie mit hängendem Oberarm, rechtwinklig gebeugtem Ellbogen und dem Daumen nach oben. Die nächste Serie beginnt von selbst, wenn die Zeit um ist.</translation>
     </message>
 </context>
 <context>

@@ -8,10 +8,6 @@
         <translation>Cintas comprobadas a partir del movimiento: sensor del brazo girado %1°, sensor del antebrazo girado %2° y a %3 cm de la muñeca</translation>
     </message>
     <message>
-        <source>Straps: checking them from the movement (a moment of rest and some movement are needed)</source>
-        <translation>Cintas: se comprueban a partir del movimiento (hace falta un momento de reposo y algo de movimiento)</translation>
-    </message>
-    <message>
         <source>Straps: not checked yet (the arm needs a moment of rest and more movement)</source>
         <translation>Cintas: aún no comprobadas (el brazo necesita un momento de reposo y más movimiento)</translation>
     </message>
@@ -26,6 +22,10 @@
     <message>
         <source>A sensor strap has turned on your arm. Your exercise is still measured; next time, put the straps on as shown before you start.</source>
         <translation>Una cinta de sensor se ha girado en su brazo. Su ejercicio se sigue midiendo; la próxima vez, colóquese las cintas como se muestra antes de empezar.</translation>
+    </message>
+    <message>
+        <source>Straps: checking them from the movement (rest still a moment with the upper arm hanging, the elbow bent to a right angle and the thumb up, then move)</source>
+        <translation>Cintas: se comprueban a partir del movimiento (descanse quieto un momento con el brazo colgando, el codo doblado en ángulo recto y el pulgar hacia arriba; después muévase)</translation>
     </message>
 </context>
 <context>
@@ -3793,10 +3793,6 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
         <translation>Serie &amp;hecha</translation>
     </message>
     <message>
-        <source>Rest. The next set starts by itself when the time is up.</source>
-        <translation>Descanso. La siguiente serie empieza sola cuando acabe el tiempo.</translation>
-    </message>
-    <message>
         <source>&amp;Start the next set now</source>
         <translation>&amp;Empezar ya la siguiente serie</translation>
     </message>
@@ -3886,6 +3882,10 @@ Para medir el movimiento, inicie una sesión nueva, pulse Grabar, deje que el pa
             <numerusform>%n repetición inclinándose demasiado</numerusform>
             <numerusform>%n repeticiones inclinándose demasiado</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Rest with your upper arm hanging, your elbow bent at a right angle and your thumb up. The next set starts by itself when the time is up.</source>
+        <translation>Descanse con el brazo colgando, el codo doblado en ángulo recto y el pulgar hacia arriba. La siguiente serie empieza sola cuando se acabe el tiempo.</translation>
     </message>
 </context>
 <context>

@@ -154,6 +154,15 @@ std::string changes(const MovementCalibration& m) {
   return s + (details.empty() ? "" : " (" + details + ")");
 }
 
+/// Where the forearm sensor's roll about the forearm came from, or that it was not seen.
+std::string roll(const MovementCalibration& m, bool poseExpected) {
+  if (m.rollFromPose)
+    return "; forearm roll from " + std::to_string(m.poseRests) + " rest(s) in the start pose";
+  if (!poseExpected) return "";
+  return "; forearm roll not observable (no rest with the upper arm hanging, the elbow at a right "
+         "angle and the thumb up): the sidecar's kept";
+}
+
 std::string describe(const ReadingFit& f) {
   return "gyroscopes " + fixed(f.gyroRms, 3) + " rad/s, accelerometers " + fixed(f.accelRms, 2) +
          " m/s^2";
@@ -177,7 +186,9 @@ AutoCalibrationResult autoCalibrate(const Recording& whole, const FilterParamsFo
   std::string why;
   std::optional<MovementCalibration> m;
   try {
-    m = tryCalibrateFromMovement(rec, {}, &why);
+    MovementCalibrationParams mp;
+    mp.expectedRestPose = params.expectedRestPose;
+    m = tryCalibrateFromMovement(rec, mp, &why);
   } catch (const std::exception& e) {
     why = e.what();
   }
@@ -191,6 +202,7 @@ AutoCalibrationResult autoCalibrate(const Recording& whole, const FilterParamsFo
     return out;
   }
   out.summary = summarise(*m);
+  out.forearmRollSeen = m->rollFromPose;
   try {
     Recording reference = rec;
     if (current) applyCalibration(*current, reference);
@@ -202,7 +214,7 @@ AutoCalibrationResult autoCalibrate(const Recording& whole, const FilterParamsFo
     out.line = head + "not applied: its check failed (" + e.what() + ")";
     return out;
   }
-  const std::string found = changes(*m);
+  const std::string found = changes(*m) + roll(*m, params.expectedRestPose.has_value());
   if (out.reference.samples == 0 || out.fitted.samples == 0) {
     out.line = head + found + "; not applied: too few estimates in " + window + " to check it";
     return out;
@@ -214,6 +226,13 @@ AutoCalibrationResult autoCalibrate(const Recording& whole, const FilterParamsFo
     out.line = head + found + "; not applied: the " +
                (current ? "calibration in use" : "sidecar's mounting") +
                " explains the readings as well" + compared;
+    return out;
+  }
+  if (current && params.currentRollSeen && !m->rollFromPose) {
+    out.line = head + found +
+               "; not applied: the calibration in use has the forearm's roll from the start pose, "
+               "this fit does not" +
+               compared;
     return out;
   }
   out.outcome = Outcome::Applied;

@@ -50,6 +50,8 @@ struct AutoCalibrationResult {
   std::optional<MountingSummary> summary;  ///< set whenever a fit was made
   std::string line;                        ///< "calibration from movement: ..." (no newline)
   ReadingFit reference, fitted;            ///< when both were measured (samples > 0)
+  /// The fit took the forearm sensor's roll from rests in the start pose (false: the sidecar's).
+  bool forearmRollSeen = false;
 };
 
 /// Settings of autoCalibrate.
@@ -58,6 +60,14 @@ struct AutoCalibrationParams {
   /// The fitted mounting is applied only when its ReadingFit score is below this fraction of the
   /// reference's (the sidecar's, or the calibration in use).
   double betterFraction = 0.7;
+  /// The pose the patient is told to rest in at the start (protocolStartPose(): upper arm
+  /// hanging, elbow at a right angle, thumb up; docs/calibration.md, "The rest pose"). The rests
+  /// that look like it give the forearm sensor's roll about the forearm, which no movement shows
+  /// (MovementCalibrationParams::expectedRestPose). Unset: the roll stays the sidecar's.
+  std::optional<JointVector> expectedRestPose = protocolStartPose();
+  /// The calibration in use (`current`) has the forearm's roll from a rest in the start pose: a
+  /// fit that did not see the roll is not applied over it (it would put the sidecar's back).
+  bool currentRollSeen = false;
   /// Checked while the filter runs; when it reads true the check stops early and nothing is
   /// applied. May be set from another thread. May be null.
   const std::atomic<bool>* cancel = nullptr;

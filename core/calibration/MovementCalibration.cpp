@@ -17,6 +17,7 @@
 #include "core/calibration/Calibrator.h"
 #include "core/calibration/MovementFit.h"
 #include "core/calibration/MovementReadings.h"
+#include "core/calibration/MovementRestPose.h"
 
 namespace armtrack {
 
@@ -362,10 +363,28 @@ MovementCalibration calibrateMovementRight(const Recording& rec,
   fallBack(xw, xw0, covW, p.rotationPriorStd, p.excitedFraction);
   Mat3 m1 = expRotation(xw.head<3>());
   Mat3 m2 = forearmTilt(xw.tail<2>());
-  double roll = 0.0;
+  double roll = 0.0, rollSd = 0.0;
   if (p.restPose) {
     roll = axes.theta[restIndex](1) - (*p.restPose)(4);
+    rollSd = std::sqrt(std::max(0.0, covW(3, 3)));
     m2 = Eigen::AngleAxisd(roll, Vec3::UnitY()).toRotationMatrix() * m2;
+    out.rollFromPose = true;
+  } else if (p.expectedRestPose) {
+    // The rests that look like the pose the user was told to rest in: their forearm gravity.
+    const PoseRoll pr = rollFromRestPose(g, findRests(g, p, gNominal), axes.theta, kAxesStride, m1,
+                                         m2, prior, rec.meta.up, *p.expectedRestPose, p);
+    out.rests = pr.rests;
+    if (pr.roll) {
+      out.poseRests = pr.agreeing;
+      roll = *pr.roll;
+      rollSd = pr.sd;
+      m2 = Eigen::AngleAxisd(roll, Vec3::UnitY()).toRotationMatrix() * m2;
+      out.rollFromPose = true;
+    } else {
+      out.warnings.push_back(
+          "the forearm sensor's roll about the forearm was not observable: " + pr.why +
+          " (upper arm hanging, elbow at a right angle, thumb up); the sidecar's is kept");
+    }
   }
   out.upperMounting = m1;
   out.forearmMounting = m2;
@@ -440,6 +459,8 @@ MovementCalibration calibrateMovementRight(const Recording& rec,
   if (!l3Known) c.heldFixed.push_back("l3");
   if (p.restPose)
     c.fromStartPose = {"thf7 (the forearm's roll, from the pronation at rest)"};
+  else if (out.rollFromPose)
+    c.fromStartPose = {"thf7 (the forearm's roll, from gravity at the rests in the start pose)"};
   else
     c.heldFixed.push_back("thf7 (the forearm's roll about its axis: the sidecar's)");
 
@@ -473,9 +494,9 @@ MovementCalibration calibrateMovementRight(const Recording& rec,
     r.name = "forearm sensor roll about the forearm";
     r.value = roll / kDeg;
     r.unit = "deg";
-    r.sd = p.restPose ? sdW(3) : 0.0;
-    r.excited = p.restPose.has_value();
-    r.observable = p.restPose.has_value();
+    r.sd = rollSd / kDeg;
+    r.excited = out.rollFromPose;
+    r.observable = out.rollFromPose;
     ps.push_back(r);
   }
   const Vec3 radialF = Vec3(out.forearmLever.x(), out.forearmLever.y(), 0.0).normalized();

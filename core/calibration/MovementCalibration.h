@@ -35,6 +35,20 @@ struct MovementCalibrationParams {
   /// taken as unknown: the upper arm's long axis comes from the joint positions alone and the
   /// forearm's roll stays at the sidecar's.
   std::optional<JointVector> restPose;
+  /// The pose the user was told to rest in, when it is not known that every rest is in it (the
+  /// calibration used automatically: protocolStartPose(), docs/calibration.md, "The rest pose").
+  /// Each rest that looks like it (gravity in the upper-arm sensor within restPoseTolerance of
+  /// where the pose puts it, the forearm's inclination from its sensor's gravity and the elbow's
+  /// flexion from the fit within restPoseTolerance of the pose's) is taken as that pose, and the
+  /// forearm sensor's gravity there, "thumb up", gives its roll about the forearm. Without such a
+  /// rest the roll stays the sidecar's and is reported as not observable. Ignored when restPose
+  /// is set.
+  std::optional<JointVector> expectedRestPose;
+  double restPoseTolerance = 25.0 * kDeg;  ///< rad
+  /// The rolls found at the matching rests must agree this closely, and the roll is believed only
+  /// up to maxPoseRoll (a larger one means the thumb was not up: a hand flat on the thigh).
+  double poseRollSpread = 15.0 * kDeg;  ///< rad
+  double maxPoseRoll = 50.0 * kDeg;     ///< rad
   /// A parameter whose standard deviation after the fit exceeds this fraction of its prior's is
   /// "not excited": it falls back to the prior.
   double excitedFraction = 0.35;
@@ -58,7 +72,11 @@ struct MovementCalibration {
   Calibration calibration;  ///< ready for writeCalibration / applyCalibration
   std::vector<MovementParameter> parameters;
   double restStart = 0.0, restEnd = 0.0;  ///< the rest used (s, recording time)
-  double movingSeconds = 0.0;             ///< time with the arm turning faster than movingRate
+  /// With MovementCalibrationParams::expectedRestPose: the still stretches found, and those taken
+  /// as the pose (the forearm's roll then comes from them).
+  int rests = 0, poseRests = 0;
+  bool rollFromPose = false;   ///< the forearm's roll came from a rest in a known pose
+  double movingSeconds = 0.0;  ///< time with the arm turning faster than movingRate
   /// The whole mounting rotation of each IMU relative to the sidecar's strap angles (what the
   /// simulator's ImuSimParams::misalignment describes): mountingRotation(thu4, thu4_sidecar, R).
   Eigen::Matrix3d upperMounting = Eigen::Matrix3d::Identity();

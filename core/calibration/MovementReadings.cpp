@@ -113,10 +113,10 @@ void differentiate(Grid& g) {
 }
 
 /// The longest stretch in which every 0.5 s window is still for both IMUs.
-std::optional<Rest> findRest(const Grid& g, const MovementCalibrationParams& p, double gravity) {
+std::vector<Rest> findRests(const Grid& g, const MovementCalibrationParams& p, double gravity) {
   const std::size_t n = g.t.size();
   const std::size_t w = static_cast<std::size_t>(std::ceil(p.minRestSeconds / kGridDt));
-  if (n < w + 1) return std::nullopt;
+  if (n < w + 1) return {};
   const auto still = [&](std::size_t i) {
     for (const auto* pair : {&g.w1, &g.w2}) {
       const std::vector<Vec3>& v = *pair;
@@ -138,18 +138,21 @@ std::optional<Rest> findRest(const Grid& g, const MovementCalibrationParams& p, 
     }
     return true;
   };
-  std::optional<Rest> best;
-  std::size_t runStart = 0;
+  std::vector<Rest> rests;
   bool inRun = false;
   for (std::size_t i = 0; i + w <= n; ++i) {
     const bool s = still(i);
-    if (s && !inRun) runStart = i;
+    if (s && !inRun) rests.push_back({i, i + w});
+    if (s) rests.back().to = i + w;
     inRun = s;
-    if (s) {
-      const Rest r{runStart, i + w};
-      if (!best || r.to - r.from > best->to - best->from) best = r;
-    }
   }
+  return rests;
+}
+
+std::optional<Rest> findRest(const Grid& g, const MovementCalibrationParams& p, double gravity) {
+  std::optional<Rest> best;
+  for (const Rest& r : findRests(g, p, gravity))
+    if (!best || r.to - r.from > best->to - best->from) best = r;
   return best;
 }
 

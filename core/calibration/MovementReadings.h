@@ -49,7 +49,9 @@ void differentiate(Grid& g);
 struct Rest {
   std::size_t from = 0, to = 0;  ///< grid indices, [from, to)
 };
-/// The longest stretch in which every minRestSeconds window is still for both IMUs.
+/// Every stretch in which each minRestSeconds window is still for both IMUs, in time order.
+std::vector<Rest> findRests(const Grid& g, const MovementCalibrationParams& p, double gravity);
+/// The longest of them.
 std::optional<Rest> findRest(const Grid& g, const MovementCalibrationParams& p, double gravity);
 Vec3 meanOf(const std::vector<Vec3>& v, const Rest& r);
 

@@ -20,7 +20,9 @@ std::string formatMovementReport(const MovementCalibration& m) {
     const MovementParameter* p = find(name);
     if (!p) return;
     if (!p->observable) {
-      s += "- " + text + ": no movement can tell it from pronation; the sidecar's is kept.\n";
+      s += "- " + text +
+           ": no movement can tell it from pronation, and no rest was in the start pose (upper "
+           "arm hanging, elbow at a right angle, thumb up); the sidecar's is kept.\n";
     } else if (!p->excited) {
       s += "- " + text + ": the movement did not show it; the sidecar's " + fixed1(p->prior) + " " +
            p->unit + " is kept.\n";
@@ -40,6 +42,9 @@ std::string formatMovementReport(const MovementCalibration& m) {
   say("forearm sensor tilt about its x axis", "the sensor tilted about its x axis by");
   say("forearm sensor tilt about its z axis", "the sensor tilted about its z axis by");
   say("forearm sensor roll about the forearm", "its roll about the forearm");
+  if (m.rollFromPose && m.poseRests > 0)
+    s += "  from gravity at " + std::to_string(m.poseRests) +
+         " rest(s) in the start pose (upper arm hanging, elbow at a right angle, thumb up).\n";
   say("forearm sensor distance from the elbow", "the sensor sits from the elbow at");
   if (const MovementParameter* p = find("forearm sensor distance from the elbow"); p && p->excited)
     s += "  that is " + fixed1(m.calibration.geometry.l6 * 100.0 - p->value) +

@@ -60,6 +60,7 @@ void LiveCalibration::startFit(double t) {
   ap.windowSeconds = m_params.windowSeconds;
   ap.betterFraction = m_params.betterFraction;
   ap.cancel = &m_cancel;
+  ap.currentRollSeen = m_currentRollSeen;
   m_thread = std::thread([this, rec = std::move(rec), ap, current = m_current] {
     m_result = autoCalibrate(rec, m_paramsFor, ap, current ? &*current : nullptr);
     m_done = true;
@@ -77,7 +78,10 @@ std::optional<AutoCalibrationResult> LiveCalibration::poll(double t) {
     m_madeOne = m_madeOne || out->outcome != Outcome::NotTried;
     m_nextFitT = t + (m_madeOne ? m_params.refineSeconds : m_params.retrySeconds);
     if (m_cancel) out->calibration.reset();  // stopped meanwhile: nothing more to use it on
-    if (out->calibration) m_current = out->calibration;
+    if (out->calibration) {
+      m_current = out->calibration;
+      m_currentRollSeen = out->forearmRollSeen;
+    }
     std::lock_guard lock(m_statusMutex);
     ++m_status.fits;
     m_status.fitting = false;

@@ -109,6 +109,7 @@ class LiveCalibration {
   double m_fitStartT = 0.0;  // session time of the row the running fit started at
   bool m_madeOne = false;    // a fit was made (not merely "not tried")
   std::optional<Calibration> m_current;
+  bool m_currentRollSeen = false;  // m_current has the forearm's roll from the start pose
 
   std::thread m_thread;
   std::atomic<bool> m_cancel{false}, m_done{false};

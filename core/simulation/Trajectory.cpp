@@ -314,32 +314,53 @@ JointMotion ReachingTrajectory::at(double t) const {
 }
 
 JointVector SessionTrajectory::restPose() {
+  // The start pose the patient is told to rest in (protocolStartPose(), docs/calibration.md,
+  // "The rest pose"): upper arm hanging, elbow at a right angle, forearm forward, thumb up; the
+  // upper arm leaning 15 deg forward, as when the forearm rests on the thigh.
   JointVector th;
-  th << 15 * kDeg, 10 * kDeg, 0.0, -80 * kDeg, 0.0;
+  th << 15 * kDeg, 0.0, 0.0, -90 * kDeg, 0.0;
   return th;
 }
 
+SessionRest SessionRest::startPose() {
+  return {SessionTrajectory::restPose(), SessionTrajectory::restScatter(), true};
+}
+
+SessionRest SessionRest::handOnLap() {
+  JointVector th;
+  th << 15 * kDeg, 10 * kDeg, 0.0, -80 * kDeg, 0.0;
+  return {th, 5 * kDeg, false};
+}
+
 SessionTrajectory::SessionTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
-                                     double durationSeconds, double startSeconds) {
+                                     double durationSeconds, double startSeconds,
+                                     const SessionRest& restAt) {
   if (!(peakRate > 0.0) || !std::isfinite(peakRate) || !(peakAccel > 0.0) ||
       !std::isfinite(peakAccel))
     throw std::invalid_argument("SessionTrajectory: peak rate and acceleration must be > 0");
   if (!(durationSeconds >= 0.0) || !std::isfinite(durationSeconds) || !(startSeconds >= 0.0) ||
       !std::isfinite(startSeconds))
     throw std::invalid_argument("SessionTrajectory: durations must be >= 0 s");
+  if (!restAt.pose.allFinite() || !(restAt.scatter >= 0.0) || !std::isfinite(restAt.scatter))
+    throw std::invalid_argument("SessionTrajectory: the rest pose and its scatter must be finite");
   std::mt19937_64 rng(seed);
   std::array<std::uniform_real_distribution<double>, kNumJoints> joint;
   for (int j = 0; j < kNumJoints; ++j)
     joint[j] = std::uniform_real_distribution<double>(kReachLow[j], kReachHigh[j]);
   std::uniform_real_distribution<double> hold(0.3, 0.8), rest(1.0, 3.0),
-      jitter(-5 * kDeg, 5 * kDeg);
+      jitter(-restAt.scatter, restAt.scatter);
+  // The first rest's scatter from a generator of its own: the reaches stay those of the seed.
+  std::mt19937_64 startRng(seed ^ 0x5eed5ca77e7ULL);
   auto moveTo = [&](const JointVector& next) {
     const double reach = (next - m_path.lastPosture()).cwiseAbs().maxCoeff();
     const double seconds =
         std::max({1.875 * reach / peakRate, std::sqrt(5.7735 * reach / peakAccel), 0.2});
     m_path.add(m_path.endTime() + seconds, next);
   };
-  m_path.add(0.0, restPose());
+  JointVector start = restAt.pose;
+  if (restAt.scatterFirst)
+    for (int j = 0; j < kNumJoints; ++j) start(j) += jitter(startRng);
+  m_path.add(0.0, start);
   m_path.hold(startSeconds);
   while (m_path.endTime() < durationSeconds) {
     JointVector target;
@@ -348,7 +369,7 @@ SessionTrajectory::SessionTrajectory(std::uint64_t seed, double peakRate, double
     } while ((target - m_path.lastPosture()).cwiseAbs().maxCoeff() < kMinReach);
     moveTo(target);
     m_path.hold(hold(rng));
-    JointVector back = restPose();
+    JointVector back = restAt.pose;
     for (int j = 0; j < kNumJoints; ++j) back(j) += jitter(rng);
     moveTo(back);
     m_path.hold(rest(rng));

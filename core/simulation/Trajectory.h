@@ -137,20 +137,36 @@ class ReachingTrajectory final : public Trajectory {
   MinimumJerkPath m_path;
 };
 
-/// A patient's session of reaches: the arm rests (hand on the lap: shoulder flexed 15 deg,
-/// abducted 10, elbow flexed 80) still for startSeconds, then reaches to a posture drawn as
-/// ReachingTrajectory draws them, holds it 0.3-0.8 s and comes back to rest, and rests 1-3 s
-/// before the next reach. Each rest posture is the rest pose moved by up to 5 deg per joint.
+/// A patient's session of reaches: the arm rests in the start pose the patient is told to take
+/// (restPose(): upper arm hanging, elbow at a right angle, forearm forward, thumb up) still for
+/// startSeconds, then reaches to a posture drawn as ReachingTrajectory draws them, holds it
+/// 0.3-0.8 s and comes back to rest, and rests 1-3 s before the next reach. Each rest posture,
+/// the first too, is the rest pose moved by up to restScatter() per joint (a patient's scatter).
 /// Moves are limited by peakRate and peakAccel as in ReachingTrajectory; the rests are what
 /// real sessions have and what a gyroscope's bias at rest is taken from.
+/// Where a SessionTrajectory rests and how closely the patient keeps to it.
+struct SessionRest {
+  JointVector pose;          ///< rad
+  double scatter = 0.0;      ///< rad: each rest within this of pose, per joint
+  bool scatterFirst = true;  ///< the first rest too (from a generator of its own)
+  /// The start pose the patient is told to rest in (the default).
+  static SessionRest startPose();
+  /// The rest of the sessions simulated before the start pose was asked for (hand on the lap:
+  /// shoulder flexed 15 deg, abducted 10, elbow flexed 80, up to 5 deg per joint, the first rest
+  /// exact): for tests whose figures were measured on those sessions.
+  static SessionRest handOnLap();
+};
+
 class SessionTrajectory final : public Trajectory {
  public:
   /// Throws std::invalid_argument unless peakRate and peakAccel are finite and positive and
   /// the durations are finite and >= 0.
   SessionTrajectory(std::uint64_t seed, double peakRate, double peakAccel,
-                    double durationSeconds = 600.0, double startSeconds = 3.0);
+                    double durationSeconds = 600.0, double startSeconds = 3.0,
+                    const SessionRest& rest = SessionRest::startPose());
   JointMotion at(double t) const override;
   static JointVector restPose();
+  static constexpr double restScatter() { return 3.0 * std::numbers::pi / 180.0; }  ///< rad
 
  private:
   MinimumJerkPath m_path;

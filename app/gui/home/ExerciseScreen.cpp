@@ -245,7 +245,9 @@ void ExerciseScreen::setPhase(Phase p) {
       show(m_stop, false);
       break;
     case Phase::Rest:
-      m_text->setText(tr("Rest. The next set starts by itself when the time is up."));
+      m_text->setText(
+          tr("Rest with your upper arm hanging, your elbow bent at a right angle and your "
+             "thumb up. The next set starts by itself when the time is up."));
       show(m_primary, true, tr("&Start the next set now"));
       show(m_pause, true);
       show(m_skip, false);

@@ -32,8 +32,9 @@ QString strapsLine(const session::LiveCalibrationStatus& status) {
       return status.fits == 0
                  ? QCoreApplication::translate(
                        "StrapsText",
-                       "Straps: checking them from the movement (a moment of rest and some "
-                       "movement are needed)")
+                       "Straps: checking them from the movement (rest still a moment with the "
+                       "upper arm hanging, the elbow bent to a right angle and the thumb up, then "
+                       "move)")
                  : QCoreApplication::translate(
                        "StrapsText",
                        "Straps: not checked yet (the arm needs a moment of rest and more "
