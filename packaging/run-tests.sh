@@ -65,14 +65,15 @@ fuzz_build=$!
 trap 'kill -- "-$fuzz_build" 2>/dev/null || true; printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
 
 cd "$build"
-# Two CTest "cpu" slots per core: a test that computes holds two, one measured to wait most of
-# its run (a GUI test paced by timers and the virtual arm) holds one (tests/CMakeLists.txt), so up
-# to twice as many tests as cores run at once without asking more CPU than the cores give.
-slots=$((2 * $(nproc)))
+# Ten CTest "cpu" slots per core, each a tenth of a core: a test that computes holds ten, one
+# measured to wait part of its run (a GUI test paced by timers and the virtual arm, a session in
+# real time) holds the tenths it was measured to use (tests/CMakeLists.txt), so the tests run side
+# by side without asking more CPU than the cores give. At most four tests per core at once.
+slots=$((10 * $(nproc)))
 printf '{"version": {"major": 1, "minor": 0}, "local": [{"cpu": [{"id": "0", "slots": %d}]}]}\n' \
   "$slots" >"$build/ctest-resources.json"
-ctest --output-on-failure --parallel "$slots" --resource-spec-file "$build/ctest-resources.json" \
-  --timeout 600
+ctest --output-on-failure --parallel "$((4 * $(nproc)))" \
+  --resource-spec-file "$build/ctest-resources.json" --timeout 600
 phase ctest
 # What the tests left of that build is done at the normal priority by run-fuzzers.sh below, which
 # also reports a failure: stop the idle one (ninja stops its compilers and deletes the outputs
