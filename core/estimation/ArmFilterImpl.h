@@ -209,7 +209,7 @@ class ArmFilter final : public JointEstimator {
   // instead of taking a random turn while start-up settles. Method A always. B and C leave body
   // acceleration out of their model, so their IMU innovations carry model error whose
   // correlations with the heading the filter needs to bleed off without optics (heading-blind,
-  // IMUs only, they drifted to 40-80 deg); with optics seen in the last second (and the
+  // IMUs only, they peaked at 53-131 deg); with optics seen in the last second (and the
   // kinematic start-up on, as inclinometerRealSensors) they are heading-blind too: otherwise a
   // fast reach turned them about the vertical by 30-50 deg at 1 deg of standard deviation, and
   // the gate then refused the markers that would have taken it back (docs/estimator.md,
