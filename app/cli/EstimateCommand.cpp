@@ -151,7 +151,13 @@ FileRun runFile(const fs::path& input, const Setup& setup, const Calibration* ca
   if (calibration) useCalibration(*calibration, *setup.calibration, meta, log);
   std::optional<Calibration> automatic;
   if (!calibration && setup.autoCalibration) {
-    AutoCalibrationResult found = autoCalibrate(input, setup.options);
+    // The fitted mounting is judged by how well the model explains the readings: with Method
+    // A's filter whatever method estimates. Methods B and C read body acceleration as tilt, so
+    // their angles explain the readings roughly with any mounting, and with them the fit of a
+    // strap turned 30 deg was refused as no better than the sidecar's (IMUs only; issue 27).
+    EstimateOptions judged = setup.options;
+    judged.model = MeasurementModel::AccelGyro;
+    AutoCalibrationResult found = autoCalibrate(input, judged);
     log << found.line << "\n";
     if (found.calibration) {
       automatic = std::move(found.calibration);

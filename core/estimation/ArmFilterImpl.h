@@ -215,12 +215,18 @@ class ArmFilter final : public JointEstimator {
   // Whether IMU updates are heading-blind now, and the directions they use: v the full-state
   // heading symmetry, u the covector that reads the turn about the vertical (u . v = 1). From
   // the start, so that without optics the heading stays the start pose's, as documented,
-  // instead of taking a random turn while start-up settles. Only for Method A: B and C leave
-  // body acceleration out of their model, so their IMU innovations carry model error whose
-  // correlations with the heading the filter needs to bleed off.
+  // instead of taking a random turn while start-up settles. Method A always. B and C leave body
+  // acceleration out of their model, so their IMU innovations carry model error whose
+  // correlations with the heading the filter needs to bleed off without optics (heading-blind,
+  // IMUs only, they peaked at 53-131 deg); with optics seen in the last second (and the
+  // kinematic start-up on, as inclinometerRealSensors) they are heading-blind too: otherwise a
+  // fast reach turned them about the vertical by 30-50 deg at 1 deg of standard deviation, and
+  // the gate then refused the markers that would have taken it back (docs/estimator.md,
+  // "Methods B and C on realistic sensors").
   bool headingBlind() const {
     return m_p.headingBlindImuUpdates && headingIsFree() &&
-           m_p.model == MeasurementModel::AccelGyro;
+           (m_p.model == MeasurementModel::AccelGyro ||
+            (inclinometerRealSensors() && m_t - m_lastOpticalT < 1.0));
   }
   // A trunk that turns makes the heading visible to the arm's IMUs: its rate, angular
   // acceleration and the shoulder's acceleration reach each arm IMU through the arm's pose,

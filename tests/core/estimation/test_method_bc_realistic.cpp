@@ -20,7 +20,10 @@
 #include <cstdio>
 #include <random>
 
+#include "core/calibration/AutoCalibration.h"
+#include "core/calibration/Calibration.h"
 #include "core/estimation/ArmFilter.h"
+#include "core/estimation/RecordingEstimator.h"
 #include "core/metrics/Accuracy.h"
 #include "core/simulation/ImuErrors.h"
 #include "core/simulation/SensorSimulator.h"
@@ -47,7 +50,7 @@ Eigen::Matrix3d strapTurn(std::mt19937_64& rng, double maxRad) {
       .toRotationMatrix();
 }
 
-Recording realisticSet(std::uint64_t seed, Optics optics) {
+Recording realisticSet(std::uint64_t seed, Optics optics, double strapDeg = 3.0) {
   const SessionTrajectory traj(seed, 150 * kDeg, 1500 * kDeg, kDuration);
   SimulationParams sp = defaultSimulation();
   sp.duration = kDuration;
@@ -56,8 +59,8 @@ Recording realisticSet(std::uint64_t seed, Optics optics) {
   sp.webcam.enabled = optics == Optics::Webcam;
   applySensorModel(SensorModel::Realistic, sp);
   std::mt19937_64 rng(seed * 7919 + 17);
-  sp.upperArm.misalignment = strapTurn(rng, 3 * kDeg);
-  sp.forearm.misalignment = strapTurn(rng, 3 * kDeg);
+  sp.upperArm.misalignment = strapTurn(rng, strapDeg * kDeg);
+  sp.forearm.misalignment = strapTurn(rng, strapDeg * kDeg);
   Recording rec = simulateRecording(traj, sp);
   // The sidecar's lever arms: up to 5 cm off along the segment, up to 2 cm off its axis.
   std::uniform_real_distribution<double> along(-0.05, 0.05), across(-0.02, 0.02);
@@ -109,6 +112,46 @@ TEST(MethodsBCRealistic, NoRecoveryAndNoErrorAbove20Degrees) {
         const double shoulderBound = o == Optics::ImusOnly ? 30.0 : 20.0;
         for (int j = 0; j < kNumJoints; ++j)
           EXPECT_LT(r.peak(j), j < 3 ? shoulderBound : 20.0) << "joint " << j;
+      }
+    }
+  }
+}
+
+// The set acceptance 3 names: straps turned by up to 30 deg about every axis, lever arms off by
+// up to 5 cm, no calibration file, so the calibration from movement as `estimate` runs it (fitted
+// on the first 60 s, judged with Method A's filter, applied when clearly better; IMUs only,
+// AutoCalibrationCli checks that B and C get it too). Seeds 931-932 were not used while tuning
+// (921-923 were). Not met: what the calibration leaves (the forearm strap's roll, which movement
+// cannot tell from pronation, 15-25 deg on every method, A included) makes the optics refuse
+// markers and B and C reach 45 deg on one joint; docs/estimator.md has the figures. Checked here:
+// no recovery with optics, and no jump of 50 deg. Before the fix, a fast reach turned Method B
+// about the vertical by 52 deg with a Kinect (seed 931; 1 deg of standard deviation) and the
+// webcam's refused markers made it re-initialise (seed 932).
+TEST(MethodsBCRealistic, StrapsTurned30DegreesThroughTheCalibrationFromMovement) {
+  for (std::uint64_t seed : {931u, 932u}) {
+    // The fit reads the IMUs alone, and their readings do not depend on the optics: fitted once
+    // per seed, on the IMU rows (the ReadingFit without optics), to keep the test's time down.
+    const Recording imus = realisticSet(seed, Optics::ImusOnly, 30.0);
+    EstimateOptions judged;  // Method A's filter, as `estimate` judges the fit
+    const AutoCalibrationResult found =
+        autoCalibrate(imus, [&](const RecordingMeta& m) { return estimatorParamsFor(m, judged); });
+    ASSERT_TRUE(found.calibration) << found.line;
+    for (Optics o : {Optics::Kinect, Optics::Webcam}) {
+      Recording rec = realisticSet(seed, o, 30.0);
+      applyCalibration(*found.calibration, rec);
+      for (MeasurementModel m :
+           {MeasurementModel::AugmentedBodyAccel, MeasurementModel::InclinometerGyro}) {
+        SCOPED_TRACE(::testing::Message()
+                     << "seed " << seed << ", " << name(o) << ", Method " << methodName(m));
+        const Measured r = run(rec, m);
+        std::printf(
+            "[ measured ] 30 deg, seed %llu %-9s Method %s: recoveries %llu, RMSE %.1f %.1f %.1f "
+            "%.1f %.1f, peak %.1f %.1f %.1f %.1f %.1f deg\n",
+            static_cast<unsigned long long>(seed), name(o), methodName(m).c_str(),
+            static_cast<unsigned long long>(r.recoveries), r.rmse(0), r.rmse(1), r.rmse(2),
+            r.rmse(3), r.rmse(4), r.peak(0), r.peak(1), r.peak(2), r.peak(3), r.peak(4));
+        EXPECT_EQ(r.recoveries, 0u);
+        for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(r.peak(j), 50.0) << "joint " << j;
       }
     }
   }
