@@ -15,8 +15,12 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
+
+#include <Eigen/Core>
 
 #include "core/calibration/AutoCalibration.h"
+#include "core/estimation/RestBias.h"
 
 namespace armtrack::session {
 
@@ -41,6 +45,34 @@ struct LiveCalibrationParams {
   /// fit of 1-3 s lands 10-30 s of session time later, later still on a loaded machine) and
   /// tests; never for live devices, whose samples would queue meanwhile.
   bool waitForFit = false;
+  /// A fit to be used waits for the arm to rest: a new estimator started during a reach loses the
+  /// arm on the next ones with IMUs only (on the turned-straps patient of the tests, 4.5-16 deg
+  /// off over the next 50 s), and one started in a pause at a reach's end (0.4-0.8 s) does worse
+  /// than one started with the hand at rest. Off: used at once.
+  bool applyAtRest = true;
+  /// At rest: the estimator's own rule for a still sensor (RestBias: over the last
+  /// `windowSeconds`, 1 s, each axis's rate varies less than `maxGyroStd` and stays under
+  /// `maxBias`, the mean specific force of the two halves differs by less than
+  /// `maxAccelChange`, at least `minSamples` readings), for both arm IMUs at once.
+  RestBiasParams rest;
+  /// A fit waiting this long (s) for a rest is told once (hold the arm still for a moment); it
+  /// keeps waiting: used mid-movement it would be no better than the straps as they are.
+  double restWaitTellSeconds = 20.0;
+};
+
+/// Whether an IMU was still over its newest readings (RestBiasParams's rule, on a sliding
+/// window).
+class ImuStillness {
+ public:
+  void add(double t, const ImuReading& r, double seconds);
+  bool still(const RestBiasParams& p) const;
+
+ private:
+  struct Reading {
+    double t;
+    Eigen::Vector3d gyr, acc;
+  };
+  std::deque<Reading> m_readings;
 };
 
 /// What the session's calibration from movement did so far; Session::movementCalibration().
@@ -54,8 +86,12 @@ struct LiveCalibrationStatus {
   };
   State state = State::Off;
   bool fitting = false;  ///< a fit (or refit) runs now
-  int fits = 0;          ///< fits finished (any outcome)
-  int applied = 0;       ///< of which applied (the first, and each better refit)
+  /// A fit to be used is ready and waits for the arm to rest (LiveCalibrationParams::applyAtRest)
+  /// since readyAt (session time, s).
+  bool waitingForRest = false;
+  double readyAt = std::numeric_limits<double>::quiet_NaN();
+  int fits = 0;     ///< fits finished (any outcome)
+  int applied = 0;  ///< of which applied (the first, and each better refit)
   /// The calibration in use, its summary and when it was applied: the session time (s) of the
   /// row from which the estimator used it; the first application's too (a refit may apply
   /// another later).
@@ -88,8 +124,13 @@ class LiveCalibration {
   /// A row as the devices gave it (session time).
   void add(const ArmSample& row);
   /// When a fit has finished: its result (a calibration set only when it is to be used from now
-  /// on; the status is updated already). Starts the next fit when it is due.
+  /// on; the status is updated already). A fit to be used is handed back only at a row at which
+  /// the arm rests (applyAtRest). Starts the next fit when it is due (not while one waits).
   std::optional<AutoCalibrationResult> poll(double t);
+  /// What to tell in the session messages besides the fits' lines (waiting for a rest), once.
+  std::vector<std::string> takeNotes();
+  /// Both arm IMUs were still over their last rest.windowSeconds of readings.
+  bool atRest() const;
   /// Cancels a running fit and waits for it (the session stops).
   void finish();
 
@@ -97,6 +138,8 @@ class LiveCalibration {
 
  private:
   void startFit(double t);
+  std::optional<AutoCalibrationResult> finishFit(double t);
+  std::optional<AutoCalibrationResult> release(double t);
 
   LiveCalibrationParams m_params;
   RecordingMeta m_meta;
@@ -110,6 +153,11 @@ class LiveCalibration {
   bool m_madeOne = false;    // a fit was made (not merely "not tried")
   std::optional<Calibration> m_current;
   bool m_currentRollSeen = false;  // m_current has the forearm's roll from the start pose
+  ImuStillness m_upperStill, m_forearmStill;
+  std::optional<AutoCalibrationResult> m_pending;  // a fit to be used, waiting for a rest
+  double m_pendingSince = 0.0;
+  bool m_toldWaiting = false;
+  std::vector<std::string> m_notes;
 
   std::thread m_thread;
   std::atomic<bool> m_cancel{false}, m_done{false};

@@ -260,9 +260,11 @@ class Session::Worker {
   /// Feeds the calibration from movement the row as the devices gave it; when a fit has
   /// finished, tells its line, and when its calibration is to be used, restarts the estimator
   /// with it (the new mounting changes the model; a fresh start is the one consistent state).
+  /// LiveCalibration hands a fit to be used over only at a row at which the arm rests.
   void calibrateFromMovement(const ArmSample& row) {
     m_calibration->add(row);
     std::optional<AutoCalibrationResult> r = m_calibration->poll(row.t);
+    for (std::string& n : m_calibration->takeNotes()) m_news.push_back(std::move(n));
     if (!r) return;
     const bool firstTry = !m_toldCalibration;
     m_toldCalibration = true;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <numbers>
 #include <string>
@@ -54,7 +55,7 @@ struct LiveRun {
 // (LiveCalibrationParams::waitForFit), so the fit is used from the row it started at whatever
 // the machine's load.
 LiveRun replay(const QTemporaryDir& dir, const Recording& rec, bool calibrate, double first = 40.0,
-               bool wait = false) {
+               bool wait = false, const std::function<void(LiveCalibrationParams&)>& adjust = {}) {
   LiveRun r;
   const fs::path source = fs::path(dir.path().toStdString()) / "source.csv";
   writeRecording(source, rec);
@@ -70,6 +71,7 @@ LiveRun replay(const QTemporaryDir& dir, const Recording& rec, bool calibrate, d
   params.movementCalibration.enabled = calibrate;
   params.movementCalibration.firstSeconds = first;
   params.movementCalibration.waitForFit = wait;
+  if (adjust) adjust(params.movementCalibration);
   Session session(params);
   std::mutex problemsMutex;
   QObject::connect(
@@ -127,6 +129,20 @@ double rmsError(const std::vector<EstimateRow>& rows, double from, double to) {
   return n ? std::sqrt(sum / static_cast<double>(n)) * kRad : std::nan("");
 }
 
+// The truth's fastest joint speed (deg/s) over [t - 0.1, t + 0.1] s of the recording.
+double trueJointSpeed(const Recording& rec, double t) {
+  double fastest = 0.0;
+  const ArmSample* prev = nullptr;
+  for (const ArmSample& s : rec.samples) {
+    if (!s.trueAngles || s.t < t - 0.1 || s.t > t + 0.1) continue;
+    if (prev && s.t > prev->t)
+      fastest = std::max(
+          fastest, (*s.trueAngles - *prev->trueAngles).cwiseAbs().maxCoeff() / (s.t - prev->t));
+    prev = &s;
+  }
+  return fastest * kRad;
+}
+
 std::size_t mentioning(const std::vector<std::string>& events, const std::string& text) {
   std::size_t n = 0;
   for (const std::string& e : events) n += e.find(text) != std::string::npos;
@@ -145,7 +161,9 @@ TEST_F(SessionMovementCalibration, TurnedStrapsAreFittedUsedAndKept) {
   // fit landed 1-3 s of real time later (10-30 s of session time, 60 on a loaded machine), and
   // where the estimator restarts matters: restarted at 35, 40, 45, 48, 50, 55, 60, 65 or 70 s,
   // the next 50 s are 16, 4.5, 12.7, 9.1, 0.8, 2.9, 0.8, 0.5 and 1.7 deg off (a restart during
-  // a reach loses the arm on the next ones). This run restarts at 50 s, at the end of a reach.
+  // a reach loses the arm on the next ones). So the fit waits for the arm to rest
+  // (LiveCalibrationParams::applyAtRest; FitReadyMidReach): ready at 50 s, at the end of a
+  // reach, it is used a second into the rest that follows.
   const LiveRun r = replay(dir_, rec, true, kFirstFit, true);
   for (const std::string& e : r.events) std::printf("  event: %s\n", e.c_str());
   ASSERT_GT(r.results.size(), 5000u);
@@ -166,12 +184,15 @@ TEST_F(SessionMovementCalibration, TurnedStrapsAreFittedUsedAndKept) {
       "applied at %.1f s\n",
       r.status.summary->upperTurnDeg, r.status.summary->forearmTurnDeg, kTurn, r.status.appliedAt);
   EXPECT_NEAR(r.status.summary->upperTurnDeg, kTurn, 3.0);
-  // Applied at the row the first window ended at (the session says which), and judged on a
-  // fixed stretch from there: the same rows on every run, before any refit. (Session time starts
-  // at start(), the replay's first row a moment later, times 10: 0.3 s on a loaded machine.)
-  EXPECT_GE(r.status.firstAppliedAt, kFirstFit);
-  EXPECT_LT(r.status.firstAppliedAt, kFirstFit + 1.0);
-  EXPECT_EQ(r.status.fittedAt, r.status.appliedAt);
+  // Fitted at the row the first window ended at and applied at the next rest (the session says
+  // both), and judged on a fixed stretch from there: the same rows on every run, before any
+  // refit. (Session time starts at start(), the replay's first row a moment later, times 10:
+  // 0.3 s on a loaded machine.)
+  EXPECT_GE(r.status.fittedAt, kFirstFit);
+  EXPECT_LT(r.status.fittedAt, kFirstFit + 1.0);
+  EXPECT_EQ(r.status.firstAppliedAt, r.status.appliedAt);
+  EXPECT_GE(r.status.appliedAt, r.status.fittedAt);
+  EXPECT_LT(r.status.appliedAt, r.status.fittedAt + 5.0);
   const double applied = r.status.firstAppliedAt;
   const double before = rmsError(r.results, 5.0, applied);
   const double after = rmsError(r.results, applied + 5.0, std::min(applied + 55.0, kSeconds));
@@ -186,6 +207,63 @@ TEST_F(SessionMovementCalibration, TurnedStrapsAreFittedUsedAndKept) {
   const Calibration kept = readCalibration(r.kept);
   EXPECT_TRUE(kept.upperArm.rotation.isApprox(r.status.calibration->upperArm.rotation, 1e-9));
   EXPECT_NEAR(kept.geometry.lf6, r.status.calibration->geometry.lf6, 1e-9);
+}
+
+// A fit ready mid-reach (35, 40, 45, 55 s on this patient; paced, so it is ready at that row)
+// waits for the arm's next rest: restarted there, the estimator keeps the arm over the next
+// 50 s. Restarted at once, the same fits left 16.1, 4.5, 12.7 and 2.9 deg.
+class FitReadyMidReach : public ::testing::TestWithParam<double> {
+ protected:
+  QTemporaryDir dir_;
+};
+
+TEST_P(FitReadyMidReach, IsAppliedAtTheNextRest) {
+  const double ready = GetParam();
+  const Recording rec = patient(kTurn);
+  // The moment is mid-reach indeed: the truth moves there.
+  EXPECT_GT(trueJointSpeed(rec, ready), 10.0) << "not a reach at " << ready << " s";
+  const LiveRun r = replay(dir_, rec, true, ready, true);
+  for (const std::string& e : r.events) std::printf("  event: %s\n", e.c_str());
+  ASSERT_EQ(r.status.state, LiveCalibrationStatus::State::Applied) << r.status.line;
+  const double applied = r.status.firstAppliedAt;
+  const double speed = trueJointSpeed(rec, applied);
+  const double after = rmsError(r.results, applied + 5.0, std::min(applied + 55.0, kSeconds));
+  std::printf(
+      "[ figures  ] fit ready at %.1f s, applied at %.1f s (truth's fastest joint %.1f deg/s); "
+      "joint RMS error over the next 50 s %.2f deg\n",
+      r.status.fittedAt, applied, speed, after);
+  EXPECT_GE(r.status.fittedAt, ready);
+  EXPECT_LT(r.status.fittedAt, ready + 1.0);
+  EXPECT_GT(applied, r.status.fittedAt) << "applied mid-reach";
+  EXPECT_FALSE(r.status.waitingForRest);
+  EXPECT_LT(speed, 3.0) << "not at rest when applied";
+  EXPECT_LT(after, 3.0);
+  EXPECT_EQ(mentioning(r.events, "used at the arm's first rest"), 1u);
+}
+
+INSTANTIATE_TEST_SUITE_P(SessionMovementCalibration, FitReadyMidReach,
+                         ::testing::Values(35.0, 40.0, 45.0, 55.0));
+
+// Hostile: an arm that never rests (here a rest rule no sensor meets). The fit waits, the status
+// says so, and the session tells once after restWaitTellSeconds what to do; the estimator is
+// never restarted mid-movement.
+TEST_F(SessionMovementCalibration, WithoutARestTheFitWaitsAndSaysSo) {
+  Recording rec = patient(kTurn);
+  std::erase_if(rec.samples, [](const ArmSample& s) { return s.t > 60.0; });
+  const LiveRun r = replay(dir_, rec, true, 40.0, true, [](LiveCalibrationParams& p) {
+    p.rest.maxGyroStd = 0.0;
+    p.restWaitTellSeconds = 10.0;
+  });
+  for (const std::string& e : r.events) std::printf("  event: %s\n", e.c_str());
+  ASSERT_GT(r.results.size(), 4000u);
+  EXPECT_TRUE(r.status.waitingForRest);
+  EXPECT_GE(r.status.readyAt, 40.0);
+  EXPECT_EQ(r.status.applied, 0);
+  EXPECT_EQ(r.status.fits, 1);  // no refit while one waits
+  EXPECT_NE(r.status.state, LiveCalibrationStatus::State::Applied);
+  EXPECT_EQ(mentioning(r.events, "hold the arm still for a moment"), 1u);
+  EXPECT_EQ(mentioning(r.events, "restarted with the straps fitted"), 0u);
+  EXPECT_TRUE(r.kept.empty());
 }
 
 TEST_F(SessionMovementCalibration, WithACalibrationInUseItNeverFits) {
