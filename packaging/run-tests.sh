@@ -22,29 +22,6 @@ bash "$root/packaging/configure-build.sh" "$root" "$build" -DBUILD_TESTING=ON \
 cmake --build "$build" --parallel "$(nproc)"
 phase build
 
-# The fuzzers' Clang build (run-fuzzers.sh below; 88 s of CPU, 44 s of the fuzzer phase at
-# 3e4b6a9) runs beside the benchmarks and the tests under the idle scheduling policy (SCHED_IDLE):
-# it gets only the CPU time nothing else wants. The benchmarks run one at a time and leave a core
-# idle for about 90 s (their figures are CPU time, which a process on the other core hardly
-# moves), and the tests leave some (a GUI test holding half a core uses about a
-# third of one, test_session_trunk 3.6 s of CPU in a minute), so the tests keep the cores they
-# asked CTest for. The fuzzer phase then finds the fuzzers built. In its own process group (setsid),
-# so that it can be stopped whole.
-# Whether a process of session $1 is left (from /proc: procps may not be installed).
-session_alive() {
-  local f line sid
-  for f in /proc/[0-9]*/stat; do
-    line="$(<"$f")" 2>/dev/null || continue
-    read -r _ _ _ sid _ <<<"${line##*) }" # after the command name: state ppid pgrp session
-    [ "$sid" = "$1" ] && return 0
-  done
-  return 1
-}
-setsid chrt --idle 0 bash "$root/packaging/run-fuzzers.sh" --build-only \
-  >"$build/fuzz-build.log" 2>&1 &
-fuzz_build=$!
-trap 'kill -- "-$fuzz_build" 2>/dev/null || true; printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
-
 # Benchmarks are figures, not pass/fail: print them before the test summary. bench_filter warms
 # each filter up once and cycles through 20 s of data (14 s of CPU in all at 0.05 s of timed steps
 # per figure, where warming up again on every call and every 2 s took 68 s); give more for
@@ -65,6 +42,27 @@ if [ -x "$build/tests/benchmarks/bench_import" ]; then
     echo "import benchmark failed to run" >&2
 fi
 phase benchmarks
+
+# The fuzzers' Clang build (run-fuzzers.sh below; 88 s of CPU, 44 s of the fuzzer phase at
+# 3e4b6a9) runs beside the tests under the idle scheduling policy (SCHED_IDLE): it gets only the
+# CPU time no test wants, and the tests leave plenty (a GUI test holding half a core uses about a
+# third of one, test_session_trunk 3.6 s of CPU in a minute), so the tests keep the cores they
+# asked CTest for. The fuzzer phase then finds the fuzzers built. In its own process group (setsid),
+# so that it can be stopped whole.
+# Whether a process of session $1 is left (from /proc: procps may not be installed).
+session_alive() {
+  local f line sid
+  for f in /proc/[0-9]*/stat; do
+    line="$(<"$f")" 2>/dev/null || continue
+    read -r _ _ _ sid _ <<<"${line##*) }" # after the command name: state ppid pgrp session
+    [ "$sid" = "$1" ] && return 0
+  done
+  return 1
+}
+setsid chrt --idle 0 bash "$root/packaging/run-fuzzers.sh" --build-only \
+  >"$build/fuzz-build.log" 2>&1 &
+fuzz_build=$!
+trap 'kill -- "-$fuzz_build" 2>/dev/null || true; printf "run-tests: phases (seconds since start):\n$phases" >&2' EXIT
 
 cd "$build"
 # Ten CTest "cpu" slots per core, each a tenth of a core: a test that computes holds ten, one
