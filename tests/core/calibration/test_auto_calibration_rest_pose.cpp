@@ -25,21 +25,13 @@
 #include "core/simulation/ImuErrors.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/support/StrapsAndRests.h"
 
 namespace armtrack {
 namespace {
 
 constexpr double kDuration = 75.0;  // s
 constexpr double kFrom = 30.0;      // s: errors are tallied from here on
-
-Eigen::Matrix3d strapTurn(std::mt19937_64& rng, double maxRad) {
-  std::uniform_real_distribution<double> u(-maxRad, maxRad);
-  const double a = u(rng), b = u(rng), c = u(rng);
-  return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitZ()))
-      .toRotationMatrix();
-}
 
 struct Case {
   Recording withKinect, imusOnly;
@@ -57,8 +49,8 @@ Case makeCase(const Trajectory& traj, std::uint64_t seed, Side side = Side::Righ
   applySensorModel(SensorModel::Realistic, sp);
   std::mt19937_64 rng(seed * 7919 + 29);
   Case c;
-  c.upperTurn = strapTurn(rng, 30 * kDeg);
-  c.forearmTurn = strapTurn(rng, 30 * kDeg);
+  c.upperTurn = test::strapTurn(rng, 30 * kDeg);
+  c.forearmTurn = test::strapTurn(rng, 30 * kDeg);
   sp.upperArm.misalignment = c.upperTurn;
   sp.forearm.misalignment = c.forearmTurn;
   c.withKinect = simulateRecording(traj, sp);
@@ -201,32 +193,6 @@ TEST(AutoCalibrationRestPose, PronationFollowsWithTheForearmRoll) {
   }
 }
 
-/// Still in `pose` for `rest` s, then a smooth blend over 1.5 s into `motion` (no rests after).
-class RestThenMove final : public Trajectory {
- public:
-  RestThenMove(const Trajectory& motion, const JointVector& pose, double rest)
-      : m_motion(motion), m_pose(pose), m_rest(rest) {}
-  JointMotion at(double t) const override {
-    JointMotion out;
-    out.th = m_pose;
-    if (t <= m_rest) return out;
-    const double T = 1.5, u = std::min(1.0, (t - m_rest) / T);
-    const double w = 10 * std::pow(u, 3) - 15 * std::pow(u, 4) + 6 * std::pow(u, 5);
-    const double wd = u < 1.0 ? (30 * u * u - 60 * u * u * u + 30 * std::pow(u, 4)) / T : 0.0;
-    const double wdd = u < 1.0 ? (60 * u - 180 * u * u + 120 * u * u * u) / (T * T) : 0.0;
-    const JointMotion m = m_motion.at(t - m_rest);
-    out.th = (1 - w) * m_pose + w * m.th;
-    out.thd = wd * (m.th - m_pose) + w * m.thd;
-    out.thdd = wdd * (m.th - m_pose) + 2 * wd * m.thd + w * m.thdd;
-    return out;
-  }
-
- private:
-  const Trajectory& m_motion;
-  JointVector m_pose;
-  double m_rest;
-};
-
 // A rest in another pose is not taken for the start pose: the arm raised forward 60 deg (elbow
 // at a right angle, thumb up), and the hand flat, palm down (forearm turned 80 deg from thumb
 // up). The roll stays the sidecar's and the report says it was not observable.
@@ -239,7 +205,7 @@ TEST(AutoCalibrationRestPose, ARestInAnotherPoseIsNotTakenForIt) {
        {std::pair{"arm raised", raised}, std::pair{"palm down", palmDown},
         std::pair{"start pose", protocolStartPose()}}) {
     SCOPED_TRACE(what);
-    const RestThenMove traj(reaches, pose, 4.0);
+    const test::RestThenMove traj(reaches, pose, 4.0);
     const Case c = makeCase(traj, 2711);
     Recording window = c.imusOnly;
     std::erase_if(window.samples, [](const ArmSample& s) { return s.t > 60.0; });
@@ -271,7 +237,7 @@ TEST(AutoCalibrationRestPose, ARefitWithoutTheRollDoesNotReplaceOneWithIt) {
   const ReachingTrajectory reaches(2712, 150 * kDeg, 1500 * kDeg, kDuration);
   JointVector raised = protocolStartPose();
   raised(0) = 60 * kDeg;
-  const RestThenMove traj(reaches, raised, 4.0);
+  const test::RestThenMove traj(reaches, raised, 4.0);
   const Case c = makeCase(traj, 2712);
   Recording window = c.imusOnly;
   std::erase_if(window.samples, [](const ArmSample& s) { return s.t > 60.0; });

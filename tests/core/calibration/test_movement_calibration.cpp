@@ -15,48 +15,16 @@
 #include "core/simulation/DoublePendulum.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/support/StrapsAndRests.h"
 
 namespace armtrack {
 namespace {
-
-/// Still at the protocol's start pose for `rest` s, then a smooth blend over 1.5 s into `motion`.
-class RestThenMove final : public Trajectory {
- public:
-  RestThenMove(const Trajectory& motion, double rest) : m_motion(motion), m_rest(rest) {}
-  JointMotion at(double t) const override {
-    const JointVector s = protocolStartPose();
-    JointMotion out;
-    out.th = s;
-    if (t <= m_rest) return out;
-    const double T = 1.5, u = std::min(1.0, (t - m_rest) / T);
-    const double w = 10 * std::pow(u, 3) - 15 * std::pow(u, 4) + 6 * std::pow(u, 5);
-    const double wd = u < 1.0 ? (30 * u * u - 60 * u * u * u + 30 * std::pow(u, 4)) / T : 0.0;
-    const double wdd = u < 1.0 ? (60 * u - 180 * u * u + 120 * u * u * u) / (T * T) : 0.0;
-    const JointMotion m = m_motion.at(t - m_rest);
-    out.th = (1 - w) * s + w * m.th;
-    out.thd = wd * (m.th - s) + w * m.thd;
-    out.thdd = wdd * (m.th - s) + 2 * wd * m.thd + w * m.thdd;
-    return out;
-  }
-
- private:
-  const Trajectory& m_motion;
-  double m_rest;
-};
 
 struct Case {
   Recording rec;
   Eigen::Matrix3d rotUa, rotFa;
   Eigen::Vector3d leverUa, leverFa;  // truth, segment frames (m)
 };
-
-Eigen::Matrix3d randomTurn(std::mt19937_64& rng, double maxDeg) {
-  std::uniform_real_distribution<double> d(-maxDeg * kDeg, maxDeg * kDeg);
-  return (Eigen::AngleAxisd(d(rng), Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(d(rng), Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(d(rng), Eigen::Vector3d::UnitZ()))
-      .toRotationMatrix();
-}
 
 Case makeCase(const Trajectory& motion, std::uint64_t seed, bool realistic, double seconds = 60.0,
               Side side = Side::Right) {
@@ -75,14 +43,14 @@ Case makeCase(const Trajectory& motion, std::uint64_t seed, bool realistic, doub
   truth.lu5 = radius(rng);
   truth.lf8 = radius(rng);
   sim.geometry = truth;
-  c.rotUa = randomTurn(rng, 30.0);
-  c.rotFa = randomTurn(rng, 30.0);
+  c.rotUa = test::strapTurn(rng, 30.0 * kDeg);
+  c.rotFa = test::strapTurn(rng, 30.0 * kDeg);
   sim.upperArm.misalignment = c.rotUa;
   sim.forearm.misalignment = c.rotFa;
   sim.upperArm.gyroBias = Eigen::Vector3d(0.5, -0.3, 0.2) * kDeg;
   sim.forearm.gyroBias = Eigen::Vector3d(-0.4, 0.2, 0.6) * kDeg;
   if (realistic) applySensorModel(SensorModel::Realistic, sim);
-  const RestThenMove traj(motion, 3.0);
+  const test::RestThenMove traj(motion, protocolStartPose(), 3.0);
   c.rec = simulateRecording(traj, sim);
   c.rec.meta.geometry = ArmGeometry{};  // the sidecar says nominal
   c.leverUa = Eigen::Vector3d(truth.lu5 * std::sin(truth.thu4), -truth.lu5 * std::cos(truth.thu4),

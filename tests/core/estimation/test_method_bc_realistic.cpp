@@ -32,6 +32,7 @@
 #include "core/simulation/ImuErrors.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
+#include "tests/support/StrapsAndRests.h"
 
 namespace armtrack {
 namespace {
@@ -44,16 +45,6 @@ const char* name(Optics o) {
   return o == Optics::Kinect ? "Kinect" : o == Optics::Webcam ? "webcam" : "IMUs only";
 }
 
-// A strap turned by up to maxRad about each of its three axes.
-Eigen::Matrix3d strapTurn(std::mt19937_64& rng, double maxRad) {
-  std::uniform_real_distribution<double> u(-maxRad, maxRad);
-  const double a = u(rng), b = u(rng), c = u(rng);
-  return (Eigen::AngleAxisd(a, Eigen::Vector3d::UnitX()) *
-          Eigen::AngleAxisd(b, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(c, Eigen::Vector3d::UnitZ()))
-      .toRotationMatrix();
-}
-
 Recording realisticSet(std::uint64_t seed, Optics optics, double strapDeg = 3.0,
                        const SessionRest& rest = SessionRest::startPose()) {
   const SessionTrajectory traj(seed, 150 * kDeg, 1500 * kDeg, kDuration, 3.0, rest);
@@ -64,8 +55,8 @@ Recording realisticSet(std::uint64_t seed, Optics optics, double strapDeg = 3.0,
   sp.webcam.enabled = optics == Optics::Webcam;
   applySensorModel(SensorModel::Realistic, sp);
   std::mt19937_64 rng(seed * 7919 + 17);
-  sp.upperArm.misalignment = strapTurn(rng, strapDeg * kDeg);
-  sp.forearm.misalignment = strapTurn(rng, strapDeg * kDeg);
+  sp.upperArm.misalignment = test::strapTurn(rng, strapDeg * kDeg);
+  sp.forearm.misalignment = test::strapTurn(rng, strapDeg * kDeg);
   Recording rec = simulateRecording(traj, sp);
   // The sidecar's lever arms: up to 5 cm off along the segment, up to 2 cm off its axis.
   std::uniform_real_distribution<double> along(-0.05, 0.05), across(-0.02, 0.02);
@@ -95,6 +86,16 @@ Measured run(const Recording& rec, MeasurementModel model) {
   return {err.rmse() / kDeg, err.peak() / kDeg, f->counters().recoveries};
 }
 
+void print(const char* straps, std::uint64_t seed, Optics o, MeasurementModel m,
+           const Measured& r) {
+  std::printf(
+      "[ measured ] %s, seed %llu %-9s Method %s: recoveries %llu, RMSE %.1f %.1f %.1f %.1f %.1f, "
+      "peak %.1f %.1f %.1f %.1f %.1f deg (th0 th1 th2 th4 th5, after 30 s)\n",
+      straps, static_cast<unsigned long long>(seed), name(o), methodName(m).c_str(),
+      static_cast<unsigned long long>(r.recoveries), r.rmse(0), r.rmse(1), r.rmse(2), r.rmse(3),
+      r.rmse(4), r.peak(0), r.peak(1), r.peak(2), r.peak(3), r.peak(4));
+}
+
 TEST(MethodsBCRealistic, NoRecoveryAndNoErrorAbove20Degrees) {
   for (std::uint64_t seed : {911u, 912u}) {
     for (Optics o : {Optics::Kinect, Optics::Webcam, Optics::ImusOnly}) {
@@ -104,12 +105,7 @@ TEST(MethodsBCRealistic, NoRecoveryAndNoErrorAbove20Degrees) {
         SCOPED_TRACE(::testing::Message()
                      << "seed " << seed << ", " << name(o) << ", Method " << methodName(m));
         const Measured r = run(rec, m);
-        std::printf(
-            "[ measured ] seed %llu %-9s Method %s: recoveries %llu, RMSE %.1f %.1f %.1f %.1f "
-            "%.1f, peak %.1f %.1f %.1f %.1f %.1f deg (th0 th1 th2 th4 th5, after 30 s)\n",
-            static_cast<unsigned long long>(seed), name(o), methodName(m).c_str(),
-            static_cast<unsigned long long>(r.recoveries), r.rmse(0), r.rmse(1), r.rmse(2),
-            r.rmse(3), r.rmse(4), r.peak(0), r.peak(1), r.peak(2), r.peak(3), r.peak(4));
+        print("3 deg", seed, o, m, r);
         EXPECT_EQ(r.recoveries, 0u);
         // With optics, every joint within 20 deg. IMUs only, the shoulder's heading and rotation
         // rest on the start pose and drift (Method A reaches 35 deg there on seed 912): the
@@ -150,12 +146,7 @@ TEST(MethodsBCRealistic, StrapsTurned30DegreesThroughTheCalibrationFromMovement)
         SCOPED_TRACE(::testing::Message()
                      << "seed " << seed << ", " << name(o) << ", Method " << methodName(m));
         const Measured r = run(rec, m);
-        std::printf(
-            "[ measured ] 30 deg, seed %llu %-9s Method %s: recoveries %llu, RMSE %.1f %.1f %.1f "
-            "%.1f %.1f, peak %.1f %.1f %.1f %.1f %.1f deg\n",
-            static_cast<unsigned long long>(seed), name(o), methodName(m).c_str(),
-            static_cast<unsigned long long>(r.recoveries), r.rmse(0), r.rmse(1), r.rmse(2),
-            r.rmse(3), r.rmse(4), r.peak(0), r.peak(1), r.peak(2), r.peak(3), r.peak(4));
+        print("30 deg", seed, o, m, r);
         EXPECT_EQ(r.recoveries, 0u);
         for (int j = 0; j < kNumJoints; ++j) EXPECT_LT(r.peak(j), 50.0) << "joint " << j;
       }
