@@ -68,11 +68,13 @@ class TestLiveStraps : public QObject {
     screen.start();
     QLabel* straps = screen.strapsLabel();
     QVERIFY(straps);
-    // Told while it checks, then the finding.
+    // Told while it checks, then the finding. The fit reads 40 s of movement (4 s at the
+    // replay's ten times real time) and then solves on the session's worker; on a loaded 2-core
+    // machine that took more than 40 s, so the wait is generous (it ends as soon as it is said).
     QVERIFY(QTest::qWaitFor([&] { return straps->isVisible(); }, 15000));
     QVERIFY2(QTest::qWaitFor(
                  [&] { return straps->text().contains(QLatin1String("upper-arm sensor turned")); },
-                 40000),
+                 120000),
              qPrintable(straps->text()));
     const QString text = straps->text();
     QVERIFY2(text.startsWith(QLatin1String("Straps checked from the movement: ")),
@@ -107,7 +109,7 @@ class TestLiveStraps : public QObject {
     QLabel* straps = screen.strapsLabel();
     QVERIFY2(
         QTest::qWaitFor(
-            [&] { return straps->text().startsWith(QLatin1String("Straps as fitted")); }, 40000),
+            [&] { return straps->text().startsWith(QLatin1String("Straps as fitted")); }, 120000),
         qPrintable(straps->text()));
     QVERIFY(straps->isVisible());
     screen.stop();
