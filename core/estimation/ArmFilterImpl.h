@@ -1,6 +1,7 @@
 // The estimator behind makeEstimator(): one class template over the state size (15, or 21 with
 // Method B's body-acceleration states). Private to the estimator. Its members are defined in
-//   ArmFilter.cpp          the update of one sample: prediction, the EKF update
+//   ArmFilter.cpp          the update of one sample: prediction, measurement
+//   ArmFilterEkf.cpp       the EKF update, one block at a time
 //   ArmFilterOptical.cpp   the optical rows' gate, heading matching
 //   ArmFilterHeading.cpp   the heading the IMUs cannot see: symmetry, heading-blind update, floor
 //   ArmFilterUkf.cpp       the unscented update
@@ -106,6 +107,12 @@ class ArmFilter final : public JointEstimator {
   BlockList gather(const ArmSample& s) const;
   void predict(double dt);
   bool measure(const Vec& x, const BlockList& b, MeasVec& h, Jac* jac) const;
+  void trackJerk();
+  void finishUpdate();
+  static void symmetrise(Mat& p);
+  static void mirrorLower(Mat& p);
+
+  // ArmFilterEkf.cpp: the EKF update
   bool sequentialUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, Mat& p, Vec& dx);
   template <int M>
   bool blockUpdate(const Jac& jac, const MeasVec& innov, const BlockList& b, int i,
@@ -114,10 +121,6 @@ class ArmFilter final : public JointEstimator {
   bool updateBlock(const Eigen::Matrix<double, M, K>& hj, int col, const MeasVec& innov,
                    const BlockList& b, int i, PaddedCovariance<N>& p, Vec& dx);
   bool ekfUpdate(const BlockList& b);
-  void trackJerk();
-  void finishUpdate();
-  static void symmetrise(Mat& p);
-  static void mirrorLower(Mat& p);
 
   // ArmFilterTiming.cpp: readings of sensors slower than the rows (held between new samples)
   void trackSampleTiming(const ArmSample& clean, double rowStep);
