@@ -128,7 +128,7 @@ void print(const char* what, Side side, Optics optics, double rate, const Tally&
   const Eigen::Vector3d tr = t.trunkRmseDeg(), tc = t.trunkCoverage() * 100.0;
   std::printf(
       "[ measured ] %s, %s arm, %s, %.0f deg/s: arm RMSE %.2f %.2f %.2f %.2f %.2f deg, inside 2 "
-      "sd %.0f %.0f %.0f %.0f %.0f %%; elevation %.2f deg; trunk RMSE %.2f %.2f %.2f deg, inside "
+      "sd %.1f %.1f %.1f %.1f %.1f %%; elevation %.2f deg; trunk RMSE %.2f %.2f %.2f deg, inside "
       "2 sd %.0f %.0f %.0f %%\n",
       what, sideName(side).c_str(), opticsName(optics), rate, r(0), r(1), r(2), r(3), r(4), c(0),
       c(1), c(2), c(3), c(4), t.elevationRmseDeg(), tr(0), tr(1), tr(2), tc(0), tc(1), tc(2));
@@ -142,11 +142,16 @@ void print(const char* what, Side side, Optics optics, double rate, const Tally&
 //
 // Two-sigma coverage: the trunk's 90-99 % as the issue asks. The arm's sd carries the trunk's
 // pose uncertainty through the filter's own gains (ArmFilter::addTrunkVariance, a consider
-// sensitivity), measured 91-99.7 % on slow reaches and 87-97 % on fast ones. The issue's 90-99 %
-// is not met on either end, and the same filter with a still trunk and no sternum IMU misses it
-// too: 96-98 % slow, 87-96 % fast (the elbow 87 %) on these seeds (docs/estimator.md, "Trunk").
-// The bounds below hold what is reached: the static map the sd had before (least squares on the
-// optical points, as if the estimate followed them alone) gave 100 % on the elbow everywhere.
+// sensitivity). Measured on these seeds: slow reaches 90.9-99.7 % (the shoulder with a Kinect
+// 99.3-99.7 %, the elbow 98.6-99.5 %), fast ones 87.2-97.3 % (the shoulder 87.2-94.3 %). The
+// issue's 90-99 % is not met on either end. Where it goes wrong (docs/estimator.md, "Trunk"):
+// the misses are slow offsets, spread over every phase of a reach (rest, onset, peak, stop
+// within 2-4 points of each other); on slow reaches the trunk's added variance is about twice
+// (in sd) what the trunk's pose error costs the shoulder, on fast ones about right, and what is
+// left on fast reaches is the arm filter's own sd with the sternum's readings in its base. The
+// same filter with a still trunk and no sternum IMU misses the band too: 96-98 % slow, 87-96 %
+// fast (the elbow 87 %). The bounds below are what is measured, to the next tenth of a point;
+// they do not claim the target.
 TEST(TrunkAcceptance, WithSternumImuAndOpticsEveryAngleUnderOneDegree) {
   for (const Side side : {Side::Right, Side::Left}) {
     for (const Optics optics : {Optics::Kinect, Optics::Webcam}) {
@@ -160,13 +165,15 @@ TEST(TrunkAcceptance, WithSternumImuAndOpticsEveryAngleUnderOneDegree) {
           EXPECT_GE(t.trunkCoverage()(i), 0.90) << "trunk angle " << i;
           EXPECT_LE(t.trunkCoverage()(i), 0.99) << "trunk angle " << i;
         }
-        // Slow reaches: at least 90 %, and over 99 % on some joints (humeral rotation 99.6-99.7 %).
-        // Fast ones: at most 99 %, and down to 85 %.
+        // Slow reaches: 90-99.7 % (humeral rotation with a Kinect 99.6-99.7 %, over the issue's
+        // 99). Fast ones: 87-99 % (shoulder angles with a Kinect, and on the left arm with a
+        // webcam, down to 87.2 %, under the issue's 90).
         for (int j = 0; j < kNumJoints; ++j) {
           if (rate < 100.0) {
             EXPECT_GE(t.armCoverage()(j), 0.90) << "joint " << j;
+            EXPECT_LE(t.armCoverage()(j), 0.997) << "joint " << j;
           } else {
-            EXPECT_GE(t.armCoverage()(j), 0.85) << "joint " << j;
+            EXPECT_GE(t.armCoverage()(j), 0.87) << "joint " << j;
             EXPECT_LE(t.armCoverage()(j), 0.99) << "joint " << j;
           }
         }
