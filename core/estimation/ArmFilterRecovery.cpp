@@ -279,6 +279,67 @@ void ArmFilter<N>::matchProcessNoise(const Vec& xPredicted, double dt) {
   }
 }
 
+// A step in the joint accelerations (docs/estimator.md, "The double pendulum"). Covariance
+// matching follows smooth changes of the motion, but it learns from the updates' corrections,
+// which are small while P is: a pendulum let go from rest, whose accelerations jump from zero to
+// 30-80 rad/s^2, left the rates behind the gyroscopes for five steps and the hinge 3-5 deg off
+// for half a second, at 0.4 deg of standard deviation. The gyroscopes show such a jump at once
+// (every model predicts them exactly): innovations far beyond S. Then the rate change they read
+// is taken as an acceleration jump at the step's start, and P before the update gets it per
+// joint (variance (dw/dt)^2 along acceleration 1, rate dt, angle dt^2/2), so the update follows
+// the gyroscopes in that one step. Below the threshold nothing changes.
+template <int N>
+void ArmFilter<N>::followAccelerationJump(const BlockList& b, double dt) {
+  if (!m_p.adaptiveProcessNoise || m_p.model != MeasurementModel::AccelGyro || !(dt > 0.0) ||
+      m_t - m_t0 < m_p.startupSeconds || !(b.has(kUaGyr) || b.has(kFaGyr)))
+    return;
+  // The gyroscope rows read the rates and angles (state columns 5-14), not the accelerations.
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
+  using RowsByStates = Eigen::Matrix<double, Eigen::Dynamic, 10, 0, 6, 10>;
+  using RowsByRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
+  const Prediction& at = priorPrediction();
+  Rows nu(6), var(6);
+  RowsByStates h(6, 10);
+  int rows = 0;
+  for (int i = 0; i < b.count; ++i) {
+    const int blk = b.block[i];
+    if (blk != kUaGyr && blk != kFaGyr) continue;
+    nu.template segment<3>(rows) =
+        b.z.template segment<3>(b.offset[i]) - at.readings.template segment<3>(3 * blk);
+    h.template middleRows<3>(rows) = at.jacobian.template block<3, 10>(3 * blk, 5);
+    var.template segment<3>(rows) = b.variance.template segment<3>(b.offset[i]);
+    rows += 3;
+  }
+  nu.conservativeResize(rows);
+  var.conservativeResize(rows);
+  h.conservativeResize(rows, 10);
+  RowsByRows s = h * m_P.template block<10, 10>(5, 5) * h.transpose();
+  s.diagonal() += var;
+  const Eigen::LLT<RowsByRows> llt(s);
+  if (llt.info() != Eigen::Success) return;
+  if (!(nu.dot(llt.solve(nu)) > kAccelJumpNis * rows)) return;
+  // The rate change per joint the gyroscopes read: least squares on their rate columns, each
+  // row weighted by its noise; joints they cannot see stay where they are (small damping).
+  const Rows w = var.cwiseSqrt().cwiseInverse();
+  Eigen::Matrix<double, Eigen::Dynamic, kNumJoints, 0, 6, kNumJoints> a =
+      w.asDiagonal() * h.template leftCols<kNumJoints>();
+  for (int j = 0; j < kNumJoints; ++j)
+    if (!m_p.activeJoints[j]) a.col(j).setZero();
+  const Eigen::Matrix<double, kNumJoints, kNumJoints> normal =
+      a.transpose() * a + 1e-3 * Eigen::Matrix<double, kNumJoints, kNumJoints>::Identity();
+  const Rows wnu = w.cwiseProduct(nu);
+  const JointVector jump = normal.ldlt().solve(a.transpose() * wnu);
+  for (int j = 0; j < kNumJoints; ++j) {
+    if (!m_p.activeJoints[j]) continue;
+    const double accel = jump(j) / dt;
+    Vec g = Vec::Zero();
+    g(j) = 1.0;
+    g(5 + j) = dt;
+    g(10 + j) = 0.5 * dt * dt;
+    m_P += (accel * accel) * g * g.transpose();
+  }
+}
+
 // A window fit that ends outside the anatomical range has found the other Euler branch (the
 // same arm, which the sensors cannot tell apart) or a wrong minimum: not taken.
 template <int N>
@@ -380,6 +441,7 @@ template void ArmFilter<kBase>::takeFit(const WindowFitResult& fit,
 template bool ArmFilter<kBase>::lost();
 template UpdateResult ArmFilter<kBase>::recover(const ArmSample& last);
 template void ArmFilter<kBase>::matchProcessNoise(const Vec& xPredicted, double dt);
+template void ArmFilter<kBase>::followAccelerationJump(const BlockList& b, double dt);
 template bool ArmFilter<kBase>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase>::keepInAnatomicalRange();
 template void ArmFilter<kBase>::repairCovariance();
@@ -401,6 +463,7 @@ template void ArmFilter<kBase + 6>::takeFit(const WindowFitResult& fit,
 template bool ArmFilter<kBase + 6>::lost();
 template UpdateResult ArmFilter<kBase + 6>::recover(const ArmSample& last);
 template void ArmFilter<kBase + 6>::matchProcessNoise(const Vec& xPredicted, double dt);
+template void ArmFilter<kBase + 6>::followAccelerationJump(const BlockList& b, double dt);
 template bool ArmFilter<kBase + 6>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase + 6>::keepInAnatomicalRange();
 template void ArmFilter<kBase + 6>::repairCovariance();
