@@ -173,6 +173,7 @@ class ArmFilter final : public JointEstimator {
   static bool anyOptical(const std::vector<ArmSample>& w);
   std::vector<Vec15> fitSeeds(const ArmSample& last, const std::vector<ArmSample>& w) const;
   bool refitFromWindow(double since);
+  void keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning, const Mat& pRunning);
   void takeFit(const WindowFitResult& fit, const std::vector<ArmSample>& w);
   bool lost();
   UpdateResult recover(const ArmSample& last);

@@ -189,6 +189,8 @@ bool ArmFilter<N>::refitFromWindow(double since) {
   if (!(fit.rms < kRefitGain * trajectoryRms(now, w, states, moving))) return false;
   const Vec u = headingAngles(m_x);
   const double headingVar = u.dot(m_P * u) + headingShortfall(u);
+  const Vec xRunning = m_x;
+  const Mat pRunning = m_P;
   takeFit(fit, w);
   if (anchor) {
     // The start covariance without optics spreads the heading over the start-up prior's 30 deg;
@@ -198,10 +200,80 @@ bool ArmFilter<N>::refitFromWindow(double since) {
     v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
     m_P += headingVar * v * v.transpose();
     m_headingFloor = headingVar;
+    keepUnseen(w, xRunning, pRunning);
     finishUpdate();
   }
   ++m_counters.startupRefits;
   return true;
+}
+
+namespace {
+// Information (rad^-2) a window's readings can give a direction by noise alone. Turning a joint
+// whose axis lies near a measured vector (gravity at rest) changes the reading by the axis's
+// tilt from it, itself fitted to the noise: the information along the turn is then the squared
+// significance of that tilt, which with two degrees of freedom stays below 9.2 (chi-square's
+// 99 %) when the axis really lies along the vector. Such a direction is determined to no better
+// than 1/3 rad, and only by where the noise put the tilt.
+constexpr double kNoiseInformation = 9.2;
+}  // namespace
+
+// After an IMU-only window fit: the angle directions besides the heading that the window's
+// readings say little about (less than the start-up prior, or than noise alone can make) keep
+// the running state's value and variance, as the heading does. At rest a joint whose axis lies along gravity turns no reading:
+// a pendulum's rod hanging straight down at zero 0 has the pronation axis vertical, and the fit,
+// free along it, set the pronation wherever the noise turned the forearm's tiny tilt (69 deg off
+// on one seed, 120 on another) with a fitted state's 5 deg of standard deviation, which held it
+// there through the release (docs/estimator.md, "The double pendulum").
+// Information of the window: per IMU reading, its noise-weighted Jacobian on the angles at the
+// fitted state.
+template <int N>
+void ArmFilter<N>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
+                              const Mat& pRunning) {
+  const EstimatorParams now = paramsInFrame();
+  const Vec15 x = m_x.template head<kBase>();
+  const Eigen::Matrix<double, 18, 15> jac = predictAllJacobian(now, x);
+  int readings[4] = {0, 0, 0, 0};  // kUaGyr, kUaAcc, kFaGyr, kFaAcc
+  for (const ArmSample& r : w) {
+    if (r.upperArm) readings[kUaGyr] += !r.upperArm->gyrHeld, readings[kUaAcc] += !r.upperArm->accHeld;
+    if (r.forearm) readings[kFaGyr] += !r.forearm->gyrHeld, readings[kFaAcc] += !r.forearm->accHeld;
+  }
+  Eigen::Matrix<double, kNumJoints, kNumJoints> info = Eigen::Matrix<double, kNumJoints, kNumJoints>::Zero();
+  for (int blk = kUaGyr; blk <= kFaAcc; ++blk) {
+    const bool gyro = blk == kUaGyr || blk == kFaGyr;
+    if (gyro && m_p.model == MeasurementModel::Inclinometer) continue;
+    const Eigen::Matrix<double, 3, kNumJoints> h = jac.template block<3, kNumJoints>(3 * blk, 10);
+    info += readings[blk] / (gyro ? m_p.gyroVariance : m_p.accelVariance) * h.transpose() * h;
+  }
+  // The heading is the anchor's business: its direction is taken out first.
+  const JointVector hd = headingAngles(m_x).template segment<5>(10);
+  const Eigen::Matrix<double, kNumJoints, kNumJoints> away =
+      Eigen::Matrix<double, kNumJoints, kNumJoints>::Identity() - hd * hd.transpose();
+  for (int j = 0; j < kNumJoints; ++j)
+    if (!m_p.activeJoints[j]) info(j, j) += 1.0 / (m_p.initialAngleStd * m_p.initialAngleStd);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, kNumJoints, kNumJoints>> es(
+      away * info * away);
+  // Unseen: less information than the start-up prior's, or than kNoiseInformation (rad^-2).
+  const double prior =
+      std::max(1.0 / (m_p.initialAngleStd * m_p.initialAngleStd), kNoiseInformation);
+  Eigen::Matrix<double, kNumJoints, Eigen::Dynamic, 0, kNumJoints, kNumJoints> unseen(kNumJoints, 0);
+  for (int k = 0; k < kNumJoints; ++k) {
+    const JointVector d = es.eigenvectors().col(k);
+    if (es.eigenvalues()(k) >= prior || std::abs(d.dot(hd)) > 0.5) continue;
+    unseen.conservativeResize(Eigen::NoChange, unseen.cols() + 1);
+    unseen.col(unseen.cols() - 1) = d;
+  }
+  if (unseen.cols() == 0) return;
+  // Along those directions: the running angles, and P's angle block and its correlations as the
+  // running P had them (T P T^T + E, T removing the directions from the fit's angle block).
+  JointVector diff;
+  for (int j = 0; j < kNumJoints; ++j) diff(j) = wrapAngle(xRunning(10 + j) - m_x(10 + j));
+  m_x.template segment<5>(10) += unseen * (unseen.transpose() * diff);
+  Mat t = Mat::Identity();
+  t.template block<5, 5>(10, 10) -= unseen * unseen.transpose();
+  Mat e = Mat::Zero();
+  const Eigen::Matrix<double, kNumJoints, kNumJoints> along = unseen * unseen.transpose();
+  e.template block<5, 5>(10, 10) = along * pRunning.template block<5, 5>(10, 10) * along;
+  m_P = t * m_P * t.transpose() + e;
 }
 
 // A fitted state replaces the running one with the start-up covariance: the fit is good to a
@@ -436,6 +508,8 @@ template bool ArmFilter<kBase>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase>::fitSeeds(const ArmSample& last,
                                                        const std::vector<ArmSample>& w) const;
 template bool ArmFilter<kBase>::refitFromWindow(double since);
+template void ArmFilter<kBase>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
+                                           const Mat& pRunning);
 template void ArmFilter<kBase>::takeFit(const WindowFitResult& fit,
                                         const std::vector<ArmSample>& w);
 template bool ArmFilter<kBase>::lost();
@@ -458,6 +532,8 @@ template bool ArmFilter<kBase + 6>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase + 6>::fitSeeds(const ArmSample& last,
                                                            const std::vector<ArmSample>& w) const;
 template bool ArmFilter<kBase + 6>::refitFromWindow(double since);
+template void ArmFilter<kBase + 6>::keepUnseen(const std::vector<ArmSample>& w,
+                                               const Vec& xRunning, const Mat& pRunning);
 template void ArmFilter<kBase + 6>::takeFit(const WindowFitResult& fit,
                                             const std::vector<ArmSample>& w);
 template bool ArmFilter<kBase + 6>::lost();
