@@ -281,7 +281,7 @@ class ArmFilter final : public JointEstimator {
   double m_lastOpticalT = 0.0;
   static constexpr double kRefitGain =
       0.7;  // a start-up fit must explain the data this much better
-  static constexpr double kGoodFitRms = 3.0;     // whitened residual RMS of a fit worth taking
+  static constexpr double kGoodFitRms = 3.0;  // whitened residual RMS of a fit worth taking
   // Gyroscope rows' normalised innovation squared per row beyond which the step's motion is
   // taken for a jump of the joint accelerations (followAccelerationJump). With both gyroscopes'
   // six rows, chi-square beyond 60: a chance of 5e-11 under the model. The gentle pendulum's

@@ -219,13 +219,13 @@ constexpr double kNoiseInformation = 9.2;
 
 // After an IMU-only window fit: the angle directions besides the heading that the window's
 // readings say little about (less than the start-up prior, or than noise alone can make) keep
-// the running state's value and variance, as the heading does. At rest a joint whose axis lies along gravity turns no reading:
-// a pendulum's rod hanging straight down at zero 0 has the pronation axis vertical, and the fit,
-// free along it, set the pronation wherever the noise turned the forearm's tiny tilt (69 deg off
-// on one seed, 120 on another) with a fitted state's 5 deg of standard deviation, which held it
-// there through the release (docs/estimator.md, "The double pendulum").
-// Information of the window: per IMU reading, its noise-weighted Jacobian on the angles at the
-// fitted state.
+// the running state's value and variance, as the heading does. At rest a joint whose axis lies
+// along gravity turns no reading: a pendulum's rod hanging straight down at zero 0 has the
+// pronation axis vertical, and the fit, free along it, set the pronation wherever the noise turned
+// the forearm's tiny tilt (69 deg off on one seed, 120 on another) with a fitted state's 5 deg of
+// standard deviation, which held it there through the release (docs/estimator.md, "The double
+// pendulum"). Information of the window: per IMU reading, its noise-weighted Jacobian on the angles
+// at the fitted state.
 template <int N>
 void ArmFilter<N>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
                               const Mat& pRunning) {
@@ -234,44 +234,54 @@ void ArmFilter<N>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunni
   const Eigen::Matrix<double, 18, 15> jac = predictAllJacobian(now, x);
   int readings[4] = {0, 0, 0, 0};  // kUaGyr, kUaAcc, kFaGyr, kFaAcc
   for (const ArmSample& r : w) {
-    if (r.upperArm) readings[kUaGyr] += !r.upperArm->gyrHeld, readings[kUaAcc] += !r.upperArm->accHeld;
-    if (r.forearm) readings[kFaGyr] += !r.forearm->gyrHeld, readings[kFaAcc] += !r.forearm->accHeld;
+    if (r.upperArm) {
+      readings[kUaGyr] += !r.upperArm->gyrHeld;
+      readings[kUaAcc] += !r.upperArm->accHeld;
+    }
+    if (r.forearm) {
+      readings[kFaGyr] += !r.forearm->gyrHeld;
+      readings[kFaAcc] += !r.forearm->accHeld;
+    }
   }
-  Eigen::Matrix<double, kNumJoints, kNumJoints> info = Eigen::Matrix<double, kNumJoints, kNumJoints>::Zero();
+  using JointMatrix = Eigen::Matrix<double, kNumJoints, kNumJoints>;
+  JointMatrix info = JointMatrix::Zero();
   for (int blk = kUaGyr; blk <= kFaAcc; ++blk) {
     const bool gyro = blk == kUaGyr || blk == kFaGyr;
     if (gyro && m_p.model == MeasurementModel::Inclinometer) continue;
     const Eigen::Matrix<double, 3, kNumJoints> h = jac.template block<3, kNumJoints>(3 * blk, 10);
     info += readings[blk] / (gyro ? m_p.gyroVariance : m_p.accelVariance) * h.transpose() * h;
   }
-  // The heading is the anchor's business: its direction is taken out first.
+  // The heading is the anchor's business: its direction is taken out of the information and
+  // given that of a known direction, so the other directions are split orthogonal to it (it
+  // shares the null space with them at rest). Inactive joints are held, never unseen.
   const JointVector hd = headingAngles(m_x).template segment<5>(10);
-  const Eigen::Matrix<double, kNumJoints, kNumJoints> away =
-      Eigen::Matrix<double, kNumJoints, kNumJoints>::Identity() - hd * hd.transpose();
+  const JointMatrix away = JointMatrix::Identity() - hd * hd.transpose();
+  constexpr double kKnown = 1e12;  // rad^-2
+  info = away * info * away + kKnown * hd * hd.transpose();
   for (int j = 0; j < kNumJoints; ++j)
-    if (!m_p.activeJoints[j]) info(j, j) += 1.0 / (m_p.initialAngleStd * m_p.initialAngleStd);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, kNumJoints, kNumJoints>> es(
-      away * info * away);
+    if (!m_p.activeJoints[j]) info(j, j) += kKnown;
+  const Eigen::SelfAdjointEigenSolver<JointMatrix> es(info);
   // Unseen: less information than the start-up prior's, or than kNoiseInformation (rad^-2).
   const double prior =
       std::max(1.0 / (m_p.initialAngleStd * m_p.initialAngleStd), kNoiseInformation);
-  Eigen::Matrix<double, kNumJoints, Eigen::Dynamic, 0, kNumJoints, kNumJoints> unseen(kNumJoints, 0);
+  Eigen::Matrix<double, kNumJoints, Eigen::Dynamic, 0, kNumJoints, kNumJoints> unseen(kNumJoints,
+                                                                                      0);
   for (int k = 0; k < kNumJoints; ++k) {
     const JointVector d = es.eigenvectors().col(k);
-    if (es.eigenvalues()(k) >= prior || std::abs(d.dot(hd)) > 0.5) continue;
+    if (es.eigenvalues()(k) >= prior) continue;
     unseen.conservativeResize(Eigen::NoChange, unseen.cols() + 1);
     unseen.col(unseen.cols() - 1) = d;
   }
   if (unseen.cols() == 0) return;
-  // Along those directions: the running angles, and P's angle block and its correlations as the
-  // running P had them (T P T^T + E, T removing the directions from the fit's angle block).
+  // Along those directions: the running angles, and the running P's angle block (E); the fitted
+  // P loses them and their correlations (T P T^T, T removing them from the angles).
   JointVector diff;
   for (int j = 0; j < kNumJoints; ++j) diff(j) = wrapAngle(xRunning(10 + j) - m_x(10 + j));
   m_x.template segment<5>(10) += unseen * (unseen.transpose() * diff);
   Mat t = Mat::Identity();
   t.template block<5, 5>(10, 10) -= unseen * unseen.transpose();
   Mat e = Mat::Zero();
-  const Eigen::Matrix<double, kNumJoints, kNumJoints> along = unseen * unseen.transpose();
+  const JointMatrix along = unseen * unseen.transpose();
   e.template block<5, 5>(10, 10) = along * pRunning.template block<5, 5>(10, 10) * along;
   m_P = t * m_P * t.transpose() + e;
 }
@@ -532,8 +542,8 @@ template bool ArmFilter<kBase + 6>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase + 6>::fitSeeds(const ArmSample& last,
                                                            const std::vector<ArmSample>& w) const;
 template bool ArmFilter<kBase + 6>::refitFromWindow(double since);
-template void ArmFilter<kBase + 6>::keepUnseen(const std::vector<ArmSample>& w,
-                                               const Vec& xRunning, const Mat& pRunning);
+template void ArmFilter<kBase + 6>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
+                                               const Mat& pRunning);
 template void ArmFilter<kBase + 6>::takeFit(const WindowFitResult& fit,
                                             const std::vector<ArmSample>& w);
 template bool ArmFilter<kBase + 6>::lost();
