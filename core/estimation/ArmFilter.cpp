@@ -172,7 +172,6 @@ UpdateResult ArmFilter<N>::update(const ArmSample& s) {
     finishUpdate();
     return UpdateResult::Accepted;
   }
-  followAccelerationJump(blocks, tMeasured - tPrior);
   const Vec xBefore = m_x;
   const Mat pBefore = m_P;
   const TrunkSensitivity sensBefore = m_trunkSens;

@@ -176,12 +176,10 @@ class ArmFilter final : public JointEstimator {
   static bool anyOptical(const std::vector<ArmSample>& w);
   std::vector<Vec15> fitSeeds(const ArmSample& last, const std::vector<ArmSample>& w) const;
   bool refitFromWindow(double since);
-  void keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning, const Mat& pRunning);
   void takeFit(const WindowFitResult& fit, const std::vector<ArmSample>& w);
   bool lost();
   UpdateResult recover(const ArmSample& last);
   void matchProcessNoise(const Vec& xPredicted, double dt);
-  void followAccelerationJump(const BlockList& b, double dt);
   bool inAnatomicalRange(const Vec15& x) const;
   void keepInAnatomicalRange();
   void repairCovariance();
@@ -284,13 +282,7 @@ class ArmFilter final : public JointEstimator {
   double m_lastOpticalT = 0.0;
   static constexpr double kRefitGain =
       0.7;  // a start-up fit must explain the data this much better
-  static constexpr double kGoodFitRms = 3.0;  // whitened residual RMS of a fit worth taking
-  // Gyroscope rows' normalised innovation squared per row beyond which the step's motion is
-  // taken for a jump of the joint accelerations (followAccelerationJump). With both gyroscopes'
-  // six rows, chi-square beyond 60: a chance of 5e-11 under the model. The gentle pendulum's
-  // release reads 15-41, its rest and free swing stay below 4 (median 0.3); a fast reach that
-  // starts from rest passes it too (the golden Kinect recording, at the reach's onset).
-  static constexpr double kAccelJumpNis = 10.0;
+  static constexpr double kGoodFitRms = 3.0;     // whitened residual RMS of a fit worth taking
   std::deque<Vec15> m_recentStates;              // the filter's state after each of m_recent
   bool m_opticalDisagrees = false;               // an optical point was gated many frames in a row
   JointVector m_matchedQ = JointVector::Zero();  // matched joint-acceleration noise, (rad/s^2)^2

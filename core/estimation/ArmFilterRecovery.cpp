@@ -189,8 +189,6 @@ bool ArmFilter<N>::refitFromWindow(double since) {
   if (!(fit.rms < kRefitGain * trajectoryRms(now, w, states, moving))) return false;
   const Vec u = headingAngles(m_x);
   const double headingVar = u.dot(m_P * u) + headingShortfall(u);
-  const Vec xRunning = m_x;
-  const Mat pRunning = m_P;
   takeFit(fit, w);
   if (anchor) {
     // The start covariance without optics spreads the heading over the start-up prior's 30 deg;
@@ -200,90 +198,10 @@ bool ArmFilter<N>::refitFromWindow(double since) {
     v.template head<kBase>() = headingSymmetry(m_x.template head<kBase>(), m_up);
     m_P += headingVar * v * v.transpose();
     m_headingFloor = headingVar;
-    keepUnseen(w, xRunning, pRunning);
     finishUpdate();
   }
   ++m_counters.startupRefits;
   return true;
-}
-
-namespace {
-// Information (rad^-2) a window's readings can give a direction by noise alone. Turning a joint
-// whose axis lies near a measured vector (gravity at rest) changes the reading by the axis's
-// tilt from it, itself fitted to the noise: the information along the turn is then the squared
-// significance of that tilt, which with two degrees of freedom stays below 9.2 (chi-square's
-// 99 %) when the axis really lies along the vector. Such a direction is determined to no better
-// than 1/3 rad, and only by where the noise put the tilt.
-constexpr double kNoiseInformation = 9.2;
-}  // namespace
-
-// After an IMU-only window fit: the angle directions besides the heading that the window's
-// readings say little about (less than the start-up prior, or than noise alone can make) keep
-// the running state's value and variance, as the heading does. At rest a joint whose axis lies
-// along gravity turns no reading: a pendulum's rod hanging straight down at zero 0 has the
-// pronation axis vertical, and the fit, free along it, set the pronation wherever the noise turned
-// the forearm's tiny tilt (69 deg off on one seed, 120 on another) with a fitted state's 5 deg of
-// standard deviation, which held it there through the release (docs/estimator.md, "The double
-// pendulum"). Information of the window: per IMU reading, its noise-weighted Jacobian on the angles
-// at the fitted state.
-template <int N>
-void ArmFilter<N>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
-                              const Mat& pRunning) {
-  const EstimatorParams now = paramsInFrame();
-  const Vec15 x = m_x.template head<kBase>();
-  const Eigen::Matrix<double, 18, 15> jac = predictAllJacobian(now, x);
-  int readings[4] = {0, 0, 0, 0};  // kUaGyr, kUaAcc, kFaGyr, kFaAcc
-  for (const ArmSample& r : w) {
-    if (r.upperArm) {
-      readings[kUaGyr] += !r.upperArm->gyrHeld;
-      readings[kUaAcc] += !r.upperArm->accHeld;
-    }
-    if (r.forearm) {
-      readings[kFaGyr] += !r.forearm->gyrHeld;
-      readings[kFaAcc] += !r.forearm->accHeld;
-    }
-  }
-  using JointMatrix = Eigen::Matrix<double, kNumJoints, kNumJoints>;
-  JointMatrix info = JointMatrix::Zero();
-  for (int blk = kUaGyr; blk <= kFaAcc; ++blk) {
-    const bool gyro = blk == kUaGyr || blk == kFaGyr;
-    if (gyro && m_p.model == MeasurementModel::Inclinometer) continue;
-    const Eigen::Matrix<double, 3, kNumJoints> h = jac.template block<3, kNumJoints>(3 * blk, 10);
-    info += readings[blk] / (gyro ? m_p.gyroVariance : m_p.accelVariance) * h.transpose() * h;
-  }
-  // The heading is the anchor's business: its direction is taken out of the information and
-  // given that of a known direction, so the other directions are split orthogonal to it (it
-  // shares the null space with them at rest). Inactive joints are held, never unseen.
-  const JointVector hd = headingAngles(m_x).template segment<5>(10);
-  const JointMatrix away = JointMatrix::Identity() - hd * hd.transpose();
-  constexpr double kKnown = 1e12;  // rad^-2
-  info = away * info * away + kKnown * hd * hd.transpose();
-  for (int j = 0; j < kNumJoints; ++j)
-    if (!m_p.activeJoints[j]) info(j, j) += kKnown;
-  const Eigen::SelfAdjointEigenSolver<JointMatrix> es(info);
-  // Unseen: less information than the start-up prior's, or than kNoiseInformation (rad^-2).
-  const double prior =
-      std::max(1.0 / (m_p.initialAngleStd * m_p.initialAngleStd), kNoiseInformation);
-  Eigen::Matrix<double, kNumJoints, Eigen::Dynamic, 0, kNumJoints, kNumJoints> unseen(kNumJoints,
-                                                                                      0);
-  for (int k = 0; k < kNumJoints; ++k) {
-    const JointVector d = es.eigenvectors().col(k);
-    if (es.eigenvalues()(k) >= prior) continue;
-    unseen.conservativeResize(Eigen::NoChange, unseen.cols() + 1);
-    unseen.col(unseen.cols() - 1) = d;
-  }
-  if (unseen.cols() == 0) return;
-  // Along those directions: the running angles, and the running P's angle block (E); the fitted
-  // P loses them and their correlations (T P T^T, T removing them from the angles).
-  JointVector diff;
-  for (int j = 0; j < kNumJoints; ++j) diff(j) = wrapAngle(xRunning(10 + j) - m_x(10 + j));
-  m_x.template segment<5>(10) += unseen * (unseen.transpose() * diff);
-  Mat t = Mat::Identity();
-  t.template block<5, 5>(10, 10) -= unseen * unseen.transpose();
-  Mat e = Mat::Zero();
-  const JointMatrix along = unseen * unseen.transpose();
-  e.template block<5, 5>(10, 10) = along * pRunning.template block<5, 5>(10, 10) * along;
-  m_P = t * m_P * t.transpose() + e;
 }
 
 // A fitted state replaces the running one with the start-up covariance: the fit is good to a
@@ -358,67 +276,6 @@ void ArmFilter<N>::matchProcessNoise(const Vec& xPredicted, double dt) {
     const double d = m_x(j) - xPredicted(j);
     m_matchedQ(j) += w * (d * d * m_p.referenceStep / dt - m_matchedQ(j));
     m_matchedQ(j) = std::min(m_matchedQ(j), m_p.maxJointAccelVariance);
-  }
-}
-
-// A step in the joint accelerations (docs/estimator.md, "The double pendulum"). Covariance
-// matching follows smooth changes of the motion, but it learns from the updates' corrections,
-// which are small while P is: a pendulum let go from rest, whose accelerations jump from zero to
-// 30-80 rad/s^2, left the rates behind the gyroscopes for five steps and the hinge 3-5 deg off
-// for half a second, at 0.4 deg of standard deviation. The gyroscopes show such a jump at once
-// (every model predicts them exactly): innovations far beyond S. Then the rate change they read
-// is taken as an acceleration jump at the step's start, and P before the update gets it per
-// joint (variance (dw/dt)^2 along acceleration 1, rate dt, angle dt^2/2), so the update follows
-// the gyroscopes in that one step. Below the threshold nothing changes.
-template <int N>
-void ArmFilter<N>::followAccelerationJump(const BlockList& b, double dt) {
-  if (!m_p.adaptiveProcessNoise || m_p.model != MeasurementModel::AccelGyro || !(dt > 0.0) ||
-      m_t - m_t0 < m_p.startupSeconds || !(b.has(kUaGyr) || b.has(kFaGyr)))
-    return;
-  // The gyroscope rows read the rates and angles (state columns 5-14), not the accelerations.
-  using Rows = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 6, 1>;
-  using RowsByStates = Eigen::Matrix<double, Eigen::Dynamic, 10, 0, 6, 10>;
-  using RowsByRows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 6, 6>;
-  const Prediction& at = priorPrediction();
-  Rows nu(6), var(6);
-  RowsByStates h(6, 10);
-  int rows = 0;
-  for (int i = 0; i < b.count; ++i) {
-    const int blk = b.block[i];
-    if (blk != kUaGyr && blk != kFaGyr) continue;
-    nu.template segment<3>(rows) =
-        b.z.template segment<3>(b.offset[i]) - at.readings.template segment<3>(3 * blk);
-    h.template middleRows<3>(rows) = at.jacobian.template block<3, 10>(3 * blk, 5);
-    var.template segment<3>(rows) = b.variance.template segment<3>(b.offset[i]);
-    rows += 3;
-  }
-  nu.conservativeResize(rows);
-  var.conservativeResize(rows);
-  h.conservativeResize(rows, 10);
-  RowsByRows s = h * m_P.template block<10, 10>(5, 5) * h.transpose();
-  s.diagonal() += var;
-  const Eigen::LLT<RowsByRows> llt(s);
-  if (llt.info() != Eigen::Success) return;
-  if (!(nu.dot(llt.solve(nu)) > kAccelJumpNis * rows)) return;
-  // The rate change per joint the gyroscopes read: least squares on their rate columns, each
-  // row weighted by its noise; joints they cannot see stay where they are (small damping).
-  const Rows w = var.cwiseSqrt().cwiseInverse();
-  Eigen::Matrix<double, Eigen::Dynamic, kNumJoints, 0, 6, kNumJoints> a =
-      w.asDiagonal() * h.template leftCols<kNumJoints>();
-  for (int j = 0; j < kNumJoints; ++j)
-    if (!m_p.activeJoints[j]) a.col(j).setZero();
-  const Eigen::Matrix<double, kNumJoints, kNumJoints> normal =
-      a.transpose() * a + 1e-3 * Eigen::Matrix<double, kNumJoints, kNumJoints>::Identity();
-  const Rows wnu = w.cwiseProduct(nu);
-  const JointVector jump = normal.ldlt().solve(a.transpose() * wnu);
-  for (int j = 0; j < kNumJoints; ++j) {
-    if (!m_p.activeJoints[j]) continue;
-    const double accel = jump(j) / dt;
-    Vec g = Vec::Zero();
-    g(j) = 1.0;
-    g(5 + j) = dt;
-    g(10 + j) = 0.5 * dt * dt;
-    m_P += (accel * accel) * g * g.transpose();
   }
 }
 
@@ -518,14 +375,11 @@ template bool ArmFilter<kBase>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase>::fitSeeds(const ArmSample& last,
                                                        const std::vector<ArmSample>& w) const;
 template bool ArmFilter<kBase>::refitFromWindow(double since);
-template void ArmFilter<kBase>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
-                                           const Mat& pRunning);
 template void ArmFilter<kBase>::takeFit(const WindowFitResult& fit,
                                         const std::vector<ArmSample>& w);
 template bool ArmFilter<kBase>::lost();
 template UpdateResult ArmFilter<kBase>::recover(const ArmSample& last);
 template void ArmFilter<kBase>::matchProcessNoise(const Vec& xPredicted, double dt);
-template void ArmFilter<kBase>::followAccelerationJump(const BlockList& b, double dt);
 template bool ArmFilter<kBase>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase>::keepInAnatomicalRange();
 template void ArmFilter<kBase>::repairCovariance();
@@ -542,14 +396,11 @@ template bool ArmFilter<kBase + 6>::anyOptical(const std::vector<ArmSample>& w);
 template std::vector<Vec15> ArmFilter<kBase + 6>::fitSeeds(const ArmSample& last,
                                                            const std::vector<ArmSample>& w) const;
 template bool ArmFilter<kBase + 6>::refitFromWindow(double since);
-template void ArmFilter<kBase + 6>::keepUnseen(const std::vector<ArmSample>& w, const Vec& xRunning,
-                                               const Mat& pRunning);
 template void ArmFilter<kBase + 6>::takeFit(const WindowFitResult& fit,
                                             const std::vector<ArmSample>& w);
 template bool ArmFilter<kBase + 6>::lost();
 template UpdateResult ArmFilter<kBase + 6>::recover(const ArmSample& last);
 template void ArmFilter<kBase + 6>::matchProcessNoise(const Vec& xPredicted, double dt);
-template void ArmFilter<kBase + 6>::followAccelerationJump(const BlockList& b, double dt);
 template bool ArmFilter<kBase + 6>::inAnatomicalRange(const Vec15& x) const;
 template void ArmFilter<kBase + 6>::keepInAnatomicalRange();
 template void ArmFilter<kBase + 6>::repairCovariance();
