@@ -17,6 +17,7 @@
 #include <QJsonDocument>
 #include <QMessageBox>
 #include <QPlainTextEdit>
+#include <QPointer>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -253,13 +254,19 @@ class TestHomeMode : public QObject {
     QTRY_VERIFY(current<ExerciseScreen>());
     const std::size_t before = sessions().size();
     press();  // Start set 1
-    auto* exercise = current<ExerciseScreen>();
+    // Guarded: if the screen is replaced while the test waits (CI once saw it go under load),
+    // the wait fails and says so instead of reading a deleted screen.
+    const QPointer<ExerciseScreen> exercise = current<ExerciseScreen>();
+    QVERIFY(exercise);
     QTRY_COMPARE(exercise->phase(), ExerciseScreen::Phase::Set);
-    QTRY_VERIFY_WITH_TIMEOUT(exercise->counterText().startsWith(QStringLiteral("1 of 3")), kSlowMs);
+    QTRY_VERIFY_WITH_TIMEOUT(
+        exercise && exercise->counterText().startsWith(QStringLiteral("1 of 3")), kSlowMs);
+    QVERIFY2(exercise, "the exercise screen went away before the first repetition was counted");
     // The window's close button asks first; Enter (the default) keeps exercising.
     window()->close();
     QTest::keyClick(closeQuestion(), Qt::Key_Return);
     QTRY_VERIFY(!m_app->home()->closeQuestion());
+    QVERIFY(exercise);
     QCOMPARE(exercise->phase(), ExerciseScreen::Phase::Set);
     QVERIFY(window()->isVisible());
     // Asked again: Stop and save.
