@@ -257,8 +257,7 @@ class TestHomeMode : public QObject {
     // Guarded: if the screen is replaced while the test waits (CI once saw it go under load),
     // the wait fails and says so instead of reading a deleted screen.
     const QPointer<ExerciseScreen> exercise = current<ExerciseScreen>();
-    QVERIFY(exercise);
-    QTRY_COMPARE(exercise->phase(), ExerciseScreen::Phase::Set);
+    QTRY_VERIFY(exercise && exercise->phase() == ExerciseScreen::Phase::Set);
     QTRY_VERIFY_WITH_TIMEOUT(
         exercise && exercise->counterText().startsWith(QStringLiteral("1 of 3")), kSlowMs);
     QVERIFY2(exercise, "the exercise screen went away before the first repetition was counted");
