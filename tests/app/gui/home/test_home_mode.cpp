@@ -258,8 +258,11 @@ class TestHomeMode : public QObject {
     // the wait fails and says so instead of reading a deleted screen.
     const QPointer<ExerciseScreen> exercise = current<ExerciseScreen>();
     QTRY_VERIFY(exercise && exercise->phase() == ExerciseScreen::Phase::Set);
-    QTRY_VERIFY_WITH_TIMEOUT(
-        exercise && exercise->counterText().startsWith(QStringLiteral("1 of 3")), kSlowMs);
+    QTRY_VERIFY2_WITH_TIMEOUT(
+        exercise && exercise->counterText().startsWith(QStringLiteral("1 of 3")),
+        qPrintable(exercise ? exercise->counterText() + u' ' + exercise->feedbackText()
+                            : QStringLiteral("the exercise screen went away")),
+        kSlowMs);
     QVERIFY2(exercise, "the exercise screen went away before the first repetition was counted");
     // The window's close button asks first; Enter (the default) keeps exercising.
     window()->close();
@@ -433,7 +436,8 @@ class TestHomeMode : public QObject {
     }
     QCOMPARE(rows.size(), 3);  // the one stopped by closing and today's two
     QCOMPARE(rows.filter(QStringLiteral("pain 3/10")).size(), 2);
-    QVERIFY(rows.filter(QStringLiteral("6 of 6 repetitions")).size() == 1);
+    QVERIFY2(rows.filter(QStringLiteral("6 of 6 repetitions")).size() == 1,
+             qPrintable(rows.join(QStringLiteral(" | "))));
     QVERIFY(rows.filter(QStringLiteral("Stiff in the morning")).size() == 2);
     armtrack::gui::test::saveScreenshot(m_app->window(), QStringLiteral("home-therapist"));
   }
