@@ -45,15 +45,29 @@ void LiveCalibration::add(const ArmSample& row) {
   if (upper) m_nextUpperT = row.t + step;
   if (forearm) m_nextForearmT = row.t + step;
   m_window.push_back(row);
-  while (!m_window.empty() && row.t - m_window.front().t > m_params.windowSeconds)
+  m_windowRest.push_back(atRest());
+  while (!m_window.empty() && row.t - m_window.front().t > m_params.windowSeconds) {
     m_window.pop_front();
+    m_windowRest.pop_front();
+    m_windowCut = true;
+  }
+}
+
+std::size_t LiveCalibration::windowStart() const {
+  if (!m_windowCut || m_window.empty()) return 0;
+  for (std::size_t i = 0; i < m_window.size(); ++i) {
+    if (!m_windowRest[i]) continue;
+    return m_window.back().t - m_window[i].t >= 0.5 * m_params.windowSeconds ? i : 0;
+  }
+  return 0;
 }
 
 void LiveCalibration::startFit(double t) {
   m_fitStartT = t;
   Recording rec;
   rec.meta = m_meta;
-  rec.samples.assign(m_window.begin(), m_window.end());
+  rec.samples.assign(m_window.begin() + static_cast<std::ptrdiff_t>(windowStart()),
+                     m_window.end());
   m_done = false;
   {
     // A refit keeps the finding in use (or "as fitted") on show until it is done.

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
@@ -32,7 +33,11 @@ struct LiveCalibrationParams {
   double firstSeconds = 30.0;   ///< s of rows before the first fit
   double retrySeconds = 15.0;   ///< s between fits until one could be made
   double refineSeconds = 60.0;  ///< s between refits once one was made
-  double windowSeconds = 90.0;  ///< s of the newest rows kept and fitted on
+  /// s of the newest rows kept and fitted on. Once the session is longer, a refit's window
+  /// starts at its first rest (when at least half of it is left after that): the check that
+  /// decides whether a fit is used runs the estimator over the window, and one started mid-reach
+  /// with IMUs only may lose the arm (applyAtRest), which made the check a matter of chance.
+  double windowSeconds = 90.0;
   /// Each IMU's readings are kept at most this often (Hz): arm movement lies below 10 Hz, and a
   /// 1 kHz sensor would otherwise fill the window with 90 000 rows (45 MB) for nothing.
   double maxRateHz = 200.0;
@@ -138,6 +143,8 @@ class LiveCalibration {
 
  private:
   void startFit(double t);
+  /// The index of m_window's row a fit starts at (windowSeconds).
+  std::size_t windowStart() const;
   std::optional<AutoCalibrationResult> finishFit(double t);
   std::optional<AutoCalibrationResult> release(double t);
 
@@ -145,6 +152,8 @@ class LiveCalibration {
   RecordingMeta m_meta;
   FilterParamsFor m_paramsFor;
   std::deque<ArmSample> m_window;
+  std::deque<bool> m_windowRest;  // whether the arm rested at each row of m_window
+  bool m_windowCut = false;       // m_window no longer starts at the session's first row
   double m_firstT = std::numeric_limits<double>::quiet_NaN();
   double m_nextUpperT = -std::numeric_limits<double>::infinity();  // next upper-arm reading kept
   double m_nextForearmT = -std::numeric_limits<double>::infinity();

@@ -256,6 +256,24 @@ TEST_P(FitReadyMidReach, IsAppliedAtTheNextRest) {
 INSTANTIATE_TEST_SUITE_P(SessionMovementCalibration, FitReadyMidReach,
                          ::testing::Values(35.0, 40.0, 45.0, 55.0));
 
+// The refit 60 s after a fit used at 47.4 s, on the straps that have not moved since: not used.
+// Its 90 s window (17-107 s) begins mid-reach; the check that decides is run from the window's
+// first rest. Run from the window's first row instead, the estimator with the fit in use lost
+// the elbow (14 and 23 deg RMS error), missed the readings by 0.45 rad/s against the refit's
+// 0.063, and the refit, within 3 deg of the one in use, restarted the estimator for nothing.
+TEST_F(SessionMovementCalibration, ARefitOfStrapsThatDidNotMoveIsNotUsed) {
+  const Recording rec = patient(kTurn);
+  const LiveRun r = replay(dir_, rec, true, midReachFrom(rec, 45.0), true);
+  for (const std::string& e : r.events) std::printf("  event: %s\n", e.c_str());
+  ASSERT_EQ(r.status.fits, 2) << r.status.line;
+  EXPECT_EQ(r.status.applied, 1);
+  EXPECT_EQ(r.status.firstAppliedAt, r.status.appliedAt);
+  EXPECT_NE(r.status.line.find("not applied: the calibration in use explains the readings as well"),
+            std::string::npos)
+      << r.status.line;
+  EXPECT_EQ(mentioning(r.events, "the estimator restarted"), 1u);
+}
+
 // Hostile: an arm that never rests (here a rest rule no sensor meets). The fit waits, the status
 // says so, and the session tells once after restWaitTellSeconds what to do; the estimator is
 // never restarted mid-movement.
