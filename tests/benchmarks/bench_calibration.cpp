@@ -1,11 +1,13 @@
 // Time of a whole sensor-to-segment calibration (core/calibration) on the simulated protocol:
 // IMUs only, and IMUs with the Kinect. The calibration test checks accuracy only; how long the
 // therapist waits for the result is measured here. Run build/tests/benchmarks/bench_calibration.
+// Also the live session's per-row cost of collecting rows for a calibration from movement.
 #include <benchmark/benchmark.h>
 
 #include <Eigen/Geometry>
 
 #include "core/calibration/Calibrator.h"
+#include "core/session/LiveCalibration.h"
 #include "core/simulation/SensorSimulator.h"
 #include "core/simulation/Trajectory.h"
 
@@ -59,6 +61,28 @@ BENCHMARK(BM_CalibrateProtocol)
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
+
+// What a live session's worker spends per row on the calibration from movement while it
+// collects (LiveCalibration::add, no fit running): two IMUs at 1 kHz and a 30 Hz Kinect, a
+// minute of reaching with rests. Rows per second of CPU: items_per_second.
+void BM_LiveCalibrationAdd(benchmark::State& state) {
+  SimulationParams sim = defaultSimulation();
+  sim.duration = 60.0;
+  sim.seed = 13;
+  const Recording rec = simulateRecording(SessionTrajectory(13, 2.0, 8.0, 60.0), sim);
+  session::LiveCalibrationParams lp;
+  lp.enabled = true;
+  lp.firstSeconds = 1e9;  // collect only
+  std::size_t rows = 0;
+  for (auto _ : state) {
+    session::LiveCalibration live(lp, rec.meta, [](const RecordingMeta&) { return EstimatorParams{}; });
+    for (const ArmSample& row : rec.samples) live.add(row);
+    benchmark::DoNotOptimize(live.atRest());
+    rows += rec.samples.size();
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(rows));
+}
+BENCHMARK(BM_LiveCalibrationAdd)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace armtrack
