@@ -32,6 +32,13 @@ void LiveCalibration::add(const ArmSample& row) {
   // Every reading (not only those kept for the fit) tells whether the arm rests.
   if (row.upperArm) m_upperStill.add(row.t, *row.upperArm, m_params.rest.windowSeconds);
   if (row.forearm) m_forearmStill.add(row.t, *row.forearm, m_params.rest.windowSeconds);
+  // Whether the arm rests, looked at every kRestCheckSeconds of session time: each look goes
+  // over a second of readings of both IMUs, too much for every row at 1 kHz. (A clock that
+  // went back looks again at once.)
+  if (!(row.t >= m_restCheckedT && row.t - m_restCheckedT < kRestCheckSeconds)) {
+    m_rest = m_upperStill.still(m_params.rest) && m_forearmStill.still(m_params.rest);
+    m_restCheckedT = row.t;
+  }
   if (std::isnan(m_firstT)) {
     m_firstT = row.t;
     m_nextFitT = row.t + m_params.firstSeconds;
@@ -182,7 +189,7 @@ std::vector<std::string> LiveCalibration::takeNotes() {
 }
 
 bool LiveCalibration::atRest() const {
-  return m_upperStill.still(m_params.rest) && m_forearmStill.still(m_params.rest);
+  return m_rest;
 }
 
 void ImuStillness::add(double t, const ImuReading& r, double seconds) {

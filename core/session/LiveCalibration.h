@@ -134,8 +134,11 @@ class LiveCalibration {
   std::optional<AutoCalibrationResult> poll(double t);
   /// What to tell in the session messages besides the fits' lines (waiting for a rest), once.
   std::vector<std::string> takeNotes();
-  /// Both arm IMUs were still over their last rest.windowSeconds of readings.
+  /// Both arm IMUs were still over their last rest.windowSeconds of readings, as of the last
+  /// look (at most kRestCheckSeconds of session time before the newest row).
   bool atRest() const;
+  /// How often (session time, s) add() looks whether the arm rests.
+  static constexpr double kRestCheckSeconds = 0.05;
   /// Cancels a running fit and waits for it (the session stops).
   void finish();
 
@@ -163,6 +166,8 @@ class LiveCalibration {
   std::optional<Calibration> m_current;
   bool m_currentRollSeen = false;  // m_current has the forearm's roll from the start pose
   ImuStillness m_upperStill, m_forearmStill;
+  bool m_rest = false;  // atRest() as of m_restCheckedT
+  double m_restCheckedT = -std::numeric_limits<double>::infinity();
   std::optional<AutoCalibrationResult> m_pending;  // a fit to be used, waiting for a rest
   double m_pendingSince = 0.0;
   bool m_toldWaiting = false;
