@@ -207,8 +207,13 @@ ExportSummary exportSession(storage::ClinicalStore& store, qint64 id, ExportForm
                " and its metrics to " + r.metricsCsv.string();
     out.files = {r.anglesCsv, r.metricsCsv};
   } else if (format == ExportFormat::Mot) {
-    const MotExportResult r = writeOpenSimMot(target, s.series, s.side);
+    // The lumbar coordinates when the estimates hold the trunk's angles.
+    const TrunkColumns trunk{s.trunkRad, {}};
+    const MotExportResult r = writeOpenSimMot(target, s.series, s.side, {}, &trunk);
     out.what = std::to_string(r.rows) + " rows to " + target.string();
+    if (r.skippedRows > 0)
+      out.what += " (" + std::to_string(r.skippedRows) +
+                  " left out: OpenSim cannot use a row with a missing value)";
     out.files = {target};
   } else {
     const Recording recording = store.readRecording(id);

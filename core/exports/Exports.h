@@ -80,6 +80,17 @@ std::vector<std::string> openSimCoordinateNames(Side side);
 /// internal rotation, elbow flexion, pronation (docs/exports.md explains each sign).
 ClinicalRow openSimCoordinatesDeg(const ClinicalRow& clinicalRad);
 
+/// The model's lumbar coordinates, written when the export has the trunk's angles:
+/// lumbar_extension, lumbar_bending, lumbar_rotation (the Rajagopal model's `back` joint, pelvis
+/// to torso; the same names for both arms).
+std::vector<std::string> openSimLumbarNames();
+
+/// Their values (deg) for the trunk's angles (rad; flexion, lateral bending, axial rotation,
+/// core/kinematics/Trunk.h): -flexion, lateral bending, axial rotation. The pelvis is taken as
+/// upright and still (a seated patient): the trunk's angles are the thorax's from the upright
+/// start, written as the torso's turn on the pelvis.
+Eigen::Vector3d openSimLumbarDeg(const Eigen::Vector3d& trunkRad);
+
 struct MotOptions {
   std::string name = "armtrack_clinical_angles";  ///< first header line (the storage's name)
   /// Added to pro_sup (deg). ArmTrack's pronation is 0 with the thumb forward; a model whose
@@ -91,16 +102,23 @@ struct MotOptions {
 struct MotExportResult {
   std::size_t rows = 0;         ///< data rows written (nRows)
   std::size_t skippedRows = 0;  ///< rows with a non-finite time or angle, left out
+  /// Of those, rows left out only because their trunk angles were not finite (the trunk's
+  /// columns written).
+  std::size_t skippedTrunkRows = 0;
+  bool trunk = false;  ///< the lumbar coordinates were written
 };
 
 /// Writes an OpenSim motion file: the name line, version=1, nRows, nColumns (time included),
 /// inDegrees=yes, endheader, then the tab-separated labels (time and the coordinates of
-/// openSimCoordinateNames(side)) and one row per sample. Rows with any non-finite value are left
-/// out (OpenSim cannot use them). Throws std::invalid_argument for mismatched lengths, ExportError
-/// when no usable row is left, when the kept times do not increase strictly (naming the row), or
-/// when the file cannot be written.
+/// openSimCoordinateNames(side)) and one row per sample. trunk (nullptr, empty or without one
+/// finite row: none): the trunk's angles of the series' rows, written after the arm's as the
+/// coordinates of openSimLumbarNames(). Rows with any non-finite value are left out (OpenSim
+/// cannot use them). Throws std::invalid_argument for mismatched lengths, ExportError when no
+/// usable row is left, when the kept times do not increase strictly (naming the row), or when the
+/// file cannot be written.
 MotExportResult writeOpenSimMot(const std::filesystem::path& motPath, const AngleSeries& series,
-                                Side side, const MotOptions& options = {});
+                                Side side, const MotOptions& options = {},
+                                const TrunkColumns* trunk = nullptr);
 
 // ---------------------------------------------------------------- BIDS motion
 

@@ -75,7 +75,8 @@ class TrunkExportCli : public CliFixture {
 
 // A simulated session whose patient leans with each reach, with a sternum IMU: imported (and so
 // analysed) into the records, read back and exported as CSV, its trunk columns are the estimator's
-// own, as `estimate --out` writes them for the same recording (rad there, deg here), row for row.
+// own, as `estimate --out` writes them for the same recording (rad there, deg here), row for row;
+// the BIDS and OpenSim exports carry the same numbers.
 TEST_F(TrunkExportCli, TrunkAnglesAreStoredAndExportedAsEstimated) {
   const Recording rec = leaningReaches(12, 841);
   writeRecording(path("lean.csv"), rec);
@@ -165,6 +166,32 @@ TEST_F(TrunkExportCli, TrunkAnglesAreStoredAndExportedAsEstimated) {
     ++row;
   }
   EXPECT_EQ(row, out.rows.size());
+
+  // The OpenSim export carries them as the model's lumbar coordinates (docs/exports.md):
+  // extension is the negative of the flexion, bending and rotation the same, row for row.
+  const Result mot = run({"export", id, "--format", "mot", "--out", path("angles.mot")});
+  ASSERT_EQ(mot.code, 0) << mot.err;
+  std::ifstream motIn(path("angles.mot"));
+  while (std::getline(motIn, line) && line != "endheader") {
+  }
+  ASSERT_TRUE(std::getline(motIn, line));
+  EXPECT_EQ(line,
+            "time\tarm_flex_r\tarm_add_r\tarm_rot_r\telbow_flex_r\tpro_sup_r\tlumbar_extension"
+            "\tlumbar_bending\tlumbar_rotation");
+  row = 0;
+  while (std::getline(motIn, line)) {
+    ASSERT_LT(row, out.rows.size());
+    std::vector<double> cells;
+    std::stringstream in(line);
+    for (std::string cell; std::getline(in, cell, '\t');) cells.push_back(numberOf(cell));
+    ASSERT_EQ(cells.size(), 9u) << line;
+    EXPECT_NEAR(cells[0], numberOf(out.rows[row][0]), 1e-6) << line;
+    EXPECT_NEAR(cells[6], -numberOf(out.rows[row][11]), 1e-6) << line;
+    EXPECT_NEAR(cells[7], numberOf(out.rows[row][12]), 1e-6) << line;
+    EXPECT_NEAR(cells[8], numberOf(out.rows[row][13]), 1e-6) << line;
+    ++row;
+  }
+  EXPECT_EQ(row, out.rows.size());  // every row has the trunk: none left out
 }
 
 // A schema version 8 database (written by main's build before the trunk's angles were stored):

@@ -8,6 +8,7 @@
 #include <map>
 
 #include "core/exports/Exports.h"
+#include "core/kinematics/Trunk.h"
 #include "core/metrics/ClinicalMetrics.h"
 #include "tests/core/exports/ExportTestSupport.h"
 
@@ -299,6 +300,78 @@ TEST(OpenSimMot, NonFiniteRowsAreLeftOutAndCounted) {
   const MotFile m = readMot(dir / "n.mot");
   ASSERT_EQ(m.rows.size(), 3u);
   EXPECT_DOUBLE_EQ(m.rows[1][0], 0.03);
+}
+
+// The torso's rotation on the pelvis as the Rajagopal model's back joint builds it from the
+// lumbar coordinates (deg): about its axes 0 0 1, then the moved 1 0 0, then the moved 0 1 0, in
+// the pelvis frame (x forward, y up, z to the right), written in frame 0's axes (x0 down, y0
+// forward, z0 to the patient's right): independent of the export's mapping.
+Eigen::Matrix3d torsoFromLumbar(double extDeg, double bendDeg, double rotDeg) {
+  const Eigen::Matrix3d osim = (Eigen::AngleAxisd(extDeg * kDegToRad, Eigen::Vector3d::UnitZ()) *
+                                Eigen::AngleAxisd(bendDeg * kDegToRad, Eigen::Vector3d::UnitX()) *
+                                Eigen::AngleAxisd(rotDeg * kDegToRad, Eigen::Vector3d::UnitY()))
+                                   .toRotationMatrix();
+  Eigen::Matrix3d toFrame0;  // rows: x0 = -y, y0 = x, z0 = z
+  toFrame0 << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  return toFrame0 * osim * toFrame0.transpose();
+}
+
+TEST(OpenSimMot, TrunkAnglesBecomeTheLumbarCoordinatesThatTurnTheTorsoTheSameWay) {
+  // Plain poses: leaning forward is lumbar flexion (negative extension), leaning to the right and
+  // bringing the right shoulder forward are positive bending and rotation.
+  EXPECT_TRUE(openSimLumbarDeg(Eigen::Vector3d(15, 0, 0) * kDegToRad)
+                  .isApprox(Eigen::Vector3d(-15, 0, 0), 1e-12));
+  // Any pose: the torso the model builds from the written coordinates is the trunk's rotation.
+  const double poses[][3] = {{20, 0, 0}, {0, 10, 0}, {0, 0, 10}, {18, -7, 9}, {-5, 8, -12}};
+  for (const auto& a : poses) {
+    const Eigen::Vector3d trunk = Eigen::Vector3d(a[0], a[1], a[2]) * kDegToRad;
+    const Eigen::Vector3d l = openSimLumbarDeg(trunk);
+    EXPECT_TRUE(torsoFromLumbar(l(0), l(1), l(2)).isApprox(trunkRotation(trunk), 1e-12))
+        << a[0] << " " << a[1] << " " << a[2];
+  }
+  // A forward lean seen in the model's own terms: the torso's up axis (-x0) tips forward (+y0).
+  const Eigen::Vector3d up = torsoFromLumbar(-20, 0, 0) * -Eigen::Vector3d::UnitX();
+  EXPECT_GT(up.y(), 0.3);
+}
+
+TEST(OpenSimMot, TheTrunkIsWrittenAsLumbarCoordinatesAndRowsWithoutItAreCounted) {
+  const SinusoidTrajectory tr = knownMovement();
+  const AngleSeries series = truthSeries(simulatedSession(tr, 1.0, 50.0));
+  TrunkColumns trunk;
+  for (std::size_t i = 0; i < series.t.size(); ++i)
+    trunk.angleRad.push_back(Eigen::Vector3d(0.3, -0.1, 0.05) * std::sin(series.t[i]));
+  trunk.angleRad[0] = Eigen::Vector3d::Constant(kNaN);  // before the sternum IMU's first sample
+  TempDir dir;
+  const MotExportResult r = writeOpenSimMot(dir / "t.mot", series, Side::Left, {}, &trunk);
+  EXPECT_TRUE(r.trunk);
+  EXPECT_EQ(r.skippedRows, 1u);
+  EXPECT_EQ(r.skippedTrunkRows, 1u);
+  const MotFile m = readMot(dir / "t.mot");
+  EXPECT_EQ(m.labels, (std::vector<std::string>{"time", "arm_flex_l", "arm_add_l", "arm_rot_l",
+                                                "elbow_flex_l", "pro_sup_l", "lumbar_extension",
+                                                "lumbar_bending", "lumbar_rotation"}));
+  ASSERT_EQ(m.rows.size(), series.t.size() - 1);
+  for (std::size_t k = 0; k < m.rows.size(); ++k) {
+    const Eigen::Vector3d want = openSimLumbarDeg(trunk.angleRad[k + 1]);
+    for (int j = 0; j < 3; ++j) EXPECT_NEAR(m.rows[k][6 + j], want(j), 1e-6);
+  }
+  // A trunk never measured (every row NaN) leaves the file the arm's alone; so does none.
+  for (auto& a : trunk.angleRad) a = Eigen::Vector3d::Constant(kNaN);
+  const MotExportResult none = writeOpenSimMot(dir / "n.mot", series, Side::Left, {}, &trunk);
+  EXPECT_FALSE(none.trunk);
+  EXPECT_EQ(none.skippedRows, 0u);
+  EXPECT_EQ(readMot(dir / "n.mot").labels.size(), 6u);
+  // A trunk of the wrong length is refused, naming both counts.
+  trunk.angleRad.pop_back();
+  try {
+    writeOpenSimMot(dir / "w.mot", series, Side::Left, {}, &trunk);
+    FAIL() << "no error";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find(std::to_string(series.t.size() - 1) + " trunk rows"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "w.mot"));
 }
 
 TEST(OpenSimMot, HostileInputIsRefusedWithoutWritingAnything) {
