@@ -37,6 +37,8 @@ constexpr double kFloorBelowShoulder = 1.05;  // m: a seated patient's shoulder 
 constexpr double kTrunkOffset = 0.19;         // m from the shoulder to the body's midline
 constexpr double kHipBelow = 0.45;            // m: the trunk's pivot below the shoulder...
 constexpr double kHipMedial = 0.15;           // ...and medial to it (TrunkSimParams::hip)
+constexpr double kTorsoDepth = 0.19;          // m: the drawn torso, front to back
+constexpr double kSternumThickness = 0.02;    // m: the drawn sternum IMU's thin side
 
 /// An actor drawn from a shared unit shape through its own matrix.
 struct Part {
@@ -144,7 +146,8 @@ struct ArmScene::Impl {
 
   std::unique_ptr<ArmParts> arm, target;
   std::unique_ptr<ImuParts> upperImu, forearmImu;
-  std::unique_ptr<Part> kinectElbow, kinectWrist, trunk, head;
+  std::unique_ptr<Part> kinectElbow, kinectWrist, trunk, head, sternumImu;
+  std::optional<TrunkMount> sternum;  // the sternum IMU's mounting (frame 0, trunk upright)
   std::array<vtkSmartPointer<vtkLineSource>, 2> raySources;
   std::array<vtkSmartPointer<vtkActor>, 2> rays;
   vtkSmartPointer<vtkPlaneSource> floorSource = vtkSmartPointer<vtkPlaneSource>::New();
@@ -193,8 +196,26 @@ struct ArmScene::Impl {
     trunkFrame.col(0) = m;
     trunkFrame.col(1) = up;
     trunkFrame.col(2) = m.cross(up);
-    placeBox(*trunk, body.linear() * trunkFrame, Vec3(0.30, 0.52, 0.19), body * trunkCentre);
+    placeBox(*trunk, body.linear() * trunkFrame, Vec3(0.30, 0.52, kTorsoDepth), body * trunkCentre);
     placeSphere(*head, body * Vec3(m * kTrunkOffset + up * 0.2), 0.1);
+    placeSternum();
+  }
+
+  void placeSternum() {
+    sternumImu->setVisible(sternum.has_value());
+    if (!sternum) return;
+    // On the chest over the sensor's place: its height and side as mounted, on the torso's front
+    // (the drawn torso is a box; the mounting's depth is the real chest's). Its thin side is the
+    // axis that points most out of the chest.
+    const Vec3 f = forward();
+    const Vec3 p = sternum->imuPosition - f * f.dot(sternum->imuPosition) +
+                   f * (0.5 * kTorsoDepth + 0.5 * kSternumThickness);
+    const Eigen::Matrix3d& r = sternum->imuRotation;
+    Eigen::Index thin = 0;
+    (r.transpose() * f).cwiseAbs().maxCoeff(&thin);
+    Vec3 size(0.05, 0.04, 0.04);
+    size(thin) = kSternumThickness;
+    placeBox(*sternumImu, body.linear() * r, size, body * p);
   }
 
   void placeStatic() {
@@ -243,6 +264,7 @@ struct ArmScene::Impl {
     const Rgb imu{0.98, 0.62, 0.12};
     upperImu->box.setColor(imu);
     forearmImu->box.setColor(imu);
+    sternumImu->setColor(imu);
     const Rgb strap = dark ? Rgb{0.08, 0.08, 0.09} : Rgb{0.25, 0.25, 0.27};
     upperImu->strap.setColor(strap);
     forearmImu->strap.setColor(strap);
@@ -279,6 +301,8 @@ ArmScene::ArmScene() : m(new Impl) {
   vtkRenderer* r = s.renderer;
   s.trunk = std::make_unique<Part>(s.cube, r);
   s.head = std::make_unique<Part>(s.sphere, r);
+  s.sternumImu = std::make_unique<Part>(s.cube, r);
+  s.sternumImu->setVisible(false);
   s.arm = std::make_unique<ArmParts>(s.cylinder, s.sphere, s.cube, r);
   s.target = std::make_unique<ArmParts>(s.cylinder, s.sphere, s.cube, r);
   for (Part* p : s.target->all()) p->setVisible(false);
@@ -351,6 +375,24 @@ void ArmScene::setTrunk(const std::optional<TrunkAngles>& angles) {
   m->trunkAngles = angles && angles->allFinite() ? angles : std::nullopt;
   m->placeBody();
   m->placeArm();
+}
+
+void ArmScene::setSternumImu(const std::optional<TrunkMount>& mount) {
+  const bool valid = mount && mount->imuPosition.allFinite() && mount->imuRotation.allFinite() &&
+                     mount->imuRotation.isUnitary(1e-3) && mount->imuRotation.determinant() > 0.0;
+  m->sternum = valid ? mount : std::nullopt;
+  m->placeBody();
+}
+
+std::optional<Eigen::Isometry3d> ArmScene::sternumImuPose() const {
+  if (!m->sternum) return std::nullopt;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) pose.linear()(r, c) = m->sternumImu->matrix->GetElement(r, c);
+    pose.translation()(r) = m->sternumImu->matrix->GetElement(r, 3);
+  }
+  pose.linear() = pose.linear().colwise().normalized().eval();
+  return pose;
 }
 
 Eigen::Vector3d ArmScene::hipPivot() const {

@@ -39,6 +39,12 @@ class ArmScene {
   /// the moving shoulder) turn with it about the hip pivot; the floor, the camera and the optical
   /// marks (world frame) stay.
   void setTrunk(const std::optional<TrunkAngles>& angles);
+  /// The sternum IMU (when the session has one): drawn on the chest at the mounting's height
+  /// and side, in its orientation, turning with the trunk. Empty, or a mounting that is not a
+  /// finite rotation: none drawn.
+  void setSternumImu(const std::optional<TrunkMount>& mount);
+  /// The drawn sternum IMU's axes and centre (world), for the tests; empty when none is drawn.
+  std::optional<Eigen::Isometry3d> sternumImuPose() const;
   /// The pivot the drawn trunk turns about (shoulder frame, m): 0.45 m below and 0.15 m medial to
   /// the shoulder, the simulator's default hip (core/simulation/TrunkMotion.h).
   Eigen::Vector3d hipPivot() const;

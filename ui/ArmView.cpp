@@ -95,6 +95,12 @@ void ArmView::setTrunk(const std::optional<TrunkAngles>& angles) {
   markDirty();
 }
 
+void ArmView::setSternumImu(const std::optional<TrunkMount>& mount) {
+  m_sternum = mount;
+  m_scene->setSternumImu(mount);
+  markDirty();
+}
+
 void ArmView::setTargetPose(const std::optional<JointVector>& th) {
   if (th && !th->allFinite()) {
     ++m_rejected;

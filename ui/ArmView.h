@@ -60,6 +60,10 @@ class ArmView : public VtkView {
   /// Non-finite angles are ignored (the last good trunk stays) and counted in rejectedPoses().
   void setTrunk(const std::optional<TrunkAngles>& angles);
   const std::optional<TrunkAngles>& trunk() const { return m_trunk; }
+  /// The sternum IMU on the chest, when the session has one (its mounting from the sidecar or
+  /// the calibration; defaultTrunkMount(side) when only its presence is known); empty: none.
+  void setSternumImu(const std::optional<TrunkMount>& mount);
+  const std::optional<TrunkMount>& sternumImu() const { return m_sternum; }
   /// A second, translucent arm (a demonstration or another session); empty hides it.
   void setTargetPose(const std::optional<JointVector>& th);
   void setOptical(const OpticalMarks& marks);
@@ -103,6 +107,7 @@ class ArmView : public VtkView {
   bool m_dirty = true;
   JointVector m_pose = JointVector::Zero();
   std::optional<TrunkAngles> m_trunk;
+  std::optional<TrunkMount> m_sternum;
   Side m_side = Side::Right;
   std::uint64_t m_rejected = 0;
   QAction* m_resetView = nullptr;

@@ -113,5 +113,41 @@ TEST(ArmScene, UnsetOrNonFiniteTrunkIsUpright) {
   EXPECT_TRUE(scene.trunkPose().matrix().isIdentity(1e-15));
 }
 
+TEST(ArmScene, SternumImuSitsOnTheChestAndTurnsWithTheTrunk) {
+  for (Side side : {Side::Right, Side::Left}) {
+    ArmScene scene;
+    scene.setArm(ArmGeometry{}, side, -Eigen::Vector3d::UnitX());
+    EXPECT_FALSE(scene.sternumImuPose()) << "none until the session has one";
+    const TrunkMount mount = defaultTrunkMount(side);
+    scene.setSternumImu(mount);
+    const auto upright = scene.sternumImuPose();
+    ASSERT_TRUE(upright) << sideName(side);
+    // At the mounting's height and side (0.10 m below, 0.18 m medial), in front of the shoulder
+    // on the torso's front, in the mounting's orientation.
+    EXPECT_NEAR(upright->translation().x(), 0.10, 1e-12);
+    EXPECT_NEAR(upright->translation().z(), side == Side::Left ? 0.18 : -0.18, 1e-12);
+    EXPECT_GT(upright->translation().y(), 0.09);
+    EXPECT_LT(upright->translation().y(), 0.12);
+    EXPECT_TRUE(upright->linear().isApprox(mount.imuRotation, 1e-9));
+    // Leaning, it moves as a point of the trunk: about the hip by the trunk's rotation.
+    const TrunkAngles lean(18 * kDeg, 6 * kDeg, -9 * kDeg);
+    scene.setTrunk(lean);
+    const Eigen::Isometry3d pose = scene.trunkPose();
+    const auto leaning = scene.sternumImuPose();
+    ASSERT_TRUE(leaning);
+    EXPECT_TRUE(leaning->translation().isApprox(pose * upright->translation(), 1e-9));
+    EXPECT_TRUE(leaning->linear().isApprox(trunkRotation(lean) * mount.imuRotation, 1e-9));
+    // A mounting that is not a rotation is not drawn; none hides it again.
+    TrunkMount bad = mount;
+    bad.imuRotation(0, 0) = 2.0;
+    scene.setSternumImu(bad);
+    EXPECT_FALSE(scene.sternumImuPose());
+    scene.setSternumImu(mount);
+    EXPECT_TRUE(scene.sternumImuPose());
+    scene.setSternumImu(std::nullopt);
+    EXPECT_FALSE(scene.sternumImuPose());
+  }
+}
+
 }  // namespace
 }  // namespace armtrack::ui

@@ -145,6 +145,7 @@ SensorCalibrationPage::SensorCalibrationPage(const PluginRegistry& registry,
   m_arm = new ui::ArmView(this);
   m_arm->setMinimumSize(200, 200);
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up);
+  m_arm->setSternumImu(drawnSternum(m_config));
   m_arm->setRefreshRate(0);
   root->addWidget(m_arm, 3);
 

@@ -128,6 +128,7 @@ void ExerciseScreen::buildLayout() {
   m_arm = new ui::ArmView(this);
   m_arm->setMinimumSize(280, 280);
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
+  m_arm->setSternumImu(app::gui::drawnSternum(m_config));
   m_arm->setRefreshRate(0);
   m_arm->setPose(m_demo.at(0).th);
   // The view holds the light arm all the way: a shoulder raised high leaves the default framing.

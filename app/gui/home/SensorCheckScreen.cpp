@@ -55,6 +55,7 @@ SensorCheckScreen::SensorCheckScreen(const app::PluginRegistry& registry,
   m_arm = new ui::ArmView(this);
   m_arm->setMinimumSize(240, 240);
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up);
+  m_arm->setSternumImu(app::gui::drawnSternum(m_config));
   m_arm->setRefreshRate(0);
   m_arm->setPose(JointVector::Zero());
   root->addWidget(m_arm, 2);

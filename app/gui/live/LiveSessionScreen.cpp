@@ -161,6 +161,7 @@ void LiveSessionScreen::buildLayout() {
   m_arm = new ui::ArmView(left);
   m_arm->setMinimumSize(160, 120);
   m_arm->setArm(m_config.meta.geometry, m_config.meta.side, m_config.meta.up, m_config.meta.camera);
+  m_arm->setSternumImu(drawnSternum(m_config));
   m_readouts = new ui::AngleReadouts(left);
   m_readouts->setColumns(3);
   leftLayout->addWidget(m_arm, 3);

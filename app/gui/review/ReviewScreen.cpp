@@ -285,6 +285,7 @@ void ReviewScreen::show(const ReviewData& d) {
   const bool first = m_data.info.id == 0;
   m_data = d;
   m_arm->setArm(d.meta.geometry, d.meta.side, d.meta.up, d.meta.camera);
+  m_arm->setSternumImu(d.meta.trunk);  // present when the session had a sternum IMU
   if (d.protocol) {
     const int a = angleIndex(d.protocol->angleKey);
     if (a >= 0) m_plots->setTarget(a, d.protocol->targetMinDeg, d.protocol->targetMaxDeg);

@@ -62,6 +62,13 @@ inline bool hasSternumSensor(const QStringList& devices) {
                      [](const QString& d) { return sternum.match(d).hasMatch(); });
 }
 
+/// The sternum IMU as the 3D view draws it: the session's mounting (a sensor calibration's),
+/// or where the sensor is put by default when only its presence is known; none without one.
+inline std::optional<TrunkMount> drawnSternum(const LiveSessionConfig& c) {
+  if (!hasSternumSensor(c.devices)) return std::nullopt;
+  return c.meta.trunk ? c.meta.trunk : std::optional<TrunkMount>(defaultTrunkMount(c.meta.side));
+}
+
 /// The demo's devices: the virtual arm with both IMUs, a Kinect and a webcam.
 inline QStringList demoDevices() {
   return {QStringLiteral("virtual-arm:sensors=upper+forearm+kinect+webcam")};

@@ -121,6 +121,7 @@ class TestLiveSessionScreen : public QObject {
     QVERIFY(waitForSessionTime(screen, 3.0));
     const JointVector later = screen.armView()->pose();
     QVERIFY2((later - first).norm() > 0.05, "the arm does not move");
+    QVERIFY(!screen.armView()->sternumImu());  // no sternum sensor: none drawn
     // Estimates arrive at the IMU rate and are drained in batches, not one by one.
     QVERIFY(screen.estimatesDrained() > 2000);
     QVERIFY(screen.drains() < screen.estimatesDrained() / 10);

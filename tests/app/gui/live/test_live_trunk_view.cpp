@@ -43,6 +43,9 @@ class TestLiveTrunkView : public QObject {
     screen.start();
     QVERIFY(started.wait(10000));
     ui::ArmView* view = screen.armView();
+    // The sternum sensor is drawn on the chest, where it is put by default (no calibration).
+    QVERIFY(view->sternumImu().has_value());
+    QVERIFY(view->sternumImu()->imuPosition.isApprox(defaultTrunkMount(Side::Right).imuPosition));
     // The session estimates the trunk from the sternum sensor; the view takes each estimate.
     QTRY_VERIFY_WITH_TIMEOUT(view->trunk().has_value(), 10000);
     // The reaches lean the trunk forward, up to 20 deg: the view leans with them.
