@@ -1,5 +1,6 @@
 #include "ui/AngleTableModel.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -31,7 +32,10 @@ QString formatDegrees(double deg, int decimals) {
 
 QString confidenceText(double sigmaDeg) {
   if (!std::isfinite(sigmaDeg)) return QStringLiteral("\u2013");
-  return QStringLiteral("\u00b1") + formatDegrees(2.0 * sigmaDeg, 0);
+  // Rounded up, and at least 1 deg: "±0°" would read as an exact angle, which no sensor gives
+  // (and a simulation's sd of 0.1-0.2 deg leaves out what real straps and sensors add).
+  const double halfWidth = std::max(1.0, std::ceil(2.0 * std::abs(sigmaDeg) - 1e-9));
+  return QStringLiteral("\u00b1") + formatDegrees(halfWidth, 0);
 }
 
 AngleDoubt angleDoubt(const AngleSample& s, int angle, double limitDeg) {

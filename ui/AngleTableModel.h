@@ -19,7 +19,8 @@ enum class AngleDoubt {
 };
 
 /// An angle's confidence as a therapist reads it: "±3°", the range the angle lies in with
-/// about 95 % probability (two standard deviations, whole degrees); an en dash when unknown.
+/// about 95 % probability (two standard deviations, rounded up to whole degrees, at least 1°:
+/// never "±0°"); an en dash when unknown.
 QString confidenceText(double sigmaDeg);
 
 /// Whether and why the angle of sample s is not to be trusted: a confidence wider than

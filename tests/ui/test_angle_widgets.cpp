@@ -323,6 +323,12 @@ class TestAngleWidgets : public QObject {
     QVERIFY(r.isUncertain(1));
     QCOMPARE(r.noteText(3), QStringLiteral("\u00b112") + deg + QStringLiteral(", uncertain"));
     QVERIFY(!r.noteText(4).contains(QStringLiteral("\u03c3")));
+    // Rounded up to whole degrees and never "±0°": a confidence of a tenth of a degree is not an
+    // exact angle.
+    QCOMPARE(confidenceText(0.05), QStringLiteral("\u00b11") + deg);
+    QCOMPARE(confidenceText(0.0), QStringLiteral("\u00b11") + deg);
+    QCOMPARE(confidenceText(1.2), QStringLiteral("\u00b13") + deg);
+    QCOMPARE(confidenceText(kNan), QStringLiteral("\u2013"));
     AngleTableModel m;
     QCOMPARE(m.headerData(AngleTableModel::Uncertainty, Qt::Horizontal).toString(),
              QStringLiteral("Confidence"));
