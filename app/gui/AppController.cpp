@@ -333,13 +333,32 @@ void AppController::showLiveSession(const SessionPlan& plan, const NewSessionCho
   connect(screen, &app::gui::LiveSessionScreen::sessionStopped, this,
           [this, screen, target, code, calibration = choices.calibration](const QString& summary) {
             m_window->showStatus(summary, 0);
-            // Closed during the recording ("Stop and save"): its analysis waits for the next
-            // start (analysePending).
-            if (m_closeGuard->closing()) return void(m_window->close());
             // Without a sensor calibration, the straps the session fitted from the movement.
-            if (const qint64 id = target->sessionId())
-              analyseThenReview(id, code,
-                                calibration ? calibration : screen->movementCalibration());
+            const std::optional<Calibration> used =
+                calibration ? calibration : screen->movementCalibration();
+            const qint64 id = target->sessionId();
+            // Closed during the recording ("Stop and save"): its analysis waits for the next
+            // start (analysePending), which reads the straps the live estimate used from the
+            // session, as every later analysis does; kept there before the window closes.
+            if (m_closeGuard->closing()) {
+              if (!used || id == 0) return void(m_window->close());
+              return m_records->call(
+                  m_window.get(),
+                  [id, c = *used](storage::ClinicalStore& store) {
+                    storage::keepSessionCalibration(store, id, c);
+                  },
+                  [this] { m_window->close(); },
+                  [this, id](const RecordsFailure& f) {
+                    // Closing goes on: the session is analysed with the straps it is read with.
+                    std::fprintf(stderr,
+                                 "armtrack: session %lld: the straps used live were not kept "
+                                 "(%s); it is analysed without them\n",
+                                 static_cast<long long>(id), qPrintable(f.message));
+                    m_window->close();
+                  });
+            }
+            if (id)
+              analyseThenReview(id, code, used);
             else
               showPatient(code);
           });

@@ -5,6 +5,8 @@
 // - Stop a quarter of a second after Record says in plain words that the recording was too short
 //   to analyse (no filter figures), marks it so in the records, and the "Skip the analysis"
 //   button does not keep the focus once the analysis has ended.
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QMessageBox>
 #include <QPushButton>
@@ -47,8 +49,8 @@ class TestCloseWhileRecording : public QObject {
     });
   }
 
-  /// The live session of the demo patient, recording.
-  LiveSessionScreen* recording() {
+  /// The live session of the demo patient, recording (with a sensor calibration when given).
+  LiveSessionScreen* recording(const std::optional<armtrack::Calibration>& calibration = {}) {
     const SessionPlan plan = m_app->records().callBlocking([](storage::ClinicalStore& s) {
       SessionPlan p;
       p.patient = s.patient(QString::fromLatin1(DemoAccounts::kLivePatient));
@@ -56,6 +58,7 @@ class TestCloseWhileRecording : public QObject {
     });
     NewSessionChoices choices;
     choices.devices = armtrack::app::gui::demoDevices();
+    choices.calibration = calibration;
     m_app->showLiveSession(plan, choices);
     LiveSessionScreen* live = nullptr;
     [&] {
@@ -77,7 +80,11 @@ class TestCloseWhileRecording : public QObject {
 
   void closingDuringARecordingAsks() {
     const std::size_t before = sessions(*m_app).size();
-    LiveSessionScreen* live = recording();
+    // The therapist made a sensor calibration for this session: the live estimate uses it, and
+    // the analysis after the next start must too.
+    armtrack::Calibration calibration;
+    calibration.geometry.lu3 = 0.14;  // a strap 14 cm from the shoulder, not the default's
+    LiveSessionScreen* live = recording(calibration);
     QVERIFY(live);
     QTRY_COMPARE(live->state(), LiveSessionScreen::State::Recording);
     // Five seconds of recording. The session's time runs from its start, before Record: on a
@@ -114,6 +121,16 @@ class TestCloseWhileRecording : public QObject {
     QCOMPARE(saved.status, QString::fromLatin1(storage::kStatusComplete));
     QVERIFY2(saved.durationS > 4.0, qPrintable(QString::number(saved.durationS)));
     const qint64 id = saved.id;
+    // The calibration the live estimate used is kept with the session before the window closed
+    // (the analysis at the next start reads it there, as every later analysis does).
+    const QJsonObject filter =
+        QJsonDocument::fromJson(
+            m_app->records()
+                .callBlocking([id](storage::ClinicalStore& st) { return st.session(id); })
+                .filterJson.toUtf8())
+            .object();
+    QVERIFY2(filter.contains(QStringLiteral("calibration")),
+             qPrintable(QJsonDocument(filter).toJson()));
     m_app.reset();
 
     // The next start, signed in as the therapist, analyses it in the background.
