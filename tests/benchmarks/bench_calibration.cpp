@@ -75,7 +75,8 @@ void BM_LiveCalibrationAdd(benchmark::State& state) {
   lp.firstSeconds = 1e9;  // collect only
   std::size_t rows = 0;
   for (auto _ : state) {
-    session::LiveCalibration live(lp, rec.meta, [](const RecordingMeta&) { return EstimatorParams{}; });
+    session::LiveCalibration live(lp, rec.meta,
+                                  [](const RecordingMeta&) { return EstimatorParams{}; });
     for (const ArmSample& row : rec.samples) live.add(row);
     benchmark::DoNotOptimize(live.atRest());
     rows += rec.samples.size();
