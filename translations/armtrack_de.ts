@@ -5507,6 +5507,18 @@ Bitte versuchen Sie es noch einmal. Wenn das wieder passiert, rufen Sie Ihre The
         <source>(not set)</source>
         <translation>(nicht gesetzt)</translation>
     </message>
+    <message>
+        <source>Ports found...</source>
+        <translation>Gefundene Anschlüsse...</translation>
+    </message>
+    <message>
+        <source>Serial ports found on this computer</source>
+        <translation>Auf diesem Computer gefundene serielle Anschlüsse</translation>
+    </message>
+    <message>
+        <source>No serial port found: plug the sensor&apos;s receiver in (or pair the Bluetooth sensor), then look again</source>
+        <translation>Kein serieller Anschluss gefunden: den Empfänger des Sensors einstecken (oder den Bluetooth-Sensor koppeln), dann erneut nachsehen</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::DeviceWords</name>

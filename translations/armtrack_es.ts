@@ -5507,6 +5507,18 @@ Inténtelo de nuevo. Si vuelve a pasar, llame a su terapeuta.</translation>
         <source>(not set)</source>
         <translation>(sin definir)</translation>
     </message>
+    <message>
+        <source>Ports found...</source>
+        <translation>Puertos encontrados...</translation>
+    </message>
+    <message>
+        <source>Serial ports found on this computer</source>
+        <translation>Puertos serie encontrados en este ordenador</translation>
+    </message>
+    <message>
+        <source>No serial port found: plug the sensor&apos;s receiver in (or pair the Bluetooth sensor), then look again</source>
+        <translation>No se encontró ningún puerto serie: conecte el receptor del sensor (o empareje el sensor Bluetooth) y vuelva a mirar</translation>
+    </message>
 </context>
 <context>
     <name>armtrack::ui::DeviceWords</name>

@@ -2,9 +2,13 @@
 
 #include <QEvent>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMenu>
 #include <QRegularExpression>
+#include <QSerialPortInfo>
+#include <QToolButton>
 
 namespace armtrack::ui {
 
@@ -39,6 +43,21 @@ std::vector<OptionField> parseOptionsHelp(const QString& help) {
   return out;
 }
 
+bool isSerialPortOption(const OptionField& f) {
+  return f.meaning.startsWith(QLatin1String("serial port"), Qt::CaseInsensitive);
+}
+
+std::vector<SerialPortChoice> availableSerialPorts() {
+  std::vector<SerialPortChoice> out;
+  for (const QSerialPortInfo& p : QSerialPortInfo::availablePorts()) {
+    QStringList what;
+    for (const QString& w : {p.description(), p.manufacturer()})
+      if (!w.isEmpty() && !what.contains(w)) what << w;
+    out.push_back({p.systemLocation(), what.join(QStringLiteral(", "))});
+  }
+  return out;
+}
+
 DeviceOptionsForm::DeviceOptionsForm(QWidget* parent) : QWidget(parent) {
   m_form = new QFormLayout(this);
   m_form->setContentsMargins(0, 0, 0, 0);
@@ -48,6 +67,7 @@ DeviceOptionsForm::DeviceOptionsForm(QWidget* parent) : QWidget(parent) {
 void DeviceOptionsForm::setOptionsHelp(const QString& help) {
   while (m_form->rowCount() > 0) m_form->removeRow(0);
   m_edits.clear();
+  m_portButtons.clear();
   m_fields = parseOptionsHelp(help);
   QString section;
   for (const OptionField& f : m_fields) {
@@ -66,7 +86,27 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
     auto* label = new QLabel(f.key, this);
     label->setBuddy(edit);
     label->setToolTip(f.meaning);
-    m_form->addRow(label, edit);
+    QToolButton* ports = nullptr;
+    if (isSerialPortOption(f)) {
+      // The ports found, listed afresh at each press (a receiver plugged in after the page
+      // opened shows up): typing /dev/rfcomm0 from memory is not what a therapist should need.
+      auto* row = new QWidget(this);
+      auto* h = new QHBoxLayout(row);
+      h->setContentsMargins(0, 0, 0, 0);
+      edit->setParent(row);
+      h->addWidget(edit, 1);
+      ports = new QToolButton(row);
+      ports->setText(tr("Ports found..."));
+      ports->setAccessibleName(tr("Serial ports found on this computer"));
+      ports->setFocusPolicy(Qt::StrongFocus);
+      h->addWidget(ports);
+      const std::size_t index = m_edits.size();
+      connect(ports, &QToolButton::clicked, this, [this, index] { showPorts(index); });
+      m_form->addRow(label, row);
+    } else {
+      m_form->addRow(label, edit);
+    }
+    m_portButtons.push_back(ports);
     // What the option means, in the plugin's words, under its field: the key alone ("wrist-hsv")
     // says nothing to a therapist.
     if (!f.meaning.isEmpty()) {
@@ -84,9 +124,47 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
   }
 }
 
+void DeviceOptionsForm::setPortLister(std::function<std::vector<SerialPortChoice>()> lister) {
+  m_ports = std::move(lister);
+}
+
+QToolButton* DeviceOptionsForm::portsButton(const QString& key) const {
+  for (std::size_t i = 0; i < m_fields.size() && i < m_portButtons.size(); ++i)
+    if (m_fields[i].key == key) return m_portButtons[i];
+  return nullptr;
+}
+
+void DeviceOptionsForm::showPorts(std::size_t field) {
+  if (field >= m_edits.size() || !m_portButtons[field]) return;
+  auto* menu = new QMenu(this);
+  menu->setAttribute(Qt::WA_DeleteOnClose);
+  menu->setObjectName(QStringLiteral("serialPorts"));
+  const std::vector<SerialPortChoice> ports = m_ports ? m_ports() : std::vector<SerialPortChoice>{};
+  if (ports.empty()) {
+    QAction* none = menu->addAction(
+        tr("No serial port found: plug the sensor's receiver in (or pair the Bluetooth sensor), "
+           "then look again"));
+    none->setEnabled(false);
+  }
+  for (const SerialPortChoice& p : ports) {
+    QAction* a =
+        menu->addAction(p.what.isEmpty() ? p.path : QStringLiteral("%1  (%2)").arg(p.path, p.what));
+    a->setData(p.path);
+    QLineEdit* edit = m_edits[field];
+    connect(a, &QAction::triggered, edit, [edit, path = p.path] { edit->setText(path); });
+  }
+  QToolButton* b = m_portButtons[field];
+  menu->popup(b->mapToGlobal(QPoint(0, b->height())));
+}
+
 void DeviceOptionsForm::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) {
     setAccessibleName(tr("Device options"));
+    for (QToolButton* b : m_portButtons)
+      if (b) {
+        b->setText(tr("Ports found..."));
+        b->setAccessibleName(tr("Serial ports found on this computer"));
+      }
     for (std::size_t i = 0; i < m_fields.size() && i < m_edits.size(); ++i)
       if (m_fields[i].placeholder.isEmpty()) m_edits[i]->setPlaceholderText(tr("(not set)"));
   }

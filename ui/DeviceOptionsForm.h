@@ -8,8 +8,11 @@
 #include <QWidget>
 #include <vector>
 
+#include <functional>
+
 class QFormLayout;
 class QLineEdit;
+class QToolButton;
 
 namespace armtrack::ui {
 
@@ -26,6 +29,18 @@ struct OptionField {
 /// '@', '+', ':' or '|') is a pattern, not a default.
 std::vector<OptionField> parseOptionsHelp(const QString& help);
 
+/// Whether an option names a serial port: its meaning begins "serial port" (the plugins' help
+/// says so, e.g. "serial port of the Shimmer, required (e.g. /dev/rfcomm0)").
+bool isSerialPortOption(const OptionField& f);
+
+/// The serial ports on this computer as a user picks one: the device's path (/dev/ttyUSB0) and
+/// what it is, where the system says ("CP2102 USB to UART"). Qt's list of ports, read afresh at
+/// each call.
+struct SerialPortChoice {
+  QString path, what;
+};
+std::vector<SerialPortChoice> availableSerialPorts();
+
 class DeviceOptionsForm : public QWidget {
   Q_OBJECT
  public:
@@ -40,6 +55,10 @@ class DeviceOptionsForm : public QWidget {
   QString optionsText() const;
   const std::vector<OptionField>& fields() const { return m_fields; }
   QLineEdit* edit(const QString& key) const;
+  /// The button beside a serial port option that lists the ports found (null for other keys).
+  QToolButton* portsButton(const QString& key) const;
+  /// Where the ports come from (availableSerialPorts() by default): tests give a list.
+  void setPortLister(std::function<std::vector<SerialPortChoice>()> lister);
 
  signals:
   void changed();
@@ -51,6 +70,10 @@ class DeviceOptionsForm : public QWidget {
   QFormLayout* m_form;
   std::vector<OptionField> m_fields;
   std::vector<QLineEdit*> m_edits;
+  std::vector<QToolButton*> m_portButtons;  // per field; null where not a serial port
+  std::function<std::vector<SerialPortChoice>()> m_ports = availableSerialPorts;
+
+  void showPorts(std::size_t field);
 };
 
 }  // namespace armtrack::ui

@@ -7,9 +7,12 @@
 #include <QLineEdit>
 #include <QListWidget>
 #include <QLocale>
+#include <QMenu>
 #include <QPushButton>
 #include <QRegularExpression>
 #include <QTemporaryDir>
+#include <QTest>
+#include <QToolButton>
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -130,6 +133,67 @@ class TestNewSessionPages : public QObject {
     QCOMPARE(odd[0].meaning, QStringLiteral("first more of it"));
     QCOMPARE(odd[1].section, QStringLiteral("plain heading"));
     QVERIFY(odd[1].defaultValue.isEmpty());
+  }
+
+  // A serial port option gets a button listing the ports found, read afresh at each press; one
+  // picked fills the field. The serial IMU plugins' port options are recognised from their help.
+  void serialPortOptionsListThePortsFound() {
+    for (const char* plugin : {"line-imu", "shimmer3"}) {
+      devices::DevicePlugin* p = m_registry.plugin(QString::fromLatin1(plugin));
+      QVERIFY2(p, plugin);
+      bool found = false;
+      for (const ui::OptionField& f : ui::parseOptionsHelp(p->optionsHelp()))
+        found = found || (f.key == QStringLiteral("port") && ui::isSerialPortOption(f));
+      QVERIFY2(found, plugin);
+    }
+    if (devices::DevicePlugin* p = m_registry.plugin(QStringLiteral("ngimu")))
+      for (const ui::OptionField& f : ui::parseOptionsHelp(p->optionsHelp()))
+        QVERIFY2(!ui::isSerialPortOption(f), qPrintable(f.key));  // its port is UDP's
+
+    ui::DeviceOptionsForm form;
+    form.resize(560, 220);
+    std::vector<ui::SerialPortChoice> ports;
+    int looks = 0;
+    form.setPortLister([&] {
+      ++looks;
+      return ports;
+    });
+    form.setOptionsHelp(
+        QStringLiteral("port=   serial port of the sensor, required\n"
+                       "rate=100   samples per second\n"));
+    form.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&form));
+    QVERIFY(!form.portsButton(QStringLiteral("rate")));
+    QToolButton* button = form.portsButton(QStringLiteral("port"));
+    QVERIFY(button);
+    const auto openMenu = [&]() -> QMenu* {
+      button->click();
+      QMenu* menu = nullptr;
+      [&] { QTRY_VERIFY((menu = form.findChild<QMenu*>(QStringLiteral("serialPorts")))); }();
+      return menu;
+    };
+    // None plugged in: said, nothing to pick.
+    QMenu* menu = openMenu();
+    QVERIFY(menu);
+    QCOMPARE(menu->actions().size(), 1);
+    QVERIFY(!menu->actions().front()->isEnabled());
+    QVERIFY(menu->actions().front()->text().contains(QStringLiteral("No serial port found")));
+    menu->close();
+    QTRY_VERIFY(!form.findChild<QMenu*>(QStringLiteral("serialPorts")));
+    // Plugged in since: the next press lists them, with what each is.
+    ports = {{QStringLiteral("/dev/ttyUSB0"), QStringLiteral("CP2102 USB to UART")},
+             {QStringLiteral("/dev/rfcomm0"), QString()}};
+    menu = openMenu();
+    QVERIFY(menu);
+    QCOMPARE(looks, 2);
+    QCOMPARE(menu->actions().size(), 2);
+    QVERIFY(menu->actions()[0]->text().contains(QStringLiteral("CP2102")));
+    QVERIFY(QTest::qWaitForWindowExposed(menu));
+    test::saveScreenshot(test::grabFromScreen(&form), QStringLiteral("device_serial_ports"));
+    menu->actions()[1]->trigger();
+    QCOMPARE(form.edit(QStringLiteral("port"))->text(), QStringLiteral("/dev/rfcomm0"));
+    QCOMPARE(form.optionsText(), QStringLiteral("port=/dev/rfcomm0"));
+    menu->close();
   }
 
   void devicesPageBuildsSpecsAndChecksTheConnection() {
