@@ -242,13 +242,25 @@ QString Session::start() {
     return QStringLiteral(
         "no IMU among the devices: the estimator needs the upper-arm or "
         "forearm IMU (or record without estimating)");
-  m_params.estimator = sessionFilterParams(m_params.estimator, m_params.meta);
+  if (m_params.calibration && m_params.calibration->side != m_params.meta.side)
+    return QStringLiteral(
+               "the sensor calibration was made for the %1 arm and the session is of the %2 "
+               "arm: calibrate again for this arm")
+        .arg(QString::fromStdString(sideName(m_params.calibration->side)),
+             QString::fromStdString(sideName(m_params.meta.side)));
+  {
+    // The estimator's model: the calibrated geometry and sternum mounting when one is given.
+    RecordingMeta model = m_params.meta;
+    if (m_params.calibration) applyCalibration(*m_params.calibration, model);
+    m_params.estimator = sessionFilterParams(m_params.estimator, model);
+  }
   if (QString why = openRecording(columns); !why.isEmpty()) return why;
   m_liveCalibration.reset();
   m_movementCalibrationFile.clear();
-  // The fit needs both arm IMUs (the elbow between them); without one it stays off.
-  if (m_params.estimate && m_params.movementCalibration.enabled && columns.upperArm &&
-      columns.forearm)
+  // The fit needs both arm IMUs (the elbow between them); without one it stays off. A sensor
+  // calibration in use is not second-guessed.
+  if (m_params.estimate && m_params.movementCalibration.enabled && !m_params.calibration &&
+      columns.upperArm && columns.forearm)
     m_liveCalibration =
         std::make_unique<LiveCalibration>(m_params.movementCalibration, m_params.meta,
                                           [base = m_params.estimator](const RecordingMeta& meta) {

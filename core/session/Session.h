@@ -20,6 +20,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/calibration/Calibration.h"
 #include "core/devices/SampleSource.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
@@ -64,6 +65,13 @@ struct SessionParams {
   /// no calibration for these sensors (off by default; docs/session.md, "Calibration from
   /// movement"). Needs the estimator and both arm IMUs (off without them).
   LiveCalibrationParams movementCalibration;
+  /// A sensor calibration for these sensors (the GUI's sensor calibration, a calibration file):
+  /// the estimator uses its geometry and mountings, and each row's readings are turned into its
+  /// sensor frames and its gyroscope biases removed before the estimator sees them, from the
+  /// first row (docs/session.md, "A sensor calibration"). The recording keeps the readings as
+  /// the devices gave them and meta as given. With one, the calibration from movement does not
+  /// run. start() refuses one made for the other arm.
+  std::optional<Calibration> calibration;
 };
 
 /// One estimate, for the GUI and `live`. Every row with IMU data gets one once the estimator has

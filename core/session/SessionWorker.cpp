@@ -70,6 +70,8 @@ class Session::Worker {
                    s.m_params.refusalSummarySeconds),
         m_trunkMessages(s.m_params.trunkMessageSeconds) {
     if (s.m_params.estimate) m_filter = makeEstimator(s.m_params.estimator);
+    // A sensor calibration turns every row's readings from the first on, as a fitted one does.
+    m_fitted = s.m_params.calibration;
     m_calibration = s.m_liveCalibration.get();
     // Without a trunk IMU, an optical shoulder tells whether the trunk moved (as `estimate` does,
     // core/estimation/RecordingEstimator.cpp).

@@ -29,6 +29,9 @@ app::gui::LiveSessionConfig liveSessionConfig(const SessionPlan& plan, const QSt
   }
   // A sensor calibration made for this session brings the arm's fitted lengths and mounting.
   if (calibration && calibration->side == c.meta.side) {
+    // Applied to the live readings (the straps' rotations, the gyroscopes' biases) and kept in
+    // the sidecar's geometry.
+    c.calibration = calibration;
     c.meta.geometry = calibration->geometry;
     // The straps are known: no fit from the movement.
     c.movementCalibration.enabled = false;

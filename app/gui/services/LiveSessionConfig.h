@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/calibration/Calibration.h"
 #include "core/estimation/ArmFilter.h"
 #include "core/io/Recording.h"
 #include "core/session/LiveCalibration.h"
@@ -38,6 +39,9 @@ struct LiveSessionConfig {
   double windowSeconds = 20.0;
   /// Record from the start (when a recording target was given), without pressing Record.
   bool recordFromStart = false;
+  /// The sensor calibration made for this session (liveSessionConfig: for this arm): applied to
+  /// the live readings from the first row (session::SessionParams::calibration).
+  std::optional<Calibration> calibration;
   /// The sensor calibration made for this session, stored with it for the report: "good",
   /// "usable" or "poor" ("" = none made) and its reason in words.
   QString calibrationVerdict, calibrationReason;

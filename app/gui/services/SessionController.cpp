@@ -92,6 +92,7 @@ void SessionController::startInThread(LiveSessionConfig config,
   params.meta = config.meta;
   params.estimator = config.estimator;
   params.movementCalibration = config.movementCalibration;
+  params.calibration = config.calibration;
   params.flushInterval = storage::DatabaseRecordingSink::kFlushInterval;
   if (gate && gate->target()) {
     params.openSink = [this, gate](

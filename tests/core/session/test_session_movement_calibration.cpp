@@ -55,7 +55,8 @@ struct LiveRun {
 // (LiveCalibrationParams::waitForFit), so the fit is used from the row it started at whatever
 // the machine's load.
 LiveRun replay(const QTemporaryDir& dir, const Recording& rec, bool calibrate, double first = 40.0,
-               bool wait = false, const std::function<void(LiveCalibrationParams&)>& adjust = {}) {
+               bool wait = false, const std::function<void(LiveCalibrationParams&)>& adjust = {},
+               const std::optional<Calibration>& sensorCalibration = {}) {
   LiveRun r;
   const fs::path source = fs::path(dir.path().toStdString()) / "source.csv";
   writeRecording(source, rec);
@@ -72,6 +73,7 @@ LiveRun replay(const QTemporaryDir& dir, const Recording& rec, bool calibrate, d
   params.movementCalibration.firstSeconds = first;
   params.movementCalibration.waitForFit = wait;
   if (adjust) adjust(params.movementCalibration);
+  params.calibration = sensorCalibration;
   Session session(params);
   std::mutex problemsMutex;
   QObject::connect(
@@ -232,8 +234,8 @@ TEST_P(FitReadyMidReach, IsAppliedAtTheNextRest) {
   ASSERT_GT(trueJointSpeed(rec, ready), 10.0) << "no reach from " << GetParam() << " s";
   // The first fit only: a refit 60 s later (at 95-115 s) would overwrite the status's times; the
   // refit is tested on its own below.
-  const LiveRun r = replay(dir_, rec, true, ready, true,
-                           [](LiveCalibrationParams& p) { p.refineSeconds = 1e6; });
+  const LiveRun r =
+      replay(dir_, rec, true, ready, true, [](LiveCalibrationParams& p) { p.refineSeconds = 1e6; });
   for (const std::string& e : r.events) std::printf("  event: %s\n", e.c_str());
   ASSERT_EQ(r.status.state, LiveCalibrationStatus::State::Applied) << r.status.line;
   EXPECT_EQ(r.status.fits, 1);
@@ -305,6 +307,66 @@ TEST_F(SessionMovementCalibration, WithACalibrationInUseItNeverFits) {
   EXPECT_EQ(mentioning(r.events, "calibration from movement"), 0u);
   EXPECT_TRUE(r.kept.empty());
   EXPECT_FALSE(fs::exists(movementCalibrationPath(r.csv)));
+}
+
+// A sensor calibration made for these straps (here their true mountings) is applied to the live
+// readings from the first row: the live estimate follows the arm where, without it, the turned
+// straps leave it degrees off; the fit from the movement does not run beside it, and the
+// recording keeps the readings as the devices gave them. One made for the other arm is refused.
+TEST_F(SessionMovementCalibration, ASensorCalibrationIsAppliedFromTheFirstRow) {
+  const Recording rec = patient(kTurn);
+  Calibration c;  // the patient's straps (tests/support/TurnedStrapsPatient.h)
+  c.geometry = rec.meta.geometry;
+  c.upperArm.rotation = randomMisalignment(kTurn * kDeg, 63);
+  c.forearm.rotation = randomMisalignment(kTurn * kDeg, 64);
+  const LiveRun with = replay(dir_, rec, true, 5.0, false, {}, c);
+  const LiveRun without = replay(dir_, rec, false);
+  ASSERT_GT(with.results.size(), 5000u);
+  const double on = rmsError(with.results, 10.0, kSeconds);
+  const double off = rmsError(without.results, 10.0, kSeconds);
+  std::printf(
+      "[ measured ] straps turned %.0f deg, IMUs only: %.2f deg RMS with the sensor "
+      "calibration, %.2f without\n",
+      kTurn, on, off);
+  EXPECT_LT(on, 2.0);
+  EXPECT_GT(off, 2.0 * on);
+  EXPECT_EQ(with.status.state, LiveCalibrationStatus::State::Off);
+  EXPECT_EQ(mentioning(with.events, "calibration from movement"), 0u);
+  // The recording: the readings as given, not as corrected.
+  const Recording recorded = readRecording(with.csv);
+  ASSERT_GT(recorded.samples.size(), 1000u);
+  // (session time starts at start(): the row is found by its reading, which the source holds
+  // as recorded; corrected, it would be turned by 25 deg)
+  const ArmSample& row = *std::max_element(recorded.samples.begin(), recorded.samples.end(),
+                                           [](const ArmSample& a, const ArmSample& b) {
+                                             return (a.upperArm ? a.upperArm->gyr.norm() : 0.0) <
+                                                    (b.upperArm ? b.upperArm->gyr.norm() : 0.0);
+                                           });  // mid-reach, where a turned reading differs most
+  ASSERT_TRUE(row.upperArm);
+  double nearest = 1e9;
+  for (const ArmSample& s : rec.samples)
+    if (s.upperArm) nearest = std::min(nearest, (s.upperArm->gyr - row.upperArm->gyr).norm());
+  EXPECT_LT(nearest, 1e-5);
+  EXPECT_GT((applyCalibration(c.upperArm, *row.upperArm).gyr - row.upperArm->gyr).norm(), 0.1);
+  // For the other arm: refused at start, with what to do.
+  Calibration left = c;
+  left.side = Side::Left;
+  SessionParams params;
+  params.meta = rec.meta;
+  params.calibration = left;
+  Session session(params);
+  devices::DevicePlugin* plugin = test::loadPlugin(QStringLiteral("replay"));
+  ASSERT_TRUE(plugin);
+  const fs::path source = fs::path(dir_.path().toStdString()) / "source.csv";
+  QString why;
+  auto device = plugin->create(devices::Options::parse(QStringLiteral("file=%1").arg(
+                                   QString::fromStdString(source.string()))),
+                               &why);
+  ASSERT_TRUE(device) << why.toStdString();
+  session.addDevice(test::hosted(std::move(device), QStringLiteral("replay")),
+                    QStringLiteral("replay"));
+  why = session.start();
+  EXPECT_TRUE(why.contains(QStringLiteral("calibrate again"))) << why.toStdString();
 }
 
 TEST_F(SessionMovementCalibration, StrapsAsFittedAreLeftAlone) {

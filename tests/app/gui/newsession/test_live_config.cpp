@@ -1,6 +1,7 @@
 // The live session's set-up from the new-session flow: a sensor calibration's sternum mounting
 // reaches the session only when the devices include a sternum sensor, and a sensor calibration
-// of the arm switches the fit of the straps from the movement off.
+// of the arm is applied to the live readings and switches the fit of the straps from the
+// movement off.
 #include <QTest>
 
 #include <Eigen/Geometry>
@@ -49,14 +50,22 @@ class TestLiveConfig : public QObject {
     const QStringList devices = {QStringLiteral("virtual-arm:sensors=upper+forearm")};
     QVERIFY(
         gui::liveSessionConfig(plan, devices, settings, std::nullopt).movementCalibration.enabled);
+    QVERIFY(!gui::liveSessionConfig(plan, devices, settings, std::nullopt).calibration);
     Calibration cal;
-    QVERIFY(!gui::liveSessionConfig(plan, devices, settings, cal).movementCalibration.enabled);
+    cal.upperArm.rotation = Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const auto used = gui::liveSessionConfig(plan, devices, settings, cal);
+    QVERIFY(!used.movementCalibration.enabled);
+    // ... and the session applies it to the readings (the straps' rotations), not only its
+    // geometry.
+    QVERIFY(used.calibration &&
+            used.calibration->upperArm.rotation.isApprox(cal.upperArm.rotation));
     // A calibration of the other arm is none for this one.
     gui::SessionPlan left;
     left.side = Side::Left;
-    QVERIFY(
-        gui::liveSessionConfig(left, {QStringLiteral("shimmer:port=/dev/rfcomm2")}, settings, cal)
-            .movementCalibration.enabled);
+    const auto other =
+        gui::liveSessionConfig(left, {QStringLiteral("shimmer:port=/dev/rfcomm2")}, settings, cal);
+    QVERIFY(other.movementCalibration.enabled);
+    QVERIFY(!other.calibration);
   }
 };
 
