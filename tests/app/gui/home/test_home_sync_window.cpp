@@ -140,11 +140,14 @@ class TestHomeSyncWindow : public QObject {
                               qPrintable(connect->resultText()), 30000);
     QTRY_VERIFY2_WITH_TIMEOUT(syncLine().contains("Everything is sent"), qPrintable(syncLine()),
                               30000);
-    // Back: the programme fetched from the clinic is today's.
+    // Back: the programme fetched from the clinic is today's. Under load the first plan loaded
+    // after Back was once empty (seen in a run of 62 tests at once; why the programme was not
+    // there yet is not known). A changed programme reloads the start screen's plan, so the test
+    // waits for the line rather than for the first load.
     QSignalSpy loaded(m_controller.get(), &HomeController::planLoaded);
     QTest::keyClick(connect->choices().last(), Qt::Key_Space);
     QVERIFY(loaded.wait(20000));
-    QCOMPARE(startLines().size(), 1);
+    QTRY_COMPARE_WITH_TIMEOUT(startLines().size(), 1, 30000);
     QVERIFY2(startLines()[0].contains("reach: 3 sets of 8"), qPrintable(startLines()[0]));
   }
 
