@@ -384,17 +384,6 @@ void ArmScene::setSternumImu(const std::optional<TrunkMount>& mount) {
   m->placeBody();
 }
 
-std::optional<Eigen::Isometry3d> ArmScene::sternumImuPose() const {
-  if (!m->sternum) return std::nullopt;
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) pose.linear()(r, c) = m->sternumImu->matrix->GetElement(r, c);
-    pose.translation()(r) = m->sternumImu->matrix->GetElement(r, 3);
-  }
-  pose.linear() = pose.linear().colwise().normalized().eval();
-  return pose;
-}
-
 Eigen::Vector3d ArmScene::hipPivot() const {
   return m->hip();
 }
@@ -411,17 +400,29 @@ namespace {
 Eigen::Vector3d actorOrigin(const Part& p) {
   return {p.matrix->GetElement(0, 3), p.matrix->GetElement(1, 3), p.matrix->GetElement(2, 3)};
 }
+/// The part's axes as drawn (unit columns; its matrix scales them by the part's size).
+Eigen::Matrix3d actorAxes(const Part& p) {
+  Eigen::Matrix3d a;
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a(r, c) = p.matrix->GetElement(r, c);
+  return a.colwise().normalized();
+}
 }  // namespace
+
+std::optional<Eigen::Isometry3d> ArmScene::sternumImuPose() const {
+  if (!m->sternum) return std::nullopt;
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  pose.linear() = actorAxes(*m->sternumImu);
+  pose.translation() = actorOrigin(*m->sternumImu);
+  return pose;
+}
 
 Eigen::Vector3d ArmScene::shoulderActorCentre() const {
   return actorOrigin(m->arm->shoulder);
 }
 
 Eigen::Matrix3d ArmScene::torsoAxes() const {
-  Eigen::Matrix3d a;
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a(r, c) = m->trunk->matrix->GetElement(r, c);
-  return a.colwise().normalized();
+  return actorAxes(*m->trunk);
 }
 
 Eigen::Vector3d ArmScene::torsoCentre() const {
