@@ -96,8 +96,7 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
       edit->setParent(row);
       h->addWidget(edit, 1);
       ports = new QToolButton(row);
-      ports->setText(tr("Ports found..."));
-      ports->setAccessibleName(tr("Serial ports found on this computer"));
+      namePortsButton(ports);
       ports->setFocusPolicy(Qt::StrongFocus);
       h->addWidget(ports);
       const std::size_t index = m_edits.size();
@@ -122,6 +121,11 @@ void DeviceOptionsForm::setOptionsHelp(const QString& help) {
     }
     m_edits.push_back(edit);
   }
+}
+
+void DeviceOptionsForm::namePortsButton(QToolButton* b) {
+  b->setText(tr("Ports found..."));
+  b->setAccessibleName(tr("Serial ports found on this computer"));
 }
 
 void DeviceOptionsForm::setPortLister(std::function<std::vector<SerialPortChoice>()> lister) {
@@ -161,10 +165,7 @@ void DeviceOptionsForm::changeEvent(QEvent* event) {
   if (event->type() == QEvent::LanguageChange) {
     setAccessibleName(tr("Device options"));
     for (QToolButton* b : m_portButtons)
-      if (b) {
-        b->setText(tr("Ports found..."));
-        b->setAccessibleName(tr("Serial ports found on this computer"));
-      }
+      if (b) namePortsButton(b);
     for (std::size_t i = 0; i < m_fields.size() && i < m_edits.size(); ++i)
       if (m_fields[i].placeholder.isEmpty()) m_edits[i]->setPlaceholderText(tr("(not set)"));
   }

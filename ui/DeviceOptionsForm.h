@@ -74,6 +74,8 @@ class DeviceOptionsForm : public QWidget {
   std::function<std::vector<SerialPortChoice>()> m_ports = availableSerialPorts;
 
   void showPorts(std::size_t field);
+  /// Its words, in the language of the moment (built and on a language change).
+  void namePortsButton(QToolButton* b);
 };
 
 }  // namespace armtrack::ui
